@@ -1,0 +1,116 @@
+#pragma once
+// Forward kinematics of the generic serial chain, with an optional error model
+// (conventions.md "Axes and chains" and "Geometric errors"; ISO 230-1 notation).
+//
+// Written once, templated on the scalar S: double for posting and simulation, automatic
+// differentiation scalars for identification. The error model is a functor supplying, for each
+// axis and command, the displacement terms below; `NominalErrors` supplies none.
+//
+// Rotary axis j at command q (rad):
+//   T_j(q) = Trans(c_j) · D_j(q) · Rot(d̂_j, q + r_j + ε∥) · Trans(-c_j)
+//   c_j = P_j + δ_j⊥ ,  d̂_j = Rot(ε_j⊥) · d_j ,  D_j(q) = Trans(δ(q)) · Rot(ε(q))
+// Linear axis j at command q (mm), reference point R = (0, 0, L):
+//   tool side       T_j(q) = Trans(R + (q + r_j)·d̂_j + δ(q)) · Rot(ε(q)) · Trans(-R)
+//   workpiece side  T_j(q) = Trans(R - (q + r_j)·d̂_j - δ(q)) · Rot(-ε(q)) · Trans(-R)
+// Each side composes from the bed outward. Set-up at home: the actual transforms are
+// T(q) · T(0)^-1, so that every error acts relative to home.
+#include "ncpost/kinematics/machine.hpp"
+
+namespace ncpost {
+
+/// The error terms of one axis at one command, in M axes at home (mm, rad).
+template <class S> struct AxisErrorTerms {
+  Vec3<S> location_offset_mm = Vec3<S>::Zero();  ///< rotary: δ_j, offset of the axis line
+  Vec3<S> location_tilt_rad = Vec3<S>::Zero();   ///< rotary: ε_j, tilt (+ zero error along the axis)
+  Vec3<S> direction_offset = Vec3<S>::Zero();    ///< linear: squareness, d̂ = d + this
+  Vec3<S> motion_mm = Vec3<S>::Zero();           ///< error motion δ(q): EX, EY, EZ
+  Vec3<S> motion_rad = Vec3<S>::Zero();          ///< error motion ε(q): EA, EB, EC
+  S reversal = S(0);                             ///< reversal offset added to the command (mm or rad)
+};
+
+/// The nominal machine: no errors.
+struct NominalErrors {
+  template <class S> AxisErrorTerms<S> operator()(int /*axis_index*/, const S& /*command*/, bool /*at_home*/) const {
+    return {};
+  }
+};
+
+/// Poses of the table and of the tool body in M (bed frame).
+template <class S> struct ChainPose {
+  Rigid<S> bed_T_table;  ///< table frame = M at home, carried by the workpiece-side axes
+  Rigid<S> bed_T_tool;   ///< tool frame = M at home, carried by the tool-side axes
+
+  /// The tool body seen from the table: table_T_tool.
+  Rigid<S> table_T_tool() const { return bed_T_table.inverse() * bed_T_tool; }
+};
+
+/// Transform of one axis (see header comment), without the set-up at home.
+template <class S, class Errors>
+Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double tool_length_mm,
+                        const Errors& errors, bool at_home) {
+  const AxisErrorTerms<S> e = errors(axis_index, q, at_home);
+  const Vec3<S> d = axis.direction.template cast<S>();
+  if (axis.is_rotary()) {
+    Vec3<S> pivot = axis.pivot_mm.template cast<S>();
+    if (axis.side == Side::tool) pivot.z() += S(tool_length_mm);
+    const Vec3<S> offset_perp = e.location_offset_mm - e.location_offset_mm.dot(d) * d;
+    const Vec3<S> tilt_along = e.location_tilt_rad.dot(d) * d;
+    const Vec3<S> tilt_perp = e.location_tilt_rad - tilt_along;
+    const Vec3<S> c = pivot + offset_perp;
+    const Vec3<S> d_actual = rotation_vector<S>(tilt_perp) * d;
+    const S angle = q + e.reversal + e.location_tilt_rad.dot(d);
+    Rigid<S> motion;
+    motion.R = rotation_vector<S>(e.motion_rad);
+    motion.t = e.motion_mm;
+    return Rigid<S>::translation(c) * motion * Rigid<S>::rotation(rotation_about<S>(d_actual, angle)) *
+           Rigid<S>::translation(-c);
+  }
+  const Vec3<S> ref(S(0), S(0), S(tool_length_mm));
+  const Vec3<S> d_actual = d + e.direction_offset;
+  const S travel = q + e.reversal;
+  if (axis.side == Side::tool) {
+    return Rigid<S>::translation(ref + travel * d_actual + e.motion_mm) *
+           Rigid<S>::rotation(rotation_vector<S>(e.motion_rad)) * Rigid<S>::translation(-ref);
+  }
+  return Rigid<S>::translation(ref - travel * d_actual - e.motion_mm) *
+         Rigid<S>::rotation(rotation_vector<S>(Vec3<S>(-e.motion_rad))) * Rigid<S>::translation(-ref);
+}
+
+/// The chain at command q, without the set-up at home (T(q) itself).
+template <class S, class Errors>
+ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm,
+                            const Errors& errors, bool at_home) {
+  ChainPose<S> pose;
+  for (int i : m.workpiece_side)
+    pose.bed_T_table = pose.bed_T_table * axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home);
+  for (int i : m.tool_side)
+    pose.bed_T_tool = pose.bed_T_tool * axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home);
+  return pose;
+}
+
+/// The actual chain at command q with the set-up at home: T(q) · T(0)^-1 on each side.
+template <class S, class Errors>
+ChainPose<S> chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm, const Errors& errors) {
+  const ChainPose<S> at_q = raw_chain_pose<S>(m, q, tool_length_mm, errors, false);
+  const ChainPose<S> at_home = raw_chain_pose<S>(m, AxisPositionT<S>{}, tool_length_mm, errors, true);
+  return {at_q.bed_T_table * at_home.bed_T_table.inverse(), at_q.bed_T_tool * at_home.bed_T_tool.inverse()};
+}
+
+/// Tool tip (TCP) and tool axis in W at command q.
+template <class S> struct ToolPoseT {
+  Vec3<S> tip_mm;
+  Vec3<S> axis;
+};
+
+template <class S, class Errors>
+ToolPoseT<S> tool_pose(const Machine& m, const AxisPositionT<S>& q, const Setup& setup, const Errors& errors) {
+  const Rigid<S> table_T_tool = chain_pose<S>(m, q, setup.tool_length_mm, errors).table_T_tool();
+  return {table_T_tool.t - setup.workpiece_origin_mm.template cast<S>(), table_T_tool.R.col(2)};
+}
+
+/// Nominal forward kinematics in double.
+inline ToolPoseT<double> forward(const Machine& m, const AxisPosition& q, const Setup& setup) {
+  return tool_pose<double>(m, q, setup, NominalErrors{});
+}
+
+}  // namespace ncpost

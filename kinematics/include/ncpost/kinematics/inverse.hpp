@@ -1,0 +1,72 @@
+#pragma once
+// Closed-form inverse kinematics of the nominal serial chain (conventions.md "Nominal closure"):
+//   (X, Y, Z) + T_t(q)·0 = T_w(q)·(workpiece_origin + p)   and   R_t(q)·e_z = R_w(q)·u
+// for table-table, head-head and head-table machines with any axis directions.
+//
+// Method: with v the tool axis direction between the two rotary axes, both rotations preserve
+// the component of a vector along their own axis, so v lies on the intersection of two planes
+// with the unit sphere: two solutions in general, one on the boundary, none outside the reach.
+// Angles in rad, lengths in mm, CL data in W.
+//
+// Solution choice (`select_solution`): among the two solutions and their 2π shifts, the one within
+// the limits nearest the previous pose (sum of |Δangle|); continuous axes are unwound to the value
+// nearest the previous one. At the singular orientation (tool axis along the axis nearest the
+// tool-axis end of the chain, e.g. u = +Z on an AC table) the free angle keeps its previous value;
+// near it the angle follows the exact solution (no special smoothing: CAM-exact, as NX does).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncpost/kinematics/machine.hpp"
+
+namespace ncpost {
+
+/// One rotary solution in principal angles (-π, π]; `free_axis` >= 0 at a singular pose
+/// names the rotary index whose angle is undetermined (set to 0 here).
+struct RotarySolution {
+  Eigen::Vector2d rotary_rad = Eigen::Vector2d::Zero();
+  int free_axis = -1;
+};
+
+/// Rotary solutions for the tool axis `axis_W` (unit, in W). Empty if the orientation is out of
+/// reach of the machine (e.g. a tilt beyond what the axis directions allow, or a tilted axis on a
+/// three-axis machine). `tolerance` widens the reach test for rounding.
+std::vector<RotarySolution> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance = 1e-9);
+
+/// X Y Z (mm) that put the tool tip on `tip_W` for the given rotary angles.
+Vec3d linear_for(const Machine& m, const Eigen::Vector2d& rotary_rad, const Vec3d& tip_W, const Setup& setup);
+
+struct IkPolicy {
+  double singular_tolerance = 1e-9;  ///< |sin| of the angle between the tool axis and the free axis
+  double reach_tolerance = 1e-7;     ///< accepted rounding in the reach test
+};
+
+/// Why a CL point has no admissible solution.
+struct IkFailure {
+  std::string message;
+};
+
+struct IkOutcome {
+  std::optional<AxisPosition> position;
+  IkFailure failure;  ///< set when !position
+  bool singular = false;
+  bool ok() const { return position.has_value(); }
+};
+
+/// Candidate unwound to be nearest `previous` and within limits; nullopt if no 2π shift fits.
+std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::Vector2d& rotary_rad,
+                                                 const Eigen::Vector2d& previous_rad);
+
+/// Solve a CL point, choosing the solution nearest `previous` that respects the limits.
+IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const AxisPosition& previous,
+                const IkPolicy& policy = {});
+
+/// All admissible solutions (unwound near `previous`), best first.
+std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
+                                               const AxisPosition& previous, const IkPolicy& policy = {});
+
+/// Angle (rad) that turns `from` into `to` about the unit `d`, both projected on the plane normal
+/// to d; nullopt where either projection is shorter than `tolerance`.
+std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d& to, double tolerance);
+
+}  // namespace ncpost

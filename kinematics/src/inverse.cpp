@@ -1,0 +1,196 @@
+#include "ncpost/kinematics/inverse.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "ncpost/kinematics/forward.hpp"
+
+namespace ncpost {
+namespace {
+
+/// Unit vectors v with v·a_dir = a and v·b_dir = b (a_dir, b_dir unit, not parallel).
+std::vector<Vec3d> sphere_plane_plane(const Vec3d& a_dir, double a, const Vec3d& b_dir, double b, double tolerance) {
+  const double c = a_dir.dot(b_dir);
+  const double det = 1.0 - c * c;
+  assert(det > 1e-12);
+  const double alpha = (a - c * b) / det;
+  const double beta = (b - c * a) / det;
+  const Vec3d base = alpha * a_dir + beta * b_dir;
+  const Vec3d normal = a_dir.cross(b_dir);
+  const double rest = 1.0 - base.squaredNorm();
+  if (rest < -tolerance) return {};
+  const double gamma = std::sqrt(std::max(0.0, rest) / normal.squaredNorm());
+  if (gamma == 0.0) return {base.normalized()};
+  return {(base + gamma * normal).normalized(), (base - gamma * normal).normalized()};
+}
+
+double wrap_pi(double a) {
+  a = std::remainder(a, 2.0 * kPi);
+  return a <= -kPi ? a + 2.0 * kPi : a;
+}
+
+/// The two rotary axes in the order of the chain, and how their rotations relate u and e_z.
+struct RotaryLayout {
+  int outer = 0;  ///< rotary index (0/1) nearer the bed in the composition R1(q1)·R2(q2)
+  int inner = 1;
+  enum Kind { table_table, head_head, head_table } kind = table_table;
+};
+
+RotaryLayout layout_of(const Machine& m) {
+  RotaryLayout l;
+  const int r0 = 3, r1 = 4;
+  auto position_in = [](const std::vector<int>& side, int idx) {
+    auto it = std::find(side.begin(), side.end(), idx);
+    return it == side.end() ? -1 : static_cast<int>(it - side.begin());
+  };
+  const bool r0_tool = m.axes[r0].side == Side::tool;
+  const bool r1_tool = m.axes[r1].side == Side::tool;
+  if (r0_tool == r1_tool) {
+    l.kind = r0_tool ? RotaryLayout::head_head : RotaryLayout::table_table;
+    const auto& side = r0_tool ? m.tool_side : m.workpiece_side;
+    const bool zero_first = position_in(side, r0) < position_in(side, r1);
+    l.outer = zero_first ? 0 : 1;
+    l.inner = zero_first ? 1 : 0;
+  } else {
+    l.kind = RotaryLayout::head_table;
+    l.outer = r0_tool ? 0 : 1;  // the head axis
+    l.inner = r0_tool ? 1 : 0;  // the table axis
+  }
+  return l;
+}
+
+}  // namespace
+
+std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d& to, double tolerance) {
+  const Vec3d f = from - from.dot(d) * d;
+  const Vec3d t = to - to.dot(d) * d;
+  if (f.norm() < tolerance || t.norm() < tolerance) return std::nullopt;
+  return std::atan2(d.dot(f.cross(t)), f.dot(t));
+}
+
+std::vector<RotarySolution> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance) {
+  const Vec3d u = axis_W.normalized();
+  const Vec3d ez = Vec3d::UnitZ();
+  if (m.rotary_count() == 0) {
+    if ((u - ez).norm() > std::sqrt(tolerance)) return {};
+    return {RotarySolution{}};
+  }
+  const RotaryLayout l = layout_of(m);
+  const Vec3d d1 = m.rotary(l.outer).direction;
+  const Vec3d d2 = m.rotary(l.inner).direction;
+  // Tool-axis direction v between the rotations, and the vectors it relates (see header).
+  Vec3d from2, to1, plane2_vec, plane1_vec;
+  switch (l.kind) {
+    case RotaryLayout::table_table:  // R1 R2 u = e_z ; v = R2 u = R1^T e_z
+      plane2_vec = u; plane1_vec = ez; break;
+    case RotaryLayout::head_head:    // R1 R2 e_z = u ; v = R2 e_z = R1^T u
+      plane2_vec = ez; plane1_vec = u; break;
+    case RotaryLayout::head_table:   // Rt e_z = Rw u ; v = Rt e_z = Rw u (outer = head, inner = table)
+      plane2_vec = u; plane1_vec = ez; break;
+  }
+  const auto vs = sphere_plane_plane(d2, plane2_vec.dot(d2), d1, plane1_vec.dot(d1), tolerance);
+  std::vector<RotarySolution> out;
+  const double free_tol = 1e-9;
+  for (const Vec3d& v : vs) {
+    RotarySolution s;
+    std::optional<double> q_inner, q_outer;
+    switch (l.kind) {
+      case RotaryLayout::table_table:
+        q_inner = angle_about(d2, u, v, free_tol);
+        q_outer = angle_about(d1, v, ez, free_tol);
+        break;
+      case RotaryLayout::head_head:
+        q_inner = angle_about(d2, ez, v, free_tol);
+        q_outer = angle_about(d1, v, u, free_tol);
+        break;
+      case RotaryLayout::head_table:
+        q_outer = angle_about(d1, ez, v, free_tol);  // head: e_z -> v
+        q_inner = angle_about(d2, u, v, free_tol);   // table: u -> v
+        break;
+    }
+    if (!q_inner) s.free_axis = l.inner;
+    if (!q_outer) s.free_axis = l.outer;
+    s.rotary_rad[l.inner] = q_inner ? wrap_pi(*q_inner) : 0.0;
+    s.rotary_rad[l.outer] = q_outer ? wrap_pi(*q_outer) : 0.0;
+    out.push_back(s);
+  }
+  return out;
+}
+
+Vec3d linear_for(const Machine& m, const Eigen::Vector2d& rotary_rad, const Vec3d& tip_W, const Setup& setup) {
+  AxisPosition q;
+  q.rotary_rad = rotary_rad;
+  const ChainPose<double> pose = chain_pose<double>(m, q, setup.tool_length_mm, NominalErrors{});
+  // With X = Y = Z = 0 the tool tip sits at bed_T_tool·0; the linear axes add (X, Y, Z) to it.
+  const Vec3d target = pose.bed_T_table.apply(setup.workpiece_origin_mm + tip_W);
+  return target - pose.bed_T_tool.t;
+}
+
+std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::Vector2d& rotary_rad,
+                                                 const Eigen::Vector2d& previous_rad) {
+  AxisPosition q;
+  for (int k = 0; k < m.rotary_count(); ++k) {
+    const Axis& axis = m.rotary(k);
+    const double base = rotary_rad[k];
+    // the 2π shift nearest the previous angle, then its neighbours when limits exclude it
+    const double nearest = base + 2.0 * kPi * std::round((previous_rad[k] - base) / (2.0 * kPi));
+    std::optional<double> best;
+    for (int shift : {0, -1, 1, -2, 2}) {
+      const double value = nearest + 2.0 * kPi * shift;
+      if (axis.limits && !axis.limits->contains(value)) continue;
+      if (!best || std::abs(value - previous_rad[k]) < std::abs(*best - previous_rad[k])) best = value;
+    }
+    if (!best) return std::nullopt;
+    q.rotary_rad[k] = *best;
+  }
+  return q;
+}
+
+std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
+                                               const AxisPosition& previous, const IkPolicy& policy) {
+  std::vector<std::pair<double, AxisPosition>> ranked;
+  for (RotarySolution s : rotary_solutions(m, cl.axis, policy.reach_tolerance)) {
+    if (s.free_axis >= 0) {
+      // Singular: keep the free angle, solve the other one for it.
+      s.rotary_rad[s.free_axis] = previous.rotary_rad[s.free_axis];
+    }
+    auto candidate = admissible_candidate(m, s.rotary_rad, previous.rotary_rad);
+    if (!candidate) continue;
+    candidate->linear_mm = linear_for(m, candidate->rotary_rad, cl.tip_mm, setup);
+    bool within = true;
+    for (int i = 0; i < 3; ++i)
+      if (m.axes[i].limits && !m.axes[i].limits->contains(candidate->linear_mm[i], 1e-6)) within = false;
+    if (!within) continue;
+    const double cost = (candidate->rotary_rad - previous.rotary_rad).cwiseAbs().sum();
+    ranked.emplace_back(cost, *candidate);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first - 1e-12; });
+  std::vector<AxisPosition> out;
+  for (auto& r : ranked) out.push_back(r.second);
+  return out;
+}
+
+IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const AxisPosition& previous,
+                const IkPolicy& policy) {
+  IkOutcome outcome;
+  if (!cl.axis.allFinite() || cl.axis.norm() < 1e-12 || !cl.tip_mm.allFinite()) {
+    outcome.failure.message = "tool axis is zero or not finite";
+    return outcome;
+  }
+  const auto raw = rotary_solutions(m, cl.axis, policy.reach_tolerance);
+  if (raw.empty()) {
+    outcome.failure.message = "tool orientation is out of the reach of the rotary axes";
+    return outcome;
+  }
+  for (const auto& s : raw) outcome.singular = outcome.singular || s.free_axis >= 0;
+  auto all = admissible_solutions(m, cl, setup, previous, policy);
+  if (all.empty()) {
+    outcome.failure.message = "no solution within the axis limits";
+    return outcome;
+  }
+  outcome.position = all.front();
+  return outcome;
+}
+
+}  // namespace ncpost

@@ -1,0 +1,189 @@
+#include "ncpost/machines/machine_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace ncpost {
+namespace {
+
+SourcePosition at(const std::string& file, const toml::source_region& r) {
+  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+}
+
+[[noreturn]] void fail(const std::string& file, const toml::node& n, const std::string& what) {
+  throw InputError(at(file, n.source()), what);
+}
+
+void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
+                         const std::string& section) {
+  for (const auto& [key, node] : t) {
+    if (!known.count(std::string(key.str()))) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(at(file, key.source()),
+                       fmt::format("unknown key '{}' in [{}] (expected one of: {})", key.str(), section, list));
+    }
+  }
+}
+
+Vec3d read_vector(const std::string& file, const toml::node& n, const std::string& what) {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 3) fail(file, n, fmt::format("{}: expected an array of three numbers", what));
+  Vec3d v;
+  for (std::size_t i = 0; i < 3; ++i) {
+    auto x = (*a)[i].value<double>();
+    if (!x || !std::isfinite(*x)) fail(file, (*a)[i], fmt::format("{}: expected a finite number", what));
+    v[static_cast<int>(i)] = *x;
+  }
+  return v;
+}
+
+AxisLimits read_limits(const std::string& file, const toml::node& n, double scale) {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 2) fail(file, n, "limits: expected [min, max]");
+  auto lo = (*a)[0].value<double>(), hi = (*a)[1].value<double>();
+  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi)) fail(file, n, "limits: expected two finite numbers");
+  if (!(*lo < *hi)) fail(file, n, "limits: expected min < max");
+  return {*lo * scale, *hi * scale};
+}
+
+Axis read_axis(const std::string& file, char letter, const toml::table& t) {
+  const std::string section = fmt::format("axes.{}", letter);
+  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits"}, section);
+  Axis axis;
+  axis.letter = letter;
+  auto type = t["type"].value<std::string>();
+  if (!type) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'type' (\"linear\" or \"rotary\")", section));
+  if (*type == "linear") {
+    axis.kind = AxisKind::linear;
+    if (letter != 'X' && letter != 'Y' && letter != 'Z')
+      fail(file, *t.get("type"), fmt::format("linear axis '{}': a serial machine's linear axes are X, Y and Z", letter));
+    if (t.contains("direction") || t.contains("pivot"))
+      throw InputError(at(file, t.source()), fmt::format("[{}]: a linear axis takes no direction or pivot (X, Y, Z are the axes of M)", section));
+    axis.direction = Vec3d::Unit(letter - 'X');
+    if (const toml::node* n = t.get("limits")) axis.limits = read_limits(file, *n, 1.0);
+  } else if (*type == "rotary") {
+    axis.kind = AxisKind::rotary;
+    const toml::node* d = t.get("direction");
+    if (!d) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'direction' (unit vector)", section));
+    axis.direction = read_vector(file, *d, "direction");
+    if (std::abs(axis.direction.norm() - 1.0) > 1e-6)
+      fail(file, *d, fmt::format("direction: expected a unit vector, its length is {:.9g}", axis.direction.norm()));
+    axis.direction.normalize();
+    const toml::node* p = t.get("pivot");
+    if (!p) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'pivot' (mm, a point of the axis line)", section));
+    axis.pivot_mm = read_vector(file, *p, "pivot");
+    if (const toml::node* n = t.get("limits")) axis.limits = read_limits(file, *n, kPi / 180.0);
+  } else {
+    fail(file, *t.get("type"), fmt::format("type: expected \"linear\" or \"rotary\", got \"{}\"", *type));
+  }
+  return axis;
+}
+
+}  // namespace
+
+void assign_chain(Machine& m, const std::string& chain, const SourcePosition& where) {
+  std::istringstream in(chain);
+  std::vector<std::string> tokens;
+  for (std::string tok; in >> tok;) tokens.push_back(tok);
+  auto bad = [&](const std::string& what) {
+    throw InputError(where, fmt::format("chain \"{}\": {} (expected e.g. \"w C' A' Y' b X Z t\")", chain, what));
+  };
+  if (tokens.size() < 3 || tokens.front() != "w" || tokens.back() != "t") bad("must start with 'w' and end with 't'");
+  const auto b = std::find(tokens.begin(), tokens.end(), "b");
+  if (b == tokens.end() || std::count(tokens.begin(), tokens.end(), "b") != 1) bad("must contain the bed 'b' once");
+  std::set<char> seen;
+  m.workpiece_side.clear();
+  m.tool_side.clear();
+  auto take = [&](const std::string& tok, bool primed_expected) -> int {
+    const bool primed = tok.size() == 2 && tok[1] == '\'';
+    if (tok.empty() || tok.size() > 2 || (tok.size() == 2 && !primed)) bad(fmt::format("bad axis token '{}'", tok));
+    if (primed != primed_expected)
+      bad(fmt::format("axis '{}' {} the bed must {}be primed", tok, primed_expected ? "before" : "after", primed_expected ? "" : "not "));
+    const char letter = tok[0];
+    if (!seen.insert(letter).second) bad(fmt::format("axis '{}' appears twice", letter));
+    const int idx = m.index_of(letter);
+    if (idx < 0) bad(fmt::format("axis '{}' has no [axes.{}] table", letter, letter));
+    m.axes[static_cast<std::size_t>(idx)].side = primed ? Side::workpiece : Side::tool;
+    return idx;
+  };
+  // workpiece side: listed from the workpiece to the bed; store from the bed outward
+  for (auto it = std::prev(b); it != tokens.begin(); --it) m.workpiece_side.push_back(take(*it, true));
+  for (auto it = std::next(b); it != std::prev(tokens.end()); ++it) m.tool_side.push_back(take(*it, false));
+  for (const Axis& a : m.axes)
+    if (!seen.count(a.letter)) bad(fmt::format("axis '{}' has a table but is not in the chain", a.letter));
+  for (const auto* side : {&m.workpiece_side, &m.tool_side}) {
+    bool rotary_seen = false;
+    for (int i : *side) {
+      const Axis& a = m.axes[static_cast<std::size_t>(i)];
+      if (a.is_rotary()) rotary_seen = true;
+      else if (rotary_seen)
+        bad(fmt::format("linear axis '{}' is carried by a rotary axis; linear axes must be nearer the bed", a.letter));
+    }
+  }
+  m.chain = chain;
+}
+
+Machine parse_machine(const std::string& text, const std::string& file_name) {
+  toml::table root;
+  try {
+    root = toml::parse(text, file_name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(at(file_name, e.source()), std::string(e.description()));
+  }
+  reject_unknown_keys(file_name, root, {"machine", "axes"}, "top level");
+  const toml::table* mt = root["machine"].as_table();
+  if (!mt) throw InputError({file_name, 1, 1}, "missing table [machine] (name, chain)");
+  reject_unknown_keys(file_name, *mt, {"name", "chain", "kind"}, "machine");
+  Machine m;
+  auto name = (*mt)["name"].value<std::string>();
+  if (!name) throw InputError(at(file_name, mt->source()), "[machine]: missing key 'name' (a string)");
+  m.name = *name;
+  if (auto kind = (*mt)["kind"].value<std::string>(); kind && *kind != "serial") {
+    throw InputError(at(file_name, mt->get("kind")->source()),
+                     fmt::format("[machine] kind = \"{}\": this loader reads serial machines (kind \"serial\" or no kind)", *kind));
+  }
+  const toml::node* chain = mt->get("chain");
+  if (!chain || !chain->is_string()) throw InputError(at(file_name, mt->source()), "[machine]: missing key 'chain' (a string)");
+
+  const toml::table* axes = root["axes"].as_table();
+  if (!axes || axes->empty()) throw InputError(at(file_name, root.source()), "missing [axes.*] tables");
+  std::map<char, Axis> by_letter;
+  for (const auto& [key, node] : *axes) {
+    const std::string k(key.str());
+    if (k.size() != 1 || !std::isupper(static_cast<unsigned char>(k[0])))
+      throw InputError(at(file_name, key.source()), fmt::format("axis name '{}': expected one capital letter", k));
+    const toml::table* t = node.as_table();
+    if (!t) fail(file_name, node, fmt::format("[axes.{}]: expected a table", k));
+    by_letter[k[0]] = read_axis(file_name, k[0], *t);
+  }
+  for (char c : {'X', 'Y', 'Z'}) {
+    if (!by_letter.count(c)) throw InputError(at(file_name, axes->source()), fmt::format("missing linear axis [axes.{}]", c));
+    m.axes.push_back(by_letter[c]);
+  }
+  for (auto& [letter, axis] : by_letter)
+    if (axis.is_rotary()) m.axes.push_back(axis);
+  if (m.rotary_count() != 0 && m.rotary_count() != 2)
+    throw InputError(at(file_name, axes->source()),
+                     fmt::format("{} rotary axes: a serial machine has none or two", m.rotary_count()));
+  if (m.rotary_count() == 2 && m.rotary(0).direction.cross(m.rotary(1).direction).norm() < 1e-6)
+    throw InputError(at(file_name, axes->source()), "the two rotary axes are parallel: the tool axis cannot be oriented");
+  assign_chain(m, *chain->value<std::string>(), at(file_name, chain->source()));
+  return m;
+}
+
+Machine load_machine(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0}, "cannot open the machine file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parse_machine(s.str(), path);
+}
+
+}  // namespace ncpost

@@ -1,0 +1,116 @@
+#pragma once
+// The records of a CL (cutter location) program as the post acts on them, independent of the
+// source format (APT CL source from NX, CATIA, Creo; G-code mapped back to CL).
+//
+// Units: every length is in mm and every angle in degrees *as written* is converted by the
+// reader: positions in mm in W, tool axis unit vectors in W, feeds in mm/min (or mm/rev).
+// Every record carries the position of its first character in the source.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/machines/input_error.hpp"
+
+namespace ncpost::cl {
+
+struct Location {
+  int line = 0;    ///< 1-based line of the record's first character
+  int column = 0;  ///< 1-based column
+};
+
+/// GOTO / FROM / GODLTA (made absolute), one motion. `rapid` for the motion after RAPID.
+struct Motion {
+  Location where;
+  ClPoint point;               ///< tip in mm in W, unit axis in W (the last axis when the record had none)
+  bool axis_given = false;     ///< the record carried i, j, k
+  bool rapid = false;
+  bool from = false;           ///< FROM: the start position, no cutting
+};
+
+struct Feed {
+  Location where;
+  double value = 0.0;          ///< mm/min, or mm/rev when per_rev
+  bool per_rev = false;
+};
+
+struct Spindle {
+  Location where;
+  enum class Direction { cw, ccw, off } direction = Direction::cw;
+  double rpm = 0.0;
+};
+
+struct Coolant {
+  Location where;
+  bool on = true;
+  std::string mode;            ///< FLOOD, MIST, THRU, ... as written
+};
+
+struct ToolChange {
+  Location where;
+  int number = 0;
+  std::optional<double> length_mm;  ///< from LOADTL/n,LENGTH,l or TLDATA where given
+};
+
+/// CIRCLE/xc,yc,zc,i,j,k,r,...: the next Motion ends the arc (centre and axis in W, mm).
+struct Circle {
+  Location where;
+  Vec3d center_mm = Vec3d::Zero();
+  Vec3d axis = Vec3d::UnitZ();
+  double radius_mm = 0.0;
+};
+
+/// CYCLE/DRILL|DEEP|... (OFF ends it); the GOTOs that follow are the holes.
+struct Cycle {
+  Location where;
+  enum class Kind { off, drill, deep, tap, bore, other } kind = Kind::off;
+  double depth_mm = 0.0;       ///< drilling depth below the GOTO point, along the tool axis
+  double clearance_mm = 0.0;   ///< retract plane distance above the GOTO point
+  double step_mm = 0.0;        ///< peck depth (DEEP)
+  double feed = 0.0;           ///< mm/min (0: keep the current feed)
+  double dwell_s = 0.0;
+  std::string text;            ///< the record as written
+};
+
+/// PPRINT, PARTNO, INSERT, `$$` comments and anything passed through as a comment.
+struct Comment {
+  Location where;
+  std::string text;
+};
+
+/// A statement the post does not act on: passed through as a comment with a notice.
+struct Unsupported {
+  Location where;
+  std::string text;
+};
+
+/// END-OF-PATH, FINI, END: the end of an operation or of the program.
+struct End {
+  Location where;
+  bool program = false;        ///< FINI: end of the whole program
+};
+
+using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, Circle, Cycle, Comment, Unsupported, End>;
+
+/// Where a record starts.
+inline Location location_of(const Record& r) {
+  return std::visit([](const auto& x) { return x.where; }, r);
+}
+
+/// Options of every CL reader.
+struct ReaderOptions {
+  bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
+};
+
+/// A pull-style stream of records; readers stream so memory stays flat in the input size.
+/// Bad input throws InputError (file:line:column, what was expected).
+class Reader {
+ public:
+  virtual ~Reader() = default;
+  virtual std::optional<Record> next() = 0;
+  /// Notices gathered so far (unsupported statements, ignored words), with their position.
+  virtual std::vector<std::string> take_notices() { return {}; }
+};
+
+}  // namespace ncpost::cl

@@ -1,0 +1,1 @@
+#include "ncpost/postproc/cl_record.hpp"
