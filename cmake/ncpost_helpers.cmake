@@ -5,7 +5,7 @@ function(ncpost_library name)
   add_library(ncpost_${name} STATIC ${_srcs})
   add_library(ncpost::${name} ALIAS ncpost_${name})
   target_include_directories(ncpost_${name} PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}/include")
-  target_compile_options(ncpost_${name} PRIVATE -Wall -Wextra -Wpedantic)
+  target_compile_options(ncpost_${name} PRIVATE -Wall -Wextra -Wpedantic -Wno-restrict)
   target_link_libraries(ncpost_${name} PUBLIC ${ARGN})
 endfunction()
 

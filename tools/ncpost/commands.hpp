@@ -8,14 +8,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "ncpost/machines/input_error.hpp"
+
 namespace ncpost::cli {
 
 using Action = std::function<int()>;
 
-/// An expected failure that is not bad input: out of limits, a fit that did not converge (exit 3).
-struct Infeasible : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+/// An expected failure that is not bad input (exit 3): see ncpost::Infeasible.
+using Infeasible = ncpost::Infeasible;
 
 /// A usage error found after parsing (conflicting options, bad option value): exit 1.
 struct UsageError : std::runtime_error {

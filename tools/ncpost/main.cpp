@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   } catch (const ncpost::cli::UsageError& e) {
     fmt::print(stderr, "ncpost: usage error: {}\n", e.what());
     return 1;
-  } catch (const ncpost::cli::Infeasible& e) {
+  } catch (const ncpost::Infeasible& e) {
     fmt::print(stderr, "ncpost: infeasible: {}\n", e.what());
     return 3;
   } catch (const std::exception& e) {

@@ -36,4 +36,11 @@ class InputError : public std::runtime_error {
   std::string source_line_;
 };
 
+/// An expected failure that is not bad input: a pose out of the axis limits, a fit that did not
+/// converge. The CLI maps it to exit code 3.
+class Infeasible : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace ncpost
