@@ -94,4 +94,38 @@ inline std::vector<nonlinear::ClBlock> blocks_of(const Machine& m, const Setup& 
   return blocks;
 }
 
+/// Inverse kinematics of the actual machine for tests: the nominal solution, then Gauss-Newton on
+/// the forward chain with `Errors` (tip and axis residual, finite-difference Jacobian).
+template <class Errors> struct ModelSolver {
+  const Machine& machine;
+  Setup setup;
+  Errors errors;
+  IkOutcome operator()(const ClPoint& cl, const AxisPosition& previous) const {
+    IkOutcome o = solve(machine, cl, setup, previous);
+    if (!o.ok()) return o;
+    AxisPosition q = *o.position;
+    auto residual = [&](const AxisPosition& x) {
+      const auto pose = tool_pose<double>(machine, x, setup, errors);
+      Eigen::Matrix<double, 6, 1> r;
+      r << pose.tip_mm - cl.tip_mm, 100.0 * (pose.axis - cl.axis.normalized());
+      return r;
+    };
+    for (int it = 0; it < 6; ++it) {
+      const Eigen::Matrix<double, 6, 1> r0 = residual(q);
+      if (r0.norm() < 1e-11) break;
+      Eigen::Matrix<double, 6, 5> jac;
+      for (int j = 0; j < 5; ++j) {
+        AxisPosition x = q;
+        const double h = j < 3 ? 1e-6 : 1e-8;
+        x[j] += h;
+        jac.col(j) = (residual(x) - r0) / h;
+      }
+      const Eigen::Matrix<double, 5, 1> step = jac.colPivHouseholderQr().solve(-r0);
+      for (int j = 0; j < 5; ++j) q[j] += step[j];
+    }
+    o.position = q;
+    return o;
+  }
+};
+
 }  // namespace ncpost::test

@@ -12,9 +12,15 @@
 //      ceil(Σ sqrt(e_k / tolerance)) pieces placed at equal increments of the cumulative
 //      Σ sqrt(e_k) (equidistribution), tried once;
 //   3. pieces that still fail are cut again the same way (recursively, `max_depth`).
-// Axis limits and rotary continuity: the solver applies the limits and the choice of solution;
-// a node more than `max_rotary_step_rad` away from its neighbour (a change of solution inside the
-// block) makes the block fail with a message rather than emit a flip.
+// Axis limits and rotary continuity: the solver applies the limits and the choice of solution.
+// Near the singular cone the block's end points can sit on different branches (e.g. A +2° → −2° with
+// C nearly still, while the exact path along the CL segment needs C to swing ~180°): no continuous
+// exact subdivision exists. This is detected up front (the exact solution at t = ¼, ½, ¾ more than
+// `branch_deviation_rad` from the linear interpolation of the block's rotary angles); such a block,
+// and any single node without an admissible continuous solution, keeps the rotary angles of the
+// interpolation q0 + t·(q1 − q0) and only the linear axes put the tool tip on the CL point (exact in
+// position; the orientation is the block's own: counted in `rotary_kept_nodes`). No flip is ever
+// emitted inside a block; linear axes out of their limits make the block fail with a message.
 // Units: mm, rad; CL in W; t is the parameter of the input block.
 #include <algorithm>
 #include <cmath>
@@ -31,7 +37,8 @@ struct AdaptiveOptions {
   double tolerance_mm = 0.005;
   int max_depth = 8;
   int max_blocks = 4096;                ///< output blocks per input block
-  double max_rotary_step_rad = 0.5;     ///< beyond the input block's own rotary travel
+  double max_rotary_step_rad = 0.5;     ///< node-to-node jump beyond the block's own rotary travel
+  double branch_deviation_rad = 0.5;    ///< exact IK this far from the interpolation: keep rotaries
   NonlinearErrorOptions error;
   bool valid() const { return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && error.valid(); }
 };
@@ -60,8 +67,10 @@ template <class Errors, class Solver> class Subdivider {
     SplitBlock out;
     const NonlinearError e = error_of(0.0, block_.start, block_.from, 1.0, block_.end, block_.to);
     out.input_error_mm = e.max_error_mm;
+    if (e.max_error_mm > options_.tolerance_mm) keep_rotary_ = !branch_consistent();
     Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e};
     refine(whole, 0, out);
+    out.rotary_kept_nodes = rotary_kept_;
     return out;
   }
 
@@ -101,16 +110,14 @@ template <class Errors, class Solver> class Subdivider {
       if (k < cuts.size()) {
         tb = cuts[k];
         cb = cl_at(block_.start, block_.end, tb);
-        const IkOutcome o = solver_(cb, qa);
-        if (!o.ok()) {
-          failure = fmt::format("no inverse kinematics for an inserted point at t = {:.4f}: {}", tb, o.failure.message);
-          return std::nullopt;
+        const IkOutcome o = keep_rotary_ ? IkOutcome{} : solver_(cb, qa);
+        if (o.ok() && (o.position->rotary_rad - qa.rotary_rad).cwiseAbs().maxCoeff() <= max_step_) {
+          qb = *o.position;
+        } else {
+          auto kept = rotary_kept_node(tb, cb, failure);
+          if (!kept) return std::nullopt;
+          qb = *kept;
         }
-        qb = *o.position;
-      }
-      if ((qb.rotary_rad - qa.rotary_rad).cwiseAbs().maxCoeff() > max_step_) {
-        failure = fmt::format("the rotary solution changes inside the block near t = {:.4f}", tb);
-        return std::nullopt;
       }
       pieces.push_back({ta, ca, qa, tb, cb, qb, error_of(ta, ca, qa, tb, cb, qb)});
       ta = tb;
@@ -118,6 +125,35 @@ template <class Errors, class Solver> class Subdivider {
       qa = qb;
     }
     return pieces;
+  }
+
+  /// False when the exact solutions inside the block leave the interpolation of its end points
+  /// (end points on different branches, near the singular cone).
+  bool branch_consistent() const {
+    const double limit = std::max(options_.branch_deviation_rad,
+                                  (block_.to.rotary_rad - block_.from.rotary_rad).cwiseAbs().maxCoeff());
+    for (double t : {0.25, 0.5, 0.75}) {
+      const AxisPosition hint = lerp(block_.from, block_.to, t);
+      const IkOutcome o = solver_(cl_at(block_.start, block_.end, t), hint);
+      if (o.ok() && (o.position->rotary_rad - hint.rotary_rad).cwiseAbs().maxCoeff() > limit) return false;
+    }
+    return true;
+  }
+
+  /// The node at tb with the block's interpolated rotary angles and the tip on cb.
+  std::optional<AxisPosition> rotary_kept_node(double tb, const ClPoint& cb, std::string& failure) const {
+    const ExecutedBlock<Errors> executed(machine_, setup_, block_, errors_);
+    const AxisPosition q = shift_linear_axes(executed, lerp(block_.from, block_.to, tb), cb.tip_mm);
+    for (int i = 0; i < 3; ++i) {
+      const Axis& axis = machine_.axes[static_cast<std::size_t>(i)];
+      if (axis.limits && !axis.limits->contains(q.linear_mm[i], 1e-6)) {
+        failure = fmt::format("an inserted point at t = {:.4f} needs axis {} = {:.3f} mm, out of its limits", tb,
+                              axis.letter, q.linear_mm[i]);
+        return std::nullopt;
+      }
+    }
+    ++rotary_kept_;
+    return q;
   }
 
   static int failures(const std::vector<Piece>& pieces, double tolerance) {
@@ -175,6 +211,8 @@ template <class Errors, class Solver> class Subdivider {
   Solver& solver_;
   const AdaptiveOptions& options_;
   double max_step_ = 0.0;
+  mutable int rotary_kept_ = 0;
+  bool keep_rotary_ = false;
 };
 
 }  // namespace detail

@@ -36,18 +36,6 @@ struct HarmonicOptions {
   bool valid() const { return tolerance_mm > 0 && fixed_blocks >= 0 && max_blocks >= 1 && error.valid(); }
 };
 
-/// The axis position near `q` whose executed tip (W) is `target_W`, changing the linear axes only
-/// (Newton steps with the table rotation as the Jacobian of the tip in W w.r.t. X Y Z).
-template <class Errors>
-AxisPosition shift_linear_axes(const ExecutedBlock<Errors>& executed, AxisPosition q, const Vec3d& target_W) {
-  for (int it = 0; it < 4; ++it) {
-    const Vec3d residual = target_W - executed.pose_at(q).tip_mm;
-    if (residual.norm() < 1e-10) break;
-    q.linear_mm += executed.table_rotation_at(q) * residual;
-  }
-  return q;
-}
-
 template <class Errors = NominalErrors>
 SplitBlock harmonic_compensate(const Machine& machine, const Setup& setup, const ClBlock& block,
                                const Errors& errors = {}, const HarmonicOptions& options = {}) {
