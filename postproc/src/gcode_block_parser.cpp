@@ -1,6 +1,9 @@
 // The Spirit X3 grammar of one RS274 block (see gcode_block.hpp for the rules it implements).
 // Semantic actions append straight into the caller's Block (no attribute containers), so a line
 // costs no allocation once the Block's vectors have grown.
+// <cfloat> first: X3's table of powers of ten for double is only compiled in when DBL_MAX_10_EXP
+// is defined (otherwise every fractional number costs a call to std::pow).
+#include <cfloat>
 #include <boost/spirit/home/x3.hpp>
 #include <fmt/format.h>
 
@@ -88,10 +91,10 @@ const auto paren_comment = x3::rule<struct paren_tag>{"comment"} =
     x3::raw[x3::lit('(') >> x3::lexeme[*(x3::char_ - ')')]][on_comment] > close_paren;
 const auto semicolon_comment = x3::rule<struct semi_tag>{"comment"} =
     x3::raw[x3::lit(';') >> x3::lexeme[*x3::char_]][on_comment];
-const auto keyword = x3::rule<struct keyword_tag>{"keyword"} =
-    x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
+const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") >>
+    (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
         -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
-    x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>];
+     x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
 const auto block_grammar = -x3::lit('/')[on_delete] >> *(paren_comment | keyword | word) >> -semicolon_comment;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }

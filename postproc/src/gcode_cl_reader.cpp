@@ -79,6 +79,19 @@ struct GcodeClReader::State {
     }
   }
 
+  /// The nominal chain's set-up at home (T(0), the identity for a nominal machine), cached.
+  ChainPose<double> home = raw_chain_pose<double>(machine, AxisPosition{}, setup.tool_length_mm, NominalErrors{}, true);
+  Rigidd home_table_inverse = home.bed_T_table.inverse();
+  Rigidd home_tool_inverse = home.bed_T_tool.inverse();
+
+  /// kinematics::forward (tool_pose with NominalErrors) with the home part computed once: the
+  /// tool body in the table frame at command q.
+  Rigidd nominal_table_T_tool(const AxisPosition& q) const {
+    const ChainPose<double> at_q = raw_chain_pose<double>(machine, q, setup.tool_length_mm, NominalErrors{}, false);
+    const ChainPose<double> actual{at_q.bed_T_table * home_table_inverse, at_q.bed_T_tool * home_tool_inverse};
+    return actual.table_T_tool();
+  }
+
   bool rtcp_now() {
     switch (options.kind) {
       case InputKind::machine: return false;
@@ -99,16 +112,9 @@ struct GcodeClReader::State {
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     if (machine.rotary_count() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
     last_rtcp = rtcp_now();
-    if (last_rtcp) {
-      m.point.tip_mm = q.linear_mm;
-      AxisPosition rotation_only = q;
-      rotation_only.linear_mm.setZero();
-      m.point.axis = forward(machine, rotation_only, setup).axis;
-    } else {
-      const ToolPoseT<double> pose = forward(machine, q, setup);
-      m.point.tip_mm = pose.tip_mm;
-      m.point.axis = pose.axis;
-    }
+    const Rigidd table_T_tool = nominal_table_T_tool(q);
+    m.point.axis = table_T_tool.R.col(2);
+    m.point.tip_mm = last_rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
     m.inverse_time = effect.inverse_time;
     m.feed = effect.motion_feed;
     return m;
