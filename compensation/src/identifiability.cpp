@@ -9,8 +9,15 @@ RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance) {
   RankAnalysis a;
   const Eigen::Index n = J.cols();
   a.column_norms = J.colwise().norm().transpose();
+  // a column this small next to the largest has no effect (rounding of an exact invariance)
+  const double largest = n > 0 ? a.column_norms.maxCoeff() : 0.0;
+  for (Eigen::Index c = 0; c < n; ++c)
+    if (a.column_norms[c] <= 1e-9 * largest) a.column_norms[c] = 0.0;
   Eigen::MatrixXd Js = J;
-  for (Eigen::Index c = 0; c < n; ++c) Js.col(c) /= a.column_norms[c] > 0.0 ? a.column_norms[c] : 1.0;
+  for (Eigen::Index c = 0; c < n; ++c) {
+    if (a.column_norms[c] > 0.0) Js.col(c) /= a.column_norms[c];
+    else Js.col(c).setZero();
+  }
   if (n > 0) {
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(Js);
     a.singular_values = svd.singularValues();

@@ -9,7 +9,7 @@
 // A column counts as dependent when its distance from the span of the kept columns (both
 // scaled) is below `tolerance`; the default 1e-5 separates the exact and first-order couplings
 // of ballbar and sphere tests (residual distance ~1e-6 and below) from weak but real
-// observability (1e-3 and above).
+// observability (1e-3 and above). A column shorter than 1e-9 of the longest counts as zero.
 #include <string>
 #include <vector>
 
