@@ -30,6 +30,11 @@ struct RankAnalysis {
   std::vector<Eigen::VectorXd> null_vectors;  ///< one per pinned column, unit, in scaled space
 };
 
-RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance = 1e-3);
+/// `typical` (optional, one per column): a plausible size of each parameter (e.g. 0.01 mm,
+/// 5e-5 rad). A column whose effect at that size is below `tolerance` times the largest such
+/// effect counts as without effect: scaling alone would hide a parameter seen only at second
+/// order (e.g. a B-line tilt read along X and Z only).
+RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance = 1e-3,
+                          const Eigen::VectorXd& typical = Eigen::VectorXd());
 
 }  // namespace ncpost::comp
