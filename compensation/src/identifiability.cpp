@@ -5,7 +5,7 @@
 
 namespace ncpost::comp {
 
-RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance) {
+RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance, const Eigen::VectorXd& typical) {
   RankAnalysis a;
   const Eigen::Index n = J.cols();
   a.column_norms = J.colwise().norm().transpose();
@@ -13,6 +13,12 @@ RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance) {
   const double largest = n > 0 ? a.column_norms.maxCoeff() : 0.0;
   for (Eigen::Index c = 0; c < n; ++c)
     if (a.column_norms[c] <= 1e-9 * largest) a.column_norms[c] = 0.0;
+  if (typical.size() == n && n > 0) {
+    const Eigen::VectorXd effect = a.column_norms.cwiseProduct(typical.cwiseAbs());
+    const double strongest = effect.maxCoeff();
+    for (Eigen::Index c = 0; c < n; ++c)
+      if (effect[c] < tolerance * strongest) a.column_norms[c] = 0.0;
+  }
   Eigen::MatrixXd Js = J;
   for (Eigen::Index c = 0; c < n; ++c) {
     if (a.column_norms[c] > 0.0) Js.col(c) /= a.column_norms[c];

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/compensation/residuals.hpp"
 
 namespace ncpost::comp {
@@ -44,6 +45,26 @@ void stats(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
 }
 
 char letter_of(int component) { return "XYZABC"[component]; }
+
+/// A plausible size of a parameter (identifiability.hpp): 10 µm, 50 µrad, over 300 mm of travel
+/// for polynomial terms, over an hour for drift rates.
+double typical_size(const Machine& m, const ParameterSpec& s) {
+  const double base = s.is_angle() ? 5e-5 : 0.01;
+  switch (s.kind) {
+    case ParameterKind::polynomial: return base / std::pow(300.0, s.order);
+    case ParameterKind::reversal:
+      return m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary() ? 5e-5 : 0.01;
+    case ParameterKind::drift:
+      switch (s.drift) {
+        case DriftBasis::linear: return 0.01 / 3600.0;
+        case DriftBasis::quadratic: return 0.01 / (3600.0 * 3600.0);
+        case DriftBasis::exponential: return 0.01;
+        case DriftBasis::time_constant: return 300.0;
+      }
+      return 0.01;
+    default: return base;
+  }
+}
 
 }  // namespace
 
@@ -93,7 +114,9 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   const Eigen::Index m_count = r0.size();
 
   // 1. identifiability at the prior
-  const RankAnalysis prior_rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance);
+  Eigen::VectorXd typical(static_cast<Eigen::Index>(free.size()));
+  for (std::size_t i = 0; i < free.size(); ++i) typical[static_cast<Eigen::Index>(i)] = typical_size(m, prob.layout.spec(free[i]));
+  const RankAnalysis prior_rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance, typical);
   std::vector<int> kept;
   for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
 
@@ -147,7 +170,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 
   // 3. results, uncertainty, identifiability at the solution
   const Eigen::MatrixXd Jfree = prob.jacobian(values, free);
-  res.rank = analyse_rank(Jfree, o.rank_tolerance);
+  res.rank = analyse_rank(Jfree, o.rank_tolerance, typical);
   {
     const Eigen::MatrixXd J = prob.jacobian(values, kept);
     Eigen::VectorXd w(m_count);

@@ -131,7 +131,7 @@ std::vector<NamedPlan> plan_bc_head(const Machine& m, const BcHeadPlanOptions& o
   };
   std::vector<Test> tests = {{"c_x", 'C', {0, 90, 180}, 'X'}, {"c_y", 'C', {0, 90, 180}, 'Y'},
                              {"b_x", 'B', {0, 90, -90}, 'X'}};
-  if (!o.seed_directions) tests.push_back({"b_y", 'B', {0, 90, -90}, 'Y'});
+  if (o.b_test_along_y) tests.push_back({"b_y", 'B', {0, 90, -90}, 'Y'});
   tests.push_back({"b_z", 'B', {0, 90, -90}, 'Z'});
   std::vector<NamedPlan> out;
   double t = o.t0_s;

@@ -55,7 +55,8 @@ void add_plan(CLI::App& app, Action& action) {
   sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)");
   sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250)")
       ->take_all();
-  sub->add_flag("--seed-directions", a->seed_directions, "bc-head: read the B test along X and Z only, as seed 002");
+  sub->add_flag("--seed-directions", a->seed_directions,
+                "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
   sub->callback([&action, a] {
     action = [a] {
       const Machine m = load_machine(a->machine);
@@ -85,7 +86,7 @@ void add_plan(CLI::App& app, Action& action) {
           if (a->bar_length) o.bar_length_mm = *a->bar_length;
           if (a->dt) o.dt_s = *a->dt;
           if (a->t0) o.t0_s = *a->t0;
-          o.seed_directions = a->seed_directions;
+          o.b_test_along_y = !a->seed_directions;
           plans = comp::plan_bc_head(m, o);
         }
       } catch (const std::invalid_argument& e) {

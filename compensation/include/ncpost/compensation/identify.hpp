@@ -27,7 +27,7 @@ struct IdentifyOptions {
   Loss loss = Loss::squared;
   double loss_scale_um = 3.0;   ///< where the robust loss leaves the quadratic (µm)
   int max_iterations = 100;
-  double rank_tolerance = 1e-5;  ///< identifiability.hpp
+  double rank_tolerance = 1e-3;  ///< identifiability.hpp
   ErrorParameters fixed;         ///< known values (e.g. measured separately): held, not fitted
 
   /// Empty if valid, else what is wrong.

@@ -14,8 +14,9 @@
 //   each level of the other axis (levels outside the limits are skipped).
 // bc-head (seed 002, Gao et al.): ballbar with the tool ball at the TCP held at `point`; C test:
 //   B = 0, C at 0/90/180°, bar along X and Y; B test: C = 0, B at 0/+90/−90°, bar along X, Y and
-//   Z (the seed reads X and Z only: `seed_directions`); one set per test, direction and tool
-//   length.
+//   Z (the seed reads X and Z only: `b_test_along_y = false`; the tilts of the B line then act
+//   only at second order); one set per test, direction and tool length. Two tool lengths by
+//   default: at one, the offset and the tilt of the C line act alike at the ball.
 #include <string>
 #include <vector>
 
@@ -44,7 +45,7 @@ struct BcHeadPlanOptions {
   std::vector<double> tool_lengths_mm{100.0, 250.0};
   double bar_length_mm = 100.0;
   Vec3d point_mm = Vec3d::Zero();  ///< where the tool ball is held (M)
-  bool seed_directions = false;    ///< B test along X and Z only, as the seed
+  bool b_test_along_y = true;      ///< false: the seed's directions (B test along X and Z)
   double dt_s = 10.0;
   double gap_s = 60.0;
   double t0_s = 0.0;
