@@ -1,0 +1,66 @@
+#pragma once
+// One block (line) of an RS274-family program as written: its words, comments and markers,
+// before any meaning is applied (spec/formats.md "NC programs").
+//
+// Lexical rules (the Spirit X3 grammar is in gcode_block_parser.cpp):
+//   block   := [ '/' ] { comment | keyword | word } [ ';' text ]      -- blanks anywhere between
+//   word    := letter number                                           -- letter case-insensitive
+//   number  := [ '+' | '-' ] ( digits [ '.' digits? ] | '.' digits )   -- no exponent, NaN, Inf
+//   comment := '(' text ')'
+//   keyword := TRAORI [ '(' n ')' ] | TRAFOOF                          -- Sinumerik RTCP on/off
+// A line holding only '%' (and blanks) is a program delimiter. Blanks may stand between a letter
+// and its number (`X  16.339`) but not inside a number (`X1 0` is an error, not X10).
+// Parameters (`#1`), expressions (`[...]`), assignments and O-word control flow are not supported:
+// they are rejected with the exact column.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ncpost/machines/input_error.hpp"
+
+namespace ncpost::gcode {
+
+/// A letter word: the letter in upper case, its value as written (no unit conversion).
+struct Word {
+  char letter = '?';
+  double value = 0.0;
+  int column = 0;  ///< 1-based column of the letter
+};
+
+/// A `(...)` or `;` comment; `text` views the line buffer (valid until the next line is read).
+struct BlockComment {
+  std::string_view text;
+  int column = 0;  ///< 1-based column of '(' or ';'
+};
+
+enum class Keyword { traori, trafoof };
+
+struct BlockKeyword {
+  Keyword keyword = Keyword::traori;
+  int column = 0;
+};
+
+/// One parsed line. Containers are cleared and refilled for every line (capacity is reused).
+struct Block {
+  bool percent = false;       ///< a '%' program delimiter line
+  bool deleted = false;       ///< starts with '/' (block delete)
+  int column = 0;             ///< 1-based column of the first non-blank character (0: blank line)
+  std::vector<Word> words;    ///< in the order written
+  std::vector<BlockComment> comments;
+  std::vector<BlockKeyword> keywords;
+
+  void clear() {
+    percent = deleted = false;
+    column = 0;
+    words.clear();
+    comments.clear();
+    keywords.clear();
+  }
+  bool empty() const { return !percent && words.empty() && comments.empty() && keywords.empty(); }
+};
+
+/// Parses one line (without its line terminator) into `block`. Throws InputError naming
+/// `file`, `line_number` and the exact column, with the line for a caret display.
+void parse_block(std::string_view line, Block& block, const std::string& file, int line_number);
+
+}  // namespace ncpost::gcode

@@ -1,0 +1,78 @@
+#pragma once
+// G-code input mapped back to CL records (spec/cli.md "post": INPUT may be G-code), streaming.
+//
+// Two kinds of program (conventions.md frames M and W):
+//   machine-axis program: X Y Z and the rotary words are machine commands (no RTCP); each motion
+//     is mapped through the NOMINAL forward kinematics of the machine and job set-up to the tool
+//     tip and tool axis in W.
+//   RTCP program: X Y Z are the tool tip in W, the rotary words are machine angles; the tool axis
+//     in W follows from the angles through the rotation part of the forward chain.
+// In both, cl::Motion::rotary_rad carries the programmed angles (rad, machine rotary order).
+// `InputKind::automatic` follows the program's own RTCP switches (M428/M429, G43.4/G49, G234/G49,
+// TRAORI/TRAFOOF, M128/M129: see gcode_modal.hpp); `machine` and `rtcp` force one reading for
+// every motion.
+//
+// Records: comments -> cl::Comment; F under G94/G95 -> cl::Feed (mm/min or mm/rev); S/M3/M4/M5 ->
+// cl::Spindle; M6 -> cl::ToolChange (the last T); M7/M8/M9 -> cl::Coolant; G0 -> Motion with
+// rapid; G1 -> Motion; under G93 motions carry inverse_time and feed (1/min); M2/M30 -> cl::End
+// (the rest of the file is ignored, as controls do); dwell, G28/G30, M0/M1 and unknown M codes ->
+// cl::Unsupported with a notice.
+// Arcs (G2/G3, also helical, with P turns) are expanded into points: equal angle steps with a
+// chord error <= `arc_chord_tolerance_mm` (1 µm by default), interpolated in program space (the
+// control's motion) and then mapped like any motion; under G93 each of the n segments gets
+// n x F so that the arc still takes 1/F minutes.
+// Units: G20 (inch) lengths and feeds are converted to mm; rotary words are degrees.
+// Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
+// as truncated: InputError); text after the closing '%' is ignored. Blocks starting with '/' are
+// skipped while `block_delete` is on.
+#include <istream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/postproc/cl_record.hpp"
+
+namespace ncpost::gcode {
+
+enum class InputKind { automatic, machine, rtcp };
+
+/// "auto", "machine" or "rtcp" (as the CLI writes them); nullopt otherwise.
+std::optional<InputKind> parse_input_kind(std::string_view text);
+
+struct GcodeReaderOptions {
+  InputKind kind = InputKind::automatic;
+  bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
+  bool block_delete = true;              ///< skip blocks that start with '/'
+  double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
+
+  /// Empty when valid, else what is wrong.
+  std::string validate() const;
+};
+
+class GcodeClReader final : public cl::Reader {
+ public:
+  /// Reads `in` (which must outlive the reader). Throws std::invalid_argument for invalid options.
+  GcodeClReader(std::istream& in, std::string file_name, const Machine& machine, const Setup& setup,
+                GcodeReaderOptions options = {});
+  ~GcodeClReader() override;
+
+  std::optional<cl::Record> next() override;
+  std::vector<std::string> take_notices() override;
+
+  /// Whether the last motion returned was read as an RTCP (tool-tip) motion.
+  bool last_motion_rtcp() const;
+  /// Lines read so far.
+  int lines_read() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+/// Opens and reads a file; InputError (exit code 2) when it cannot be opened.
+std::unique_ptr<cl::Reader> open_gcode(const std::string& path, const Machine& machine, const Setup& setup,
+                                       GcodeReaderOptions options = {});
+
+}  // namespace ncpost::gcode

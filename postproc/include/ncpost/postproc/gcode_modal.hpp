@@ -1,0 +1,92 @@
+#pragma once
+// The meaning of RS274 blocks: modal state (G0-G3, G17-G19, G20/G21, G90/G91, G90.1/G91.1,
+// G93/G94/G95, F, S, T, M, RTCP on/off) and what each block does, in the RS274NGC order of
+// execution (comments, feed mode, F, S, T, M6, M3-M5, M7-M9, dwell, modal settings, motion,
+// stop). Units are converted here: lengths to mm (G20 inches x 25.4, also F under G94/G95),
+// rotary words from degrees to rad; incremental words (G91) are made absolute.
+//
+// Supported and rejected words (InputError with the exact column):
+//   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
+//   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234; M0-M9 M30 M128 M129 M428
+//   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
+//   R S T X Y Z. Cutter compensation (G41/G42), canned cycles, G10/G52/G92 offsets, rotation,
+//   scaling, polar coordinates, threading, probing, subprograms (M97/M98/M99), U V W and E are
+//   "not supported" errors; so are rotary letters the machine lacks.
+//
+// RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
+// (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/gcode_arc.hpp"
+#include "ncpost/postproc/gcode_block.hpp"
+
+namespace ncpost::gcode {
+
+enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw };
+enum class FeedMode { per_minute, inverse_time, per_revolution };
+enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
+
+struct ModalState {
+  MotionMode motion = MotionMode::none;
+  Plane plane = Plane::xy;
+  bool inch = false;
+  bool incremental = false;
+  bool arc_centre_absolute = false;  ///< G90.1
+  FeedMode feed_mode = FeedMode::per_minute;
+  double feed = 0.0;                 ///< mm/min, mm/rev, or 1/min (G93), converted
+  double spindle_rpm = 0.0;
+  cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
+  int tool = 0;                      ///< the selected T
+  Rtcp rtcp = Rtcp::off;
+  ProgramPoint position{};           ///< the current position (mm, rad)
+  std::array<bool, 6> known{};       ///< the axis has been programmed (or taken as 0)
+  bool ended = false;                ///< M2/M30 seen
+};
+
+/// What one block does. Cleared by `Interpreter::apply` before it fills it.
+struct BlockEffect {
+  std::optional<cl::Feed> feed;            ///< F under G94/G95
+  std::optional<cl::Spindle> spindle;      ///< S while turning, or M3/M4/M5
+  std::optional<cl::ToolChange> tool_change;
+  std::optional<cl::Coolant> coolant;
+  std::vector<cl::Unsupported> before_motion;  ///< dwell, G28/G30 ... (passed through)
+  bool has_motion = false;
+  MotionMode motion = MotionMode::none;
+  ProgramPoint start{};
+  ProgramPoint end{};
+  std::optional<ArcMove> arc;              ///< for G2/G3
+  std::optional<double> motion_feed;       ///< F given on this block (converted)
+  bool inverse_time = false;               ///< G93 active for this motion
+  std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
+  bool program_end = false;                ///< M2 / M30
+
+  void clear();
+};
+
+class Interpreter {
+ public:
+  /// `axis_letters`: the axes the program may use (e.g. "XYZAC"); other rotary letters are errors.
+  Interpreter(std::string file_name, std::string axis_letters, bool default_inch = false);
+
+  /// Applies one block. `line` is the source text (for error carets). Throws InputError.
+  void apply(const Block& block, int line_number, std::string_view line, BlockEffect& effect);
+
+  const ModalState& state() const { return state_; }
+  std::vector<std::string> take_notices();
+
+ private:
+  struct Words;
+  void notice_once(const std::string& key, int line, int column, const std::string& text);
+
+  std::string file_;
+  std::string axis_letters_;
+  ModalState state_;
+  std::vector<std::string> notices_;
+  std::vector<std::string> noticed_keys_;
+};
+
+}  // namespace ncpost::gcode

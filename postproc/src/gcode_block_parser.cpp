@@ -1,0 +1,176 @@
+// The Spirit X3 grammar of one RS274 block (see gcode_block.hpp for the rules it implements).
+// Semantic actions append straight into the caller's Block (no attribute containers), so a line
+// costs no allocation once the Block's vectors have grown.
+// <cfloat> first: X3's table of powers of ten for double is only compiled in when DBL_MAX_10_EXP
+// is defined (otherwise every fractional number costs a call to std::pow).
+#include <cfloat>
+#include <boost/spirit/home/x3.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ncpost/postproc/gcode_block.hpp"
+
+namespace ncpost::gcode {
+namespace {
+
+namespace x3 = boost::spirit::x3;
+using Iterator = const char*;
+
+/// Real numbers as RS274 writes them: optional sign, `5`, `5.`, `.5`; no exponent (E is a word
+/// letter), no NaN or Inf.
+template <class T> struct GcodeRealPolicies : x3::real_policies<T> {
+  template <class It> static bool parse_exp(It&, const It&) { return false; }
+  template <class It, class A> static bool parse_nan(It&, const It&, A&) { return false; }
+  template <class It, class A> static bool parse_inf(It&, const It&, A&) { return false; }
+};
+
+/// What the actions need: the block being filled and where the line starts (for columns).
+struct ParseState {
+  Block& block;
+  Iterator line_begin;
+  std::string_view line;
+  const std::string& file;
+  int line_number;
+  Iterator letter_end = nullptr;  ///< just after the letter of the word being parsed
+
+  int column_of(Iterator it) const { return static_cast<int>(it - line_begin) + 1; }
+  [[noreturn]] void fail(Iterator at, const std::string& what) const {
+    throw InputError({file, line_number, column_of(at)}, what, std::string(line));
+  }
+};
+struct state_tag;
+
+template <class Ctx> ParseState& state(const Ctx& ctx) { return x3::get<state_tag>(ctx).get(); }
+
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+const auto on_delete = [](auto& ctx) { state(ctx).block.deleted = true; };
+
+// Note: in X3 actions `_where(ctx)` is the input *after* the match; a one-character letter
+// therefore starts one before it.
+const auto on_letter = [](auto& ctx) {
+  ParseState& s = state(ctx);
+  s.letter_end = x3::_where(ctx).begin();
+  s.block.words.push_back(Word{upper(x3::_attr(ctx)), 0.0, s.column_of(s.letter_end) - 1});
+};
+
+const auto on_value = [](auto& ctx) {
+  const double v = x3::_attr(ctx);
+  if (!std::isfinite(v)) {
+    const ParseState& s = state(ctx);
+    Iterator number_begin = s.letter_end;
+    while (*number_begin == ' ' || *number_begin == '\t') ++number_begin;
+    s.fail(number_begin, "number out of range (expected a finite number)");
+  }
+  state(ctx).block.words.back().value = v;
+};
+
+/// The attribute is the comment with its delimiter ('(' or ';'), without the closing ')'.
+const auto on_comment = [](auto& ctx) {
+  ParseState& s = state(ctx);
+  const auto range = x3::_attr(ctx);
+  const Iterator b = range.begin();
+  s.block.comments.push_back(
+      BlockComment{std::string_view(b + 1, static_cast<std::size_t>(range.end() - b - 1)), s.column_of(b)});
+};
+
+template <Keyword K, int Length> const auto on_keyword = [](auto& ctx) {
+  ParseState& s = state(ctx);
+  s.block.keywords.push_back(BlockKeyword{K, s.column_of(x3::_where(ctx).begin()) - Length});
+};
+
+const x3::real_parser<double, GcodeRealPolicies<double>> real_number{};
+const auto letter_char = x3::char_("a-zA-Z");
+const auto blank = x3::char_(" \t");
+
+const auto number = x3::rule<struct number_tag>{"number"} = real_number[on_value];
+const auto word = x3::rule<struct word_tag>{"word"} = letter_char[on_letter] > number;
+const auto close_paren = x3::rule<struct close_tag>{"')' closing the comment"} = x3::lit(')');
+const auto paren_comment = x3::rule<struct paren_tag>{"comment"} =
+    x3::raw[x3::lit('(') >> x3::lexeme[*(x3::char_ - ')')]][on_comment] > close_paren;
+const auto semicolon_comment = x3::rule<struct semi_tag>{"comment"} =
+    x3::raw[x3::lit(';') >> x3::lexeme[*x3::char_]][on_comment];
+const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") >>
+    (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
+        -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
+     x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
+const auto block_grammar = -x3::lit('/')[on_delete] >> *(paren_comment | keyword | word) >> -semicolon_comment;
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// Explains why the grammar stopped at `at` (shared by expectation failures and leftovers).
+std::string explain(const ParseState& s, Iterator at, Iterator end, const char* expected) {
+  if (at == end) return fmt::format("expected {}, found the end of the line", expected);
+  const char c = *at;
+  const auto byte = static_cast<unsigned char>(c);
+  if (c == '#') return "parameters (#...) are not supported";
+  if (c == '[') return "expressions ([...]) are not supported";
+  if (c == '=') return "assignments (=) are not supported";
+  if (c == '<') return "named O-words and subroutines (o<...>) are not supported";
+  if (c == '\r') return "unexpected carriage return inside a line (CR-only line endings are not supported)";
+  if (byte < 0x20 || byte >= 0x7f) return fmt::format("unexpected byte 0x{:02X} (binary data?); expected {}", byte, expected);
+  if (c == ')') return "')' without an opening '('";
+  if ((is_digit(c) || c == '.' || c == '-' || c == '+') && at != s.line_begin) {
+    Iterator before = at;
+    while (before != s.line_begin && (before[-1] == ' ' || before[-1] == '\t')) --before;
+    if (before != at && before != s.line_begin && (is_digit(before[-1]) || before[-1] == '.'))
+      return "blanks inside a number are not supported (expected a word letter after the number)";
+    if (before != s.line_begin && (is_digit(before[-1]) || before[-1] == '.'))
+      return fmt::format("malformed number: unexpected '{}'", c);
+  }
+  return fmt::format("expected {}, found '{}'", expected, c);
+}
+
+constexpr const char* kOWordFlow =
+    "O-word subroutines and control flow (sub, call, if, while, ...) are not supported; "
+    "expected a program number";
+
+bool starts_with_o_word(const Block& b) { return !b.words.empty() && b.words.front().letter == 'O'; }
+
+}  // namespace
+
+void parse_block(std::string_view line, Block& block, const std::string& file, int line_number) {
+  block.clear();
+  const Iterator begin = line.data();
+  const Iterator end = begin + line.size();
+  Iterator first = begin;
+  while (first != end && (*first == ' ' || *first == '\t')) ++first;
+  if (first == end) return;
+  block.column = static_cast<int>(first - begin) + 1;
+  if (*first == '%') {
+    block.percent = true;
+    return;
+  }
+  ParseState s{block, begin, line, file, line_number};
+  try {
+    x3::phrase_parse(first, end, x3::with<state_tag>(std::ref(s))[block_grammar], blank);
+  } catch (const x3::expectation_failure<Iterator>& e) {
+    const Iterator at = e.where();
+    if (e.which() == "number") {
+      const char letter = block.words.back().letter;
+      if (at != end && (*at == '#' || *at == '[' || *at == '=' || *at == '<'))
+        s.fail(at, explain(s, at, end, "a number"));
+      if (starts_with_o_word(block) || letter == 'O') s.fail(s.line_begin + block.words.back().column - 1, kOWordFlow);
+      if (at != end && (is_digit(*at) || *at == '.' || *at == '+' || *at == '-')) {
+        // X3 gives up on a well-formed number only when it overflows
+        Iterator p = at;
+        if (*p == '+' || *p == '-') ++p;
+        int digits = 0;
+        while (p != end && is_digit(*p)) ++p, ++digits;
+        if (p != end && *p == '.') ++p;
+        while (p != end && is_digit(*p)) ++p, ++digits;
+        s.fail(at, digits > 0 ? fmt::format("number out of range after '{}' (expected a finite number)", letter)
+                              : fmt::format("malformed number after '{}'", letter));
+      }
+      s.fail(at, explain(s, at, end, fmt::format("a number after '{}'", letter).c_str()));
+    }
+    s.fail(at, explain(s, at, end, e.which().c_str()));
+  }
+  if (first != end) {
+    if (starts_with_o_word(block)) s.fail(first, kOWordFlow);
+    s.fail(first, explain(s, first, end, "a word (letter and number), a comment or the end of the line"));
+  }
+}
+
+}  // namespace ncpost::gcode

@@ -1,0 +1,404 @@
+// Modal interpretation of RS274 blocks (see gcode_modal.hpp for what is supported).
+#include "ncpost/postproc/gcode_modal.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace ncpost::gcode {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr const char* kAxisLetters = "XYZABC";
+
+/// Throws the InputError of a block.
+struct Fail {
+  const std::string& file;
+  int line;
+  std::string_view text;
+  [[noreturn]] void operator()(int column, const std::string& what) const {
+    throw InputError({file, line, column}, what, std::string(text));
+  }
+};
+
+/// A G or M word: its code times ten (G43.4 -> 434) and its column.
+struct Code {
+  int code10 = 0;
+  int column = 0;
+};
+
+std::string g_name(int code10) {
+  return code10 % 10 == 0 ? fmt::format("G{}", code10 / 10) : fmt::format("G{}.{}", code10 / 10, code10 % 10);
+}
+
+enum GGroup : int {
+  g_non_modal = 0, g_motion, g_plane, g_distance, g_arc_distance, g_feed, g_units, g_cutter, g_length,
+  g_return, g_coordinates, g_path, g_group_count
+};
+
+/// The modal group of a supported G code, or -1 with `why` naming what is not supported.
+int g_group(int code10, const char*& why) {
+  switch (code10) {
+    case 40: case 280: case 300: case 530: return g_non_modal;
+    case 0: case 10: case 20: case 30: case 800: return g_motion;
+    case 170: case 180: case 190: return g_plane;
+    case 900: case 910: return g_distance;
+    case 901: case 911: return g_arc_distance;
+    case 930: case 940: case 950: return g_feed;
+    case 200: case 210: return g_units;
+    case 400: return g_cutter;
+    case 430: case 431: case 434: case 435: case 490: case 2340: return g_length;
+    case 980: case 990: return g_return;
+    case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+      return g_coordinates;
+    case 610: case 611: case 640: return g_path;
+    case 410: case 420: case 411: case 421: why = "cutter radius compensation"; return -1;
+    case 330: case 331: case 760: why = "threading"; return -1;
+    case 382: case 383: case 384: case 385: why = "probing"; return -1;
+    case 50: case 51: case 52: case 53: why = "splines"; return -1;
+    case 70: case 80: why = "lathe diameter/radius mode"; return -1;
+    case 100: why = "setting offsets (G10)"; return -1;
+    case 920: case 921: case 922: case 923: case 520: why = "coordinate offsets (G52/G92)"; return -1;
+    case 680: case 690: case 681: why = "coordinate rotation"; return -1;
+    case 500: case 510: why = "scaling"; return -1;
+    case 150: case 160: why = "polar coordinates"; return -1;
+    case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 870: case 880: case 890:
+      why = "canned cycles"; return -1;
+    default: why = nullptr; return -1;
+  }
+}
+
+}  // namespace
+
+void BlockEffect::clear() {
+  feed.reset();
+  spindle.reset();
+  tool_change.reset();
+  coolant.reset();
+  before_motion.clear();
+  has_motion = false;
+  motion = MotionMode::none;
+  arc.reset();
+  motion_feed.reset();
+  inverse_time = false;
+  after_motion.clear();
+  program_end = false;
+}
+
+/// The words of one block sorted by letter (G and M codes listed apart).
+struct Interpreter::Words {
+  std::array<double, 26> value;
+  std::array<int, 26> column;
+  std::uint32_t present = 0;
+  std::array<Code, 16> g;
+  int g_count = 0;
+  std::array<Code, 8> m;
+  int m_count = 0;
+
+  bool has(char c) const { return (present >> (c - 'A')) & 1u; }
+  double get(char c) const { return value[static_cast<std::size_t>(c - 'A')]; }
+  int col(char c) const { return column[static_cast<std::size_t>(c - 'A')]; }
+};
+
+Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch)
+    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)) {
+  state_.inch = default_inch;
+}
+
+std::vector<std::string> Interpreter::take_notices() {
+  std::vector<std::string> out;
+  out.swap(notices_);
+  return out;
+}
+
+void Interpreter::notice_once(const std::string& key, int line, int column, const std::string& text) {
+  if (std::find(noticed_keys_.begin(), noticed_keys_.end(), key) != noticed_keys_.end()) return;
+  noticed_keys_.push_back(key);
+  notices_.push_back(fmt::format("{}:{}:{}: {}", file_, line, column, text));
+}
+
+void Interpreter::apply(const Block& block, int line_number, std::string_view line, BlockEffect& fx) {
+  fx.clear();
+  const Fail fail{file_, line_number, line};
+  const auto at = [&](int column) { return cl::Location{line_number, column}; };
+
+  // ---- collect the words
+  Words w;
+  for (const Word& word : block.words) {
+    const char L = word.letter;
+    if (L == 'G' || L == 'M') {
+      const double scaled = word.value * 10.0;
+      const double rounded = std::round(scaled);
+      if (word.value < 0.0 || std::abs(scaled - rounded) > 1e-6 || rounded > 1e5)
+        fail(word.column, fmt::format("expected a {}-code number such as {}, found {}{}", L, L == 'G' ? "1 or 43.4" : "3",
+                                      L, word.value));
+      const Code code{static_cast<int>(rounded), word.column};
+      if (L == 'G') {
+        if (w.g_count == static_cast<int>(w.g.size())) fail(word.column, "too many G words in one block");
+        w.g[static_cast<std::size_t>(w.g_count++)] = code;
+      } else {
+        if (code.code10 % 10 != 0) fail(word.column, fmt::format("expected an integer M code, found M{}", word.value));
+        if (w.m_count == static_cast<int>(w.m.size())) fail(word.column, "too many M words in one block");
+        w.m[static_cast<std::size_t>(w.m_count++)] = Code{code.code10 / 10, word.column};
+      }
+      continue;
+    }
+    if (L == 'N') continue;
+    if (L == 'O') {
+      if (&word != &block.words.front())
+        fail(word.column, "an O word (program number) must start its block; O-word control flow is not supported");
+      continue;
+    }
+    switch (L) {
+      case 'E': fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
+      case 'U': case 'V': case 'W': fail(word.column, fmt::format("the {} axis is not supported", L));
+      case 'A': case 'B': case 'C':
+        if (axis_letters_.find(L) == std::string::npos)
+          fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
+        break;
+      case 'D': case 'F': case 'H': case 'I': case 'J': case 'K': case 'L': case 'P': case 'Q': case 'R':
+      case 'S': case 'T': case 'X': case 'Y': case 'Z':
+        break;
+      default: fail(word.column, fmt::format("unknown word '{}'", L));
+    }
+    if (w.has(L)) fail(word.column, fmt::format("{} appears twice in the block", L));
+    const auto i = static_cast<std::size_t>(L - 'A');
+    w.present |= 1u << (L - 'A');
+    w.value[i] = word.value;
+    w.column[i] = word.column;
+  }
+
+  // ---- G codes by modal group
+  std::array<Code, g_group_count> group{};
+  std::array<bool, g_group_count> in_group{};
+  for (int k = 0; k < w.g_count; ++k) {
+    const Code c = w.g[static_cast<std::size_t>(k)];
+    const char* why = nullptr;
+    const int g = g_group(c.code10, why);
+    if (g < 0) {
+      if (why) fail(c.column, fmt::format("{} ({}) is not supported", g_name(c.code10), why));
+      fail(c.column, fmt::format("{} is not supported", g_name(c.code10)));
+    }
+    const auto gi = static_cast<std::size_t>(g);
+    if (in_group[gi])
+      fail(c.column, fmt::format("{} and {} are in the same modal group", g_name(group[gi].code10), g_name(c.code10)));
+    in_group[gi] = true;
+    group[gi] = c;
+  }
+  const auto g_is = [&](int g, int code10) {
+    return in_group[static_cast<std::size_t>(g)] && group[static_cast<std::size_t>(g)].code10 == code10;
+  };
+
+  // ---- M codes by group
+  Code m_stop{-1, 0}, m_spindle{-1, 0}, m_tool{-1, 0}, m_coolant{-1, 0}, m_rtcp{-1, 0};
+  const auto take = [&](Code& slot, const Code& c) {
+    if (slot.code10 >= 0) fail(c.column, fmt::format("M{} and M{} are in the same modal group", slot.code10, c.code10));
+    slot = c;
+  };
+  for (int k = 0; k < w.m_count; ++k) {
+    const Code c = w.m[static_cast<std::size_t>(k)];
+    switch (c.code10) {
+      case 0: case 1: case 2: case 30: case 60: take(m_stop, c); break;
+      case 3: case 4: case 5: take(m_spindle, c); break;
+      case 6: take(m_tool, c); break;
+      case 7: case 8: case 9: take(m_coolant, c); break;
+      case 128: case 129: case 428: case 429: take(m_rtcp, c); break;
+      case 97: case 98: case 99: fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
+      default:
+        fx.after_motion.push_back(cl::Unsupported{at(c.column), fmt::format("M{}", c.code10)});
+        notice_once(fmt::format("M{}", c.code10), line_number, c.column,
+                    fmt::format("M{} is not acted on; passed through as a comment", c.code10));
+    }
+  }
+
+  ModalState& st = state_;
+  // units first, so that every length word of the block is read in them
+  if (g_is(g_units, 200)) st.inch = true;
+  if (g_is(g_units, 210)) st.inch = false;
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+
+  // ---- feed mode and F
+  if (in_group[g_feed]) {
+    const int c = group[g_feed].code10;
+    st.feed_mode = c == 930 ? FeedMode::inverse_time : c == 940 ? FeedMode::per_minute : FeedMode::per_revolution;
+  }
+  if (w.has('F')) {
+    double f = w.get('F');
+    if (f < 0.0) fail(w.col('F'), "expected a feed >= 0");
+    if (st.feed_mode != FeedMode::inverse_time) {
+      f *= length_scale;
+      fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
+    }
+    st.feed = f;
+    fx.motion_feed = f;
+  }
+
+  // ---- S, T, M6, M3-M5, M7-M9
+  if (w.has('S')) {
+    if (w.get('S') < 0.0) fail(w.col('S'), "expected a spindle speed >= 0");
+    st.spindle_rpm = w.get('S');
+    if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{at(w.col('S')), st.spindle, st.spindle_rpm};
+  }
+  if (w.has('T')) {
+    const double t = w.get('T');
+    if (t < 0.0 || t != std::floor(t) || t > 1e9) fail(w.col('T'), "expected a tool number (an integer >= 0)");
+    st.tool = static_cast<int>(t);
+  }
+  if (m_tool.code10 == 6) fx.tool_change = cl::ToolChange{at(m_tool.column), st.tool, std::nullopt};
+  if (m_spindle.code10 >= 0) {
+    using D = cl::Spindle::Direction;
+    st.spindle = m_spindle.code10 == 3 ? D::cw : m_spindle.code10 == 4 ? D::ccw : D::off;
+    fx.spindle = cl::Spindle{at(m_spindle.column), st.spindle, st.spindle_rpm};
+  }
+  if (m_coolant.code10 >= 0) {
+    const int c = m_coolant.code10;
+    fx.coolant = cl::Coolant{at(m_coolant.column), c != 9, c == 7 ? "MIST" : c == 8 ? "FLOOD" : "OFF"};
+  }
+
+  // ---- dwell, modal settings, RTCP
+  if (g_is(g_non_modal, 40)) {
+    fx.before_motion.push_back(
+        cl::Unsupported{at(group[g_non_modal].column), fmt::format("G4 P{} (dwell)", w.has('P') ? w.get('P') : 0.0)});
+    notice_once("G4", line_number, group[g_non_modal].column, "G4 (dwell) is passed through as a comment");
+  }
+  if (in_group[g_plane]) {
+    const int c = group[g_plane].code10;
+    st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
+  }
+  if (in_group[g_length]) {
+    const int c = group[g_length].code10;
+    if (c == 434 || c == 435) st.rtcp = Rtcp::g43_4;
+    else if (c == 2340) st.rtcp = Rtcp::g234;
+    else if (st.rtcp == Rtcp::g43_4 || st.rtcp == Rtcp::g234) st.rtcp = Rtcp::off;  // G43, G43.1, G49
+  }
+  if (m_rtcp.code10 == 428) st.rtcp = Rtcp::m428;
+  if (m_rtcp.code10 == 429 && st.rtcp == Rtcp::m428) st.rtcp = Rtcp::off;
+  if (m_rtcp.code10 == 128) st.rtcp = Rtcp::m128;
+  if (m_rtcp.code10 == 129 && st.rtcp == Rtcp::m128) st.rtcp = Rtcp::off;
+  for (const BlockKeyword& k : block.keywords) {
+    if (k.keyword == Keyword::traori) st.rtcp = Rtcp::traori;
+    if (k.keyword == Keyword::trafoof && st.rtcp == Rtcp::traori) st.rtcp = Rtcp::off;
+  }
+  if (in_group[g_coordinates] && group[g_coordinates].code10 != 540)
+    notice_once("work-offset", line_number, group[g_coordinates].column,
+                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
+                            g_name(group[g_coordinates].code10)));
+  if (in_group[g_distance]) st.incremental = group[g_distance].code10 == 910;
+  if (in_group[g_arc_distance]) st.arc_centre_absolute = group[g_arc_distance].code10 == 901;
+  if (in_group[g_motion]) {
+    switch (group[g_motion].code10) {
+      case 0: st.motion = MotionMode::rapid; break;
+      case 10: st.motion = MotionMode::linear; break;
+      case 20: st.motion = MotionMode::arc_cw; break;
+      case 30: st.motion = MotionMode::arc_ccw; break;
+      default: st.motion = MotionMode::none; break;  // G80
+    }
+  }
+
+  // ---- motion
+  int first_axis_column = 0;
+  bool has_axis = false;
+  for (const char* p = kAxisLetters; *p; ++p)
+    if (w.has(*p)) {
+      has_axis = true;
+      if (!first_axis_column || w.col(*p) < first_axis_column) first_axis_column = w.col(*p);
+    }
+  const bool home_return = g_is(g_non_modal, 280) || g_is(g_non_modal, 300);
+  if (home_return) {
+    const Code c = group[g_non_modal];
+    fx.before_motion.push_back(cl::Unsupported{at(c.column), g_name(c.code10) + " (return to the reference point)"});
+    notice_once(g_name(c.code10), line_number, c.column,
+                fmt::format("{} (return to the reference point) is passed through as a comment; the position "
+                            "after it is taken as unchanged",
+                            g_name(c.code10)));
+  }
+  const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
+  const bool arc_words = w.has('I') || w.has('J') || w.has('K') || w.has('R');
+  if (arc_words && !(is_arc && (in_group[g_motion] || has_axis)) && !home_return) {
+    const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
+    fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));
+  }
+  const bool moves = !home_return && (has_axis || (is_arc && in_group[g_motion] && arc_words));
+  if (moves) {
+    if (st.motion == MotionMode::none)
+      fail(first_axis_column ? first_axis_column : block.column,
+           "axis words without a motion mode (expected G0, G1, G2 or G3)");
+    if (g_is(g_non_modal, 530))
+      notice_once("G53", line_number, group[g_non_modal].column,
+                  "G53 machine coordinates are read as program coordinates");
+    fx.has_motion = true;
+    fx.motion = st.motion;
+    fx.start = st.position;
+    ProgramPoint end = st.position;
+    std::string unknown;  // axes whose start (or value) is not known yet: taken as 0
+    for (std::size_t i = 0; i < 6; ++i) {
+      const char L = kAxisLetters[i];
+      const bool used = axis_letters_.find(L) != std::string::npos;
+      if (!st.known[i] && used && (!w.has(L) || st.incremental)) unknown += unknown.empty() ? std::string(1, L) : std::string(", ") + L;
+      if (w.has(L)) {
+        const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
+        end[i] = st.incremental ? st.position[i] + v : v;
+      }
+      if (used) st.known[i] = true;
+    }
+    if (!unknown.empty())
+      notice_once("unknown-axes", line_number, first_axis_column ? first_axis_column : block.column,
+                  fmt::format("{} not programmed before the first motion: taken as 0", unknown));
+    if (is_arc) {
+      const PlaneAxes ax = axes_of(st.plane);
+      const char offset_letter[3] = {'I', 'J', 'K'};
+      const char normal_letter = offset_letter[ax.normal];
+      if (w.has(normal_letter))
+        fail(w.col(normal_letter), fmt::format("{} is not used by an arc in the {} plane", normal_letter,
+                                               st.plane == Plane::xy ? "G17" : st.plane == Plane::zx ? "G18" : "G19"));
+      int turns = 1;
+      if (w.has('P')) {
+        const double p = w.get('P');
+        if (p < 1.0 || p != std::floor(p) || p > 1e4) fail(w.col('P'), "expected a number of turns P (an integer >= 1)");
+        turns = static_cast<int>(p);
+      }
+      const bool clockwise = st.motion == MotionMode::arc_cw;
+      const int column = in_group[g_motion] ? group[g_motion].column : block.column;
+      ArcOutcome outcome;
+      if (w.has('R')) {
+        if (w.has(offset_letter[ax.a1]) || w.has(offset_letter[ax.a2]))
+          fail(w.col('R'), "an arc takes either R or I, J, K, not both");
+        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, w.get('R') * length_scale, turns);
+      } else {
+        const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
+        if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
+        const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
+        const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
+        const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
+        const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
+        const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
+        outcome = arc_from_centre(fx.start, end, st.plane, clockwise, c1, c2, turns);
+      }
+      if (!outcome.arc) fail(column, outcome.error);
+      fx.arc = outcome.arc;
+    }
+    if (st.motion != MotionMode::rapid && st.feed_mode == FeedMode::inverse_time) {
+      if (!w.has('F'))
+        fail(first_axis_column ? first_axis_column : block.column,
+             "inverse-time feed (G93): every G1, G2, G3 block needs an F word");
+      fx.inverse_time = true;
+    }
+    fx.end = end;
+    st.position = end;
+  }
+
+  // ---- stops
+  if (m_stop.code10 == 2 || m_stop.code10 == 30) {
+    fx.program_end = true;
+    st.ended = true;
+  } else if (m_stop.code10 >= 0) {
+    const int c = m_stop.code10;
+    fx.after_motion.push_back(cl::Unsupported{at(m_stop.column), fmt::format("M{} (program stop)", c)});
+    notice_once(fmt::format("M{}", c), line_number, m_stop.column,
+                fmt::format("M{} (program stop) is passed through as a comment", c));
+  }
+}
+
+}  // namespace ncpost::gcode

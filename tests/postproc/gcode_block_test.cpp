@@ -1,0 +1,202 @@
+// Lexical quirks of RS274 blocks: case, spacing, numbers, comments, framing, N/O words, block
+// delete, and errors with their exact columns.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <list>
+#include <string>
+
+#include "ncpost/postproc/gcode_block.hpp"
+
+using namespace ncpost;
+using namespace ncpost::gcode;
+
+namespace {
+
+/// Parses a line kept alive for the whole test run (comments view the line).
+Block parse(const std::string& line) {
+  static std::list<std::string> lines;
+  lines.push_back(line);
+  Block b;
+  parse_block(lines.back(), b, "t.ngc", 7);
+  return b;
+}
+
+/// The error a line raises (fails the test if it raises none).
+InputError error_of(const std::string& line) {
+  try {
+    parse(line);
+  } catch (const InputError& e) {
+    return e;
+  }
+  FAIL("no error for: " << line);
+  throw;
+}
+
+}  // namespace
+
+TEST_CASE("gcode block: words need no spaces and keep their columns") {
+  const Block b = parse("G1X10Y-5");
+  REQUIRE(b.words.size() == 3);
+  CHECK(b.words[0].letter == 'G');
+  CHECK(b.words[0].value == 1.0);
+  CHECK(b.words[0].column == 1);
+  CHECK(b.words[1].letter == 'X');
+  CHECK(b.words[1].value == 10.0);
+  CHECK(b.words[1].column == 3);
+  CHECK(b.words[2].letter == 'Y');
+  CHECK(b.words[2].value == -5.0);
+  CHECK(b.words[2].column == 6);
+  CHECK(b.column == 1);
+}
+
+TEST_CASE("gcode block: letters are case-insensitive and numbers take every RS274 form") {
+  const Block b = parse("g1 x.5 y5. z+5 a-0.000 c-12.25");
+  REQUIRE(b.words.size() == 6);
+  CHECK(b.words[0].letter == 'G');
+  CHECK(b.words[1].letter == 'X');
+  CHECK(b.words[1].value == 0.5);
+  CHECK(b.words[2].value == 5.0);
+  CHECK(b.words[3].value == 5.0);
+  CHECK(b.words[4].letter == 'A');
+  CHECK(b.words[4].value == 0.0);
+  CHECK(std::signbit(b.words[4].value));
+  CHECK(b.words[5].value == -12.25);
+}
+
+TEST_CASE("gcode block: blanks between a letter and its number (LinuxCNC CAM output)") {
+  const Block b = parse("G1  X  16.339  Y -25.409\tZ\t33.353  F 318");
+  REQUIRE(b.words.size() == 5);
+  CHECK(b.words[1].value == 16.339);
+  CHECK(b.words[1].column == 5);
+  CHECK(b.words[2].value == -25.409);
+  CHECK(b.words[3].value == 33.353);
+  CHECK(b.words[4].value == 318.0);
+}
+
+TEST_CASE("gcode block: parenthesis and semicolon comments") {
+  const Block b = parse("G0 (rapid: move) X1 ; the rest (is) a comment");
+  REQUIRE(b.words.size() == 2);
+  CHECK(b.words[1].letter == 'X');
+  REQUIRE(b.comments.size() == 2);
+  CHECK(b.comments[0].text == "rapid: move");
+  CHECK(b.comments[0].column == 4);
+  CHECK(b.comments[1].text == " the rest (is) a comment");
+  CHECK(b.comments[1].column == 21);
+  const Block only = parse("(  Impeller 5-axis  12/24/2011)");
+  CHECK(only.words.empty());
+  REQUIRE(only.comments.size() == 1);
+  CHECK(only.comments[0].text == "  Impeller 5-axis  12/24/2011");
+  const Block semicolon = parse("M428 ;TCP:xyzac");
+  REQUIRE(semicolon.comments.size() == 1);
+  CHECK(semicolon.comments[0].text == "TCP:xyzac");
+  CHECK(semicolon.words[0].value == 428.0);
+}
+
+TEST_CASE("gcode block: percent lines, N and O numbers, block delete, blank lines") {
+  CHECK(parse("%").percent);
+  CHECK(parse("  %  ").percent);
+  CHECK(parse("").empty());
+  CHECK(parse(" \t ").empty());
+  const Block n = parse("N0010 G0 X1");
+  REQUIRE(n.words.size() == 3);
+  CHECK(n.words[0].letter == 'N');
+  CHECK(n.words[0].value == 10.0);
+  const Block o = parse("O1234 (PART)");
+  REQUIRE(o.words.size() == 1);
+  CHECK(o.words[0].letter == 'O');
+  CHECK(o.words[0].value == 1234.0);
+  CHECK(o.comments.size() == 1);
+  const Block d = parse("  /G1 X5");
+  CHECK(d.deleted);
+  CHECK(d.column == 3);
+  REQUIRE(d.words.size() == 2);
+  CHECK(d.words[1].value == 5.0);
+  CHECK_FALSE(parse("G1 X5").deleted);
+}
+
+TEST_CASE("gcode block: G and M codes with decimals, Sinumerik TRAORI keywords") {
+  const Block b = parse("G43.4 H1 M3 S1200");
+  REQUIRE(b.words.size() == 4);
+  CHECK(b.words[0].value == Approx(43.4));
+  const Block t = parse("TRAORI");
+  REQUIRE(t.keywords.size() == 1);
+  CHECK(t.keywords[0].keyword == Keyword::traori);
+  CHECK(parse("traori(1) G1 X1").keywords.size() == 1);
+  CHECK(parse("TRAFOOF").keywords[0].keyword == Keyword::trafoof);
+  // a T word still parses where no keyword matches
+  const Block tool = parse("T12 M6");
+  CHECK(tool.keywords.empty());
+  CHECK(tool.words[0].letter == 'T');
+  CHECK(tool.words[0].value == 12.0);
+}
+
+TEST_CASE("gcode block: errors name the exact column and what was expected") {
+  SECTION("missing number") {
+    const InputError e = error_of("G1 X");
+    CHECK(e.where().file == "t.ngc");
+    CHECK(e.where().line == 7);
+    CHECK(e.where().column == 5);
+    CHECK_THAT(e.detail(), Catch::Contains("a number after 'X'"));
+    CHECK(e.source_line() == "G1 X");
+  }
+  SECTION("malformed number") {
+    const InputError e = error_of("G1 X1.2.3");
+    CHECK(e.where().column == 8);
+    CHECK_THAT(e.detail(), Catch::Contains("malformed number"));
+  }
+  SECTION("NaN and Inf are not numbers") {
+    const InputError nan = error_of("G1 XNaN");
+    CHECK(nan.where().column == 5);
+    CHECK_THAT(nan.detail(), Catch::Contains("a number after 'X'"));
+    const InputError inf = error_of("G1 Y-inf");
+    CHECK(inf.where().column == 5);
+  }
+  SECTION("overflowing number") {
+    const InputError e = error_of("G1 X1" + std::string(400, '0'));
+    CHECK(e.where().column == 5);
+    CHECK_THAT(e.detail(), Catch::Contains("out of range"));
+  }
+  SECTION("parameters") {
+    const InputError e = error_of("G1 X#1");
+    CHECK(e.where().column == 5);
+    CHECK_THAT(e.detail(), Catch::Contains("parameters (#...) are not supported"));
+    const InputError assign = error_of("#1 = 5");
+    CHECK(assign.where().column == 1);
+    CHECK_THAT(assign.detail(), Catch::Contains("not supported"));
+  }
+  SECTION("expressions") {
+    const InputError e = error_of("G1 X[1+2] Y0");
+    CHECK(e.where().column == 5);
+    CHECK_THAT(e.detail(), Catch::Contains("expressions ([...]) are not supported"));
+    CHECK(error_of("  [1]").where().column == 3);
+  }
+  SECTION("blanks inside a number") {
+    const InputError e = error_of("G1 X1 0");
+    CHECK(e.where().column == 7);
+    CHECK_THAT(e.detail(), Catch::Contains("blanks inside a number"));
+  }
+  SECTION("unclosed comment") {
+    const InputError e = error_of("G0 X1 (to the left");
+    CHECK(e.where().column == 19);
+    CHECK_THAT(e.detail(), Catch::Contains("')' closing the comment"));
+  }
+  SECTION("binary junk") {
+    const InputError e = error_of(std::string("G1 X1 \x01\x7f\xfe", 9));
+    CHECK(e.where().column == 7);
+    CHECK_THAT(e.detail(), Catch::Contains("0x01"));
+    const InputError nul = error_of(std::string("\0\0G1", 4));
+    CHECK(nul.where().column == 1);
+  }
+  SECTION("O-word control flow") {
+    const InputError e = error_of("o100 sub");
+    CHECK(e.where().column == 6);
+    CHECK_THAT(e.detail(), Catch::Contains("O-word"));
+    CHECK(error_of("o<probe> call").where().column == 2);
+  }
+  SECTION("a stray character") {
+    const InputError e = error_of("G1 X1 $");
+    CHECK(e.where().column == 7);
+    CHECK_THAT(e.detail(), Catch::Contains("found '$'"));
+  }
+}

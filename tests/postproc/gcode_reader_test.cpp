@@ -1,0 +1,382 @@
+// G-code -> CL: modal state, units, incremental mode, feeds, arcs, records, both program kinds,
+// framing, and errors with positions.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "ncpost/kinematics/forward.hpp"
+#include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/gcode_detect.hpp"
+
+using namespace ncpost;
+using namespace ncpost::gcode;
+
+namespace {
+
+const Machine& ac_machine() {
+  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
+  return m;
+}
+
+std::vector<cl::Record> read_all(const std::string& text, GcodeReaderOptions o = {}, Setup s = {},
+                                 std::vector<std::string>* notices = nullptr) {
+  std::istringstream in(text);
+  GcodeClReader r(in, "t.ngc", ac_machine(), s, o);
+  std::vector<cl::Record> out;
+  while (auto x = r.next()) out.push_back(std::move(*x));
+  if (notices) *notices = r.take_notices();
+  return out;
+}
+
+template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
+  std::vector<T> out;
+  for (const auto& r : rs)
+    if (const T* x = std::get_if<T>(&r)) out.push_back(*x);
+  return out;
+}
+
+std::vector<cl::Motion> motions(const std::string& text, GcodeReaderOptions o = {}, Setup s = {}) {
+  return only<cl::Motion>(read_all(text, o, s));
+}
+
+InputError error_of(const std::string& text, GcodeReaderOptions o = {}) {
+  try {
+    read_all(text, o);
+  } catch (const InputError& e) {
+    return e;
+  }
+  FAIL("no error for: " << text);
+  throw;
+}
+
+void check_tip(const cl::Motion& m, double x, double y, double z) {
+  CHECK(m.point.tip_mm.x() == Approx(x).margin(1e-9));
+  CHECK(m.point.tip_mm.y() == Approx(y).margin(1e-9));
+  CHECK(m.point.tip_mm.z() == Approx(z).margin(1e-9));
+}
+
+}  // namespace
+
+TEST_CASE("gcode reader: modal motion, axes and feed carry over") {
+  const auto rs = read_all("G90 G21 G94\nG1 X1 Y2 Z3 F100\nX4\nY5 F200\nG0 Z10\nX0\n");
+  const auto ms = only<cl::Motion>(rs);
+  REQUIRE(ms.size() == 5);
+  check_tip(ms[0], 1, 2, 3);
+  check_tip(ms[1], 4, 2, 3);
+  check_tip(ms[2], 4, 5, 3);
+  check_tip(ms[3], 4, 5, 10);
+  check_tip(ms[4], 0, 5, 10);
+  CHECK_FALSE(ms[1].rapid);
+  CHECK(ms[3].rapid);
+  CHECK(ms[4].rapid);
+  REQUIRE(ms[0].feed);
+  CHECK(*ms[0].feed == 100.0);
+  CHECK_FALSE(ms[1].feed);
+  const auto feeds = only<cl::Feed>(rs);
+  REQUIRE(feeds.size() == 2);
+  CHECK(feeds[0].value == 100.0);
+  CHECK(feeds[1].value == 200.0);
+  CHECK(feeds[1].where.line == 4);
+  CHECK(feeds[1].where.column == 4);
+  CHECK(ms[2].where.line == 4);
+  CHECK(ms[2].where.column == 1);
+  for (const auto& m : ms) {
+    CHECK(m.axis_given);
+    REQUIRE(m.rotary_rad);
+    CHECK(m.point.axis.isApprox(Vec3d::UnitZ()));
+  }
+}
+
+TEST_CASE("gcode reader: G20 converts lengths and feeds to mm, G21 back") {
+  const auto rs = read_all("G20 G1 X1 Y-0.5 Z.1 F10\nG21 X1\n");
+  const auto ms = only<cl::Motion>(rs);
+  REQUIRE(ms.size() == 2);
+  check_tip(ms[0], 25.4, -12.7, 2.54);
+  check_tip(ms[1], 1.0, -12.7, 2.54);
+  CHECK(only<cl::Feed>(rs).at(0).value == Approx(254.0));
+  // the reader option starts in inches
+  GcodeReaderOptions inch;
+  inch.default_inch = true;
+  check_tip(motions("G1 X2 F1\n", inch).at(0), 50.8, 0, 0);
+}
+
+TEST_CASE("gcode reader: G91 incremental positions, including rotary axes") {
+  const auto ms = motions("G90 G1 X1 Y1 Z1 A10 C20 F50\nG91 X1 Y-2 C-5\nX0.5 A2\nG90 X0\n");
+  REQUIRE(ms.size() == 4);
+  REQUIRE(ms[1].rotary_rad);
+  CHECK(rad_to_deg((*ms[1].rotary_rad)[0]) == Approx(10.0));
+  CHECK(rad_to_deg((*ms[1].rotary_rad)[1]) == Approx(15.0));
+  CHECK(rad_to_deg((*ms[2].rotary_rad)[0]) == Approx(12.0));
+  // machine-axis program: the CL point maps back to the programmed X Y Z
+  const Machine& m = ac_machine();
+  const Vec3d xyz = linear_for(m, *ms[2].rotary_rad, ms[2].point.tip_mm, Setup{});
+  CHECK(xyz.x() == Approx(2.5));
+  CHECK(xyz.y() == Approx(-1.0));
+  CHECK(xyz.z() == Approx(1.0));
+  const Vec3d last = linear_for(m, *ms[3].rotary_rad, ms[3].point.tip_mm, Setup{});
+  CHECK(last.x() == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("gcode reader: machine-axis program goes through the nominal forward kinematics") {
+  Setup setup;
+  setup.workpiece_origin_mm = Vec3d(5, -3, 40);
+  const auto ms = motions("G0 X10 Y20 Z30 A30 C45\nG1 X-4 A-60 C-120 F300\n", {}, setup);
+  REQUIRE(ms.size() == 2);
+  const Machine& m = ac_machine();
+  AxisPosition q;
+  q.linear_mm = Vec3d(10, 20, 30);
+  q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(45));
+  const auto expected = forward(m, q, setup);
+  CHECK((ms[0].point.tip_mm - expected.tip_mm).norm() < 1e-12);
+  CHECK((ms[0].point.axis - expected.axis).norm() < 1e-12);
+  CHECK(ms[0].point.axis.z() < 0.9);  // tilted by A
+  // and back: our inverse kinematics with the programmed angles gives the programmed X Y Z
+  const Vec3d xyz = linear_for(m, *ms[1].rotary_rad, ms[1].point.tip_mm, setup);
+  CHECK((xyz - Vec3d(-4, 20, 30)).norm() < 1e-9);
+  // and the closed-form IK finds the programmed angles again
+  AxisPosition previous;
+  previous.rotary_rad = *ms[1].rotary_rad;
+  const IkOutcome ik = solve(m, ms[1].point, setup, previous);
+  REQUIRE(ik.ok());
+  CHECK((ik.position->rotary_rad - *ms[1].rotary_rad).norm() < 1e-9);
+  CHECK((ik.position->linear_mm - Vec3d(-4, 20, 30)).norm() < 1e-9);
+}
+
+TEST_CASE("gcode reader: RTCP programs keep the tip and take the axis from the angles") {
+  for (const char* on : {"M428", "G43.4 H1", "G234", "TRAORI", "M128"}) {
+    INFO(on);
+    const std::string text = std::string(on) + "\nG1 X1 Y2 Z3 A30 C90 F100\n";
+    const auto ms = motions(text);
+    REQUIRE(ms.size() == 1);
+    check_tip(ms[0], 1, 2, 3);
+    AxisPosition q;
+    q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
+    CHECK((ms[0].point.axis - forward(ac_machine(), q, Setup{}).axis).norm() < 1e-12);
+  }
+  // switched off again: machine axes
+  const auto ms = motions("M428\nG1 X1 Y2 Z3 A30 C90 F100\nM429\nG1 X1\n");
+  REQUIRE(ms.size() == 2);
+  AxisPosition q;
+  q.linear_mm = Vec3d(1, 2, 3);
+  q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
+  CHECK((ms[1].point.tip_mm - forward(ac_machine(), q, Setup{}).tip_mm).norm() < 1e-12);
+  // forced kinds
+  GcodeReaderOptions machine_kind;
+  machine_kind.kind = InputKind::machine;
+  CHECK((motions("M428\nG1 X1 Y2 Z3 A30 C90 F1\n", machine_kind)[0].point.tip_mm -
+         forward(ac_machine(), q, Setup{}).tip_mm).norm() < 1e-12);
+  GcodeReaderOptions rtcp_kind;
+  rtcp_kind.kind = InputKind::rtcp;
+  check_tip(motions("G1 X1 Y2 Z3 A30 C90 F1\n", rtcp_kind)[0], 1, 2, 3);
+  CHECK(parse_input_kind("auto") == InputKind::automatic);
+  CHECK(parse_input_kind("rtcp") == InputKind::rtcp);
+  CHECK_FALSE(parse_input_kind("cl"));
+}
+
+TEST_CASE("gcode reader: G93 inverse-time feed is kept per motion") {
+  const auto ms = motions("G94 G1 X0 Y0 Z0 F500\nG93 G1 X10 F2.5\nY10 F20\nG94 X0 F400\n");
+  REQUIRE(ms.size() == 4);
+  CHECK_FALSE(ms[0].inverse_time);
+  CHECK(ms[1].inverse_time);
+  REQUIRE(ms[1].feed);
+  CHECK(*ms[1].feed == 2.5);
+  CHECK(*ms[2].feed == 20.0);
+  CHECK_FALSE(ms[3].inverse_time);
+  const InputError e = error_of("G93 G1 X1 F1\nX2\n");
+  CHECK(e.where().line == 2);
+  CHECK(e.where().column == 1);
+  CHECK_THAT(e.detail(), Catch::Contains("needs an F word"));
+  // in G20 an inverse-time F stays 1/min
+  CHECK(*motions("G20 G93 G1 X1 F3\n")[0].feed == 3.0);
+}
+
+TEST_CASE("gcode reader: arcs expand within the chord tolerance") {
+  SECTION("quarter circle, centre format") {
+    const auto ms = motions("G17 G1 X10 Y0 Z0 F100\nG3 X0 Y10 I-10 J0\n");
+    REQUIRE(ms.size() > 10);
+    const long n = static_cast<long>(ms.size()) - 1;
+    const double step = 2.0 * std::acos(1.0 - 1e-3 / 10.0);
+    CHECK(n == static_cast<long>(std::ceil((kPi / 2) / step)));
+    check_tip(ms.back(), 0, 10, 0);
+    Vec3d previous = ms[0].point.tip_mm;
+    for (std::size_t i = 1; i < ms.size(); ++i) {
+      const Vec3d p = ms[i].point.tip_mm;
+      CHECK(p.head<2>().norm() == Approx(10.0).margin(1e-9));
+      CHECK(p.x() <= previous.x() + 1e-12);  // counter-clockwise from +X to +Y
+      const double sagitta = 10.0 - (0.5 * (p + previous)).head<2>().norm();
+      CHECK(sagitta <= 1e-3 + 1e-12);
+      CHECK_FALSE(ms[i].feed);  // no F word on the arc's block
+      previous = p;
+    }
+  }
+  SECTION("clockwise, radius format, helical") {
+    const auto ms = motions("G1 X10 Y0 Z0 F100\nG2 X0 Y-10 Z-5 R10\n");
+    REQUIRE(ms.size() > 3);
+    const cl::Motion& mid = ms[ms.size() / 2];
+    CHECK(mid.point.tip_mm.x() > 0);
+    CHECK(mid.point.tip_mm.y() < 0);
+    CHECK(mid.point.tip_mm.z() < 0);
+    CHECK(mid.point.tip_mm.z() > -5);
+    check_tip(ms.back(), 0, -10, -5);
+    // negative R: the long way round, about the centre (10, -10), through (20, -10)
+    const auto longway = motions("G1 X10 Y0 Z0 F100\nG2 X0 Y-10 R-10\n");
+    bool through_far_side = false;
+    for (const auto& m : longway) {
+      through_far_side = through_far_side || m.point.tip_mm.x() > 19.99;
+      CHECK((m.point.tip_mm.head<2>() - Eigen::Vector2d(10, -10)).norm() == Approx(10.0));
+    }
+    CHECK(through_far_side);
+  }
+  SECTION("full circle, G18 plane, G93 feed scaled per segment") {
+    const auto ms = motions("G18 G1 X5 Y0 Z0 F100\nG93 G2 X5 Z0 I-5 F2\n");
+    REQUIRE(ms.size() > 20);
+    const double n = static_cast<double>(ms.size() - 1);
+    check_tip(ms.back(), 5, 0, 0);
+    for (std::size_t i = 1; i < ms.size(); ++i) {
+      CHECK(ms[i].point.tip_mm.y() == 0.0);
+      CHECK(std::hypot(ms[i].point.tip_mm.x() + 0.0 - 0.0, ms[i].point.tip_mm.z()) <= 5.0 + 1e-9);
+      CHECK(ms[i].inverse_time);
+      CHECK(*ms[i].feed == Approx(2.0 * n));
+    }
+  }
+  SECTION("bad arcs") {
+    const InputError off = error_of("G1 X10 Y0 F1\nG3 X0 Y12 I-10\n");
+    CHECK(off.where().line == 2);
+    CHECK_THAT(off.detail(), Catch::Contains("not on the arc"));
+    const InputError small = error_of("G1 X10 Y0 F1\nG3 X-10 Y0 R2\n");
+    CHECK_THAT(small.detail(), Catch::Contains("less than half"));
+    const InputError none = error_of("G1 X10 Y0 F1\nG3 X0 Y10\n");
+    CHECK_THAT(none.detail(), Catch::Contains("centre"));
+    CHECK(error_of("G1 X1 I5 F1\n").where().column == 7);
+  }
+}
+
+TEST_CASE("gcode reader: comments, tool, spindle, coolant, stops and the program end") {
+  std::vector<std::string> notices;
+  const auto rs = read_all(
+      "%\nO0042 (DEMO)\n(first)\nN10 T3 M6 ; change\nN20 S1200 M3\nN30 M8 G0 X1\nS1500\nG4 P2\nM0\nM5 M9\nM30\nG0 X99\n%\n",
+      {}, {}, &notices);
+  const auto comments = only<cl::Comment>(rs);
+  REQUIRE(comments.size() == 3);
+  CHECK(comments[0].text == "DEMO");
+  CHECK(comments[1].text == "first");
+  CHECK(comments[1].where.line == 3);
+  CHECK(comments[2].text == "change");
+  const auto tools = only<cl::ToolChange>(rs);
+  REQUIRE(tools.size() == 1);
+  CHECK(tools[0].number == 3);
+  const auto spindles = only<cl::Spindle>(rs);
+  REQUIRE(spindles.size() == 3);
+  CHECK(spindles[0].direction == cl::Spindle::Direction::cw);
+  CHECK(spindles[0].rpm == 1200.0);
+  CHECK(spindles[1].rpm == 1500.0);
+  CHECK(spindles[2].direction == cl::Spindle::Direction::off);
+  const auto coolant = only<cl::Coolant>(rs);
+  REQUIRE(coolant.size() == 2);
+  CHECK(coolant[0].on);
+  CHECK(coolant[0].mode == "FLOOD");
+  CHECK_FALSE(coolant[1].on);
+  const auto passed = only<cl::Unsupported>(rs);
+  REQUIRE(passed.size() == 2);
+  CHECK_THAT(passed[0].text, Catch::Contains("G4 P2"));
+  CHECK_THAT(passed[1].text, Catch::Contains("M0"));
+  REQUIRE(notices.size() == 3);
+  CHECK_THAT(notices[0], Catch::Contains("t.ngc:6:") && Catch::Contains("not programmed before the first motion"));
+  CHECK_THAT(notices[1], Catch::Contains("t.ngc:8:1: G4 (dwell)"));
+  CHECK_THAT(notices[2], Catch::Contains("t.ngc:9:1: M0 (program stop)"));
+  const auto ends = only<cl::End>(rs);
+  REQUIRE(ends.size() == 1);
+  CHECK(ends[0].program);
+  CHECK(std::holds_alternative<cl::End>(rs.back()));
+  // nothing after M30 is read: one motion only
+  CHECK(only<cl::Motion>(rs).size() == 1);
+  // tool change comes before the spindle of the same block, the motion after the coolant
+  const auto idx = [&](auto pred) {
+    for (std::size_t i = 0; i < rs.size(); ++i)
+      if (pred(rs[i])) return i;
+    return rs.size();
+  };
+  CHECK(idx([](const cl::Record& r) { return std::holds_alternative<cl::Coolant>(r); }) <
+        idx([](const cl::Record& r) { return std::holds_alternative<cl::Motion>(r); }));
+}
+
+TEST_CASE("gcode reader: block delete and percent framing") {
+  CHECK(motions("G0 X1\n/G0 X5\nG0 X2\n").size() == 2);
+  GcodeReaderOptions keep;
+  keep.block_delete = false;
+  CHECK(motions("G0 X1\n/G0 X5\nG0 X2\n", keep).size() == 3);
+  // text after the closing % is not part of the program
+  CHECK(motions("%\nG0 X1\n%\nthis is not G-code\n").size() == 1);
+  // a leading % without its closing % or M30: truncated
+  const InputError e = error_of("%\nG0 X1\nG1 X2 F10\n");
+  CHECK(e.where().line == 3);
+  CHECK_THAT(e.detail(), Catch::Contains("truncated"));
+  // a line cut in the middle of a word
+  const InputError cut = error_of("%\nG0 X1\nG1 X");
+  CHECK(cut.where().line == 3);
+  CHECK(cut.where().column == 5);
+  // CRLF line ends
+  const auto crlf = motions("G0 X1\r\nG0 X2 (c)\r\nM30\r\n");
+  REQUIRE(crlf.size() == 2);
+  check_tip(crlf[1], 2, 0, 0);
+}
+
+TEST_CASE("gcode reader: semantic errors with their positions") {
+  const auto check = [](const std::string& text, int line, int column, const char* says) {
+    INFO(text);
+    const InputError e = error_of(text);
+    CHECK(e.where().file == "t.ngc");
+    CHECK(e.where().line == line);
+    CHECK(e.where().column == column);
+    CHECK_THAT(e.detail(), Catch::Contains(says));
+    CHECK_FALSE(e.source_line().empty());
+  };
+  check("G1 X1 F1\nG41 X2 D1\n", 2, 1, "cutter radius compensation");
+  check("G0 X1\nG0 Y1 B5\n", 2, 7, "no B axis");
+  check("G0 X1 X2\n", 1, 7, "twice");
+  check("G0 G1 X2\n", 1, 4, "same modal group");
+  check("X5\n", 1, 1, "without a motion mode");
+  check("G0 X1\nG81 X1 Y1 Z-5 R1\n", 2, 1, "canned cycles");
+  check("G1 X1e5 F1\n", 1, 6, "E words");
+  check("G0 U1\n", 1, 4, "U axis");
+  check("M98 P100\n", 1, 1, "subprograms");
+  check("G0 X1 M3 M4\n", 1, 10, "same modal group");
+  check("G1 X1 F-5\n", 1, 7, "feed >= 0");
+  check("G0 X1\nG1.5 X1\n", 2, 1, "not supported");
+  check("G0 X1 T1.5\n", 1, 7, "tool number");
+}
+
+TEST_CASE("gcode reader: unreadable files and invalid options") {
+  CHECK_THROWS_AS(open_gcode("/nonexistent/file.ngc", ac_machine(), Setup{}), InputError);
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  try {
+    auto r = open_gcode(dir, ac_machine(), Setup{});
+    while (r->next()) {
+    }
+    FAIL("a directory was read");
+  } catch (const InputError& e) {
+    CHECK(e.where().file == dir);
+  }
+  GcodeReaderOptions bad;
+  bad.arc_chord_tolerance_mm = 0.0;
+  CHECK_FALSE(bad.validate().empty());
+  std::istringstream in("G0 X1\n");
+  CHECK_THROWS_AS(GcodeClReader(in, "t.ngc", ac_machine(), Setup{}, bad), std::invalid_argument);
+}
+
+TEST_CASE("gcode detection: G-code versus APT, RTCP versus machine axes") {
+  CHECK(looks_like_gcode("%\nO1000\nG0 X1 Y2\n"));
+  CHECK(looks_like_gcode("(header)\nG1X10Y-5\n"));
+  CHECK_FALSE(looks_like_gcode("PARTNO/TEST\nGOTO/1,2,3\n"));
+  CHECK_FALSE(looks_like_gcode("$$ comment\nFROM/0,0,100\n"));
+  std::istringstream rtcp("G0 X1\nM428 ;TCP\nG1 X2 F1\n");
+  CHECK(scan_input_kind(rtcp, "t") == InputKind::rtcp);
+  std::istringstream fanuc("G43.4 H1\n");
+  CHECK(scan_input_kind(fanuc, "t") == InputKind::rtcp);
+  std::istringstream plain("G0 X1 A20\nG43 H1 Z5\n");
+  CHECK(scan_input_kind(plain, "t") == InputKind::machine);
+}
