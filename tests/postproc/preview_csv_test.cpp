@@ -85,3 +85,18 @@ TEST_CASE("ncpost preview: exit codes", "[preview]") {
   CHECK(run("--machine " + scenario + "machine.toml --csv preview_bad.csv preview_bad.cls") == 2);
   CHECK_FALSE(std::ifstream("preview_bad.csv").good());  // no partial output
 }
+
+TEST_CASE("ncpost preview --model: the blocks of the compensated program on the actual machine", "[preview][model]") {
+  const std::string scenario = test::shared("data/scenarios/public-clean/");
+  const std::string cmd = std::string(NCPOST_BINARY) + " preview --machine " + scenario +
+                          "machine.toml --workpiece-origin 0,0,80 --model " + scenario +
+                          "truth.json --csv preview_model_test.csv " + scenario + "path.cls > preview_model_test.out 2>&1";
+  REQUIRE(WEXITSTATUS(std::system(cmd.c_str())) == 0);
+  std::string header;
+  const auto rows = read_csv("preview_model_test.csv", header);
+  REQUIRE(rows.size() == 1200);
+  double largest = 0;
+  for (const auto& r : rows) largest = std::max(largest, std::stod(r[2]));
+  // the bow is a property of the kinematics; µm-size location errors change it by µm
+  CHECK(largest == Approx(1.0367).margin(0.005));
+}

@@ -8,12 +8,46 @@
 
 #include "commands.hpp"
 #include "input_options.hpp"
+#include "ncpost/compensation/actual_ik.hpp"
+#include "ncpost/compensation/machine_model.hpp"
+#include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/preview_csv.hpp"
 #include "ncpost/postproc/preview_html.hpp"
 
 namespace ncpost::cli {
 namespace {
+
+/// The actual machine of `--model` for the preview: commands from the compensated inverse
+/// kinematics (as `post --model` writes them; reversal offsets not tracked), executed through the
+/// model. To be replaced by the post's own actual-machine solver when `post --model` lands.
+class ModelMotionSolver final : public MotionSolver {
+ public:
+  ModelMotionSolver(const comp::MachineModel& model, const Setup& setup)
+      : model_(model), setup_(setup), nominal_(model.machine(), setup) {}
+  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override {
+    IkOutcome o = nominal_.solve(cl, previous);
+    if (!o.ok()) return o;
+    const comp::ActualIkOutcome actual = comp::solve_actual(model_, cl, setup_, *o.position);
+    if (!actual.ok()) {
+      o.position.reset();
+      o.failure.message = "compensated inverse kinematics: " + actual.message;
+      return o;
+    }
+    o.position = actual.position;
+    return o;
+  }
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
+    return nominal_.with_rotary(cl, rotary_rad);
+  }
+  ToolPoseT<double> execute(const AxisPosition& q) const override { return model_.tool_pose(q, setup_); }
+  const Machine& machine() const override { return model_.machine(); }
+
+ private:
+  const comp::MachineModel& model_;
+  Setup setup_;
+  NominalSolver nominal_;
+};
 
 struct PreviewArgs {
   JobOptions job;
@@ -24,13 +58,23 @@ struct PreviewArgs {
 };
 
 int run_preview(const PreviewArgs& a) {
-  if (!a.model.empty()) throw UsageError("--model: previewing on an actual machine needs the error model (issue 5)");
   const LoadedJob job = load_job(a.job);
+  std::unique_ptr<comp::MachineModel> model;
+  std::unique_ptr<MotionSolver> solver;
+  std::unique_ptr<preview::BlockEvaluator> evaluator;
+  if (!a.model.empty()) {
+    const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
+    model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
+    solver = std::make_unique<ModelMotionSolver>(*model, job.setup);
+    evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
+                                                                                       model->errors());
+  } else {
+    solver = std::make_unique<NominalSolver>(job.machine, job.setup);
+    evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
+  }
   std::ifstream in(a.input, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
-  NominalSolver solver(job.machine, job.setup);
-  const preview::ModelEvaluator<NominalErrors> evaluator(job.machine, job.setup);
 
   std::optional<AtomicFile> csv_file;
   std::optional<preview::CsvWriter> csv;
@@ -45,7 +89,7 @@ int run_preview(const PreviewArgs& a) {
   preview::PreviewStats stats;
   try {
     stats = preview::run_preview(
-        *reader, a.input, solver, evaluator,
+        *reader, a.input, *solver, *evaluator,
         [&](const preview::BlockRow& row) {
           if (csv) csv->add(row);
           summary.add(row);
@@ -60,12 +104,13 @@ int run_preview(const PreviewArgs& a) {
     preview::HtmlReport report;
     report.input_name = a.input;
     report.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
+    report.model_name = a.model;
     report.summary = &summary;
     report.stats = stats;
     std::vector<int> lines;
     for (const auto& w : summary.worst()) lines.push_back(w.line);
     report.worst_source_lines = preview::source_lines(a.input, lines);
-    if (!summary.worst().empty()) report.worst_curve_mm = evaluator.error_curve(summary.worst().front().cl, 200);
+    if (!summary.worst().empty()) report.worst_curve_mm = evaluator->error_curve(summary.worst().front().cl, 200);
     write_file_atomically(a.html, preview::render_html(report));
   }
   if (csv_file) csv_file->commit();
