@@ -12,8 +12,12 @@
 //      ceil(Σ sqrt(e_k / tolerance)) pieces placed at equal increments of the cumulative
 //      Σ sqrt(e_k) (equidistribution), tried once;
 //   3. pieces that still fail are cut again the same way (recursively, `max_depth`).
-// Blocks whose cheap upper bound (nonlinear_bound.hpp) is within `screen_fraction` of the tolerance
-// are emitted as they are without the exact maximisation (`SplitBlock::screened`).
+// Cost: blocks whose cheap upper bound (nonlinear_bound.hpp) is within `screen_fraction` of the
+// tolerance are emitted as they are without the exact maximisation (`SplitBlock::screened`); a
+// block whose mid-point deviation alone exceeds `estimate_factor` × tolerance takes n from that
+// (never larger) estimate instead of the exact error; output pieces whose bound is within
+// `piece_screen_fraction` of the tolerance are accepted on the bound. Every accepted piece is
+// therefore within the tolerance by the exact error or by the upper bound.
 // Axis limits and rotary continuity: the solver applies the limits and the choice of solution.
 // Near the singular cone the block's end points can sit on different branches (e.g. A +2° → −2° with
 // C nearly still, while the exact path along the CL segment needs C to swing ~180°): no continuous
@@ -44,9 +48,13 @@ struct AdaptiveOptions {
   double branch_deviation_rad = 0.5;    ///< exact IK this far from the interpolation: keep rotaries
   double screen_fraction = 0.5;         ///< skip the exact error when the bound is within this share
                                         ///< of the tolerance (0: always exact)
-  NonlinearErrorOptions error;
+  double piece_screen_fraction = 0.9;   ///< the same for output pieces (0: always exact)
+  double estimate_factor = 2.0;         ///< mid-point deviation above this × tolerance: no exact input
+                                        ///< error (0: always exact); `input_error_mm` is then that estimate
+  NonlinearErrorOptions error = fast_error_options();
   bool valid() const {
     return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && screen_fraction >= 0 && screen_fraction <= 1 &&
+           piece_screen_fraction >= 0 && piece_screen_fraction <= 1 && estimate_factor >= 0 &&
            error.valid();
   }
 };
@@ -84,7 +92,16 @@ template <class Errors, class Solver> class Subdivider {
         return out;
       }
     }
-    const NonlinearError e = error_of(0.0, block_.start, block_.from, 1.0, block_.end, block_.to);
+    NonlinearError e;
+    if (options_.estimate_factor > 0) {
+      const Deviation mid = ExecutedBlock<Errors>(machine_, setup_, block_, errors_).at(0.5);
+      if (mid.error_mm() > options_.estimate_factor * options_.tolerance_mm) {
+        e.max_error_mm = mid.error_mm();
+        e.at_t = 0.5;
+        e.offset_mm = mid.offset_mm;
+      }
+    }
+    if (e.max_error_mm == 0.0) e = exact_error(block_.start, block_.from, block_.end, block_.to);
     out.input_error_mm = e.max_error_mm;
     if (e.max_error_mm > options_.tolerance_mm) keep_rotary_ = !branch_consistent();
     Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e};
@@ -104,9 +121,24 @@ template <class Errors, class Solver> class Subdivider {
     NonlinearError error;
   };
 
-  NonlinearError error_of(double, const ClPoint& ca, const AxisPosition& qa, double, const ClPoint& cb,
-                          const AxisPosition& qb) const {
+  NonlinearError exact_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
     return nonlinear_error(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_, options_.error);
+  }
+
+  /// The piece's error: its upper bound when that is within `piece_screen_fraction` of the
+  /// tolerance, else the exact error.
+  NonlinearError piece_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
+    if (options_.piece_screen_fraction > 0) {
+      const ClBlock piece{ca, cb, qa, qb};
+      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, piece, errors_), machine_, setup_);
+      if (bound.error_mm <= options_.piece_screen_fraction * options_.tolerance_mm) {
+        NonlinearError e;
+        e.max_error_mm = bound.error_mm;
+        e.max_orientation_rad = bound.orientation_rad;
+        return e;
+      }
+    }
+    return exact_error(ca, qa, cb, qb);
   }
 
   void emit(const Piece& p, SplitBlock& out) const {
@@ -138,7 +170,7 @@ template <class Errors, class Solver> class Subdivider {
           qb = *kept;
         }
       }
-      pieces.push_back({ta, ca, qa, tb, cb, qb, error_of(ta, ca, qa, tb, cb, qb)});
+      pieces.push_back({ta, ca, qa, tb, cb, qb, piece_error(ca, qa, cb, qb)});
       ta = tb;
       ca = cb;
       qa = qb;

@@ -22,7 +22,7 @@ struct NonlinearErrorOptions {
   int max_scan_intervals = 512;
   double scan_step_rad = 0.05;  ///< one scan interval per this much travel of the busiest rotary axis
   double t_tolerance = 1e-7;
-  bool orientation = true;      ///< also maximise the orientation error
+  bool orientation = true;      ///< also maximise the orientation error (false: the scan's largest value)
   bool valid() const {
     return min_scan_intervals >= 2 && max_scan_intervals >= min_scan_intervals && scan_step_rad > 0 && t_tolerance > 0;
   }
@@ -37,6 +37,16 @@ struct NonlinearError {
   double orientation_at_t = 0.0;
   int evaluations = 0;                ///< forward-kinematics evaluations spent
 };
+
+/// Options for deciding on many blocks (compensation): a coarser scan (4 intervals at least),
+/// t to 1e-5 (the value to ~1e-9 relative, the maximum being flat), orientation from the scan only.
+inline NonlinearErrorOptions fast_error_options() {
+  NonlinearErrorOptions o;
+  o.min_scan_intervals = 4;
+  o.t_tolerance = 1e-5;
+  o.orientation = false;
+  return o;
+}
 
 /// Scan intervals used for a block: enough to bracket the maxima of its rotary motion.
 inline int scan_intervals_for(const ClBlock& block, const NonlinearErrorOptions& options) {
@@ -63,7 +73,11 @@ NonlinearError nonlinear_error(const ExecutedBlock<Errors>& executed, const Nonl
   out.at_t = p.t;
   out.offset_mm = executed.at(p.t).offset_mm;
   out.evaluations = n + 2 + p.evaluations;
-  if (options.orientation) {
+  if (!options.orientation) {
+    const auto it = std::max_element(orientation.begin(), orientation.end());
+    out.max_orientation_rad = *it;
+    out.orientation_at_t = ts[static_cast<std::size_t>(it - orientation.begin())];
+  } else {
     const Maximum o = refine_scan([&](double t) { return executed.at(t).orientation_rad; }, ts, orientation, refine);
     out.max_orientation_rad = o.value;
     out.orientation_at_t = o.t;
