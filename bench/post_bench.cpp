@@ -17,6 +17,7 @@
 #include <string>
 
 #include "ncpost/compensation/model_json.hpp"
+#include "ncpost/compensation/nonlinear_batch.hpp"
 #include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
@@ -105,6 +106,41 @@ Result run(const Machine& m, const Setup& setup, const std::string& cl, const st
   return {seconds, s.blocks_out, s.verify.max_contour_mm};
 }
 
+/// The compensation alone (no NC writing), in batches of 4096 blocks on `threads` threads: what a
+/// pipeline that solves motions in order and compensates batches in parallel would spend on it.
+double batch_seconds(const Machine& m, const Setup& setup, const std::string& cl, int threads, std::size_t& out_blocks) {
+  std::ifstream in(cl);
+  cl::AptReader reader(in, cl);
+  const nonlinear::NominalSolver solver{m, setup};
+  nonlinear::CompensationOptions comp;
+  comp.tolerance_mm = 0.005;
+  comp.rounding_allowance_mm = nonlinear::rounding_allowance_mm(4, 4, 120.0);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<nonlinear::ClBlock> batch;
+  ClPoint previous_cl;
+  AxisPosition previous_q;
+  bool have = false;
+  out_blocks = 0;
+  auto flush = [&] {
+    for (const auto& split : nonlinear::compensate_blocks(m, setup, batch, NominalErrors{}, solver, comp, threads))
+      out_blocks += split.nodes.size();
+    batch.clear();
+  };
+  while (auto r = reader.next()) {
+    const auto* mo = std::get_if<cl::Motion>(&*r);
+    if (!mo) continue;
+    const IkOutcome ik = solve(m, mo->point, setup, previous_q);
+    if (!ik.ok()) throw std::runtime_error(ik.failure.message);
+    if (have && !mo->rapid) batch.push_back({previous_cl, mo->point, previous_q, *ik.position});
+    if (batch.size() == 4096) flush();
+    previous_cl = mo->point;
+    previous_q = *ik.position;
+    have = true;
+  }
+  flush();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -133,6 +169,12 @@ int main(int argc, char** argv) {
   report("one block per motion", run(m, setup, cl, dir + "/out_plain.nc", std::nullopt, verify, nominal, NominalErrors{}));
   report("adaptive", run(m, setup, cl, dir + "/out_adaptive.nc", nonlinear::Method::adaptive, verify, nominal, NominalErrors{}));
   report("harmonic", run(m, setup, cl, dir + "/out_harmonic.nc", nonlinear::Method::harmonic, verify, nominal, NominalErrors{}));
+  for (int threads : {1, 2}) {
+    std::size_t blocks = 0;
+    const double seconds = batch_seconds(m, setup, cl, threads, blocks);
+    fmt::print("  read + IK + adaptive compensation only, batches of 4096, {} thread(s): {:7.2f} s, {} blocks\n",
+               threads, seconds, blocks);
+  }
   if (!with_model) return 0;
   const comp::ModelFile file = comp::read_model_json(scenario + "truth.json", &m);
   const comp::MachineModel model(m, file.parameters);
