@@ -8,46 +8,14 @@
 
 #include "commands.hpp"
 #include "input_options.hpp"
-#include "ncpost/compensation/actual_ik.hpp"
-#include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/preview_csv.hpp"
 #include "ncpost/postproc/preview_html.hpp"
+#include "ncpost/postproc/preview_model_solver.hpp"
 
 namespace ncpost::cli {
 namespace {
-
-/// The actual machine of `--model` for the preview: commands from the compensated inverse
-/// kinematics (as `post --model` writes them; reversal offsets not tracked), executed through the
-/// model. To be replaced by the post's own actual-machine solver when `post --model` lands.
-class ModelMotionSolver final : public MotionSolver {
- public:
-  ModelMotionSolver(const comp::MachineModel& model, const Setup& setup)
-      : model_(model), setup_(setup), nominal_(model.machine(), setup) {}
-  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override {
-    IkOutcome o = nominal_.solve(cl, previous);
-    if (!o.ok()) return o;
-    const comp::ActualIkOutcome actual = comp::solve_actual(model_, cl, setup_, *o.position);
-    if (!actual.ok()) {
-      o.position.reset();
-      o.failure.message = "compensated inverse kinematics: " + actual.message;
-      return o;
-    }
-    o.position = actual.position;
-    return o;
-  }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
-    return nominal_.with_rotary(cl, rotary_rad);
-  }
-  ToolPoseT<double> execute(const AxisPosition& q) const override { return model_.tool_pose(q, setup_); }
-  const Machine& machine() const override { return model_.machine(); }
-
- private:
-  const comp::MachineModel& model_;
-  Setup setup_;
-  NominalSolver nominal_;
-};
 
 struct PreviewArgs {
   JobOptions job;
@@ -65,7 +33,7 @@ int run_preview(const PreviewArgs& a) {
   if (!a.model.empty()) {
     const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
     model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
-    solver = std::make_unique<ModelMotionSolver>(*model, job.setup);
+    solver = std::make_unique<preview::ModelMotionSolver>(*model, job.setup);
     evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
                                                                                        model->errors());
   } else {
