@@ -12,6 +12,8 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr const char* kAxisLetters = "XYZABC";
+/// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
+constexpr double kMaxCoordinate = 1e9;
 
 /// Throws the InputError of a block.
 struct Fail {
@@ -226,7 +228,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
   }
   if (w.has('F')) {
     double f = w.get('F');
-    if (f < 0.0) fail(w.col('F'), "expected a feed >= 0");
+    if (f < 0.0 || f > 1e9) fail(w.col('F'), "expected a feed within 0 .. 1e9");
     if (st.feed_mode != FeedMode::inverse_time) {
       f *= length_scale;
       fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
@@ -237,7 +239,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
 
   // ---- S, T, M6, M3-M5, M7-M9
   if (w.has('S')) {
-    if (w.get('S') < 0.0) fail(w.col('S'), "expected a spindle speed >= 0");
+    if (w.get('S') < 0.0 || w.get('S') > 1e9) fail(w.col('S'), "expected a spindle speed within 0 .. 1e9");
     st.spindle_rpm = w.get('S');
     if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{at(w.col('S')), st.spindle, st.spindle_rpm};
   }
@@ -340,6 +342,8 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       if (w.has(L)) {
         const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
         end[i] = st.incremental ? st.position[i] + v : v;
+        if (!(std::abs(end[i]) <= kMaxCoordinate))
+          fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
       }
       if (used) st.known[i] = true;
     }
@@ -365,12 +369,16 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       if (w.has('R')) {
         if (w.has(offset_letter[ax.a1]) || w.has(offset_letter[ax.a2]))
           fail(w.col('R'), "an arc takes either R or I, J, K, not both");
-        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, w.get('R') * length_scale, turns);
+        const double r = w.get('R') * length_scale;
+        if (!(std::abs(r) <= kMaxCoordinate)) fail(w.col('R'), "R is out of range (expected a radius within 1e9 mm)");
+        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
       } else {
         const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
         if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
         const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
         const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
+        if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
+          fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
         const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
         const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
         const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
