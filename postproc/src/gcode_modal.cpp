@@ -37,7 +37,7 @@ std::string g_name(int code10) {
 
 enum GGroup : int {
   g_non_modal = 0, g_motion, g_plane, g_distance, g_arc_distance, g_feed, g_units, g_cutter, g_length,
-  g_return, g_coordinates, g_path, g_group_count
+  g_return, g_coordinates, g_path, g_dynamic_offset, g_group_count
 };
 
 /// The modal group of a supported G code, or -1 with `why` naming what is not supported.
@@ -56,6 +56,7 @@ int g_group(int code10, const char*& why) {
     case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
       return g_coordinates;
     case 610: case 611: case 640: return g_path;
+    case 2540: case 2550: return g_dynamic_offset;  // Haas DWO on/off
     case 410: case 420: case 411: case 421: why = "cutter radius compensation"; return -1;
     case 330: case 331: case 760: why = "threading"; return -1;
     case 382: case 383: case 384: case 385: why = "probing"; return -1;
@@ -287,6 +288,9 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     notice_once("work-offset", line_number, group[g_coordinates].column,
                 fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
                             g_name(group[g_coordinates].code10)));
+  if (g_is(g_dynamic_offset, 2540))
+    notice_once("G254", line_number, group[g_dynamic_offset].column,
+                "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (in_group[g_distance]) st.incremental = group[g_distance].code10 == 910;
   if (in_group[g_arc_distance]) st.arc_centre_absolute = group[g_arc_distance].code10 == 901;
   if (in_group[g_motion]) {

@@ -321,6 +321,16 @@ TEST_CASE("gcode reader: block delete and percent framing") {
   const InputError cut = error_of("%\nG0 X1\nG1 X");
   CHECK(cut.where().line == 3);
   CHECK(cut.where().column == 5);
+  // a leader before the opening % (NX's information listing), and G-code before % is kept
+  std::vector<std::string> notices;
+  const auto led = only<cl::Motion>(read_all("Information listing created by\tMArkos\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
+  REQUIRE(led.size() == 1);
+  check_tip(led[0], 4, 0, 0);
+  REQUIRE_FALSE(notices.empty());
+  CHECK_THAT(notices[0], Catch::Contains("3 line(s) before the opening '%'"));
+  CHECK(motions("G0 X1\n%\nG0 X2\n").size() == 1);  // a '%' after G-code ends the program
+  // a UTF-8 byte order mark (NX writes one)
+  check_tip(motions("\xEF\xBB\xBF%\nG0 X3\nM30\n%\n").at(0), 3, 0, 0);
   // CRLF line ends
   const auto crlf = motions("G0 X1\r\nG0 X2 (c)\r\nM30\r\n");
   REQUIRE(crlf.size() == 2);
