@@ -4,6 +4,8 @@
 # of ../shared/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
 #   tests/fuzz/run.sh [SECONDS]        (from the repository root)
+# Environment: TARGETS (default: all three), FUZZ_FLAGS (extra libFuzzer flags, e.g.
+# "-fork=1 -ignore_crashes=1" to keep going after a finding).
 set -eu
 SECONDS_EACH=${1:-60}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -12,11 +14,13 @@ SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuz
 
 CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$SAN" >/dev/null
-ninja -C "$BUILD" -j2 fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader
+TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader}
+FUZZ_FLAGS=${FUZZ_FLAGS:-}
+ninja -C "$BUILD" -j2 $TARGETS
 
 SHARED="$ROOT/../shared/data/real"
 status=0
-for target in fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader; do
+for target in $TARGETS; do
   case $target in
     fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
     *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc' ;;
@@ -35,7 +39,7 @@ for target in fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader; do
   echo "=== $target: $SECONDS_EACH s"
   log="$BUILD/fuzz/$target.log"
   if ! ( cd "$findings" && "$BUILD/fuzz/$target" -max_total_time="$SECONDS_EACH" -max_len=4096 -timeout=10 \
-         -rss_limit_mb=2048 -print_final_stats=1 "$corpus" >"$log" 2>&1 ); then
+         -rss_limit_mb=2048 -print_final_stats=1 $FUZZ_FLAGS "$corpus" >"$log" 2>&1 ); then
     status=1
     tail -40 "$log"
   fi
