@@ -235,7 +235,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
     }
     st.feed = f;
-    fx.motion_feed = f;
+    if (st.feed_mode != FeedMode::per_revolution) fx.motion_feed = f;  // per-rev feeds live in cl::Feed only
   }
 
   // ---- S, T, M6, M3-M5, M7-M9

@@ -192,6 +192,11 @@ TEST_CASE("gcode reader: G93 inverse-time feed is kept per motion") {
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 1);
   CHECK_THAT(e.detail(), Catch::Contains("needs an F word"));
+  // G95: the feed per revolution is a cl::Feed record, not a motion feed
+  const auto per_rev = read_all("G95 G1 X1 F0.1\n");
+  CHECK(only<cl::Feed>(per_rev).at(0).per_rev);
+  CHECK(only<cl::Feed>(per_rev).at(0).value == 0.1);
+  CHECK_FALSE(only<cl::Motion>(per_rev).at(0).feed);
   // in G20 an inverse-time F stays 1/min
   CHECK(*motions("G20 G93 G1 X1 F3\n")[0].feed == 3.0);
 }

@@ -59,7 +59,7 @@ struct BlockEffect {
   ProgramPoint start{};
   ProgramPoint end{};
   std::optional<ArcMove> arc;              ///< for G2/G3
-  std::optional<double> motion_feed;       ///< F given on this block (converted)
+  std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30
