@@ -169,12 +169,12 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
   }
   for (auto& [letter, axis] : by_letter)
     if (axis.is_rotary()) m.axes.push_back(axis);
+  assign_chain(m, *chain->value<std::string>(), at(file_name, chain->source()));
   if (m.rotary_count() != 0 && m.rotary_count() != 2)
     throw InputError(at(file_name, axes->source()),
                      fmt::format("{} rotary axes: a serial machine has none or two", m.rotary_count()));
   if (m.rotary_count() == 2 && m.rotary(0).direction.cross(m.rotary(1).direction).norm() < 1e-6)
     throw InputError(at(file_name, axes->source()), "the two rotary axes are parallel: the tool axis cannot be oriented");
-  assign_chain(m, *chain->value<std::string>(), at(file_name, chain->source()));
   return m;
 }
 

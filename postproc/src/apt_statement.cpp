@@ -60,6 +60,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   st.has_slash = true;
   ++first;  // '/'
   st.raw_arguments = trim(std::string(first, last));
+  if (st.raw_arguments.empty()) return st;  // "RAPID/"
   const int base_column = where.column + static_cast<int>(first - text.begin());
   std::vector<std::string> fields;
   auto it = first;

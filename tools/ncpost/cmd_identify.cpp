@@ -1,9 +1,98 @@
+// ncpost identify: fit error parameters to measurements (cli.md, formats.md "Error model").
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
 #include "commands.hpp"
+#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/compensation/identify.hpp"
+#include "ncpost/compensation/identify_report.hpp"
+#include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/compensation/model_json.hpp"
+#include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/machines/machine_file.hpp"
 
 namespace ncpost::cli {
 
+namespace {
+
+struct IdentifyArgs {
+  std::string machine, output, report, params, fixed, loss = "squared";
+  double loss_scale_um = 3.0;
+  bool no_diagnose = false, no_basic = false;
+  std::vector<std::string> data;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+}  // namespace
+
 void add_identify(CLI::App& app, Action& action) {
-  add_not_built(app, action, "identify", "Identify geometric errors from measurements", "5");
+  auto a = std::make_shared<IdentifyArgs>();
+  CLI::App* sub = app.add_subcommand("identify", "Identify geometric errors from measurements");
+  sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
+  sub->add_option("--params", a->params,
+                  "parameters to fit besides the basic model (location errors of the rotary axes), comma-separated, "
+                  "e.g. EC0Y,ECC:h2:cos,ECC:h2:sin,reversal:A");
+  sub->add_flag("--no-basic", a->no_basic, "fit only the --params (no location errors)");
+  sub->add_option("--fixed", a->fixed,
+                  "known parameters held at a value, NAME=VALUE comma-separated (mm, rad), e.g. EB0B=1e-5,EC0C=0");
+  sub->add_option("--loss", a->loss, "squared (default), huber or cauchy (outlier-robust)")
+      ->check(CLI::IsMember({"squared", "huber", "cauchy"}));
+  sub->add_option("--loss-scale-um", a->loss_scale_um, "scale of the robust loss (µm, default 3)")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--no-diagnose", a->no_diagnose, "fit the basic model only (no residual analysis)");
+  sub->add_option("--report", a->report, "self-contained HTML report");
+  sub->add_option("-o,--output", a->output, "model JSON to write")->required();
+  sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
+  sub->callback([&action, a] {
+    action = [a] {
+      const Machine m = load_machine(a->machine);
+      std::vector<comp::MeasurementSet> sets;
+      for (const auto& f : a->data) sets.push_back(comp::read_measurement_csv(f, m));
+      std::vector<std::string> names = a->no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);
+      for (const auto& n : split_list(a->params)) {
+        const comp::ParseResult r = comp::parse_parameter_name(n, m);
+        if (!r.spec) throw UsageError(fmt::format("--params: '{}': {}", n, r.error));
+        if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+      }
+      comp::IdentifyOptions o;
+      o.loss = a->loss == "huber" ? comp::Loss::huber : a->loss == "cauchy" ? comp::Loss::cauchy : comp::Loss::squared;
+      o.loss_scale_um = a->loss_scale_um;
+      for (const auto& item : split_list(a->fixed)) {
+        const auto eq = item.find('=');
+        if (eq == std::string::npos) throw UsageError(fmt::format("--fixed expects NAME=VALUE, found '{}'", item));
+        const std::string n = item.substr(0, eq);
+        const comp::ParseResult r = comp::parse_parameter_name(n, m);
+        if (!r.spec) throw UsageError(fmt::format("--fixed: '{}': {}", n, r.error));
+        try {
+          o.fixed.set(n, std::stod(item.substr(eq + 1)));
+        } catch (const std::exception&) {
+          throw UsageError(fmt::format("--fixed: '{}' is not a number", item.substr(eq + 1)));
+        }
+      }
+      if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
+      const comp::IdentifyResult r = comp::identify(m, sets, names, o);
+      fmt::print("{}", comp::text_report(m, sets, r));
+      if (!a->no_diagnose) fmt::print("residual analysis (issue 6): not built yet; the basic model is final\n");
+      if (!r.converged) throw Infeasible("the fit " + r.message);
+      comp::write_file_atomic(a->output, comp::format_model_json(comp::to_model_file(m, r)));
+      if (!a->report.empty()) comp::write_file_atomic(a->report, comp::html_report(m, sets, r));
+      return 0;
+    };
+  });
 }
 
 }  // namespace ncpost::cli

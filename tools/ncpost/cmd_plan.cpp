@@ -1,9 +1,109 @@
+// ncpost plan: measurement plans and the NC programs that run them (cli.md).
+#include <fmt/format.h>
+
+#include <sstream>
+#include <stdexcept>
+
 #include "commands.hpp"
+#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/compensation/plans.hpp"
+#include "ncpost/machines/machine_file.hpp"
 
 namespace ncpost::cli {
 
+namespace {
+
+struct PlanArgs {
+  std::string machine, test, output;
+  std::vector<double> heights, tool_lengths, levels;
+  std::optional<double> bar_length, dt, t0, step;
+  int points = 500;
+  std::string sphere;
+  bool seed_directions = false;
+};
+
+Vec3d parse_vec(const std::string& s, const char* option) {
+  std::stringstream in(s);
+  Vec3d v;
+  char c1 = 0, c2 = 0;
+  if (!(in >> v.x() >> c1 >> v.y() >> c2 >> v.z()) || c1 != ',' || c2 != ',')
+    throw UsageError(fmt::format("{} expects X,Y,Z in mm, found '{}'", option, s));
+  return v;
+}
+
+}  // namespace
+
 void add_plan(CLI::App& app, Action& action) {
-  add_not_built(app, action, "plan", "Write measurement plans and the NC programs that run them", "5");
+  auto a = std::make_shared<PlanArgs>();
+  CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
+  sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
+  sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head")
+      ->required()
+      ->check(CLI::IsMember({"ballbar-4axis", "sphere", "bc-head"}));
+  sub->add_option("-o,--output", a->output,
+                  "output: PLAN.csv (one set) or PLAN_<set>.csv (several), and PLAN.nc")
+      ->required();
+  sub->add_option("--height", a->heights, "ballbar-4axis: height of the balls above the tilt axis (mm), repeatable")
+      ->take_all();
+  sub->add_option("--bar-length", a->bar_length, "ballbar length (mm, default 100)");
+  sub->add_option("--points", a->points, "ballbar-4axis: rows per height (default 500)");
+  sub->add_option("--dt", a->dt, "time between rows (s)");
+  sub->add_option("--t0", a->t0, "time stamp of the first row (s, default 0)");
+  sub->add_option("--sphere", a->sphere, "sphere: centre X,Y,Z at home (mm, default 120,40,80)");
+  sub->add_option("--levels", a->levels, "sphere: levels of the tilt axis (deg)")->delimiter(',');
+  sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)");
+  sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250)")
+      ->take_all();
+  sub->add_flag("--seed-directions", a->seed_directions,
+                "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
+  sub->callback([&action, a] {
+    action = [a] {
+      const Machine m = load_machine(a->machine);
+      std::vector<comp::NamedPlan> plans;
+      bool continuous = false;
+      try {
+        if (a->test == "ballbar-4axis") {
+          comp::BallbarPlanOptions o;
+          if (!a->heights.empty()) o.heights_mm = a->heights;
+          if (a->bar_length) o.bar_length_mm = *a->bar_length;
+          if (a->dt) o.dt_s = *a->dt;
+          if (a->t0) o.t0_s = *a->t0;
+          o.points = a->points;
+          plans = comp::plan_ballbar_4axis(m, o);
+          continuous = true;
+        } else if (a->test == "sphere") {
+          comp::SpherePlanOptions o;
+          if (!a->sphere.empty()) o.sphere_mm = parse_vec(a->sphere, "--sphere");
+          if (!a->levels.empty()) o.levels_deg = a->levels;
+          if (a->step) o.step_deg = *a->step;
+          if (a->dt) o.dt_s = *a->dt;
+          if (a->t0) o.t0_s = *a->t0;
+          plans = comp::plan_sphere(m, o);
+        } else {
+          comp::BcHeadPlanOptions o;
+          if (!a->tool_lengths.empty()) o.tool_lengths_mm = a->tool_lengths;
+          if (a->bar_length) o.bar_length_mm = *a->bar_length;
+          if (a->dt) o.dt_s = *a->dt;
+          if (a->t0) o.t0_s = *a->t0;
+          o.b_test_along_y = !a->seed_directions;
+          plans = comp::plan_bc_head(m, o);
+        }
+      } catch (const std::invalid_argument& e) {
+        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
+      }
+      std::string stem = a->output;
+      if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
+      for (const auto& p : plans) {
+        const std::string file = plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+        comp::write_file_atomic(file, comp::format_measurement_csv(p.set, m));
+        fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
+      }
+      comp::write_file_atomic(stem + ".nc", comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
+      fmt::print("NC program -> {}.nc\n", stem);
+      return 0;
+    };
+  });
 }
 
 }  // namespace ncpost::cli

@@ -1,9 +1,47 @@
+// ncpost simulate: run a measurement plan on a machine described by a model JSON (cli.md).
+#include <fmt/format.h>
+
+#include <stdexcept>
+
 #include "commands.hpp"
+#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/compensation/model_json.hpp"
+#include "ncpost/compensation/simulate.hpp"
+#include "ncpost/machines/machine_file.hpp"
 
 namespace ncpost::cli {
 
+namespace {
+struct SimulateArgs {
+  std::string machine, model, output, plan;
+  double noise_um = 0.0;
+  std::uint64_t seed = 1;
+};
+}  // namespace
+
 void add_simulate(CLI::App& app, Action& action) {
-  add_not_built(app, action, "simulate", "Simulate a measurement plan on a machine with errors", "5");
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* sub = app.add_subcommand("simulate", "Simulate a measurement plan on a machine with errors");
+  sub->add_option("--machine", args->machine, "machine definition (TOML)")->required();
+  sub->add_option("--model", args->model, "error model (JSON, formats.md): the simulated machine")->required();
+  sub->add_option("--noise-um", args->noise_um, "standard deviation of Gaussian noise on every value (µm)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--seed", args->seed, "random seed of the noise");
+  sub->add_option("-o,--output", args->output, "measurement CSV to write")->required();
+  sub->add_option("plan", args->plan, "plan CSV (a measurement CSV; value columns absent or ignored)")->required();
+  sub->callback([&action, args] {
+    action = [args] {
+      const Machine m = load_machine(args->machine);
+      const comp::ModelFile model = comp::read_model_json(args->model, &m);
+      const comp::MeasurementSet plan = comp::read_measurement_csv(args->plan, m, {true});
+      const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {args->noise_um, args->seed});
+      comp::write_file_atomic(args->output, comp::format_measurement_csv(data, m));
+      fmt::print("simulated {} rows of {} on '{}' ({} parameters, noise {} µm) -> {}\n", data.rows.size(),
+                 comp::to_string(data.type), m.name, model.parameters.size(), args->noise_um, args->output);
+      return 0;
+    };
+  });
 }
 
 }  // namespace ncpost::cli

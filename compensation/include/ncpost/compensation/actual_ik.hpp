@@ -1,0 +1,49 @@
+#pragma once
+// Compensated inverse kinematics: the commands that make the *actual* machine (MachineModel)
+// put the tool tip on the CL point with the CL tool axis (conventions.md "Nominal closure", with
+// the error model in the chain). For `post --model` (issue 5).
+//
+// Method: Newton–Gauss from the nominal solution. Unknowns: the five commands (mm, rad).
+// Equations: the tip in W (3, mm) and the actual tool axis projected on two unit vectors
+// perpendicular to the CL axis (2, rad) — the axis has two degrees of freedom, so 5 equations for
+// 5 unknowns. Jacobian by automatic differentiation of the templated chain with respect to the
+// commands; steps by a truncated-SVD pseudo-inverse, so that near the singular orientation
+// (free outer angle) the free angle stays at its nominal value. Converged when the tip is within
+// `tip_tolerance_mm` and the axis within `axis_tolerance_rad`.
+//
+// Reversal: with `previous_actual` (where each axis actually stands, after the previous block)
+// the dead-band offset of each axis follows from the direction of the new command
+// (reversal.hpp); it is re-evaluated at every iterate, so the solution is consistent with the
+// direction its own command implies. Without it, offsets are 0 (approach from below).
+#include <optional>
+#include <string>
+
+#include "ncpost/compensation/machine_model.hpp"
+
+namespace ncpost::comp {
+
+struct ActualIkOptions {
+  double tip_tolerance_mm = 1e-6;
+  double axis_tolerance_rad = 1e-8;
+  int max_iterations = 30;
+  std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
+};
+
+struct ActualIkOutcome {
+  std::optional<AxisPosition> position;  ///< the commands
+  AxisPosition actual;                   ///< where the axes actually go (command + reversal offset)
+  int iterations = 0;
+  double tip_error_mm = 0.0;    ///< remaining |tip − CL tip|
+  double axis_error_rad = 0.0;  ///< remaining angle between the actual and the CL axis
+  std::string message;          ///< why it failed, when !position
+  bool ok() const { return position.has_value(); }
+};
+
+ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+                             const AxisPosition& nominal_guess, const ActualIkOptions& options = {});
+
+/// Reversal offsets (actual − command per axis) of moving to `command` from `previous_actual`.
+RowState<double> reversal_state(const MachineModel& model, const AxisPosition& command,
+                                const std::optional<AxisPosition>& previous_actual);
+
+}  // namespace ncpost::comp

@@ -1,0 +1,237 @@
+#pragma once
+// Adaptive block insertion to a tolerance (`ncpost post --tolerance MM`, the default
+// `--nonlinear adaptive`): an input block whose exact nonlinear error (nonlinear_error.hpp)
+// exceeds the tolerance is cut into output blocks whose end points are CL points on the straight
+// CL segment (tip linear, tool axis on the great circle: `cl_at`), each solved exactly by the
+// caller's solver (nominal IK, or the IK of the actual machine under a model), with continuity from
+// the previous node. Every output block is re-executed and measured, so the result is verified.
+//
+// Number and placement of the nodes (the bow of a block falls about as 1/n² with n pieces):
+//   1. n = ceil(sqrt(E / tolerance)) pieces of equal parameter;
+//   2. if some piece fails, its measured errors e_k give the local density; n' =
+//      ceil(Σ sqrt(e_k / tolerance)) pieces placed at equal increments of the cumulative
+//      Σ sqrt(e_k) (equidistribution), tried once;
+//   3. pieces that still fail are cut again the same way (recursively, `max_depth`).
+// Axis limits and rotary continuity: the solver applies the limits and the choice of solution.
+// Near the singular cone the block's end points can sit on different branches (e.g. A +2° → −2° with
+// C nearly still, while the exact path along the CL segment needs C to swing ~180°): no continuous
+// exact subdivision exists. This is detected up front (the exact solution at t = ¼, ½, ¾ more than
+// `branch_deviation_rad` from the linear interpolation of the block's rotary angles); such a block,
+// and any single node without an admissible continuous solution, keeps the rotary angles of the
+// interpolation q0 + t·(q1 − q0) and only the linear axes put the tool tip on the CL point (exact in
+// position; the orientation is the block's own: counted in `rotary_kept_nodes`). No flip is ever
+// emitted inside a block; linear axes out of their limits make the block fail with a message.
+// Units: mm, rad; CL in W; t is the parameter of the input block.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <optional>
+#include <vector>
+
+#include "ncpost/compensation/nonlinear_split.hpp"
+#include "ncpost/kinematics/inverse.hpp"
+
+namespace ncpost::nonlinear {
+
+struct AdaptiveOptions {
+  double tolerance_mm = 0.005;
+  int max_depth = 8;
+  int max_blocks = 4096;                ///< output blocks per input block
+  double max_rotary_step_rad = 0.5;     ///< node-to-node jump beyond the block's own rotary travel
+  double branch_deviation_rad = 0.5;    ///< exact IK this far from the interpolation: keep rotaries
+  NonlinearErrorOptions error;
+  bool valid() const { return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && error.valid(); }
+};
+
+/// The nominal solver: closed-form IK of the nominal machine with the post's solution choice.
+struct NominalSolver {
+  const Machine& machine;
+  Setup setup;
+  IkPolicy policy{};
+  IkOutcome operator()(const ClPoint& cl, const AxisPosition& previous) const {
+    return solve(machine, cl, setup, previous, policy);
+  }
+};
+
+namespace detail {
+
+template <class Errors, class Solver> class Subdivider {
+ public:
+  Subdivider(const Machine& m, const Setup& s, const ClBlock& b, const Errors& e, Solver& solver, const AdaptiveOptions& o)
+      : machine_(m), setup_(s), block_(b), errors_(e), solver_(solver), options_(o) {
+    const double travel = (b.to.rotary_rad - b.from.rotary_rad).cwiseAbs().maxCoeff();
+    max_step_ = travel + o.max_rotary_step_rad;
+  }
+
+  SplitBlock run() {
+    SplitBlock out;
+    const NonlinearError e = error_of(0.0, block_.start, block_.from, 1.0, block_.end, block_.to);
+    out.input_error_mm = e.max_error_mm;
+    if (e.max_error_mm > options_.tolerance_mm) keep_rotary_ = !branch_consistent();
+    Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e};
+    refine(whole, 0, out);
+    out.rotary_kept_nodes = rotary_kept_;
+    return out;
+  }
+
+ private:
+  struct Piece {
+    double ta;
+    ClPoint ca;
+    AxisPosition qa;
+    double tb;
+    ClPoint cb;
+    AxisPosition qb;
+    NonlinearError error;
+  };
+
+  NonlinearError error_of(double, const ClPoint& ca, const AxisPosition& qa, double, const ClPoint& cb,
+                          const AxisPosition& qb) const {
+    return nonlinear_error(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_, options_.error);
+  }
+
+  void emit(const Piece& p, SplitBlock& out) const {
+    out.nodes.push_back({p.tb, p.cb, p.qb});
+    out.max_error_mm = std::max(out.max_error_mm, p.error.max_error_mm);
+    out.max_orientation_rad = std::max(out.max_orientation_rad, p.error.max_orientation_rad);
+  }
+
+  /// Cuts `p` at the parameters `cuts` (strictly inside (p.ta, p.tb), ascending); nullopt with
+  /// `failure` set when a node cannot be solved or jumps.
+  std::optional<std::vector<Piece>> cut(const Piece& p, const std::vector<double>& cuts, std::string& failure) const {
+    std::vector<Piece> pieces;
+    double ta = p.ta;
+    ClPoint ca = p.ca;
+    AxisPosition qa = p.qa;
+    for (std::size_t k = 0; k <= cuts.size(); ++k) {
+      double tb = p.tb;
+      ClPoint cb = p.cb;
+      AxisPosition qb = p.qb;
+      if (k < cuts.size()) {
+        tb = cuts[k];
+        cb = cl_at(block_.start, block_.end, tb);
+        const IkOutcome o = keep_rotary_ ? IkOutcome{} : solver_(cb, qa);
+        if (o.ok() && (o.position->rotary_rad - qa.rotary_rad).cwiseAbs().maxCoeff() <= max_step_) {
+          qb = *o.position;
+        } else {
+          auto kept = rotary_kept_node(tb, cb, failure);
+          if (!kept) return std::nullopt;
+          qb = *kept;
+        }
+      }
+      pieces.push_back({ta, ca, qa, tb, cb, qb, error_of(ta, ca, qa, tb, cb, qb)});
+      ta = tb;
+      ca = cb;
+      qa = qb;
+    }
+    return pieces;
+  }
+
+  /// False when the exact solutions inside the block leave the interpolation of its end points
+  /// (end points on different branches, near the singular cone).
+  bool branch_consistent() const {
+    const double limit = std::max(options_.branch_deviation_rad,
+                                  (block_.to.rotary_rad - block_.from.rotary_rad).cwiseAbs().maxCoeff());
+    for (double t : {0.25, 0.5, 0.75}) {
+      const AxisPosition hint = lerp(block_.from, block_.to, t);
+      const IkOutcome o = solver_(cl_at(block_.start, block_.end, t), hint);
+      if (o.ok() && (o.position->rotary_rad - hint.rotary_rad).cwiseAbs().maxCoeff() > limit) return false;
+    }
+    return true;
+  }
+
+  /// The node at tb with the block's interpolated rotary angles and the tip on cb.
+  std::optional<AxisPosition> rotary_kept_node(double tb, const ClPoint& cb, std::string& failure) const {
+    const ExecutedBlock<Errors> executed(machine_, setup_, block_, errors_);
+    const AxisPosition q = shift_linear_axes(executed, lerp(block_.from, block_.to, tb), cb.tip_mm);
+    for (int i = 0; i < 3; ++i) {
+      const Axis& axis = machine_.axes[static_cast<std::size_t>(i)];
+      if (axis.limits && !axis.limits->contains(q.linear_mm[i], 1e-6)) {
+        failure = fmt::format("an inserted point at t = {:.4f} needs axis {} = {:.3f} mm, out of its limits", tb,
+                              axis.letter, q.linear_mm[i]);
+        return std::nullopt;
+      }
+    }
+    ++rotary_kept_;
+    return q;
+  }
+
+  static int failures(const std::vector<Piece>& pieces, double tolerance) {
+    return static_cast<int>(std::count_if(pieces.begin(), pieces.end(),
+                                           [&](const Piece& q) { return q.error.max_error_mm > tolerance; }));
+  }
+
+  void refine(const Piece& p, int depth, SplitBlock& out) {
+    const double tol = options_.tolerance_mm;
+    if (!out.ok()) return;
+    if (p.error.max_error_mm <= tol) return emit(p, out);
+    if (depth > options_.max_depth || out.output_blocks() >= options_.max_blocks) {
+      out.failure = fmt::format("tolerance {} mm not reached after {} levels of subdivision (error {:.4g} mm at t = {:.4f})",
+                                tol, depth, p.error.max_error_mm, p.ta + p.error.at_t * (p.tb - p.ta));
+      return;
+    }
+    // 1. equal parameter
+    const int n = std::max(2, static_cast<int>(std::ceil(std::sqrt(p.error.max_error_mm / tol))));
+    std::vector<double> cuts;
+    for (int k = 1; k < n; ++k) cuts.push_back(p.ta + (p.tb - p.ta) * k / n);
+    auto pieces = cut(p, cuts, out.failure);
+    if (!pieces) return;
+    // 2. equidistribution from the measured errors of the pieces
+    if (failures(*pieces, tol) > 0) {
+      std::vector<double> density;
+      double total = 0;
+      for (const Piece& q : *pieces) {
+        density.push_back(std::sqrt(q.error.max_error_mm / tol));
+        total += density.back();
+      }
+      const int n2 = std::max(n, static_cast<int>(std::ceil(total)));
+      if (n2 < n + failures(*pieces, tol)) {  // only when it can beat cutting the failed pieces
+        std::vector<double> cuts2;
+        double acc = 0;
+        std::size_t k = 0;
+        for (int j = 1; j < n2; ++j) {
+          const double target = total * j / n2;
+          while (k + 1 < density.size() && acc + density[k] < target) acc += density[k++];
+          const double frac = density[k] > 0 ? std::clamp((target - acc) / density[k], 0.0, 1.0) : 0.5;
+          cuts2.push_back((*pieces)[k].ta + frac * ((*pieces)[k].tb - (*pieces)[k].ta));
+        }
+        std::string failure2;
+        auto pieces2 = cut(p, cuts2, failure2);
+        if (pieces2 && n2 + failures(*pieces2, tol) < n + failures(*pieces, tol)) pieces = std::move(pieces2);
+      }
+    }
+    // 3. recurse on what still fails
+    for (const Piece& q : *pieces) refine(q, depth + 1, out);
+  }
+
+  const Machine& machine_;
+  const Setup& setup_;
+  const ClBlock& block_;
+  const Errors& errors_;
+  Solver& solver_;
+  const AdaptiveOptions& options_;
+  double max_step_ = 0.0;
+  mutable int rotary_kept_ = 0;
+  bool keep_rotary_ = false;
+};
+
+}  // namespace detail
+
+/// Subdivides `block` until every output block's exact nonlinear error, on the machine of `errors`,
+/// is within `options.tolerance_mm`. `solver(cl, previous)` returns an `IkOutcome` for a CL point
+/// (W) given the previous axis position. The block's end keeps its axis position `block.to`.
+template <class Errors, class Solver>
+SplitBlock subdivide_adaptive(const Machine& machine, const Setup& setup, const ClBlock& block, const Errors& errors,
+                              Solver&& solver, const AdaptiveOptions& options = {}) {
+  detail::Subdivider<Errors, std::remove_reference_t<Solver>> s(machine, setup, block, errors, solver, options);
+  return s.run();
+}
+
+/// Nominal machine, nominal IK.
+inline SplitBlock subdivide_adaptive(const Machine& machine, const Setup& setup, const ClBlock& block,
+                                     const AdaptiveOptions& options = {}) {
+  NominalSolver solver{machine, setup};
+  return subdivide_adaptive(machine, setup, block, NominalErrors{}, solver, options);
+}
+
+}  // namespace ncpost::nonlinear

@@ -1,0 +1,153 @@
+#pragma once
+// The error model as the error hook of the one kinematic chain (kinematics/forward.hpp): named
+// parameters (parameter_name.hpp) turned into AxisErrorTerms per axis and command.
+//
+// `ModelLayout` fixes which parameters exist and what each acts on; `ErrorFunctor<P>` pairs it
+// with values of scalar type P (double for posting and simulation, automatic-differentiation
+// scalars for identification) and with the state of the current measurement row (reversal
+// offsets, time). Its call operator is templated on the command scalar S, so the same model also
+// gives exact derivatives with respect to the commands (compensated inverse kinematics).
+//
+// Frames and units: every term is in M axes at home (mm, rad), conventions.md "Geometric errors":
+//   location errors   → location_offset_mm / location_tilt_rad of the rotary axis
+//   squareness        → direction_offset: ŷ = (−EC0Y, 1, 0), ẑ = (EB0Z, −EA0Z, 1)
+//   component errors  → motion_mm (EX, EY, EZ) / motion_rad (EA, EB, EC) of the axis:
+//                       rotary Σ value·cos(kq) or value·sin(kq), linear Σ value·q^k (q in mm)
+//   reversal          → the row's dead-band offset (reversal.hpp), not at home
+//   drift             → a translation of the TCP relative to the table in M (added to the error
+//                       motion of the linear axis nearest the bed, which moves the whole side),
+//                       not at home: the set-up at home is at t = 0 of the drift law
+// Instrument terms (ballbar length, sphere position) are read by the measurement predictions.
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/kinematics/forward.hpp"
+
+namespace ncpost::comp {
+
+class ModelLayout {
+ public:
+  ModelLayout() = default;
+  /// Throws std::invalid_argument("NAME: reason") for a name the machine cannot have.
+  ModelLayout(const Machine& machine, const std::vector<std::string>& names);
+
+  std::size_t size() const { return specs_.size(); }
+  const ParameterSpec& spec(int i) const { return specs_[static_cast<std::size_t>(i)]; }
+  const std::vector<ParameterSpec>& specs() const { return specs_; }
+  int index_of(const std::string& name) const;
+  std::vector<std::string> names() const;
+
+  /// Parameters acting through the transform of this axis (location, squareness, component).
+  const std::vector<int>& terms_of_axis(int axis_index) const { return axis_terms_[static_cast<std::size_t>(axis_index)]; }
+  int reversal_of(int axis_index) const { return reversal_[static_cast<std::size_t>(axis_index)]; }
+  bool has_reversal() const;
+  const std::vector<int>& drift_terms() const { return drift_terms_; }
+  int drift_axis() const { return drift_axis_; }
+  int ballbar_length() const { return ballbar_length_; }
+  const std::array<int, 3>& sphere_position() const { return sphere_position_; }
+
+ private:
+  std::vector<ParameterSpec> specs_;
+  std::vector<std::vector<int>> axis_terms_;
+  std::array<int, 5> reversal_{-1, -1, -1, -1, -1};
+  std::vector<int> drift_terms_;
+  int drift_axis_ = -1;
+  int ballbar_length_ = -1;
+  std::array<int, 3> sphere_position_{-1, -1, -1};
+};
+
+/// What the model needs to know about the measurement row being evaluated.
+template <class P> struct RowState {
+  std::array<P, 5> reversal{P(0), P(0), P(0), P(0), P(0)};  ///< actual − command per axis (mm / rad)
+  double time_s = 0.0;                                      ///< time stamp for the drift law
+};
+
+template <class P> class ErrorFunctor {
+ public:
+  /// `values` has layout.size() entries and must outlive the functor. With `machine_only`, the
+  /// effects that act only while measuring (drift, instruments) are left out (posting).
+  ErrorFunctor(const ModelLayout& layout, const P* values, RowState<P> state = {}, bool machine_only = false)
+      : layout_(&layout), values_(values), state_(state), machine_only_(machine_only) {}
+
+  void set_state(const RowState<P>& s) { state_ = s; }
+  const RowState<P>& state() const { return state_; }
+  const ModelLayout& layout() const { return *layout_; }
+  /// Value of parameter i, or 0 for i < 0.
+  P value(int i) const { return i < 0 ? P(0) : values_[i]; }
+
+  template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home) const {
+    using std::cos;
+    using std::sin;
+    AxisErrorTerms<S> e;
+    for (int i : layout_->terms_of_axis(axis_index)) {
+      const ParameterSpec& s = layout_->spec(i);
+      const S v = S(values_[i]);
+      const int c = s.component;
+      switch (s.kind) {
+        case ParameterKind::location:
+          if (c < 3) e.location_offset_mm[c] += v;
+          else e.location_tilt_rad[c - 3] += v;
+          break;
+        case ParameterKind::squareness:
+          if (s.name == "EC0Y") e.direction_offset.x() -= v;
+          else if (s.name == "EB0Z") e.direction_offset.x() += v;
+          else e.direction_offset.y() -= v;  // EA0Z
+          break;
+        case ParameterKind::harmonic: {
+          const S kq = S(double(s.order)) * q;
+          const S f = s.sine ? S(sin(kq)) : S(cos(kq));
+          add_motion<S>(e, c, S(v * f));
+          break;
+        }
+        case ParameterKind::polynomial: {
+          S power = q;
+          for (int k = 1; k < s.order; ++k) power = power * q;
+          add_motion<S>(e, c, S(v * power));
+          break;
+        }
+        default: break;
+      }
+    }
+    if (at_home) return e;
+    if (layout_->reversal_of(axis_index) >= 0) e.reversal = S(state_.reversal[static_cast<std::size_t>(axis_index)]);
+    if (!machine_only_ && axis_index == layout_->drift_axis()) e.motion_mm += drift<S>();
+    return e;
+  }
+
+  /// Drift of the TCP relative to the table at the row's time (mm, M axes).
+  template <class S> Vec3<S> drift() const {
+    using std::exp;
+    Vec3<S> d = Vec3<S>::Zero();
+    const double t = state_.time_s;
+    std::array<S, 3> tau{S(600.0), S(600.0), S(600.0)};
+    for (int i : layout_->drift_terms())
+      if (layout_->spec(i).drift == DriftBasis::time_constant) tau[layout_->spec(i).component] = S(values_[i]);
+    for (int i : layout_->drift_terms()) {
+      const ParameterSpec& s = layout_->spec(i);
+      const S v = S(values_[i]);
+      switch (s.drift) {
+        case DriftBasis::linear: d[s.component] += v * t; break;
+        case DriftBasis::quadratic: d[s.component] += v * (t * t); break;
+        case DriftBasis::exponential: d[s.component] += v * (S(1.0) - exp(-S(t) / tau[s.component])); break;
+        case DriftBasis::time_constant: break;
+      }
+    }
+    return d;
+  }
+
+ private:
+  template <class S> static void add_motion(AxisErrorTerms<S>& e, int c, const S& v) {
+    if (c < 3) e.motion_mm[c] += v;
+    else e.motion_rad[c - 3] += v;
+  }
+
+  const ModelLayout* layout_;
+  const P* values_;
+  RowState<P> state_;
+  bool machine_only_;
+};
+
+}  // namespace ncpost::comp

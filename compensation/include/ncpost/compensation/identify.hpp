@@ -1,0 +1,72 @@
+#pragma once
+// Identification of error parameters from measurements (cli.md `identify`; seeds 000, 002):
+// nonlinear least squares (Levenberg–Marquardt with Marquardt scaling) on the residuals of
+// residuals.hpp, Jacobians by automatic differentiation through the templated chain.
+//
+// 1. The Jacobian at the prior values (0 unless `fixed` gives one) is analysed for
+//    identifiability (identifiability.hpp); parameters the data cannot separate are pinned at
+//    their prior value and reported with their null-space direction — no invented values.
+// 2. The kept parameters are fitted; the rank is checked again at the solution.
+// 3. Uncertainty: standard deviations from s²·(JᵀJ)⁻¹ of the kept parameters, s² the residual
+//    variance (Σr²/(m − n)); with a robust loss the weighted (IRLS) matrices are used.
+// Units: parameters mm / rad, residuals mm (reports in µm / µrad).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncpost/compensation/error_parameters.hpp"
+#include "ncpost/compensation/identifiability.hpp"
+#include "ncpost/compensation/measurement.hpp"
+#include "ncpost/compensation/model_json.hpp"
+
+namespace ncpost::comp {
+
+enum class Loss { squared, huber, cauchy };
+
+struct IdentifyOptions {
+  Loss loss = Loss::squared;
+  double loss_scale_um = 3.0;   ///< where the robust loss leaves the quadratic (µm)
+  int max_iterations = 100;
+  double rank_tolerance = 1e-3;  ///< identifiability.hpp
+  ErrorParameters fixed;         ///< known values (e.g. measured separately): held, not fitted
+
+  /// Empty if valid, else what is wrong.
+  std::string validate() const;
+};
+
+/// Statistics of the residual of one measurement file (µm).
+struct FileResidual {
+  std::string file;
+  MeasurementType type = MeasurementType::ballbar;
+  std::size_t values = 0;
+  double rms_nominal_um = 0.0, max_nominal_um = 0.0;  ///< no errors (prior values)
+  double rms_after_um = 0.0, max_after_um = 0.0;      ///< identified model
+};
+
+struct IdentifyResult {
+  bool converged = false;
+  std::string message;
+  int iterations = 0;
+  std::vector<std::string> candidates;  ///< the parameters asked for, priority order
+  ErrorParameters parameters;           ///< fitted values of the kept parameters (+ fixed ones)
+  ErrorParameters uncertainty;          ///< standard deviations of the fitted ones
+  Identifiability identifiability;
+  RankAnalysis rank;                    ///< at the solution, columns = candidates
+  std::vector<FileResidual> files;
+  double rms_nominal_um = 0.0, max_nominal_um = 0.0, rms_after_um = 0.0, max_after_um = 0.0;
+  std::vector<std::vector<double>> fitted;   ///< predictions of every set by the identified model
+  std::vector<std::vector<double>> nominal;  ///< predictions by the prior model
+};
+
+/// The basic model: location errors of every rotary axis (offsets and tilts perpendicular to
+/// the axis first, zero-position errors last: in a coupling the zero error is the one pinned).
+std::vector<std::string> basic_parameters(const Machine& machine);
+
+/// Identifies `candidates` from the sets. Throws std::invalid_argument for a bad name.
+IdentifyResult identify(const Machine& machine, const std::vector<MeasurementSet>& sets,
+                        const std::vector<std::string>& candidates, const IdentifyOptions& options = {});
+
+/// The model file of a result (parameters, uncertainty, identifiability, fit).
+ModelFile to_model_file(const Machine& machine, const IdentifyResult& result);
+
+}  // namespace ncpost::comp

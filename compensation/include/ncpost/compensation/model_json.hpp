@@ -1,0 +1,59 @@
+#pragma once
+// The error model file (formats.md "Error model (JSON)"): written by `identify`, read by
+// `post --model` and `simulate`. Parameters in mm / rad (names: parameter_name.hpp).
+//
+// Reading validates every parameter name against the machine (when given): an unknown or
+// impossible name is an InputError naming the file, the line of the name and the reason. Keys
+// this page does not know are kept (`extra`) and written back.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ncpost/compensation/error_parameters.hpp"
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/machines/input_error.hpp"
+
+namespace ncpost::comp {
+
+/// A direction of parameter space the data cannot see: name → weight (unit vector).
+using NullDirection = std::vector<std::pair<std::string, double>>;
+
+struct Identifiability {
+  int rank = 0;
+  int parameters = 0;
+  std::vector<NullDirection> null_space;  ///< weights under 0.05 left out when written
+  /// Parameters held at their prior value (not fitted) because the data cannot separate them.
+  std::vector<std::string> pinned;
+  /// For each pinned parameter, what the fitted values represent (human text).
+  std::vector<std::string> combinations;
+};
+
+struct FitSummary {
+  double rms_before_um = 0.0;
+  double max_before_um = 0.0;
+  double rms_after_um = 0.0;
+  double max_after_um = 0.0;
+  double rms_nominal_um = 0.0;  ///< extra: residual of the nominal machine (no errors)
+  double max_nominal_um = 0.0;
+};
+
+struct ModelFile {
+  std::string machine;
+  ErrorParameters parameters;
+  ErrorParameters uncertainty;
+  std::vector<std::string> effects_added;
+  std::optional<Identifiability> identifiability;
+  std::optional<FitSummary> fit;
+  nlohmann::json extra = nlohmann::json::object();  ///< other top-level keys, kept as they are
+};
+
+/// Parses a model file; with `machine`, every parameter name is checked against it.
+ModelFile parse_model_json(const std::string& text, const std::string& file_name, const Machine* machine);
+ModelFile read_model_json(const std::string& path, const Machine* machine);
+/// The JSON text (1-space indent as the shared files, parameters in their order).
+std::string format_model_json(const ModelFile& model);
+
+}  // namespace ncpost::comp

@@ -1,0 +1,84 @@
+#pragma once
+// Predictions of measurements by the error model (conventions.md "Measurements"), templated on
+// the parameter scalar P so that identification differentiates them exactly.
+//
+//   ballbar  L = | bed_T_tool(q)·tool_ball − bed_T_table(q)·table_ball | + ballbar:length      (mm)
+//   sphere   d = [bed_T_table(q)·(s + sphere:position) − bed_T_tool(q)·0] − [same, nominal]   (mm, M)
+//   laser    e = 1000 · component of [table_T_tool(q)·tool_point − nominal], minus its value at
+//            the first row of the run (µm)
+// bed_T_table / bed_T_tool are the actual chain with the set-up at home (forward.hpp
+// chain_pose); the home pose is evaluated once per set. Rows are evaluated in order, so reversal
+// offsets follow the measuring order (reversal.hpp).
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "ncpost/compensation/error_model.hpp"
+#include "ncpost/compensation/measurement.hpp"
+#include "ncpost/compensation/reversal.hpp"
+
+namespace ncpost::comp {
+
+/// Predicted values of every row, flattened row by row (values_per_row each), in the file's
+/// units (mm; µm for laser).
+template <class P>
+std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const ModelLayout& layout, const P* values) {
+  using std::sqrt;
+  std::vector<AxisPosition> commands;
+  std::vector<double> times;
+  for (const auto& r : set.rows) {
+    commands.push_back(r.command);
+    times.push_back(r.time_s);
+  }
+  const std::vector<RowState<P>> states = row_states<P>(layout, values, commands, times);
+  ErrorFunctor<P> f(layout, values);
+  const double tl = set.tool_length_mm;
+  const ChainPose<P> home = raw_chain_pose<P>(m, AxisPositionT<P>{}, tl, f, true);
+  const Rigid<P> table_home_inv = home.bed_T_table.inverse();
+  const Rigid<P> tool_home_inv = home.bed_T_tool.inverse();
+
+  std::vector<P> out;
+  out.reserve(set.rows.size() * static_cast<std::size_t>(set.values_per_row()));
+  std::map<int, P> run_zero;
+  for (std::size_t k = 0; k < set.rows.size(); ++k) {
+    f.set_state(states[k]);
+    const AxisPositionT<P> q = set.rows[k].command.template cast<P>();
+    const ChainPose<P> raw = raw_chain_pose<P>(m, q, tl, f, false);
+    const Rigid<P> bed_T_table = raw.bed_T_table * table_home_inv;
+    const Rigid<P> bed_T_tool = raw.bed_T_tool * tool_home_inv;
+    switch (set.type) {
+      case MeasurementType::ballbar: {
+        const Vec3<P> d = bed_T_tool.apply(set.tool_ball_mm.template cast<P>()) -
+                          bed_T_table.apply(set.table_ball_mm.template cast<P>());
+        out.push_back(sqrt(d.squaredNorm()) + f.value(layout.ballbar_length()));
+        break;
+      }
+      case MeasurementType::sphere: {
+        Vec3<P> s = set.sphere_mm.template cast<P>();
+        for (int c = 0; c < 3; ++c) s[c] += f.value(layout.sphere_position()[static_cast<std::size_t>(c)]);
+        const Vec3<P> actual = bed_T_table.apply(s) - bed_T_tool.t;
+        const ChainPose<double> nom = chain_pose<double>(m, set.rows[k].command, tl, NominalErrors{});
+        const Vec3d nominal = nom.bed_T_table.apply(set.sphere_mm) - nom.bed_T_tool.t;
+        for (int c = 0; c < 3; ++c) out.push_back(actual[c] - P(nominal[c]));
+        break;
+      }
+      case MeasurementType::laser: {
+        const Vec3<P> actual = (bed_T_table.inverse() * bed_T_tool).apply(set.tool_point_mm.template cast<P>());
+        const ChainPose<double> nom = chain_pose<double>(m, set.rows[k].command, tl, NominalErrors{});
+        const Vec3d nominal = nom.table_T_tool().apply(set.tool_point_mm);
+        const int c = set.component - 'X';
+        const P e = P(1000.0) * (actual[c] - P(nominal[c]));
+        auto it = run_zero.find(set.rows[k].run);
+        if (it == run_zero.end()) it = run_zero.emplace(set.rows[k].run, e).first;
+        out.push_back(e - it->second);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+/// Scale from the file's value unit to mm (1 for ballbar and sphere, 1e-3 for laser µm).
+inline double value_unit_mm(const MeasurementSet& set) { return set.type == MeasurementType::laser ? 1e-3 : 1.0; }
+
+}  // namespace ncpost::comp

@@ -1,0 +1,22 @@
+#pragma once
+// Simulated measurements: a plan run on a machine described by error parameters (the truth),
+// with Gaussian noise (formats.md, cli.md `simulate`). Values in the file's units (mm; laser µm);
+// the noise standard deviation is given in µm for every type.
+#include <cstdint>
+
+#include "ncpost/compensation/error_parameters.hpp"
+#include "ncpost/compensation/measurement.hpp"
+
+namespace ncpost::comp {
+
+struct SimulationOptions {
+  double noise_um = 0.0;   ///< standard deviation of the added noise (µm)
+  std::uint64_t seed = 1;  ///< random seed (std::mt19937_64)
+};
+
+/// The plan with its values filled in. Throws std::invalid_argument for a parameter name the
+/// machine cannot have.
+MeasurementSet simulate(const Machine& machine, const MeasurementSet& plan, const ErrorParameters& truth,
+                        const SimulationOptions& options = {});
+
+}  // namespace ncpost::comp

@@ -1,0 +1,92 @@
+#include "ncpost/compensation/actual_ik.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SVD>
+#include <cmath>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "ncpost/compensation/reversal.hpp"
+
+namespace ncpost::comp {
+namespace {
+
+using Jet = Eigen::AutoDiffScalar<Eigen::Matrix<double, 5, 1>>;
+
+/// Two unit vectors completing u to an orthonormal basis.
+void perpendicular_pair(const Vec3d& u, Vec3d& b1, Vec3d& b2) {
+  const Vec3d helper = std::abs(u.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY();
+  b1 = u.cross(helper).normalized();
+  b2 = u.cross(b1).normalized();
+}
+
+}  // namespace
+
+RowState<double> reversal_state(const MachineModel& model, const AxisPosition& command,
+                                const std::optional<AxisPosition>& previous_actual) {
+  RowState<double> s;
+  if (!previous_actual) return s;
+  const int n = static_cast<int>(model.machine().axes.size());
+  for (int a = 0; a < n; ++a) {
+    const int p = model.layout().reversal_of(a);
+    if (p < 0) continue;
+    const double width = model.values()[static_cast<std::size_t>(p)];
+    s.reversal[static_cast<std::size_t>(a)] =
+        dead_band_actual<double>((*previous_actual)[a], command[a], width) - command[a];
+  }
+  return s;
+}
+
+ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+                             const AxisPosition& nominal_guess, const ActualIkOptions& o) {
+  const Machine& m = model.machine();
+  const int n = 3 + m.rotary_count();
+  const Vec3d u = cl.axis.normalized();
+  Vec3d b1, b2;
+  perpendicular_pair(u, b1, b2);
+  ActualIkOutcome out;
+  AxisPosition q = nominal_guess;
+  for (out.iterations = 0; out.iterations <= o.max_iterations; ++out.iterations) {
+    const RowState<double> state = reversal_state(model, q, o.previous_actual);
+    AxisPositionT<Jet> qj;
+    for (int i = 0; i < 5; ++i) {
+      const double v = i < n ? q[i] : 0.0;
+      qj[i] = i < n ? Jet(v, 5, i) : Jet(v, Eigen::Matrix<double, 5, 1>::Zero());
+    }
+    const ErrorFunctor<double> f(model.layout(), model.values().data(), state, true);
+    const ToolPoseT<Jet> pose = ncpost::tool_pose<Jet>(m, qj, setup, f);
+    Eigen::Matrix<double, 5, 1> r;
+    Eigen::Matrix<double, 5, 5> J;
+    for (int k = 0; k < 3; ++k) {
+      r[k] = pose.tip_mm[k].value() - cl.tip_mm[k];
+      J.row(k) = pose.tip_mm[k].derivatives().transpose();
+    }
+    const Jet p1 = pose.axis.dot(b1.cast<Jet>()), p2 = pose.axis.dot(b2.cast<Jet>());
+    r[3] = p1.value();
+    r[4] = p2.value();
+    J.row(3) = p1.derivatives().transpose();
+    J.row(4) = p2.derivatives().transpose();
+    Vec3d axis;
+    for (int k = 0; k < 3; ++k) axis[k] = pose.axis[k].value();
+    out.tip_error_mm = r.head<3>().norm();
+    out.axis_error_rad = std::atan2(axis.cross(u).norm(), axis.dot(u));
+    if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
+      out.position = q;
+      out.actual = q;
+      for (int a = 0; a < n; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
+      return out;
+    }
+    // a three-axis machine solves the tip only
+    const Eigen::MatrixXd A = n == 5 ? Eigen::MatrixXd(J) : Eigen::MatrixXd(J.topLeftCorner(3, n));
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-9);
+    const Eigen::VectorXd rr = n == 5 ? Eigen::VectorXd(r) : Eigen::VectorXd(r.head(3));
+    const Eigen::VectorXd step = -svd.solve(rr);
+    for (int i = 0; i < n; ++i) q[i] += step[i];
+  }
+  out.message = fmt::format("no convergence on the actual machine after {} iterations (tip {:.3g} mm, axis {:.3g} rad)",
+                            o.max_iterations, out.tip_error_mm, out.axis_error_rad);
+  return out;
+}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,250 @@
+#include "ncpost/compensation/identify.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/compensation/residuals.hpp"
+
+namespace ncpost::comp {
+namespace {
+
+double rho(Loss loss, double r, double k) {
+  const double a = std::abs(r);
+  switch (loss) {
+    case Loss::squared: return 0.5 * r * r;
+    case Loss::huber: return a <= k ? 0.5 * r * r : k * a - 0.5 * k * k;
+    case Loss::cauchy: return 0.5 * k * k * std::log1p((r / k) * (r / k));
+  }
+  return 0.5 * r * r;
+}
+
+double weight(Loss loss, double r, double k) {
+  const double a = std::abs(r);
+  switch (loss) {
+    case Loss::squared: return 1.0;
+    case Loss::huber: return a <= k ? 1.0 : k / a;
+    case Loss::cauchy: return 1.0 / (1.0 + (r / k) * (r / k));
+  }
+  return 1.0;
+}
+
+double cost_of(const Eigen::VectorXd& r, Loss loss, double k) {
+  double c = 0.0;
+  for (Eigen::Index i = 0; i < r.size(); ++i) c += rho(loss, r[i], k);
+  return c;
+}
+
+void stats(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
+  rms_um = r.size() ? 1e3 * std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
+  max_um = r.size() ? 1e3 * r.cwiseAbs().maxCoeff() : 0.0;
+}
+
+char letter_of(int component) { return "XYZABC"[component]; }
+
+/// A plausible size of a parameter (identifiability.hpp): 10 µm, 50 µrad, over 300 mm of travel
+/// for polynomial terms, over an hour for drift rates.
+double typical_size(const Machine& m, const ParameterSpec& s) {
+  const double base = s.is_angle() ? 5e-5 : 0.01;
+  switch (s.kind) {
+    case ParameterKind::polynomial: return base / std::pow(300.0, s.order);
+    case ParameterKind::reversal:
+      return m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary() ? 5e-5 : 0.01;
+    case ParameterKind::drift:
+      switch (s.drift) {
+        case DriftBasis::linear: return 0.01 / 3600.0;
+        case DriftBasis::quadratic: return 0.01 / (3600.0 * 3600.0);
+        case DriftBasis::exponential: return 0.01;
+        case DriftBasis::time_constant: return 300.0;
+      }
+      return 0.01;
+    default: return base;
+  }
+}
+
+}  // namespace
+
+std::string IdentifyOptions::validate() const {
+  if (!(loss_scale_um > 0.0)) return "the loss scale must be positive";
+  if (max_iterations < 1) return "max_iterations must be at least 1";
+  if (!(rank_tolerance > 0.0 && rank_tolerance < 1.0)) return "rank_tolerance must be in (0, 1)";
+  return {};
+}
+
+std::vector<std::string> basic_parameters(const Machine& m) {
+  std::vector<std::string> names, zeros;
+  for (int k = 0; k < m.rotary_count(); ++k) {
+    const Axis& a = m.rotary(k);
+    for (int c = 0; c < 6; ++c) {
+      Vec3d e = Vec3d::Zero();
+      e[c % 3] = 1.0;
+      const std::string n = fmt::format("E{}0{}", letter_of(c), a.letter);
+      const bool along = std::abs(e.dot(a.direction)) > 0.999;
+      if (c < 3 && !along) names.push_back(n);
+      if (c >= 3) (along ? zeros : names).push_back(n);
+    }
+  }
+  // offsets and tilts axis by axis, then the zero errors
+  names.insert(names.end(), zeros.begin(), zeros.end());
+  return names;
+}
+
+IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& sets,
+                        const std::vector<std::string>& candidates, const IdentifyOptions& o) {
+  if (const std::string why = o.validate(); !why.empty()) throw std::invalid_argument(why);
+  IdentifyResult res;
+  res.candidates = candidates;
+  std::vector<std::string> names = candidates;
+  for (const auto& n : o.fixed.names())
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  std::vector<double> values(names.size(), 0.0);
+  for (std::size_t i = 0; i < names.size(); ++i) values[i] = o.fixed.value_or(names[i], 0.0);
+  std::vector<int> free;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (!o.fixed.contains(candidates[i])) free.push_back(static_cast<int>(i));
+
+  const Eigen::VectorXd r0 = prob.residuals(values);
+  res.nominal = prob.predictions(values);
+  stats(r0, res.rms_nominal_um, res.max_nominal_um);
+  const Eigen::Index m_count = r0.size();
+
+  // 1. identifiability at the prior
+  Eigen::VectorXd typical(static_cast<Eigen::Index>(free.size()));
+  for (std::size_t i = 0; i < free.size(); ++i) typical[static_cast<Eigen::Index>(i)] = typical_size(m, prob.layout.spec(free[i]));
+  const RankAnalysis prior_rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance, typical);
+  std::vector<int> kept;
+  for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
+
+  // 2. Levenberg–Marquardt on the kept parameters
+  const double k = o.loss_scale_um * 1e-3;
+  Eigen::VectorXd r = r0;
+  double cost = cost_of(r, o.loss, k);
+  double lambda = 1e-3;
+  const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
+  bool converged = n == 0;
+  for (res.iterations = 0; !converged && res.iterations < o.max_iterations; ++res.iterations) {
+    const Eigen::MatrixXd J = prob.jacobian(values, kept);
+    Eigen::VectorXd w(m_count);
+    for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
+    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
+    const Eigen::VectorXd g = J.transpose() * w.asDiagonal() * r;
+    Eigen::VectorXd d = A.diagonal();
+    const double floor = 1e-12 * std::max(1e-300, d.maxCoeff());
+    for (Eigen::Index i = 0; i < n; ++i) d[i] = std::max(d[i], floor);
+    bool accepted = false;
+    while (lambda < 1e16) {
+      Eigen::MatrixXd M = A;
+      M.diagonal() += lambda * d;
+      const Eigen::VectorXd step = -M.ldlt().solve(g);
+      std::vector<double> trial = values;
+      for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])] += step[i];
+      const Eigen::VectorXd rt = prob.residuals(trial);
+      const double ct = cost_of(rt, o.loss, k);
+      if (std::isfinite(ct) && ct <= cost) {
+        const double scaled_step = (step.array() * d.array().sqrt()).matrix().norm();
+        const double decrease = cost - ct;
+        values = trial;
+        r = rt;
+        cost = ct;
+        lambda = std::max(lambda / 10.0, 1e-12);
+        accepted = true;
+        if (decrease <= 1e-12 * cost + 1e-30 || scaled_step <= 1e-10 * std::sqrt(2.0 * cost + 1e-30)) converged = true;
+        break;
+      }
+      lambda *= 10.0;
+    }
+    if (!accepted) {
+      // no decrease possible: at a minimum if the gradient is negligible
+      converged = (g.array() / d.array().sqrt()).matrix().norm() <= 1e-6 * std::sqrt(2.0 * cost + 1e-30) + 1e-15;
+      break;
+    }
+  }
+  res.converged = converged;
+  res.message = converged ? fmt::format("converged in {} iterations", res.iterations)
+                          : fmt::format("did not converge in {} iterations", res.iterations);
+
+  // 3. results, uncertainty, identifiability at the solution
+  const Eigen::MatrixXd Jfree = prob.jacobian(values, free);
+  res.rank = analyse_rank(Jfree, o.rank_tolerance, typical);
+  {
+    const Eigen::MatrixXd J = prob.jacobian(values, kept);
+    Eigen::VectorXd w(m_count);
+    for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
+    const double dof = std::max<double>(1.0, double(m_count - n));
+    const double s2 = (w.array() * r.array().square()).sum() / dof;
+    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
+    const Eigen::MatrixXd cov = s2 * A.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::string& name = names[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])];
+      res.parameters.set(name, values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
+      res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
+    }
+  }
+  for (const auto& f : o.fixed.names()) res.parameters.set(f, o.fixed.value_or(f, 0.0));
+
+  Identifiability& id = res.identifiability;
+  id.rank = res.rank.rank;
+  id.parameters = static_cast<int>(free.size());
+  for (std::size_t p = 0; p < prior_rank.pinned.size(); ++p) {
+    const int col = prior_rank.pinned[p];
+    const std::string& pname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])];
+    id.pinned.push_back(pname);
+    const Eigen::VectorXd& v = prior_rank.null_vectors[p];
+    NullDirection dir;
+    for (Eigen::Index c = 0; c < v.size(); ++c)
+      if (std::abs(v[c]) > 1e-12) dir.emplace_back(names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])], v[c]);
+    id.null_space.push_back(dir);
+    // fitted kept value = true value + coefficient · (true value of the pinned one − prior)
+    std::string text;
+    const double up = v[col] / prior_rank.column_norms[col];
+    for (Eigen::Index c = 0; c < v.size(); ++c) {
+      if (c == col || std::abs(v[c]) < 0.05 || prior_rank.column_norms[c] <= 0.0) continue;
+      const double coef = -(v[c] / prior_rank.column_norms[c]) / up;
+      const std::string& kname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])];
+      text += fmt::format("{}{} stands for {} {} {:.6g}·{}", text.empty() ? "" : "; ", kname, kname,
+                          coef < 0 ? "-" : "+", std::abs(coef), pname);
+    }
+    if (text.empty()) text = pname + " has no effect on these data";
+    id.combinations.push_back(fmt::format("{} pinned at {:g} ({})", pname, values[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])], text));
+  }
+
+  res.fitted = prob.predictions(values);
+  stats(r, res.rms_after_um, res.max_after_um);
+  Eigen::Index at = 0;
+  for (const auto& s : sets) {
+    FileResidual f;
+    f.file = s.file;
+    f.type = s.type;
+    const Eigen::Index len = static_cast<Eigen::Index>(s.rows.size()) * s.values_per_row();
+    f.values = static_cast<std::size_t>(len);
+    stats(r0.segment(at, len), f.rms_nominal_um, f.max_nominal_um);
+    stats(r.segment(at, len), f.rms_after_um, f.max_after_um);
+    res.files.push_back(f);
+    at += len;
+  }
+  return res;
+}
+
+ModelFile to_model_file(const Machine& m, const IdentifyResult& r) {
+  ModelFile f;
+  f.machine = m.name;
+  f.parameters = r.parameters;
+  f.uncertainty = r.uncertainty;
+  f.identifiability = r.identifiability;
+  FitSummary s;
+  s.rms_before_um = r.rms_after_um;  // basic model = final model until residual analysis adds effects
+  s.max_before_um = r.max_after_um;
+  s.rms_after_um = r.rms_after_um;
+  s.max_after_um = r.max_after_um;
+  s.rms_nominal_um = r.rms_nominal_um;
+  s.max_nominal_um = r.max_nominal_um;
+  f.fit = s;
+  return f;
+}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,8 @@
+#include "ncpost/compensation/machine_model.hpp"
+
+namespace ncpost::comp {
+
+MachineModel::MachineModel(const Machine& machine, const ErrorParameters& parameters)
+    : machine_(machine), layout_(machine, parameters.names()), values_(parameters.values()) {}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,260 @@
+#include "ncpost/compensation/measurement_csv.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace ncpost::comp {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s) {
+    if (c == sep) {
+      out.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(trim(cur));
+  return out;
+}
+
+struct Context {
+  const std::string& file;
+  int line;
+  const std::string& text;
+  [[noreturn]] void fail(const std::string& what, int column = 0) const {
+    throw InputError({file, line, column}, what, text);
+  }
+};
+
+double number(const std::string& field, const Context& where, const std::string& what) {
+  double v = 0.0;
+  const char* b = field.data();
+  const char* e = field.data() + field.size();
+  if (!field.empty() && *b == '+') ++b;
+  auto [ptr, ec] = std::from_chars(b, e, v);
+  if (field.empty() || ec != std::errc() || ptr != e)
+    where.fail(fmt::format("expected a number for {}, found '{}'", what, field));
+  if (!std::isfinite(v)) where.fail(fmt::format("{} is not finite ('{}')", what, field));
+  return v;
+}
+
+Vec3d vector3(const std::string& value, const Context& where, const std::string& key) {
+  const auto parts = split(value, ',');
+  if (parts.size() != 3) where.fail(fmt::format("expected three comma-separated numbers (mm) for '{}'", key));
+  return {number(parts[0], where, key), number(parts[1], where, key), number(parts[2], where, key)};
+}
+
+std::string format_vec(const Vec3d& v) { return fmt::format("{:.4f}, {:.4f}, {:.4f}", v.x(), v.y(), v.z()); }
+
+}  // namespace
+
+MeasurementSet parse_measurement_csv(const std::string& text, const std::string& file_name, const Machine& m,
+                                     const CsvReadOptions& options) {
+  MeasurementSet set;
+  set.file = file_name;
+  std::istringstream in(text);
+  std::string raw;
+  int line_no = 0;
+  std::vector<int> meta_lines;
+  std::vector<std::string> header;
+  int header_line = 0;
+  std::vector<int> column_of_axis(m.axes.size(), -1);
+  int t_col = -1, run_col = -1;
+  std::vector<int> value_cols;
+
+  auto key_line = [&](const std::string& key) {
+    for (std::size_t i = 0; i < set.metadata.size(); ++i)
+      if (set.metadata[i].first == key) return meta_lines[i];
+    return 0;
+  };
+  auto require = [&](const std::string& key) -> std::string {
+    const std::string v = set.meta(key);
+    if (v.empty()) {
+      const int at = header_line > 0 ? header_line : line_no;
+      throw InputError({file_name, at, 0}, fmt::format("missing required key '# {}:' for a {} file", key, to_string(set.type)));
+    }
+    return v;
+  };
+
+  while (std::getline(in, raw)) {
+    ++line_no;
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    const std::string line = trim(raw);
+    const Context where{file_name, line_no, raw};
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      if (!header.empty()) continue;  // a comment among the rows
+      const std::string body = trim(line.substr(1));
+      const auto colon = body.find(':');
+      if (colon == std::string::npos) continue;  // free comment
+      set.metadata.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
+      meta_lines.push_back(line_no);
+      continue;
+    }
+    if (header.empty()) {
+      header_line = line_no;
+      header = split(line, ',');
+      const std::string type = set.meta("type");
+      if (type.empty()) where.fail("missing '# type:' line before the header (ballbar, sphere or laser)");
+      if (type == "ballbar") set.type = MeasurementType::ballbar;
+      else if (type == "sphere") set.type = MeasurementType::sphere;
+      else if (type == "laser") set.type = MeasurementType::laser;
+      else throw InputError({file_name, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
+      // Keys of the type.
+      const Context kw{file_name, 0, raw};
+      auto at_key = [&](const std::string& key) { return Context{file_name, key_line(key), raw}; };
+      (void)kw;
+      switch (set.type) {
+        case MeasurementType::ballbar:
+          set.table_ball_mm = vector3(require("table_ball"), at_key("table_ball"), "table_ball");
+          set.tool_ball_mm = vector3(require("tool_ball"), at_key("tool_ball"), "tool_ball");
+          set.bar_length_mm = number(require("bar_length"), at_key("bar_length"), "bar_length");
+          break;
+        case MeasurementType::sphere: set.sphere_mm = vector3(require("sphere"), at_key("sphere"), "sphere"); break;
+        case MeasurementType::laser: {
+          const std::string c = require("component");
+          if (c.size() != 1 || (c[0] != 'X' && c[0] != 'Y' && c[0] != 'Z'))
+            throw InputError({file_name, key_line("component"), 0}, fmt::format("component must be X, Y or Z, found '{}'", c));
+          set.component = c[0];
+          set.tool_point_mm = vector3(require("tool_point"), at_key("tool_point"), "tool_point");
+          bool head = false;
+          for (const auto& a : m.axes) head = head || (a.is_rotary() && a.side == Side::tool);
+          if (head) require("tool_length");
+          break;
+        }
+      }
+      if (!set.meta("tool_length").empty())
+        set.tool_length_mm = number(set.meta("tool_length"), at_key("tool_length"), "tool_length");
+      // Columns.
+      for (std::size_t c = 0; c < header.size(); ++c) {
+        const std::string& h = header[c];
+        if (h == "t") t_col = static_cast<int>(c);
+        else if (h == "run") run_col = static_cast<int>(c);
+        else if (h.size() == 1 && m.index_of(h[0]) >= 0) {
+          if (column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] >= 0) where.fail("column " + h + " given twice");
+          column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] = static_cast<int>(c);
+        }
+      }
+      if (t_col < 0) where.fail("missing column 't' (time, s)");
+      if (set.type == MeasurementType::laser && run_col < 0) where.fail("missing column 'run' of a laser file");
+      for (std::size_t a = 0; a < m.axes.size(); ++a) {
+        const bool optional = set.type == MeasurementType::laser && m.axes[a].is_rotary();
+        if (column_of_axis[a] < 0 && !optional)
+          where.fail(fmt::format("missing column {} (axis of machine '{}')", m.axes[a].letter, m.name));
+      }
+      int found = 0;
+      for (const std::string& v : set.value_columns()) {
+        int col = -1;
+        for (std::size_t c = 0; c < header.size(); ++c)
+          if (header[c] == v) col = static_cast<int>(c);
+        value_cols.push_back(col);
+        found += col >= 0;
+      }
+      if (found == 0 && options.allow_plan) {
+        set.has_values = false;
+      } else if (found != static_cast<int>(value_cols.size())) {
+        std::string names;
+        for (const auto& v : set.value_columns()) names += (names.empty() ? "" : ", ") + v;
+        where.fail(fmt::format("missing value column(s) of a {} file: expected {}", to_string(set.type), names));
+      }
+      continue;
+    }
+    const auto fields = split(raw, ',');
+    if (fields.size() != header.size())
+      where.fail(fmt::format("expected {} fields as in the header (line {}), found {}", header.size(), header_line,
+                             fields.size()));
+    MeasurementRow row;
+    row.line = line_no;
+    row.time_s = number(fields[static_cast<std::size_t>(t_col)], where, "t");
+    for (std::size_t a = 0; a < m.axes.size(); ++a) {
+      if (column_of_axis[a] < 0) continue;
+      const double v = number(fields[static_cast<std::size_t>(column_of_axis[a])], where, std::string(1, m.axes[a].letter));
+      row.command[static_cast<int>(a)] = m.axes[a].is_rotary() ? deg_to_rad(v) : v;
+    }
+    if (run_col >= 0) {
+      const double r = number(fields[static_cast<std::size_t>(run_col)], where, "run");
+      if (r != std::floor(r)) where.fail("run must be an integer");
+      row.run = static_cast<int>(r);
+    }
+    if (set.has_values)
+      for (std::size_t v = 0; v < value_cols.size(); ++v)
+        row.value[static_cast<Eigen::Index>(v)] = number(fields[static_cast<std::size_t>(value_cols[v])], where, header[static_cast<std::size_t>(value_cols[v])]);
+    set.rows.push_back(row);
+  }
+  if (header.empty()) throw InputError({file_name, line_no, 0}, "no header line (expected e.g. 't,X,Y,Z,A,C,L')");
+  return set;
+}
+
+MeasurementSet read_measurement_csv(const std::string& path, const Machine& m, const CsvReadOptions& options) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError({path, 0, 0}, "cannot open the file");
+  std::ostringstream s;
+  s << f.rdbuf();
+  return parse_measurement_csv(s.str(), path, m, options);
+}
+
+std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) {
+  std::string out;
+  out += fmt::format("# type: {}\n", to_string(set.type));
+  auto known = [&](const std::string& key) {
+    if (key == "type" || key == "tool_length") return true;
+    switch (set.type) {
+      case MeasurementType::ballbar: return key == "table_ball" || key == "tool_ball" || key == "bar_length";
+      case MeasurementType::sphere: return key == "sphere";
+      case MeasurementType::laser: return key == "component" || key == "tool_point";
+    }
+    return false;
+  };
+  switch (set.type) {
+    case MeasurementType::ballbar:
+      out += fmt::format("# table_ball: {}\n# tool_ball: {}\n# bar_length: {:.4f}\n", format_vec(set.table_ball_mm),
+                         format_vec(set.tool_ball_mm), set.bar_length_mm);
+      break;
+    case MeasurementType::sphere: out += fmt::format("# sphere: {}\n", format_vec(set.sphere_mm)); break;
+    case MeasurementType::laser:
+      out += fmt::format("# component: {}\n# tool_point: {}\n", set.component, format_vec(set.tool_point_mm));
+      break;
+  }
+  if (set.tool_length_mm != 0.0 || set.type == MeasurementType::laser || !set.meta("tool_length").empty())
+    out += fmt::format("# tool_length: {:.4f}\n", set.tool_length_mm);
+  for (const auto& [k, v] : set.metadata)
+    if (!known(k)) out += fmt::format("# {}: {}\n", k, v);
+  out += "t";
+  if (set.type == MeasurementType::laser) out += ",run";
+  for (const auto& a : m.axes) out += fmt::format(",{}", a.letter);
+  if (set.has_values)
+    for (const auto& v : set.value_columns()) out += "," + v;
+  out += "\n";
+  for (const auto& r : set.rows) {
+    out += fmt::format("{:.2f}", r.time_s);
+    if (set.type == MeasurementType::laser) out += fmt::format(",{}", r.run);
+    for (std::size_t a = 0; a < m.axes.size(); ++a) {
+      const double v = r.command[static_cast<int>(a)];
+      out += fmt::format(",{:.5f}", m.axes[a].is_rotary() ? rad_to_deg(v) : v);
+    }
+    if (set.has_values) {
+      if (set.type == MeasurementType::laser) out += fmt::format(",{:.4f}", r.value[0]);
+      else
+        for (int v = 0; v < set.values_per_row(); ++v) out += fmt::format(",{:.6f}", r.value[v]);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,11 @@
+#include "ncpost/compensation/nonlinear_compensation.hpp"
+
+namespace ncpost::nonlinear {
+
+std::optional<Method> method_named(const std::string& name) {
+  if (name == "adaptive") return Method::adaptive;
+  if (name == "harmonic") return Method::harmonic;
+  return std::nullopt;
+}
+
+}  // namespace ncpost::nonlinear

@@ -1,0 +1,131 @@
+#include "ncpost/compensation/parameter_name.hpp"
+
+#include <cmath>
+#include <regex>
+
+namespace ncpost::comp {
+namespace {
+
+int component_of(char c) {
+  switch (c) {
+    case 'X': return 0;
+    case 'Y': return 1;
+    case 'Z': return 2;
+    case 'A': return 3;
+    case 'B': return 4;
+    case 'C': return 5;
+    default: return -1;
+  }
+}
+
+ParseResult refuse(std::string why) { return {std::nullopt, std::move(why)}; }
+
+ParseResult accept(ParameterSpec s) { return {std::move(s), {}}; }
+
+}  // namespace
+
+bool ParameterSpec::is_angle() const {
+  switch (kind) {
+    case ParameterKind::location:
+    case ParameterKind::harmonic:
+    case ParameterKind::polynomial: return component >= 3;
+    case ParameterKind::squareness: return true;
+    case ParameterKind::reversal: return false;  // depends on the axis; see is_rotary of the axis
+    default: return false;
+  }
+}
+
+ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
+  static const std::regex location(R"(E([XYZABC])0([XYZABC]))");
+  static const std::regex harmonic(R"(E([XYZABC])([ABC]):h([1-4]):(cos|sin))");
+  static const std::regex polynomial(R"(E([XYZABC])([XYZ]):p([1-3]))");
+  static const std::regex reversal(R"(reversal:([XYZABC]))");
+  static const std::regex drift(R"(drift:([XYZ]):t:(lin|quad|exp|tau))");
+  static const std::regex sphere(R"(sphere:position:([xyz]))");
+  std::smatch g;
+  ParameterSpec s;
+  s.name = name;
+  auto axis = [&](char letter) { return m.index_of(letter); };
+
+  if (std::regex_match(name, g, location)) {
+    const char comp = g[1].str()[0];
+    const char letter = g[2].str()[0];
+    s.axis_index = axis(letter);
+    if (s.axis_index < 0) return refuse("the machine has no axis " + std::string(1, letter));
+    s.component = component_of(comp);
+    const Axis& a = m.axes[static_cast<std::size_t>(s.axis_index)];
+    if (a.is_rotary()) {
+      s.kind = ParameterKind::location;
+      if (s.component < 3) {
+        Vec3d e = Vec3d::Zero();
+        e[s.component] = 1.0;
+        if (std::abs(e.dot(a.direction)) > 0.999)
+          return refuse("an offset of axis " + std::string(1, letter) + " along its own line has no effect");
+      }
+      return accept(s);
+    }
+    if (name == "EC0Y" || name == "EB0Z" || name == "EA0Z") {
+      s.kind = ParameterKind::squareness;
+      return accept(s);
+    }
+    return refuse("the squareness errors are EC0Y, EB0Z and EA0Z (conventions.md)");
+  }
+  if (std::regex_match(name, g, harmonic)) {
+    s.kind = ParameterKind::harmonic;
+    s.axis_index = axis(g[2].str()[0]);
+    if (s.axis_index < 0) return refuse("the machine has no axis " + g[2].str());
+    if (!m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary())
+      return refuse("harmonic terms belong to rotary axes");
+    s.component = component_of(g[1].str()[0]);
+    s.order = std::stoi(g[3].str());
+    s.sine = g[4].str() == "sin";
+    return accept(s);
+  }
+  if (std::regex_match(name, g, polynomial)) {
+    s.kind = ParameterKind::polynomial;
+    s.axis_index = axis(g[2].str()[0]);
+    if (s.axis_index < 0) return refuse("the machine has no axis " + g[2].str());
+    s.component = component_of(g[1].str()[0]);
+    s.order = std::stoi(g[3].str());
+    return accept(s);
+  }
+  if (std::regex_match(name, g, reversal)) {
+    s.kind = ParameterKind::reversal;
+    s.axis_index = axis(g[1].str()[0]);
+    if (s.axis_index < 0) return refuse("the machine has no axis " + g[1].str());
+    return accept(s);
+  }
+  if (std::regex_match(name, g, drift)) {
+    s.kind = ParameterKind::drift;
+    s.component = component_of(g[1].str()[0]);
+    const std::string b = g[2].str();
+    s.drift = b == "lin"    ? DriftBasis::linear
+              : b == "quad" ? DriftBasis::quadratic
+              : b == "exp"  ? DriftBasis::exponential
+                            : DriftBasis::time_constant;
+    return accept(s);
+  }
+  if (name == "ballbar:length") {
+    s.kind = ParameterKind::ballbar_length;
+    return accept(s);
+  }
+  if (std::regex_match(name, g, sphere)) {
+    s.kind = ParameterKind::sphere_position;
+    s.component = g[1].str()[0] - 'x';
+    return accept(s);
+  }
+  return refuse("not an error parameter name of conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
+                "reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+}
+
+std::string effect_of(const std::string& name) {
+  static const std::regex harmonic(R"((E[XYZABC][ABC]:h[1-4]):(cos|sin))");
+  static const std::regex drift(R"((drift:[XYZ]:t):.*)");
+  std::smatch g;
+  if (std::regex_match(name, g, harmonic)) return g[1].str();
+  if (std::regex_match(name, g, drift)) return g[1].str();
+  if (name.rfind("sphere:position", 0) == 0) return "sphere:position";
+  return name;
+}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,63 @@
+#pragma once
+// Streams an NC program in a dialect: one motion per block, absolute (G90), metric (G21),
+// modal words written only when they change. Values arrive in output units (mm, deg) and are
+// rounded to the dialect's decimals here; `rounded()` gives the values the control will see.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/dialect.hpp"
+
+namespace ncpost {
+
+/// One motion block in output units: axis words in `letters` order (mm, deg).
+struct NcMotion {
+  bool rapid = false;
+  std::array<double, 5> values{};  ///< X Y Z then rotary axes
+  enum class FeedMode { per_minute, inverse_time } feed_mode = FeedMode::per_minute;
+  double feed = 0.0;               ///< mm/min, or 1/min under inverse time
+};
+
+class NcWriter {
+ public:
+  /// `letters`: the axis words, e.g. "XYZAC".
+  NcWriter(AtomicFile& out, Dialect dialect, std::string letters);
+
+  void begin_program(const std::string& name, const std::vector<std::string>& header_comments);
+  void comment(const std::string& text);
+  /// A raw block (e.g. "M3 S12000"), numbered if the dialect numbers lines.
+  void block(const std::string& words);
+  /// Writes a motion block; false (nothing written) if no axis word changes.
+  bool motion(const NcMotion& m);
+  void rtcp(bool on);
+  void end_program();
+  /// Flushes buffered output into the file (called on end_program and when the buffer is large).
+  void flush();
+
+  /// The value as the control will read it (rounded to the dialect's decimals).
+  double rounded(int axis, double value) const;
+  std::size_t blocks_written() const { return blocks_; }
+  const Dialect& dialect() const { return dialect_; }
+
+ private:
+  void start_line();
+  void end_line();
+
+  AtomicFile& out_;
+  Dialect dialect_;
+  std::string letters_;
+  fmt::memory_buffer buf_;
+  std::array<std::optional<double>, 5> last_{};
+  std::optional<int> last_motion_;  ///< 0 or 1
+  std::optional<NcMotion::FeedMode> last_feed_mode_;
+  std::optional<double> last_feed_;
+  std::size_t blocks_ = 0;
+  long line_number_ = 0;
+  std::string program_name_;
+};
+
+}  // namespace ncpost

@@ -1,0 +1,54 @@
+#pragma once
+// The post-processor: CL records in, NC blocks out (spec/cli.md `ncpost post`).
+//
+// Every CL motion becomes one block (circles and cycles are expanded into motions first), unless
+// a subdivider is given (`--tolerance`: the nonlinear error of each block is bounded). Commands
+// come from a MotionSolver (nominal or actual machine); without RTCP the program holds machine
+// axis positions (X Y Z of the TCP in M, rotary angles in degrees); with RTCP it holds the tool
+// tip in W and the rotary angles, and the control does the kinematics.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/motion_solver.hpp"
+#include "ncpost/postproc/nc_writer.hpp"
+#include "ncpost/postproc/verify.hpp"
+
+namespace ncpost {
+
+/// One output point of a block split to meet a tolerance: CL point and its commands.
+struct SolvedPoint {
+  ClPoint cl;
+  AxisPosition q;
+};
+
+/// Splits the block (from, to) into points ending with `to`'s; given by `--tolerance`.
+using Subdivider = std::function<std::vector<SolvedPoint>(const SolvedPoint& from, const SolvedPoint& to)>;
+
+struct PostOptions {
+  bool rtcp = false;
+  enum class FeedMode { automatic, per_minute, inverse_time } feed_mode = FeedMode::automatic;
+  double arc_tolerance_mm = 0.001;      ///< chord error of expanded CIRCLE records
+  double default_feed_mm_min = 1000.0;  ///< used (with a notice) before the first FEDRAT
+  Subdivider subdivide;                 ///< empty: one block per CL motion
+  std::string program_name;
+  std::vector<std::string> header_comments;
+  std::function<void(std::size_t motions)> progress;  ///< called every 4096 motions
+  bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
+};
+
+struct PostSummary {
+  std::size_t motions_in = 0;
+  std::size_t blocks_out = 0;
+  std::vector<std::string> notices;
+  VerifyReport verify;
+};
+
+/// Posts the whole input. Throws InputError (bad input) or Infeasible (a CL point with no
+/// admissible solution; the message names the file and line).
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
+                         NcWriter& writer, const PostOptions& options);
+
+}  // namespace ncpost

@@ -1,0 +1,155 @@
+#include "ncpost/postproc/nc_writer.hpp"
+
+#include <cmath>
+
+namespace ncpost {
+namespace {
+
+std::string sanitize_comment(std::string text) {
+  for (char& c : text)
+    if (c == '(' || c == ')' || c == '\n' || c == '\r' || c == ';') c = ' ';
+  return text;
+}
+
+}  // namespace
+
+NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
+    : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)) {}
+
+double NcWriter::rounded(int axis, double value) const {
+  const int decimals = axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals;
+  const double scale = std::pow(10.0, decimals);
+  const double r = std::round(value * scale) / scale;
+  return r == 0.0 ? 0.0 : r;  // no "-0"
+}
+
+void NcWriter::start_line() {
+  if (dialect_.line_numbers) {
+    if (dialect_.klartext) fmt::format_to(std::back_inserter(buf_), "{} ", line_number_++);
+    else fmt::format_to(std::back_inserter(buf_), "N{} ", (++line_number_) * 10);
+  }
+}
+
+void NcWriter::end_line() {
+  buf_.push_back('\n');
+  if (buf_.size() > (1 << 16)) flush();
+}
+
+void NcWriter::flush() {
+  out_.write(std::string_view(buf_.data(), buf_.size()));
+  buf_.clear();
+}
+
+void NcWriter::comment(const std::string& text) {
+  if (dialect_.klartext) start_line();
+  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), "; {}", text);
+  else fmt::format_to(std::back_inserter(buf_), "({})", sanitize_comment(text));
+  end_line();
+}
+
+void NcWriter::block(const std::string& words) {
+  start_line();
+  buf_.append(words);
+  end_line();
+}
+
+void NcWriter::begin_program(const std::string& name, const std::vector<std::string>& header_comments) {
+  program_name_ = name.empty() ? "NCPOST" : name;
+  if (dialect_.klartext) {
+    block(fmt::format("BEGIN PGM {} MM", program_name_));
+    for (const auto& c : header_comments) comment(c);
+    return;
+  }
+  if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
+  if (dialect_.name == "fanuc" || dialect_.name == "haas")
+    fmt::format_to(std::back_inserter(buf_), "O0001 ({})\n", sanitize_comment(program_name_));
+  for (const auto& c : header_comments) comment(c);
+  block(dialect_.name == "sinumerik" ? "G90 G71 G94 G17" : "G90 G21 G94 G17 G40 G49 G80");
+}
+
+void NcWriter::rtcp(bool on) {
+  const std::string& w = on ? dialect_.rtcp_on : dialect_.rtcp_off;
+  if (!w.empty()) block(w);
+}
+
+bool NcWriter::motion(const NcMotion& m) {
+  const std::size_t line_start = buf_.size();
+  const long number_before = line_number_;
+  const auto saved_motion = last_motion_;
+  const auto saved_mode = last_feed_mode_;
+  const auto saved_feed = last_feed_;
+  int words = 0;
+  start_line();
+  auto out = std::back_inserter(buf_);
+  if (dialect_.klartext) {
+    buf_.append(std::string_view("L"));
+    for (std::size_t i = 0; i < letters_.size(); ++i) {
+      const double v = rounded(static_cast<int>(i), m.values[i]);
+      if (last_[i] && *last_[i] == v) continue;
+      fmt::format_to(out, " {}{:+.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+      last_[i] = v;
+      ++words;
+    }
+    if (words == 0) {
+      buf_.resize(line_start);
+      line_number_ = number_before;
+      return false;
+    }
+    if (m.rapid) buf_.append(std::string_view(" FMAX"));
+    else fmt::format_to(out, " F{:.0f}", m.feed);
+    end_line();
+    ++blocks_;
+    return true;
+  }
+  const int g = m.rapid ? 0 : 1;
+  std::string prefix;
+  if (!m.rapid && (!last_feed_mode_ || *last_feed_mode_ != m.feed_mode)) {
+    fmt::format_to(out, "{} ", m.feed_mode == NcMotion::FeedMode::inverse_time ? "G93" : "G94");
+    last_feed_mode_ = m.feed_mode;
+    last_feed_.reset();
+  }
+  if (!last_motion_ || *last_motion_ != g) {
+    fmt::format_to(out, "G{}", g);
+    last_motion_ = g;
+  }
+  for (std::size_t i = 0; i < letters_.size(); ++i) {
+    const double v = rounded(static_cast<int>(i), m.values[i]);
+    if (last_[i] && *last_[i] == v) continue;
+    if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
+    fmt::format_to(out, "{}{:.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+    last_[i] = v;
+    ++words;
+  }
+  if (words == 0) {  // the control is already there: no block
+    buf_.resize(line_start);
+    line_number_ = number_before;
+    last_motion_ = saved_motion;
+    last_feed_mode_ = saved_mode;
+    last_feed_ = saved_feed;
+    return false;
+  }
+  if (!m.rapid) {
+    const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
+    if (inverse || !last_feed_ || std::abs(*last_feed_ - m.feed) > 1e-9) {
+      if (inverse) fmt::format_to(out, " F{:.4f}", m.feed);
+      else fmt::format_to(out, " F{:.1f}", m.feed);
+      last_feed_ = m.feed;
+    }
+  }
+  end_line();
+  ++blocks_;
+  return true;
+}
+
+void NcWriter::end_program() {
+  if (dialect_.klartext) {
+    block(dialect_.program_end);
+    block(fmt::format("END PGM {} MM", program_name_));
+  } else {
+    block(dialect_.program_end);
+    if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
+  }
+  flush();
+}
+
+}  // namespace ncpost

@@ -1,0 +1,264 @@
+#include "ncpost/postproc/post.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncpost {
+namespace {
+
+/// Unit vector interpolated on the great circle from a to b (t in [0, 1]).
+Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
+  const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
+  if (angle < 1e-12) return a;
+  return (std::sin((1.0 - t) * angle) / std::sin(angle) * a + std::sin(t * angle) / std::sin(angle) * b).normalized();
+}
+
+class Poster {
+ public:
+  Poster(const std::string& input, const MotionSolver& solver, NcWriter& writer, const PostOptions& options)
+      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()) {}
+
+  PostSummary run(cl::Reader& reader) {
+    writer_.begin_program(options_.program_name, options_.header_comments);
+    while (auto record = reader.next()) {
+      std::visit([this](const auto& r) { on(r); }, *record);
+      for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
+    }
+    if (options_.rtcp && rtcp_on_) writer_.rtcp(false);
+    writer_.end_program();
+    summary_.blocks_out = writer_.blocks_written();
+    return summary_;
+  }
+
+ private:
+  // ---- records ---------------------------------------------------------------------------
+  void on(const cl::Motion& m) {
+    ++summary_.motions_in;
+    if (options_.progress && summary_.motions_in % 4096 == 0) options_.progress(summary_.motions_in);
+    const bool rapid = m.rapid || m.from;
+    if (pending_circle_) {
+      const cl::Circle c = *pending_circle_;
+      pending_circle_.reset();
+      if (have_position_) {
+        move_along_arc(c, m, rapid);
+        return;
+      }
+    }
+    if (cycle_.kind != cl::Cycle::Kind::off && !rapid) {
+      drill(m);
+      return;
+    }
+    move_to(m.point, m.where.line, rapid, m.rotary_rad);
+  }
+
+  void on(const cl::Feed& f) {
+    if (f.per_rev) {
+      if (spindle_rpm_ <= 0.0) {
+        notice(f.where, "feed per revolution before a spindle speed: taken as mm/min");
+        feed_mm_min_ = f.value;
+      } else {
+        feed_mm_min_ = f.value * spindle_rpm_;
+      }
+    } else {
+      feed_mm_min_ = f.value;
+    }
+    feed_given_ = true;
+  }
+
+  void on(const cl::Spindle& s) {
+    if (s.direction == cl::Spindle::Direction::off) {
+      writer_.block("M5");
+      return;
+    }
+    if (s.rpm > 0.0) spindle_rpm_ = s.rpm;
+    writer_.block(fmt::format("S{:.0f} {}", spindle_rpm_, s.direction == cl::Spindle::Direction::ccw ? "M4" : "M3"));
+  }
+
+  void on(const cl::Coolant& c) {
+    if (!c.on) writer_.block("M9");
+    else writer_.block(c.mode == "MIST" ? "M7" : "M8");
+  }
+
+  void on(const cl::ToolChange& t) {
+    if (writer_.dialect().klartext) {
+      writer_.block(fmt::format("TOOL CALL {} Z", t.number));
+    } else {
+      writer_.block(fmt::format("T{} M6", t.number));
+      if (!options_.rtcp && writer_.dialect().name != "sinumerik" && writer_.dialect().name != "linuxcnc")
+        writer_.block(fmt::format("G43 H{}", t.number));
+      else if (!options_.rtcp && writer_.dialect().name == "linuxcnc")
+        writer_.block("G43");
+    }
+  }
+
+  void on(const cl::Circle& c) { pending_circle_ = c; }
+  void on(const cl::Cycle& c) { cycle_ = c; }
+  void on(const cl::Comment& c) {
+    if (!c.text.empty()) writer_.comment(c.text);
+  }
+  void on(const cl::Unsupported& u) { writer_.comment(u.text); }
+  void on(const cl::End&) {}
+
+  // ---- motion ----------------------------------------------------------------------------
+  void notice(cl::Location where, const std::string& what) {
+    summary_.notices.push_back(fmt::format("{}:{}: {}", input_, where.line, what));
+  }
+
+  void move_to(const ClPoint& cl, int line, bool rapid, const std::optional<Eigen::Vector2d>& rotary = std::nullopt) {
+    SolvedPoint next{cl, {}};
+    if (rotary) {
+      next.q = solver_.with_rotary(cl, *rotary);
+    } else {
+      const IkOutcome ik = solver_.solve(cl, previous_.q);
+      if (!ik.ok())
+        throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f})", input_,
+                                     line, ik.failure.message, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(),
+                                     cl.axis.x(), cl.axis.y(), cl.axis.z()));
+      next.q = *ik.position;
+    }
+    if (options_.rtcp && !rtcp_on_) {
+      writer_.rtcp(true);
+      rtcp_on_ = true;
+    }
+    if (!rapid && !feed_given_ && !default_feed_noticed_) {
+      summary_.notices.push_back(fmt::format("{}:{}: feed motion before any FEDRAT: using {:.0f} mm/min", input_, line,
+                                             options_.default_feed_mm_min));
+      default_feed_noticed_ = true;
+    }
+    if (have_position_ && !rapid && options_.subdivide && !options_.rtcp) {
+      SolvedPoint from = previous_;
+      for (const SolvedPoint& p : options_.subdivide(previous_, next)) {
+        emit(from, p, line, rapid);
+        from = p;
+      }
+    } else {
+      emit(previous_, next, line, rapid);
+    }
+    previous_ = next;
+    have_position_ = true;
+  }
+
+  void emit(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid) {
+    NcMotion m;
+    m.rapid = rapid;
+    if (options_.rtcp) {
+      m.values[0] = to.cl.tip_mm.x();
+      m.values[1] = to.cl.tip_mm.y();
+      m.values[2] = to.cl.tip_mm.z();
+    } else {
+      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = to.q.linear_mm[i];
+    }
+    for (int k = 0; k < machine_.rotary_count(); ++k)
+      m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
+    const double feed = feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min;
+    const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
+    const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
+    const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
+                         (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
+    if (inverse) {
+      // time of the block from the tool-tip path length; a pure reorientation runs its rotary
+      // travel at the feed read as deg/min
+      const double length_mm = (to.cl.tip_mm - from.cl.tip_mm).norm();
+      const double minutes = std::max(length_mm, rotary_travel_deg) / feed;
+      m.feed_mode = NcMotion::FeedMode::inverse_time;
+      m.feed = minutes > 0.0 ? 1.0 / minutes : 99999.0;
+    } else {
+      m.feed = feed;
+    }
+    // the control executes the rounded values
+    AxisPosition executed = to.q;
+    for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, to.q.linear_mm[i]);
+    for (int k = 0; k < machine_.rotary_count(); ++k)
+      executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
+    if (!writer_.motion(m)) return;
+    if (options_.verify && have_position_ && !rapid && !options_.rtcp)
+      verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
+    last_executed_ = executed;
+  }
+
+  void move_along_arc(const cl::Circle& c, const cl::Motion& end, bool rapid) {
+    const Vec3d start = previous_.cl.tip_mm;
+    const Vec3d stop = end.point.tip_mm;
+    const Vec3d n = c.axis;
+    const Vec3d r0 = (start - c.center_mm) - (start - c.center_mm).dot(n) * n;
+    const Vec3d r1 = (stop - c.center_mm) - (stop - c.center_mm).dot(n) * n;
+    auto sweep = angle_about(n, r0, r1, 1e-9);
+    if (!sweep || r0.norm() < 1e-9) {
+      move_to(end.point, end.where.line, rapid);
+      return;
+    }
+    double angle = *sweep;
+    if (angle <= 1e-12) angle += 2.0 * kPi;  // counter-clockwise about the circle axis
+    const double radius = r0.norm();
+    const double tol = std::min(options_.arc_tolerance_mm, 0.5 * radius);
+    const double step = 2.0 * std::acos(1.0 - tol / radius);
+    const int n_steps = std::max(1, static_cast<int>(std::ceil(angle / step)));
+    const double along0 = (start - c.center_mm).dot(n), along1 = (stop - c.center_mm).dot(n);
+    const Vec3d axis0 = previous_.cl.axis;
+    for (int i = 1; i <= n_steps; ++i) {
+      const double t = static_cast<double>(i) / n_steps;
+      ClPoint p;
+      p.tip_mm = i == n_steps ? stop
+                              : c.center_mm + rotation_about<double>(n, t * angle) * r0 + (along0 + t * (along1 - along0)) * n;
+      p.axis = slerp(axis0, end.point.axis, t);
+      move_to(p, end.where.line, rapid);
+    }
+  }
+
+  void drill(const cl::Motion& m) {
+    // Canned cycles expanded into explicit moves along the tool axis (valid at any orientation):
+    // rapid to the clearance point, feed to depth (in pecks for DEEP), rapid back.
+    const Vec3d u = m.point.axis;
+    const ClPoint top{m.point.tip_mm + cycle_.clearance_mm * u, u};
+    const ClPoint bottom{m.point.tip_mm - cycle_.depth_mm * u, u};
+    const double saved_feed = feed_mm_min_;
+    const bool saved_given = feed_given_;
+    move_to(top, m.where.line, true);
+    if (cycle_.feed > 0.0) {
+      feed_mm_min_ = cycle_.feed;
+      feed_given_ = true;
+    }
+    if (cycle_.kind == cl::Cycle::Kind::deep && cycle_.step_mm > 0.0) {
+      double reached = 0.0;
+      const double total = cycle_.depth_mm + cycle_.clearance_mm;
+      while (reached + cycle_.step_mm < total) {
+        reached += cycle_.step_mm;
+        move_to({top.tip_mm - reached * u, u}, m.where.line, false);
+        move_to(top, m.where.line, true);
+        move_to({top.tip_mm - (reached - std::min(reached, 0.5)) * u, u}, m.where.line, true);
+      }
+    }
+    move_to(bottom, m.where.line, false);
+    move_to(top, m.where.line, true);
+    feed_mm_min_ = saved_feed;
+    feed_given_ = saved_given;
+  }
+
+  const std::string& input_;
+  const MotionSolver& solver_;
+  NcWriter& writer_;
+  const PostOptions& options_;
+  const Machine& machine_;
+  PostSummary summary_;
+  SolvedPoint previous_{};
+  AxisPosition last_executed_{};
+  bool have_position_ = false;
+  bool rtcp_on_ = false;
+  double feed_mm_min_ = 0.0;
+  bool feed_given_ = false;
+  bool default_feed_noticed_ = false;
+  double spindle_rpm_ = 0.0;
+  std::optional<cl::Circle> pending_circle_;
+  cl::Cycle cycle_;
+};
+
+}  // namespace
+
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
+                         NcWriter& writer, const PostOptions& options) {
+  Poster poster(input_name, solver, writer, options);
+  return poster.run(reader);
+}
+
+}  // namespace ncpost

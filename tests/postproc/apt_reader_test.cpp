@@ -1,0 +1,149 @@
+// The APT reader on the quirks of real CAM files (shared/data/real/README.md) and on bad input.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "ncpost/postproc/apt_reader.hpp"
+#include "test_paths.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+std::vector<cl::Record> read_all(const std::string& text, cl::ReaderOptions o = {}) {
+  std::istringstream in(text);
+  cl::AptReader r(in, "t.cls", o);
+  std::vector<cl::Record> out;
+  while (auto x = r.next()) out.push_back(*x);
+  return out;
+}
+
+template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
+  std::vector<T> out;
+  for (const auto& r : rs)
+    if (auto* p = std::get_if<T>(&r)) out.push_back(*p);
+  return out;
+}
+
+/// The InputError message of reading `text`, or "" if it reads.
+std::string error_of(const std::string& text) {
+  try {
+    read_all(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("numbers as CAM systems write them") {
+  const auto m = only<cl::Motion>(read_all("GOTO/25.,.5,-0.000000,.5773503E+00,.5773503E+00,.5773503E+00\n"));
+  REQUIRE(m.size() == 1);
+  CHECK(m[0].point.tip_mm == Vec3d(25.0, 0.5, 0.0));
+  CHECK(m[0].point.axis.x() == Approx(1.0 / std::sqrt(3.0)).epsilon(1e-6));
+  CHECK(m[0].axis_given);
+}
+
+TEST_CASE("$ continuation may split a number (CATIA)") {
+  const auto m = only<cl::Motion>(read_all("FROM  / -26.370000,   0.000000,  46.745000,  -1.000000,   0.000000,   0$\n.000000\n"));
+  REQUIRE(m.size() == 1);
+  CHECK(m[0].from);
+  CHECK(m[0].point.tip_mm.x() == Approx(-26.37));
+  CHECK(m[0].point.axis == Vec3d(-1, 0, 0));
+}
+
+TEST_CASE("spaces around / and , , CRLF, trailing commas, UNITS and UNIT") {
+  const auto rs = read_all("UNIT/INCHES\r\nGOTO / 1.0 , 2.0 , 3.0,\r\nUNITS / MM\r\nGOTO/1,2,3\r\n");
+  const auto m = only<cl::Motion>(rs);
+  REQUIRE(m.size() == 2);
+  CHECK((m[0].point.tip_mm - Vec3d(25.4, 50.8, 76.2)).norm() < 1e-12);
+  CHECK(m[1].point.tip_mm == Vec3d(1, 2, 3));
+}
+
+TEST_CASE("a 3-value GOTO keeps the last tool axis; RAPID and RAPID/ mark one motion") {
+  const auto m = only<cl::Motion>(read_all("RAPID\nGOTO/0,0,0,0,0.6,0.8\nGOTO/1,1,1\nRAPID/\nGOTO/2,2,2\nGOTO/3,3,3\n"));
+  REQUIRE(m.size() == 4);
+  CHECK(m[0].rapid);
+  CHECK_FALSE(m[1].rapid);
+  CHECK((m[1].point.axis - Vec3d(0, 0.6, 0.8)).norm() < 1e-12);
+  CHECK_FALSE(m[1].axis_given);
+  CHECK(m[2].rapid);
+  CHECK_FALSE(m[3].rapid);
+}
+
+TEST_CASE("FEDRAT in both argument orders and units") {
+  const auto f = only<cl::Feed>(read_all("FEDRAT/MMPM,250\nFEDRAT/ 1000.0,MMPM\nFEDRAT/IPM,10.0000\nFEDRAT/0.1,MMPR\n"));
+  REQUIRE(f.size() == 4);
+  CHECK(f[0].value == 250.0);
+  CHECK(f[1].value == 1000.0);
+  CHECK(f[2].value == Approx(254.0));
+  CHECK(f[3].per_rev);
+}
+
+TEST_CASE("NX: TOOL PATH with a space, listing headers, MSYS as information, END-OF-PATH") {
+  const auto rs = read_all("\nInformation listing created by\tphill\nTOOL PATH/NORM_PART,TOOL,BALL_MILL_1.00\n"
+                           "MSYS/3.0,3.0,0.0,1,0,0,0,1,0\nGOTO/1,2,3\nEND-OF-PATH\n");
+  CHECK(only<cl::Unsupported>(rs).size() == 1);  // the listing header, passed through
+  CHECK(only<cl::Comment>(rs).size() == 2);
+  CHECK(only<cl::End>(rs).size() == 1);
+  const auto m = only<cl::Motion>(rs);
+  REQUIRE(m.size() == 1);
+  CHECK(m[0].point.tip_mm == Vec3d(1, 2, 3));  // MSYS is not applied (NX's posts keep GOTO as is)
+}
+
+TEST_CASE("Creo: CIRCLE over two lines, $$-> comments, CYCLE/DEEP, FINI") {
+  const auto rs = read_all("$$-> CSYS / 1,0,0,0,  $\n  0,1,0,0\nCIRCLE / -16.7, -22.9, -0.24,  $\n0.0, 0.0, 1.0,  0.896\n"
+                           "GOTO / 1, 2, 3\nCYCLE / DEEP, DEPTH, 3.5, STEP, 1.0, MMPM, 50.0, CLEAR,$\n 1.0\nCYCLE / OFF\nFINI\n");
+  const auto c = only<cl::Circle>(rs);
+  REQUIRE(c.size() == 1);
+  CHECK(c[0].radius_mm == Approx(0.896));
+  CHECK(c[0].center_mm.y() == Approx(-22.9));
+  const auto cy = only<cl::Cycle>(rs);
+  REQUIRE(cy.size() == 2);
+  CHECK(cy[0].kind == cl::Cycle::Kind::deep);
+  CHECK(cy[0].depth_mm == 3.5);
+  CHECK(cy[0].step_mm == 1.0);
+  CHECK(cy[0].clearance_mm == 1.0);
+  CHECK(cy[0].feed == 50.0);
+  CHECK(cy[1].kind == cl::Cycle::Kind::off);
+  CHECK(only<cl::Comment>(rs).size() == 1);
+  REQUIRE(only<cl::End>(rs).size() == 1);
+  CHECK(only<cl::End>(rs)[0].program);
+}
+
+TEST_CASE("unknown statements pass through with a notice and do not abort") {
+  std::istringstream in("FOOBAR/1,2\nGOTO/1,2,3\n");
+  cl::AptReader r(in, "t.cls");
+  int n = 0;
+  while (r.next()) ++n;
+  CHECK(n == 2);
+  const auto notices = r.take_notices();
+  REQUIRE(notices.size() == 1);
+  CHECK(notices[0].find("t.cls:1:1") != std::string::npos);
+}
+
+TEST_CASE("bad input: file:line:column and what was expected") {
+  CHECK_THAT(error_of("GOTO/1,2,3\nGOTO/1,2.5.3,4\n"), Catch::Contains("t.cls:2:") && Catch::Contains("malformed number"));
+  CHECK_THAT(error_of("GOTO/1,nan,3\n"), Catch::Contains("t.cls:1:8") && Catch::Contains("finite"));
+  CHECK_THAT(error_of("GOTO/1,2,3,0,0,0\n"), Catch::Contains("t.cls:1:1") && Catch::Contains("zero"));
+  CHECK_THAT(error_of("GOTO/1,2\n"), Catch::Contains("3 or 6 numbers"));
+  CHECK_THAT(error_of("GOTO/1,,2\n"), Catch::Contains("empty argument"));
+  CHECK_THAT(error_of(std::string("GOTO/1,2,3\n\x01\x02\x7f\n", 14)), Catch::Contains("t.cls:2") && Catch::Contains("binary"));
+  CHECK_THAT(error_of("GOTO/1e999,2,3\n"), Catch::Contains("finite") || Catch::Contains("malformed"));
+}
+
+TEST_CASE("every real CL file reads completely") {
+  for (const char* f : {"nx_APT_Variable_Axis.txt", "nx_APT_SimpleMillPlane.txt", "nx_APT_Zig_Zag_Smoothed.txt",
+                        "nx_APT_Project2.txt", "catia_peening.aptsource", "creo_bohren_1.ncl", "creo_schruppen_1.ncl"}) {
+    INFO(f);
+    std::ifstream in(test::shared(std::string("data/real/") + f), std::ios::binary);
+    REQUIRE(in);
+    cl::AptReader r(in, f);
+    int motions = 0;
+    while (auto x = r.next())
+      if (std::holds_alternative<cl::Motion>(*x)) ++motions;
+    CHECK(motions > 0);
+  }
+}

@@ -1,0 +1,34 @@
+#pragma once
+// Options shared by the subcommands that read a job (machine, set-up, input kind and units).
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/postproc/cl_record.hpp"
+
+namespace ncpost::cli {
+
+struct JobOptions {
+  std::string machine;
+  std::string workpiece_origin;   ///< "X,Y,Z" mm
+  double tool_length_mm = 0.0;
+  std::string units;              ///< "", "mm" or "inch": units of a CL file that does not say
+  std::string input_kind = "auto";
+};
+
+struct LoadedJob {
+  Machine machine;
+  Setup setup;
+};
+
+void add_job_options(CLI::App& sub, JobOptions& o);
+LoadedJob load_job(const JobOptions& o);
+/// Opens the reader for the input's kind (detected from the content unless forced).
+std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
+                                           const LoadedJob& job);
+/// NC axis words of the machine, e.g. "XYZAC".
+std::string axis_letters(const Machine& m);
+
+}  // namespace ncpost::cli
