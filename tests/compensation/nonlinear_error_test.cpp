@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "ncpost/compensation/nonlinear_bound.hpp"
 #include "ncpost/compensation/nonlinear_error.hpp"
 #include "nonlinear_test_support.hpp"
 
@@ -134,4 +135,35 @@ TEST_CASE("Brent's method finds the maximum of a smooth function", "[nonlinear]"
   const Maximum m = maximise_bracketed([](double t) { return std::sin(3.0 * t) * std::exp(-t); }, 0.0, 2.0);
   // d/dt: 3cos3t − sin3t = 0 → t = atan(3)/3
   CHECK(m.t == Approx(std::atan(3.0) / 3.0).margin(1e-6));
+}
+
+TEST_CASE("the cheap bound is never below the exact error", "[nonlinear][bound]") {
+  for (const char* name : {"ac-trunnion.toml", "bv100.toml", "haas-umc750.toml", "gantry-bc-head.toml"}) {
+    const Machine m = test::machine_file(name);
+    Setup s;
+    s.workpiece_origin_mm = Vec3d(20, -30, 60);
+    s.tool_length_mm = m.rotary(0).side == Side::tool ? 150.0 : 0.0;
+    RandomBlocks random;
+    double tightest = 1e9, loosest = 0;
+    for (int i = 0; i < 300; ++i) {
+      ClBlock b = random.next(m, s);
+      if (i % 2) {  // short blocks, as on dense paths
+        b.to.linear_mm = b.from.linear_mm + 0.02 * (b.to.linear_mm - b.from.linear_mm);
+        b.to.rotary_rad = b.from.rotary_rad + 0.02 * (b.to.rotary_rad - b.from.rotary_rad);
+        const auto p1 = forward(m, b.to, s);
+        b.end = {p1.tip_mm, p1.axis};
+      }
+      const ExecutedBlock<> executed(m, s, b);
+      const NonlinearError exact = nonlinear_error(executed);
+      const NonlinearBound bound = nonlinear_bound(executed, m, s);
+      INFO(name << " block " << i << ": exact " << exact.max_error_mm << " bound " << bound.error_mm);
+      CHECK(bound.error_mm >= exact.max_error_mm * (1 - 1e-9));
+      CHECK(bound.orientation_rad >= exact.max_orientation_rad * (1 - 1e-9));
+      if (exact.max_error_mm > 1e-6) {
+        tightest = std::min(tightest, bound.error_mm / exact.max_error_mm);
+        loosest = std::max(loosest, bound.error_mm / exact.max_error_mm);
+      }
+    }
+    fmt::print("nonlinear_bound / exact on {}: {:.2f} .. {:.2f}\n", name, tightest, loosest);
+  }
 }

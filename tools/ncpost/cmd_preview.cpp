@@ -1,9 +1,97 @@
+// ncpost preview: the nonlinear error of every block of a CL program (spec/cli.md, issue 4).
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <memory>
+#include <optional>
+
 #include "commands.hpp"
+#include "input_options.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/preview_csv.hpp"
+#include "ncpost/postproc/preview_html.hpp"
 
 namespace ncpost::cli {
+namespace {
+
+struct PreviewArgs {
+  JobOptions job;
+  std::string model;
+  std::string csv;
+  std::string html;
+  std::string input;
+};
+
+int run_preview(const PreviewArgs& a) {
+  if (!a.model.empty()) throw UsageError("--model: previewing on an actual machine needs the error model (issue 5)");
+  const LoadedJob job = load_job(a.job);
+  std::ifstream in(a.input, std::ios::binary);
+  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
+  auto reader = open_cl_reader(in, a.input, a.job, job);
+  NominalSolver solver(job.machine, job.setup);
+  const preview::ModelEvaluator<NominalErrors> evaluator(job.machine, job.setup);
+
+  std::optional<AtomicFile> csv_file;
+  std::optional<preview::CsvWriter> csv;
+  if (!a.csv.empty()) {
+    csv_file.emplace(a.csv);
+    csv.emplace(*csv_file);
+  }
+  preview::PreviewSummary summary;
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  std::function<void(std::size_t)> progress;
+  if (tty) progress = [](std::size_t n) { fmt::print(stderr, "\rpreview: {} motions", n); };
+  preview::PreviewStats stats;
+  try {
+    stats = preview::run_preview(
+        *reader, a.input, solver, evaluator,
+        [&](const preview::BlockRow& row) {
+          if (csv) csv->add(row);
+          summary.add(row);
+        },
+        progress);
+  } catch (const preview::PreviewInfeasible& e) {
+    throw Infeasible(e.what());
+  }
+  if (tty) fmt::print(stderr, "\r");
+
+  if (!a.html.empty()) {
+    preview::HtmlReport report;
+    report.input_name = a.input;
+    report.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
+    report.summary = &summary;
+    report.stats = stats;
+    std::vector<int> lines;
+    for (const auto& w : summary.worst()) lines.push_back(w.line);
+    report.worst_source_lines = preview::source_lines(a.input, lines);
+    if (!summary.worst().empty()) report.worst_curve_mm = evaluator.error_curve(summary.worst().front().cl, 200);
+    write_file_atomically(a.html, preview::render_html(report));
+  }
+  if (csv_file) csv_file->commit();
+
+  for (const auto& n : stats.notices) fmt::print(stderr, "notice: {}\n", n);
+  std::string worst;
+  if (!summary.worst().empty())
+    worst = fmt::format(" (block {}, CL line {})", summary.worst().front().block, summary.worst().front().line);
+  fmt::print("{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm{}, mean {:.4f} mm, largest "
+             "orientation error {:.4f} deg; blocks over 5 um: {}\n",
+             stats.motions, summary.blocks(), summary.max_error_mm(), worst, summary.mean_error_mm(),
+             rad_to_deg(summary.max_orientation_rad()), summary.blocks_over(0.005));
+  return 0;
+}
+
+}  // namespace
 
 void add_preview(CLI::App& app, Action& action) {
-  add_not_built(app, action, "preview", "Preview the nonlinear error of every block", "4");
+  auto a = std::make_shared<PreviewArgs>();
+  CLI::App* sub = app.add_subcommand("preview", "Preview the nonlinear error of every block (exact and harmonic model)");
+  add_job_options(*sub, a->job);
+  sub->add_option("--model", a->model, "Error model JSON: preview on the actual machine");
+  sub->add_option("--csv", a->csv, "Write one row per block: block,line,max_error_mm,at_t,harmonic_mm,...");
+  sub->add_option("--html", a->html, "Write a self-contained HTML report (inline SVG)");
+  sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
+  sub->callback([a, &action] { action = [a] { return run_preview(*a); }; });
 }
 
 }  // namespace ncpost::cli

@@ -12,6 +12,8 @@
 //      ceil(Σ sqrt(e_k / tolerance)) pieces placed at equal increments of the cumulative
 //      Σ sqrt(e_k) (equidistribution), tried once;
 //   3. pieces that still fail are cut again the same way (recursively, `max_depth`).
+// Blocks whose cheap upper bound (nonlinear_bound.hpp) is within `screen_fraction` of the tolerance
+// are emitted as they are without the exact maximisation (`SplitBlock::screened`).
 // Axis limits and rotary continuity: the solver applies the limits and the choice of solution.
 // Near the singular cone the block's end points can sit on different branches (e.g. A +2° → −2° with
 // C nearly still, while the exact path along the CL segment needs C to swing ~180°): no continuous
@@ -28,6 +30,7 @@
 #include <optional>
 #include <vector>
 
+#include "ncpost/compensation/nonlinear_bound.hpp"
 #include "ncpost/compensation/nonlinear_split.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 
@@ -39,8 +42,13 @@ struct AdaptiveOptions {
   int max_blocks = 4096;                ///< output blocks per input block
   double max_rotary_step_rad = 0.5;     ///< node-to-node jump beyond the block's own rotary travel
   double branch_deviation_rad = 0.5;    ///< exact IK this far from the interpolation: keep rotaries
+  double screen_fraction = 0.5;         ///< skip the exact error when the bound is within this share
+                                        ///< of the tolerance (0: always exact)
   NonlinearErrorOptions error;
-  bool valid() const { return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && error.valid(); }
+  bool valid() const {
+    return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && screen_fraction >= 0 && screen_fraction <= 1 &&
+           error.valid();
+  }
 };
 
 /// The nominal solver: closed-form IK of the nominal machine with the post's solution choice.
@@ -65,6 +73,17 @@ template <class Errors, class Solver> class Subdivider {
 
   SplitBlock run() {
     SplitBlock out;
+    if (options_.screen_fraction > 0) {
+      const NonlinearBound bound =
+          nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block_, errors_), machine_, setup_);
+      if (bound.error_mm <= options_.screen_fraction * options_.tolerance_mm) {
+        out.nodes.push_back({1.0, block_.end, block_.to});
+        out.input_error_mm = out.max_error_mm = bound.error_mm;
+        out.max_orientation_rad = bound.orientation_rad;
+        out.screened = true;
+        return out;
+      }
+    }
     const NonlinearError e = error_of(0.0, block_.start, block_.from, 1.0, block_.end, block_.to);
     out.input_error_mm = e.max_error_mm;
     if (e.max_error_mm > options_.tolerance_mm) keep_rotary_ = !branch_consistent();

@@ -22,6 +22,7 @@
 #include <fmt/format.h>
 
 #include "ncpost/compensation/harmonic_model.hpp"
+#include "ncpost/compensation/nonlinear_bound.hpp"
 #include "ncpost/compensation/nonlinear_split.hpp"
 
 namespace ncpost::nonlinear {
@@ -33,6 +34,7 @@ struct HarmonicOptions {
   int max_blocks = 256;             ///< per input block
   NonlinearErrorOptions error;      ///< for the peak fit and the verification
   bool verify = true;               ///< re-execute the output blocks and set the verified errors
+  double screen_fraction = 0.5;     ///< leave a block alone when its bound is within this share of the tolerance
   bool valid() const { return tolerance_mm > 0 && fixed_blocks >= 0 && max_blocks >= 1 && error.valid(); }
 };
 
@@ -40,6 +42,17 @@ template <class Errors = NominalErrors>
 SplitBlock harmonic_compensate(const Machine& machine, const Setup& setup, const ClBlock& block,
                                const Errors& errors = {}, const HarmonicOptions& options = {}) {
   const ExecutedBlock<Errors> executed(machine, setup, block, errors);
+  if (options.screen_fraction > 0 && options.fixed_blocks == 0) {
+    const NonlinearBound bound = nonlinear_bound(executed, machine, setup);
+    if (bound.error_mm <= options.screen_fraction * options.tolerance_mm) {
+      SplitBlock out;
+      out.nodes.push_back({1.0, block.end, block.to});
+      out.input_error_mm = out.max_error_mm = bound.error_mm;
+      out.max_orientation_rad = bound.orientation_rad;
+      out.screened = true;
+      return out;
+    }
+  }
   const HarmonicModel model = fit_harmonic(executed, options.fit, options.error);
   SplitBlock out;
   out.input_error_mm = model.amplitude_mm;  // the model's estimate; verify_split measures

@@ -62,10 +62,12 @@ template <class Errors = NominalErrors> class ExecutedBlock {
   /// `errors` must outlive the object unless it is stateless (it is then copied).
   ExecutedBlock(const Machine& machine, const Setup& setup, const ClBlock& block, const Errors& errors = {})
       : machine_(machine), setup_(setup), block_(block), errors_(errors) {
-    const ChainPose<double> home =
-        raw_chain_pose<double>(machine_, AxisPosition{}, setup_.tool_length_mm, errors_, true);
-    home_table_inv_ = home.bed_T_table.inverse();
-    home_tool_inv_ = home.bed_T_tool.inverse();
+    if constexpr (!std::is_same_v<Errors, NominalErrors>) {  // nominal: every axis transform is I at home
+      const ChainPose<double> home =
+          raw_chain_pose<double>(machine_, AxisPosition{}, setup_.tool_length_mm, errors_, true);
+      home_table_inv_ = home.bed_T_table.inverse();
+      home_tool_inv_ = home.bed_T_tool.inverse();
+    }
   }
 
   const ClBlock& block() const { return block_; }

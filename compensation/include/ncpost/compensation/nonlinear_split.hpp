@@ -26,6 +26,8 @@ struct SplitBlock {
   double input_error_mm = 0.0;          ///< nonlinear error of the input block
   double max_error_mm = 0.0;            ///< largest verified error of the output blocks
   double max_orientation_rad = 0.0;     ///< largest verified orientation error of the output blocks
+  bool screened = false;                ///< within the tolerance by `nonlinear_bound`: the errors above
+                                        ///< are that upper bound, the exact maximisation was skipped
   int rotary_kept_nodes = 0;            ///< inserted nodes without an admissible continuous IK solution:
                                         ///< rotary angles interpolated, tip exact (adaptive)
   std::string failure;                  ///< set when the block could not be compensated (limits, IK)

@@ -1,0 +1,67 @@
+#pragma once
+// A cheap upper bound of a block's nonlinear error, to skip the exact maximisation
+// (nonlinear_error.hpp) for blocks far within the tolerance (dense paths: nearly all of them).
+//
+// The executed tip x(t) (W) is a fixed point carried through the chain
+//   table_T_tool(t) = T_ws[n−1]^-1 ⋯ T_ws[0]^-1 · T_ts[0] ⋯ T_ts[m−1]
+// whose factors move at constant rates in t (q linear in t). From the innermost factor outward,
+// with s and a the bounds on the speed and acceleration (d/dt, mm) of the point entering a factor:
+//   linear axis, travel Δ:            s += |Δ|
+//   rotary axis, travel ω (rad), ρ = distance of the point from the axis line at t = 0:
+//                                     a = ω²(ρ + s) + 2|ω|s + a ;  s = |ω|(ρ + s) + s
+// (|R''(p − c)| = ω²·dist, |R'p'| <= |ω||p'|). The chord deviation is then |x(t) − chord(t)| <=
+// t(1 − t)/2 · max|x''| <= a/8, and the distance from the CL segment is at most that plus the
+// larger end-point mismatch |x(0) − p0|, |x(1) − p1|. The tool axis is turned by the rotations
+// only: |a_axis''| <= (Σ|ω|)², giving the orientation bound likewise.
+// Axis lines are the nominal ones (the error model moves them by µm): use the bound with a margin
+// (the adaptive method screens at half the tolerance). Units: mm, rad; W.
+#include <algorithm>
+#include <cmath>
+
+#include "ncpost/compensation/nonlinear_block.hpp"
+
+namespace ncpost::nonlinear {
+
+struct NonlinearBound {
+  double error_mm = 0.0;         ///< >= the exact largest distance from the CL segment
+  double orientation_rad = 0.0;  ///< >= the exact largest orientation error
+};
+
+template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Errors>& executed, const Machine& machine,
+                                                       const Setup& setup) {
+  const ClBlock& b = executed.block();
+  double speed = 0.0, accel = 0.0, omega_sum = 0.0;
+  Vec3d point = Vec3d::Zero();  // the TCP, in the frame of the innermost tool-side body (= M at home)
+  auto apply = [&](int index, bool inverse) {
+    const Axis& axis = machine.axes[static_cast<std::size_t>(index)];
+    const double travel = b.to[index] - b.from[index];
+    Rigidd at_start = axis_transform<double>(axis, index, b.from[index], setup.tool_length_mm, NominalErrors{}, false);
+    if (inverse) at_start = at_start.inverse();
+    if (axis.is_rotary()) {
+      Vec3d pivot = axis.pivot_mm;
+      if (axis.side == Side::tool) pivot.z() += setup.tool_length_mm;
+      const Vec3d r = point - pivot;
+      const double rho = (r - r.dot(axis.direction) * axis.direction).norm() + speed;
+      const double w = std::abs(travel);
+      accel = w * w * rho + 2.0 * w * speed + accel;
+      speed = w * rho + speed;
+      omega_sum += w;
+    } else {
+      speed += std::abs(travel) * axis.direction.norm();
+    }
+    point = at_start.apply(point);
+  };
+  for (auto it = machine.tool_side.rbegin(); it != machine.tool_side.rend(); ++it) apply(*it, false);
+  for (int index : machine.workpiece_side) apply(index, true);
+
+  const ToolPoseT<double> x0 = executed.pose_at(b.from), x1 = executed.pose_at(b.to);
+  const double mismatch = std::max((x0.tip_mm - b.start.tip_mm).norm(), (x1.tip_mm - b.end.tip_mm).norm());
+  NonlinearBound out;
+  out.error_mm = accel / 8.0 + mismatch;
+  const double chord = std::max(std::cos(0.5 * angle_between(x0.axis, x1.axis)), 1e-3);
+  const double axis_mismatch = std::max(angle_between(x0.axis, b.start.axis), angle_between(x1.axis, b.end.axis));
+  out.orientation_rad = std::asin(std::min(1.0, omega_sum * omega_sum / 8.0 / chord)) + 2.0 * axis_mismatch;
+  return out;
+}
+
+}  // namespace ncpost::nonlinear
