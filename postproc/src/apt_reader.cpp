@@ -206,6 +206,7 @@ struct AptReader::State {
       t.where = at;
       const auto v = numbers_of(st);
       if (v.empty()) fail(at, "LOADTL expects a tool number", text);
+      if (!(v[0] >= 0.0 && v[0] <= 1e6)) fail(at, "LOADTL: tool number out of range (expected 0 to 1000000)", text);
       t.number = static_cast<int>(v[0]);
       if (auto l = number_after(st, "LENGTH")) t.length_mm = *l * scale;
       pending.push_back(t);

@@ -75,6 +75,11 @@ const auto on_comment = [](auto& ctx) {
       BlockComment{std::string_view(b + 1, static_cast<std::size_t>(range.end() - b - 1)), s.column_of(b)});
 };
 
+const auto on_program_name = [](auto& ctx) {
+  const auto range = x3::_attr(ctx);
+  state(ctx).block.program_name = std::string_view(range.begin() + 1, static_cast<std::size_t>(range.end() - range.begin() - 1));
+};
+
 template <Keyword K, int Length> const auto on_keyword = [](auto& ctx) {
   ParseState& s = state(ctx);
   s.block.keywords.push_back(BlockKeyword{K, s.column_of(x3::_where(ctx).begin()) - Length});
@@ -95,7 +100,11 @@ const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") 
     (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
         -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
      x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
-const auto block_grammar = -x3::lit('/')[on_delete] >> *(paren_comment | keyword | word) >> -semicolon_comment;
+const auto program_name = x3::rule<struct name_tag>{"program name"} =
+    x3::raw[x3::lexeme[x3::char_("oO") >> &(*x3::char_("0-9") >> x3::char_("a-zA-Z_-")) >>
+                       +(x3::char_ - x3::char_(" \t(;"))]][on_program_name];
+const auto block_grammar =
+    -x3::lit('/')[on_delete] >> -program_name >> *(paren_comment | keyword | word) >> -semicolon_comment;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 

@@ -131,14 +131,56 @@ struct GcodeClReader::State {
     notices.push_back(fmt::format("{}:{}: {}", file, line, text));
   }
 
+  /// Lines before the opening '%' that are not G-code (a tape leader, NX's listing header).
+  int leader_lines = -1;  ///< -1: not looked for yet
+
+  /// Looks at the head of the input: when a '%' line follows non-blank lines that do not parse
+  /// as G-code, those lines are a leader and are skipped (Fanuc ignores what precedes the first
+  /// '%').
+  void find_leader() {
+    leader_lines = 0;
+    const std::string_view head = source.peek(LineSource::kChunkBytes);
+    std::size_t at = 0;
+    int line = 0;
+    bool content = false, bad = false;
+    Block scratch;
+    while (at < head.size()) {
+      std::size_t end = head.find('\n', at);
+      if (end == std::string_view::npos) return;  // no complete '%' line within the head
+      std::string_view text = head.substr(at, end - at);
+      ++line;
+      if (line == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+      const auto first = text.find_first_not_of(" \t\r");
+      if (first != std::string_view::npos && text[first] == '%') {
+        if (content && bad) {
+          leader_lines = line - 1;
+          notices.push_back(fmt::format("{}:1: {} line(s) before the opening '%' are not G-code: skipped as a leader",
+                                        file, leader_lines));
+        }
+        return;
+      }
+      if (first != std::string_view::npos) {
+        content = true;
+        try {
+          parse_block(text, scratch, file, line);
+        } catch (const InputError&) {
+          bad = true;
+        }
+      }
+      at = end + 1;
+    }
+  }
+
   /// Reads and interprets the next block; false at the end of the program.
   bool read_block() {
+    if (leader_lines < 0) find_leader();
     std::string_view line;
     if (!source.next(line)) {
       finish_input();
       return false;
     }
     const int line_number = source.line_number();
+    if (line_number <= leader_lines) return true;
     parse_block(line, block, file, line_number);
     if (block.empty()) return true;
     if (block.percent) {

@@ -13,6 +13,7 @@ bool switches_rtcp_on(const Block& b) {
   for (const BlockKeyword& k : b.keywords)
     if (k.keyword == Keyword::traori) return true;
   for (const Word& w : b.words) {
+    if (!(w.value >= 0.0 && w.value < 1e5)) continue;
     const long code10 = std::lround(w.value * 10.0);
     if (w.letter == 'G' && (code10 == 434 || code10 == 435 || code10 == 2340)) return true;
     if (w.letter == 'M' && (code10 == 4280 || code10 == 1280)) return true;

@@ -32,6 +32,16 @@ bool LineSource::refill() {
   return got > 0;
 }
 
+std::string_view LineSource::peek(std::size_t bytes) {
+  while (end_ - begin_ < bytes && refill()) {
+  }
+  return std::string_view(buffer_.data() + begin_, end_ - begin_);
+}
+
+void LineSource::strip_bom(std::string_view& line) const {
+  if (line_number_ == 1 && line.size() >= 3 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
+}
+
 bool LineSource::next(std::string_view& line) {
   for (;;) {
     const char* data = buffer_.data();
@@ -44,6 +54,7 @@ bool LineSource::next(std::string_view& line) {
       begin_ = pos + 1;
       ++line_number_;
       terminated_ = true;
+      strip_bom(line);
       return true;
     }
     if (!refill()) {
@@ -56,6 +67,7 @@ bool LineSource::next(std::string_view& line) {
       begin_ = end_;
       ++line_number_;
       terminated_ = false;
+      strip_bom(line);
       return true;
     }
   }

@@ -12,6 +12,8 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr const char* kAxisLetters = "XYZABC";
+/// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
+constexpr double kMaxCoordinate = 1e9;
 
 /// Throws the InputError of a block.
 struct Fail {
@@ -35,7 +37,7 @@ std::string g_name(int code10) {
 
 enum GGroup : int {
   g_non_modal = 0, g_motion, g_plane, g_distance, g_arc_distance, g_feed, g_units, g_cutter, g_length,
-  g_return, g_coordinates, g_path, g_group_count
+  g_return, g_coordinates, g_path, g_dynamic_offset, g_group_count
 };
 
 /// The modal group of a supported G code, or -1 with `why` naming what is not supported.
@@ -54,6 +56,7 @@ int g_group(int code10, const char*& why) {
     case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
       return g_coordinates;
     case 610: case 611: case 640: return g_path;
+    case 2540: case 2550: return g_dynamic_offset;  // Haas DWO on/off
     case 410: case 420: case 411: case 421: why = "cutter radius compensation"; return -1;
     case 330: case 331: case 760: why = "threading"; return -1;
     case 382: case 383: case 384: case 385: why = "probing"; return -1;
@@ -226,18 +229,18 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
   }
   if (w.has('F')) {
     double f = w.get('F');
-    if (f < 0.0) fail(w.col('F'), "expected a feed >= 0");
+    if (f < 0.0 || f > 1e9) fail(w.col('F'), "expected a feed within 0 .. 1e9");
     if (st.feed_mode != FeedMode::inverse_time) {
       f *= length_scale;
       fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
     }
     st.feed = f;
-    fx.motion_feed = f;
+    if (st.feed_mode != FeedMode::per_revolution) fx.motion_feed = f;  // per-rev feeds live in cl::Feed only
   }
 
   // ---- S, T, M6, M3-M5, M7-M9
   if (w.has('S')) {
-    if (w.get('S') < 0.0) fail(w.col('S'), "expected a spindle speed >= 0");
+    if (w.get('S') < 0.0 || w.get('S') > 1e9) fail(w.col('S'), "expected a spindle speed within 0 .. 1e9");
     st.spindle_rpm = w.get('S');
     if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{at(w.col('S')), st.spindle, st.spindle_rpm};
   }
@@ -285,6 +288,9 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     notice_once("work-offset", line_number, group[g_coordinates].column,
                 fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
                             g_name(group[g_coordinates].code10)));
+  if (g_is(g_dynamic_offset, 2540))
+    notice_once("G254", line_number, group[g_dynamic_offset].column,
+                "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (in_group[g_distance]) st.incremental = group[g_distance].code10 == 910;
   if (in_group[g_arc_distance]) st.arc_centre_absolute = group[g_arc_distance].code10 == 901;
   if (in_group[g_motion]) {
@@ -340,6 +346,8 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       if (w.has(L)) {
         const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
         end[i] = st.incremental ? st.position[i] + v : v;
+        if (!(std::abs(end[i]) <= kMaxCoordinate))
+          fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
       }
       if (used) st.known[i] = true;
     }
@@ -365,12 +373,16 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       if (w.has('R')) {
         if (w.has(offset_letter[ax.a1]) || w.has(offset_letter[ax.a2]))
           fail(w.col('R'), "an arc takes either R or I, J, K, not both");
-        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, w.get('R') * length_scale, turns);
+        const double r = w.get('R') * length_scale;
+        if (!(std::abs(r) <= kMaxCoordinate)) fail(w.col('R'), "R is out of range (expected a radius within 1e9 mm)");
+        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
       } else {
         const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
         if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
         const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
         const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
+        if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
+          fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
         const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
         const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
         const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;

@@ -132,6 +132,7 @@ TEST_CASE("bad input: file:line:column and what was expected") {
   CHECK_THAT(error_of("GOTO/1,,2\n"), Catch::Contains("empty argument"));
   CHECK_THAT(error_of(std::string("GOTO/1,2,3\n\x01\x02\x7f\n", 14)), Catch::Contains("t.cls:2") && Catch::Contains("binary"));
   CHECK_THAT(error_of("GOTO/1e999,2,3\n"), Catch::Contains("finite") || Catch::Contains("malformed"));
+  CHECK_THAT(error_of("LOADTL/9E9\n"), Catch::Contains("t.cls:1:1") && Catch::Contains("out of range"));
 }
 
 TEST_CASE("every real CL file reads completely") {

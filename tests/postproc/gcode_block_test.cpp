@@ -107,6 +107,11 @@ TEST_CASE("gcode block: percent lines, N and O numbers, block delete, blank line
   CHECK(o.words[0].letter == 'O');
   CHECK(o.words[0].value == 1234.0);
   CHECK(o.comments.size() == 1);
+  const Block name = parse("Omnf01_vx_0 (NX program name)");
+  CHECK(name.program_name == "mnf01_vx_0");
+  CHECK(name.words.empty());
+  CHECK(name.comments.size() == 1);
+  CHECK(parse("O2021-11-28_test2setup_1").program_name == "2021-11-28_test2setup_1");
   const Block d = parse("  /G1 X5");
   CHECK(d.deleted);
   CHECK(d.column == 3);

@@ -22,6 +22,8 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "ncpost/kinematics/forward.hpp"
@@ -226,4 +228,58 @@ TEST_CASE("LinuxCNC peer: the boat xyzbc program parses completely") {
   CHECK(tools == 1);
   const auto notices = reader->take_notices();
   for (const auto& n : notices) std::cout << "boat notice: " << n << "\n";
+}
+
+TEST_CASE("NX post output for the Haas UMC-750 (G234, G20, G28, arcs) reads completely") {
+  const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/haas-umc750.toml");
+  for (const char* name : {"nx_PostProcessed_SimpleMillPlane.txt", "nx_PostProcessed_Variable_Axis.txt",
+                           "nx_PostProcessed_Zig_Zag_Smoothed.txt"}) {
+    INFO(name);
+    const std::string file = std::string(NCPOST_SHARED_DIR "/data/real/") + name;
+    // lines that move, counted independently: an axis word outside comments, not G28, before M30
+    std::set<int> expected_lines;
+    std::set<int> arc_lines;
+    {
+      std::ifstream in(file);
+      std::string line;
+      int number = 0;
+      while (std::getline(in, line)) {
+        ++number;
+        std::string code;
+        bool in_comment = false;
+        for (char c : line) {
+          if (c == '(') in_comment = true;
+          if (!in_comment) code += c;
+          if (c == ')') in_comment = false;
+        }
+        if (code.find("M30") != std::string::npos) break;
+        if (code.find("G28") != std::string::npos) continue;
+        bool axis = false;
+        for (std::size_t i = 0; i < code.size(); ++i)
+          if (std::string("XYZBC").find(code[i]) != std::string::npos && i + 1 < code.size() &&
+              (std::isdigit(static_cast<unsigned char>(code[i + 1])) || code[i + 1] == '-' || code[i + 1] == '.'))
+            axis = true;
+        if (axis) expected_lines.insert(number);
+        if (code.find("G02") != std::string::npos || code.find("G03") != std::string::npos) arc_lines.insert(number);
+      }
+    }
+    auto reader = gcode::open_gcode(file, m, Setup{});
+    std::set<int> motion_lines;
+    std::map<int, int> per_line;
+    int ends = 0, tools = 0;
+    while (auto record = reader->next()) {
+      if (const auto* mo = std::get_if<cl::Motion>(&*record)) {
+        motion_lines.insert(mo->where.line);
+        ++per_line[mo->where.line];
+        REQUIRE(mo->point.tip_mm.allFinite());
+      }
+      if (std::holds_alternative<cl::End>(*record)) ++ends;
+      if (std::holds_alternative<cl::ToolChange>(*record)) ++tools;
+    }
+    CHECK(motion_lines == expected_lines);
+    for (const auto& [line, count] : per_line)
+      if (!arc_lines.count(line)) CHECK(count == 1);  // one motion per block, arcs aside
+    CHECK(ends == 1);
+    CHECK(tools == 1);
+  }
 }

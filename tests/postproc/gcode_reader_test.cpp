@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -190,6 +192,11 @@ TEST_CASE("gcode reader: G93 inverse-time feed is kept per motion") {
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 1);
   CHECK_THAT(e.detail(), Catch::Contains("needs an F word"));
+  // G95: the feed per revolution is a cl::Feed record, not a motion feed
+  const auto per_rev = read_all("G95 G1 X1 F0.1\n");
+  CHECK(only<cl::Feed>(per_rev).at(0).per_rev);
+  CHECK(only<cl::Feed>(per_rev).at(0).value == 0.1);
+  CHECK_FALSE(only<cl::Motion>(per_rev).at(0).feed);
   // in G20 an inverse-time F stays 1/min
   CHECK(*motions("G20 G93 G1 X1 F3\n")[0].feed == 3.0);
 }
@@ -319,6 +326,16 @@ TEST_CASE("gcode reader: block delete and percent framing") {
   const InputError cut = error_of("%\nG0 X1\nG1 X");
   CHECK(cut.where().line == 3);
   CHECK(cut.where().column == 5);
+  // a leader before the opening % (NX's information listing), and G-code before % is kept
+  std::vector<std::string> notices;
+  const auto led = only<cl::Motion>(read_all("Information listing created by\tMArkos\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
+  REQUIRE(led.size() == 1);
+  check_tip(led[0], 4, 0, 0);
+  REQUIRE_FALSE(notices.empty());
+  CHECK_THAT(notices[0], Catch::Contains("3 line(s) before the opening '%'"));
+  CHECK(motions("G0 X1\n%\nG0 X2\n").size() == 1);  // a '%' after G-code ends the program
+  // a UTF-8 byte order mark (NX writes one)
+  check_tip(motions("\xEF\xBB\xBF%\nG0 X3\nM30\n%\n").at(0), 3, 0, 0);
   // CRLF line ends
   const auto crlf = motions("G0 X1\r\nG0 X2 (c)\r\nM30\r\n");
   REQUIRE(crlf.size() == 2);
@@ -345,7 +362,9 @@ TEST_CASE("gcode reader: semantic errors with their positions") {
   check("G0 U1\n", 1, 4, "U axis");
   check("M98 P100\n", 1, 1, "subprograms");
   check("G0 X1 M3 M4\n", 1, 10, "same modal group");
-  check("G1 X1 F-5\n", 1, 7, "feed >= 0");
+  check("G1 X1 F-5\n", 1, 7, "expected a feed within");
+  check("G91 G0 X900000000\nX900000000\n", 2, 1, "out of range");
+  check("G20 G0 X99999999\n", 1, 8, "out of range");
   check("G0 X1\nG1.5 X1\n", 2, 1, "not supported");
   check("G0 X1 T1.5\n", 1, 7, "tool number");
 }
@@ -379,4 +398,71 @@ TEST_CASE("gcode detection: G-code versus APT, RTCP versus machine axes") {
   CHECK(scan_input_kind(fanuc, "t") == InputKind::rtcp);
   std::istringstream plain("G0 X1 A20\nG43 H1 Z5\n");
   CHECK(scan_input_kind(plain, "t") == InputKind::machine);
+}
+
+TEST_CASE("gcode reader: every machine file maps machine-axis programs through its forward kinematics") {
+  for (const auto& entry : std::filesystem::directory_iterator(NCPOST_SOURCE_DIR "/machines")) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path().filename().string());
+    const Machine m = load_machine(entry.path().string());
+    Setup setup;
+    setup.workpiece_origin_mm = Vec3d(12, -7, 55);
+    setup.tool_length_mm = 120;
+    std::string program = "G90 G94\n";
+    std::vector<AxisPosition> programmed;
+    for (int i = 0; i < 20; ++i) {
+      AxisPosition q;
+      q.linear_mm = Vec3d(10.0 * i - 50.0, 3.0 * i, -2.5 * i);
+      std::string line = fmt::format("G1 X{} Y{} Z{}", q.linear_mm.x(), q.linear_mm.y(), q.linear_mm.z());
+      for (int k = 0; k < m.rotary_count(); ++k) {
+        const double deg = (k == 0 ? 4.5 : -17.0) * (i - 7);
+        q.rotary_rad[k] = deg_to_rad(deg);
+        line += fmt::format(" {}{}", m.rotary(k).letter, deg);
+      }
+      program += line + " F500\n";
+      programmed.push_back(q);
+    }
+    std::istringstream in(program);
+    GcodeClReader reader(in, "t.ngc", m, setup);
+    std::size_t n = 0;
+    while (auto r = reader.next()) {
+      const auto* mo = std::get_if<cl::Motion>(&*r);
+      if (!mo) continue;
+      REQUIRE(n < programmed.size());
+      const AxisPosition& q = programmed[n++];
+      const auto expected = forward(m, q, setup);
+      CHECK((mo->point.tip_mm - expected.tip_mm).norm() < 1e-9);
+      CHECK((mo->point.axis - expected.axis).norm() < 1e-12);
+      if (m.rotary_count() > 0) {
+        REQUIRE(mo->rotary_rad);
+        CHECK((*mo->rotary_rad - q.rotary_rad).norm() < 1e-12);
+        CHECK((linear_for(m, *mo->rotary_rad, mo->point.tip_mm, setup) - q.linear_mm).norm() < 1e-9);
+      }
+    }
+    CHECK(n == programmed.size());
+  }
+}
+
+TEST_CASE("gcode reader: absolute arc centres (G90.1), the G19 plane and several turns") {
+  const auto absolute = motions("G90.1 G1 X10 Y0 Z0 F100\nG3 X0 Y10 I0 J0\n");
+  for (std::size_t i = 1; i < absolute.size(); ++i) CHECK(absolute[i].point.tip_mm.head<2>().norm() == Approx(10.0));
+  const auto yz = motions("G19 G1 X0 Y5 Z0 F100\nG3 Y0 Z5 J-5 K0\n");
+  REQUIRE(yz.size() > 2);
+  const Vec3d mid = yz[yz.size() / 2].point.tip_mm;
+  CHECK(mid.x() == 0.0);
+  CHECK(mid.y() > 0);
+  CHECK(mid.z() > 0);  // counter-clockwise seen from +X: from +Y toward +Z
+  CHECK(std::hypot(mid.y(), mid.z()) == Approx(5.0));
+  const auto one = motions("G1 X5 Y0 Z0 F100\nG2 I-5 Z-2\n");
+  const auto three = motions("G1 X5 Y0 Z0 F100\nG2 I-5 Z-2 P3\n");
+  const double step = 2.0 * std::acos(1.0 - 1e-3 / 5.0);
+  CHECK(one.size() - 1 == static_cast<std::size_t>(std::ceil(2 * kPi / step)));
+  CHECK(three.size() - 1 == static_cast<std::size_t>(std::ceil(6 * kPi / step)));
+  check_tip(three.back(), 5, 0, -2);
+  // the helix descends linearly with the angle
+  const double n = static_cast<double>(three.size() - 1);
+  for (std::size_t i = 1; i < three.size(); ++i) {
+    CHECK(three[i].point.tip_mm.z() == Approx(-2.0 * static_cast<double>(i) / n).margin(1e-9));
+    CHECK(three[i].point.tip_mm.head<2>().norm() == Approx(5.0));
+  }
 }

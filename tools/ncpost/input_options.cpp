@@ -4,6 +4,7 @@
 
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
 
 namespace ncpost::cli {
 
@@ -34,7 +35,7 @@ LoadedJob load_job(const JobOptions& o) {
 }
 
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
-                                           const LoadedJob& /*job*/) {
+                                           const LoadedJob& job) {
   cl::ReaderOptions ro;
   ro.default_inch = o.units == "inch";
   std::string kind = o.input_kind;
@@ -47,7 +48,12 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
     kind = cl::looks_like_apt(head) ? "cl" : "gcode";
   }
   if (kind == "cl") return std::make_unique<cl::AptReader>(in, name, ro);
-  throw UsageError("G-code input is not built yet (issue 3); use APT CL data or --input-kind cl");
+  gcode::GcodeReaderOptions go;
+  go.default_inch = ro.default_inch;
+  go.kind = o.input_kind == "machine" ? gcode::InputKind::machine
+          : o.input_kind == "rtcp"    ? gcode::InputKind::rtcp
+                                      : gcode::InputKind::automatic;
+  return std::make_unique<gcode::GcodeClReader>(in, name, job.machine, job.setup, go);
 }
 
 std::string axis_letters(const Machine& m) {

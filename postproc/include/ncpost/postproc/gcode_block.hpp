@@ -3,7 +3,9 @@
 // before any meaning is applied (spec/formats.md "NC programs").
 //
 // Lexical rules (the Spirit X3 grammar is in gcode_block_parser.cpp):
-//   block   := [ '/' ] { comment | keyword | word } [ ';' text ]      -- blanks anywhere between
+//   block   := [ '/' ] [ name ] { comment | keyword | word } [ ';' text ] -- blanks anywhere between
+//   name    := 'O' digits* (letter|'_'|'-') { not blank, '(' or ';' }  -- a program name (NX:
+//              Omnf01_vx_0, O2021-11-28_test2setup_1); 'O' digits is a program number word
 //   word    := letter number                                           -- letter case-insensitive
 //   number  := [ '+' | '-' ] ( digits [ '.' digits? ] | '.' digits )   -- no exponent, NaN, Inf
 //   comment := '(' text ')'
@@ -44,6 +46,7 @@ struct BlockKeyword {
 struct Block {
   bool percent = false;       ///< a '%' program delimiter line
   bool deleted = false;       ///< starts with '/' (block delete)
+  std::string_view program_name;  ///< `Oname` (without the O), viewing the line buffer
   int column = 0;             ///< 1-based column of the first non-blank character (0: blank line)
   std::vector<Word> words;    ///< in the order written
   std::vector<BlockComment> comments;
@@ -51,12 +54,15 @@ struct Block {
 
   void clear() {
     percent = deleted = false;
+    program_name = {};
     column = 0;
     words.clear();
     comments.clear();
     keywords.clear();
   }
-  bool empty() const { return !percent && words.empty() && comments.empty() && keywords.empty(); }
+  bool empty() const {
+    return !percent && program_name.empty() && words.empty() && comments.empty() && keywords.empty();
+  }
 };
 
 /// Parses one line (without its line terminator) into `block`. Throws InputError naming

@@ -23,7 +23,9 @@
 // n x F so that the arc still takes 1/F minutes.
 // Units: G20 (inch) lengths and feeds are converted to mm; rotary words are degrees.
 // Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
-// as truncated: InputError); text after the closing '%' is ignored. Blocks starting with '/' are
+// as truncated: InputError); text after the closing '%' is ignored, and so are lines before the
+// opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,
+// looked for in the first 64 KiB; notice). A UTF-8 byte order mark is skipped. Blocks starting with '/' are
 // skipped while `block_delete` is on.
 #include <istream>
 #include <memory>

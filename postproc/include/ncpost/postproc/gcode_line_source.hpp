@@ -1,7 +1,7 @@
 #pragma once
 // Streaming line reader for NC programs: reads the input in fixed-size chunks and hands out one
 // line at a time (without its terminator: LF, CRLF), so that memory stays flat however long the
-// file. A line longer than `max_line_bytes` is bad input (binary data or a missing newline).
+// file. A UTF-8 byte order mark at the start is dropped (columns of line 1 then count after it). A line longer than `max_line_bytes` is bad input (binary data or a missing newline).
 #include <istream>
 #include <string>
 #include <string_view>
@@ -20,6 +20,10 @@ class LineSource {
   /// on a read failure or an over-long line.
   bool next(std::string_view& line);
 
+  /// The input not yet returned, after reading ahead to at least `bytes` where the input has
+  /// them (a look at the head of the file); valid until the next call of next().
+  std::string_view peek(std::size_t bytes);
+
   int line_number() const { return line_number_; }  ///< 1-based number of the last line returned
   const std::string& file() const { return file_; }
   bool last_line_terminated() const { return terminated_; }  ///< the last line ended with a newline
@@ -27,6 +31,7 @@ class LineSource {
 
  private:
   bool refill();
+  void strip_bom(std::string_view& line) const;
 
   std::istream& in_;
   std::string file_;

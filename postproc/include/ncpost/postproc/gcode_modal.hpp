@@ -7,7 +7,7 @@
 //
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
-//   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234; M0-M9 M30 M128 M129 M428
+//   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
 //   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
 //   R S T X Y Z. Cutter compensation (G41/G42), canned cycles, G10/G52/G92 offsets, rotation,
 //   scaling, polar coordinates, threading, probing, subprograms (M97/M98/M99), U V W and E are
@@ -59,7 +59,7 @@ struct BlockEffect {
   ProgramPoint start{};
   ProgramPoint end{};
   std::optional<ArcMove> arc;              ///< for G2/G3
-  std::optional<double> motion_feed;       ///< F given on this block (converted)
+  std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30

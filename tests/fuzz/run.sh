@@ -1,0 +1,52 @@
+#!/bin/sh
+# Builds the libFuzzer targets with clang-14 (ASan + UBSan) in build-fuzz/ and runs each for
+# SECONDS (default 60), starting from the seed corpus in tests/fuzz/corpus/ plus the real files
+# of ../shared/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
+# land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
+#   tests/fuzz/run.sh [SECONDS]        (from the repository root)
+# Environment: TARGETS (default: all three), FUZZ_FLAGS (extra libFuzzer flags, e.g.
+# "-fork=1 -ignore_crashes=1" to keep going after a finding).
+set -eu
+SECONDS_EACH=${1:-60}
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD="$ROOT/build-fuzz"
+SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuzzer-no-link"
+
+CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$SAN" >/dev/null
+TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader}
+FUZZ_FLAGS=${FUZZ_FLAGS:-}
+ninja -C "$BUILD" -j2 $TARGETS
+
+SHARED="$ROOT/../shared/data/real"
+status=0
+for target in $TARGETS; do
+  case $target in
+    fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
+    *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc' ;;
+  esac
+  corpus="$BUILD/fuzz/corpus/$target"
+  findings="$BUILD/fuzz/findings/$target"
+  mkdir -p "$corpus" "$findings"
+  cp "$seeds"/* "$corpus"/ 2>/dev/null || true
+  if [ -d "$SHARED" ]; then
+    for p in $pattern; do
+      for f in "$SHARED"/$p; do
+        [ -f "$f" ] && split -l 40 "$f" "$corpus/seed-$(basename "$f")-"
+      done
+    done
+  fi
+  echo "=== $target: $SECONDS_EACH s"
+  log="$BUILD/fuzz/$target.log"
+  if ! ( cd "$findings" && "$BUILD/fuzz/$target" -max_total_time="$SECONDS_EACH" -max_len=4096 -timeout=10 \
+         -rss_limit_mb=2048 -print_final_stats=1 $FUZZ_FLAGS "$corpus" >"$log" 2>&1 ); then
+    status=1
+    tail -40 "$log"
+  fi
+  grep -E "^Done|stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb|ERROR|SUMMARY" "$log" || true
+  if ls "$findings"/crash-* "$findings"/leak-* "$findings"/timeout-* >/dev/null 2>&1; then
+    echo "!!! $target: findings in $findings"
+    status=1
+  fi
+done
+exit $status
