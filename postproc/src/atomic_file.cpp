@@ -1,5 +1,6 @@
 #include "ncpost/postproc/atomic_file.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -21,6 +22,10 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   const int fd = ::mkstemp(buf.data());
   if (fd < 0) throw std::runtime_error("cannot create a temporary file beside '" + path_ + "': " + std::strerror(errno));
   temp_path_ = buf.data();
+  // mkstemp creates 0600; give the file the mode an ordinary create would (0666 less the umask)
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   file_ = ::fdopen(fd, "w");
   if (!file_) {
     ::close(fd);

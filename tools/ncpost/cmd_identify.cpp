@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
-#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -88,8 +88,8 @@ void add_identify(CLI::App& app, Action& action) {
       fmt::print("{}", comp::text_report(m, sets, r));
       if (!a->no_diagnose) fmt::print("residual analysis (issue 6): not built yet; the basic model is final\n");
       if (!r.converged) throw Infeasible("the fit " + r.message);
-      comp::write_file_atomic(a->output, comp::format_model_json(comp::to_model_file(m, r)));
-      if (!a->report.empty()) comp::write_file_atomic(a->report, comp::html_report(m, sets, r));
+      write_file_atomically(a->output, comp::format_model_json(comp::to_model_file(m, r)));
+      if (!a->report.empty()) write_file_atomically(a->report, comp::html_report(m, sets, r));
       return 0;
     };
   });

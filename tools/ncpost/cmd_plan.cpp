@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
-#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -96,10 +96,10 @@ void add_plan(CLI::App& app, Action& action) {
       if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
       for (const auto& p : plans) {
         const std::string file = plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
-        comp::write_file_atomic(file, comp::format_measurement_csv(p.set, m));
+        write_file_atomically(file, comp::format_measurement_csv(p.set, m));
         fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
       }
-      comp::write_file_atomic(stem + ".nc", comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
+      write_file_atomically(stem + ".nc", comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
       fmt::print("NC program -> {}.nc\n", stem);
       return 0;
     };

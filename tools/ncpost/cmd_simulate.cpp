@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
-#include "ncpost/compensation/atomic_file.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/simulate.hpp"
@@ -36,7 +36,7 @@ void add_simulate(CLI::App& app, Action& action) {
       const comp::ModelFile model = comp::read_model_json(args->model, &m);
       const comp::MeasurementSet plan = comp::read_measurement_csv(args->plan, m, {true});
       const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {args->noise_um, args->seed});
-      comp::write_file_atomic(args->output, comp::format_measurement_csv(data, m));
+      write_file_atomically(args->output, comp::format_measurement_csv(data, m));
       fmt::print("simulated {} rows of {} on '{}' ({} parameters, noise {} µm) -> {}\n", data.rows.size(),
                  comp::to_string(data.type), m.name, model.parameters.size(), args->noise_um, args->output);
       return 0;
