@@ -30,6 +30,7 @@ struct PostArgs {
   bool verify = false;
   std::string report;
   std::string verify_on;
+  double retract_mm = 50.0;
   std::string output = "-";
   std::string input;
 };
@@ -108,6 +109,7 @@ int run_post(const PostArgs& a) {
 
   PostOptions options;
   options.rtcp = a.rtcp;
+  options.retract_mm = a.retract_mm;
   options.verify = account;
   options.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
                     : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
@@ -190,6 +192,10 @@ void add_post(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"auto", "g93", "g94"}));
   sub->add_flag("--verify", a->verify,
                 "Re-execute the program on the machine (of --model) and print the error before and after");
+  sub->add_option("--retract", a->retract_mm,
+                  "When the axis limits force a change of solution mid-path: retract this far along the tool axis "
+                  "(mm, default 50), reorient, re-engage; 0 refuses (exit 3)")
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
