@@ -51,6 +51,10 @@ struct AptReader::State {
   Vec3d position = Vec3d::Zero();
   bool multax = false;
   bool rapid_pending = false;
+  // NX (recognised by its `TOOL PATH/` records) writes the CIRCLE axis so that the tool moves
+  // clockwise about it (its own post writes G03 for axis 0,0,-1; all 181 arcs of the real NX files
+  // are the short way round only so); APT and Creo move counter-clockwise about it.
+  bool nx_circle_axis = false;
   std::deque<Record> pending;
   std::vector<std::string> notices;
 
@@ -218,12 +222,13 @@ struct AptReader::State {
       c.center_mm = scale * Vec3d(v[0], v[1], v[2]);
       const Vec3d a(v[3], v[4], v[5]);
       if (a.norm() < 1e-9) fail(at, "CIRCLE axis is zero", text);
-      c.axis = a.normalized();
+      c.axis = nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized());
       c.radius_mm = scale * v[6];
       pending.push_back(c);
     } else if (w == "CYCLE") {
       pending.push_back(cycle(st));
     } else if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
+      if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
       comment("PARTNO " + (st.has_slash ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)))));

@@ -147,6 +147,43 @@ bool NcWriter::motion(const NcMotion& m) {
   return true;
 }
 
+void NcWriter::arc(const NcArc& a) {
+  start_line();
+  if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
+    buf_.append(std::string_view("G94 "));
+    last_feed_mode_ = NcMotion::FeedMode::per_minute;
+    last_feed_.reset();
+  }
+  if (a.plane != plane_) {
+    fmt::format_to(std::back_inserter(buf_), "G{} ", a.plane);
+    plane_ = a.plane;
+  }
+  const int g = a.clockwise ? 2 : 3;
+  fmt::format_to(std::back_inserter(buf_), "G{}", g);
+  last_motion_ = g;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double v = rounded(static_cast<int>(i), a.end_mm[i]);
+    buf_.push_back(' ');
+    buf_.push_back(letters_[i]);
+    append_fixed(buf_, v, dialect_.linear_decimals);
+    last_[i] = v;
+  }
+  static constexpr char kCentre[] = "IJK";
+  for (int i = 0; i < 3; ++i) {
+    if ((a.plane == 17 && i == 2) || (a.plane == 18 && i == 1) || (a.plane == 19 && i == 0)) continue;
+    buf_.push_back(' ');
+    buf_.push_back(kCentre[i]);
+    append_fixed(buf_, a.centre_offset_mm[static_cast<std::size_t>(i)], dialect_.linear_decimals);
+  }
+  if (!last_feed_ || std::abs(*last_feed_ - a.feed_mm_min) > 1e-9) {
+    buf_.append(std::string_view(" F"));
+    append_fixed(buf_, a.feed_mm_min, 1);
+    last_feed_ = a.feed_mm_min;
+  }
+  end_line();
+  ++blocks_;
+}
+
 void NcWriter::end_program() {
   if (dialect_.klartext) {
     block(dialect_.program_end);

@@ -231,6 +231,7 @@ class Poster {
     }
     double angle = *sweep;
     if (angle <= 1e-12) angle += 2.0 * kPi;  // counter-clockwise about the circle axis
+    if (native_arc(c, end, rapid, angle)) return;
     const double radius = r0.norm();
     const double tol = std::min(options_.arc_tolerance_mm, 0.5 * radius);
     const double step = 2.0 * std::acos(1.0 - tol / radius);
@@ -245,6 +246,50 @@ class Poster {
       p.axis = slerp(axis0, end.point.axis, t);
       move_to(p, end.where.line, rapid);
     }
+  }
+
+  /// The arc from the current point to `end` about `c` (sweep `angle` counter-clockwise about the
+  /// circle axis) as one G2/G3 block, when the program's frame sees it in a principal plane.
+  bool native_arc(const cl::Circle& c, const cl::Motion& end, bool rapid, double angle) {
+    if (!options_.native_arcs || rapid || writer_.dialect().klartext || !have_position_) return false;
+    const Vec3d n = c.axis.normalized();
+    const Vec3d start = previous_.cl.tip_mm, stop = end.point.tip_mm;
+    if (previous_.cl.axis.cross(n).norm() > 1e-9 || end.point.axis.cross(n).norm() > 1e-9) return false;
+    if (std::abs((stop - start).dot(n)) > 1e-6) return false;  // a helix: points
+    const IkOutcome ik = solver_.solve(end.point, previous_.q);
+    if (!ik.ok() || (ik.position->rotary_rad - previous_.q.rotary_rad).cwiseAbs().maxCoeff() > 1e-12) return false;
+    const Vec3d centre = c.center_mm + (start - c.center_mm).dot(n) * n;  // in the plane of the arc
+    // the arc in the program's frame: W under RTCP, else the linear axes for the fixed rotary angles
+    auto frame = [&](const Vec3d& p) -> Vec3d {
+      if (options_.rtcp) return p;
+      return solver_.with_rotary(ClPoint{p, n}, previous_.q.rotary_rad).linear_mm;
+    };
+    const Vec3d xs = frame(start), xe = frame(stop), xc = frame(centre);
+    const Vec3d normal = frame(centre + n) - xc;  // the circle axis in the frame (unit: a rigid map)
+    int plane_axis = -1;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(std::abs(normal[k]) - 1.0) < 1e-9) plane_axis = k;
+    if (plane_axis < 0) return false;
+    const double r_start = (xs - xc).norm(), r_end = (xe - xc).norm();
+    // CAM data carry 4 decimals; controls accept a few µm between the start and end radii
+    if (r_start < 1e-3 || std::abs(r_start - r_end) > 5e-4 || angle < 1e-6) return false;
+    NcArc arc;
+    arc.plane = plane_axis == 2 ? 17 : plane_axis == 1 ? 18 : 19;
+    arc.clockwise = normal[plane_axis] < 0.0;  // counter-clockwise about the frame's −axis is clockwise about +axis
+    for (int k = 0; k < 3; ++k) {
+      arc.end_mm[static_cast<std::size_t>(k)] = xe[k];
+      arc.centre_offset_mm[static_cast<std::size_t>(k)] = xc[k] - xs[k];
+    }
+    arc.feed_mm_min = feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min;
+    writer_.arc(arc);
+    SolvedPoint next{end.point, *ik.position};
+    AxisPosition executed = next.q;
+    for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
+    solver_.advance(executed);
+    last_executed_ = executed;
+    previous_ = next;
+    ++summary_.arcs_out;
+    return true;
   }
 
   void drill(const cl::Motion& m) {
