@@ -292,6 +292,26 @@ class Poster {
     return true;
   }
 
+  /// One hole as G81/G83 from the clearance point `top` (where the tool stands) down to `bottom`.
+  bool native_cycle(const ClPoint& top, const ClPoint& bottom, int line) {
+    (void)line;
+    if (!options_.native_cycles || !writer_.has_iso_cycles()) return false;
+    if (cycle_.kind != cl::Cycle::Kind::drill && cycle_.kind != cl::Cycle::Kind::deep) return false;
+    const Vec3d xt = options_.rtcp ? top.tip_mm : previous_.q.linear_mm;
+    const Vec3d xb = options_.rtcp ? bottom.tip_mm : solver_.with_rotary(bottom, previous_.q.rotary_rad).linear_mm;
+    // the hole must run straight down −Z of the program frame
+    if (std::abs(xt.x() - xb.x()) > 1e-7 || std::abs(xt.y() - xb.y()) > 1e-7 || xb.z() >= xt.z()) return false;
+    NcCycle c;
+    c.peck = cycle_.kind == cl::Cycle::Kind::deep && cycle_.step_mm > 0.0;
+    c.bottom_mm = {xb.x(), xb.y(), xb.z()};
+    c.r_plane_mm = xt.z();
+    c.peck_mm = cycle_.step_mm;
+    c.feed_mm_min = cycle_.feed > 0.0 ? cycle_.feed : (feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min);
+    writer_.cycle(c);
+    ++summary_.cycles_out;
+    return true;  // the tool is back at `top` (G98, initial level), previous_ unchanged
+  }
+
   void drill(const cl::Motion& m) {
     // Canned cycles expanded into explicit moves along the tool axis (valid at any orientation):
     // rapid to the clearance point, feed to depth (in pecks for DEEP), rapid back.
@@ -301,6 +321,7 @@ class Poster {
     const double saved_feed = feed_mm_min_;
     const bool saved_given = feed_given_;
     move_to(top, m.where.line, true);
+    if (native_cycle(top, bottom, m.where.line)) return;
     if (cycle_.feed > 0.0) {
       feed_mm_min_ = cycle_.feed;
       feed_given_ = true;

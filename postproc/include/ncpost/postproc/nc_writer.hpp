@@ -32,6 +32,16 @@ struct NcArc {
   double feed_mm_min = 0.0;
 };
 
+/// A drilling cycle at one hole along +Z of the program frame: G81 (drill) or G83 (peck, Q),
+/// returning to the initial level (G98), cancelled by G80 after the hole. Output units (mm).
+struct NcCycle {
+  bool peck = false;
+  std::array<double, 3> bottom_mm{};  ///< X Y of the hole, Z of its bottom
+  double r_plane_mm = 0.0;            ///< Z of the R plane (the clearance point)
+  double peck_mm = 0.0;               ///< Q of G83
+  double feed_mm_min = 0.0;
+};
+
 class NcWriter {
  public:
   /// `letters`: the axis words, e.g. "XYZAC".
@@ -45,6 +55,11 @@ class NcWriter {
   bool motion(const NcMotion& m);
   /// Writes a circular block; the rotary words stay as they are.
   void arc(const NcArc& a);
+  /// Writes one canned-cycle hole and its G80; the tool ends at the initial level (unchanged X Y Z
+  /// words are then those of the position before the cycle, X Y of the hole).
+  void cycle(const NcCycle& c);
+  /// True if the dialect has the ISO drilling cycles G81/G83.
+  bool has_iso_cycles() const;
   void rtcp(bool on);
   void end_program();
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).

@@ -1,5 +1,6 @@
-// CIRCLE records written as G2/G3 (post.hpp `native_arcs`): the directions of NX's own post on the
-// same files, and the same tool path as the point expansion when the program is read back.
+// CIRCLE records written as G2/G3 (post.hpp `native_arcs`) and CYCLE holes as G81/G83: the arc
+// directions of NX's own post on the same files, the same tool path as the point expansion when
+// the program is read back, and the cycle words of a Creo drilling file.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -27,7 +28,7 @@ std::string read_text(const std::string& path) {
 std::string post(const std::string& file, const Machine& m, bool native_arcs, PostSummary* summary = nullptr) {
   std::ifstream in(test::shared("data/real/" + file), std::ios::binary);
   cl::AptReader reader(in, file);
-  const std::string out_path = "arc_output_test_" + std::to_string(native_arcs) + ".nc";
+  const std::string out_path = "native_cycles_arcs_test_" + std::to_string(native_arcs) + ".nc";
   {
     AtomicFile out(out_path);
     std::string letters;
@@ -108,4 +109,27 @@ TEST_CASE("G2/G3 output follows the same path as the expanded points (NX and Cre
     CHECK(with_arcs.arcs_out > 0);
     CHECK(std::abs(l_native - l_points) < 1e-4 * l_points);  // a wrong direction goes the other way round
   }
+}
+
+TEST_CASE("CYCLE/DEEP as G83 where the hole runs down Z, explicit pecks otherwise") {
+  const std::string file = "creo_bohren_1.ncl";  // CYCLE/DEEP, DEPTH 3.5, STEP 1, MMPM 50, CLEAR 1; holes at z 0.5
+  const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
+  PostSummary s;
+  const std::string program = post(file, m, true, &s);
+  CHECK(s.cycles_out == 2);
+  CHECK_THAT(program, Catch::Contains("G98 G83 X-7.2291 Y-23.0000 Z-3.0000 R1.5000 Q1.0000 F50.0"));
+  CHECK_THAT(program, Catch::Contains("G98 G83 X-16.7804 Y-23.0000 Z-3.0000 R1.5000 Q1.0000 F50.0"));
+  CHECK_THAT(program, Catch::Contains("G80"));
+  // Sinumerik has no G83: the pecks are written as moves (depth reached at Z-3)
+  std::ifstream in(test::shared("data/real/" + file), std::ios::binary);
+  cl::AptReader reader(in, file);
+  {
+    AtomicFile out("native_cycles_sinumerik.nc");
+    NcWriter writer(out, dialect_named("sinumerik"), "XYZAC");
+    const PostSummary e = post_program(reader, file, NominalSolver(m, Setup{}), writer, PostOptions{});
+    CHECK(e.cycles_out == 0);
+    out.commit();
+  }
+  const std::string expanded = read_text("native_cycles_sinumerik.nc");
+  CHECK_THAT(expanded, !Catch::Contains("G83") && Catch::Contains("Z-3.0000"));
 }
