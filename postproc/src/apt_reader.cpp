@@ -7,6 +7,8 @@
 
 #include "ncpost/postproc/apt_reader.hpp"
 
+#include <cctype>
+
 namespace ncpost::cl {
 namespace {
 
@@ -281,8 +283,31 @@ std::vector<std::string> AptReader::take_notices() {
 }
 
 bool looks_like_apt(const std::string& head) {
-  for (const char* key : {"GOTO", "goto", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$", "FEDRAT", "UNITS"})
-    if (head.find(key) != std::string::npos) return true;
+  // An APT statement starts a line with its major word (then '/', or alone as RAPID / MULTAX);
+  // the words may also appear inside G-code comments, e.g. "(ncpost 0.1.0 from part.cls)".
+  static const char* const kMajor[] = {"GOTO", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$",
+                                       "FEDRAT", "UNITS", "UNIT", "CIRCLE", "SPINDL", "COOLNT", "RAPID",
+                                       "TLAXIS", "CUTTER", "MSYS", "PPRINT"};
+  std::size_t start = 0;
+  while (start < head.size()) {
+    std::size_t end = head.find('\n', start);
+    if (end == std::string::npos) end = head.size();
+    std::size_t b = head.find_first_not_of(" \t\r", start);
+    if (b < end) {
+      std::string line;
+      for (std::size_t i = b; i < end; ++i) line += static_cast<char>(std::toupper(static_cast<unsigned char>(head[i])));
+      while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.pop_back();
+      if (line.rfind("$$", 0) == 0) return true;
+      for (const char* key : kMajor) {
+        const std::size_t n = std::char_traits<char>::length(key);
+        if (line.compare(0, n, key) != 0) continue;
+        // the major word then '/' (blanks allowed between), or the word alone on its line (RAPID)
+        const std::size_t after = line.find_first_not_of(" \t", n);
+        if (after == std::string::npos ? line.size() == n : line[after] == '/') return true;
+      }
+    }
+    start = end + 1;
+  }
   return false;
 }
 
