@@ -1,0 +1,403 @@
+#include "ncpost/compensation/diagnose.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <boost/math/distributions/fisher_f.hpp>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/compensation/residuals.hpp"
+
+namespace ncpost::comp {
+namespace {
+
+/// Upper tail probability of the F distribution.
+double f_p_value(double f, double k, double dof) {
+  if (!(f > 0.0) || k < 1 || dof < 1) return 1.0;
+  const boost::math::fisher_f_distribution<double> dist(k, dof);
+  return boost::math::cdf(boost::math::complement(dist, f));
+}
+
+double sum_of_squares(const IdentifyResult& r, Eigen::Index m) {
+  const double rms_mm = 1e-3 * r.rms_after_um;
+  return rms_mm * rms_mm * double(m);
+}
+
+/// The model being built: fitted names, held values, its fit.
+struct Model {
+  std::vector<std::string> names;
+  ErrorParameters held;
+  IdentifyResult fit;
+};
+
+std::vector<std::string> layout_names(const Model& model) {
+  std::vector<std::string> n = model.names;
+  for (const auto& h : model.held.names())
+    if (std::find(n.begin(), n.end(), h) == n.end()) n.push_back(h);
+  return n;
+}
+
+/// Residual (mm) of a fitted model: fitted values, held values, prior (0) for pinned ones.
+Eigen::VectorXd residual_of(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                            const IdentifyOptions& o) {
+  std::vector<std::string> names = layout_names(model);
+  for (const auto& f : o.fixed.names())
+    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+  ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  std::vector<double> values;
+  for (const auto& n : names)
+    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.fixed.value_or(n, 0.0))));
+  return prob.residuals(values);
+}
+
+IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets, const std::vector<std::string>& names,
+                         const ErrorParameters& held, const IdentifyOptions& base) {
+  IdentifyOptions o = base;
+  for (std::size_t i = 0; i < held.size(); ++i) o.fixed.set(held.names()[i], held.values()[i]);
+  return identify(m, sets, names, o);
+}
+
+/// Time stamp of every residual (stacked as residuals.hpp).
+Eigen::VectorXd residual_times(const std::vector<MeasurementSet>& sets) {
+  std::vector<double> t;
+  for (const auto& s : sets)
+    for (const auto& row : s.rows)
+      for (int v = 0; v < s.values_per_row(); ++v) t.push_back(row.time_s);
+  return Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+}
+
+struct Screened {
+  int candidate = -1;
+  Candidate spec;  ///< with the chosen tau for drift
+  double drop = 0.0;
+  double p_linear = 1.0;
+  std::string aliased;  ///< the parameter that is aliased, when not identifiable
+};
+
+/// Drop in Σr² from adding the columns C to a model spanned by the orthonormal Q; empty
+/// `aliased` if every column keeps more than `tol` of itself.
+double projected_drop(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const Eigen::VectorXd& r, double tol,
+                      int& aliased_column) {
+  Eigen::MatrixXd B(C.rows(), 0);
+  aliased_column = -1;
+  double drop = 0.0;
+  for (Eigen::Index j = 0; j < C.cols(); ++j) {
+    const double norm = C.col(j).norm();
+    Eigen::VectorXd c = C.col(j);
+    for (int pass = 0; pass < 2; ++pass) {
+      c -= Q * (Q.transpose() * c);
+      c -= B * (B.transpose() * c);
+    }
+    if (!(norm > 0.0) || c.norm() <= tol * norm) {
+      aliased_column = static_cast<int>(j);
+      return 0.0;
+    }
+    c.normalize();
+    const double a = c.dot(r);
+    drop += a * a;
+    B.conservativeResize(Eigen::NoChange, B.cols() + 1);
+    B.col(B.cols() - 1) = c;
+  }
+  return drop;
+}
+
+double command_range(const std::vector<MeasurementSet>& sets, int axis) {
+  double r = 0.0;
+  for (const auto& s : sets)
+    for (const auto& row : s.rows) r = std::max(r, std::abs(row.command[axis]));
+  return r;
+}
+
+/// Size of an effect with its uncertainty (AddedEffect::size), and whether it is plausible.
+std::string size_of(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o,
+                    AddedEffect& e) {
+  const Candidate& c = e.candidate;
+  const auto v = [&](std::size_t i) { return e.values.value_or(c.parameters[i], 0.0); };
+  const auto u = [&](std::size_t i) { return e.uncertainty.value_or(c.parameters[i], 0.0); };
+  const ParameterSpec spec = *parse_parameter_name(c.parameters[0], m).spec;
+  double limit = o.plausible_length_mm;
+  switch (c.kind) {
+    case CandidateKind::component:
+      e.size_is_angle = spec.component >= 3;
+      if (spec.kind == ParameterKind::harmonic) {
+        e.size = std::hypot(v(0), v(1));
+        e.size_sigma = e.size > 0 ? std::hypot(v(0) * u(0), v(1) * u(1)) / e.size : std::hypot(u(0), u(1));
+      } else {
+        const double reach = std::pow(std::max(1.0, command_range(sets, spec.axis_index)), spec.order);
+        e.size = std::abs(v(0)) * reach;
+        e.size_sigma = u(0) * reach;
+      }
+      break;
+    case CandidateKind::squareness:
+      e.size_is_angle = true;
+      e.size = std::abs(v(0));
+      e.size_sigma = u(0);
+      break;
+    case CandidateKind::reversal:
+      e.size_is_angle = m.axes[static_cast<std::size_t>(spec.axis_index)].is_rotary();
+      e.size = v(0);
+      e.size_sigma = u(0);
+      if (e.size <= 0.0) return "a negative play is not physical";
+      break;
+    case CandidateKind::drift: {
+      const double tau = e.values.value_or(c.effect + ":tau", 600.0);
+      double largest = 0.0, t_end = 0.0;
+      for (const auto& s : sets)
+        for (const auto& row : s.rows) {
+          largest = std::max(largest, std::abs(v(0) * row.time_s + v(1) * (1.0 - std::exp(-row.time_s / tau))));
+          t_end = std::max(t_end, row.time_s);
+        }
+      e.size = largest;
+      e.size_sigma = std::hypot(u(0) * t_end, u(1));
+      limit = o.plausible_drift_mm;
+      break;
+    }
+    case CandidateKind::instrument: {
+      double sq = 0.0, su = 0.0;
+      for (std::size_t i = 0; i < c.parameters.size(); ++i) sq += v(i) * v(i), su += u(i) * u(i);
+      e.size = std::sqrt(sq);
+      e.size_sigma = std::sqrt(su);
+      limit = o.plausible_instrument_mm;
+      break;
+    }
+  }
+  if (e.size_is_angle) limit = o.plausible_angle_rad;
+  if (std::abs(e.size) > limit)
+    return fmt::format("size {:.4g} {} is beyond the plausible {:.4g}", e.size, e.size_is_angle ? "rad" : "mm", limit);
+  return {};
+}
+
+}  // namespace
+
+std::string DiagnoseOptions::validate() const {
+  if (const std::string why = identify.validate(); !why.empty()) return why;
+  if (!(significance > 0.0 && significance < 1.0)) return "significance must be in (0, 1)";
+  if (max_effects < 0) return "max_effects must not be negative";
+  if (refit_top < 1) return "refit_top must be at least 1";
+  if (!(alias_tolerance > 0.0 && alias_tolerance < 1.0)) return "alias_tolerance must be in (0, 1)";
+  if (!(plausible_length_mm > 0 && plausible_angle_rad > 0 && plausible_drift_mm > 0 && plausible_instrument_mm > 0))
+    return "the plausible sizes must be positive";
+  return {};
+}
+
+std::vector<std::string> DiagnoseResult::effects_added() const {
+  std::vector<std::string> out;
+  for (const auto& e : added) out.push_back(e.candidate.effect);
+  return out;
+}
+
+DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& sets,
+                        const std::vector<std::string>& basic_names, const DiagnoseOptions& o) {
+  if (const std::string why = o.validate(); !why.empty()) throw std::invalid_argument(why);
+  auto say = [&](const std::string& s) {
+    if (o.progress) o.progress(s);
+  };
+  DiagnoseResult out;
+  Model model{basic_names, {}, fit_model(m, sets, basic_names, {}, o.identify)};
+  out.basic = model.fit;
+  out.residual_before_mm = residual_of(m, sets, model, o.identify);
+  const Eigen::Index count = out.residual_before_mm.size();
+  const Eigen::VectorXd times = residual_times(sets);
+  double t_span = times.size() ? times.maxCoeff() : 0.0;
+  t_span = std::max(t_span, 60.0);
+  say(fmt::format("basic model: rms {:.3f} um, max {:.3f} um", model.fit.rms_after_um, model.fit.max_after_um));
+
+  std::vector<std::string> all_present = basic_names;
+  for (const auto& f : o.identify.fixed.names()) all_present.push_back(f);
+  std::vector<Candidate> catalogue = candidate_catalogue(m, sets, all_present);
+
+  out.stop_reason = "no candidate effects";
+  while (static_cast<int>(out.added.size()) < o.max_effects && !catalogue.empty()) {
+    if (!model.fit.converged) {
+      out.stop_reason = "the fit did not converge";
+      break;
+    }
+    // ---- 1. screening at the current solution
+    std::vector<std::string> names = layout_names(model);
+    for (const auto& f : o.identify.fixed.names())
+      if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+    std::vector<double> values;
+    for (const auto& n : names)
+      values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+    std::vector<int> kept;
+    for (std::size_t i = 0; i < model.names.size(); ++i)
+      if (model.fit.uncertainty.contains(model.names[i])) kept.push_back(static_cast<int>(i));
+    std::vector<std::vector<int>> cand_columns(catalogue.size());
+    std::vector<int> columns = kept;
+    for (std::size_t c = 0; c < catalogue.size(); ++c) {
+      for (const auto& p : catalogue[c].parameters) {
+        names.push_back(p);
+        values.push_back(0.0);
+        cand_columns[c].push_back(static_cast<int>(columns.size()));
+        columns.push_back(static_cast<int>(names.size()) - 1);
+      }
+      for (std::size_t h = 0; h < catalogue[c].held.size(); ++h) {
+        names.push_back(catalogue[c].held.names()[h]);
+        values.push_back(catalogue[c].held.values()[h]);
+      }
+    }
+    const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+    const Eigen::VectorXd r = prob.residuals(values);
+    const Eigen::MatrixXd J = prob.jacobian(values, columns);
+    const Eigen::Index p0 = static_cast<Eigen::Index>(kept.size());
+    Eigen::MatrixXd Q(count, 0);
+    if (p0 > 0) {
+      Eigen::MatrixXd K = J.leftCols(p0);
+      for (Eigen::Index c = 0; c < p0; ++c)
+        if (K.col(c).norm() > 0) K.col(c).normalize();
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
+      Q = qr.householderQ() * Eigen::MatrixXd::Identity(count, p0);
+    }
+    const double s0 = r.squaredNorm();
+    std::vector<Screened> screened;
+    int tested = 0;
+    for (std::size_t c = 0; c < catalogue.size(); ++c) {
+      Screened s;
+      s.candidate = static_cast<int>(c);
+      s.spec = catalogue[c];
+      Eigen::MatrixXd C(count, static_cast<Eigen::Index>(cand_columns[c].size()));
+      for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
+      int aliased = -1;
+      if (s.spec.kind == CandidateKind::drift) {
+        // the exp column at any tau from the lin column: both are (time law) · d r / d drift
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(count);
+        for (Eigen::Index i = 0; i < count; ++i)
+          if (times[i] > 0) g[i] = C(i, 0) / times[i];
+        double best = -1.0;
+        for (int k = 0; k <= 40; ++k) {
+          const double tau = 30.0 * std::pow(4.0 * t_span / 30.0, k / 40.0);
+          for (Eigen::Index i = 0; i < count; ++i) C(i, 1) = g[i] * (1.0 - std::exp(-times[i] / tau));
+          int a = -1;
+          const double d = projected_drop(Q, C, r, o.alias_tolerance, a);
+          if (a < 0 && d > best) {
+            best = d;
+            s.spec.held = ErrorParameters();
+            s.spec.held.set(s.spec.effect + ":tau", tau);
+          }
+          aliased = a;
+        }
+        if (best >= 0.0) {
+          aliased = -1;
+          s.drop = best;
+        }
+      } else {
+        s.drop = projected_drop(Q, C, r, o.alias_tolerance, aliased);
+      }
+      if (aliased >= 0) {
+        s.aliased = s.spec.parameters[static_cast<std::size_t>(aliased)];
+        continue;
+      }
+      ++tested;
+      const double k = double(s.spec.parameters.size());
+      const double dof = double(count - p0) - k;
+      s.p_linear = f_p_value((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
+      screened.push_back(s);
+    }
+    std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
+    const double alpha = o.significance / std::max(1, tested);
+
+    // ---- 2. refit the best few and weigh the evidence
+    out.last_rejected.clear();
+    std::optional<AddedEffect> best;
+    Model best_model;
+    int refits = 0;
+    for (const Screened& s : screened) {
+      if (refits >= o.refit_top || s.p_linear >= alpha) break;
+      ++refits;
+      Model trial = model;
+      for (const auto& p : s.spec.parameters) trial.names.push_back(p);
+      for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
+      const double s1 = sum_of_squares(trial.fit, count);
+      const int p1 = static_cast<int>(trial.fit.uncertainty.size());
+      const double k = double(s.spec.parameters.size());
+      const double dof = double(count - p1);
+      AddedEffect e;
+      e.candidate = s.spec;
+      e.tested = tested;
+      e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
+      e.p_value = f_p_value(e.f_statistic, k, dof);
+      rej.p_value = e.p_value;
+      for (const auto& p : s.spec.parameters) {
+        e.values.set(p, trial.fit.parameters.value_or(p, 0.0));
+        e.uncertainty.set(p, trial.fit.uncertainty.value_or(p, 0.0));
+      }
+      for (std::size_t h = 0; h < s.spec.held.size(); ++h) e.values.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+      std::string why;
+      if (!trial.fit.converged) why = "the fit did not converge";
+      for (const auto& p : s.spec.parameters)
+        if (why.empty() && !trial.fit.uncertainty.contains(p)) why = p + " is pinned: not identifiable with the model";
+      if (why.empty() && trial.fit.identifiability.pinned != model.fit.identifiability.pinned)
+        why = "it makes a parameter of the model unidentifiable";
+      if (why.empty() && !(e.p_value < alpha))
+        why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
+      if (why.empty()) why = size_of(m, sets, o, e);
+      if (!why.empty()) {
+        rej.reason = why;
+        out.last_rejected.push_back(rej);
+        continue;
+      }
+      e.rms_before_um = model.fit.rms_after_um;
+      e.max_before_um = model.fit.max_after_um;
+      e.rms_after_um = trial.fit.rms_after_um;
+      e.max_after_um = trial.fit.max_after_um;
+      if (!best || e.rms_after_um < best->rms_after_um) {
+        if (best) out.last_rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
+        best = e;
+        best_model = trial;
+      } else {
+        out.last_rejected.push_back({e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
+      }
+    }
+    if (!best) {
+      out.stop_reason = screened.empty() || screened.front().p_linear >= alpha
+                            ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g})",
+                                          screened.empty() ? "none" : screened.front().spec.effect,
+                                          screened.empty() ? 1.0 : screened.front().p_linear)
+                            : "no significant candidate is identifiable and plausible";
+      break;
+    }
+    say(fmt::format("added {}: rms {:.3f} -> {:.3f} um (F = {:.4g}, p = {:.3g}, {} candidates)", best->candidate.effect,
+                    best->rms_before_um, best->rms_after_um, best->f_statistic, best->p_value, tested));
+    out.added.push_back(*best);
+    model = best_model;
+    const std::string added = best->candidate.effect;
+    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
+                    catalogue.end());
+    out.stop_reason = "max_effects reached";
+  }
+  // the values of earlier effects move in later refits: report the final ones
+  for (auto& e : out.added)
+    for (const auto& p : e.candidate.parameters) {
+      e.values.set(p, model.fit.parameters.value_or(p, 0.0));
+      e.uncertainty.set(p, model.fit.uncertainty.value_or(p, 0.0));
+    }
+  for (auto& e : out.added) size_of(m, sets, o, e);
+  out.final_fit = model.fit;
+  out.final_names = model.names;
+  out.held = model.held;
+  out.residual_after_mm = residual_of(m, sets, model, o.identify);
+  out.noise_um = noise_from_differences_um(sets, out.residual_after_mm);
+  out.before = residual_signature(m, sets, out.residual_before_mm);
+  out.after = residual_signature(m, sets, out.residual_after_mm);
+  return out;
+}
+
+ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
+  ModelFile f = to_model_file(m, r.final_fit);
+  f.effects_added = r.effects_added();
+  if (f.fit) {
+    f.fit->rms_before_um = r.basic.rms_after_um;
+    f.fit->max_before_um = r.basic.max_after_um;
+    f.fit->rms_after_um = r.final_fit.rms_after_um;
+    f.fit->max_after_um = r.final_fit.max_after_um;
+  }
+  return f;
+}
+
+}  // namespace ncpost::comp
