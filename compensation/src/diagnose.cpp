@@ -72,19 +72,18 @@ Eigen::VectorXd residual_times(const std::vector<MeasurementSet>& sets) {
 
 struct Screened {
   int candidate = -1;
-  Candidate spec;  ///< with the chosen tau for drift
+  Candidate spec;  ///< with the chosen drift terms and tau
   double drop = 0.0;
   double p_linear = 1.0;
-  std::string aliased;  ///< the parameter that is aliased, when not identifiable
+  Eigen::MatrixXd basis;                ///< orthonormal new directions it adds to the model
+  std::vector<std::string> equivalent;  ///< candidates with the same effect on these data
 };
 
-/// Drop in Σr² from adding the columns C to a model spanned by the orthonormal Q; empty
-/// `aliased` if every column keeps more than `tol` of itself.
-double projected_drop(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const Eigen::VectorXd& r, double tol,
-                      int& aliased_column) {
+/// Orthonormal directions that the columns C add to the span of the orthonormal Q; -1 in
+/// `aliased_column` if every column keeps more than `tol` of itself, else the first that does not.
+Eigen::MatrixXd added_basis(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, double tol, int& aliased_column) {
   Eigen::MatrixXd B(C.rows(), 0);
   aliased_column = -1;
-  double drop = 0.0;
   for (Eigen::Index j = 0; j < C.cols(); ++j) {
     const double norm = C.col(j).norm();
     Eigen::VectorXd c = C.col(j);
@@ -94,15 +93,101 @@ double projected_drop(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const 
     }
     if (!(norm > 0.0) || c.norm() <= tol * norm) {
       aliased_column = static_cast<int>(j);
-      return 0.0;
+      return B;
     }
-    c.normalize();
-    const double a = c.dot(r);
-    drop += a * a;
     B.conservativeResize(Eigen::NoChange, B.cols() + 1);
-    B.col(B.cols() - 1) = c;
+    B.col(B.cols() - 1) = c.normalized();
   }
-  return drop;
+  return B;
+}
+
+/// True if two candidates add the same directions (within `tol`): the data cannot tell them apart.
+bool same_directions(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double tol) {
+  if (a.cols() != b.cols() || a.cols() == 0) return false;
+  const Eigen::MatrixXd rest = b - a * (a.transpose() * b);
+  return rest.norm() <= tol * std::sqrt(double(b.cols()));
+}
+
+/// Drift screening: the time law's columns from the lin column (both are law(t) · d r / d
+/// drift), exp at a log-spaced grid of tau refined by a parabola in log tau; the simpler of lin
+/// or exp is kept, lin + exp only if the second term is significant on its own. Returns the
+/// aliased column or -1.
+int screen_drift(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const Eigen::VectorXd& r, const Eigen::VectorXd& t,
+                 double t_span, const DiagnoseOptions& o, Screened& s) {
+  const Eigen::Index count = C.rows();
+  const Eigen::VectorXd lin = C.col(0);
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(count);
+  for (Eigen::Index i = 0; i < count; ++i)
+    if (t[i] > 0) g[i] = lin[i] / t[i];
+  auto exp_column = [&](double tau) {
+    Eigen::VectorXd e(count);
+    for (Eigen::Index i = 0; i < count; ++i) e[i] = g[i] * (1.0 - std::exp(-t[i] / tau));
+    return e;
+  };
+  struct Fit {
+    double drop = -1.0;
+    Eigen::MatrixXd basis;
+    double tau = 0.0;
+  };
+  auto try_columns = [&](const Eigen::MatrixXd& cols, double tau, Fit& best) {
+    int a = -1;
+    Eigen::MatrixXd B = added_basis(Q, cols, o.alias_tolerance, a);
+    if (a >= 0) return -1.0;
+    const double d = (B.transpose() * r).squaredNorm();
+    if (d > best.drop) best = {d, B, tau};
+    return d;
+  };
+  const int grid = 60;
+  const double lo = std::log(30.0), hi = std::log(4.0 * t_span);
+  auto tau_at = [&](double k) { return std::exp(lo + (hi - lo) * k / grid); };
+  Fit lin_only, exp_only, both;
+  try_columns(lin, 0.0, lin_only);
+  std::vector<double> exp_drop(grid + 1, -1.0), both_drop(grid + 1, -1.0);
+  for (int k = 0; k <= grid; ++k) {
+    const Eigen::VectorXd e = exp_column(tau_at(k));
+    exp_drop[static_cast<std::size_t>(k)] = try_columns(e, tau_at(k), exp_only);
+    Eigen::MatrixXd two(count, 2);
+    two << lin, e;
+    both_drop[static_cast<std::size_t>(k)] = try_columns(two, tau_at(k), both);
+  }
+  // refine the best tau of each exp variant by a parabola through its grid neighbours
+  auto refine = [&](const std::vector<double>& drops, Fit& best, bool with_lin) {
+    const auto it = std::max_element(drops.begin(), drops.end());
+    const int k = static_cast<int>(it - drops.begin());
+    if (k == 0 || k == grid || drops[static_cast<std::size_t>(k - 1)] < 0 || drops[static_cast<std::size_t>(k + 1)] < 0) return;
+    const double a = drops[static_cast<std::size_t>(k - 1)], b = drops[static_cast<std::size_t>(k)], c = drops[static_cast<std::size_t>(k + 1)];
+    const double den = a - 2.0 * b + c;
+    if (!(den < 0.0)) return;
+    const double shift = 0.5 * (a - c) / den;
+    const double tau = tau_at(k + std::clamp(shift, -0.5, 0.5));
+    if (with_lin) {
+      Eigen::MatrixXd two(count, 2);
+      two << lin, exp_column(tau);
+      try_columns(two, tau, best);
+    } else {
+      try_columns(exp_column(tau), tau, best);
+    }
+  };
+  refine(exp_drop, exp_only, false);
+  refine(both_drop, both, true);
+  const Fit& single = exp_only.drop > lin_only.drop ? exp_only : lin_only;
+  if (single.drop < 0.0 && both.drop < 0.0) return 0;
+  const Fit* chosen = &single;
+  if (both.drop > single.drop) {
+    const double dof = double(count - Q.cols() - 2);
+    const double f = (both.drop - std::max(single.drop, 0.0)) / (std::max(r.squaredNorm() - both.drop, 1e-300) / dof);
+    if (single.drop < 0.0 || f_p_value(f, 1.0, dof) < 1e-2 * o.significance) chosen = &both;
+  }
+  s.drop = chosen->drop;
+  s.basis = chosen->basis;
+  s.spec.parameters.clear();
+  s.spec.held = ErrorParameters();
+  if (chosen == &lin_only || chosen == &both) s.spec.parameters.push_back(s.spec.effect + ":lin");
+  if (chosen != &lin_only) {
+    s.spec.parameters.push_back(s.spec.effect + ":exp");
+    s.spec.held.set(s.spec.effect + ":tau", chosen->tau);
+  }
+  return -1;
 }
 
 double command_range(const std::vector<MeasurementSet>& sets, int axis) {
@@ -145,14 +230,16 @@ std::string size_of(const Machine& m, const std::vector<MeasurementSet>& sets, c
       break;
     case CandidateKind::drift: {
       const double tau = e.values.value_or(c.effect + ":tau", 600.0);
+      const double lin = e.values.value_or(c.effect + ":lin", 0.0), amp = e.values.value_or(c.effect + ":exp", 0.0);
+      const double u_lin = e.uncertainty.value_or(c.effect + ":lin", 0.0), u_amp = e.uncertainty.value_or(c.effect + ":exp", 0.0);
       double largest = 0.0, t_end = 0.0;
       for (const auto& s : sets)
         for (const auto& row : s.rows) {
-          largest = std::max(largest, std::abs(v(0) * row.time_s + v(1) * (1.0 - std::exp(-row.time_s / tau))));
+          largest = std::max(largest, std::abs(lin * row.time_s + amp * (1.0 - std::exp(-row.time_s / tau))));
           t_end = std::max(t_end, row.time_s);
         }
       e.size = largest;
-      e.size_sigma = std::hypot(u(0) * t_end, u(1));
+      e.size_sigma = std::hypot(u_lin * t_end, u_amp);
       limit = o.plausible_drift_mm;
       break;
     }
@@ -263,34 +350,12 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
       int aliased = -1;
       if (s.spec.kind == CandidateKind::drift) {
-        // the exp column at any tau from the lin column: both are (time law) · d r / d drift
-        Eigen::VectorXd g = Eigen::VectorXd::Zero(count);
-        for (Eigen::Index i = 0; i < count; ++i)
-          if (times[i] > 0) g[i] = C(i, 0) / times[i];
-        double best = -1.0;
-        for (int k = 0; k <= 40; ++k) {
-          const double tau = 30.0 * std::pow(4.0 * t_span / 30.0, k / 40.0);
-          for (Eigen::Index i = 0; i < count; ++i) C(i, 1) = g[i] * (1.0 - std::exp(-times[i] / tau));
-          int a = -1;
-          const double d = projected_drop(Q, C, r, o.alias_tolerance, a);
-          if (a < 0 && d > best) {
-            best = d;
-            s.spec.held = ErrorParameters();
-            s.spec.held.set(s.spec.effect + ":tau", tau);
-          }
-          aliased = a;
-        }
-        if (best >= 0.0) {
-          aliased = -1;
-          s.drop = best;
-        }
+        aliased = screen_drift(Q, C, r, times, t_span, o, s);
       } else {
-        s.drop = projected_drop(Q, C, r, o.alias_tolerance, aliased);
+        s.basis = added_basis(Q, C, o.alias_tolerance, aliased);
+        s.drop = (s.basis.transpose() * r).squaredNorm();
       }
-      if (aliased >= 0) {
-        s.aliased = s.spec.parameters[static_cast<std::size_t>(aliased)];
-        continue;
-      }
+      if (aliased >= 0) continue;
       ++tested;
       const double k = double(s.spec.parameters.size());
       const double dof = double(count - p0) - k;
@@ -298,6 +363,31 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       screened.push_back(s);
     }
     std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
+    // candidates that act alike on these data form one class, represented by the first in
+    // catalogue order (e.g. EXC:h1 and EYC:h1 once the location offsets of C are in)
+    {
+      std::vector<Screened> classes;
+      const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
+      std::vector<bool> merged(screened.size(), false);
+      for (std::size_t i = 0; i < screened.size(); ++i) {
+        if (merged[i]) continue;
+        std::vector<std::size_t> members{i};
+        if (i < compare)
+          for (std::size_t j = i + 1; j < compare; ++j)
+            if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, 10.0 * o.alias_tolerance)) {
+              members.push_back(j);
+              merged[j] = true;
+            }
+        std::size_t lead = members.front();
+        for (std::size_t k : members)
+          if (screened[k].candidate < screened[lead].candidate) lead = k;
+        Screened c = screened[lead];
+        for (std::size_t k : members)
+          if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
+        classes.push_back(std::move(c));
+      }
+      screened = std::move(classes);
+    }
     const double alpha = o.significance / std::max(1, tested);
 
     // ---- 2. refit the best few and weigh the evidence
@@ -319,6 +409,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       const double dof = double(count - p1);
       AddedEffect e;
       e.candidate = s.spec;
+      e.equivalent = s.equivalent;
       e.tested = tested;
       e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
       e.p_value = f_p_value(e.f_statistic, k, dof);
@@ -370,6 +461,18 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
                     catalogue.end());
     out.stop_reason = "max_effects reached";
+  }
+  // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
+  // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
+  if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
+    IdentifyOptions weighted = o.identify;
+    for (const auto& f : model.fit.files) weighted.set_weights.push_back(1.0 / std::max(f.rms_after_um, 1e-3));
+    IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted);
+    if (refit.converged && refit.identifiability.pinned == model.fit.identifiability.pinned) {
+      model.fit = std::move(refit);
+      out.set_noise_um.clear();
+      for (const auto& f : model.fit.files) out.set_noise_um.push_back(f.rms_after_um);
+    }
   }
   // the values of earlier effects move in later refits: report the final ones
   for (auto& e : out.added)

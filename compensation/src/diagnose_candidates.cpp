@@ -41,6 +41,9 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
         add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
       }
   }
+  // squareness before the polynomials: EXY:p1 acts as EC0Y, EXZ:p1 as EB0Z, EYZ:p1 as EA0Z, and
+  // the ISO name is the one to give
+  for (const char* e : {"EC0Y", "EB0Z", "EA0Z"}) add({e, CandidateKind::squareness, {e}, {}, false});
   for (int i = 0; i < 3; ++i) {
     const char a = m.axes[static_cast<std::size_t>(i)].letter;
     for (int order = 1; order <= 3; ++order)
@@ -49,7 +52,6 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
         add({e, CandidateKind::component, {e}, {}, false});
       }
   }
-  for (const char* e : {"EC0Y", "EB0Z", "EA0Z"}) add({e, CandidateKind::squareness, {e}, {}, false});
   for (std::size_t i = 0; i < m.axes.size(); ++i)
     if (axis_falls(sets, static_cast<int>(i))) {
       const std::string e = fmt::format("reversal:{}", m.axes[i].letter);

@@ -98,6 +98,11 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
     o += fmt::format("  {}. added {:<16} {} {}; rms {:.3f} -> {:.3f} µm, max {:.3f} -> {:.3f} µm (F = {:.4g}, p = {:.2g}, {} candidates{})\n",
                      i + 1, e.candidate.effect, what_size(e), size_text(e), e.rms_before_um, e.rms_after_um, e.max_before_um,
                      e.max_after_um, e.f_statistic, e.p_value, e.tested, e.candidate.measurement_only ? "; measuring only, not posted" : "");
+    if (!e.equivalent.empty()) {
+      std::string list;
+      for (const auto& q : e.equivalent) list += (list.empty() ? "" : ", ") + q;
+      o += "       the data cannot tell it from " + list + " (same signature; named by catalogue order)\n";
+    }
     for (std::size_t p = 0; p < e.values.size(); ++p) {
       const std::string& n = e.values.names()[p];
       const ReportValue v = report_value(m, n, e.values.values()[p]);
@@ -162,7 +167,11 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
   for (const auto& e : d.added)
     h += fmt::format("<tr><td class=n>{}</td><td class=n>{} {}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
                      "<td>{:.4g}</td><td>{:.2g}</td><td class=n>{}</td></tr>",
-                     escape(e.candidate.effect), what_size(e), size_text(e), e.rms_before_um, e.rms_after_um, e.max_before_um,
+                     escape(e.candidate.effect) + (e.equivalent.empty() ? std::string() : " (≡ " + [&] {
+                       std::string l;
+                       for (const auto& q : e.equivalent) l += (l.empty() ? "" : ", ") + q;
+                       return l;
+                     }() + ")"), what_size(e), size_text(e), e.rms_before_um, e.rms_after_um, e.max_before_um,
                      e.max_after_um, e.f_statistic, e.p_value, e.candidate.measurement_only ? "no (measuring only)" : "yes");
   h += "</table>";
   if (!d.last_rejected.empty()) {

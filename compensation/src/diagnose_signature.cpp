@@ -2,6 +2,7 @@
 
 #include <Eigen/QR>
 #include <cmath>
+#include <algorithm>
 #include <set>
 
 namespace ncpost::comp {
@@ -54,8 +55,14 @@ ResidualSignature residual_signature(const Machine& m, const std::vector<Measure
       for (int k = 0; k < m.rotary_count(); ++k) {
         const int index = 3 + k;
         std::set<long long> distinct;
-        for (const auto& row : s.rows) distinct.insert(std::llround(row.command[index] * 1e6));
-        if (distinct.size() < 9) continue;
+        double lo = 1e300, hi = -1e300;
+        for (const auto& row : s.rows) {
+          distinct.insert(std::llround(row.command[index] * 1e6));
+          lo = std::min(lo, row.command[index]);
+          hi = std::max(hi, row.command[index]);
+        }
+        // harmonics separate only over (nearly) a full turn
+        if (distinct.size() < 9 || hi - lo < 1.5 * kPi) continue;
         Eigen::MatrixXd A(static_cast<Eigen::Index>(rows), 9);
         Eigen::VectorXd b(static_cast<Eigen::Index>(rows));
         for (std::size_t i = 0; i < rows; ++i) {

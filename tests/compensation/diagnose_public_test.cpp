@@ -64,3 +64,34 @@ TEST_CASE("diagnose public-clean: nothing added", "[diagnose]") {
   CHECK(d.effects_added().empty());
   CHECK(d.final_fit.rms_after_um == Approx(d.basic.rms_after_um));
 }
+
+TEST_CASE("diagnose public-ezc: which parameter limits the prediction", "[.debug]") {
+  const std::string dir = test::public_scenario("public-ezc");
+  const Machine m = load_machine(dir + "machine.toml");
+  const ModelFile truth = read_model_json(dir + "truth.json", &m);
+  const DiagnoseResult d = test::run_diagnose("public-ezc", m, read_sets(dir, m));
+  for (std::size_t i = 0; i < truth.parameters.size(); ++i) {
+    const std::string& n = truth.parameters.names()[i];
+    ErrorParameters fixed = d.final_fit.parameters;
+    fixed.set(n, truth.parameters.values()[i]);
+    printf("%-12s truth %.6g fit %.6g +- %.2g (%.1f sigma); prediction with it at truth %.3f um\n", n.c_str(),
+           truth.parameters.values()[i], d.final_fit.parameters.value_or(n, 0), d.final_fit.uncertainty.value_or(n, 0),
+           (d.final_fit.parameters.value_or(n, 0) - truth.parameters.values()[i]) / d.final_fit.uncertainty.value_or(n, 1),
+           test::worst_prediction_um(m, truth.parameters, fixed, nullptr));
+  }
+  IdentifyResult plain = identify(m, read_sets(dir, m), [&] { auto b = basic_parameters(m); b.push_back("EZC:h1:cos"); b.push_back("EZC:h1:sin"); return b; }());
+  printf("unweighted fit: %.3f um\n", test::worst_prediction_um(m, truth.parameters, plain.parameters, nullptr));
+}
+
+TEST_CASE("diagnose public-ezc: sphere residual by component", "[.debug2]") {
+  const std::string dir = test::public_scenario("public-ezc");
+  const Machine m = load_machine(dir + "machine.toml");
+  const auto sets = read_sets(dir, m);
+  const DiagnoseResult d = test::run_diagnose("public-ezc", m, sets);
+  const Eigen::Index at = static_cast<Eigen::Index>(sets[0].rows.size() + sets[1].rows.size());
+  for (int c = 0; c < 3; ++c) {
+    double s = 0;
+    for (std::size_t k = 0; k < sets[2].rows.size(); ++k) s += std::pow(d.residual_after_mm[at + 3 * Eigen::Index(k) + c], 2);
+    printf("component %d rms %.3f um\n", c, 1e3 * std::sqrt(s / double(sets[2].rows.size())));
+  }
+}

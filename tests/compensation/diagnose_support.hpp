@@ -67,6 +67,7 @@ inline comp::DiagnoseResult run_diagnose(const char* title, const Machine& m, co
   for (const auto& e : d.added) {
     std::printf("  + %-16s size %.4g +- %.2g (rms %.3f -> %.3f um, F %.4g, p %.3g)\n", e.candidate.effect.c_str(), e.size,
                 e.size_sigma, e.rms_before_um, e.rms_after_um, e.f_statistic, e.p_value);
+    for (const auto& q : e.equivalent) std::printf("      (equivalent on these data: %s)\n", q.c_str());
     for (std::size_t i = 0; i < e.values.size(); ++i)
       std::printf("      %-18s %.6g +- %.2g\n", e.values.names()[i].c_str(), e.values.values()[i],
                   e.uncertainty.value_or(e.values.names()[i], 0.0));
@@ -74,6 +75,10 @@ inline comp::DiagnoseResult run_diagnose(const char* title, const Machine& m, co
   for (const auto& r : d.last_rejected)
     std::printf("  - %-16s rms %.3f um, p %.3g: %s\n", r.effect.c_str(), r.rms_after_um, r.p_value, r.reason.c_str());
   std::printf("  stop: %s\n", d.stop_reason.c_str());
+  for (std::size_t i = 0; i < d.final_fit.files.size(); ++i)
+    std::printf("  %-20s rms %.3f -> %.3f um, max %.3f -> %.3f um\n", d.final_fit.files[i].file.c_str(),
+                d.basic.files[i].rms_after_um, d.final_fit.files[i].rms_after_um, d.basic.files[i].max_after_um,
+                d.final_fit.files[i].max_after_um);
   return d;
 }
 

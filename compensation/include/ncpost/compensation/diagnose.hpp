@@ -22,6 +22,9 @@
 //     the refit pins none of its parameters and none of the model's (rank check), and if its
 //     size is physically plausible (DiagnoseOptions). The best accepted one by S1 is added.
 //  3. Repeat until no candidate is accepted or `max_effects` are in.
+//  4. Sets differ in noise (a touch probe is noisier than a ballbar): the final model is refitted
+//     by weighted least squares, each set weighted by 1/σ with σ its residual rms under the final
+//     model (`weight_by_set_noise`); the basic model's fit stays as it was (the "before").
 // Units: parameters mm / rad / s, residual statistics µm.
 #include <functional>
 #include <string>
@@ -43,6 +46,7 @@ struct DiagnoseOptions {
   double plausible_angle_rad = 5e-4; ///< (≈ 100 arcsec)
   double plausible_drift_mm = 0.2;   ///< over the data's time span
   double plausible_instrument_mm = 0.5;
+  bool weight_by_set_noise = true;   ///< final refit weighted by each set's noise (see below)
   std::function<void(const std::string&)> progress;  ///< one line per step (optional)
 
   std::string validate() const;
@@ -51,6 +55,7 @@ struct DiagnoseOptions {
 /// An effect added to the model.
 struct AddedEffect {
   Candidate candidate;
+  std::vector<std::string> equivalent;  ///< effects the data cannot tell from it (same signature)
   ErrorParameters values;       ///< its fitted parameters (and held ones), mm / rad / s
   ErrorParameters uncertainty;  ///< 1σ of the fitted ones
   double size = 0.0;            ///< amplitude (harmonic √(cos² + sin²)), value, play, drift over the span (mm / rad)
@@ -78,6 +83,7 @@ struct DiagnoseResult {
   std::vector<AddedEffect> added;
   std::vector<RejectedEffect> last_rejected;
   double noise_um = 0.0;                ///< noise estimated from the data (diagnose_signature.hpp)
+  std::vector<double> set_noise_um;     ///< per set: residual rms of the final model (its weight 1/σ)
   ResidualSignature before, after;
   Eigen::VectorXd residual_before_mm, residual_after_mm;
   std::string stop_reason;

@@ -32,8 +32,9 @@ struct Candidate {
 };
 
 /// Every candidate the machine and the data allow, minus those whose parameters are all in
-/// `present`. Order: component errors axis by axis, squareness, reversal, drift, instruments
-/// (the order breaks ties between candidates that explain the data equally).
+/// `present`. Order: rotary component errors axis by axis, squareness, linear component errors,
+/// reversal, drift, instruments. The order names a class of candidates that act alike on the data
+/// (e.g. EC0Y and EXY:p1, the degree-1 straightness that is a squareness): the first is given.
 std::vector<Candidate> candidate_catalogue(const Machine& machine, const std::vector<MeasurementSet>& sets,
                                            const std::vector<std::string>& present);
 

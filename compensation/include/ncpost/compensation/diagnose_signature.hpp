@@ -6,7 +6,7 @@
 // Residual = predicted − measured, per value (ballbar L; sphere dx, dy, dz; laser e), in µm.
 //   spectrum    least-squares fit of c0 + Σ_k (a_k cos kq + b_k sin kq), k = 1..4, q the rotary
 //               command (rad); amplitude_um[k−1] = √(a_k² + b_k²). Only where q takes at least 9
-//               distinct values.
+//               distinct values over at least 270° (the harmonics separate only over most of a turn).
 //   reversal    direction d = +1 if the axis last moved up (the first row counts as from below),
 //               −1 if it last moved down; Pearson correlation of the residual with d and the
 //               mean residual of falling minus rising rows (µm). Only axes that move both ways.
