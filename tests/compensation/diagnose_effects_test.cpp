@@ -80,10 +80,20 @@ void check_case(const Case& c, std::uint64_t seed) {
     return;
   }
   const std::string out = std::string("diagnose_effects_") + std::to_string(seed) + ".nc";
-  const double cut_mm = c.extra.names().front().rfind("reversal:", 0) == 0
-                            ? test::compensated_cut_with_reversal_mm(m, d.final_fit.parameters, truth)
-                            : test::compensated_cut_mm(m, d.final_fit.parameters, truth, out);
+  const bool reversal = c.extra.names().front().rfind("reversal:", 0) == 0;
+  auto cut = [&](const ErrorParameters& model, double* ends_mm) {
+    return reversal ? test::compensated_cut_with_reversal_mm(m, model, truth, ends_mm)
+                    : test::compensated_cut_mm(m, model, truth, out, ends_mm);
+  };
+  double ends_mm = 0.0, basic_ends_mm = 0.0;
+  const double cut_mm = cut(d.final_fit.parameters, &ends_mm);
   CHECK(cut_mm <= 0.006);
+  // the same post with the basic model only: the added effect is what keeps the cut within 6 um
+  const double basic_cut_mm = cut(d.basic.parameters, &basic_ends_mm);
+  std::printf("  cut with the basic model %.4f mm (block ends %.4f), with the final model %.4f mm (block ends %.4f)\n",
+              basic_cut_mm, basic_ends_mm, cut_mm, ends_mm);
+  CHECK(basic_cut_mm > 0.006);
+  CHECK(ends_mm < 0.5 * basic_ends_mm);
 }
 
 ErrorParameters params(std::initializer_list<std::pair<const char*, double>> list) {

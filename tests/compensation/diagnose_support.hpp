@@ -127,9 +127,11 @@ class CompensatedOnTruth final : public MotionSolver {
 
 /// `post` of the dome path (public-clean path.cls, job.json set-up) with the identified model:
 /// compensated IK and adaptive subdivision to 5 um on the identified machine, 4-decimal words;
-/// returns the largest contour error of the written program executed on the truth (mm).
+/// returns the largest contour error of the written program executed on the truth (mm);
+/// `endpoint_mm` gets the largest error at block ends (model mismatch and 4-decimal rounding).
 inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& identified_parameters,
-                                 const comp::ErrorParameters& truth_parameters, const std::string& out_path) {
+                                 const comp::ErrorParameters& truth_parameters, const std::string& out_path,
+                                 double* endpoint_mm = nullptr) {
   const comp::MachineModel identified(m, identified_parameters), truth(m, truth_parameters);
   const Setup setup = dome_setup();
   const CompensatedOnTruth solver(identified, truth, setup);
@@ -155,8 +157,9 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
   NcWriter writer(out, dialect_named("fanuc"), "XYZAC");
   const PostSummary s = post_program(reader, "path.cls", solver, writer, options);
   out.commit();
-  std::printf("  compensated cut on the truth: %zu motions -> %zu blocks, contour error %.4f mm (line %d)\n", s.motions_in,
-              s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line);
+  std::printf("  compensated cut on the truth: %zu motions -> %zu blocks, contour error %.4f mm (line %d), block ends "
+              "%.4f mm\n", s.motions_in, s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line, s.verify.max_endpoint_mm);
+  if (endpoint_mm) *endpoint_mm = s.verify.max_endpoint_mm;
   return s.verify.max_contour_mm;
 }
 
@@ -166,12 +169,14 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
 /// dead band (the actual angle of each axis from where it actually stood). The dome path turns
 /// each rotary axis one way only, so the dead-band offset is constant along each block.
 inline double compensated_cut_with_reversal_mm(const Machine& m, const comp::ErrorParameters& identified_parameters,
-                                               const comp::ErrorParameters& truth_parameters) {
+                                               const comp::ErrorParameters& truth_parameters,
+                                               double* endpoint_mm = nullptr) {
   const comp::MachineModel identified(m, identified_parameters), truth(m, truth_parameters);
   const Setup s = dome_setup();
   const auto path = read_gotos(dome_path());
   AxisPosition previous;
   std::optional<AxisPosition> actual_identified, actual_truth;
+  if (endpoint_mm) *endpoint_mm = 0.0;
   nonlinear::AdaptiveOptions o;
   o.tolerance_mm = 0.005;
   double worst = 0.0;
@@ -202,12 +207,15 @@ inline double compensated_cut_with_reversal_mm(const Machine& m, const comp::Err
       nonlinear::SplitBlock check = split;
       nonlinear::verify_split(m, s, b, check, truth.errors(st_truth));
       worst = std::max(worst, check.max_error_mm);
+      if (endpoint_mm)
+        *endpoint_mm = std::max(*endpoint_mm, (truth.tool_pose(q, s, st_truth).tip_mm - path[i].point.tip_mm).norm());
     }
     actual_identified = offsets(st_id, q);
     actual_truth = offsets(st_truth, q);
     previous = q;
   }
-  std::printf("  compensated cut on the truth with reversal: contour error %.4f mm\n", worst);
+  std::printf("  compensated cut on the truth with reversal: contour error %.4f mm, block ends %.4f mm\n", worst,
+              endpoint_mm ? *endpoint_mm : 0.0);
   return worst;
 }
 
