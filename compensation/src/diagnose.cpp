@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -188,6 +189,50 @@ int screen_drift(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const Eigen
     s.spec.held.set(s.spec.effect + ":tau", chosen->tau);
   }
   return -1;
+}
+
+/// Re-chooses the time constant of every drift in the model by refits (its screening chose it
+/// with the model of that step: effects added later change the best value): the sum of squares
+/// at tau·2^(j/2), j = −2..2 (moved on while the best is at an end, up to 4 times), then a
+/// parabola in log tau through the best and its neighbours.
+void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o, double t_span,
+                  Model& model, Eigen::Index count) {
+  const std::vector<std::string> held = model.held.names();
+  const double step = 0.5 * std::log(2.0), lo = std::log(30.0), hi = std::log(4.0 * t_span);
+  for (const auto& name : held) {
+    if (name.size() < 4 || name.substr(name.size() - 4) != ":tau") continue;
+    std::map<int, std::pair<double, Model>> fits;  // grid index → (sum of squares, fit)
+    const double origin = std::log(*model.held.get(name));
+    auto at = [&](int j) -> double {
+      auto it = fits.find(j);
+      if (it != fits.end()) return it->second.first;
+      const double log_tau = origin + step * j;
+      if (log_tau < lo || log_tau > hi) return 1e300;
+      Model trial = model;
+      trial.held.set(name, std::exp(log_tau));
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      const double ssr = trial.fit.converged ? sum_of_squares(trial.fit, count) : 1e300;
+      fits.emplace(j, std::make_pair(ssr, std::move(trial)));
+      return ssr;
+    };
+    int best = 0;
+    for (int j = -2; j <= 2; ++j)
+      if (at(j) < at(best)) best = j;
+    for (int moves = 0; moves < 4 && (at(best - 1) < at(best) || at(best + 1) < at(best)); ++moves)
+      best = at(best - 1) < at(best + 1) ? best - 1 : best + 1;
+    Model chosen = fits.at(best).second;
+    double chosen_ssr = at(best);
+    const double a = at(best - 1), c = at(best + 1), den = a - 2.0 * chosen_ssr + c;
+    if (a < 1e299 && c < 1e299 && den > 0.0) {
+      const double shift = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+      Model refined = model;
+      refined.held.set(name, std::exp(origin + step * (best + shift)));
+      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify);
+      const double r = sum_of_squares(refined.fit, count);
+      if (refined.fit.converged && r < chosen_ssr) chosen = std::move(refined), chosen_ssr = r;
+    }
+    if (chosen.fit.converged && chosen.fit.identifiability.pinned == model.fit.identifiability.pinned) model = std::move(chosen);
+  }
 }
 
 double command_range(const std::vector<MeasurementSet>& sets, int axis) {
@@ -457,6 +502,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
                     best->rms_before_um, best->rms_after_um, best->f_statistic, best->p_value, tested));
     out.added.push_back(*best);
     model = best_model;
+    retune_drift(m, sets, o, t_span, model, count);
     const std::string added = best->candidate.effect;
     catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
                     catalogue.end());
@@ -475,11 +521,18 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     }
   }
   // the values of earlier effects move in later refits: report the final ones
-  for (auto& e : out.added)
+  for (auto& e : out.added) {
     for (const auto& p : e.candidate.parameters) {
       e.values.set(p, model.fit.parameters.value_or(p, 0.0));
       e.uncertainty.set(p, model.fit.uncertainty.value_or(p, 0.0));
     }
+    for (std::size_t h = 0; h < e.candidate.held.size(); ++h) {
+      const std::string& n = e.candidate.held.names()[h];
+      const double v = model.held.value_or(n, e.candidate.held.values()[h]);
+      e.candidate.held.set(n, v);
+      e.values.set(n, v);
+    }
+  }
   for (auto& e : out.added) size_of(m, sets, o, e);
   out.final_fit = model.fit;
   out.final_names = model.names;

@@ -21,7 +21,10 @@
 //     (Bonferroni: the family-wise false-positive rate of a step stays below `significance`), if
 //     the refit pins none of its parameters and none of the model's (rank check), and if its
 //     size is physically plausible (DiagnoseOptions). The best accepted one by S1 is added.
-//  3. Repeat until no candidate is accepted or `max_effects` are in.
+//  3. After each addition the time constant of every drift in the model is chosen again by
+//     refits (tau·2^(j/2), j = −2..2, moved on while the best is at an end, refined by a
+//     parabola): the effects added later change it.
+//     Repeat until no candidate is accepted or `max_effects` are in.
 //  4. Sets differ in noise (a touch probe is noisier than a ballbar): the final model is refitted
 //     by weighted least squares, each set weighted by 1/σ with σ its residual rms under the final
 //     model (`weight_by_set_noise`); the basic model's fit stays as it was (the "before").
