@@ -492,9 +492,10 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     }
     if (!best) {
       out.stop_reason = screened.empty() || screened.front().p_linear >= alpha
-                            ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g})",
+                            ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g}; "
+                                          "needs < {:.3g})",
                                           screened.empty() ? "none" : screened.front().spec.effect,
-                                          screened.empty() ? 1.0 : screened.front().p_linear)
+                                          screened.empty() ? 1.0 : screened.front().p_linear, alpha)
                             : "no significant candidate is identifiable and plausible";
       break;
     }

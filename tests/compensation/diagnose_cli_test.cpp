@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include "diagnose_support.hpp"
 #include "ncpost/compensation/model_json.hpp"
 
 namespace fs = std::filesystem;
@@ -80,5 +81,18 @@ TEST_CASE("identify on the command line: effects found, before / after, measurin
   REQUIRE(basic.fit);
   CHECK(basic.fit->rms_after_um == Approx(model.fit->rms_before_um).epsilon(1e-3));
   CHECK(read(d + "log").find("residual analysis") == std::string::npos);
+
+  // the dome path posted with each model (compensated IK, 5 um adaptive subdivision, 4 decimals),
+  // executed on the truth machine (the drift is not part of it: measuring only)
+  const ncpost::Machine m = ncpost::test::public_machine();
+  const ncpost::comp::ErrorParameters truth = ncpost::comp::read_model_json(d + "truth.json", &m).parameters;
+  double ends_final = 0.0, ends_basic = 0.0;
+  const double cut_final = ncpost::test::compensated_cut_mm(m, model.parameters, truth, d + "final.nc", &ends_final);
+  const double cut_basic = ncpost::test::compensated_cut_mm(m, basic.parameters, truth, d + "basic.nc", &ends_basic);
+  std::printf("dome on the truth: basic model %.4f mm (block ends %.4f), final model %.4f mm (block ends %.4f)\n", cut_basic,
+              ends_basic, cut_final, ends_final);
+  CHECK(cut_final <= 0.006);
+  CHECK(ends_final < 0.5e-3);
+  CHECK(cut_basic > cut_final);
   fs::remove_all(dir);
 }
