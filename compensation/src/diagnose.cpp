@@ -4,24 +4,18 @@
 
 #include <Eigen/QR>
 #include <algorithm>
-#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <map>
 #include <optional>
 #include <stdexcept>
 
+#include "ncpost/compensation/diagnose_effect_size.hpp"
+#include "ncpost/compensation/diagnose_screening.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/compensation/residuals.hpp"
 
 namespace ncpost::comp {
 namespace {
-
-/// Upper tail probability of the F distribution.
-double f_p_value(double f, double k, double dof) {
-  if (!(f > 0.0) || k < 1 || dof < 1) return 1.0;
-  const boost::math::fisher_f_distribution<double> dist(k, dof);
-  return boost::math::cdf(boost::math::complement(dist, f));
-}
 
 double sum_of_squares(const IdentifyResult& r, Eigen::Index m) {
   const double rms_mm = 1e-3 * r.rms_after_um;
@@ -80,117 +74,6 @@ struct Screened {
   std::vector<std::string> equivalent;  ///< candidates with the same effect on these data
 };
 
-/// Orthonormal directions that the columns C add to the span of the orthonormal Q; -1 in
-/// `aliased_column` if every column keeps more than `tol` of itself, else the first that does not.
-Eigen::MatrixXd added_basis(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, double tol, int& aliased_column) {
-  Eigen::MatrixXd B(C.rows(), 0);
-  aliased_column = -1;
-  for (Eigen::Index j = 0; j < C.cols(); ++j) {
-    const double norm = C.col(j).norm();
-    Eigen::VectorXd c = C.col(j);
-    for (int pass = 0; pass < 2; ++pass) {
-      c -= Q * (Q.transpose() * c);
-      c -= B * (B.transpose() * c);
-    }
-    if (!(norm > 0.0) || c.norm() <= tol * norm) {
-      aliased_column = static_cast<int>(j);
-      return B;
-    }
-    B.conservativeResize(Eigen::NoChange, B.cols() + 1);
-    B.col(B.cols() - 1) = c.normalized();
-  }
-  return B;
-}
-
-/// True if two candidates add the same directions (within `tol`): the data cannot tell them apart.
-bool same_directions(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double tol) {
-  if (a.cols() != b.cols() || a.cols() == 0) return false;
-  const Eigen::MatrixXd rest = b - a * (a.transpose() * b);
-  return rest.norm() <= tol * std::sqrt(double(b.cols()));
-}
-
-/// Drift screening: the time law's columns from the lin column (both are law(t) · d r / d
-/// drift), exp at a log-spaced grid of tau refined by a parabola in log tau; the simpler of lin
-/// or exp is kept, lin + exp only if the second term is significant on its own. Returns the
-/// aliased column or -1.
-int screen_drift(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& C, const Eigen::VectorXd& r, const Eigen::VectorXd& t,
-                 double t_span, const DiagnoseOptions& o, Screened& s) {
-  const Eigen::Index count = C.rows();
-  const Eigen::VectorXd lin = C.col(0);
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(count);
-  for (Eigen::Index i = 0; i < count; ++i)
-    if (t[i] > 0) g[i] = lin[i] / t[i];
-  auto exp_column = [&](double tau) {
-    Eigen::VectorXd e(count);
-    for (Eigen::Index i = 0; i < count; ++i) e[i] = g[i] * (1.0 - std::exp(-t[i] / tau));
-    return e;
-  };
-  struct Fit {
-    double drop = -1.0;
-    Eigen::MatrixXd basis;
-    double tau = 0.0;
-  };
-  auto try_columns = [&](const Eigen::MatrixXd& cols, double tau, Fit& best) {
-    int a = -1;
-    Eigen::MatrixXd B = added_basis(Q, cols, o.alias_tolerance, a);
-    if (a >= 0) return -1.0;
-    const double d = (B.transpose() * r).squaredNorm();
-    if (d > best.drop) best = {d, B, tau};
-    return d;
-  };
-  const int grid = 60;
-  const double lo = std::log(30.0), hi = std::log(4.0 * t_span);
-  auto tau_at = [&](double k) { return std::exp(lo + (hi - lo) * k / grid); };
-  Fit lin_only, exp_only, both;
-  try_columns(lin, 0.0, lin_only);
-  std::vector<double> exp_drop(grid + 1, -1.0), both_drop(grid + 1, -1.0);
-  for (int k = 0; k <= grid; ++k) {
-    const Eigen::VectorXd e = exp_column(tau_at(k));
-    exp_drop[static_cast<std::size_t>(k)] = try_columns(e, tau_at(k), exp_only);
-    Eigen::MatrixXd two(count, 2);
-    two << lin, e;
-    both_drop[static_cast<std::size_t>(k)] = try_columns(two, tau_at(k), both);
-  }
-  // refine the best tau of each exp variant by a parabola through its grid neighbours
-  auto refine = [&](const std::vector<double>& drops, Fit& best, bool with_lin) {
-    const auto it = std::max_element(drops.begin(), drops.end());
-    const int k = static_cast<int>(it - drops.begin());
-    if (k == 0 || k == grid || drops[static_cast<std::size_t>(k - 1)] < 0 || drops[static_cast<std::size_t>(k + 1)] < 0) return;
-    const double a = drops[static_cast<std::size_t>(k - 1)], b = drops[static_cast<std::size_t>(k)], c = drops[static_cast<std::size_t>(k + 1)];
-    const double den = a - 2.0 * b + c;
-    if (!(den < 0.0)) return;
-    const double shift = 0.5 * (a - c) / den;
-    const double tau = tau_at(k + std::clamp(shift, -0.5, 0.5));
-    if (with_lin) {
-      Eigen::MatrixXd two(count, 2);
-      two << lin, exp_column(tau);
-      try_columns(two, tau, best);
-    } else {
-      try_columns(exp_column(tau), tau, best);
-    }
-  };
-  refine(exp_drop, exp_only, false);
-  refine(both_drop, both, true);
-  const Fit& single = exp_only.drop > lin_only.drop ? exp_only : lin_only;
-  if (single.drop < 0.0 && both.drop < 0.0) return 0;
-  const Fit* chosen = &single;
-  if (both.drop > single.drop) {
-    const double dof = double(count - Q.cols() - 2);
-    const double f = (both.drop - std::max(single.drop, 0.0)) / (std::max(r.squaredNorm() - both.drop, 1e-300) / dof);
-    if (single.drop < 0.0 || f_p_value(f, 1.0, dof) < 1e-2 * o.significance) chosen = &both;
-  }
-  s.drop = chosen->drop;
-  s.basis = chosen->basis;
-  s.spec.parameters.clear();
-  s.spec.held = ErrorParameters();
-  if (chosen == &lin_only || chosen == &both) s.spec.parameters.push_back(s.spec.effect + ":lin");
-  if (chosen != &lin_only) {
-    s.spec.parameters.push_back(s.spec.effect + ":exp");
-    s.spec.held.set(s.spec.effect + ":tau", chosen->tau);
-  }
-  return -1;
-}
-
 /// Re-chooses the time constant of every drift in the model by refits (its screening chose it
 /// with the model of that step: effects added later change the best value): the sum of squares
 /// at tau·2^(j/2), j = −2..2 (moved on while the best is at an end, up to 4 times), then a
@@ -235,72 +118,13 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
   }
 }
 
-double command_range(const std::vector<MeasurementSet>& sets, int axis) {
-  double r = 0.0;
-  for (const auto& s : sets)
-    for (const auto& row : s.rows) r = std::max(r, std::abs(row.command[axis]));
-  return r;
-}
-
-/// Size of an effect with its uncertainty (AddedEffect::size), and whether it is plausible.
-std::string size_of(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o,
-                    AddedEffect& e) {
-  const Candidate& c = e.candidate;
-  const auto v = [&](std::size_t i) { return e.values.value_or(c.parameters[i], 0.0); };
-  const auto u = [&](std::size_t i) { return e.uncertainty.value_or(c.parameters[i], 0.0); };
-  const ParameterSpec spec = *parse_parameter_name(c.parameters[0], m).spec;
-  double limit = o.plausible_length_mm;
-  switch (c.kind) {
-    case CandidateKind::component:
-      e.size_is_angle = spec.component >= 3;
-      if (spec.kind == ParameterKind::harmonic) {
-        e.size = std::hypot(v(0), v(1));
-        e.size_sigma = e.size > 0 ? std::hypot(v(0) * u(0), v(1) * u(1)) / e.size : std::hypot(u(0), u(1));
-      } else {
-        const double reach = std::pow(std::max(1.0, command_range(sets, spec.axis_index)), spec.order);
-        e.size = std::abs(v(0)) * reach;
-        e.size_sigma = u(0) * reach;
-      }
-      break;
-    case CandidateKind::squareness:
-      e.size_is_angle = true;
-      e.size = std::abs(v(0));
-      e.size_sigma = u(0);
-      break;
-    case CandidateKind::reversal:
-      e.size_is_angle = m.axes[static_cast<std::size_t>(spec.axis_index)].is_rotary();
-      e.size = v(0);
-      e.size_sigma = u(0);
-      if (e.size <= 0.0) return "a negative play is not physical";
-      break;
-    case CandidateKind::drift: {
-      const double tau = e.values.value_or(c.effect + ":tau", 600.0);
-      const double lin = e.values.value_or(c.effect + ":lin", 0.0), amp = e.values.value_or(c.effect + ":exp", 0.0);
-      const double u_lin = e.uncertainty.value_or(c.effect + ":lin", 0.0), u_amp = e.uncertainty.value_or(c.effect + ":exp", 0.0);
-      double largest = 0.0, t_end = 0.0;
-      for (const auto& s : sets)
-        for (const auto& row : s.rows) {
-          largest = std::max(largest, std::abs(lin * row.time_s + amp * (1.0 - std::exp(-row.time_s / tau))));
-          t_end = std::max(t_end, row.time_s);
-        }
-      e.size = largest;
-      e.size_sigma = std::hypot(u_lin * t_end, u_amp);
-      limit = o.plausible_drift_mm;
-      break;
-    }
-    case CandidateKind::instrument: {
-      double sq = 0.0, su = 0.0;
-      for (std::size_t i = 0; i < c.parameters.size(); ++i) sq += v(i) * v(i), su += u(i) * u(i);
-      e.size = std::sqrt(sq);
-      e.size_sigma = std::sqrt(su);
-      limit = o.plausible_instrument_mm;
-      break;
-    }
-  }
-  if (e.size_is_angle) limit = o.plausible_angle_rad;
-  if (std::abs(e.size) > limit)
-    return fmt::format("size {:.4g} {} is beyond the plausible {:.4g}", e.size, e.size_is_angle ? "rad" : "mm", limit);
-  return {};
+/// Sets the size of an added effect; returns why it is not plausible (empty if it is).
+std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o, AddedEffect& e) {
+  const EffectSize size = effect_size(m, sets, e.candidate, e.values, e.uncertainty, o.plausible);
+  e.size = size.size;
+  e.size_sigma = size.sigma;
+  e.size_is_angle = size.is_angle;
+  return size.implausible;
 }
 
 }  // namespace
@@ -311,8 +135,7 @@ std::string DiagnoseOptions::validate() const {
   if (max_effects < 0) return "max_effects must not be negative";
   if (refit_top < 1) return "refit_top must be at least 1";
   if (!(alias_tolerance > 0.0 && alias_tolerance < 1.0)) return "alias_tolerance must be in (0, 1)";
-  if (!(plausible_length_mm > 0 && plausible_angle_rad > 0 && plausible_drift_mm > 0 && plausible_instrument_mm > 0))
-    return "the plausible sizes must be positive";
+  if (!plausible.valid()) return "the plausible sizes must be positive";
   return {};
 }
 
@@ -395,7 +218,12 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
       int aliased = -1;
       if (s.spec.kind == CandidateKind::drift) {
-        aliased = screen_drift(Q, C, r, times, t_span, o, s);
+        const DriftScreen drift = screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
+        aliased = drift.aliased ? 0 : -1;
+        s.spec.parameters = drift.parameters;
+        s.spec.held = drift.held;
+        s.drop = drift.drop;
+        s.basis = drift.basis;
       } else {
         s.basis = added_basis(Q, C, o.alias_tolerance, aliased);
         s.drop = (s.basis.transpose() * r).squaredNorm();
@@ -404,7 +232,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       ++tested;
       const double k = double(s.spec.parameters.size());
       const double dof = double(count - p0) - k;
-      s.p_linear = f_p_value((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
+      s.p_linear = f_upper_tail((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
       screened.push_back(s);
     }
     std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
@@ -457,7 +285,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       e.equivalent = s.equivalent;
       e.tested = tested;
       e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
-      e.p_value = f_p_value(e.f_statistic, k, dof);
+      e.p_value = f_upper_tail(e.f_statistic, k, dof);
       rej.p_value = e.p_value;
       for (const auto& p : s.spec.parameters) {
         e.values.set(p, trial.fit.parameters.value_or(p, 0.0));
@@ -472,7 +300,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
         why = "it makes a parameter of the model unidentifiable";
       if (why.empty() && !(e.p_value < alpha))
         why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
-      if (why.empty()) why = size_of(m, sets, o, e);
+      if (why.empty()) why = apply_size(m, sets, o, e);
       if (!why.empty()) {
         rej.reason = why;
         out.last_rejected.push_back(rej);
@@ -534,7 +362,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       e.values.set(n, v);
     }
   }
-  for (auto& e : out.added) size_of(m, sets, o, e);
+  for (auto& e : out.added) apply_size(m, sets, o, e);
   out.final_fit = model.fit;
   out.final_names = model.names;
   out.held = model.held;

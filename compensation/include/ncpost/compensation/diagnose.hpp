@@ -20,7 +20,7 @@
 //     accepted only if its p-value is below `significance` / (number of candidates tested)
 //     (Bonferroni: the family-wise false-positive rate of a step stays below `significance`), if
 //     the refit pins none of its parameters and none of the model's (rank check), and if its
-//     size is physically plausible (DiagnoseOptions). The best accepted one by S1 is added.
+//     size is physically plausible (diagnose_effect_size.hpp). The best accepted one by S1 is added.
 //  3. After each addition the time constant of every drift in the model is chosen again by
 //     refits (tau·2^(j/2), j = −2..2, moved on while the best is at an end, refined by a
 //     parabola): the effects added later change it.
@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "ncpost/compensation/diagnose_candidates.hpp"
+#include "ncpost/compensation/diagnose_effect_size.hpp"
 #include "ncpost/compensation/diagnose_signature.hpp"
 #include "ncpost/compensation/identify.hpp"
 
@@ -45,10 +46,7 @@ struct DiagnoseOptions {
   int max_effects = 8;
   int refit_top = 3;                 ///< candidates refitted per step (by screened drop)
   double alias_tolerance = 1e-3;     ///< identifiability.hpp's default
-  double plausible_length_mm = 0.1;  ///< largest component error, squareness, reversal effect
-  double plausible_angle_rad = 5e-4; ///< (≈ 100 arcsec)
-  double plausible_drift_mm = 0.2;   ///< over the data's time span
-  double plausible_instrument_mm = 0.5;
+  PlausibleSizes plausible;          ///< diagnose_effect_size.hpp
   bool weight_by_set_noise = true;   ///< final refit weighted by each set's noise (see below)
   std::function<void(const std::string&)> progress;  ///< one line per step (optional)
 
