@@ -85,6 +85,36 @@ std::string scatter_svg(const std::string& title, const std::string& x_label, co
   return svg + "</svg>";
 }
 
+/// The residual's signature, basic model -> final model, one line per file, value and axis.
+std::string signature_text(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d) {
+  std::string o = "  residual signature (basic -> final):\n";
+  for (const auto& s : sets)
+    for (int v = 0; v < s.values_per_row(); ++v) {
+      for (int k = 0; k < m.rotary_count(); ++k) {
+        const char a = m.rotary(k).letter;
+        const std::string b = spectrum_text(d.before, s.file, v, a), f = spectrum_text(d.after, s.file, v, a);
+        if (!b.empty()) o += fmt::format("    {} {} vs {} (µm):{}  ->{}\n", base_name(s.file), value_name(s, v), a, b, f);
+      }
+      for (std::size_t i = 0; i < d.before.reversal.size(); ++i) {
+        const auto& b = d.before.reversal[i];
+        if (b.file != s.file || b.value != v) continue;
+        const auto& f = d.after.reversal[i];
+        if (std::abs(b.correlation) > 0.2 || std::abs(f.correlation) > 0.2)
+          o += fmt::format("    {} {} vs direction of {}: correlation {:.2f} -> {:.2f}, falling − rising {:.2f} -> {:.2f} µm\n",
+                           base_name(s.file), value_name(s, v), b.axis, b.correlation, f.correlation, b.falling_minus_rising_um,
+                           f.falling_minus_rising_um);
+      }
+      for (std::size_t i = 0; i < d.before.time.size(); ++i) {
+        const auto& b = d.before.time[i];
+        if (b.file != s.file || b.value != v) continue;
+        const auto& f = d.after.time[i];
+        o += fmt::format("    {} {} vs time: correlation {:.2f} -> {:.2f}, slope {:.2f} -> {:.2f} µm/h\n", base_name(s.file),
+                         value_name(s, v), b.correlation, f.correlation, b.slope_um_per_h, f.slope_um_per_h);
+      }
+    }
+  return o;
+}
+
 }  // namespace
 
 std::string text_diagnose_report(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d,
@@ -126,31 +156,7 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
   o += fmt::format("  predicted tool-tip error over the working space ({} poses): uncompensated max {:.2f} µm (rms {:.2f});\n"
                    "    left after compensating with the basic model max {:.2f} µm (rms {:.2f}), with the final model 0 by construction\n",
                    tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um);
-  o += "  residual signature (basic -> final):\n";
-  for (const auto& s : sets)
-    for (int v = 0; v < s.values_per_row(); ++v) {
-      for (int k = 0; k < m.rotary_count(); ++k) {
-        const char a = m.rotary(k).letter;
-        const std::string b = spectrum_text(d.before, s.file, v, a), f = spectrum_text(d.after, s.file, v, a);
-        if (!b.empty()) o += fmt::format("    {} {} vs {} (µm):{}  ->{}\n", base_name(s.file), value_name(s, v), a, b, f);
-      }
-      for (std::size_t i = 0; i < d.before.reversal.size(); ++i) {
-        const auto& b = d.before.reversal[i];
-        if (b.file != s.file || b.value != v) continue;
-        const auto& f = d.after.reversal[i];
-        if (std::abs(b.correlation) > 0.2 || std::abs(f.correlation) > 0.2)
-          o += fmt::format("    {} {} vs direction of {}: correlation {:.2f} -> {:.2f}, falling − rising {:.2f} -> {:.2f} µm\n",
-                           base_name(s.file), value_name(s, v), b.axis, b.correlation, f.correlation, b.falling_minus_rising_um,
-                           f.falling_minus_rising_um);
-      }
-      for (std::size_t i = 0; i < d.before.time.size(); ++i) {
-        const auto& b = d.before.time[i];
-        if (b.file != s.file || b.value != v) continue;
-        const auto& f = d.after.time[i];
-        o += fmt::format("    {} {} vs time: correlation {:.2f} -> {:.2f}, slope {:.2f} -> {:.2f} µm/h\n", base_name(s.file),
-                         value_name(s, v), b.correlation, f.correlation, b.slope_um_per_h, f.slope_um_per_h);
-      }
-    }
+  o += signature_text(m, sets, d);
   return o;
 }
 
@@ -189,6 +195,9 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
                    "from the nominal by up to {:.2f} µm (rms {:.2f}); compensating with the basic model alone would leave "
                    "{:.2f} µm (rms {:.2f}); the final model compensates what it identified.</p>",
                    tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um);
+  h += "<h2>Residual signature</h2><p>Harmonic amplitudes against each rotary angle that turns most of a turn, "
+       "correlation with the direction each axis last moved and with time; basic model → final model.</p><pre>" +
+       escape(signature_text(m, sets, d)) + "</pre>";
   h += "<h2>Residual against angle and time</h2><p><span style=\"color:#999\">basic model</span>, "
        "<span style=\"color:#1f5fbf\">final model</span>; sphere sets show dx, dy and dz together.</p><div class=plots>";
   Eigen::Index at = 0;
