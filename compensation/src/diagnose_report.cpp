@@ -154,8 +154,10 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
   o += fmt::format("    {:<22} {:>8.3f} / {:<8.3f}      {:>8.3f} / {:<8.3f}\n", "all", d.basic.rms_after_um, d.basic.max_after_um,
                    d.final_fit.rms_after_um, d.final_fit.max_after_um);
   o += fmt::format("  predicted tool-tip error over the working space ({} poses): uncompensated max {:.2f} µm (rms {:.2f});\n"
-                   "    left after compensating with the basic model max {:.2f} µm (rms {:.2f}), with the final model 0 by construction\n",
-                   tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um);
+                   "    left after compensating with the basic model max {:.2f} µm (rms {:.2f}); with the final model its\n"
+                   "    uncertainty, 1σ up to {:.2f} µm (rms {:.2f})\n",
+                   tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um,
+                   tt.final_sigma_max_um, tt.final_sigma_rms_um);
   o += signature_text(m, sets, d);
   return o;
 }
@@ -193,8 +195,10 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
   h += "</table>";
   h += fmt::format("<h2>Predicted tool-tip error</h2><p>Over {} poses of the working space: the machine as identified deviates "
                    "from the nominal by up to {:.2f} µm (rms {:.2f}); compensating with the basic model alone would leave "
-                   "{:.2f} µm (rms {:.2f}); the final model compensates what it identified.</p>",
-                   tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um);
+                   "{:.2f} µm (rms {:.2f}); compensating with the final model leaves its uncertainty, 1σ up to {:.2f} µm (rms "
+                   "{:.2f}).</p>",
+                   tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um,
+                   tt.final_sigma_max_um, tt.final_sigma_rms_um);
   h += "<h2>Residual signature</h2><p>Harmonic amplitudes against each rotary angle that turns most of a turn, "
        "correlation with the direction each axis last moved and with time; basic model → final model.</p><pre>" +
        escape(signature_text(m, sets, d)) + "</pre>";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "ncpost/compensation/machine_model.hpp"
@@ -9,9 +10,24 @@
 namespace ncpost::comp {
 
 ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& final_model,
-                                   const ErrorParameters& basic_model, int poses) {
+                                   const ErrorParameters& basic_model, const ErrorParameters& final_sigma,
+                                   const Eigen::MatrixXd& final_covariance, int poses) {
   const MachineModel actual(m, final_model);
   const MachineModel basic(m, basic_model);
+  // models with one fitted parameter stepped by its standard deviation (finite differences)
+  const Eigen::Index n = static_cast<Eigen::Index>(final_sigma.size());
+  const bool with_sigma = n > 0 && final_covariance.rows() == n && final_covariance.cols() == n;
+  std::vector<std::unique_ptr<MachineModel>> stepped;
+  std::vector<double> step;
+  if (with_sigma)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      ErrorParameters p = final_model;
+      const std::string& name = final_sigma.names()[static_cast<std::size_t>(i)];
+      step.push_back(std::max(final_sigma.values()[static_cast<std::size_t>(i)], 1e-12));
+      p.set(name, final_model.value_or(name, 0.0) + step.back());
+      stepped.push_back(std::make_unique<MachineModel>(m, p));
+    }
+  double sum_s = 0.0;
   const Setup setup;
   std::mt19937_64 rng(20261122);
   ToolTipComparison c;
@@ -38,10 +54,19 @@ ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& fina
     c.basic_left_axis_max_urad = std::max(c.basic_left_axis_max_urad, 1e6 * (pa.axis - pb.axis).norm());
     sum_u += u * u;
     sum_b += b * b;
+    if (with_sigma) {
+      Eigen::MatrixXd J(3, n);
+      for (Eigen::Index i = 0; i < n; ++i)
+        J.col(i) = (stepped[static_cast<std::size_t>(i)]->tool_pose(q, setup).tip_mm - pa.tip_mm) / step[static_cast<std::size_t>(i)];
+      const double s = 1e3 * std::sqrt(std::max(0.0, (J * final_covariance * J.transpose()).trace()));
+      c.final_sigma_max_um = std::max(c.final_sigma_max_um, s);
+      sum_s += s * s;
+    }
   }
   if (poses > 0) {
     c.uncompensated_rms_um = std::sqrt(sum_u / poses);
     c.basic_left_rms_um = std::sqrt(sum_b / poses);
+    c.final_sigma_rms_um = std::sqrt(sum_s / poses);
   }
   return c;
 }

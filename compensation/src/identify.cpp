@@ -198,6 +198,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
       res.parameters.set(name, values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
       res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
     }
+    res.covariance = cov;
   }
   for (const auto& f : o.fixed.names()) res.parameters.set(f, o.fixed.value_or(f, 0.0));
 

@@ -48,7 +48,8 @@ int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets
   d.identify = o;
   if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
   const comp::DiagnoseResult r = comp::diagnose(m, sets, names, d);
-  const comp::ToolTipComparison tt = comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters);
+  const comp::ToolTipComparison tt = comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty,
+                                                              r.final_fit.covariance);
   fmt::print("{}", comp::text_report(m, sets, r.final_fit));
   fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
   if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);

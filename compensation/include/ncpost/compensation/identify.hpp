@@ -54,6 +54,7 @@ struct IdentifyResult {
   std::vector<std::string> candidates;  ///< the parameters asked for, priority order
   ErrorParameters parameters;           ///< fitted values of the kept parameters (+ fixed ones)
   ErrorParameters uncertainty;          ///< standard deviations of the fitted ones
+  Eigen::MatrixXd covariance;           ///< of the fitted ones, in the order of `uncertainty`
   Identifiability identifiability;
   RankAnalysis rank;                    ///< at the solution, columns = candidates
   std::vector<FileResidual> files;
