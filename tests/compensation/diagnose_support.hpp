@@ -219,4 +219,35 @@ inline double compensated_cut_with_reversal_mm(const Machine& m, const comp::Err
   return worst;
 }
 
+/// Error of the tool tip at the CL points of the dome path (mm, largest): commands from the
+/// compensated IK of `model` (with its dead band, if any), executed on the truth (with its dead
+/// band) — the block ends of a compensated post, without subdivision or rounding.
+inline double compensated_ends_mm(const Machine& m, const comp::ErrorParameters& model_parameters,
+                                  const comp::ErrorParameters& truth_parameters) {
+  const comp::MachineModel model(m, model_parameters), truth(m, truth_parameters);
+  const Setup s = dome_setup();
+  AxisPosition previous;
+  std::optional<AxisPosition> actual_model, actual_truth;
+  double worst = 0.0;
+  auto with_offsets = [](const comp::RowState<double>& st, AxisPosition q) {
+    for (int i = 0; i < 5; ++i) q[i] += st.reversal[static_cast<std::size_t>(i)];
+    return q;
+  };
+  for (const ClLine& p : read_gotos(dome_path())) {
+    const IkOutcome n = solve(m, p.point, s, previous);
+    if (!n.ok()) throw std::runtime_error("IK failed on line " + std::to_string(p.line));
+    comp::ActualIkOptions o;
+    o.previous_actual = actual_model;
+    const comp::ActualIkOutcome a = comp::solve_actual(model, p.point, s, *n.position, o);
+    if (!a.ok()) throw std::runtime_error("compensated IK failed on line " + std::to_string(p.line));
+    const AxisPosition q = *a.position;
+    const comp::RowState<double> st_truth = comp::reversal_state(truth, q, actual_truth);
+    worst = std::max(worst, (truth.tool_pose(q, s, st_truth).tip_mm - p.point.tip_mm).norm());
+    actual_model = with_offsets(comp::reversal_state(model, q, actual_model), q);
+    actual_truth = with_offsets(st_truth, q);
+    previous = q;
+  }
+  return worst;
+}
+
 }  // namespace ncpost::test
