@@ -10,8 +10,11 @@
 //     `alias_tolerance` of itself (the sine of its angle to that span, as identifiability.hpp)
 //     is aliased: the candidate is not identifiable together with the model and is skipped. The
 //     residual's projection on the remaining part is the drop in the sum of squares Σr² the
-//     candidate would buy (exact for a linear model). Drift: the time constant tau is chosen
-//     from a log-spaced grid (30 s … 4 × the data's time span) by that drop.
+//     candidate would buy (exact for a linear model). Drift: lin, exp or both, the time
+//     constant from a log-spaced grid (30 s … 4 × the data's time span) by that drop
+//     (diagnose_screening.hpp). Candidates that add the same directions (within 10 ×
+//     `alias_tolerance`) cannot be told apart by the data: they form one class, named by the
+//     first in catalogue order, the others reported as `equivalent`.
 //  2. Evidence: the best few by screened drop are refitted (identify.hpp, from scratch, with the
 //     existing rank analysis), and each gets the partial F statistic
 //        F = ((S0 − S1) / k) / (S1 / (m − p1))
