@@ -70,7 +70,8 @@ ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const
     for (int k = 0; k < 3; ++k) axis[k] = pose.axis[k].value();
     out.tip_error_mm = r.head<3>().norm();
     out.axis_error_rad = std::atan2(axis.cross(u).norm(), axis.dot(u));
-    if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
+    // a three-axis machine cannot turn the tool: its axis error is reported, not solved for
+    if (out.tip_error_mm <= o.tip_tolerance_mm && (n < 5 || out.axis_error_rad <= o.axis_tolerance_rad)) {
       out.position = q;
       out.actual = q;
       for (int a = 0; a < n; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
