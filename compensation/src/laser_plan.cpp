@@ -51,14 +51,19 @@ bool moves_abbe_offset(const Machine& m, int j, int k) {
 }
 
 std::vector<double> laser_targets(const Machine& m, int j, const LaserPlanOptions& o) {
-  const auto [lo, hi] = travel(m, j, o.margin_mm);
-  const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + 1e-9)) + 1;
-  const double start = lo + 0.5 * ((hi - lo) - (n - 1) * o.step_mm);
+  // the overshoot before each pass must stay within the travel too
+  const auto [lo, hi] = travel(m, j, o.margin_mm + o.overshoot_mm);
   std::vector<double> t;
-  for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, 1e-5));
-  if (lo < 0.0 && hi > 0.0 && std::none_of(t.begin(), t.end(), [](double x) { return std::abs(x) < 1e-9; })) {
-    t.push_back(0.0);
-    std::sort(t.begin(), t.end());
+  if (lo <= 0.0 && hi >= 0.0) {
+    // a grid through home, plus the travel ends where they are more than a quarter step away
+    for (double k = std::ceil(lo / o.step_mm - 1e-9); k * o.step_mm <= hi + 1e-9; k += 1.0)
+      t.push_back(round_to(k * o.step_mm, 1e-5));
+    if (t.empty() || t.front() - lo > 0.25 * o.step_mm) t.insert(t.begin(), round_to(lo, 1e-5));
+    if (t.back() < hi - 0.25 * o.step_mm) t.push_back(round_to(hi, 1e-5));
+  } else {
+    const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + 1e-9)) + 1;
+    const double start = lo + 0.5 * ((hi - lo) - (n - 1) * o.step_mm);
+    for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, 1e-5));
   }
   return t;
 }

@@ -66,8 +66,8 @@ std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
                    r.rms_nominal_um, r.max_nominal_um, r.rms_fit_um, r.max_fit_um, r.rms_after_um, r.max_after_um);
   o += "\nISO 230-2 per positioning line (µm): A accuracy, R repeatability, B reversal (mean), E systematic, M mean\n";
   for (const auto& g : r.iso230)
-    o += fmt::format("  {:<28} {}  A {:7.2f}  R {:6.2f}  B {:6.2f} ({:+6.2f})  E {:7.2f}  M {:7.2f}\n", g.file, g.axis,
-                     g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.mean_reversal_um, g.systematic_E_um,
+    o += fmt::format("  {:<12} {}  A {:7.2f}  R {:6.2f}  B {:6.2f} ({:+6.2f})  E {:7.2f}  M {:7.2f}\n",
+                     g.file.substr(g.file.find_last_of('/') + 1), g.axis, g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.mean_reversal_um, g.systematic_E_um,
                      g.mean_bidirectional_M_um);
   o += "\nerror functions (tables at every target; ISO 230-1 reference; p1..p3 fitted through home)\n";
   for (const auto& f : r.functions) {

@@ -84,3 +84,52 @@ TEST_CASE("laser: a single line gives neither pitch, yaw nor roll; positioning o
     check_unseen_are_zero(r);
   }
 }
+
+TEST_CASE("laser: seed 003's six readings per axis see all 21 errors", "[laser][identifiability]") {
+  // Li et al. measure positioning on three lines, both straightnesses on line 1 and one more
+  // straightness on line 2. Lines 1 and 2 of the plan differ in the first of the other two
+  // directions (for X: in Y), so the second straightness is the one in the other direction (for X:
+  // Z), whose roll term has that offset as its Abbe arm.
+  const Machine m = test::vmcl600();
+  comp::LaserPlanOptions plan;
+  const test::LaserTruth truth = test::vmcl600_truth(m, plan);
+  const std::vector<std::string> keep{"X1_pos", "X1_strY", "X1_strZ", "X2_pos", "X2_strZ", "X3_pos",
+                                      "Y1_pos", "Y1_strX", "Y1_strZ", "Y2_pos", "Y2_strZ", "Y3_pos",
+                                      "Z1_pos", "Z1_strX", "Z1_strY", "Z2_pos", "Z2_strY", "Z3_pos"};
+  std::vector<comp::MeasurementSet> sets;
+  for (auto& s : test::simulate_laser(m, truth.parameters, plan, 0.3))
+    if (std::find(keep.begin(), keep.end(), s.file) != keep.end()) sets.push_back(std::move(s));
+  REQUIRE(sets.size() == keep.size());
+  const comp::LaserIdentifyResult r = comp::identify_laser(m, sets);
+  REQUIRE(r.ok);
+  for (const auto& u : r.unseen) fmt::print("  unseen: {}\n", u);
+  CHECK(r.unseen.empty());
+  CHECK(r.squareness.size() == 3);
+}
+
+TEST_CASE("laser: Z lines made by moving the table cannot see the head's angular errors", "[laser][identifiability]") {
+  // The plan offsets the reflector on the spindle for the Z lines; moving X and Y to the line
+  // positions instead keeps the reflector where it is relative to the head, so the Abbe arms of
+  // Z's pitch, yaw and roll do not change from line to line.
+  const Machine m = test::vmcl600();
+  comp::LaserPlanOptions plan;
+  plan.axes = "Z";
+  const test::LaserTruth truth = test::vmcl600_truth(m, plan);
+  std::vector<comp::MeasurementSet> sets;
+  for (auto p : comp::plan_laser(m, plan)) {
+    comp::MeasurementSet& s = p.set;
+    for (auto& row : s.rows) {
+      row.command[0] = s.tool_point_mm.x();
+      row.command[1] = s.tool_point_mm.y();
+    }
+    s.set_meta("line", fmt::format("{:.4f}, {:.4f}", s.tool_point_mm.x(), s.tool_point_mm.y()));
+    s.tool_point_mm = Vec3d::Zero();
+    sets.push_back(comp::simulate(m, s, truth.parameters, {0.3, 5}));
+  }
+  const comp::LaserIdentifyResult r = comp::identify_laser(m, sets);
+  REQUIRE(r.ok);
+  for (const auto& u : r.unseen) fmt::print("  unseen: {}\n", u);
+  for (const char* unseen : {"EAZ", "EBZ", "ECZ"}) CHECK(reported(r, unseen));
+  CHECK_FALSE(reported(r, "EZZ"));
+  check_unseen_are_zero(r);
+}

@@ -13,9 +13,10 @@
 //
 // On every line the plan has one set per measured component: positioning (the axis itself) and
 // the two straightness directions. Rows: ISO 230-2 standard test cycle — `runs` runs, each a
-// forward pass over the targets (approach +1) then a backward pass (approach −1), targets every
-// `step_mm` centred on the axis travel (home, 0, added when inside), the instrument zeroed at the
-// first row of each run. Commands in mm; time `dt_s` per target.
+// forward pass over the targets (approach +1) then a backward pass (approach −1), the instrument
+// zeroed at the first row of each run. Targets: every `step_mm` on a grid through home, plus the
+// ends of the travel (less margin and overshoot) where they lie more than a quarter step beyond
+// the grid. Commands in mm; time `dt_s` per target.
 #include <array>
 #include <optional>
 #include <string>
@@ -47,7 +48,7 @@ struct LaserPlanOptions {
 /// the header comment).
 bool moves_abbe_offset(const Machine& machine, int j, int k);
 
-/// The targets of axis j (mm, ascending): every step over the travel minus margins, centred.
+/// The targets of axis j (mm, ascending), see the header comment.
 /// Throws std::invalid_argument if the axis has no limits.
 std::vector<double> laser_targets(const Machine& machine, int j, const LaserPlanOptions& options);
 
