@@ -17,6 +17,7 @@
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/preview_model_solver.hpp"
 
@@ -70,15 +71,34 @@ std::vector<ClPoint> cl_points() {
   return out;
 }
 
-/// Posts the test path with `solver` and reads the machine positions back from the program.
-std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const std::string& out_path) {
+Setup job_setup() {
+  Setup setup;
+  setup.workpiece_origin_mm = Vec3d(0.0, 0.0, -450.0);  // table top 450 mm below the tool tip at home
+  setup.tool_length_mm = 150.0;                         // not the laser's 100 mm: Abbe offsets differ
+  return setup;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+/// Posts the test path (APT CL, or the G-code program `gcode_in` when given) with `solver` and
+/// reads the machine positions back from the written program.
+std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const Setup& setup, const std::string& out_path,
+                                        const std::string& gcode_in = "") {
   {
-    std::istringstream in(test_path());
-    cl::AptReader reader(in, "laser_volume.cls");
+    std::istringstream in(gcode_in.empty() ? test_path() : gcode_in);
+    std::unique_ptr<cl::Reader> owned;
+    if (gcode_in.empty()) owned = std::make_unique<cl::AptReader>(in, "laser_volume.cls");
+    else owned = std::make_unique<gcode::GcodeClReader>(in, "laser_volume.nc", solver.machine(), setup);
+    cl::Reader& reader = *owned;
     AtomicFile out(out_path);
     NcWriter writer(out, dialect_named("fanuc"), "XYZ");
     PostOptions options;
-    post_program(reader, "laser_volume.cls", solver, writer, options);
+    post_program(reader, gcode_in.empty() ? "laser_volume.cls" : "laser_volume.nc", solver, writer, options);
     out.commit();
   }
   std::ifstream nc(out_path);
@@ -181,9 +201,7 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
   const Identified& id = identified();
   REQUIRE(id.result.ok);
   const Machine& m = id.machine;
-  Setup setup;
-  setup.workpiece_origin_mm = Vec3d(0.0, 0.0, -450.0);  // table top 450 mm below the tool tip at home
-  setup.tool_length_mm = 150.0;                         // not the laser's 100 mm: Abbe offsets differ
+  const Setup setup = job_setup();
   const comp::MachineModel truth(m, id.truth.parameters);
   // the model file as written and read back by `post --model`
   const comp::ModelFile file =
@@ -193,8 +211,8 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
 
   const NominalSolver nominal(m, setup);
   const preview::ModelMotionSolver compensated(model, setup);
-  const Volumetric before = execute_on(truth, post_and_read(nominal, "laser_volume_nominal.nc"), cl, setup);
-  const Volumetric after = execute_on(truth, post_and_read(compensated, "laser_volume_compensated.nc"), cl, setup);
+  const Volumetric before = execute_on(truth, post_and_read(nominal, setup, "laser_volume_nominal.nc"), cl, setup);
+  const Volumetric after = execute_on(truth, post_and_read(compensated, setup, "laser_volume_compensated.nc"), cl, setup);
   fmt::print("volumetric error over X ±250, Y ±175, Z 0..400 above the table ({} points, tool 150 mm): "
              "uncompensated max {:.2f} µm rms {:.2f} µm; compensated max {:.3f} µm rms {:.3f} µm; "
              "ratio max {:.1f}x rms {:.1f}x\n",
@@ -203,4 +221,11 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
   CHECK(before.max_um > 20.0);
   CHECK(after.max_um * 10.0 <= before.max_um);
   CHECK(after.rms_um * 10.0 <= before.rms_um);
+  // G-code in, G-code out: the uncompensated program re-posted with the model
+  const Volumetric regcode = execute_on(
+      truth, post_and_read(compensated, setup, "laser_volume_regcode.nc", read_text("laser_volume_nominal.nc")), cl, setup);
+  fmt::print("G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm\n", regcode.max_um,
+             regcode.rms_um);
+  CHECK(regcode.max_um * 10.0 <= before.max_um);
+  CHECK(regcode.rms_um * 10.0 <= before.rms_um);
 }
