@@ -11,167 +11,19 @@
 #include "ncpost/compensation/error_model.hpp"
 #include "ncpost/compensation/laser_reading.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
+#include "laser_problem.hpp"
 
 namespace ncpost::comp {
 namespace {
 
-constexpr char kComponents[] = "XYZABC";
-
-/// Priority of a component error function in the rank analysis (lower: kept first).
-int priority_of(int axis, int component) {
-  if (component == axis) return 0;          // positioning
-  if (component < 3) return 2;              // straightness
-  if (component - 3 == axis) return 4;      // roll
-  return 3;                                 // pitch, yaw
-}
-
-/// Approach directions from the row order where the file has none (rising: +1; a repeated
-/// target reverses; the first row of a run: +1).
-void fill_approach(MeasurementSet& set) {
-  if (has_approach(set)) return;
-  const int j = laser_moving_axis(set);
-  for (std::size_t k = 0; k < set.rows.size(); ++k) {
-    MeasurementRow& r = set.rows[k];
-    const bool first = k == 0 || set.rows[k - 1].run != r.run;
-    if (first) r.approach = 1;
-    else if (r.command[j] > set.rows[k - 1].command[j] + 1e-9) r.approach = 1;
-    else if (r.command[j] < set.rows[k - 1].command[j] - 1e-9) r.approach = -1;
-    else r.approach = -set.rows[k - 1].approach;
-  }
-}
-
-struct Problem {
-  const Machine* machine = nullptr;
-  std::vector<MeasurementSet> sets;
-  std::array<std::vector<double>, 3> nodes;            ///< per axis, ascending, with home (empty: not measured)
-  std::array<std::array<std::vector<int>, 6>, 3> node_param;  ///< layout index per axis, component, node
-  std::array<int, 3> reversal_param{-1, -1, -1};
-  std::vector<std::string> names;  ///< layout order
-  ModelLayout layout;
-  std::vector<int> column_of;      ///< layout index → Jacobian column (−1: fixed home node)
-  std::vector<int> param_of;       ///< column → layout index
-  std::vector<int> moving;         ///< per set
-  Eigen::Index rows = 0;
-
-  /// Layout indices of the parameters that can change this row's raw reading.
-  std::vector<int> support(int set_index, const MeasurementRow& row) const {
-    std::vector<int> out;
-    for (int a = 0; a < 3; ++a) {
-      const auto& x = nodes[static_cast<std::size_t>(a)];
-      if (x.empty()) continue;
-      const double q = row.command[a];
-      std::vector<std::size_t> idx;
-      if (q <= x.front()) idx = {0};
-      else if (q >= x.back()) idx = {x.size() - 1};
-      else {
-        std::size_t i = 1;
-        while (x[i] < q) ++i;
-        idx = {i - 1, i};
-      }
-      for (int c = 0; c < 6; ++c)
-        for (std::size_t i : idx) {
-          const int p = node_param[static_cast<std::size_t>(a)][static_cast<std::size_t>(c)][i];
-          if (column_of[static_cast<std::size_t>(p)] >= 0) out.push_back(p);
-        }
-    }
-    const int rev = reversal_param[static_cast<std::size_t>(moving[static_cast<std::size_t>(set_index)])];
-    if (rev >= 0) out.push_back(rev);
-    return out;
-  }
-
-  double raw(int set_index, const MeasurementRow& row, const std::vector<double>& values) const {
-    const ErrorFunctor<double> f(layout, values.data(),
-                                 laser_row_state(layout, values.data(), moving[static_cast<std::size_t>(set_index)], row));
-    return laser_raw_reading_um(*machine, sets[static_cast<std::size_t>(set_index)], row, f);
-  }
-
-  /// measured − predicted (µm), stacked set by set.
-  Eigen::VectorXd residual(const std::vector<double>& values) const {
-    Eigen::VectorXd r(rows);
-    Eigen::Index k = 0;
-    for (const auto& s : sets) {
-      const std::vector<double> p = predict_laser_set(*machine, s, layout, values.data());
-      for (std::size_t i = 0; i < s.rows.size(); ++i) r[k++] = s.rows[i].value[0] - p[i];
-    }
-    return r;
-  }
-
-  /// d prediction / d parameter (µm per mm or rad), columns = fitted parameters.
-  Eigen::MatrixXd jacobian(const std::vector<double>& values) const {
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, static_cast<Eigen::Index>(param_of.size()));
-    std::vector<double> v = values;
-    Eigen::Index k = 0;
-    for (std::size_t s = 0; s < sets.size(); ++s) {
-      const MeasurementSet& set = sets[s];
-      std::map<int, Eigen::Index> first_of_run;
-      for (const auto& row : set.rows) {
-        for (int p : support(static_cast<int>(s), row)) {
-          const double h = layout.spec(p).is_angle() ? 1e-5 : 1e-3;
-          const double keep = v[static_cast<std::size_t>(p)];
-          v[static_cast<std::size_t>(p)] = keep + h;
-          const double up = raw(static_cast<int>(s), row, v);
-          v[static_cast<std::size_t>(p)] = keep - h;
-          const double down = raw(static_cast<int>(s), row, v);
-          v[static_cast<std::size_t>(p)] = keep;
-          J(k, column_of[static_cast<std::size_t>(p)]) = (up - down) / (2.0 * h);
-        }
-        auto it = first_of_run.find(row.run);
-        if (it == first_of_run.end()) first_of_run.emplace(row.run, k);
-        ++k;
-      }
-      // zeroed at the first row of each run
-      Eigen::Index base = k - static_cast<Eigen::Index>(set.rows.size());
-      std::map<int, Eigen::RowVectorXd> zero;
-      for (const auto& [run, at] : first_of_run) zero.emplace(run, J.row(at));
-      for (std::size_t i = 0; i < set.rows.size(); ++i) J.row(base + static_cast<Eigen::Index>(i)) -= zero.at(set.rows[i].run);
-    }
-    return J;
-  }
-};
+using laser::fill_approach;
+using laser::kComponents;
+using laser::priority_of;
+using laser::Problem;
 
 void stats(const Eigen::VectorXd& r, double& rms, double& max) {
   rms = r.size() ? std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
   max = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
-}
-
-/// Least-squares line a + s·x through the points; returns s and sets the max − min about it.
-double ls_slope(const std::vector<double>& x, const std::vector<double>& y, double& range_about) {
-  const double n = double(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sx += x[i];
-    sy += y[i];
-    sxx += x[i] * x[i];
-    sxy += x[i] * y[i];
-  }
-  const double den = n * sxx - sx * sx;
-  const double s = den > 0 ? (n * sxy - sx * sy) / den : 0.0;
-  const double a = (sy - s * sx) / n;
-  double lo = 1e300, hi = -1e300;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    lo = std::min(lo, y[i] - a - s * x[i]);
-    hi = std::max(hi, y[i] - a - s * x[i]);
-  }
-  range_about = x.empty() ? 0.0 : hi - lo;
-  return s;
-}
-
-/// p1..p3 through the origin, least squares on the table nodes; returns the rms about it.
-double fit_polynomial(const std::vector<double>& x, const std::vector<double>& y, std::array<double, 3>& p) {
-  const double scale = std::max(1.0, std::max(std::abs(x.front()), std::abs(x.back())));
-  Eigen::MatrixXd A(static_cast<Eigen::Index>(x.size()), 3);
-  Eigen::VectorXd b(static_cast<Eigen::Index>(x.size()));
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double u = x[i] / scale;
-    A.row(static_cast<Eigen::Index>(i)) << u, u * u, u * u * u;
-    b[static_cast<Eigen::Index>(i)] = y[i];
-  }
-  const Eigen::Index cols = std::min<Eigen::Index>(3, A.rows() - 1);
-  p = {0.0, 0.0, 0.0};
-  if (cols < 1) return 0.0;
-  const Eigen::VectorXd c = A.leftCols(cols).colPivHouseholderQr().solve(b);
-  for (Eigen::Index k = 0; k < cols; ++k) p[static_cast<std::size_t>(k)] = c[k] / std::pow(scale, double(k + 1));
-  return std::sqrt((A.leftCols(cols) * c - b).squaredNorm() / double(x.size()));
 }
 
 std::string why_unseen(const LaserFunction& f) {
@@ -188,34 +40,6 @@ std::string LaserIdentifyOptions::validate() const {
   if (!(rank_tolerance > 0.0 && rank_tolerance < 1.0)) return "rank tolerance must be in (0, 1)";
   if (max_iterations < 1) return "at least one iteration";
   return {};
-}
-
-bool LaserFunction::fully_seen() const { return std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }); }
-
-bool LaserFunction::partly_seen() const {
-  int n = 0;
-  for (std::size_t i = 0; i < seen.size(); ++i) n += seen[i] && std::abs(nodes_mm[i]) > 1e-9;
-  return n > 0;
-}
-
-std::string LaserFunction::kind() const {
-  if (component == axis) return "positioning";
-  if (component >= 'X') return fmt::format("straightness in {}", component);
-  const int rot = component - 'A', ax = axis - 'X';
-  if (rot == ax) return "roll";
-  // ISO 230-1 words on a machine with Z vertical: rotation about the vertical is yaw for X and Y
-  if (ax < 2) return rot == 2 ? "yaw" : "pitch";
-  return rot == 0 ? "pitch" : "yaw";  // Z: about X pitch, about Y yaw (a common usage)
-}
-
-double LaserFunction::at(double x) const {
-  if (nodes_mm.empty()) return 0.0;
-  if (x <= nodes_mm.front()) return values.front();
-  if (x >= nodes_mm.back()) return values.back();
-  std::size_t i = 1;
-  while (nodes_mm[i] < x) ++i;
-  const double w = (x - nodes_mm[i - 1]) / (nodes_mm[i] - nodes_mm[i - 1]);
-  return values[i - 1] + w * (values[i] - values[i - 1]);
 }
 
 bool all_laser(const std::vector<MeasurementSet>& sets) {
@@ -365,14 +189,14 @@ LaserIdentifyResult identify_laser(const Machine& m, const std::vector<Measureme
       }
       if (c < 3 && c != a) {
         double range = 0.0;
-        f.iso_slope = ls_slope(f.nodes_mm, f.values, range);
+        f.iso_slope = least_squares_slope(f.nodes_mm, f.values, range);
         f.iso_straightness_um = 1e3 * range;
         for (std::size_t i = 0; i < x.size(); ++i) f.values[i] -= f.iso_slope * x[i];
         slope[f.name()] = f.iso_slope;
         slope_seen[f.name()] = f.fully_seen();
       }
       std::vector<double> yv = f.values;
-      f.polynomial_rms = fit_polynomial(f.nodes_mm, yv, f.polynomial);
+      f.polynomial_rms = fit_polynomial_through_home(f.nodes_mm, yv, f.polynomial);
       res.functions.push_back(f);
     }
   }

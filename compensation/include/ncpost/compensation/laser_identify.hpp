@@ -28,12 +28,12 @@
 // data of an ISO 230-1 set-up are referred to; it is dropped with them.
 // Polynomials p1..p3 (through home) are fitted to every table for the report.
 // Units: tables mm / rad, reports µm / µrad.
-#include <array>
 #include <string>
 #include <vector>
 
 #include "ncpost/compensation/error_parameters.hpp"
 #include "ncpost/compensation/identifiability.hpp"
+#include "ncpost/compensation/laser_function.hpp"
 #include "ncpost/compensation/laser_iso230_2.hpp"
 #include "ncpost/compensation/measurement.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -46,29 +46,6 @@ struct LaserIdentifyOptions {
   bool fit_reversal = true;      ///< reversal:<axis> where both approach directions are present
 
   std::string validate() const;
-};
-
-/// One component error function E<component><axis> as identified.
-struct LaserFunction {
-  char component = 'X';  ///< X Y Z (mm) or A B C (rad)
-  char axis = 'X';
-  std::vector<double> nodes_mm;
-  std::vector<double> values;     ///< mm or rad, ISO 230-1 reference (straightness slope removed)
-  std::vector<double> sigma;      ///< standard deviation of each node (0 where pinned or at home)
-  std::vector<bool> seen;         ///< node identified (home counts as seen)
-  std::array<double, 3> polynomial{0.0, 0.0, 0.0};  ///< p1..p3, value·x^k, x in mm
-  double polynomial_rms = 0.0;    ///< rms of the table about the polynomial (mm / rad)
-  double iso_slope = 0.0;         ///< straightness: least-squares slope moved into squareness (rad)
-  double iso_straightness_um = 0.0;  ///< straightness: max − min about the least-squares line
-
-  std::string name() const { return std::string{'E', component, axis}; }
-  bool is_angle() const { return component >= 'A' && component <= 'C'; }
-  bool fully_seen() const;
-  bool partly_seen() const;
-  /// "positioning", "straightness in Y", "roll", "pitch", "yaw" (ISO 230-1 words for a VMC).
-  std::string kind() const;
-  /// Interpolated value at x (mm / rad), as the error model does.
-  double at(double x_mm) const;
 };
 
 struct LaserIdentifyResult {
