@@ -8,8 +8,10 @@
 
 namespace ncpost::cli {
 
-/// Returns the exit code; throws Infeasible if the identification fails.
+/// Returns the exit code; throws Infeasible if the identification fails. With `options_ignored`
+/// a notice says that --params, --fixed and --loss do not apply (the laser model is the 18 tables, the
+/// squareness and the reversal).
 int identify_laser(const Machine& machine, const std::vector<comp::MeasurementSet>& sets, const std::string& output,
-                   const std::string& report);
+                   const std::string& report, bool options_ignored = false);
 
 }  // namespace ncpost::cli
