@@ -1,5 +1,7 @@
 #include "ncpost/postproc/nc_writer.hpp"
 
+#include "ncpost/postproc/fixed_format.hpp"
+
 #include <cmath>
 
 namespace ncpost {
@@ -18,7 +20,8 @@ NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
 
 double NcWriter::rounded(int axis, double value) const {
   const int decimals = axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals;
-  const double scale = std::pow(10.0, decimals);
+  static constexpr double kScale[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+  const double scale = decimals >= 0 && decimals <= 9 ? kScale[decimals] : std::pow(10.0, decimals);
   const double r = std::round(value * scale) / scale;
   return r == 0.0 ? 0.0 : r;  // no "-0"
 }
@@ -86,7 +89,9 @@ bool NcWriter::motion(const NcMotion& m) {
     for (std::size_t i = 0; i < letters_.size(); ++i) {
       const double v = rounded(static_cast<int>(i), m.values[i]);
       if (last_[i] && *last_[i] == v) continue;
-      fmt::format_to(out, " {}{:+.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+      buf_.push_back(' ');
+      buf_.push_back(letters_[i]);
+      append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, true);
       last_[i] = v;
       ++words;
     }
@@ -116,7 +121,8 @@ bool NcWriter::motion(const NcMotion& m) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
-    fmt::format_to(out, "{}{:.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+    buf_.push_back(letters_[i]);
+    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
     last_[i] = v;
     ++words;
   }
@@ -131,8 +137,8 @@ bool NcWriter::motion(const NcMotion& m) {
   if (!m.rapid) {
     const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
     if (inverse || !last_feed_ || std::abs(*last_feed_ - m.feed) > 1e-9) {
-      if (inverse) fmt::format_to(out, " F{:.4f}", m.feed);
-      else fmt::format_to(out, " F{:.1f}", m.feed);
+      buf_.append(std::string_view(" F"));
+      append_fixed(buf_, m.feed, inverse ? 4 : 1);
       last_feed_ = m.feed;
     }
   }
