@@ -2,17 +2,22 @@
 // by the laser plan (three lines per axis, positioning and straightness, ISO 230-2 cycle, noisy),
 // the errors are identified, a 3D test path is posted with the identified model through the
 // post pipeline (post_program + ModelMotionSolver), and the written program is executed on the
-// true machine: the volumetric error at the tool tip over the working volume must fall ≥ 10x.
+// true machine (from home, reversal followed block by block through its dead band): the
+// volumetric error at the tool tip over the working volume must fall ≥ 10x. The first block is
+// reported apart: its approach direction depends on where the post assumes the machine starts
+// (CL input: approached from below; G-code input: from home), not on the model.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 
 #include "laser_test_support.hpp"
 #include "ncpost/compensation/laser_identify.hpp"
+#include "ncpost/compensation/actual_ik.hpp"
 #include "ncpost/compensation/laser_report.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -119,7 +124,9 @@ std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const Setup&
 }
 
 struct Volumetric {
-  double max_um = 0.0, rms_um = 0.0;
+  double max_um = 0.0, rms_um = 0.0;  ///< every block but the first
+  double first_um = 0.0;              ///< the first block (its approach depends on the assumed start)
+  double mid_block_max_um = 0.0;      ///< halfway along each block (linear in axis space) vs the CL segment
 };
 
 Volumetric execute_on(const comp::MachineModel& truth, const std::vector<AxisPosition>& program,
@@ -127,12 +134,25 @@ Volumetric execute_on(const comp::MachineModel& truth, const std::vector<AxisPos
   REQUIRE(program.size() == cl.size());
   Volumetric v;
   double sum = 0.0;
+  // where the true axes stand (the dead band of each reversal); the program starts from home
+  std::optional<AxisPosition> actual = AxisPosition{};
   for (std::size_t k = 0; k < cl.size(); ++k) {
-    const double e = 1e3 * (truth.tool_pose(program[k], setup).tip_mm - cl[k].tip_mm).norm();
+    const comp::RowState<double> state = comp::reversal_state(truth, program[k], actual);
+    actual = program[k];
+    for (int a = 0; a < 3; ++a) (*actual)[a] += state.reversal[static_cast<std::size_t>(a)];
+    const double e = 1e3 * (truth.tool_pose(program[k], setup, state).tip_mm - cl[k].tip_mm).norm();
+    if (k == 0) {
+      v.first_um = e;
+      continue;
+    }
+    AxisPosition mid = program[k];
+    for (int a = 0; a < 3; ++a) mid[a] = 0.5 * (program[k - 1][a] + program[k][a]);
+    const Vec3d cl_mid = 0.5 * (cl[k - 1].tip_mm + cl[k].tip_mm);
+    v.mid_block_max_um = std::max(v.mid_block_max_um, 1e3 * (truth.tool_pose(mid, setup, state).tip_mm - cl_mid).norm());
     v.max_um = std::max(v.max_um, e);
     sum += e * e;
   }
-  v.rms_um = std::sqrt(sum / double(cl.size()));
+  v.rms_um = std::sqrt(sum / double(cl.size() - 1));
   return v;
 }
 
@@ -213,19 +233,21 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
   const preview::ModelMotionSolver compensated(model, setup);
   const Volumetric before = execute_on(truth, post_and_read(nominal, setup, "laser_volume_nominal.nc"), cl, setup);
   const Volumetric after = execute_on(truth, post_and_read(compensated, setup, "laser_volume_compensated.nc"), cl, setup);
-  fmt::print("volumetric error over X ±250, Y ±175, Z 0..400 above the table ({} points, tool 150 mm): "
-             "uncompensated max {:.2f} µm rms {:.2f} µm; compensated max {:.3f} µm rms {:.3f} µm; "
-             "ratio max {:.1f}x rms {:.1f}x\n",
-             cl.size(), before.max_um, before.rms_um, after.max_um, after.rms_um, before.max_um / after.max_um,
-             before.rms_um / after.rms_um);
+  fmt::print("volumetric error over X ±250, Y ±175, Z 0..400 above the table ({} points after the first, tool "
+             "150 mm): uncompensated max {:.2f} µm rms {:.2f} µm; compensated max {:.3f} µm rms {:.3f} µm; "
+             "ratio max {:.1f}x rms {:.1f}x; first block (from home) {:.2f} -> {:.2f} µm\n",
+             cl.size() - 1, before.max_um, before.rms_um, after.max_um, after.rms_um, before.max_um / after.max_um,
+             before.rms_um / after.rms_um, before.first_um, after.first_um);
+  fmt::print("halfway along the blocks (not cut to a tolerance): uncompensated max {:.2f} µm, compensated max {:.2f} µm\n",
+             before.mid_block_max_um, after.mid_block_max_um);
   CHECK(before.max_um > 20.0);
   CHECK(after.max_um * 10.0 <= before.max_um);
   CHECK(after.rms_um * 10.0 <= before.rms_um);
   // G-code in, G-code out: the uncompensated program re-posted with the model
   const Volumetric regcode = execute_on(
       truth, post_and_read(compensated, setup, "laser_volume_regcode.nc", read_text("laser_volume_nominal.nc")), cl, setup);
-  fmt::print("G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm\n", regcode.max_um,
-             regcode.rms_um);
+  fmt::print("G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm; first block {:.2f} µm\n",
+             regcode.max_um, regcode.rms_um, regcode.first_um);
   CHECK(regcode.max_um * 10.0 <= before.max_um);
   CHECK(regcode.rms_um * 10.0 <= before.rms_um);
 }

@@ -16,7 +16,9 @@
 // Reversal: with `previous_actual` (where each axis actually stands, after the previous block)
 // the dead-band offset of each axis follows from the direction of the new command
 // (reversal.hpp); it is re-evaluated at every iterate, so the solution is consistent with the
-// direction its own command implies. Without it, offsets are 0 (approach from below).
+// direction its own command implies. Without it, offsets are 0 (approach from below). On a
+// three-axis machine the offsets are instead fixed from the direction in which each axis must
+// actually move (the dead band is not smooth enough for Newton when the needed move is within it).
 #include <optional>
 #include <string>
 
