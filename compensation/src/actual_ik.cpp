@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <unsupported/Eigen/AutoDiff>
 
@@ -80,18 +81,21 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
 
 }  // namespace
 
-ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
-                             const AxisPosition& nominal_guess, const ActualIkOptions& o) {
-  if (auto fast = fixed_point(model, cl, setup, nominal_guess, o)) return *fast;
+namespace {
+
+/// Newton–Gauss on the commands; `state_of(q)` gives the reversal offsets at command q.
+template <class StateOf>
+ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+                       const AxisPosition& guess, const ActualIkOptions& o, const StateOf& state_of) {
   const Machine& m = model.machine();
   const int n = 3 + m.rotary_count();
   const Vec3d u = cl.axis.normalized();
   Vec3d b1, b2;
   perpendicular_pair(u, b1, b2);
   ActualIkOutcome out;
-  AxisPosition q = nominal_guess;
+  AxisPosition q = guess;
   for (out.iterations = 0; out.iterations <= o.max_iterations; ++out.iterations) {
-    const RowState<double> state = reversal_state(model, q, o.previous_actual);
+    const RowState<double> state = state_of(q);
     AxisPositionT<Jet> qj;
     for (int i = 0; i < 5; ++i) {
       const double v = i < n ? q[i] : 0.0;
@@ -114,7 +118,8 @@ ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const
     for (int k = 0; k < 3; ++k) axis[k] = pose.axis[k].value();
     out.tip_error_mm = r.head<3>().norm();
     out.axis_error_rad = std::atan2(axis.cross(u).norm(), axis.dot(u));
-    if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
+    // a three-axis machine cannot turn the tool: its axis error is reported, not solved for
+    if (out.tip_error_mm <= o.tip_tolerance_mm && (n < 5 || out.axis_error_rad <= o.axis_tolerance_rad)) {
       out.position = q;
       out.actual = q;
       for (int a = 0; a < n; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
@@ -131,6 +136,36 @@ ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const
   out.message = fmt::format("no convergence on the actual machine after {} iterations (tip {:.3g} mm, axis {:.3g} rad)",
                             o.max_iterations, out.tip_error_mm, out.axis_error_rad);
   return out;
+}
+
+}  // namespace
+
+ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+                             const AxisPosition& nominal_guess, const ActualIkOptions& o) {
+  if (auto fast = fixed_point(model, cl, setup, nominal_guess, o)) return *fast;
+  const int n = 3 + model.machine().rotary_count();
+  if (n == 3 && o.previous_actual && model.has_reversal()) {
+    // Three-axis machine with reversal: the dead band makes the actual position a non-smooth
+    // function of the command (it stands still inside the band), which Newton cannot follow.
+    // Solve for where the axes must actually go (no offsets), then fix each offset by the
+    // direction from where the axis stands (rising: min(0, b), falling: max(0, b)) and solve
+    // the commands with those offsets held.
+    const ActualIkOutcome free = newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
+    if (!free.ok()) return free;
+    RowState<double> fixed;
+    AxisPosition guess = *free.position;
+    for (int a = 0; a < 3; ++a) {
+      const int p = model.layout().reversal_of(a);
+      if (p < 0) continue;
+      const double b = model.values()[static_cast<std::size_t>(p)];
+      const bool rising = (*free.position)[a] >= (*o.previous_actual)[a];
+      fixed.reversal[static_cast<std::size_t>(a)] = rising ? std::min(0.0, b) : std::max(0.0, b);
+      guess[a] -= fixed.reversal[static_cast<std::size_t>(a)];
+    }
+    return newton(model, cl, setup, guess, o, [&](const AxisPosition&) { return fixed; });
+  }
+  return newton(model, cl, setup, nominal_guess, o,
+                [&](const AxisPosition& q) { return reversal_state(model, q, o.previous_actual); });
 }
 
 }  // namespace ncpost::comp

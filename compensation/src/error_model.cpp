@@ -1,12 +1,13 @@
 #include "ncpost/compensation/error_model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace ncpost::comp {
 
 ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names)
-    : axis_terms_(m.axes.size()) {
+    : axis_terms_(m.axes.size()), tables_(m.axes.size()) {
   for (const std::string& n : names) {
     if (index_of(n) >= 0) throw std::invalid_argument(n + ": given twice");
     ParseResult r = parse_parameter_name(n, m);
@@ -19,6 +20,15 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
       case ParameterKind::squareness:
       case ParameterKind::harmonic:
       case ParameterKind::polynomial: axis_terms_[static_cast<std::size_t>(s.axis_index)].push_back(i); break;
+      case ParameterKind::table: {
+        TableNodes& nodes = tables_[static_cast<std::size_t>(s.axis_index)][static_cast<std::size_t>(s.component)];
+        for (const auto& node : nodes)
+          if (std::abs(node.first - s.at_mm) < 1e-9)
+            throw std::invalid_argument(n + ": a node at this position is given twice (" + specs_[static_cast<std::size_t>(node.second)].name + ")");
+        nodes.emplace_back(s.at_mm, i);
+        std::sort(nodes.begin(), nodes.end());
+        break;
+      }
       case ParameterKind::reversal: reversal_[static_cast<std::size_t>(s.axis_index)] = i; break;
       case ParameterKind::drift: drift_terms_.push_back(i); break;
       case ParameterKind::ballbar_length: ballbar_length_ = i; break;

@@ -74,7 +74,9 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
   std::vector<std::string> header;
   int header_line = 0;
   std::vector<int> column_of_axis(m.axes.size(), -1);
-  int t_col = -1, run_col = -1;
+  int t_col = -1, run_col = -1, approach_col = -1;
+  char line_axis = 0;
+  double line_mm[2] = {0.0, 0.0};
   std::vector<int> value_cols;
 
   auto key_line = [&](const std::string& key) {
@@ -132,6 +134,17 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
             throw InputError({file_name, key_line("component"), 0}, fmt::format("component must be X, Y or Z, found '{}'", c));
           set.component = c[0];
           set.tool_point_mm = vector3(require("tool_point"), at_key("tool_point"), "tool_point");
+          const std::string moving = set.meta("axis");
+          if (!moving.empty() && (moving.size() != 1 || moving[0] < 'X' || moving[0] > 'Z'))
+            throw InputError({file_name, key_line("axis"), 0}, fmt::format("axis must be X, Y or Z, found '{}'", moving));
+          if (!set.meta("line").empty()) {
+            if (moving.empty()) throw InputError({file_name, key_line("line"), 0}, "'# line:' needs '# axis:' (the moving axis)");
+            const auto parts = split(set.meta("line"), ',');
+            if (parts.size() != 2)
+              throw InputError({file_name, key_line("line"), 0},
+                               "expected two comma-separated numbers (mm) for 'line': the other two axes, XYZ order");
+            for (const auto& p : parts) number(p, at_key("line"), "line");
+          }
           bool head = false;
           for (const auto& a : m.axes) head = head || (a.is_rotary() && a.side == Side::tool);
           if (head) require("tool_length");
@@ -145,6 +158,7 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
         const std::string& h = header[c];
         if (h == "t") t_col = static_cast<int>(c);
         else if (h == "run") run_col = static_cast<int>(c);
+        else if (h == "approach" && set.type == MeasurementType::laser) approach_col = static_cast<int>(c);
         else if (h.size() == 1 && m.index_of(h[0]) >= 0) {
           if (column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] >= 0) where.fail("column " + h + " given twice");
           column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] = static_cast<int>(c);
@@ -172,6 +186,11 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
         for (const auto& v : set.value_columns()) names += (names.empty() ? "" : ", ") + v;
         where.fail(fmt::format("missing value column(s) of a {} file: expected {}", to_string(set.type), names));
       }
+      if (set.type == MeasurementType::laser && !set.meta("line").empty()) {
+        line_axis = set.meta("axis")[0];
+        const auto parts = split(set.meta("line"), ',');
+        for (int k = 0; k < 2; ++k) line_mm[k] = number(parts[static_cast<std::size_t>(k)], at_key("line"), "line");
+      }
       continue;
     }
     const auto fields = split(raw, ',');
@@ -190,6 +209,23 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
       const double r = number(fields[static_cast<std::size_t>(run_col)], where, "run");
       if (r != std::floor(r)) where.fail("run must be an integer");
       row.run = static_cast<int>(r);
+    }
+    if (approach_col >= 0) {
+      const std::string& a = fields[static_cast<std::size_t>(approach_col)];
+      if (a == "1" || a == "+1") row.approach = 1;
+      else if (a == "-1") row.approach = -1;
+      else where.fail(fmt::format("approach must be +1 (from below) or -1 (from above), found '{}'", a));
+    }
+    if (line_axis != 0) {
+      int k = 0;
+      for (char other : {'X', 'Y', 'Z'}) {
+        if (other == line_axis) continue;
+        const int ai = m.index_of(other);
+        if (ai >= 0 && std::abs(row.command[ai] - line_mm[k]) > 1e-4)
+          where.fail(fmt::format("{} = {} is off the line of the file header ('# line:' says {})", other,
+                                 row.command[ai], line_mm[k]));
+        ++k;
+      }
     }
     if (set.has_values)
       for (std::size_t v = 0; v < value_cols.size(); ++v)
@@ -234,8 +270,11 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
     out += fmt::format("# tool_length: {:.4f}\n", set.tool_length_mm);
   for (const auto& [k, v] : set.metadata)
     if (!known(k)) out += fmt::format("# {}: {}\n", k, v);
+  bool approach = false;
+  for (const auto& r : set.rows) approach = approach || r.approach != 0;
   out += "t";
   if (set.type == MeasurementType::laser) out += ",run";
+  if (approach) out += ",approach";
   for (const auto& a : m.axes) out += fmt::format(",{}", a.letter);
   if (set.has_values)
     for (const auto& v : set.value_columns()) out += "," + v;
@@ -243,6 +282,7 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
   for (const auto& r : set.rows) {
     out += fmt::format("{:.2f}", r.time_s);
     if (set.type == MeasurementType::laser) out += fmt::format(",{}", r.run);
+    if (approach) out += r.approach < 0 ? ",-1" : ",+1";
     for (std::size_t a = 0; a < m.axes.size(); ++a) {
       const double v = r.command[static_cast<int>(a)];
       out += fmt::format(",{:.5f}", m.axes[a].is_rotary() ? rad_to_deg(v) : v);

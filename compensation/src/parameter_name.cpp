@@ -1,6 +1,7 @@
 #include "ncpost/compensation/parameter_name.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <regex>
 
 namespace ncpost::comp {
@@ -28,7 +29,8 @@ bool ParameterSpec::is_angle() const {
   switch (kind) {
     case ParameterKind::location:
     case ParameterKind::harmonic:
-    case ParameterKind::polynomial: return component >= 3;
+    case ParameterKind::polynomial:
+    case ParameterKind::table: return component >= 3;
     case ParameterKind::squareness: return true;
     case ParameterKind::reversal: return false;  // depends on the axis; see is_rotary of the axis
     default: return false;
@@ -39,6 +41,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   static const std::regex location(R"(E([XYZABC])0([XYZABC]))");
   static const std::regex harmonic(R"(E([XYZABC])([ABC]):h([1-4]):(cos|sin))");
   static const std::regex polynomial(R"(E([XYZABC])([XYZ]):p([1-3]))");
+  static const std::regex table(R"(E([XYZABC])([XYZ]):t:([-+]?[0-9]+(\.[0-9]*)?))");
   static const std::regex reversal(R"(reversal:([XYZABC]))");
   static const std::regex drift(R"(drift:([XYZ]):t:(lin|quad|exp|tau))");
   static const std::regex sphere(R"(sphere:position:([xyz]))");
@@ -89,6 +92,15 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     s.order = std::stoi(g[3].str());
     return accept(s);
   }
+  if (std::regex_match(name, g, table)) {
+    s.kind = ParameterKind::table;
+    s.axis_index = axis(g[2].str()[0]);
+    if (s.axis_index < 0) return refuse("the machine has no axis " + g[2].str());
+    if (m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary()) return refuse("table terms belong to linear axes");
+    s.component = component_of(g[1].str()[0]);
+    s.at_mm = std::stod(g[3].str());
+    return accept(s);
+  }
   if (std::regex_match(name, g, reversal)) {
     s.kind = ParameterKind::reversal;
     s.axis_index = axis(g[1].str()[0]);
@@ -115,14 +127,25 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     return accept(s);
   }
   return refuse("not an error parameter name of conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
-                "reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+                "EXX:t:-250, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+}
+
+std::string table_parameter_name(char component, char axis, double at_mm) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", std::abs(at_mm) < 5e-5 ? 0.0 : at_mm);
+  std::string v = buf;
+  while (v.back() == '0') v.pop_back();
+  if (v.back() == '.') v.pop_back();
+  return std::string{'E', component, axis} + ":t:" + v;
 }
 
 std::string effect_of(const std::string& name) {
   static const std::regex harmonic(R"((E[XYZABC][ABC]:h[1-4]):(cos|sin))");
   static const std::regex drift(R"((drift:[XYZ]:t):.*)");
+  static const std::regex table(R"((E[XYZABC][XYZ]:t):.*)");
   std::smatch g;
   if (std::regex_match(name, g, harmonic)) return g[1].str();
+  if (std::regex_match(name, g, table)) return g[1].str();
   if (std::regex_match(name, g, drift)) return g[1].str();
   if (name.rfind("sphere:position", 0) == 0) return "sphere:position";
   return name;

@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "ncpost/compensation/laser_reading.hpp"
 #include "ncpost/compensation/prediction.hpp"
 
 namespace ncpost::comp {
@@ -9,7 +10,10 @@ namespace ncpost::comp {
 MeasurementSet simulate(const Machine& m, const MeasurementSet& plan, const ErrorParameters& truth,
                         const SimulationOptions& options) {
   const ModelLayout layout(m, truth.names());
-  const std::vector<double> values = predict_set<double>(m, plan, layout, truth.values().data());
+  // laser sets with approach directions: ISO 230-2 reversal per row (laser_reading.hpp)
+  const std::vector<double> values = plan.type == MeasurementType::laser
+                                         ? predict_laser_set(m, plan, layout, truth.values().data())
+                                         : predict_set<double>(m, plan, layout, truth.values().data());
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> noise(0.0, 1.0);
   const double sigma = options.noise_um * 1e-3 / value_unit_mm(plan);

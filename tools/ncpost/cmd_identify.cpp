@@ -9,10 +9,12 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "identify_laser.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
+#include "ncpost/compensation/laser_identify.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
@@ -83,6 +85,8 @@ void add_identify(CLI::App& app, Action& action) {
       const Machine m = load_machine(a->machine);
       std::vector<comp::MeasurementSet> sets;
       for (const auto& f : a->data) sets.push_back(comp::read_measurement_csv(f, m));
+      if (comp::all_laser(sets))  // issue 7
+        return identify_laser(m, sets, a->output, a->report, !a->params.empty() || !a->fixed.empty() || a->loss != "squared");
       std::vector<std::string> names = a->no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);
       for (const auto& n : split_list(a->params)) {
         const comp::ParseResult r = comp::parse_parameter_name(n, m);

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -21,6 +22,7 @@ struct PlanArgs {
   int points = 500;
   std::string sphere;
   bool seed_directions = false;
+  comp::LaserPlanOptions laser;
 };
 
 Vec3d parse_vec(const std::string& s, const char* option) {
@@ -38,9 +40,9 @@ void add_plan(CLI::App& app, Action& action) {
   auto a = std::make_shared<PlanArgs>();
   CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
   sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
-  sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head")
+  sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head | laser")
       ->required()
-      ->check(CLI::IsMember({"ballbar-4axis", "sphere", "bc-head"}));
+      ->check(CLI::IsMember({"ballbar-4axis", "sphere", "bc-head", "laser"}));
   sub->add_option("-o,--output", a->output,
                   "output: PLAN.csv (one set) or PLAN_<set>.csv (several), and PLAN.nc")
       ->required();
@@ -53,10 +55,21 @@ void add_plan(CLI::App& app, Action& action) {
   sub->add_option("--sphere", a->sphere, "sphere: centre X,Y,Z at home (mm, default 120,40,80)");
   sub->add_option("--levels", a->levels, "sphere: levels of the tilt axis (deg)")->delimiter(',');
   sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)");
-  sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250)")
+  sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250); laser: reflector holder length (default 100)")
       ->take_all();
   sub->add_flag("--seed-directions", a->seed_directions,
                 "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
+  sub->add_option("--axes", a->laser.axes, "laser: axes to measure (default XYZ)");
+  sub->add_option("--target-step", a->laser.step_mm, "laser: target spacing (mm, default 50)")->check(CLI::PositiveNumber);
+  sub->add_option("--runs", a->laser.runs, "laser: bidirectional runs per line (default 5, ISO 230-2)")
+      ->check(CLI::Range(1, 100));
+  sub->add_option("--lines", a->laser.lines, "laser: parallel lines per axis, 1..3 (default 3)")->check(CLI::Range(1, 3));
+  sub->add_flag("--positioning-only", [a](std::int64_t) { a->laser.straightness = false; },
+                "laser: positioning only, no straightness sets");
+  sub->add_option("--reflector-offset", a->laser.reflector_offset_mm,
+                  "laser: reflector offset from the spindle where a line cannot be reached by an axis (mm, default 100)");
+  sub->add_option("--margin", a->laser.margin_mm, "laser: kept clear of each travel end (mm, default 0)");
+  sub->add_option("--overshoot", a->laser.overshoot_mm, "laser: overshoot before each pass (mm, default 5)");
   sub->callback([&action, a] {
     action = [a] {
       const Machine m = load_machine(a->machine);
@@ -80,6 +93,14 @@ void add_plan(CLI::App& app, Action& action) {
           if (a->dt) o.dt_s = *a->dt;
           if (a->t0) o.t0_s = *a->t0;
           plans = comp::plan_sphere(m, o);
+        } else if (a->test == "laser") {
+          comp::LaserPlanOptions o = a->laser;
+          if (a->dt) o.dt_s = *a->dt;
+          if (a->t0) o.t0_s = *a->t0;
+          if (!a->tool_lengths.empty()) o.tool_length_mm = a->tool_lengths.front();
+          a->laser = o;
+          if (const std::string why = o.validate(); !why.empty()) throw UsageError("plan laser: " + why);
+          plans = comp::plan_laser(m, o);
         } else {
           comp::BcHeadPlanOptions o;
           if (!a->tool_lengths.empty()) o.tool_lengths_mm = a->tool_lengths;
@@ -99,7 +120,8 @@ void add_plan(CLI::App& app, Action& action) {
         write_file_atomically(file, comp::format_measurement_csv(p.set, m));
         fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
       }
-      write_file_atomically(stem + ".nc", comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
+      write_file_atomically(stem + ".nc", a->test == "laser" ? comp::laser_program(m, plans, a->laser)
+                                                             : comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
       fmt::print("NC program -> {}.nc\n", stem);
       return 0;
     };

@@ -9,12 +9,16 @@
 // 5 unknowns. Jacobian by automatic differentiation of the templated chain with respect to the
 // commands; steps by a truncated-SVD pseudo-inverse, so that near the singular orientation
 // (free outer angle) the free angle stays at its nominal value. Converged when the tip is within
-// `tip_tolerance_mm` and the axis within `axis_tolerance_rad`.
+// `tip_tolerance_mm` and the axis within `axis_tolerance_rad`. A three-axis machine (no rotary
+// axes) cannot turn the tool: it solves the tip only, and `axis_error_rad` reports the tilt its
+// angular errors leave (issue 7).
 //
 // Reversal: with `previous_actual` (where each axis actually stands, after the previous block)
 // the dead-band offset of each axis follows from the direction of the new command
 // (reversal.hpp); it is re-evaluated at every iterate, so the solution is consistent with the
-// direction its own command implies. Without it, offsets are 0 (approach from below).
+// direction its own command implies. Without it, offsets are 0 (approach from below). On a
+// three-axis machine the offsets are instead fixed from the direction in which each axis must
+// actually move (the dead band is not smooth enough for Newton when the needed move is within it).
 #include <optional>
 #include <string>
 

@@ -12,7 +12,9 @@
 //   location errors   → location_offset_mm / location_tilt_rad of the rotary axis
 //   squareness        → direction_offset: ŷ = (−EC0Y, 1, 0), ẑ = (EB0Z, −EA0Z, 1)
 //   component errors  → motion_mm (EX, EY, EZ) / motion_rad (EA, EB, EC) of the axis:
-//                       rotary Σ value·cos(kq) or value·sin(kq), linear Σ value·q^k (q in mm)
+//                       rotary Σ value·cos(kq) or value·sin(kq), linear Σ value·q^k (q in mm);
+//                       table nodes (EXX:t:<pos>) of one function interpolated linearly in q,
+//                       held at the end values outside the nodes
 //   reversal          → the row's dead-band offset (reversal.hpp), not at home
 //   drift             → a translation of the TCP relative to the table in M (added to the error
 //                       motion of the linear axis nearest the bed, which moves the whole side),
@@ -21,12 +23,23 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/kinematics/forward.hpp"
 
 namespace ncpost::comp {
+
+/// The plain value of a scalar (double or an automatic-differentiation scalar).
+template <class S> double plain_value(const S& v) {
+  if constexpr (std::is_arithmetic_v<S>) return static_cast<double>(v);
+  else return plain_value(v.value());
+}
+
+/// The nodes of one tabulated error function: (position mm, parameter index), by position.
+using TableNodes = std::vector<std::pair<double, int>>;
 
 class ModelLayout {
  public:
@@ -42,6 +55,12 @@ class ModelLayout {
 
   /// Parameters acting through the transform of this axis (location, squareness, component).
   const std::vector<int>& terms_of_axis(int axis_index) const { return axis_terms_[static_cast<std::size_t>(axis_index)]; }
+  /// Table nodes of component c (0..5) of a linear axis (empty if none).
+  const TableNodes& table_of(int axis_index, int component) const {
+    static const TableNodes none;
+    if (static_cast<std::size_t>(axis_index) >= tables_.size()) return none;
+    return tables_[static_cast<std::size_t>(axis_index)][static_cast<std::size_t>(component)];
+  }
   int reversal_of(int axis_index) const { return reversal_[static_cast<std::size_t>(axis_index)]; }
   bool has_reversal() const;
   const std::vector<int>& drift_terms() const { return drift_terms_; }
@@ -52,6 +71,7 @@ class ModelLayout {
  private:
   std::vector<ParameterSpec> specs_;
   std::vector<std::vector<int>> axis_terms_;
+  std::vector<std::array<TableNodes, 6>> tables_;
   std::array<int, 5> reversal_{-1, -1, -1, -1, -1};
   std::vector<int> drift_terms_;
   int drift_axis_ = -1;
@@ -111,6 +131,10 @@ template <class P> class ErrorFunctor {
         default: break;
       }
     }
+    for (int c = 0; c < 6; ++c) {
+      const TableNodes& nodes = layout_->table_of(axis_index, c);
+      if (!nodes.empty()) add_motion<S>(e, c, interpolate<S>(nodes, q));
+    }
     if (at_home) return e;
     if (layout_->reversal_of(axis_index) >= 0) e.reversal = S(state_.reversal[static_cast<std::size_t>(axis_index)]);
     if (!machine_only_ && axis_index == layout_->drift_axis()) e.motion_mm += drift<S>();
@@ -139,6 +163,19 @@ template <class P> class ErrorFunctor {
   }
 
  private:
+  /// Linear interpolation of table nodes at q, held at the end values outside them.
+  template <class S> S interpolate(const TableNodes& nodes, const S& q) const {
+    const double x = plain_value(q);
+    if (x <= nodes.front().first) return S(values_[nodes.front().second]);
+    if (x >= nodes.back().first) return S(values_[nodes.back().second]);
+    std::size_t i = 1;
+    while (nodes[i].first < x) ++i;
+    const auto& [x0, i0] = nodes[i - 1];
+    const auto& [x1, i1] = nodes[i];
+    const S w = (q - S(x0)) / S(x1 - x0);
+    return S(values_[i0]) + w * (S(values_[i1]) - S(values_[i0]));
+  }
+
   template <class S> static void add_motion(AxisErrorTerms<S>& e, int c, const S& v) {
     if (c < 3) e.motion_mm[c] += v;
     else e.motion_rad[c - 3] += v;

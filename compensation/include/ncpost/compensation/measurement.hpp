@@ -22,6 +22,7 @@ struct MeasurementRow {
   double time_s = 0.0;
   AxisPosition command;  ///< mm, rad
   int run = 0;           ///< laser: run number (the instrument is zeroed at each run's first row)
+  int approach = 0;      ///< laser: +1 approached from below, −1 from above (column `approach`), 0 not given
   Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< L | dx,dy,dz | e_um in value[0]
 };
 

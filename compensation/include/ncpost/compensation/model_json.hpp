@@ -1,6 +1,8 @@
 #pragma once
 // The error model file (formats.md "Error model (JSON)"): written by `identify`, read by
-// `post --model` and `simulate`. Parameters in mm / rad (names: parameter_name.hpp).
+// `post --model` and `simulate`. Parameters in mm / rad (names: parameter_name.hpp; component
+// errors of linear axes either as polynomial terms `EXX:p1` or as table nodes `EXX:t:-250`, the
+// value at that axis position, interpolated linearly — issue 7, compensation/LASER.md).
 //
 // Reading validates every parameter name against the machine (when given): an unknown or
 // impossible name is an InputError naming the file, the line of the name and the reason. Keys

@@ -7,6 +7,10 @@
 //   EC0Y, EB0Z, EA0Z                squareness of the linear axes
 //   ECC:h2:cos, EXC:h1:sin          component error functions of a rotary axis, harmonic k = 1..4
 //   EXX:p1, EZX:p2, EAY:p3          component error functions of a linear axis, degree k = 1..3
+//   EXX:t:-275, ECY:t:50            component error function of a linear axis as a table: the
+//                                   value at that position of the axis (mm); all nodes of one
+//                                   function (e.g. every EXX:t:*) are interpolated linearly and
+//                                   held at the end values outside them (issue 7, LASER.md)
 //   reversal:A                      dead-band width of axis A (rad or mm)
 //   drift:Z:t:lin | :quad | :exp | :tau
 //                                   drift of the TCP relative to the table along Z, in M axes:
@@ -26,6 +30,7 @@ enum class ParameterKind {
   squareness,      ///< linear axis: direction offset
   harmonic,        ///< rotary axis error motion, component 0..5, order k, cos or sin
   polynomial,      ///< linear axis error motion, component 0..5, degree k
+  table,           ///< linear axis error motion, component 0..5, value at node position at_mm
   reversal,        ///< dead band of an axis
   drift,           ///< TCP drift relative to the table, component 0..2 (X, Y, Z)
   ballbar_length,  ///< instrument: bar length offset
@@ -41,6 +46,7 @@ struct ParameterSpec {
   int component = 0;    ///< 0..2 = X, Y, Z (translation), 3..5 = A, B, C (rotation)
   int order = 0;        ///< harmonic order or polynomial degree
   bool sine = false;    ///< harmonic: sin term (else cos)
+  double at_mm = 0.0;   ///< table: node position on the axis (mm)
   DriftBasis drift = DriftBasis::linear;
 
   /// True for the effects that act only while measuring (drift, instrument terms): they are not
@@ -61,6 +67,9 @@ struct ParseResult {
 /// Parses `name` for `machine`; a name of an axis the machine lacks, or an error without effect
 /// (e.g. EZ0C, the offset of C along its own line), is refused with a reason.
 ParseResult parse_parameter_name(const std::string& name, const Machine& machine);
+
+/// The name of the table node of E<component><axis> at `at_mm` (e.g. "EXX:t:-275", "ECY:t:12.5").
+std::string table_parameter_name(char component, char axis, double at_mm);
 
 /// The effect a parameter belongs to (conventions.md "Effect names"): "ECC:h2" for "ECC:h2:cos",
 /// "drift:Z:t" for "drift:Z:t:lin", "sphere:position" for "sphere:position:x", else the name.

@@ -1,0 +1,280 @@
+#include "ncpost/compensation/laser_identify.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "ncpost/compensation/error_model.hpp"
+#include "ncpost/compensation/laser_reading.hpp"
+#include "ncpost/compensation/parameter_name.hpp"
+#include "laser_problem.hpp"
+
+namespace ncpost::comp {
+namespace {
+
+using laser::fill_approach;
+using laser::kComponents;
+using laser::priority_of;
+using laser::Problem;
+
+void stats(const Eigen::VectorXd& r, double& rms, double& max) {
+  rms = r.size() ? std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
+  max = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+}
+
+std::string why_unseen(const LaserFunction& f) {
+  const std::string k = f.kind();
+  if (k == "positioning") return "needs a positioning line of the axis";
+  if (k.rfind("straightness", 0) == 0) return fmt::format("needs a straightness line in {}", f.component);
+  if (k == "roll") return "roll needs straightness lines at two different offsets (ISO 230-1)";
+  return fmt::format("{} needs positioning (or straightness) lines at different Abbe offsets", k);
+}
+
+}  // namespace
+
+std::string LaserIdentifyOptions::validate() const {
+  if (!(rank_tolerance > 0.0 && rank_tolerance < 1.0)) return "rank tolerance must be in (0, 1)";
+  if (max_iterations < 1) return "at least one iteration";
+  return {};
+}
+
+bool all_laser(const std::vector<MeasurementSet>& sets) {
+  if (sets.empty()) return false;
+  return std::all_of(sets.begin(), sets.end(), [](const MeasurementSet& s) { return s.type == MeasurementType::laser; });
+}
+
+LaserIdentifyResult identify_laser(const Machine& m, const std::vector<MeasurementSet>& input,
+                                   const LaserIdentifyOptions& o) {
+  LaserIdentifyResult res;
+  if (const std::string why = o.validate(); !why.empty()) {
+    res.message = why;
+    return res;
+  }
+  if (!all_laser(input)) {
+    res.message = "not all files are laser data";
+    return res;
+  }
+  Problem pb;
+  pb.machine = &m;
+  pb.sets = input;
+  std::array<bool, 3> up{}, down{};
+  for (auto& s : pb.sets) {
+    if (!s.has_values) {
+      res.message = s.file + ": a plan without values";
+      return res;
+    }
+    fill_approach(s);
+    const int j = laser_moving_axis(s);
+    pb.moving.push_back(j);
+    for (const auto& r : s.rows) {
+      auto& x = pb.nodes[static_cast<std::size_t>(j)];
+      if (std::none_of(x.begin(), x.end(), [&](double v) { return std::abs(v - r.command[j]) < 1e-4; }))
+        x.push_back(r.command[j]);
+      (r.approach > 0 ? up : down)[static_cast<std::size_t>(j)] = true;
+    }
+    pb.rows += static_cast<Eigen::Index>(s.rows.size());
+  }
+  res.readings = static_cast<std::size_t>(pb.rows);
+  // the layout: every node (home included, fixed at 0), reversal; columns by priority
+  struct Candidate {
+    int priority;
+    int layout_index;
+  };
+  std::vector<Candidate> cand;
+  for (int a = 0; a < 3; ++a) {
+    auto& x = pb.nodes[static_cast<std::size_t>(a)];
+    if (x.empty()) continue;
+    if (std::none_of(x.begin(), x.end(), [](double v) { return std::abs(v) < 1e-4; })) x.push_back(0.0);
+    std::sort(x.begin(), x.end());
+    for (int c = 0; c < 6; ++c)
+      for (double at : x) {
+        const int idx = static_cast<int>(pb.names.size());
+        pb.names.push_back(table_parameter_name(kComponents[c], static_cast<char>('X' + a), at));
+        pb.node_param[static_cast<std::size_t>(a)][static_cast<std::size_t>(c)].push_back(idx);
+        if (std::abs(at) >= 1e-4) cand.push_back({priority_of(a, c), idx});
+      }
+    if (o.fit_reversal && up[static_cast<std::size_t>(a)] && down[static_cast<std::size_t>(a)]) {
+      pb.reversal_param[static_cast<std::size_t>(a)] = static_cast<int>(pb.names.size());
+      cand.push_back({1, static_cast<int>(pb.names.size())});
+      pb.names.push_back(fmt::format("reversal:{}", static_cast<char>('X' + a)));
+    }
+  }
+  try {
+    pb.layout = ModelLayout(m, pb.names);
+  } catch (const std::invalid_argument& e) {
+    res.message = e.what();
+    return res;
+  }
+  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.priority < b.priority; });
+  pb.column_of.assign(pb.names.size(), -1);
+  Eigen::VectorXd typical(static_cast<Eigen::Index>(cand.size()));
+  for (const auto& c : cand) {
+    pb.column_of[static_cast<std::size_t>(c.layout_index)] = static_cast<int>(pb.param_of.size());
+    typical[static_cast<Eigen::Index>(pb.param_of.size())] = pb.layout.spec(c.layout_index).is_angle() ? 5e-5 : 0.01;
+    pb.param_of.push_back(c.layout_index);
+    res.candidates.push_back(pb.names[static_cast<std::size_t>(c.layout_index)]);
+  }
+
+  // Gauss–Newton on the kept columns
+  std::vector<double> values(pb.names.size(), 0.0);
+  Eigen::VectorXd r = pb.residual(values);
+  stats(r, res.rms_nominal_um, res.max_nominal_um);
+  Eigen::MatrixXd J = pb.jacobian(values);
+  res.rank = analyse_rank(J, o.rank_tolerance, typical);
+  const auto& kept = res.rank.kept;
+  auto kept_matrix = [&](const Eigen::MatrixXd& full, Eigen::VectorXd& scale) {
+    Eigen::MatrixXd K(full.rows(), static_cast<Eigen::Index>(kept.size()));
+    scale.resize(static_cast<Eigen::Index>(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      const double n = full.col(kept[i]).norm();
+      scale[static_cast<Eigen::Index>(i)] = n > 0 ? n : 1.0;
+      K.col(static_cast<Eigen::Index>(i)) = full.col(kept[i]) / scale[static_cast<Eigen::Index>(i)];
+    }
+    return K;
+  };
+  Eigen::VectorXd scale;
+  for (res.iterations = 1; res.iterations <= o.max_iterations; ++res.iterations) {
+    const Eigen::MatrixXd K = kept_matrix(J, scale);
+    const Eigen::VectorXd step = K.colPivHouseholderQr().solve(r).cwiseQuotient(scale);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      const int p = pb.param_of[static_cast<std::size_t>(kept[i])];
+      values[static_cast<std::size_t>(p)] += step[static_cast<Eigen::Index>(i)];
+      const double unit = pb.layout.spec(p).is_angle() ? 1e-6 : 1e-4;  // 1 µrad, 0.1 µm
+      largest = std::max(largest, std::abs(step[static_cast<Eigen::Index>(i)]) / unit);
+    }
+    r = pb.residual(values);
+    if (largest < 1e-3) break;
+    J = pb.jacobian(values);
+  }
+  res.iterations = std::min(res.iterations, o.max_iterations);
+  stats(r, res.rms_fit_um, res.max_fit_um);
+  // uncertainty of the kept values: s²·(KᵀK)⁻¹ in scaled space
+  std::vector<double> sigma(pb.names.size(), 0.0);
+  {
+    const Eigen::MatrixXd K = kept_matrix(J, scale);
+    const double dof = double(K.rows() - K.cols());
+    if (dof > 0) {
+      const double s2 = r.squaredNorm() / dof;
+      const Eigen::MatrixXd cov = (K.transpose() * K).ldlt().solve(Eigen::MatrixXd::Identity(K.cols(), K.cols()));
+      for (std::size_t i = 0; i < kept.size(); ++i) {
+        const auto ii = static_cast<Eigen::Index>(i);
+        sigma[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] =
+            std::sqrt(std::max(0.0, s2 * cov(ii, ii))) / scale[ii];
+      }
+    }
+  }
+  std::vector<bool> seen(pb.names.size(), true);
+  for (int c : res.rank.pinned) seen[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(c)])] = false;
+
+  // functions, ISO 230-1 reference for straightness
+  std::map<std::string, double> slope;  // "EYX" → s
+  std::map<std::string, bool> slope_seen;
+  for (int a = 0; a < 3; ++a) {
+    const auto& x = pb.nodes[static_cast<std::size_t>(a)];
+    if (x.empty()) continue;
+    for (int c = 0; c < 6; ++c) {
+      LaserFunction f;
+      f.component = kComponents[c];
+      f.axis = static_cast<char>('X' + a);
+      f.nodes_mm = x;
+      for (int p : pb.node_param[static_cast<std::size_t>(a)][static_cast<std::size_t>(c)]) {
+        f.values.push_back(values[static_cast<std::size_t>(p)]);
+        f.sigma.push_back(sigma[static_cast<std::size_t>(p)]);
+        f.seen.push_back(seen[static_cast<std::size_t>(p)]);
+      }
+      if (c < 3 && c != a) {
+        double range = 0.0;
+        f.iso_slope = least_squares_slope(f.nodes_mm, f.values, range);
+        f.iso_straightness_um = 1e3 * range;
+        for (std::size_t i = 0; i < x.size(); ++i) f.values[i] -= f.iso_slope * x[i];
+        slope[f.name()] = f.iso_slope;
+        slope_seen[f.name()] = f.fully_seen();
+      }
+      std::vector<double> yv = f.values;
+      f.polynomial_rms = fit_polynomial_through_home(f.nodes_mm, yv, f.polynomial);
+      res.functions.push_back(f);
+    }
+  }
+  // squareness from the slopes
+  struct Sq {
+    const char* name;
+    const char* a;
+    const char* b;
+    double sign;
+  };
+  for (const Sq& q : {Sq{"EC0Y", "EYX", "EXY", -1.0}, Sq{"EB0Z", "EZX", "EXZ", 1.0}, Sq{"EA0Z", "EZY", "EYZ", -1.0}}) {
+    if (slope.count(q.a) && slope.count(q.b) && slope_seen[q.a] && slope_seen[q.b]) {
+      res.squareness.set(q.name, q.sign * (slope[q.a] + slope[q.b]));
+    } else {
+      res.squareness_unseen.push_back(fmt::format("{}: needs the straightness {} and {} (their least-squares slopes, "
+                                                  "ISO 230-1)", q.name, q.a, q.b));
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+    if (const int p = pb.reversal_param[static_cast<std::size_t>(a)]; p >= 0) {
+      res.reversal.set(pb.names[static_cast<std::size_t>(p)], values[static_cast<std::size_t>(p)]);
+      res.reversal_sigma.set(pb.names[static_cast<std::size_t>(p)], sigma[static_cast<std::size_t>(p)]);
+    }
+  // the model as written
+  for (const auto& f : res.functions)
+    for (std::size_t i = 0; i < f.nodes_mm.size(); ++i)
+      res.parameters.set(table_parameter_name(f.component, f.axis, f.nodes_mm[i]), f.values[i]);
+  for (std::size_t i = 0; i < res.squareness.size(); ++i) res.parameters.set(res.squareness.names()[i], res.squareness.values()[i]);
+  for (std::size_t i = 0; i < res.reversal.size(); ++i) res.parameters.set(res.reversal.names()[i], res.reversal.values()[i]);
+  {
+    const ModelLayout final_layout(m, res.parameters.names());
+    Eigen::VectorXd rf(pb.rows);
+    Eigen::Index k = 0;
+    for (const auto& s : pb.sets) {
+      const std::vector<double> p = predict_laser_set(m, s, final_layout, res.parameters.values().data());
+      for (std::size_t i = 0; i < s.rows.size(); ++i) rf[k++] = s.rows[i].value[0] - p[i];
+    }
+    stats(rf, res.rms_after_um, res.max_after_um);
+  }
+  // what the lines cannot see
+  for (const auto& f : res.functions) {
+    int total = 0, unseen = 0;
+    for (std::size_t i = 0; i < f.seen.size(); ++i) {
+      if (std::abs(f.nodes_mm[i]) < 1e-4) continue;
+      ++total;
+      unseen += !f.seen[i];
+    }
+    if (unseen == 0) continue;
+    res.unseen.push_back(fmt::format("{} ({} of {}): {} of {} nodes not seen — {}", f.name(), f.kind(), f.axis,
+                                     unseen, total, why_unseen(f)));
+  }
+  for (const auto& s : res.squareness_unseen) res.unseen.push_back(s);
+  for (std::size_t i = 0; i < res.rank.pinned.size() && i < 12; ++i) {
+    const Eigen::VectorXd& v = res.rank.null_vectors[i];
+    const int p = res.rank.pinned[i];
+    std::string text = res.candidates[static_cast<std::size_t>(p)] + " acts as";
+    int terms = 0;
+    std::vector<std::pair<double, int>> w;
+    for (Eigen::Index c = 0; c < v.size(); ++c)
+      if (c != p && std::abs(v[c]) >= 0.05) w.emplace_back(-std::abs(v[c]), static_cast<int>(c));
+    std::sort(w.begin(), w.end());
+    for (const auto& [mag, c] : w) {
+      if (terms++ == 3) break;
+      text += fmt::format(" {}{:.2f}·{}", terms > 1 ? "+ " : "", -v[c] / v[p], res.candidates[static_cast<std::size_t>(c)]);
+    }
+    if (terms == 0) text += " nothing: without effect on these readings";
+    res.combinations.push_back(text + " (column-scaled)");
+  }
+  // ISO 230-2 figures of every positioning line
+  for (const auto& s : pb.sets)
+    if (s.component == static_cast<char>('X' + laser_moving_axis(s))) {
+      Iso230Figures f = iso230_2_figures(s);
+      if (f.ok) res.iso230.push_back(f);
+    }
+  res.ok = true;
+  res.message = fmt::format("converged in {} Gauss–Newton step(s), rank {} of {}", res.iterations, res.rank.rank,
+                            static_cast<int>(res.candidates.size()));
+  return res;
+}
+
+}  // namespace ncpost::comp

@@ -1,0 +1,188 @@
+#include "ncpost/compensation/laser_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace ncpost::comp {
+namespace {
+
+int position_in(const std::vector<int>& side, int axis) {
+  const auto it = std::find(side.begin(), side.end(), axis);
+  return it == side.end() ? -1 : static_cast<int>(it - side.begin());
+}
+
+double round_to(double v, double quantum) {
+  const double r = std::round(v / quantum) * quantum;
+  return r == 0.0 ? 0.0 : r;
+}
+
+/// Travel of linear axis j minus the margins (mm).
+std::pair<double, double> travel(const Machine& m, int j, double margin_mm) {
+  const Axis& a = m.axes[static_cast<std::size_t>(j)];
+  if (!a.limits) throw std::invalid_argument(fmt::format("axis {} has no limits in the machine file", a.letter));
+  const double lo = a.limits->min + margin_mm, hi = a.limits->max - margin_mm;
+  if (hi <= lo) throw std::invalid_argument(fmt::format("axis {}: the margins leave no travel", a.letter));
+  return {lo, hi};
+}
+
+}  // namespace
+
+std::string LaserPlanOptions::validate() const {
+  if (axes.empty()) return "no axes to measure";
+  for (char c : axes)
+    if (c != 'X' && c != 'Y' && c != 'Z') return fmt::format("axes must be among X, Y, Z, found '{}'", c);
+  if (!(step_mm > 0.0)) return "the target step must be positive";
+  if (runs < 1) return "at least one run";
+  if (lines < 1 || lines > 3) return "1 to 3 lines per axis";
+  if (!(tool_length_mm >= 0.0)) return "the tool length must not be negative";
+  if (!(overshoot_mm >= 0.0) || !(margin_mm >= 0.0)) return "overshoot and margin must not be negative";
+  if (!(feed_mm_min > 0.0) || !(dt_s > 0.0)) return "feed and time per target must be positive";
+  return {};
+}
+
+bool moves_abbe_offset(const Machine& m, int j, int k) {
+  const int j_work = position_in(m.workpiece_side, j), k_work = position_in(m.workpiece_side, k);
+  const int j_tool = position_in(m.tool_side, j), k_tool = position_in(m.tool_side, k);
+  if (j_work >= 0) return k_tool >= 0 || (k_work >= 0 && k_work < j_work);
+  return k_tool >= 0 && k_tool > j_tool;
+}
+
+std::vector<double> laser_targets(const Machine& m, int j, const LaserPlanOptions& o) {
+  // the overshoot before each pass must stay within the travel too
+  const auto [lo, hi] = travel(m, j, o.margin_mm + o.overshoot_mm);
+  std::vector<double> t;
+  if (lo <= 0.0 && hi >= 0.0) {
+    // a grid through home, plus the travel ends where they are more than a quarter step away
+    for (double k = std::ceil(lo / o.step_mm - 1e-9); k * o.step_mm <= hi + 1e-9; k += 1.0)
+      t.push_back(round_to(k * o.step_mm, 1e-5));
+    if (t.empty() || t.front() - lo > 0.25 * o.step_mm) t.insert(t.begin(), round_to(lo, 1e-5));
+    if (t.back() < hi - 0.25 * o.step_mm) t.push_back(round_to(hi, 1e-5));
+  } else {
+    const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + 1e-9)) + 1;
+    const double start = lo + 0.5 * ((hi - lo) - (n - 1) * o.step_mm);
+    for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, 1e-5));
+  }
+  return t;
+}
+
+std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
+  if (const std::string why = o.validate(); !why.empty()) throw std::invalid_argument(why);
+  std::vector<NamedPlan> plans;
+  double t = o.t0_s;
+  for (char letter : o.axes) {
+    const int j = letter - 'X';
+    const std::vector<double> targets = laser_targets(m, j, o);
+    // the other two directions, XYZ order, and their two line coordinates each
+    std::array<int, 2> other{};
+    std::array<std::array<double, 2>, 2> at{};
+    std::array<bool, 2> commanded{};
+    for (int k = 0, n = 0; k < 3; ++k) {
+      if (k == j) continue;
+      other[n] = k;
+      commanded[n] = moves_abbe_offset(m, j, k);
+      if (commanded[n]) {
+        const auto [lo, hi] = travel(m, k, o.margin_mm);
+        at[n] = {round_to(lo + 0.25 * (hi - lo), 5.0), round_to(lo + 0.75 * (hi - lo), 5.0)};
+      } else {
+        at[n] = {-o.reflector_offset_mm, o.reflector_offset_mm};
+      }
+      ++n;
+    }
+    // lines (a1, b2), (a2, b2), (a1, b1): not collinear, so pitch, yaw and roll are all seen
+    const std::array<std::array<int, 2>, 3> pick{{{0, 1}, {1, 1}, {0, 0}}};
+    for (int line = 0; line < o.lines; ++line) {
+      AxisPosition base;
+      Vec3d tool_point = Vec3d::Zero();
+      std::array<double, 2> line_cmd{0.0, 0.0};
+      for (int n = 0; n < 2; ++n) {
+        const double v = at[n][static_cast<std::size_t>(pick[static_cast<std::size_t>(line)][n])];
+        if (commanded[n]) {
+          base[other[n]] = v;
+          line_cmd[n] = v;
+        } else {
+          tool_point[other[n]] = v;
+        }
+      }
+      std::vector<char> components{letter};
+      if (o.straightness)
+        for (int n = 0; n < 2; ++n) components.push_back(static_cast<char>('X' + other[n]));
+      for (char c : components) {
+        NamedPlan p;
+        p.name = c == letter ? fmt::format("{}{}_pos", letter, line + 1) : fmt::format("{}{}_str{}", letter, line + 1, c);
+        MeasurementSet& s = p.set;
+        s.file = p.name;
+        s.type = MeasurementType::laser;
+        s.has_values = false;
+        s.component = c;
+        s.tool_point_mm = tool_point;
+        s.tool_length_mm = o.tool_length_mm;
+        s.set_meta("axis", std::string(1, letter));
+        s.set_meta("line", fmt::format("{:.4f}, {:.4f}", line_cmd[0], line_cmd[1]));
+        s.set_meta("approach", "bidirectional");
+        s.set_meta("test", fmt::format("laser {} of axis {}, line {} (ISO 230-2 cycle, {} runs)",
+                                       c == letter ? "positioning" : fmt::format("straightness in {}", c), letter,
+                                       line + 1, o.runs));
+        for (int run = 1; run <= o.runs; ++run) {
+          for (int pass = 0; pass < 2; ++pass) {
+            for (std::size_t i = 0; i < targets.size(); ++i) {
+              const double x = pass == 0 ? targets[i] : targets[targets.size() - 1 - i];
+              MeasurementRow r;
+              r.command = base;
+              r.command[j] = x;
+              r.run = run;
+              r.approach = pass == 0 ? 1 : -1;
+              r.time_s = std::round(t * 100.0) / 100.0;
+              t += o.dt_s;
+              s.rows.push_back(r);
+            }
+          }
+        }
+        t += 60.0;  // re-setting the optics
+        plans.push_back(std::move(p));
+      }
+    }
+  }
+  return plans;
+}
+
+std::string laser_program(const Machine& m, const std::vector<NamedPlan>& plans, const LaserPlanOptions& o) {
+  std::string out = "%\nO1007 (ncpost plan laser: ISO 230-2 test cycles)\nG90 G21 G17 G94\n";
+  auto words = [&](const AxisPosition& q) {
+    std::string w;
+    for (std::size_t a = 0; a < m.axes.size(); ++a) {
+      const double v = q[static_cast<int>(a)];
+      w += fmt::format(" {}{:.4f}", m.axes[a].letter, m.axes[a].is_rotary() ? rad_to_deg(v) : v);
+    }
+    return w;
+  };
+  const double dwell_s = std::max(1.0, o.dt_s - 2.0);
+  for (const auto& p : plans) {
+    const MeasurementSet& s = p.set;
+    if (s.rows.empty()) continue;
+    const int j = s.meta("axis").empty() ? 0 : s.meta("axis")[0] - 'X';
+    out += fmt::format("(--- set {}: {} ---)\n", p.name, s.meta("test"));
+    out += fmt::format("(reflector at {:.1f}, {:.1f}, {:.1f} mm from the tool tip, tool length {:.1f} mm; reads {})\n",
+                       s.tool_point_mm.x(), s.tool_point_mm.y(), s.tool_point_mm.z(), s.tool_length_mm, s.component);
+    AxisPosition start = s.rows.front().command;
+    start[j] -= o.overshoot_mm;
+    out += "G0" + words(start) + "\nM0 (set up the optics on this line, zero the laser at the first target)\n";
+    for (std::size_t k = 0; k < s.rows.size(); ++k) {
+      const MeasurementRow& r = s.rows[k];
+      const bool pass_start = k == 0 || r.approach != s.rows[k - 1].approach;
+      if (pass_start) {  // ISO 230-2: overshoot, then approach the first target of the pass
+        AxisPosition before = r.command;
+        before[j] -= r.approach * o.overshoot_mm;
+        out += fmt::format("(run {} {} pass)\nG1{} F{:.0f}\n", r.run, r.approach > 0 ? "forward" : "backward",
+                           words(before), o.feed_mm_min);
+      }
+      out += fmt::format("G1{} F{:.0f}\nG4 X{:.1f} (read {})\n", words(r.command), o.feed_mm_min, dwell_s, k + 1);
+    }
+  }
+  out += "M30\n%\n";
+  return out;
+}
+
+}  // namespace ncpost::comp

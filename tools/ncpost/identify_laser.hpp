@@ -1,0 +1,17 @@
+#pragma once
+// `ncpost identify` on laser interferometer data (issue 7): the 21 errors of the linear axes
+// (compensation/laser_identify.hpp), model JSON, text report on stdout, optional HTML report.
+#include <string>
+#include <vector>
+
+#include "ncpost/compensation/measurement.hpp"
+
+namespace ncpost::cli {
+
+/// Returns the exit code; throws Infeasible if the identification fails. With `options_ignored`
+/// a notice says that --params, --fixed and --loss do not apply (the laser model is the 18 tables, the
+/// squareness and the reversal).
+int identify_laser(const Machine& machine, const std::vector<comp::MeasurementSet>& sets, const std::string& output,
+                   const std::string& report, bool options_ignored = false);
+
+}  // namespace ncpost::cli
