@@ -51,6 +51,28 @@ void ActualSolver::advance(const AxisPosition& command) const {
   actual_ = now;
 }
 
+std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, const AxisPosition& to) const {
+  if (!model_.has_reversal() || !actual_) return std::nullopt;
+  AxisPosition q = from;
+  bool any = false;
+  const int n = static_cast<int>(model_.machine().axes.size());
+  for (int a = 0; a < n; ++a) {
+    const int p = model_.layout().reversal_of(a);
+    const double move = to[a] - from[a];
+    if (p < 0 || std::abs(move) < 1e-9) continue;
+    const double band = model_.values()[static_cast<std::size_t>(p)];
+    const double lo = std::min(0.0, band), hi = std::max(0.0, band);
+    // the edge of the band the new direction runs on: rising actual = command + lo, falling + hi
+    const double edge = (*actual_)[a] - (move > 0.0 ? lo : hi);
+    if (std::abs(edge - from[a]) > 1e-9) {
+      q[a] = edge;
+      any = true;
+    }
+  }
+  if (!any) return std::nullopt;
+  return q;
+}
+
 Vec3d ActualSolver::programmed_tip(const ClPoint&, const AxisPosition& q) const {
   // an RTCP control applies the nominal kinematics: program the nominal tip of the compensated
   // commands, so that the control's own inverse gives those commands back

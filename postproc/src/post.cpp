@@ -126,6 +126,14 @@ class Poster {
                                              options_.default_feed_mm_min));
       default_feed_noticed_ = true;
     }
+    if (have_position_ && !rapid && options_.take_up_reversal) {
+      // an actual machine with reversal: take up the play of reversing axes first (tool still)
+      if (auto q = solver_.take_up(previous_.q, next.q)) {
+        const SolvedPoint still{previous_.cl, *q};
+        emit(previous_, still, line, false);
+        previous_ = still;
+      }
+    }
     if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "

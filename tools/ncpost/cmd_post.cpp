@@ -131,6 +131,7 @@ int run_post(const PostArgs& a) {
   if (a.tolerance_mm) {
     comp.method = *nonlinear::method_named(a.nonlinear);
     comp.tolerance_mm = *a.tolerance_mm;
+    options.take_up_reversal = true;
     options.subdivide = make_tolerance_subdivider(job.machine, job.setup, *solver, actual, comp, dialect, a.input);
   }
   const bool tty = ::isatty(STDERR_FILENO) && a.output != "-";

@@ -22,6 +22,7 @@
 // Instrument terms (ballbar length, sphere position) are read by the measurement predictions.
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -83,6 +84,11 @@ class ModelLayout {
 template <class P> struct RowState {
   std::array<P, 5> reversal{P(0), P(0), P(0), P(0), P(0)};  ///< actual − command per axis (mm / rad)
   double time_s = 0.0;                                      ///< time stamp for the drift law
+  /// Where the axes stood before the current move (mm / rad). When set, the reversal offset of
+  /// each command q is that of the dead band from there, clamp(previous, q, q + b) − q, instead of
+  /// the fixed `reversal` above: a block that starts on a reversal first crosses the band standing
+  /// still (posting: the commands of a block vary along it).
+  std::optional<std::array<double, 5>> previous_actual;
 };
 
 template <class P> class ErrorFunctor {
@@ -136,7 +142,17 @@ template <class P> class ErrorFunctor {
       if (!nodes.empty()) add_motion<S>(e, c, interpolate<S>(nodes, q));
     }
     if (at_home) return e;
-    if (layout_->reversal_of(axis_index) >= 0) e.reversal = S(state_.reversal[static_cast<std::size_t>(axis_index)]);
+    if (const int r = layout_->reversal_of(axis_index); r >= 0) {
+      if (state_.previous_actual) {
+        const double previous = (*state_.previous_actual)[static_cast<std::size_t>(axis_index)];
+        S lo = q, hi = q + S(values_[r]);
+        if (hi < lo) std::swap(lo, hi);
+        const S actual = S(previous) < lo ? lo : (S(previous) > hi ? hi : S(previous));
+        e.reversal = actual - q;
+      } else {
+        e.reversal = S(state_.reversal[static_cast<std::size_t>(axis_index)]);
+      }
+    }
     if (!machine_only_ && axis_index == layout_->drift_axis()) e.motion_mm += drift<S>();
     return e;
   }

@@ -41,12 +41,20 @@ class ActualSolver final : public MotionSolver {
   AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override;
   ToolPoseT<double> execute(const AxisPosition& q) const override;
   void advance(const AxisPosition& command) const override;
+  std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to) const override;
   Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override;
   const Machine& machine() const override { return model_.machine(); }
 
-  /// The error hook for a block toward `command` from where the axes stand now (reversal offsets).
-  comp::ErrorFunctor<double> errors_toward(const AxisPosition& command) const {
-    return model_.errors(comp::reversal_state(model_, command, actual_));
+  /// The error hook for a block from where the axes stand now: each command's reversal offset is
+  /// that of the dead band from there (RowState::previous_actual).
+  comp::ErrorFunctor<double> errors_toward(const AxisPosition& /*command*/) const {
+    comp::RowState<double> state;
+    if (actual_) {
+      std::array<double, 5> previous{};
+      for (int a = 0; a < 5; ++a) previous[static_cast<std::size_t>(a)] = (*actual_)[a];
+      state.previous_actual = previous;
+    }
+    return model_.errors(state);
   }
   /// Tool-tip error at the CL points of the uncompensated (nominal) program on this machine.
   const ErrorStats& uncompensated() const { return uncompensated_; }

@@ -33,6 +33,9 @@ class ExecutedOn final : public MotionSolver {
     actual_ = now;
   }
   Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override { return commands_.programmed_tip(cl, q); }
+  std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to) const override {
+    return commands_.take_up(from, to);
+  }
   const Machine& machine() const override { return commands_.machine(); }
 
  private:

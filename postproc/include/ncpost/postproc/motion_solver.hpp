@@ -2,6 +2,8 @@
 // How the post turns a CL point into axis commands, and how it re-executes commands: the
 // nominal machine (closed-form inverse kinematics), or an actual machine with identified errors
 // (plugged in by `post --model`). Frames: CL in W (mm, unit axis), commands in mm and rad.
+#include <optional>
+
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 
@@ -19,6 +21,12 @@ class MotionSolver {
   virtual const Machine& machine() const = 0;
   /// Called once a block to the commands q is written: machines with state (reversal) follow it.
   virtual void advance(const AxisPosition& /*q*/) const {}
+  /// Before a feed block from `from` to `to`: commands that take up the reversal play of the axes
+  /// whose direction reverses (the tool stands still), so that the block itself runs without lag;
+  /// nullopt when there is nothing to take up (machines without reversal).
+  virtual std::optional<AxisPosition> take_up(const AxisPosition& /*from*/, const AxisPosition& /*to*/) const {
+    return std::nullopt;
+  }
   /// The tool tip (W) an RTCP program writes for `cl` solved as q (the control inverts it nominally).
   virtual Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& /*q*/) const { return cl.tip_mm; }
 };

@@ -42,6 +42,11 @@ struct PostOptions {
   /// when it is lower, everything else in the other block — the tool never descends while it
   /// travels or turns. Z is that of the program frame (M, or W under RTCP).
   bool order_rapids = true;
+  /// Machines with reversal (`--model` with `reversal:` terms): before a feed block that reverses
+  /// an axis, a block that moves only the commands through the play (the tool stands still), so the
+  /// block itself runs without lag. On with `--tolerance` (the lag would otherwise bow the tip by
+  /// up to the play at the block start).
+  bool take_up_reversal = false;
   double default_feed_mm_min = 1000.0;  ///< used (with a notice) before the first FEDRAT
   Subdivider subdivide;                 ///< empty: one block per CL motion
   std::string program_name;
