@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "input_options.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 
@@ -27,6 +28,7 @@ struct PostArgs {
 };
 
 int run_post(const PostArgs& a) {
+  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.rtcp, a.dialect, a.verify, a.report, a.output, a.input})) return *rc;
   if (!a.model.empty()) throw UsageError("--model: compensated posting is not built yet (issue 5)");
   if (a.tolerance_mm) throw UsageError("--tolerance: nonlinear-error compensation is not built yet (issue 4)");
   if (!a.report.empty()) throw UsageError("--report: the post report is not built yet (issue 4)");
