@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
@@ -112,18 +113,31 @@ class Poster {
     have_position_ = true;
   }
 
-  /// Emits `to`, after splitting (from, to) at the CL midpoint while its error is over the tolerance.
+  /// Emits `to`, after splitting (from, to) while its error is over the tolerance. The nonlinear
+  /// error of a short block grows with the square of its length, so a block with error e is first
+  /// cut into ceil(sqrt(e / target)) equal CL pieces; each piece is checked again (and cut again
+  /// if needed).
   void split(const Solved& from, const Solved& to, int line, bool rapid, int depth) {
     const Block b{from.cl, to.cl, from.command, to.command};
     const BlockError e = split_.evaluate(b);
-    if (e.max_mm > o_.split_fraction * *o_.tolerance_mm && depth < o_.max_split_depth) {
-      ClPoint mid;
-      mid.tip_mm = 0.5 * (from.cl.tip_mm + to.cl.tip_mm);
-      mid.axis = slerp(from.cl.axis, to.cl.axis, 0.5);
-      const Solved m = solve(mid, line);
-      ++summary_.blocks_inserted;
-      split(from, m, line, rapid, depth + 1);
-      split(m, to, line, rapid, depth + 1);
+    const double target = o_.split_fraction * *o_.tolerance_mm;
+    if (e.max_mm > target && depth < o_.max_split_depth) {
+      const int pieces = std::clamp(static_cast<int>(std::ceil(std::sqrt(e.max_mm / target))), 2, 64);
+      Solved start = from;
+      for (int i = 1; i <= pieces; ++i) {
+        if (i == pieces) {
+          split(start, to, line, rapid, depth + 1);
+          break;
+        }
+        const double t = static_cast<double>(i) / pieces;
+        ClPoint p;
+        p.tip_mm = (1.0 - t) * from.cl.tip_mm + t * to.cl.tip_mm;
+        p.axis = slerp(from.cl.axis, to.cl.axis, t);
+        const Solved mid = solve(p, line);
+        ++summary_.blocks_inserted;
+        split(start, mid, line, rapid, depth + 1);
+        start = mid;
+      }
       return;
     }
     summary_.max_block_error_mm = std::max(summary_.max_block_error_mm, e.max_mm);

@@ -8,7 +8,8 @@
 // feed). With a tolerance, every block — rapids included, since the control interpolates them
 // in axis space too — whose executed tool tip (linear interpolation of the *rounded* commands,
 // forward kinematics on `k`) leaves the straight CL segment by more than 95 % of the tolerance is split
-// at its CL midpoint (tip interpolated linearly, axis on the great circle), recursively.
+// into ceil(sqrt(error / target)) equal CL pieces (tip interpolated linearly, axis on the great
+// circle; the error of a short block grows with its length squared), each checked again.
 // CIRCLE records are expanded into points within `arc_tolerance_mm` chord error; drilling cycles
 // are not expanded (their GOTOs are plain points, with a notice).
 #include <functional>
