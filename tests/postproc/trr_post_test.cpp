@@ -132,7 +132,7 @@ TEST_CASE("--tolerance 0.005: the executed tip stays within 5 um of the CL path"
        << " mm; --tolerance 0.005: " << program.size() << " blocks, largest deviation " << tol << " mm, block ends "
        << end_tol << " mm\n" << err);
   CHECK(plain > 0.05);         // the nonlinear error is large on this machine
-  CHECK(end_plain < 2e-4);     // but the block ends are on the path (4-decimal words)
+  CHECK(end_plain < 5e-4);     // but the block ends are on the path (4-decimal words)
   CHECK(tol <= 0.005);
   CHECK(program.size() < 8 * 435);  // adaptive, not uniform dense output
   CHECK(err.find("verify: ") != std::string::npos);
@@ -158,7 +158,7 @@ TEST_CASE("--model: the commands make the machine with errors follow the CL path
   WARN("on the machine with errors: nominal program " << nominal << " mm (block ends " << end_nominal
        << "), compensated " << compensated << " mm (block ends " << end_comp << ")");
   CHECK(end_nominal > 0.02);
-  CHECK(end_comp < 2e-4);
+  CHECK(end_comp < 5e-4);  // the 4-decimal words: up to 0.05 um each, through the head's gain
   CHECK(compensated <= 0.005);
 }
 
