@@ -162,8 +162,14 @@ TEST_CASE("--model: the commands make the machine with errors follow the CL path
   CHECK(compensated <= 0.005);
 }
 
-TEST_CASE("preview --csv on the TRR-XY machine: one row per feed block") {
-  REQUIRE(run("preview --machine " + machine_path() + " --workpiece-origin 0,0,-300 --csv trr_preview.csv " + sample_path()) == 0);
+TEST_CASE("preview --csv and --html on the TRR-XY machine: one row per feed block") {
+  REQUIRE(run("preview --machine " + machine_path() + " --workpiece-origin 0,0,-300 --csv trr_preview.csv --html trr_preview.html " +
+              sample_path()) == 0);
+  std::ifstream h("trr_preview.html");
+  std::stringstream hs;
+  hs << h.rdbuf();
+  CHECK(hs.str().find("<svg") != std::string::npos);
+  CHECK(hs.str().find("<script") == std::string::npos);
   std::ifstream in("trr_preview.csv");
   std::string header;
   std::getline(in, header);

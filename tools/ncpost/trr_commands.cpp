@@ -13,6 +13,7 @@
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/preview_csv.hpp"
 #include "ncpost/postproc/trr_post.hpp"
+#include "ncpost/postproc/trr_preview_html.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -124,7 +125,6 @@ std::optional<int> post_if_trr_xy(const TrrPostRequest& a) {
 std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   const std::optional<TrrJob> job = load_trr_job(a.job);
   if (!job) return std::nullopt;
-  if (!a.html.empty()) throw UsageError("--html: the preview report is not available for the TRR-XY machine (use --csv)");
   const trr::Kinematics k = kinematics_for(*job, a.model);
   std::ifstream in(a.input, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
@@ -146,11 +146,15 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   int worst_line = 0;
   std::size_t worst_block = 0;
   trr::PostSummary s;
+  trr::PreviewReport report;
   try {
     s = trr::post_program(*reader, a.input, k, writer, o, [&](const trr::PostedBlock& pb) {
       if (pb.rapid) return;
       const trr::BlockError e = evaluator.evaluate(pb.block);
       ++blocks;
+      if (!a.html.empty())
+        report.rows.push_back({blocks, pb.line, e.max_mm, e.at_t, e.midpoint_mm, e.orientation_rad,
+                               pb.block.from_cl.tip_mm, pb.block.to_cl.tip_mm});
       sum += e.max_mm;
       if (e.max_mm > 0.005) ++over;
       if (e.max_mm > worst) {
@@ -167,6 +171,13 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const Infeasible*>(&e)) throw;
     throw Infeasible(e.what());
+  }
+  if (!a.html.empty()) {
+    report.input_name = a.input;
+    report.machine_name = fmt::format("{} ({})", job->machine.name, a.job.machine);
+    report.model_name = a.model;
+    report.motions = s.motions_in;
+    write_file_atomically(a.html, trr::preview_html(report));
   }
   if (csv_file) csv_file->commit();
   for (const auto& n : s.notices) fmt::print(stderr, "notice: {}\n", n);
