@@ -17,9 +17,10 @@ template <class... A> std::string format(const char* f, A... args) {
   return buf;
 }
 
-/// Residuals (link length error, mm; pin-plane distance, mm) and their Jacobian in
-/// (dP, dω) with the update P += dP, R ← Rot(dω)·R.
-void residuals(const std::array<ChainFrame, 3>& chains, const Vec3d& slider_mm, const Rigidd& pose, Vec6& f, Mat6& J) {
+}  // namespace
+
+void plate_residuals(const std::array<ChainFrame, 3>& chains, const Vec3d& slider_mm, const Rigidd& pose,
+                     Eigen::Matrix<double, 6, 1>& f, Eigen::Matrix<double, 6, 6>& J) {
   for (int i = 0; i < 3; ++i) {
     const ChainFrame& c = chains[static_cast<std::size_t>(i)];
     const Vec3d ra = pose.R * c.ball_in_plate_mm;
@@ -34,8 +35,6 @@ void residuals(const std::array<ChainFrame, 3>& chains, const Vec3d& slider_mm, 
     J.block<1, 3>(3 + i, 3) = ra.cross(c.pin_axis).transpose();
   }
 }
-
-}  // namespace
 
 std::string link_reach_failure(const Geometry& g, const std::array<ChainFrame, 3>& chains, const Vec3d& slider_mm,
                                const Rigidd& machine_T_plate) {
@@ -60,7 +59,7 @@ PlateOutcome solve_plate(const Geometry& g, const std::array<ChainFrame, 3>& cha
   Mat6 J;
   bool converged = false;
   for (int it = 0; it < 60 && !converged; ++it) {
-    residuals(chains, slider_mm, pose, f, J);
+    plate_residuals(chains, slider_mm, pose, f, J);
     const Eigen::FullPivLU<Mat6> lu(J);
     if (lu.rank() < 6) {
       out.failure = "forward kinematics: singular configuration of the parallel head";

@@ -184,3 +184,32 @@ TEST_CASE("out of reach: a clear failure naming the cause") {
     CHECK_FALSE(ik.failure.empty());
   }
 }
+
+TEST_CASE("the forward solve's analytic Jacobian agrees with central differences") {
+  std::mt19937 rng(5);
+  const Errors e = random_errors(rng, 0.5);
+  const auto chains = chain_frames(Geometry{}, e);
+  for (int n = 0; n < 20; ++n) {
+    Rigidd pose;
+    pose.R = rotation_vector<double>(Vec3d(draw(rng, -0.4, 0.4), draw(rng, -0.4, 0.4), draw(rng, -0.1, 0.1)));
+    pose.t = Vec3d(draw(rng, -50, 50), draw(rng, -50, 50), draw(rng, 0, 300));
+    const Vec3d s(draw(rng, 0, 500), draw(rng, 0, 500), draw(rng, 0, 500));
+    Eigen::Matrix<double, 6, 1> f0, fp, fm;
+    Eigen::Matrix<double, 6, 6> J, unused, fd;
+    plate_residuals(chains, s, pose, f0, J);
+    for (int k = 0; k < 6; ++k) {
+      const double h = k < 3 ? 1e-4 : 1e-7;
+      Eigen::Matrix<double, 6, 1> d = Eigen::Matrix<double, 6, 1>::Zero();
+      d[k] = h;
+      Rigidd plus = pose, minus = pose;
+      plus.t += d.head<3>();
+      plus.R = rotation_vector<double>(Vec3d(d.tail<3>())) * pose.R;
+      minus.t -= d.head<3>();
+      minus.R = rotation_vector<double>(Vec3d(-d.tail<3>())) * pose.R;
+      plate_residuals(chains, s, plus, fp, unused);
+      plate_residuals(chains, s, minus, fm, unused);
+      fd.col(k) = (fp - fm) / (2 * h);
+    }
+    CHECK((fd - J).norm() < 1e-5 * J.norm());
+  }
+}

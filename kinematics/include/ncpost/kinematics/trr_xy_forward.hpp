@@ -43,6 +43,12 @@ struct PlateOutcome {
   bool ok() const { return machine_T_plate.has_value(); }
 };
 
+/// The six residuals of a plate pose — link length errors (|S_i − B_i|² − L_i²)/(2 L_i) (mm, the
+/// length error to first order) and pin-plane distances (S_i − B_i)·p_i (mm) — and their Jacobian
+/// in (dP, dω) for the update P ← P + dP, R ← Rot(dω)·R.
+void plate_residuals(const std::array<ChainFrame, 3>& chains, const Vec3d& slider_mm, const Rigidd& pose,
+                     Eigen::Matrix<double, 6, 1>& f, Eigen::Matrix<double, 6, 6>& J);
+
 /// Newton–Raphson for the plate pose; converges when the update is below 1e-11 mm / rad.
 /// Checks the result: every link hangs down from its pin joint (B_i above S_i) within
 /// `max_link_angle_rad` of the screw line.
