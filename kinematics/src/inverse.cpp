@@ -147,6 +147,21 @@ std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::
   return q;
 }
 
+std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const Eigen::Vector2d& previous_rad,
+                                              const IkPolicy& policy) {
+  std::optional<double> best;
+  for (const RotarySolution& s : rotary_solutions(m, axis_W, policy.reach_tolerance)) {
+    if (s.free_axis >= 0) return std::nullopt;
+    double travel = 0.0;
+    for (int k = 0; k < m.rotary_count(); ++k) {
+      const double nearest = s.rotary_rad[k] + 2.0 * kPi * std::round((previous_rad[k] - s.rotary_rad[k]) / (2.0 * kPi));
+      travel += std::abs(nearest - previous_rad[k]);
+    }
+    if (!best || travel < *best) best = travel;
+  }
+  return best;
+}
+
 std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
                                                const AxisPosition& previous, const IkPolicy& policy) {
   std::vector<std::pair<double, AxisPosition>> ranked;

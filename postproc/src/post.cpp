@@ -126,6 +126,14 @@ class Poster {
                                              options_.default_feed_mm_min));
       default_feed_noticed_ = true;
     }
+    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
+      if (options_.retract_mm <= 0.0)
+        throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
+                                     "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
+                                     rad_to_deg(previous_.q.rotary_rad[0]), rad_to_deg(previous_.q.rotary_rad[1]),
+                                     rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1])));
+      retract_and_reorient(next, line);
+    }
     if (have_position_ && !rapid && options_.subdivide && !options_.rtcp) {
       SolvedPoint from = previous_;
       for (const SolvedPoint& p : options_.subdivide(previous_, next)) {
@@ -139,13 +147,43 @@ class Poster {
     have_position_ = true;
   }
 
+  /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the limits.
+  bool branch_changed(const ClPoint& cl, const AxisPosition& q) const {
+    const auto free = unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
+    if (!free) return false;
+    const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
+    return chosen > *free + options_.branch_change_rad;
+  }
+
+  /// Retract along the tool axis from the previous point, reorient above `next` on its branch,
+  /// then the caller re-engages (feeds down to `next`).
+  void retract_and_reorient(const SolvedPoint& next, int line) {
+    const double d = options_.retract_mm;
+    const ClPoint up_here{previous_.cl.tip_mm + d * previous_.cl.axis, previous_.cl.axis};
+    const ClPoint up_there{next.cl.tip_mm + d * next.cl.axis, next.cl.axis};
+    const IkOutcome a = solver_.solve(up_here, previous_.q);
+    const IkOutcome b = solver_.solve(up_there, next.q);
+    if (!a.ok() || !b.ok())
+      throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution, and the retract point {} mm "
+                                   "along the tool axis is out of reach: {}", input_, line, d,
+                                   !a.ok() ? a.failure.message : b.failure.message));
+    summary_.notices.push_back(fmt::format(
+        "{}:{}: the axis limits force a change of solution (rotary {:.3f}, {:.3f} -> {:.3f}, {:.3f} deg): retract "
+        "{} mm along the tool axis, reorient, re-engage", input_, line, rad_to_deg(previous_.q.rotary_rad[0]),
+        rad_to_deg(previous_.q.rotary_rad[1]), rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1]), d));
+    writer_.comment("retract, reorient, re-engage (axis limits)");
+    const SolvedPoint p1{up_here, *a.position}, p2{up_there, *b.position};
+    emit(previous_, p1, line, false);
+    emit(p1, p2, line, true);
+    previous_ = p2;
+  }
+
   void emit(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid) {
     NcMotion m;
     m.rapid = rapid;
     if (options_.rtcp) {
-      m.values[0] = to.cl.tip_mm.x();
-      m.values[1] = to.cl.tip_mm.y();
-      m.values[2] = to.cl.tip_mm.z();
+      const Vec3d tip_mm = solver_.programmed_tip(to.cl, to.q);
+      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = tip_mm[i];
     } else {
       for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = to.q.linear_mm[i];
     }
@@ -172,8 +210,11 @@ class Poster {
     for (int k = 0; k < machine_.rotary_count(); ++k)
       executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
     if (!writer_.motion(m)) return;
-    if (options_.verify && have_position_ && !rapid && !options_.rtcp)
-      verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
+    if (options_.verify && have_position_ && !rapid && !options_.rtcp) {
+      const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
+      if (options_.on_verified) options_.on_verified(line, contour_mm);
+    }
+    solver_.advance(executed);
     last_executed_ = executed;
   }
 

@@ -12,7 +12,7 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return (p - (a + t * ab)).norm();
 }
 
-void verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
+double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples) {
   auto at = [&](double t) {
     AxisPosition q;
@@ -50,6 +50,7 @@ void verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosi
     report.worst_line = line;
   }
   ++report.blocks;
+  return best;
 }
 
 }  // namespace ncpost

@@ -80,3 +80,60 @@ TEST_CASE("post writes a program in each dialect") {
     else CHECK_THAT(text, Catch::Contains("G1") && Catch::Contains("G93"));
   }
 }
+
+TEST_CASE("post --model --tolerance --verify-on --report: before/after printed, program and report written") {
+  const std::string d = shared("data/scenarios/public-clean/");
+  std::string err;
+  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model.json " + d + "ballbar_h250.csv " + d +
+              "ballbar_h300.csv " + d + "sphere.csv") == 0);
+  std::remove("cli_post_model.nc");
+  std::remove("cli_post_report.html");
+  CHECK(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --model cli_model.json --tolerance 0.005 "
+            "--verify-on " + d + "truth.json --report cli_post_report.html -o cli_post_model.nc " + d + "path.cls",
+            &err) == 0);
+  CHECK_THAT(err, Catch::Contains("before") && Catch::Contains("after") && Catch::Contains("truth.json"));
+  CHECK(exists("cli_post_model.nc"));
+  std::ifstream report("cli_post_report.html");
+  std::stringstream html;
+  html << report.rdbuf();
+  CHECK_THAT(html.str(), Catch::Contains("<svg") && Catch::Contains("largest contour error"));
+  // the after figure printed is under the tolerance, the before one far above it
+  const auto after = err.find("after");
+  REQUIRE(after != std::string::npos);
+  const auto mm = err.find("largest contour error ", after);
+  REQUIRE(mm != std::string::npos);
+  CHECK(std::stod(err.substr(mm + 22)) < 0.005);
+
+  // a model naming a parameter the machine lacks: bad input, nothing written, old files kept
+  write("cli_bad_model.json", "{\"machine\":\"x\",\"parameters\":{\"EX0B\":0.01}}");
+  write("cli_keep.nc", "GOOD OLD PROGRAM\n");
+  CHECK(run("post --machine " + d + "machine.toml --model cli_bad_model.json --tolerance 0.005 -o cli_keep.nc " + d +
+            "path.cls", &err) == 2);
+  CHECK_THAT(err, Catch::Contains("cli_bad_model.json"));
+  std::ifstream kept("cli_keep.nc");
+  std::string first;
+  std::getline(kept, first);
+  CHECK(first == "GOOD OLD PROGRAM");
+}
+
+TEST_CASE("post: a limit-forced change of solution retracts, or fails with --retract 0") {
+  // the BC head's C is limited to +-360 deg: the spiral of the hemisphere sample runs into it
+  const std::string args = "post --machine " + source("machines/gantry-bc-head.toml") +
+                           " --workpiece-origin 0,0,-300 --tool-length 120 --verify ";
+  std::string err;
+  std::remove("cli_bc.nc");
+  CHECK(run(args + "--retract 0 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 3);
+  CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:83") && Catch::Contains("no retract"));
+  CHECK_FALSE(exists("cli_bc.nc"));
+  CHECK(run(args + "--retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 0);
+  CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:83: the axis limits force a change of solution"));
+  std::ifstream in("cli_bc.nc");
+  std::stringstream s;
+  s << in.rdbuf();
+  CHECK_THAT(s.str(), Catch::Contains("retract, reorient, re-engage"));
+  // re-executed: no block swings through the part (the retract is a feed move along the tool axis)
+  const auto after = err.find("after");
+  REQUIRE(after != std::string::npos);
+  const auto mm = err.find("largest contour error ", after);
+  CHECK(std::stod(err.substr(mm + 22)) < 1.0);
+}

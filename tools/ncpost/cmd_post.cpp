@@ -3,12 +3,19 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <memory>
 
 #include "commands.hpp"
 #include "input_options.hpp"
-#include "trr_commands.hpp"
+#include "ncpost/compensation/model_json.hpp"
+#include "ncpost/postproc/actual_solver.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/executed_on.hpp"
 #include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/post_report.hpp"
+#include "ncpost/postproc/preview_blocks.hpp"
+#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "trr_commands.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -23,29 +30,91 @@ struct PostArgs {
   std::string feed_mode = "auto";
   bool verify = false;
   std::string report;
+  std::string verify_on;
+  double retract_mm = 50.0;
   std::string output = "-";
   std::string input;
 };
 
+/// The "before" of the account: the program with nominal commands, one block per CL motion,
+/// executed on the job's machine (the model's, or the nominal one).
+void account_before(const PostArgs& a, const LoadedJob& job, const comp::MachineModel* model, PostAccount& account) {
+  std::ifstream in(a.input, std::ios::binary);
+  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
+  auto reader = open_cl_reader(in, a.input, a.job, job);
+  const NominalSolver nominal(job.machine, job.setup);
+  std::unique_ptr<preview::BlockEvaluator> evaluator;
+  if (model)
+    evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
+                                                                                       model->errors());
+  else
+    evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
+  double sum = 0.0;
+  try {
+    preview::run_preview(*reader, a.input, nominal, *evaluator, [&](const preview::BlockRow& row) {
+      const double e = row.exact.max_error_mm;
+      ++account.before_blocks;
+      sum += e;
+      if (e > account.before_max_mm) {
+        account.before_max_mm = e;
+        account.before_worst_line = row.line;
+      }
+      account.before_series.add(row.line, e);
+    });
+  } catch (const preview::PreviewInfeasible& e) {
+    throw Infeasible(e.what());
+  }
+  account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
+}
+
 int run_post(const PostArgs& a) {
-  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.rtcp, a.dialect, a.verify, a.report, a.output, a.input})) return *rc;
-  if (!a.model.empty()) throw UsageError("--model: compensated posting is not built yet (issue 5)");
-  if (a.tolerance_mm) throw UsageError("--tolerance: nonlinear-error compensation is not built yet (issue 4)");
-  if (!a.report.empty()) throw UsageError("--report: the post report is not built yet (issue 4)");
+  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.rtcp, a.dialect, a.verify, a.report, a.verify_on,
+                                 a.output, a.input}))
+    return *rc;
   Dialect dialect;
   try {
     dialect = dialect_named(a.dialect);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--dialect: ") + e.what());
   }
+  if (a.tolerance_mm && a.rtcp)
+    fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
   const LoadedJob job = load_job(a.job);
+  std::unique_ptr<comp::MachineModel> model;
+  std::unique_ptr<MotionSolver> solver;
+  const ActualSolver* actual = nullptr;
+  if (!a.model.empty()) {
+    const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
+    model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
+    auto s = std::make_unique<ActualSolver>(*model, job.setup);
+    actual = s.get();
+    solver = std::move(s);
+  } else {
+    solver = std::make_unique<NominalSolver>(job.machine, job.setup);
+  }
+  std::unique_ptr<comp::MachineModel> executing;  // --verify-on: the machine the program is re-executed on
+  if (!a.verify_on.empty())
+    executing = std::make_unique<comp::MachineModel>(job.machine, comp::read_model_json(a.verify_on, &job.machine).parameters);
   std::ifstream in(a.input, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
 
+  const bool account = a.verify || !a.report.empty() || executing;
+  PostAccount acc;
+  acc.input_name = a.input;
+  acc.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
+  acc.model_name = a.model;
+  acc.executed_on = !a.verify_on.empty() ? "the machine of " + a.verify_on
+                  : !a.model.empty()     ? "the machine of " + a.model + " (as compensated)"
+                                         : "the nominal machine";
+  acc.dialect_name = dialect.name;
+  acc.method_name = a.nonlinear;
+  acc.tolerance_mm = a.tolerance_mm.value_or(0.0);
+
   PostOptions options;
   options.rtcp = a.rtcp;
-  options.verify = a.verify;
+  options.retract_mm = a.retract_mm;
+  options.verify = account;
   options.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
                     : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
                                            : PostOptions::FeedMode::automatic;
@@ -56,26 +125,57 @@ int run_post(const PostArgs& a) {
       fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm, tool length {:.4f} mm", job.setup.workpiece_origin_mm.x(),
                   job.setup.workpiece_origin_mm.y(), job.setup.workpiece_origin_mm.z(), job.setup.tool_length_mm),
       fmt::format("model {}, tolerance {}", a.model.empty() ? "none (nominal machine)" : a.model,
-                  a.tolerance_mm ? fmt::format("{} mm", *a.tolerance_mm) : std::string("none")),
+                  a.tolerance_mm ? fmt::format("{} mm ({})", *a.tolerance_mm, a.nonlinear) : std::string("none")),
       a.rtcp ? std::string("RTCP: tool tip in the workpiece frame") : std::string("machine axes, no RTCP")};
+  if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
+
+  nonlinear::CompensationOptions comp;
+  if (a.tolerance_mm) {
+    comp.method = *nonlinear::method_named(a.nonlinear);
+    comp.tolerance_mm = *a.tolerance_mm;
+    options.subdivide = make_tolerance_subdivider(job.machine, job.setup, *solver, actual, comp, dialect, a.input);
+  }
   const bool tty = ::isatty(STDERR_FILENO) && a.output != "-";
   if (tty) options.progress = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };
 
-  NominalSolver solver(job.machine, job.setup);
   AtomicFile out(a.output);
   NcWriter writer(out, dialect, axis_letters(job.machine));
-  const PostSummary summary = post_program(*reader, a.input, solver, writer, options);
-  out.commit();
+  std::optional<ExecutedOn> verify_solver;
+  if (executing) verify_solver.emplace(*solver, *executing, job.setup);
+  const PostSummary summary = post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
+                                           writer, options);
   if (tty) fmt::print(stderr, "\r");
   for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
+  acc.motions_in = summary.motions_in;
+  acc.blocks_out = summary.blocks_out;
+  acc.after = summary.verify;
+  acc.notices = summary.notices;
+  if (actual) {
+    acc.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
+    acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();
+  }
+  if (account && !a.rtcp) {
+    if (tty) fmt::print(stderr, "measuring the uncompensated program...\r");
+    account_before(a, job, executing ? executing.get() : model.get(), acc);
+    if (tty) fmt::print(stderr, "\r");
+  }
+  // everything computed: now the files appear, all or none
+  std::optional<AtomicFile> report;
+  if (!a.report.empty()) {
+    report.emplace(a.report);
+    report->write(render_post_html(acc));
+  }
+  out.commit();
+  if (report) report->commit();
   if (a.output != "-")
     fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (a.verify) {
-    const VerifyReport& v = summary.verify;
-    fmt::print(stderr, "verify: {} blocks re-executed; largest contour error {:.4f} mm (CL line {}), orientation {:.4f} deg, "
-               "block-end error {:.4f} mm\n", v.blocks, v.max_contour_mm, v.worst_line, rad_to_deg(v.max_orientation_rad),
-               v.max_endpoint_mm);
+  if (account) {
+    if (a.rtcp)
+      fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
+    else
+      fmt::print(stderr, "{}", account_text(acc));
   }
+  if (report) fmt::print(stderr, "report written to {}\n", a.report);
   return 0;
 }
 
@@ -87,14 +187,22 @@ void add_post(CLI::App& app, Action& action) {
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON (identify): compensate the machine's geometric errors");
   sub->add_option("--tolerance", a->tolerance_mm, "Bound the nonlinear error of every block (mm, in W)")->check(CLI::PositiveNumber);
-  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation method")->check(CLI::IsMember({"adaptive", "harmonic"}));
+  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
+      ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
   sub->add_option("--dialect", a->dialect, "fanuc (default), haas, linuxcnc, sinumerik, heidenhain")
       ->check(CLI::IsMember({"fanuc", "haas", "linuxcnc", "sinumerik", "heidenhain"}));
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")
       ->check(CLI::IsMember({"auto", "g93", "g94"}));
-  sub->add_flag("--verify", a->verify, "Re-execute the program through the forward kinematics and report the errors");
-  sub->add_option("--report", a->report, "Write an HTML report");
+  sub->add_flag("--verify", a->verify,
+                "Re-execute the program on the machine (of --model) and print the error before and after");
+  sub->add_option("--retract", a->retract_mm,
+                  "When the axis limits force a change of solution mid-path: retract this far along the tool axis "
+                  "(mm, default 50), reorient, re-engage; 0 refuses (exit 3)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--verify-on", a->verify_on,
+                  "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
+  sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
   sub->add_option("-o,--output", a->output, "Output NC program (default: standard output)");
   sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
   sub->callback([a, &action] { action = [a] { return run_post(*a); }; });

@@ -16,6 +16,7 @@ struct TrrPostRequest {
   const std::string& dialect;
   bool verify;
   const std::string& report;
+  const std::string& verify_on;
   const std::string& output;
   const std::string& input;
 };

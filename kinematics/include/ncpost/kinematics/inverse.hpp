@@ -65,6 +65,12 @@ IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const A
 std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
                                                const AxisPosition& previous, const IkPolicy& policy = {});
 
+/// Rotary travel (sum of |Δangle|, rad) from `previous_rad` to the nearest solution for the tool
+/// axis `axis_W` if the rotary axes had no limits; nullopt at a singular pose or out of reach. A
+/// chosen solution that travels clearly more was forced by the limits onto another branch.
+std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const Eigen::Vector2d& previous_rad,
+                                              const IkPolicy& policy = {});
+
 /// Angle (rad) that turns `from` into `to` about the unit `d`, both projected on the plane normal
 /// to d; nullopt where either projection is shorter than `tolerance`.
 std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d& to, double tolerance);

@@ -17,6 +17,10 @@ class MotionSolver {
   /// Where the tool is at the commands q (tip and axis in W) on the machine the program is for.
   virtual ToolPoseT<double> execute(const AxisPosition& q) const = 0;
   virtual const Machine& machine() const = 0;
+  /// Called once a block to the commands q is written: machines with state (reversal) follow it.
+  virtual void advance(const AxisPosition& /*q*/) const {}
+  /// The tool tip (W) an RTCP program writes for `cl` solved as q (the control inverts it nominally).
+  virtual Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& /*q*/) const { return cl.tip_mm; }
 };
 
 /// The nominal machine.

@@ -36,7 +36,14 @@ struct PostOptions {
   std::string program_name;
   std::vector<std::string> header_comments;
   std::function<void(std::size_t motions)> progress;  ///< called every 4096 motions
+  /// When the limits force a change of solution between two feed motions (the continuous branch
+  /// leaves the travel): retract this far along the tool axis, reorient, re-engage, with a notice.
+  /// 0: no retract strategy, the post fails (Infeasible) naming the CL line.
+  double retract_mm = 50.0;
+  double branch_change_rad = 0.2;       ///< extra rotary travel (sum over the axes) that counts as a change
   bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
+  /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
+  std::function<void(int line, double contour_mm)> on_verified;
 };
 
 struct PostSummary {

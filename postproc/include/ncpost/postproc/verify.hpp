@@ -18,9 +18,10 @@ struct VerifyReport {
   int worst_line = 0;            ///< CL line of the block with the largest contour error
 };
 
-/// Adds one block from (cl0, q0) to (cl1, q1), executed on `solver`'s machine, to the report.
-/// `samples` points per block, refined around the largest by golden-section search.
-void verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
+/// Adds one block from (cl0, q0) to (cl1, q1), executed on `solver`'s machine, to the report and
+/// returns its contour error (mm). `samples` points per block, refined around the largest by
+/// golden-section search.
+double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples = 24);
 
 /// Distance of `p` from the segment a-b.

@@ -1,0 +1,67 @@
+#pragma once
+// The actual machine of `--model` as a MotionSolver (`post --model`, `preview --model`): commands
+// from the compensated inverse kinematics (compensation/actual_ik.hpp), started from the nominal
+// solution with the post's solution choice (limits, continuity), executed through the error model.
+// Frames and units as motion_solver.hpp: CL in W (mm, unit axis), commands in mm and rad.
+//
+// Reversal: where the model has reversal terms, the solver follows where the axes actually stand
+// after each emitted block (`advance`), solves the next commands consistently with the direction
+// they imply, and re-executes a block from that state. Within one block each axis is taken to move
+// one way (true of blocks cut to a tolerance; a reversal happens at a block end).
+//
+// It also measures what compensation buys: `uncompensated()` is the tool-tip error at the CL
+// points of the nominal solution executed on this machine (the program without `--model`).
+#include <optional>
+
+#include "ncpost/compensation/actual_ik.hpp"
+#include "ncpost/compensation/machine_model.hpp"
+#include "ncpost/postproc/motion_solver.hpp"
+
+namespace ncpost {
+
+/// Largest and RMS of a stream of errors (mm).
+struct ErrorStats {
+  double max_mm = 0.0;
+  double sum_sq_mm2 = 0.0;
+  std::size_t count = 0;
+  void add(double e_mm) {
+    max_mm = std::max(max_mm, e_mm);
+    sum_sq_mm2 += e_mm * e_mm;
+    ++count;
+  }
+  double rms_mm() const { return count ? std::sqrt(sum_sq_mm2 / static_cast<double>(count)) : 0.0; }
+};
+
+class ActualSolver final : public MotionSolver {
+ public:
+  ActualSolver(const comp::MachineModel& model, const Setup& setup)
+      : model_(model), setup_(setup), nominal_(model.machine(), setup) {}
+
+  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override;
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override;
+  ToolPoseT<double> execute(const AxisPosition& q) const override;
+  void advance(const AxisPosition& command) const override;
+  Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override;
+  const Machine& machine() const override { return model_.machine(); }
+
+  /// The error hook for a block toward `command` from where the axes stand now (reversal offsets).
+  comp::ErrorFunctor<double> errors_toward(const AxisPosition& command) const {
+    return model_.errors(comp::reversal_state(model_, command, actual_));
+  }
+  /// Tool-tip error at the CL points of the uncompensated (nominal) program on this machine.
+  const ErrorStats& uncompensated() const { return uncompensated_; }
+  /// Largest remaining tip error of the compensated inverse kinematics (mm).
+  double max_residual_mm() const { return max_residual_mm_; }
+
+ private:
+  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, std::string& failure) const;
+
+  const comp::MachineModel& model_;
+  Setup setup_;
+  NominalSolver nominal_;
+  mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
+  mutable ErrorStats uncompensated_;
+  mutable double max_residual_mm_ = 0.0;
+};
+
+}  // namespace ncpost

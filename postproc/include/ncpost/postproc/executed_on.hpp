@@ -1,0 +1,45 @@
+#pragma once
+// A MotionSolver whose commands come from one solver and whose execution is another machine's:
+// `post --verify-on TRUTH.json` re-executes the written program on a machine other than the one
+// it was compensated for (a simulated true machine, or a newer model), the way a test cuts a part.
+// Frames and units as motion_solver.hpp. Reversal offsets of the executing machine are followed
+// block by block, as ActualSolver does.
+#include <optional>
+
+#include "ncpost/compensation/actual_ik.hpp"
+#include "ncpost/compensation/machine_model.hpp"
+#include "ncpost/postproc/motion_solver.hpp"
+
+namespace ncpost {
+
+class ExecutedOn final : public MotionSolver {
+ public:
+  ExecutedOn(const MotionSolver& commands, const comp::MachineModel& executing, const Setup& setup)
+      : commands_(commands), executing_(executing), setup_(setup) {}
+  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override { return commands_.solve(cl, previous); }
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
+    return commands_.with_rotary(cl, rotary_rad);
+  }
+  ToolPoseT<double> execute(const AxisPosition& q) const override {
+    return executing_.tool_pose(q, setup_, comp::reversal_state(executing_, q, actual_));
+  }
+  void advance(const AxisPosition& q) const override {
+    commands_.advance(q);
+    if (!executing_.has_reversal()) return;
+    const comp::RowState<double> state = comp::reversal_state(executing_, q, actual_);
+    AxisPosition now = q;
+    for (int a = 0; a < static_cast<int>(executing_.machine().axes.size()); ++a)
+      now[a] += state.reversal[static_cast<std::size_t>(a)];
+    actual_ = now;
+  }
+  Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override { return commands_.programmed_tip(cl, q); }
+  const Machine& machine() const override { return commands_.machine(); }
+
+ private:
+  const MotionSolver& commands_;
+  const comp::MachineModel& executing_;
+  Setup setup_;
+  mutable std::optional<AxisPosition> actual_;
+};
+
+}  // namespace ncpost

@@ -1,0 +1,25 @@
+#pragma once
+// `post --tolerance MM [--nonlinear adaptive|harmonic]`: the post's Subdivider (post.hpp) built on
+// nonlinear_compensation.hpp. Blocks are cut on the machine the program is for: the nominal one,
+// or the actual machine of `--model` (ActualSolver: its error model, reversal offsets toward the
+// block's end). Room is kept for rounding the NC words to the dialect's decimals, from how far the
+// block's tips are from the rotary axes. Units: mm, rad; CL in W.
+#include "ncpost/compensation/nonlinear_compensation.hpp"
+#include "ncpost/postproc/actual_solver.hpp"
+#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/post.hpp"
+
+namespace ncpost {
+
+/// Largest distance (mm) of the block's tips from the rotary pivots, in M at home, plus the tool
+/// length: how far a rounded angle can move the tip.
+double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint& a, const ClPoint& b);
+
+/// The subdivider. `solver` is the post's solver; `actual` the same object when it is the actual
+/// machine of a model (else nullptr). A block that cannot be compensated throws Infeasible naming
+/// `input_name`. All references must outlive the returned function.
+Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
+                                     const ActualSolver* actual, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect, const std::string& input_name);
+
+}  // namespace ncpost
