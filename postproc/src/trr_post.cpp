@@ -89,9 +89,12 @@ class Poster {
   Solved solve(const ClPoint& cl, int line) {
     const InverseOutcome ik = inverse(k_, cl, o_.workpiece_origin_mm);
     if (!ik.ok())
-      throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f})", input_, line,
+      throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f}){}", input_, line,
                                    ik.failure, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(), cl.axis.x(), cl.axis.y(),
-                                   cl.axis.z()));
+                                   cl.axis.z(),
+                                   o_.workpiece_origin_mm.isZero()
+                                       ? "; the workpiece origin is at the TCP's home: set --workpiece-origin below it"
+                                       : ""));
     Solved s{cl, *ik.command};
     auto w = s.command.words();
     for (int i = 0; i < 5; ++i) w[i] = writer_.rounded(i, w[i]);

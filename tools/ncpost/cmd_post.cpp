@@ -68,8 +68,8 @@ void account_before(const PostArgs& a, const LoadedJob& job, const comp::Machine
 }
 
 int run_post(const PostArgs& a) {
-  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.rtcp, a.dialect, a.verify, a.report, a.verify_on,
-                                 a.output, a.input}))
+  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
+                                 a.verify_on, a.output, a.input}))
     return *rc;
   Dialect dialect;
   try {

@@ -74,6 +74,8 @@ std::optional<int> post_if_trr_xy(const TrrPostRequest& a) {
   if (!job) return std::nullopt;
   if (a.rtcp) throw UsageError("--rtcp: the TRR-XY machine has no RTCP dialect; it is posted in X Y U V W");
   if (!a.report.empty()) throw UsageError("--report: not available for the TRR-XY machine (use preview --html)");
+  if (a.tolerance_mm && a.nonlinear == "harmonic")
+    fmt::print(stderr, "notice: --nonlinear harmonic: the TRR-XY post meets the tolerance by adaptive insertion\n");
   if (!a.verify_on.empty()) throw UsageError("--verify-on: not available for the TRR-XY machine (--verify runs on --model)");
   Dialect dialect;
   try {

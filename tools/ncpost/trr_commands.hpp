@@ -12,6 +12,7 @@ struct TrrPostRequest {
   const JobOptions& job;
   const std::string& model;
   const std::optional<double>& tolerance_mm;
+  const std::string& nonlinear;  ///< "adaptive" or "harmonic"
   bool rtcp;
   const std::string& dialect;
   bool verify;
