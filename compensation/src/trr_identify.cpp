@@ -122,6 +122,22 @@ IdentifyResult identify(const Machine& m, const std::vector<ProbeMeasurement>& d
         if (std::abs(d[k]) >= 0.05) dir.emplace_back(Errors::name(k), d[k]);
       res.identifiability.null_space.push_back(dir);
     }
+    // standard deviations from the residual at this iterate (noise estimate) through the seen
+    // directions; a parameter with a share in the null space gets none (it is not determined)
+    {
+      const double dof = std::max<double>(1.0, static_cast<double>(r.size() - rank));
+      const double sigma2 = r.squaredNorm() / dof;
+      res.uncertainty.assign(kParameterCount, -1.0);
+      for (int k = 0; k < kParameterCount; ++k) {
+        double var = 0.0, null_share = 0.0;
+        for (Eigen::Index i = 0; i < sv.size(); ++i) {
+          const double v = svd.matrixV()(k, i);
+          if (sv[i] > cut) var += v * v / (sv[i] * sv[i]);
+          else null_share += v * v;
+        }
+        if (null_share < 1e-6) res.uncertainty[static_cast<std::size_t>(k)] = std::sqrt(sigma2 * var) / scale[k];
+      }
+    }
     const Eigen::VectorXd step = scale.cwiseInverse().asDiagonal() * step_scaled;
     // take the step, halved while the model cannot be solved or the residual grows
     double factor = 1.0;

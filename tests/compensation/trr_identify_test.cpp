@@ -107,7 +107,11 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
          << " um, max " << id.max_before_um << " -> " << id.max_after_um << " um; " << id.iterations << " iterations\n";
   report << "singular values (scaled):";
   for (double s : id.singular_values) report << " " << s / id.singular_values.front();
-  report << "\nnull space:\n";
+  report << "\nidentified (truth, value, standard deviation; mm or rad):\n";
+  for (int k = 0; k < kParameterCount; ++k)
+    report << " " << Errors::name(k) << " " << truth[k] << " " << id.errors[k] << " "
+           << id.uncertainty[static_cast<std::size_t>(k)] << "\n";
+  report << "null space:\n";
   for (const auto& dir : id.identifiability.null_space) {
     for (const auto& [name, w] : dir) report << " " << name << " " << w;
     report << "\n";
@@ -124,6 +128,17 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
   CHECK(dzs_in_null_space);
   CHECK(id.rms_before_um > 10.0);
   CHECK(id.rms_after_um < 0.3);  // at the noise level
+  // where a parameter is determined, the truth lies within 4 standard deviations; dzs is not
+  int determined = 0;
+  for (int k = 0; k < kParameterCount; ++k) {
+    const double sd = id.uncertainty[static_cast<std::size_t>(k)];
+    if (Errors::name(k).rfind("dzs_", 0) == 0) CHECK(sd < 0.0);
+    if (sd < 0.0) continue;
+    ++determined;
+    INFO(Errors::name(k));
+    CHECK(std::abs(id.errors[k] - truth[k]) < 4.0 * sd);
+  }
+  CHECK(determined >= 6);
 
   // the identified model predicts the true machine at poses it was not fitted on
   const Kinematics model(m, id.errors);
@@ -153,6 +168,9 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
   // the model file round trip and the compensated post of the hemisphere, executed on the truth
   comp::ModelFile file = model_from_errors(id.errors, m.name);
   file.identifiability = id.identifiability;
+  for (int k = 0; k < kParameterCount; ++k)
+    if (id.uncertainty[static_cast<std::size_t>(k)] >= 0.0)
+      file.uncertainty.set(Errors::name(k), id.uncertainty[static_cast<std::size_t>(k)]);
   std::ofstream("trr_identified.json") << comp::format_model_json(file);
   std::vector<ClPoint> cl;
   std::ofstream("trr_hemisphere.cls") << hemisphere_cl(cl);

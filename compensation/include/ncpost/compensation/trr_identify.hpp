@@ -45,6 +45,9 @@ struct IdentifyResult {
   Errors errors;
   comp::Identifiability identifiability;
   std::vector<double> singular_values;  ///< of the column-scaled Jacobian, largest first
+  /// Standard deviation of each parameter (mm or rad) from the residual through the directions
+  /// the data see (at the last iterate); −1 for a parameter with a share in the null space.
+  std::vector<double> uncertainty;
   double rms_before_um = 0, max_before_um = 0;  ///< residual of the nominal machine
   double rms_after_um = 0, max_after_um = 0;    ///< residual of the fitted model
   int iterations = 0;
