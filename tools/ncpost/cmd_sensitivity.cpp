@@ -1,6 +1,8 @@
 // ncpost sensitivity: the TRR-XY sensitivity maps (spec trr-xy.md "Sensitivity map", seed 004).
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "commands.hpp"
 #include "ncpost/compensation/trr_sensitivity.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
@@ -25,8 +27,12 @@ int run_sensitivity(const SensitivityArgs& a) {
                                  "this file's kind is \"{}\"", a.machine, kind));
   const trr::Machine m = load_trr_xy_machine(a.machine);
   trr::SensitivityOptions o;
-  if (!(a.polar_step_deg > 0 && a.polar_step_deg <= o.max_polar_deg) || !(a.azimuth_step_deg > 0 && a.azimuth_step_deg <= 120))
-    throw UsageError("--polar-step/--azimuth-step: expected a positive step (deg)");
+  const auto divides = [](double step, double whole) {
+    const double n = whole / step;
+    return step > 0 && n >= 1 && std::abs(n - std::round(n)) < 1e-9;
+  };
+  if (!divides(a.polar_step_deg, o.max_polar_deg) || !divides(a.azimuth_step_deg, 360.0) || a.azimuth_step_deg > 120.0)
+    throw UsageError("--polar-step/--azimuth-step: expected steps (deg) that divide 30 and 360 (azimuth at most 120)");
   o.polar_step_deg = a.polar_step_deg;
   o.azimuth_step_deg = a.azimuth_step_deg;
   trr::SensitivityResult r;
