@@ -30,9 +30,9 @@ void stats_um(const Eigen::VectorXd& r, double& rms, double& max) {
 
 }  // namespace
 
-std::vector<Vec3d> probing_poses(const Machine& m) {
+std::vector<Command> probing_commands(const Machine& m) {
   const Kinematics nominal(m);
-  std::vector<Vec3d> poses;
+  std::vector<Command> poses;
   for (double z : {-170.0, -260.0, -350.0})
     for (double tilt_deg : {0.0, 10.0, 20.0, 30.0})
       for (int j = 0; j < (tilt_deg == 0.0 ? 1 : 12); ++j) {
@@ -41,9 +41,15 @@ std::vector<Vec3d> probing_poses(const Machine& m) {
         cl.axis = Vec3d(std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt));
         cl.tip_mm = Vec3d(0, 0, z);
         const InverseOutcome ik = inverse(nominal, cl, Vec3d::Zero());
-        if (ik.ok()) poses.push_back(ik.command->slider_mm);
+        if (ik.ok()) poses.push_back(*ik.command);
       }
   return poses;
+}
+
+std::vector<Vec3d> probing_poses(const Machine& m) {
+  std::vector<Vec3d> s;
+  for (const Command& c : probing_commands(m)) s.push_back(c.slider_mm);
+  return s;
 }
 
 std::optional<Vec3d> predicted_deviation(const Kinematics& k, const Kinematics& nominal, const Vec3d& slider_mm,

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
@@ -59,6 +60,10 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
   sub->callback([&action, a] {
     action = [a] {
+      if (auto rc = identify_if_trr_xy(a->machine, a->data, a->output,
+                                       !a->params.empty() ? "--params" : !a->fixed.empty() ? "--fixed"
+                                                                       : !a->report.empty() ? "--report" : ""))
+        return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::MeasurementSet> sets;
       for (const auto& f : a->data) sets.push_back(comp::read_measurement_csv(f, m));

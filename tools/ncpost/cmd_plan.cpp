@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
@@ -59,6 +60,7 @@ void add_plan(CLI::App& app, Action& action) {
                 "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
   sub->callback([&action, a] {
     action = [a] {
+      if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::NamedPlan> plans;
       bool continuous = false;

@@ -27,6 +27,8 @@ struct ProbeMeasurement {
 /// Probing poses: tool axes tilted 0, 10, 20, 30° toward 12 azimuths at three TCP heights
 /// (−170, −260 and −350 mm in M), solved by the nominal inverse kinematics (unreachable ones left out).
 std::vector<Vec3d> probing_poses(const Machine& m);
+/// The same poses as full commands (the table centres the probed point over the origin of M).
+std::vector<Command> probing_commands(const Machine& m);
 
 /// The predicted deviation of one measurement on the machine `k` (see the header comment).
 std::optional<Vec3d> predicted_deviation(const Kinematics& k, const Kinematics& nominal, const Vec3d& slider_mm,
