@@ -92,8 +92,8 @@ TEST_CASE("parasitic motion: a tilted axis moves the plate sideways and spins it
   CHECK(std::abs(ik.command->table_mm.y()) < 1e-9);
   // chains b and c are mirror images about the XZ plane
   CHECK(ik.command->slider_mm[1] == Approx(ik.command->slider_mm[2]).margin(1e-9));
-  // a general tilt: the pin-plane constraints leave no torsion (tilt-and-torsion angles, Bonev
-  // 2003: the plate is the level plate turned about e_z × u), but x, y move with the azimuth
+  // a general tilt: the pin-plane constraints leave no torsion (in tilt-and-torsion angles: the
+  // plate is the level plate turned about e_z × u), but x, y move with the azimuth
   const double az = deg_to_rad(40.0);
   const ClPoint cl2{Vec3d(0, 0, 0), Vec3d(std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt))};
   const InverseOutcome ik2 = inverse(k, cl2, Vec3d(0, 0, -250.0));
