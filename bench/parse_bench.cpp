@@ -31,6 +31,8 @@
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/gcode_line_source.hpp"
+#include "ncpost/postproc/fixed_format.hpp"
+#include "ncpost/postproc/post.hpp"
 
 using namespace ncpost;
 using Clock = std::chrono::steady_clock;
@@ -160,9 +162,15 @@ Figures repost(const std::string& path, const Machine& m, bool solve_ik) {
       q.rotary_rad = *mo->rotary_rad;
       q.linear_mm = linear_for(m, q.rotary_rad, mo->point.tip_mm, Setup{});
     }
-    fmt::format_to(std::back_inserter(out), "{} X{:.4f} Y{:.4f} Z{:.4f} A{:.3f} C{:.3f}\n", mo->rapid ? "G0" : "G1",
-                   q.linear_mm.x(), q.linear_mm.y(), q.linear_mm.z(), rad_to_deg(q.rotary_rad[0]),
-                   rad_to_deg(q.rotary_rad[1]));
+    // the NC writer's word formatting (fixed_format.hpp)
+    out.append(std::string_view(mo->rapid ? "G0" : "G1"));
+    static constexpr char kLetters[] = "XYZAC";
+    for (int k = 0; k < 5; ++k) {
+      out.push_back(' ');
+      out.push_back(kLetters[k]);
+      append_fixed(out, k < 3 ? q.linear_mm[k] : rad_to_deg(q.rotary_rad[k - 3]), k < 3 ? 4 : 3);
+    }
+    out.push_back('\n');
     if (out.size() > (1 << 16)) {
       std::fwrite(out.data(), 1, out.size(), sink);
       out.clear();
@@ -173,6 +181,28 @@ Figures repost(const std::string& path, const Machine& m, bool solve_ik) {
   std::fclose(sink);
   if (failures) fmt::print("re-post: {} motions without an IK solution\n", failures);
   return {seconds_since(start), reader.lines_read()};
+}
+
+/// The real thing: `ncpost post` of the program as a machine-axis G-code input (parse, forward
+/// kinematics to CL, inverse kinematics, the NC writer), written to a file beside the input.
+Figures post_real(const std::string& path, const Machine& m) {
+  const auto start = Clock::now();
+  std::ifstream in(path, std::ios::binary);
+  gcode::GcodeClReader reader(in, path, m, Setup{});
+  NominalSolver solver(m, Setup{});
+  const std::string out_path = path + ".post.nc";
+  PostSummary summary;
+  {
+    AtomicFile out(out_path);
+    NcWriter writer(out, dialect_named("fanuc"), "XYZAC");
+    summary = post_program(reader, path, solver, writer, PostOptions{});
+    out.commit();
+  }
+  const Figures f{seconds_since(start), reader.lines_read()};
+  fmt::print("post: {} motions -> {} blocks ({:.1f} MB written)\n", summary.motions_in, summary.blocks_out,
+             static_cast<double>(std::filesystem::file_size(out_path)) / 1e6);
+  std::filesystem::remove(out_path);
+  return f;
 }
 
 }  // namespace
@@ -191,7 +221,7 @@ int main(int argc, char** argv) {
     else if (a == "--stage" && i + 1 < argc) stage = argv[++i];
     else {
       std::cerr << "usage: parse_bench [--blocks N] [--file PATH] [--keep] [--generate-only] "
-                   "[--stage lex|to-cl|re-post|re-post-ik|all]\n";
+                   "[--stage lex|to-cl|re-post|re-post-ik|post|all]\n";
       return 1;
     }
   }
@@ -210,6 +240,7 @@ int main(int argc, char** argv) {
     if (stage == "all" || stage == "to-cl") report("to-CL", to_cl(path, m), megabytes);
     if (stage == "all" || stage == "re-post") report("re-post", repost(path, m, false), megabytes);
     if (stage == "all" || stage == "re-post-ik") report("+IK", repost(path, m, true), megabytes);
+    if (stage == "all" || stage == "post") report("post", post_real(path, m), megabytes);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     fmt::print("peak resident memory {:.1f} MB\n", static_cast<double>(usage.ru_maxrss) / 1024.0);

@@ -22,7 +22,8 @@
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "ncpost/postproc/post.hpp"
-#include "ncpost/postproc/preview_model_solver.hpp"
+#include "ncpost/postproc/actual_solver.hpp"
+#include "ncpost/postproc/tolerance_subdivider.hpp"
 
 using namespace ncpost;
 
@@ -75,31 +76,22 @@ struct Result {
   double max_contour_mm;
 };
 
-template <class Errors>
 Result run(const Machine& m, const Setup& setup, const std::string& cl, const std::string& out_path,
-           std::optional<nonlinear::Method> method, bool verify, const MotionSolver& solver, const Errors& errors) {
+           std::optional<nonlinear::Method> method, bool verify, const MotionSolver& solver, const ActualSolver* actual) {
   std::ifstream in(cl);
   cl::AptReader reader(in, cl);
   PostOptions options;
   options.verify = verify;
   nonlinear::CompensationOptions comp;
   comp.tolerance_mm = 0.005;
-  comp.rounding_allowance_mm = nonlinear::rounding_allowance_mm(4, 4, 120.0);
+  const Dialect dialect = dialect_named("fanuc");
   if (method) {
     comp.method = *method;
-    options.subdivide = [&](const SolvedPoint& a, const SolvedPoint& b) {
-      auto ik = [&](const ClPoint& p, const AxisPosition& previous) { return solver.solve(p, previous); };
-      const auto split = nonlinear::compensate_block(m, setup, {a.cl, b.cl, a.q, b.q}, errors, ik, comp);
-      if (!split.ok()) throw std::runtime_error(split.failure);
-      std::vector<SolvedPoint> points;
-      points.reserve(split.nodes.size());
-      for (const auto& node : split.nodes) points.push_back({node.cl, node.q});
-      return points;
-    };
+    options.subdivide = make_tolerance_subdivider(m, setup, solver, actual, comp, dialect, cl);
   }
   const auto t0 = std::chrono::steady_clock::now();
   AtomicFile out(out_path);
-  NcWriter writer(out, dialect_named("fanuc"), "XYZAC");
+  NcWriter writer(out, dialect, "XYZAC");
   const PostSummary s = post_program(reader, cl, solver, writer, options);
   out.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -166,9 +158,9 @@ int main(int argc, char** argv) {
     fmt::print("  {:<24}: {:7.2f} s, {:8} blocks, verified contour {:.4f} mm, peak RSS {} MB\n", what, r.seconds,
                r.blocks, r.max_contour_mm, peak_rss_kb() / 1024);
   };
-  report("one block per motion", run(m, setup, cl, dir + "/out_plain.nc", std::nullopt, verify, nominal, NominalErrors{}));
-  report("adaptive", run(m, setup, cl, dir + "/out_adaptive.nc", nonlinear::Method::adaptive, verify, nominal, NominalErrors{}));
-  report("harmonic", run(m, setup, cl, dir + "/out_harmonic.nc", nonlinear::Method::harmonic, verify, nominal, NominalErrors{}));
+  report("one block per motion", run(m, setup, cl, dir + "/out_plain.nc", std::nullopt, verify, nominal, nullptr));
+  report("adaptive", run(m, setup, cl, dir + "/out_adaptive.nc", nonlinear::Method::adaptive, verify, nominal, nullptr));
+  report("harmonic", run(m, setup, cl, dir + "/out_harmonic.nc", nonlinear::Method::harmonic, verify, nominal, nullptr));
   for (int threads : {1, 2}) {
     std::size_t blocks = 0;
     const double seconds = batch_seconds(m, setup, cl, threads, blocks);
@@ -178,8 +170,8 @@ int main(int argc, char** argv) {
   if (!with_model) return 0;
   const comp::ModelFile file = comp::read_model_json(scenario + "truth.json", &m);
   const comp::MachineModel model(m, file.parameters);
-  const preview::ModelMotionSolver actual(model, setup);
+  const ActualSolver actual(model, setup);
   report("adaptive, --model truth", run(m, setup, cl, dir + "/out_model.nc", nonlinear::Method::adaptive, verify, actual,
-                                        model.errors()));
+                                        &actual));
   return 0;
 }

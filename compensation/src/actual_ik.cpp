@@ -7,6 +7,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include "ncpost/compensation/reversal.hpp"
+#include "ncpost/kinematics/inverse.hpp"
 
 namespace ncpost::comp {
 namespace {
@@ -37,8 +38,51 @@ RowState<double> reversal_state(const MachineModel& model, const AxisPosition& c
   return s;
 }
 
+namespace {
+
+/// Fast path: fixed-point iteration on the nominal closed-form inverse kinematics. The error of
+/// the actual machine at q, e(q) = actual(q) − nominal(q), changes slowly with q (its derivative is
+/// of the order of the errors, 1e-4 and less), so solving the nominal machine for the CL point
+/// minus e(q_k) converges in two or three steps. Gives up (nullopt) when a step leaves the
+/// neighbourhood of the nominal solution (near the singular orientation a tiny axis correction can
+/// swing the free angle), when the nominal machine has no solution, or without convergence; the
+/// caller then runs the Newton iteration.
+std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+                                           const AxisPosition& nominal_guess, const ActualIkOptions& o) {
+  const Machine& m = model.machine();
+  if (m.rotary_count() != 2) return std::nullopt;
+  const Vec3d u = cl.axis.normalized();
+  constexpr double kMaxRotaryStepRad = 0.01;
+  ActualIkOutcome out;
+  AxisPosition q = nominal_guess;
+  for (out.iterations = 0; out.iterations < 8; ++out.iterations) {
+    const RowState<double> state = reversal_state(model, q, o.previous_actual);
+    const ToolPoseT<double> actual = model.tool_pose(q, setup, state);
+    out.tip_error_mm = (actual.tip_mm - cl.tip_mm).norm();
+    out.axis_error_rad = std::atan2(actual.axis.cross(u).norm(), actual.axis.dot(u));
+    if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
+      out.position = q;
+      out.actual = q;
+      for (int a = 0; a < 5; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
+      return out;
+    }
+    const ToolPoseT<double> nominal = forward(m, q, setup);
+    ClPoint target;
+    target.tip_mm = cl.tip_mm - (actual.tip_mm - nominal.tip_mm);
+    target.axis = (u - (actual.axis - nominal.axis)).normalized();
+    const IkOutcome ik = solve(m, target, setup, q);
+    if (!ik.ok()) return std::nullopt;
+    if ((ik.position->rotary_rad - nominal_guess.rotary_rad).cwiseAbs().maxCoeff() > kMaxRotaryStepRad) return std::nullopt;
+    q = *ik.position;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
                              const AxisPosition& nominal_guess, const ActualIkOptions& o) {
+  if (auto fast = fixed_point(model, cl, setup, nominal_guess, o)) return *fast;
   const Machine& m = model.machine();
   const int n = 3 + m.rotary_count();
   const Vec3d u = cl.axis.normalized();

@@ -7,6 +7,8 @@
 
 #include "ncpost/postproc/apt_reader.hpp"
 
+#include <cctype>
+
 namespace ncpost::cl {
 namespace {
 
@@ -51,6 +53,10 @@ struct AptReader::State {
   Vec3d position = Vec3d::Zero();
   bool multax = false;
   bool rapid_pending = false;
+  // NX (recognised by its `TOOL PATH/` records) writes the CIRCLE axis so that the tool moves
+  // clockwise about it (its own post writes G03 for axis 0,0,-1; all 181 arcs of the real NX files
+  // are the short way round only so); APT and Creo move counter-clockwise about it.
+  bool nx_circle_axis = false;
   std::deque<Record> pending;
   std::vector<std::string> notices;
 
@@ -218,12 +224,13 @@ struct AptReader::State {
       c.center_mm = scale * Vec3d(v[0], v[1], v[2]);
       const Vec3d a(v[3], v[4], v[5]);
       if (a.norm() < 1e-9) fail(at, "CIRCLE axis is zero", text);
-      c.axis = a.normalized();
+      c.axis = nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized());
       c.radius_mm = scale * v[6];
       pending.push_back(c);
     } else if (w == "CYCLE") {
       pending.push_back(cycle(st));
     } else if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
+      if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
       comment("PARTNO " + (st.has_slash ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)))));
@@ -276,8 +283,31 @@ std::vector<std::string> AptReader::take_notices() {
 }
 
 bool looks_like_apt(const std::string& head) {
-  for (const char* key : {"GOTO", "goto", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$", "FEDRAT", "UNITS"})
-    if (head.find(key) != std::string::npos) return true;
+  // An APT statement starts a line with its major word (then '/', or alone as RAPID / MULTAX);
+  // the words may also appear inside G-code comments, e.g. "(ncpost 0.1.0 from part.cls)".
+  static const char* const kMajor[] = {"GOTO", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$",
+                                       "FEDRAT", "UNITS", "UNIT", "CIRCLE", "SPINDL", "COOLNT", "RAPID",
+                                       "TLAXIS", "CUTTER", "MSYS", "PPRINT"};
+  std::size_t start = 0;
+  while (start < head.size()) {
+    std::size_t end = head.find('\n', start);
+    if (end == std::string::npos) end = head.size();
+    std::size_t b = head.find_first_not_of(" \t\r", start);
+    if (b < end) {
+      std::string line;
+      for (std::size_t i = b; i < end; ++i) line += static_cast<char>(std::toupper(static_cast<unsigned char>(head[i])));
+      while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.pop_back();
+      if (line.rfind("$$", 0) == 0) return true;
+      for (const char* key : kMajor) {
+        const std::size_t n = std::char_traits<char>::length(key);
+        if (line.compare(0, n, key) != 0) continue;
+        // the major word then '/' (blanks allowed between), or the word alone on its line (RAPID)
+        const std::size_t after = line.find_first_not_of(" \t", n);
+        if (after == std::string::npos ? line.size() == n : line[after] == '/') return true;
+      }
+    }
+    start = end + 1;
+  }
   return false;
 }
 

@@ -28,11 +28,7 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-// Grammar pieces. A field is everything up to the next comma; it is a number when a real number
-// followed only by blanks fills it.
-const auto field = x3::rule<struct field_tag, std::string>{"field"} = x3::raw[*(x3::char_ - ',')];
-const auto number_field = x3::rule<struct number_tag, double>{"number"} =
-    x3::omit[*x3::blank] >> x3::double_ >> x3::omit[*x3::blank] >> x3::eoi;
+// Grammar pieces: the major word (up to '/'); fields are split at commas and read by x3::double_.
 const auto major_word = x3::rule<struct major_tag, std::string>{"major word"} = x3::raw[+(x3::char_ - '/')];
 
 }  // namespace
@@ -62,25 +58,28 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   st.raw_arguments = trim(std::string(first, last));
   if (st.raw_arguments.empty()) return st;  // "RAPID/"
   const int base_column = where.column + static_cast<int>(first - text.begin());
-  std::vector<std::string> fields;
-  auto it = first;
-  if (!x3::parse(it, last, field % ',', fields) || it != last)
-    throw InputError({file, where.line, base_column}, "malformed argument list", text);
-  int offset = 0;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    const std::string& f = fields[i];
+  // Fields are split at commas and read in place (string views: no copies on the hot path of
+  // GOTO records); a field is a number when x3::double_ fills it up to trailing blanks.
+  const std::string_view args(&*first, static_cast<std::size_t>(last - first));
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = args.find(',', start);
+    const std::size_t end = comma == std::string_view::npos ? args.size() : comma;
+    const std::string_view f = args.substr(start, end - start);
+    const bool last_field = comma == std::string_view::npos;
     AptStatement::Argument a;
-    a.column = base_column + offset + static_cast<int>(f.find_first_not_of(" \t") == std::string::npos ? 0 : f.find_first_not_of(" \t"));
-    offset += static_cast<int>(f.size()) + 1;
-    const std::string t = trim(f);
-    if (t.empty()) {
-      if (i + 1 == fields.size() && i > 0) break;  // trailing comma
+    const std::size_t lead = f.find_first_not_of(" \t\r\n");
+    a.column = base_column + static_cast<int>(start) + static_cast<int>(lead == std::string_view::npos ? 0 : lead);
+    if (lead == std::string_view::npos) {
+      if (last_field && !st.arguments.empty()) break;  // trailing comma
       throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)", text);
     }
+    const std::string_view t = f.substr(lead, f.find_last_not_of(" \t\r\n") - lead + 1);
     double value = 0.0;
-    auto fb = f.begin();
+    const char* nb = t.data();
+    const char* ne = t.data() + t.size();
     const bool starts_numeric = std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
-    if (x3::parse(fb, f.end(), number_field, value)) {
+    if (starts_numeric && x3::parse(nb, ne, x3::double_, value) && nb == ne) {
       if (!std::isfinite(value))
         throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", t), text);
       a.is_number = true;
@@ -88,11 +87,13 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
     } else if (starts_numeric) {
       throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", t), text);
     } else {
-      a.word = upper(t);
+      a.word = upper(std::string(t));
       if (a.word == "NAN" || a.word == "INF" || a.word == "INFINITY" || a.word == "-NAN")
         throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", t), text);
     }
     st.arguments.push_back(std::move(a));
+    if (last_field) break;
+    start = comma + 1;
   }
   return st;
 }

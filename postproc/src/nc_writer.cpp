@@ -1,5 +1,7 @@
 #include "ncpost/postproc/nc_writer.hpp"
 
+#include "ncpost/postproc/fixed_format.hpp"
+
 #include <cmath>
 
 namespace ncpost {
@@ -18,7 +20,8 @@ NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
 
 double NcWriter::rounded(int axis, double value) const {
   const int decimals = axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals;
-  const double scale = std::pow(10.0, decimals);
+  static constexpr double kScale[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+  const double scale = decimals >= 0 && decimals <= 9 ? kScale[decimals] : std::pow(10.0, decimals);
   const double r = std::round(value * scale) / scale;
   return r == 0.0 ? 0.0 : r;  // no "-0"
 }
@@ -86,7 +89,9 @@ bool NcWriter::motion(const NcMotion& m) {
     for (std::size_t i = 0; i < letters_.size(); ++i) {
       const double v = rounded(static_cast<int>(i), m.values[i]);
       if (last_[i] && *last_[i] == v) continue;
-      fmt::format_to(out, " {}{:+.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+      buf_.push_back(' ');
+      buf_.push_back(letters_[i]);
+      append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, true);
       last_[i] = v;
       ++words;
     }
@@ -116,7 +121,8 @@ bool NcWriter::motion(const NcMotion& m) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
-    fmt::format_to(out, "{}{:.{}f}", letters_[i], v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+    buf_.push_back(letters_[i]);
+    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
     last_[i] = v;
     ++words;
   }
@@ -131,14 +137,85 @@ bool NcWriter::motion(const NcMotion& m) {
   if (!m.rapid) {
     const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
     if (inverse || !last_feed_ || std::abs(*last_feed_ - m.feed) > 1e-9) {
-      if (inverse) fmt::format_to(out, " F{:.4f}", m.feed);
-      else fmt::format_to(out, " F{:.1f}", m.feed);
+      buf_.append(std::string_view(" F"));
+      append_fixed(buf_, m.feed, inverse ? 4 : 1);
       last_feed_ = m.feed;
     }
   }
   end_line();
   ++blocks_;
   return true;
+}
+
+void NcWriter::arc(const NcArc& a) {
+  start_line();
+  if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
+    buf_.append(std::string_view("G94 "));
+    last_feed_mode_ = NcMotion::FeedMode::per_minute;
+    last_feed_.reset();
+  }
+  if (a.plane != plane_) {
+    fmt::format_to(std::back_inserter(buf_), "G{} ", a.plane);
+    plane_ = a.plane;
+  }
+  const int g = a.clockwise ? 2 : 3;
+  fmt::format_to(std::back_inserter(buf_), "G{}", g);
+  last_motion_ = g;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double v = rounded(static_cast<int>(i), a.end_mm[i]);
+    buf_.push_back(' ');
+    buf_.push_back(letters_[i]);
+    append_fixed(buf_, v, dialect_.linear_decimals);
+    last_[i] = v;
+  }
+  static constexpr char kCentre[] = "IJK";
+  for (int i = 0; i < 3; ++i) {
+    if ((a.plane == 17 && i == 2) || (a.plane == 18 && i == 1) || (a.plane == 19 && i == 0)) continue;
+    buf_.push_back(' ');
+    buf_.push_back(kCentre[i]);
+    append_fixed(buf_, a.centre_offset_mm[static_cast<std::size_t>(i)], dialect_.linear_decimals);
+  }
+  if (!last_feed_ || std::abs(*last_feed_ - a.feed_mm_min) > 1e-9) {
+    buf_.append(std::string_view(" F"));
+    append_fixed(buf_, a.feed_mm_min, 1);
+    last_feed_ = a.feed_mm_min;
+  }
+  end_line();
+  ++blocks_;
+}
+
+bool NcWriter::has_iso_cycles() const {
+  return dialect_.name == "fanuc" || dialect_.name == "haas" || dialect_.name == "linuxcnc";
+}
+
+void NcWriter::cycle(const NcCycle& c) {
+  start_line();
+  if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
+    buf_.append(std::string_view("G94 "));
+    last_feed_mode_ = NcMotion::FeedMode::per_minute;
+  }
+  buf_.append(std::string_view(c.peck ? "G98 G83" : "G98 G81"));
+  for (std::size_t i = 0; i < 3; ++i) {
+    buf_.push_back(' ');
+    buf_.push_back(letters_[i]);
+    append_fixed(buf_, rounded(static_cast<int>(i), c.bottom_mm[i]), dialect_.linear_decimals);
+  }
+  buf_.append(std::string_view(" R"));
+  append_fixed(buf_, rounded(2, c.r_plane_mm), dialect_.linear_decimals);
+  if (c.peck) {
+    buf_.append(std::string_view(" Q"));
+    append_fixed(buf_, c.peck_mm, dialect_.linear_decimals);
+  }
+  buf_.append(std::string_view(" F"));
+  append_fixed(buf_, c.feed_mm_min, 1);
+  last_feed_ = c.feed_mm_min;
+  end_line();
+  ++blocks_;
+  block("G80");
+  last_motion_.reset();  // the next motion writes its G0/G1
+  last_[0] = rounded(0, c.bottom_mm[0]);
+  last_[1] = rounded(1, c.bottom_mm[1]);
+  last_[2] = rounded(2, c.r_plane_mm);  // G98 returns to the initial level: the caller positioned there
 }
 
 void NcWriter::end_program() {

@@ -137,3 +137,22 @@ TEST_CASE("post: a limit-forced change of solution retracts, or fails with --ret
   const auto mm = err.find("largest contour error ", after);
   CHECK(std::stod(err.substr(mm + 22)) < 1.0);
 }
+
+TEST_CASE("post --model re-posts a machine-axis G-code program the same way") {
+  const std::string d = shared("data/scenarios/public-clean/");
+  std::string err;
+  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model2.json " + d + "ballbar_h250.csv " + d +
+              "ballbar_h300.csv " + d + "sphere.csv") == 0);
+  // the nominal program of the dome (machine axes), then that program re-posted for the actual machine
+  REQUIRE(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --tolerance 0.002 -o cli_dome_nominal.nc " +
+              d + "path.cls") == 0);
+  REQUIRE(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --model cli_model2.json --tolerance 0.002 "
+              "--verify-on " + d + "truth.json -o cli_dome_repost.nc cli_dome_nominal.nc", &err) == 0);
+  const auto after = err.find("after");
+  REQUIRE(after != std::string::npos);
+  const auto before = err.find("largest contour error ");
+  const auto mm = err.find("largest contour error ", after);
+  INFO(err);
+  CHECK(std::stod(err.substr(before + 22)) > 0.05);  // the nominal program on the truth: ~80 um
+  CHECK(std::stod(err.substr(mm + 22)) < 0.005);
+}

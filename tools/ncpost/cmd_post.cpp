@@ -114,6 +114,8 @@ int run_post(const PostArgs& a) {
   PostOptions options;
   options.rtcp = a.rtcp;
   options.retract_mm = a.retract_mm;
+  options.native_arcs = a.model.empty();  // the actual machine would not follow the control's circle
+  options.native_cycles = a.model.empty();
   options.verify = account;
   options.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
                     : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute

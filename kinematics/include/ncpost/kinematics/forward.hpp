@@ -14,6 +14,8 @@
 //   workpiece side  T_j(q) = Trans(R - (q + r_j)·d̂_j - δ(q)) · Rot(-ε(q)) · Trans(-R)
 // Each side composes from the bed outward. Set-up at home: the actual transforms are
 // T(q) · T(0)^-1, so that every error acts relative to home.
+#include <type_traits>
+
 #include "ncpost/kinematics/machine.hpp"
 
 namespace ncpost {
@@ -48,7 +50,23 @@ template <class S> struct ChainPose {
 template <class S, class Errors>
 Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double tool_length_mm,
                         const Errors& errors, bool at_home) {
+  if constexpr (std::is_same_v<Errors, NominalErrors>) {
+    // the same transforms with every error term zero, without the work of the zero terms
+    if (axis.is_rotary()) {
+      Vec3<S> pivot = axis.pivot_mm.template cast<S>();
+      if (axis.side == Side::tool) pivot.z() += S(tool_length_mm);
+      return Rigid<S>::rotation_about_point(rotation_about<S>(axis.direction.template cast<S>(), q), pivot);
+    }
+    const Vec3<S> d = axis.direction.template cast<S>();
+    return Rigid<S>::translation(axis.side == Side::tool ? Vec3<S>(q * d) : Vec3<S>(-q * d));
+  }
   const AxisErrorTerms<S> e = errors(axis_index, q, at_home);
+  if constexpr (std::is_same_v<S, double>) {
+    // an axis without error terms here: the nominal transform
+    if (e.location_offset_mm.isZero(0) && e.location_tilt_rad.isZero(0) && e.direction_offset.isZero(0) &&
+        e.motion_mm.isZero(0) && e.motion_rad.isZero(0) && e.reversal == 0.0)
+      return axis_transform<S>(axis, axis_index, q, tool_length_mm, NominalErrors{}, at_home);
+  }
   const Vec3<S> d = axis.direction.template cast<S>();
   if (axis.is_rotary()) {
     Vec3<S> pivot = axis.pivot_mm.template cast<S>();
@@ -91,6 +109,8 @@ ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double 
 /// The actual chain at command q with the set-up at home: T(q) · T(0)^-1 on each side.
 template <class S, class Errors>
 ChainPose<S> chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm, const Errors& errors) {
+  // nominal: every axis transform is the identity at home
+  if constexpr (std::is_same_v<Errors, NominalErrors>) return raw_chain_pose<S>(m, q, tool_length_mm, errors, false);
   const ChainPose<S> at_q = raw_chain_pose<S>(m, q, tool_length_mm, errors, false);
   const ChainPose<S> at_home = raw_chain_pose<S>(m, AxisPositionT<S>{}, tool_length_mm, errors, true);
   return {at_q.bed_T_table * at_home.bed_T_table.inverse(), at_q.bed_T_tool * at_home.bed_T_tool.inverse()};

@@ -62,7 +62,7 @@ struct ToolChange {
 struct Circle {
   Location where;
   Vec3d center_mm = Vec3d::Zero();
-  Vec3d axis = Vec3d::UnitZ();
+  Vec3d axis = Vec3d::UnitZ();  ///< the tool moves counter-clockwise about it (normalised by the reader)
   double radius_mm = 0.0;
 };
 

@@ -22,6 +22,26 @@ struct NcMotion {
   double feed = 0.0;               ///< mm/min, or 1/min under inverse time
 };
 
+/// A circular block in a principal plane of M (no rotary motion): G2/G3 with incremental centre
+/// offsets (I J K from the start), output units (mm), feed per minute.
+struct NcArc {
+  int plane = 17;                  ///< 17 (XY, I J), 18 (ZX, I K), 19 (YZ, J K)
+  bool clockwise = false;          ///< G2 (seen from the positive end of the plane's normal axis), else G3
+  std::array<double, 3> end_mm{};  ///< X Y Z at the end
+  std::array<double, 3> centre_offset_mm{};  ///< centre − start (I J K)
+  double feed_mm_min = 0.0;
+};
+
+/// A drilling cycle at one hole along +Z of the program frame: G81 (drill) or G83 (peck, Q),
+/// returning to the initial level (G98), cancelled by G80 after the hole. Output units (mm).
+struct NcCycle {
+  bool peck = false;
+  std::array<double, 3> bottom_mm{};  ///< X Y of the hole, Z of its bottom
+  double r_plane_mm = 0.0;            ///< Z of the R plane (the clearance point)
+  double peck_mm = 0.0;               ///< Q of G83
+  double feed_mm_min = 0.0;
+};
+
 class NcWriter {
  public:
   /// `letters`: the axis words, e.g. "XYZAC".
@@ -33,6 +53,13 @@ class NcWriter {
   void block(const std::string& words);
   /// Writes a motion block; false (nothing written) if no axis word changes.
   bool motion(const NcMotion& m);
+  /// Writes a circular block; the rotary words stay as they are.
+  void arc(const NcArc& a);
+  /// Writes one canned-cycle hole and its G80; the tool ends at the initial level (unchanged X Y Z
+  /// words are then those of the position before the cycle, X Y of the hole).
+  void cycle(const NcCycle& c);
+  /// True if the dialect has the ISO drilling cycles G81/G83.
+  bool has_iso_cycles() const;
   void rtcp(bool on);
   void end_program();
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).
@@ -52,7 +79,8 @@ class NcWriter {
   std::string letters_;
   fmt::memory_buffer buf_;
   std::array<std::optional<double>, 5> last_{};
-  std::optional<int> last_motion_;  ///< 0 or 1
+  std::optional<int> last_motion_;  ///< 0, 1, 2 or 3
+  int plane_ = 17;
   std::optional<NcMotion::FeedMode> last_feed_mode_;
   std::optional<double> last_feed_;
   std::size_t blocks_ = 0;

@@ -31,6 +31,13 @@ struct PostOptions {
   bool rtcp = false;
   enum class FeedMode { automatic, per_minute, inverse_time } feed_mode = FeedMode::automatic;
   double arc_tolerance_mm = 0.001;      ///< chord error of expanded CIRCLE records
+  /// Write a CIRCLE as G2/G3 where it can be: a planar arc with the tool axis normal to it whose
+  /// plane is principal in the program's frame (M, or W under RTCP), on the nominal machine (off
+  /// under `--model`: the actual machine would not follow the control's circle exactly), not Klartext.
+  bool native_arcs = true;
+  /// Write CYCLE/DRILL and CYCLE/DEEP holes as G81/G83 where the hole runs along −Z of the program
+  /// frame and the dialect has them (fanuc, haas, linuxcnc); otherwise explicit moves.
+  bool native_cycles = true;
   double default_feed_mm_min = 1000.0;  ///< used (with a notice) before the first FEDRAT
   Subdivider subdivide;                 ///< empty: one block per CL motion
   std::string program_name;
@@ -49,6 +56,8 @@ struct PostOptions {
 struct PostSummary {
   std::size_t motions_in = 0;
   std::size_t blocks_out = 0;
+  std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
+  std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
   std::vector<std::string> notices;
   VerifyReport verify;
 };

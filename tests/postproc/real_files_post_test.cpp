@@ -1,0 +1,96 @@
+// Every real file of shared/data/real/ (README there) posts completely on a machine of its kind,
+// with one output motion per input motion: exactly, less the motions that change no axis word
+// (duplicates, which produce no block), where the file has no circles or cycles; with more
+// (expanded arcs and cycles) where it has.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <memory>
+
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/post.hpp"
+#include "test_paths.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+struct Case {
+  const char* file;
+  const char* machine;
+  bool gcode;
+  bool inch;
+  bool expands;  ///< has CIRCLE / CYCLE records (or G2/G3 arcs)
+};
+
+std::unique_ptr<cl::Reader> open(std::istream& in, const Case& c, const Machine& m, const Setup& setup) {
+  if (!c.gcode) {
+    cl::ReaderOptions o;
+    o.default_inch = c.inch;
+    return std::make_unique<cl::AptReader>(in, c.file, o);
+  }
+  gcode::GcodeReaderOptions o;
+  o.default_inch = c.inch;
+  return std::make_unique<gcode::GcodeClReader>(in, c.file, m, setup, o);
+}
+
+/// Motions that repeat the previous one (tip, axis and programmed angles): no axis word changes.
+std::size_t duplicates(const Case& c, const Machine& m, const Setup& setup) {
+  std::ifstream in(test::shared(std::string("data/real/") + c.file), std::ios::binary);
+  auto reader = open(in, c, m, setup);
+  std::size_t n = 0;
+  std::optional<cl::Motion> last;
+  while (auto r = reader->next()) {
+    const auto* mo = std::get_if<cl::Motion>(&*r);
+    if (!mo) continue;
+    if (last && (mo->point.tip_mm - last->point.tip_mm).norm() < 5e-5 &&
+        (mo->point.axis - last->point.axis).norm() < 1e-9 &&
+        mo->rotary_rad.has_value() == last->rotary_rad.has_value() &&
+        (!mo->rotary_rad || (*mo->rotary_rad - *last->rotary_rad).norm() < 1e-9))
+      ++n;
+    last = *mo;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("every real file posts with one output motion per input motion") {
+  const Case cases[] = {
+      {"nx_APT_Variable_Axis.txt", "haas-umc750", false, true, false},
+      {"nx_APT_Project2.txt", "haas-umc750", false, false, true},
+      {"nx_APT_SimpleMillPlane.txt", "haas-umc750", false, false, true},
+      {"nx_APT_Zig_Zag_Smoothed.txt", "haas-umc750", false, false, true},
+      {"catia_peening.aptsource", "ac-trunnion", false, false, false},
+      {"creo_schruppen_1.ncl", "ac-trunnion", false, false, true},
+      {"creo_bohren_1.ncl", "ac-trunnion", false, false, true},
+      {"linuxcnc_impeller-7bl-xyzac.ngc", "linuxcnc-xyzac-trt", true, false, false},
+      {"linuxcnc_boat-xyzbc.ngc", "haas-umc750", true, false, false},
+      {"nx_PostProcessed_Variable_Axis.txt", "haas-umc750", true, false, false},
+      {"nx_PostProcessed_SimpleMillPlane.txt", "haas-umc750", true, false, true},
+      {"nx_PostProcessed_Zig_Zag_Smoothed.txt", "haas-umc750", true, false, true},
+  };
+  for (const Case& c : cases) {
+    INFO(c.file << " on " << c.machine);
+    const Machine m = load_machine(test::source(std::string("machines/") + c.machine + ".toml"));
+    const Setup setup;
+    std::ifstream in(test::shared(std::string("data/real/") + c.file), std::ios::binary);
+    REQUIRE(in);
+    auto reader = open(in, c, m, setup);
+    AtomicFile out("real_files_post_test_out.nc");
+    std::string letters;
+    for (const Axis& a : m.axes) letters += a.letter;
+    NcWriter writer(out, dialect_named("fanuc"), letters);
+    PostSummary s;
+    REQUIRE_NOTHROW(s = post_program(*reader, c.file, NominalSolver(m, setup), writer, PostOptions{}));
+    out.commit();
+    const std::size_t dup = duplicates(c, m, setup);
+    std::printf("%-40s %-20s %6zu motions -> %6zu blocks (%zu duplicates)\n", c.file, c.machine, s.motions_in,
+                s.blocks_out, dup);
+    CHECK(s.motions_in > 0);
+    if (c.expands) CHECK(s.blocks_out >= s.motions_in - dup);
+    else CHECK(s.blocks_out + dup == s.motions_in);
+  }
+}
