@@ -3,7 +3,8 @@
 # the main job on the bundled samples (tools/demo.sh). Pass --no-demo to only install and build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(cmake ninja-build g++ libeigen3-dev libboost-dev libfmt-dev catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
+packages=(cmake ninja-build g++ libeigen3-dev libboost-dev libfmt-dev catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+          chromium)  # chromium: the HTML report tests render the reports headless and take a screenshot
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -gt 0 ]; then

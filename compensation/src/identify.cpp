@@ -72,6 +72,8 @@ std::string IdentifyOptions::validate() const {
   if (!(loss_scale_um > 0.0)) return "the loss scale must be positive";
   if (max_iterations < 1) return "max_iterations must be at least 1";
   if (!(rank_tolerance > 0.0 && rank_tolerance < 1.0)) return "rank_tolerance must be in (0, 1)";
+  for (double w : set_weights)
+    if (!(w > 0.0 && std::isfinite(w))) return "set weights must be positive";
   return {};
 }
 
@@ -112,6 +114,18 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   res.nominal = prob.predictions(values);
   stats(r0, res.rms_nominal_um, res.max_nominal_um);
   const Eigen::Index m_count = r0.size();
+  // row weights of the fit (IdentifyOptions::set_weights), scaled to rms 1
+  Eigen::VectorXd row_weight = Eigen::VectorXd::Ones(m_count);
+  if (!o.set_weights.empty()) {
+    if (o.set_weights.size() != sets.size()) throw std::invalid_argument("set_weights: one weight per measurement set");
+    Eigen::Index at = 0;
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      const Eigen::Index len = static_cast<Eigen::Index>(sets[s].rows.size()) * sets[s].values_per_row();
+      row_weight.segment(at, len).setConstant(o.set_weights[s]);
+      at += len;
+    }
+    if (m_count > 0) row_weight /= std::sqrt(row_weight.squaredNorm() / double(m_count));
+  }
 
   // 1. identifiability at the prior
   Eigen::VectorXd typical(static_cast<Eigen::Index>(free.size()));
@@ -122,13 +136,13 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 
   // 2. Levenberg–Marquardt on the kept parameters
   const double k = o.loss_scale_um * 1e-3;
-  Eigen::VectorXd r = r0;
+  Eigen::VectorXd r = row_weight.cwiseProduct(r0);  // weighted during the fit
   double cost = cost_of(r, o.loss, k);
   double lambda = 1e-3;
   const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
   bool converged = n == 0;
   for (res.iterations = 0; !converged && res.iterations < o.max_iterations; ++res.iterations) {
-    const Eigen::MatrixXd J = prob.jacobian(values, kept);
+    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(values, kept);
     Eigen::VectorXd w(m_count);
     for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
     const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
@@ -143,7 +157,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
       const Eigen::VectorXd step = -M.ldlt().solve(g);
       std::vector<double> trial = values;
       for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])] += step[i];
-      const Eigen::VectorXd rt = prob.residuals(trial);
+      const Eigen::VectorXd rt = row_weight.cwiseProduct(prob.residuals(trial));
       const double ct = cost_of(rt, o.loss, k);
       if (std::isfinite(ct) && ct <= cost) {
         const double scaled_step = (step.array() * d.array().sqrt()).matrix().norm();
@@ -172,7 +186,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   const Eigen::MatrixXd Jfree = prob.jacobian(values, free);
   res.rank = analyse_rank(Jfree, o.rank_tolerance, typical);
   {
-    const Eigen::MatrixXd J = prob.jacobian(values, kept);
+    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(values, kept);
     Eigen::VectorXd w(m_count);
     for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
     const double dof = std::max<double>(1.0, double(m_count - n));
@@ -184,6 +198,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
       res.parameters.set(name, values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
       res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
     }
+    res.covariance = cov;
   }
   for (const auto& f : o.fixed.names()) res.parameters.set(f, o.fixed.value_or(f, 0.0));
 
@@ -214,6 +229,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   }
 
   res.fitted = prob.predictions(values);
+  r = prob.residuals(values);  // statistics unweighted, in mm
   stats(r, res.rms_after_um, res.max_after_um);
   Eigen::Index at = 0;
   for (const auto& s : sets) {

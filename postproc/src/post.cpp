@@ -209,7 +209,21 @@ class Poster {
     for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, to.q.linear_mm[i]);
     for (int k = 0; k < machine_.rotary_count(); ++k)
       executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
+    bool split = false;
+    if (rapid && options_.order_rapids && last_values_) {
+      // retract first when going up, descend last when going down
+      NcMotion first = m;
+      if (m.values[2] > (*last_values_)[2]) {
+        first.values = *last_values_;
+        first.values[2] = m.values[2];
+      } else {
+        first.values[2] = (*last_values_)[2];
+      }
+      split = writer_.motion(first);  // nothing is written if no word changes
+    }
+    last_values_ = m.values;
     if (!writer_.motion(m)) return;
+    if (split) ++summary_.rapid_splits;
     if (options_.verify && have_position_ && !rapid && !options_.rtcp) {
       const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
@@ -282,6 +296,8 @@ class Poster {
     }
     arc.feed_mm_min = feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min;
     writer_.arc(arc);
+    if (last_values_)
+      for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
     SolvedPoint next{end.point, *ik.position};
     AxisPosition executed = next.q;
     for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
@@ -350,6 +366,7 @@ class Poster {
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
+  std::optional<std::array<double, 5>> last_values_;  ///< words of the last motion block (mm, deg)
   bool have_position_ = false;
   bool rtcp_on_ = false;
   double feed_mm_min_ = 0.0;

@@ -133,3 +133,32 @@ TEST_CASE("CYCLE/DEEP as G83 where the hole runs down Z, explicit pecks otherwis
   const std::string expanded = read_text("native_cycles_sinumerik.nc");
   CHECK_THAT(expanded, !Catch::Contains("G83") && Catch::Contains("Z-3.0000"));
 }
+
+TEST_CASE("rapid moves: up first when the target is higher, down last when it is lower") {
+  const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
+  const std::string cl =
+      "UNITS/MM\nMULTAX/ON\nRAPID\nGOTO/0,0,50,0,0,1\nFEDRAT/MMPM,500\nGOTO/10,0,0,0,0,1\n"
+      "RAPID\nGOTO/40,30,5,0,0.5,0.8660254\nRAPID\nGOTO/40,30,60,0,0.5,0.8660254\nEND\n";
+  std::istringstream in(cl);
+  cl::AptReader reader(in, "rapids.cls");
+  {
+    AtomicFile out("native_rapids.nc");
+    NcWriter writer(out, dialect_named("fanuc"), "XYZAC");
+    const PostSummary s = post_program(reader, "rapids.cls", NominalSolver(m, Setup{}), writer, PostOptions{});
+    CHECK(s.rapid_splits >= 1);
+    out.commit();
+  }
+  const std::string p = read_text("native_rapids.nc");
+  // from the bottom of the cut (Z0) to a tilted point 5 mm up: Z rises first, alone
+  const auto cut = p.find("X10.0000");
+  REQUIRE(cut != std::string::npos);
+  std::istringstream lines(p.substr(cut));
+  std::string line;
+  std::getline(lines, line);  // the cut
+  std::getline(lines, line);
+  CHECK(line.rfind("G0 Z", 0) == 0);
+  CHECK(line.find('X') == std::string::npos);
+  CHECK(line.find('A') == std::string::npos);
+  std::getline(lines, line);
+  CHECK(line.find('A') != std::string::npos);  // then travel and turn
+}

@@ -1,13 +1,17 @@
 // ncpost identify: fit error parameters to measurements (cli.md, formats.md "Error model").
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "commands.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -36,6 +40,23 @@ std::vector<std::string> split_list(const std::string& s) {
     if (!item.empty()) out.push_back(item);
   }
   return out;
+}
+
+/// Residual analysis (issue 6): basic fit, effects added by evidence, before/after report.
+int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets, const std::vector<std::string>& names,
+                 const comp::IdentifyOptions& o, const std::string& output, const std::string& report) {
+  comp::DiagnoseOptions d;
+  d.identify = o;
+  if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
+  const comp::DiagnoseResult r = comp::diagnose(m, sets, names, d);
+  const comp::ToolTipComparison tt = comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty,
+                                                              r.final_fit.covariance);
+  fmt::print("{}", comp::text_report(m, sets, r.final_fit));
+  fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
+  if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);
+  write_file_atomically(output, comp::format_model_json(comp::to_model_file(m, r)));
+  if (!report.empty()) write_file_atomically(report, comp::html_diagnose_report(m, sets, r, tt));
+  return 0;
 }
 
 }  // namespace
@@ -89,9 +110,9 @@ void add_identify(CLI::App& app, Action& action) {
         }
       }
       if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
+      if (!a->no_diagnose) return run_diagnose(m, sets, names, o, a->output, a->report);
       const comp::IdentifyResult r = comp::identify(m, sets, names, o);
       fmt::print("{}", comp::text_report(m, sets, r));
-      if (!a->no_diagnose) fmt::print("residual analysis (issue 6): not built yet; the basic model is final\n");
       if (!r.converged) throw Infeasible("the fit " + r.message);
       write_file_atomically(a->output, comp::format_model_json(comp::to_model_file(m, r)));
       if (!a->report.empty()) write_file_atomically(a->report, comp::html_report(m, sets, r));

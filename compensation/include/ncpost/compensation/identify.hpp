@@ -8,7 +8,8 @@
 //    their prior value and reported with their null-space direction — no invented values.
 // 2. The kept parameters are fitted; the rank is checked again at the solution.
 // 3. Uncertainty: standard deviations from s²·(JᵀJ)⁻¹ of the kept parameters, s² the residual
-//    variance (Σr²/(m − n)); with a robust loss the weighted (IRLS) matrices are used.
+//    variance (Σr²/(m − n)); with a robust loss the weighted (IRLS) matrices are used; with set
+//    weights (noise differing between sets), r and J are the weighted ones.
 // Units: parameters mm / rad, residuals mm (reports in µm / µrad).
 #include <optional>
 #include <string>
@@ -29,6 +30,9 @@ struct IdentifyOptions {
   int max_iterations = 100;
   double rank_tolerance = 1e-3;  ///< identifiability.hpp
   ErrorParameters fixed;         ///< known values (e.g. measured separately): held, not fitted
+  /// Weighted least squares: one weight per measurement set (1/σ of its noise, any common
+  /// scale); empty = all equal. Residual statistics stay unweighted (µm).
+  std::vector<double> set_weights;
 
   /// Empty if valid, else what is wrong.
   std::string validate() const;
@@ -50,6 +54,7 @@ struct IdentifyResult {
   std::vector<std::string> candidates;  ///< the parameters asked for, priority order
   ErrorParameters parameters;           ///< fitted values of the kept parameters (+ fixed ones)
   ErrorParameters uncertainty;          ///< standard deviations of the fitted ones
+  Eigen::MatrixXd covariance;           ///< of the fitted ones, in the order of `uncertainty`
   Identifiability identifiability;
   RankAnalysis rank;                    ///< at the solution, columns = candidates
   std::vector<FileResidual> files;

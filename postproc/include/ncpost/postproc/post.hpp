@@ -38,6 +38,10 @@ struct PostOptions {
   /// Write CYCLE/DRILL and CYCLE/DEEP holes as G81/G83 where the hole runs along −Z of the program
   /// frame and the dialect has them (fanuc, haas, linuxcnc); otherwise explicit moves.
   bool native_cycles = true;
+  /// Rapid moves in two blocks: up first (Z alone) when the target is higher, down last (Z alone)
+  /// when it is lower, everything else in the other block — the tool never descends while it
+  /// travels or turns. Z is that of the program frame (M, or W under RTCP).
+  bool order_rapids = true;
   double default_feed_mm_min = 1000.0;  ///< used (with a notice) before the first FEDRAT
   Subdivider subdivide;                 ///< empty: one block per CL motion
   std::string program_name;
@@ -56,6 +60,7 @@ struct PostOptions {
 struct PostSummary {
   std::size_t motions_in = 0;
   std::size_t blocks_out = 0;
+  std::size_t rapid_splits = 0;  ///< rapid moves written in two blocks (order_rapids)
   std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
   std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
   std::vector<std::string> notices;

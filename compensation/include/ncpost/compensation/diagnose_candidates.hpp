@@ -1,0 +1,41 @@
+#pragma once
+// The catalogue of candidate effects of residual analysis (issue 6; conventions.md "Effect
+// names"): each candidate is one named physical cause and the error parameters that express it
+// (parameter_name.hpp; values mm / rad / s).
+//
+//   rotary component errors   E<c><axis>:h<k>   k = 1..4, c = X Y Z A B C   {…:cos, …:sin}
+//   linear component errors   E<c><axis>:p<k>   k = 1..3, c = X Y Z A B C   {E<c><axis>:p<k>}
+//   squareness                EC0Y EB0Z EA0Z
+//   reversal                  reversal:<axis>   every axis that reverses its motion in the data
+//   drift                     drift:<X|Y|Z>:t   {lin, exp}, the time constant tau held at the value
+//                                               that explains most (diagnose.cpp chooses it)
+//   instruments               ballbar:length (ballbar data), sphere:position (sphere data, x y z)
+//
+// Effects whose parameters are all already in the model are left out. `measurement_only` effects
+// (drift, instruments) are never part of the machine used for posting (machine_model.hpp).
+#include <string>
+#include <vector>
+
+#include "ncpost/compensation/error_parameters.hpp"
+#include "ncpost/compensation/measurement.hpp"
+
+namespace ncpost::comp {
+
+enum class CandidateKind { component, squareness, reversal, drift, instrument };
+
+struct Candidate {
+  std::string effect;                   ///< effect name, e.g. "ECC:h2", "drift:Z:t"
+  CandidateKind kind = CandidateKind::component;
+  std::vector<std::string> parameters;  ///< the parameters fitted for it
+  ErrorParameters held;                 ///< parameters held at a value (drift tau, s)
+  bool measurement_only = false;        ///< drift and instrument effects
+};
+
+/// Every candidate the machine and the data allow, minus those whose parameters are all in
+/// `present`. Order: rotary component errors axis by axis, squareness, linear component errors,
+/// reversal, drift, instruments. The order names a class of candidates that act alike on the data
+/// (e.g. EC0Y and EXY:p1, the degree-1 straightness that is a squareness): the first is given.
+std::vector<Candidate> candidate_catalogue(const Machine& machine, const std::vector<MeasurementSet>& sets,
+                                           const std::vector<std::string>& present);
+
+}  // namespace ncpost::comp

@@ -1,0 +1,388 @@
+#include "ncpost/compensation/diagnose.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+#include "ncpost/compensation/diagnose_effect_size.hpp"
+#include "ncpost/compensation/diagnose_screening.hpp"
+#include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/compensation/residuals.hpp"
+
+namespace ncpost::comp {
+namespace {
+
+double sum_of_squares(const IdentifyResult& r, Eigen::Index m) {
+  const double rms_mm = 1e-3 * r.rms_after_um;
+  return rms_mm * rms_mm * double(m);
+}
+
+/// The model being built: fitted names, held values, its fit.
+struct Model {
+  std::vector<std::string> names;
+  ErrorParameters held;
+  IdentifyResult fit;
+};
+
+std::vector<std::string> layout_names(const Model& model) {
+  std::vector<std::string> n = model.names;
+  for (const auto& h : model.held.names())
+    if (std::find(n.begin(), n.end(), h) == n.end()) n.push_back(h);
+  return n;
+}
+
+/// Residual (mm) of a fitted model: fitted values, held values, prior (0) for pinned ones.
+Eigen::VectorXd residual_of(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                            const IdentifyOptions& o) {
+  std::vector<std::string> names = layout_names(model);
+  for (const auto& f : o.fixed.names())
+    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+  ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  std::vector<double> values;
+  for (const auto& n : names)
+    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.fixed.value_or(n, 0.0))));
+  return prob.residuals(values);
+}
+
+IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets, const std::vector<std::string>& names,
+                         const ErrorParameters& held, const IdentifyOptions& base) {
+  IdentifyOptions o = base;
+  for (std::size_t i = 0; i < held.size(); ++i) o.fixed.set(held.names()[i], held.values()[i]);
+  return identify(m, sets, names, o);
+}
+
+/// Time stamp of every residual (stacked as residuals.hpp).
+Eigen::VectorXd residual_times(const std::vector<MeasurementSet>& sets) {
+  std::vector<double> t;
+  for (const auto& s : sets)
+    for (const auto& row : s.rows)
+      for (int v = 0; v < s.values_per_row(); ++v) t.push_back(row.time_s);
+  return Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+}
+
+struct Screened {
+  int candidate = -1;
+  Candidate spec;  ///< with the chosen drift terms and tau
+  double drop = 0.0;
+  double p_linear = 1.0;
+  Eigen::MatrixXd basis;                ///< orthonormal new directions it adds to the model
+  std::vector<std::string> equivalent;  ///< candidates with the same effect on these data
+};
+
+/// Re-chooses the time constant of every drift in the model by refits (its screening chose it
+/// with the model of that step: effects added later change the best value): the sum of squares
+/// at tau·2^(j/2), j = −2..2 (moved on while the best is at an end, up to 4 times), then a
+/// parabola in log tau through the best and its neighbours.
+void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o, double t_span,
+                  Model& model, Eigen::Index count) {
+  const std::vector<std::string> held = model.held.names();
+  const double step = 0.5 * std::log(2.0), lo = std::log(30.0), hi = std::log(4.0 * t_span);
+  for (const auto& name : held) {
+    if (name.size() < 4 || name.substr(name.size() - 4) != ":tau") continue;
+    std::map<int, std::pair<double, Model>> fits;  // grid index → (sum of squares, fit)
+    const double origin = std::log(*model.held.get(name));
+    auto at = [&](int j) -> double {
+      auto it = fits.find(j);
+      if (it != fits.end()) return it->second.first;
+      const double log_tau = origin + step * j;
+      if (log_tau < lo || log_tau > hi) return 1e300;
+      Model trial = model;
+      trial.held.set(name, std::exp(log_tau));
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      const double ssr = trial.fit.converged ? sum_of_squares(trial.fit, count) : 1e300;
+      fits.emplace(j, std::make_pair(ssr, std::move(trial)));
+      return ssr;
+    };
+    int best = 0;
+    for (int j = -2; j <= 2; ++j)
+      if (at(j) < at(best)) best = j;
+    for (int moves = 0; moves < 4 && (at(best - 1) < at(best) || at(best + 1) < at(best)); ++moves)
+      best = at(best - 1) < at(best + 1) ? best - 1 : best + 1;
+    Model chosen = fits.at(best).second;
+    double chosen_ssr = at(best);
+    const double a = at(best - 1), c = at(best + 1), den = a - 2.0 * chosen_ssr + c;
+    if (a < 1e299 && c < 1e299 && den > 0.0) {
+      const double shift = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+      Model refined = model;
+      refined.held.set(name, std::exp(origin + step * (best + shift)));
+      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify);
+      const double r = sum_of_squares(refined.fit, count);
+      if (refined.fit.converged && r < chosen_ssr) chosen = std::move(refined), chosen_ssr = r;
+    }
+    if (chosen.fit.converged && chosen.fit.identifiability.pinned == model.fit.identifiability.pinned) model = std::move(chosen);
+  }
+}
+
+/// Sets the size of an added effect; returns why it is not plausible (empty if it is).
+std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o, AddedEffect& e) {
+  const EffectSize size = effect_size(m, sets, e.candidate, e.values, e.uncertainty, o.plausible);
+  e.size = size.size;
+  e.size_sigma = size.sigma;
+  e.size_is_angle = size.is_angle;
+  return size.implausible;
+}
+
+}  // namespace
+
+std::string DiagnoseOptions::validate() const {
+  if (const std::string why = identify.validate(); !why.empty()) return why;
+  if (!(significance > 0.0 && significance < 1.0)) return "significance must be in (0, 1)";
+  if (max_effects < 0) return "max_effects must not be negative";
+  if (refit_top < 1) return "refit_top must be at least 1";
+  if (!(alias_tolerance > 0.0 && alias_tolerance < 1.0)) return "alias_tolerance must be in (0, 1)";
+  if (!plausible.valid()) return "the plausible sizes must be positive";
+  return {};
+}
+
+std::vector<std::string> DiagnoseResult::effects_added() const {
+  std::vector<std::string> out;
+  for (const auto& e : added) out.push_back(e.candidate.effect);
+  return out;
+}
+
+DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& sets,
+                        const std::vector<std::string>& basic_names, const DiagnoseOptions& o) {
+  if (const std::string why = o.validate(); !why.empty()) throw std::invalid_argument(why);
+  auto say = [&](const std::string& s) {
+    if (o.progress) o.progress(s);
+  };
+  DiagnoseResult out;
+  Model model{basic_names, {}, fit_model(m, sets, basic_names, {}, o.identify)};
+  out.basic = model.fit;
+  out.residual_before_mm = residual_of(m, sets, model, o.identify);
+  const Eigen::Index count = out.residual_before_mm.size();
+  const Eigen::VectorXd times = residual_times(sets);
+  double t_span = times.size() ? times.maxCoeff() : 0.0;
+  t_span = std::max(t_span, 60.0);
+  say(fmt::format("basic model: rms {:.3f} um, max {:.3f} um", model.fit.rms_after_um, model.fit.max_after_um));
+
+  std::vector<std::string> all_present = basic_names;
+  for (const auto& f : o.identify.fixed.names()) all_present.push_back(f);
+  std::vector<Candidate> catalogue = candidate_catalogue(m, sets, all_present);
+
+  out.stop_reason = "no candidate effects";
+  while (static_cast<int>(out.added.size()) < o.max_effects && !catalogue.empty()) {
+    if (!model.fit.converged) {
+      out.stop_reason = "the fit did not converge";
+      break;
+    }
+    // ---- 1. screening at the current solution
+    std::vector<std::string> names = layout_names(model);
+    for (const auto& f : o.identify.fixed.names())
+      if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+    std::vector<double> values;
+    for (const auto& n : names)
+      values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+    std::vector<int> kept;
+    for (std::size_t i = 0; i < model.names.size(); ++i)
+      if (model.fit.uncertainty.contains(model.names[i])) kept.push_back(static_cast<int>(i));
+    std::vector<std::vector<int>> cand_columns(catalogue.size());
+    std::vector<int> columns = kept;
+    for (std::size_t c = 0; c < catalogue.size(); ++c) {
+      for (const auto& p : catalogue[c].parameters) {
+        names.push_back(p);
+        values.push_back(0.0);
+        cand_columns[c].push_back(static_cast<int>(columns.size()));
+        columns.push_back(static_cast<int>(names.size()) - 1);
+      }
+      for (std::size_t h = 0; h < catalogue[c].held.size(); ++h) {
+        names.push_back(catalogue[c].held.names()[h]);
+        values.push_back(catalogue[c].held.values()[h]);
+      }
+    }
+    const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+    const Eigen::VectorXd r = prob.residuals(values);
+    const Eigen::MatrixXd J = prob.jacobian(values, columns);
+    const Eigen::Index p0 = static_cast<Eigen::Index>(kept.size());
+    Eigen::MatrixXd Q(count, 0);
+    if (p0 > 0) {
+      Eigen::MatrixXd K = J.leftCols(p0);
+      for (Eigen::Index c = 0; c < p0; ++c)
+        if (K.col(c).norm() > 0) K.col(c).normalize();
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
+      Q = qr.householderQ() * Eigen::MatrixXd::Identity(count, p0);
+    }
+    const double s0 = r.squaredNorm();
+    std::vector<Screened> screened;
+    int tested = 0;
+    for (std::size_t c = 0; c < catalogue.size(); ++c) {
+      Screened s;
+      s.candidate = static_cast<int>(c);
+      s.spec = catalogue[c];
+      Eigen::MatrixXd C(count, static_cast<Eigen::Index>(cand_columns[c].size()));
+      for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
+      int aliased = -1;
+      if (s.spec.kind == CandidateKind::drift) {
+        const DriftScreen drift = screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
+        aliased = drift.aliased ? 0 : -1;
+        s.spec.parameters = drift.parameters;
+        s.spec.held = drift.held;
+        s.drop = drift.drop;
+        s.basis = drift.basis;
+      } else {
+        s.basis = added_basis(Q, C, o.alias_tolerance, aliased);
+        s.drop = (s.basis.transpose() * r).squaredNorm();
+      }
+      if (aliased >= 0) continue;
+      ++tested;
+      const double k = double(s.spec.parameters.size());
+      const double dof = double(count - p0) - k;
+      s.p_linear = f_upper_tail((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
+      screened.push_back(s);
+    }
+    std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
+    // candidates that act alike on these data form one class, represented by the first in
+    // catalogue order (e.g. EXC:h1 and EYC:h1 once the location offsets of C are in)
+    {
+      std::vector<Screened> classes;
+      const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
+      std::vector<bool> merged(screened.size(), false);
+      for (std::size_t i = 0; i < screened.size(); ++i) {
+        if (merged[i]) continue;
+        std::vector<std::size_t> members{i};
+        if (i < compare)
+          for (std::size_t j = i + 1; j < compare; ++j)
+            if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, 10.0 * o.alias_tolerance)) {
+              members.push_back(j);
+              merged[j] = true;
+            }
+        std::size_t lead = members.front();
+        for (std::size_t k : members)
+          if (screened[k].candidate < screened[lead].candidate) lead = k;
+        Screened c = screened[lead];
+        for (std::size_t k : members)
+          if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
+        classes.push_back(std::move(c));
+      }
+      screened = std::move(classes);
+    }
+    const double alpha = o.significance / std::max(1, tested);
+
+    // ---- 2. refit the best few and weigh the evidence
+    out.last_rejected.clear();
+    std::optional<AddedEffect> best;
+    Model best_model;
+    int refits = 0;
+    for (const Screened& s : screened) {
+      if (refits >= o.refit_top || s.p_linear >= alpha) break;
+      ++refits;
+      Model trial = model;
+      for (const auto& p : s.spec.parameters) trial.names.push_back(p);
+      for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
+      const double s1 = sum_of_squares(trial.fit, count);
+      const int p1 = static_cast<int>(trial.fit.uncertainty.size());
+      const double k = double(s.spec.parameters.size());
+      const double dof = double(count - p1);
+      AddedEffect e;
+      e.candidate = s.spec;
+      e.equivalent = s.equivalent;
+      e.tested = tested;
+      e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
+      e.p_value = f_upper_tail(e.f_statistic, k, dof);
+      rej.p_value = e.p_value;
+      for (const auto& p : s.spec.parameters) {
+        e.values.set(p, trial.fit.parameters.value_or(p, 0.0));
+        e.uncertainty.set(p, trial.fit.uncertainty.value_or(p, 0.0));
+      }
+      for (std::size_t h = 0; h < s.spec.held.size(); ++h) e.values.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+      std::string why;
+      if (!trial.fit.converged) why = "the fit did not converge";
+      for (const auto& p : s.spec.parameters)
+        if (why.empty() && !trial.fit.uncertainty.contains(p)) why = p + " is pinned: not identifiable with the model";
+      if (why.empty() && trial.fit.identifiability.pinned != model.fit.identifiability.pinned)
+        why = "it makes a parameter of the model unidentifiable";
+      if (why.empty() && !(e.p_value < alpha))
+        why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
+      if (why.empty()) why = apply_size(m, sets, o, e);
+      if (!why.empty()) {
+        rej.reason = why;
+        out.last_rejected.push_back(rej);
+        continue;
+      }
+      e.rms_before_um = model.fit.rms_after_um;
+      e.max_before_um = model.fit.max_after_um;
+      e.rms_after_um = trial.fit.rms_after_um;
+      e.max_after_um = trial.fit.max_after_um;
+      if (!best || e.rms_after_um < best->rms_after_um) {
+        if (best) out.last_rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
+        best = e;
+        best_model = trial;
+      } else {
+        out.last_rejected.push_back({e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
+      }
+    }
+    if (!best) {
+      out.stop_reason = screened.empty() || screened.front().p_linear >= alpha
+                            ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g}; "
+                                          "needs < {:.3g})",
+                                          screened.empty() ? "none" : screened.front().spec.effect,
+                                          screened.empty() ? 1.0 : screened.front().p_linear, alpha)
+                            : "no significant candidate is identifiable and plausible";
+      break;
+    }
+    say(fmt::format("added {}: rms {:.3f} -> {:.3f} um (F = {:.4g}, p = {:.3g}, {} candidates)", best->candidate.effect,
+                    best->rms_before_um, best->rms_after_um, best->f_statistic, best->p_value, tested));
+    out.added.push_back(*best);
+    model = best_model;
+    retune_drift(m, sets, o, t_span, model, count);
+    const std::string added = best->candidate.effect;
+    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
+                    catalogue.end());
+    out.stop_reason = "max_effects reached";
+  }
+  // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
+  // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
+  if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
+    IdentifyOptions weighted = o.identify;
+    for (const auto& f : model.fit.files) weighted.set_weights.push_back(1.0 / std::max(f.rms_after_um, 1e-3));
+    IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted);
+    if (refit.converged && refit.identifiability.pinned == model.fit.identifiability.pinned) {
+      model.fit = std::move(refit);
+      out.set_noise_um.clear();
+      for (const auto& f : model.fit.files) out.set_noise_um.push_back(f.rms_after_um);
+    }
+  }
+  // the values of earlier effects move in later refits: report the final ones
+  for (auto& e : out.added) {
+    for (const auto& p : e.candidate.parameters) {
+      e.values.set(p, model.fit.parameters.value_or(p, 0.0));
+      e.uncertainty.set(p, model.fit.uncertainty.value_or(p, 0.0));
+    }
+    for (std::size_t h = 0; h < e.candidate.held.size(); ++h) {
+      const std::string& n = e.candidate.held.names()[h];
+      const double v = model.held.value_or(n, e.candidate.held.values()[h]);
+      e.candidate.held.set(n, v);
+      e.values.set(n, v);
+    }
+  }
+  for (auto& e : out.added) apply_size(m, sets, o, e);
+  out.final_fit = model.fit;
+  out.final_names = model.names;
+  out.held = model.held;
+  out.residual_after_mm = residual_of(m, sets, model, o.identify);
+  out.noise_um = noise_from_differences_um(sets, out.residual_after_mm);
+  out.before = residual_signature(m, sets, out.residual_before_mm);
+  out.after = residual_signature(m, sets, out.residual_after_mm);
+  return out;
+}
+
+ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
+  ModelFile f = to_model_file(m, r.final_fit);
+  f.effects_added = r.effects_added();
+  if (f.fit) {
+    f.fit->rms_before_um = r.basic.rms_after_um;
+    f.fit->max_before_um = r.basic.max_after_um;
+    f.fit->rms_after_um = r.final_fit.rms_after_um;
+    f.fit->max_after_um = r.final_fit.max_after_um;
+  }
+  return f;
+}
+
+}  // namespace ncpost::comp
