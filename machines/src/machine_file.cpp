@@ -137,6 +137,10 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
   } catch (const toml::parse_error& e) {
     throw InputError(at(file_name, e.source()), std::string(e.description()));
   }
+  if (const toml::table* t = root["machine"].as_table(); t && (*t)["kind"].value<std::string>() == "trr-xy")
+    throw InputError(at(file_name, t->get("kind")->source()),  // a parallel machine: trr_xy_file.hpp reads it
+                     "[machine] kind = \"trr-xy\": a TRR-XY parallel machine, not a serial chain (load it with "
+                     "load_trr_xy_machine; post, preview and sensitivity accept it)");
   reject_unknown_keys(file_name, root, {"machine", "axes"}, "top level");
   const toml::table* mt = root["machine"].as_table();
   if (!mt) throw InputError({file_name, 1, 1}, "missing table [machine] (name, chain)");

@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "identify_laser.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
@@ -82,6 +83,10 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
   sub->callback([&action, a] {
     action = [a] {
+      if (auto rc = identify_if_trr_xy(a->machine, a->data, a->output,
+                                       !a->params.empty() ? "--params" : !a->fixed.empty() ? "--fixed"
+                                                                       : !a->report.empty() ? "--report" : ""))
+        return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::MeasurementSet> sets;
       for (const auto& f : a->data) sets.push_back(comp::read_measurement_csv(f, m));

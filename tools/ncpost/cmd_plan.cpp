@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -72,6 +73,7 @@ void add_plan(CLI::App& app, Action& action) {
   sub->add_option("--overshoot", a->laser.overshoot_mm, "laser: overshoot before each pass (mm, default 5)");
   sub->callback([&action, a] {
     action = [a] {
+      if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::NamedPlan> plans;
       bool continuous = false;

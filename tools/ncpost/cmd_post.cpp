@@ -15,6 +15,7 @@
 #include "ncpost/postproc/post_report.hpp"
 #include "ncpost/postproc/preview_blocks.hpp"
 #include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "trr_commands.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -67,6 +68,9 @@ void account_before(const PostArgs& a, const LoadedJob& job, const comp::Machine
 }
 
 int run_post(const PostArgs& a) {
+  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
+                                 a.verify_on, a.output, a.input}))
+    return *rc;
   Dialect dialect;
   try {
     dialect = dialect_named(a.dialect);

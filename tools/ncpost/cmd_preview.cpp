@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "input_options.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/preview_csv.hpp"
@@ -26,6 +27,7 @@ struct PreviewArgs {
 };
 
 int run_preview(const PreviewArgs& a) {
+  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input})) return *rc;
   const LoadedJob job = load_job(a.job);
   std::unique_ptr<comp::MachineModel> model;
   std::unique_ptr<MotionSolver> solver;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -32,6 +33,8 @@ void add_simulate(CLI::App& app, Action& action) {
   sub->add_option("plan", args->plan, "plan CSV (a measurement CSV; value columns absent or ignored)")->required();
   sub->callback([&action, args] {
     action = [args] {
+      if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed))
+        return *rc;
       const Machine m = load_machine(args->machine);
       const comp::ModelFile model = comp::read_model_json(args->model, &m);
       const comp::MeasurementSet plan = comp::read_measurement_csv(args->plan, m, {true});

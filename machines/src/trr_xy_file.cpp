@@ -1,0 +1,143 @@
+#include "ncpost/machines/trr_xy_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace ncpost {
+namespace {
+
+SourcePosition at(const std::string& file, const toml::source_region& r) {
+  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+}
+
+void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
+                         const std::string& section) {
+  for (const auto& [key, node] : t) {
+    if (!known.count(std::string(key.str()))) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(at(file, key.source()),
+                       fmt::format("unknown key '{}' in [{}] (expected one of: {})", key.str(), section, list));
+    }
+  }
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0}, "cannot open the machine file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+toml::table parse_toml(const std::string& text, const std::string& file) {
+  try {
+    return toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw InputError(at(file, e.source()), std::string(e.description()));
+  }
+}
+
+double positive_length(const std::string& file, const toml::table& t, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) throw InputError(at(file, t.source()), fmt::format("[trr_xy]: missing key '{}' (mm)", key));
+  auto v = n->value<double>();
+  if (!v || !std::isfinite(*v) || *v <= 0.0)
+    throw InputError(at(file, n->source()), fmt::format("[trr_xy] {}: expected a positive number (mm)", key));
+  return *v;
+}
+
+AxisLimits read_limits(const std::string& file, const toml::node& n) {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 2) throw InputError(at(file, n.source()), "limits: expected [min, max] (mm)");
+  auto lo = (*a)[0].value<double>(), hi = (*a)[1].value<double>();
+  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi))
+    throw InputError(at(file, n.source()), "limits: expected two finite numbers (mm)");
+  if (!(*lo < *hi)) throw InputError(at(file, n.source()), "limits: expected min < max");
+  return {*lo, *hi};
+}
+
+}  // namespace
+
+std::string machine_file_kind(const std::string& path) {
+  const std::string text = read_text(path);
+  const toml::table root = parse_toml(text, path);
+  if (const toml::table* mt = root["machine"].as_table())
+    if (auto kind = (*mt)["kind"].value<std::string>()) return *kind;
+  return "serial";
+}
+
+trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& file) {
+  const toml::table root = parse_toml(text, file);
+  reject_unknown_keys(file, root, {"machine", "trr_xy", "axes"}, "top level");
+  const toml::table* mt = root["machine"].as_table();
+  if (!mt) throw InputError({file, 1, 1}, "missing table [machine] (name, kind = \"trr-xy\")");
+  reject_unknown_keys(file, *mt, {"name", "kind"}, "machine");
+  trr::Machine m;
+  auto name = (*mt)["name"].value<std::string>();
+  if (!name) throw InputError(at(file, mt->source()), "[machine]: missing key 'name' (a string)");
+  m.name = *name;
+  const toml::node* kind = mt->get("kind");
+  if (!kind) throw InputError(at(file, mt->source()), "[machine]: missing key 'kind' (\"trr-xy\")");
+  if (kind->value<std::string>() != std::optional<std::string>("trr-xy"))
+    throw InputError(at(file, kind->source()), "[machine] kind: expected \"trr-xy\"");
+
+  const toml::table* g = root["trr_xy"].as_table();
+  if (!g) throw InputError(at(file, root.source()), "missing table [trr_xy] (base_radius, platform_radius, link_length, "
+                                                    "ball_joint_height, tool_offset)");
+  reject_unknown_keys(file, *g,
+                      {"base_radius", "platform_radius", "link_length", "ball_joint_height", "tool_offset", "max_link_angle"},
+                      "trr_xy");
+  trr::Geometry& geo = m.geometry;
+  geo.base_radius_mm = positive_length(file, *g, "base_radius");
+  geo.platform_radius_mm = positive_length(file, *g, "platform_radius");
+  geo.link_length_mm = positive_length(file, *g, "link_length");
+  geo.ball_joint_height_mm = positive_length(file, *g, "ball_joint_height");
+  geo.tool_offset_mm = positive_length(file, *g, "tool_offset");
+  if (const toml::node* n = g->get("max_link_angle")) {
+    auto v = n->value<double>();
+    if (!v || !(*v > 0.0 && *v < 90.0))
+      throw InputError(at(file, n->source()), "[trr_xy] max_link_angle: expected a number of degrees in (0, 90)");
+    geo.max_link_angle_rad = deg_to_rad(*v);
+  }
+  const double offset = geo.base_radius_mm - geo.platform_radius_mm;
+  if (!(offset > 0.0 && offset < geo.link_length_mm))
+    throw InputError(at(file, g->source()),
+                     "[trr_xy]: expected platform_radius < base_radius < platform_radius + link_length "
+                     "(the links must reach inward from the screw lines)");
+
+  const toml::table* axes = root["axes"].as_table();
+  if (!axes) throw InputError(at(file, root.source()), "missing [axes.X], [axes.Y], [axes.U], [axes.V], [axes.W]");
+  const std::string letters = "XYUVW";
+  for (const auto& [key, node] : *axes) {
+    const std::string k(key.str());
+    if (k.size() != 1 || letters.find(k[0]) == std::string::npos)
+      throw InputError(at(file, key.source()),
+                       fmt::format("axis '{}': a TRR-XY machine has the axes X, Y (table) and U, V, W (sliders)", k));
+    const toml::table* t = node.as_table();
+    if (!t) throw InputError(at(file, node.source()), fmt::format("[axes.{}]: expected a table", k));
+    reject_unknown_keys(file, *t, {"type", "limits"}, "axes." + k);
+    const toml::node* type = t->get("type");
+    if (!type) throw InputError(at(file, t->source()), fmt::format("[axes.{}]: missing key 'type' (\"linear\")", k));
+    if (type->value<std::string>() != std::optional<std::string>("linear"))
+      throw InputError(at(file, type->source()), fmt::format("[axes.{}] type: expected \"linear\"", k));
+    std::optional<AxisLimits> lim;
+    if (const toml::node* n = t->get("limits")) lim = read_limits(file, *n);
+    const auto idx = letters.find(k[0]);
+    if (idx < 2) m.table_limits[idx] = lim;
+    else m.slider_limits[idx - 2] = lim;
+  }
+  for (char c : letters)
+    if (!axes->contains(std::string(1, c)))
+      throw InputError(at(file, axes->source()), fmt::format("missing axis [axes.{}]", c));
+  return m;
+}
+
+trr::Machine load_trr_xy_machine(const std::string& path) { return parse_trr_xy_machine(read_text(path), path); }
+
+}  // namespace ncpost

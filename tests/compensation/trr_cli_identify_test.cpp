@@ -1,0 +1,76 @@
+// The TRR-XY measurement loop through the CLI: plan sphere → simulate → identify → the model
+// predicts the true machine; bad probing data fail with file and line.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "ncpost/compensation/trr_identify.hpp"
+#include "ncpost/compensation/trr_model.hpp"
+#include "ncpost/machines/trr_xy_file.hpp"
+#include "test_paths.hpp"
+
+using namespace ncpost;
+using namespace ncpost::trr;
+
+namespace {
+
+int run(const std::string& args, std::string* err = nullptr) {
+  const std::string cmd = std::string(NCPOST_BINARY) + " " + args + " >trr_cli.out 2>trr_cli.err";
+  const int rc = std::system(cmd.c_str());
+  if (err) {
+    std::ifstream e("trr_cli.err");
+    std::stringstream s;
+    s << e.rdbuf();
+    *err = s.str();
+  }
+  return WEXITSTATUS(rc);
+}
+
+}  // namespace
+
+TEST_CASE("plan sphere, simulate, identify on the TRR-XY machine") {
+  const std::string machine = test::source("machines/trr-xy.toml");
+  const trr::Machine m = load_trr_xy_machine(machine);
+  Errors truth;
+  for (int k = 0; k < kParameterCount; ++k)  // a deterministic spread of signs and sizes
+    truth[k] = std::sin(1.7 * k + 0.3) * (Errors::is_angle(k) ? 8e-5 : 0.025);
+  std::ofstream("trr_truth.json") << comp::format_model_json(model_from_errors(truth, "trr-xy"));
+
+  REQUIRE(run("plan --machine " + machine + " sphere -o trr_plan") == 0);
+  REQUIRE(run("simulate --machine " + machine + " --model trr_truth.json --noise-um 0.2 --seed 3 -o trr_data.csv trr_plan.csv") == 0);
+  REQUIRE(run("identify --machine " + machine + " -o trr_identified.json trr_data.csv") == 0);
+
+  std::ifstream in("trr_identified.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  CHECK(j["identifiability"]["rank"] == 24);
+  CHECK(j["identifiability"]["null_space"].size() == 6);
+  CHECK(j["fit"]["rms_after_um"].get<double>() < 0.3);
+  CHECK(j["fit"]["rms_before_um"].get<double>() > 10.0);
+  CHECK_FALSE(j["uncertainty"].contains("dzs_a"));
+  CHECK(j["uncertainty"].contains("gp_a"));
+
+  const Kinematics actual(m, truth), model(m, read_errors_json("trr_identified.json")), nominal(m);
+  double worst_um = 0.0;
+  for (const Vec3d& s : probing_poses(m))
+    for (double L : {0.0, 50.0, 100.0}) {
+      const auto a = predicted_deviation(actual, nominal, s, L), b = predicted_deviation(model, nominal, s, L);
+      REQUIRE(a);
+      REQUIRE(b);
+      worst_um = std::max(worst_um, 1000.0 * (*a - *b).norm());
+    }
+  CHECK(worst_um < 1.0);
+}
+
+TEST_CASE("bad probing data: file and line") {
+  const std::string machine = test::source("machines/trr-xy.toml");
+  std::ofstream("trr_bad.csv") << "# type: sphere\nt,X,Y,U,V,W,stylus,dx,dy,dz\n0,0,0,170,170,170,0,0,0,0\n1,0,0,abc,170,170,0,0,0,0\n";
+  std::string err;
+  CHECK(run("identify --machine " + machine + " -o trr_never.json trr_bad.csv", &err) == 2);
+  CHECK(err.find("trr_bad.csv:4:") != std::string::npos);
+  CHECK_FALSE(std::ifstream("trr_never.json").good());
+  CHECK(run("plan --machine " + machine + " ballbar-4axis -o trr_never", &err) == 1);
+  CHECK(run("identify --machine " + machine + " --params EX0C -o trr_never.json trr_bad.csv", &err) == 1);
+}

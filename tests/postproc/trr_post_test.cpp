@@ -1,0 +1,198 @@
+// Posting on the TRR-XY machine (issue 8): the NC program (X Y U V W) re-executed independently
+// — parsed back from the file, every block interpolated linearly in X Y U V W at 200 points and
+// run through the forward kinematics — stays within the tolerance of the CL path; --verify,
+// --model, preview --csv and the out-of-reach exit code through the CLI.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "ncpost/compensation/trr_model.hpp"
+#include "ncpost/kinematics/trr_xy_inverse.hpp"
+#include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+#include "test_paths.hpp"
+
+using namespace ncpost;
+using namespace ncpost::trr;
+
+namespace {
+
+const Vec3d kOrigin(0.0, 0.0, -300.0);
+
+int run(const std::string& args, std::string* err = nullptr) {
+  const std::string cmd = std::string(NCPOST_BINARY) + " " + args + " >trr_post.out 2>trr_post.err";
+  const int rc = std::system(cmd.c_str());
+  if (err) {
+    std::ifstream e("trr_post.err");
+    std::stringstream s;
+    s << e.rdbuf();
+    *err = s.str();
+  }
+  return WEXITSTATUS(rc);
+}
+
+std::string machine_path() { return test::source("machines/trr-xy.toml"); }
+std::string sample_path() { return test::source("samples/hemisphere_5axis.cls"); }
+
+/// The motion blocks of an NC program: modal X Y U V W values after each G0/G1 block.
+std::vector<Command> read_program(const std::string& path) {
+  std::ifstream in(path);
+  REQUIRE(in);
+  std::vector<Command> out;
+  Eigen::Matrix<double, 5, 1> w = Eigen::Matrix<double, 5, 1>::Constant(std::nan(""));
+  const std::string letters = "XYUVW";
+  const std::regex word("([XYUVW])(-?[0-9]+\\.?[0-9]*)");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '(' || line[0] == '%') continue;
+    bool moved = false;
+    for (std::sregex_iterator it(line.begin(), line.end(), word), end; it != end; ++it) {
+      w[static_cast<Eigen::Index>(letters.find((*it)[1].str()[0]))] = std::stod((*it)[2].str());
+      moved = true;
+    }
+    if (moved && w.allFinite()) out.push_back(Command::from_words(w));
+  }
+  return out;
+}
+
+/// The CL points of the sample (the path the executed tip must follow).
+std::vector<Vec3d> read_cl_points(const std::string& path) {
+  std::ifstream in(path);
+  cl::AptReader reader(in, path);
+  std::vector<Vec3d> pts;
+  while (auto r = reader.next())
+    if (const auto* m = std::get_if<cl::Motion>(&*r)) pts.push_back(m->point.tip_mm);
+  return pts;
+}
+
+double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
+  double best = 1e300;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Vec3d d = path[i + 1] - path[i];
+    const double len2 = d.squaredNorm();
+    const double u = len2 > 0 ? std::clamp((p - path[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - (path[i] + u * d)).norm());
+  }
+  return best;
+}
+
+/// Largest distance of the executed tip from the CL path, over every block (200 points each).
+double executed_deviation(const Kinematics& k, const std::vector<Command>& program, const std::vector<Vec3d>& path,
+                          double* endpoint_mm = nullptr) {
+  double worst = 0.0, worst_end = 0.0;
+  std::optional<Rigidd> warm;
+  for (std::size_t b = 0; b + 1 < program.size(); ++b) {
+    for (int j = (b == 0 ? 0 : 1); j <= 200; ++j) {
+      const double t = j / 200.0;
+      const Command c = Command::from_words((1 - t) * program[b].words() + t * program[b + 1].words());
+      const auto tp = k.tool(c.slider_mm, warm);
+      if (!tp) FAIL("forward kinematics failed in block " << b);
+      warm = tp->machine_T_plate;
+      const double d = distance_to_path(Kinematics::tip_in_workpiece(*tp, c, kOrigin), path);
+      worst = std::max(worst, d);
+      if (j == 200) worst_end = std::max(worst_end, d);
+    }
+  }
+  if (endpoint_mm) *endpoint_mm = worst_end;
+  return worst;
+}
+
+Errors some_errors() {
+  Errors e;
+  e.chain[0].gp = 2e-4;
+  e.chain[1].at = -1.5e-4;
+  e.chain[2].ar = 1e-4;
+  e.chain[0].dl = 0.03;
+  e.chain[1].dr = -0.02;
+  e.chain[2].dts = 0.015;
+  return e;
+}
+
+}  // namespace
+
+TEST_CASE("--tolerance 0.005: the executed tip stays within 5 um of the CL path") {
+  const trr::Machine m = load_trr_xy_machine(machine_path());
+  const Kinematics nominal(m);
+  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  REQUIRE(path.size() == 435);
+
+  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_plain.nc " + sample_path()) == 0);
+  double end_plain = 0.0;
+  const double plain = executed_deviation(nominal, read_program("trr_plain.nc"), path, &end_plain);
+
+  std::string err;
+  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o trr_tol.nc " +
+              sample_path(), &err) == 0);
+  const std::vector<Command> program = read_program("trr_tol.nc");
+  double end_tol = 0.0;
+  const double tol = executed_deviation(nominal, program, path, &end_tol);
+  WARN("one block per CL motion: " << read_program("trr_plain.nc").size() << " blocks, largest deviation " << plain
+       << " mm; --tolerance 0.005: " << program.size() << " blocks, largest deviation " << tol << " mm, block ends "
+       << end_tol << " mm\n" << err);
+  CHECK(plain > 0.05);         // the nonlinear error is large on this machine
+  CHECK(end_plain < 5e-4);     // but the block ends are on the path (4-decimal words)
+  CHECK(tol <= 0.005);
+  CHECK(program.size() < 8 * 435);  // adaptive, not uniform dense output
+  CHECK(err.find("verify: ") != std::string::npos);
+  CHECK(err.find("largest contour error 0.00") != std::string::npos);
+}
+
+TEST_CASE("--model: the commands make the machine with errors follow the CL path") {
+  const trr::Machine m = load_trr_xy_machine(machine_path());
+  const Errors truth = some_errors();
+  const Kinematics actual(m, truth);
+  {
+    std::ofstream f("trr_model.json");
+    f << comp::format_model_json(model_from_errors(truth, "trr-xy"));
+  }
+  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 -o trr_nom.nc " +
+              sample_path()) == 0);
+  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --model trr_model.json "
+              "-o trr_comp.nc " + sample_path()) == 0);
+  double end_nominal = 0.0, end_comp = 0.0;
+  const double nominal = executed_deviation(actual, read_program("trr_nom.nc"), path, &end_nominal);
+  const double compensated = executed_deviation(actual, read_program("trr_comp.nc"), path, &end_comp);
+  WARN("on the machine with errors: nominal program " << nominal << " mm (block ends " << end_nominal
+       << "), compensated " << compensated << " mm (block ends " << end_comp << ")");
+  CHECK(end_nominal > 0.02);
+  CHECK(end_comp < 5e-4);  // the 4-decimal words: up to 0.05 um each, through the head's gain
+  CHECK(compensated <= 0.005);
+}
+
+TEST_CASE("preview --csv and --html on the TRR-XY machine: one row per feed block") {
+  REQUIRE(run("preview --machine " + machine_path() + " --workpiece-origin 0,0,-300 --csv trr_preview.csv --html trr_preview.html " +
+              sample_path()) == 0);
+  std::ifstream h("trr_preview.html");
+  std::stringstream hs;
+  hs << h.rdbuf();
+  CHECK(hs.str().find("<svg") != std::string::npos);
+  CHECK(hs.str().find("<script") == std::string::npos);
+  std::ifstream in("trr_preview.csv");
+  std::string header;
+  std::getline(in, header);
+  CHECK(header.rfind("block,line,max_error_mm,at_t,harmonic_mm", 0) == 0);
+  int rows = 0;
+  double worst = 0.0;
+  for (std::string line; std::getline(in, line); ++rows) {
+    std::stringstream s(line);
+    std::string field;
+    for (int i = 0; i < 3; ++i) std::getline(s, field, ',');
+    worst = std::max(worst, std::stod(field));
+  }
+  CHECK(rows == 433);  // 435 motions: the first is a rapid from nowhere, the second a rapid
+  CHECK(worst > 0.05);
+}
+
+TEST_CASE("a CL point out of reach: exit 3 naming the line and the axis") {
+  std::string err;
+  CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_far.nc " +
+            test::shared("data/scenarios/public-clean/path.cls"), &err) == 3);
+  CHECK(err.find("path.cls:729: V623.8594 is outside the limits [0, 600]") != std::string::npos);
+  CHECK_FALSE(std::ifstream("trr_far.nc").good());
+  std::ofstream("trr_bad_model.json") << "{\n \"machine\": \"trr-xy\",\n \"parameters\": {\"EX0C\": 0.01}\n}\n";
+  CHECK(run("post --machine " + machine_path() + " --model trr_bad_model.json " + sample_path(), &err) == 2);
+  CHECK(err.find("trr_bad_model.json:3:") != std::string::npos);
+}

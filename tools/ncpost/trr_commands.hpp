@@ -1,0 +1,59 @@
+#pragma once
+// `ncpost post` and `ncpost preview` on the TRR-XY machine (spec trr-xy.md): the serial
+// subcommands call these first; they run the TRR-XY path when --machine is a kind = "trr-xy" file.
+#include <cstdint>
+#include <optional>
+#include <vector>
+#include <string>
+
+#include "input_options.hpp"
+
+namespace ncpost::cli {
+
+struct TrrPostRequest {
+  const JobOptions& job;
+  const std::string& model;
+  const std::optional<double>& tolerance_mm;
+  const std::string& nonlinear;  ///< "adaptive" or "harmonic"
+  bool rtcp;
+  const std::string& dialect;
+  bool verify;
+  const std::string& report;
+  const std::string& verify_on;
+  const std::string& output;
+  const std::string& input;
+};
+
+/// The exit code if the machine is a TRR-XY machine (then the post has run), else nullopt.
+std::optional<int> post_if_trr_xy(const TrrPostRequest& r);
+
+struct TrrPreviewRequest {
+  const JobOptions& job;
+  const std::string& model;
+  const std::string& csv;
+  const std::string& html;
+  const std::string& input;
+};
+
+/// The exit code if the machine is a TRR-XY machine (then the preview has run), else nullopt.
+std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& r);
+
+}  // namespace ncpost::cli
+
+namespace ncpost::cli {
+
+/// `plan sphere` on the TRR-XY machine: the probing poses of trr_identify.hpp with two stylus
+/// lengths (0 and 100 mm) → PLAN.csv (trr_probing_csv.hpp) and PLAN.nc. Exit code, or nullopt
+/// when the machine is not a TRR-XY machine.
+std::optional<int> plan_if_trr_xy(const std::string& machine, const std::string& test, const std::string& output);
+
+/// `simulate` on the TRR-XY machine: a probing plan on the machine of the model JSON.
+std::optional<int> simulate_if_trr_xy(const std::string& machine, const std::string& model, const std::string& plan,
+                                      const std::string& output, double noise_um, std::uint64_t seed);
+
+/// `identify` on the TRR-XY machine: the 30 parameters from probing data, with the
+/// identifiability report; `other_options` names serial-only options that were given.
+std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vector<std::string>& data,
+                                      const std::string& output, const std::string& other_options);
+
+}  // namespace ncpost::cli
