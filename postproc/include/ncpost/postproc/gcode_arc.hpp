@@ -57,6 +57,6 @@ ArcOutcome arc_from_radius(const ProgramPoint& start, const ProgramPoint& end, P
 long arc_segments(const ArcMove& arc, double chord_tolerance_mm);
 
 /// Largest number of points an arc may expand to (bad input beyond).
-constexpr long kMaxArcSegments = 1'000'000;
+constexpr long kMaxArcSegments = 200'000;
 
 }  // namespace ncpost::gcode
