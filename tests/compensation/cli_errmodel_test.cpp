@@ -1,6 +1,8 @@
 // ncpost plan → simulate → identify end to end, exit codes and atomic outputs (cli.md).
 #include <catch2/catch.hpp>
 
+#include "cli_run.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,17 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int run(const std::string& args, const std::string& log) {
-  const int rc = std::system((std::string(NCPOST_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-}
-
-std::string read(const std::string& path) {
-  std::ifstream f(path);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+int run(const std::string& args, const std::string& log) { return ncpost::test::run_ncpost(args, log); }
+std::string read(const std::string& path) { return ncpost::test::read_text_file(path); }
 
 }  // namespace
 

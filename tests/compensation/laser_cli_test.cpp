@@ -1,6 +1,8 @@
 // Issue 7 on the command line: plan laser → simulate → identify (laser dispatch), exit codes.
 #include <catch2/catch.hpp>
 
+#include "cli_run.hpp"
+
 #include <unistd.h>
 
 #include <cstdlib>
@@ -16,17 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int run(const std::string& args, const std::string& log) {
-  const int rc = std::system((std::string(NCPOST_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-}
-
-std::string read(const std::string& path) {
-  std::ifstream f(path);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+int run(const std::string& args, const std::string& log) { return ncpost::test::run_ncpost(args, log); }
+std::string read(const std::string& path) { return ncpost::test::read_text_file(path); }
 
 }  // namespace
 
