@@ -12,6 +12,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
 fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCPOST_BUILD_BENCH="${NCPOST_BUILD_BENCH:-ON}" >/dev/null
 cmake --build build -j"$(nproc)"
 if [ "${1:-}" != "--no-demo" ]; then tools/demo.sh; fi
