@@ -39,6 +39,15 @@ RowState<double> reversal_state(const MachineModel& model, const AxisPosition& c
   return s;
 }
 
+AxisPosition actual_after(const MachineModel& model, const AxisPosition& command,
+                          const std::optional<AxisPosition>& previous_actual) {
+  const RowState<double> state = reversal_state(model, command, previous_actual);
+  AxisPosition actual = command;
+  const int n = static_cast<int>(model.machine().axes.size());
+  for (int a = 0; a < n; ++a) actual[a] += state.reversal[static_cast<std::size_t>(a)];
+  return actual;
+}
+
 namespace {
 
 /// Fast path: fixed-point iteration on the nominal closed-form inverse kinematics. The error of

@@ -7,20 +7,13 @@
 #include <set>
 
 #include "ncpost/compensation/identify_report.hpp"
+#include "report_text.hpp"
 
 namespace ncpost::comp {
 namespace {
 
-std::string base_name(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return o;
-}
+using report::base_name;
+using report::escape;
 
 /// Size of an added effect in report units.
 std::string size_text(const AddedEffect& e) {

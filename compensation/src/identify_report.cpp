@@ -6,25 +6,13 @@
 #include <cmath>
 
 #include "ncpost/compensation/parameter_name.hpp"
+#include "report_text.hpp"
 
 namespace ncpost::comp {
 namespace {
 
-std::string base_name(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else o += c;
-  }
-  return o;
-}
+using report::base_name;
+using report::escape;
 
 /// Polar plot angle of each row: the rotary axis that turns most (e.g. C, 0..360°).
 std::vector<double> polar_angles(const MeasurementSet& s) {

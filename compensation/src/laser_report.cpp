@@ -4,23 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include "report_text.hpp"
 
 namespace ncpost::comp {
 namespace {
 
+using report::escape;
+
 double shown(const LaserFunction& f, double v) { return f.is_angle() ? v * 1e6 : v * 1e3; }
 const char* unit(const LaserFunction& f) { return f.is_angle() ? "µrad" : "µm"; }
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else o += c;
-  }
-  return o;
-}
 
 /// A small line plot of the table (and its polynomial) in µm / µrad.
 std::string svg_plot(const LaserFunction& f) {

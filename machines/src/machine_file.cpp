@@ -9,27 +9,16 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "toml_reading.hpp"
+
 namespace ncpost {
 namespace {
 
-SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
+using toml_reading::at;
+using toml_reading::reject_unknown_keys;
 
 [[noreturn]] void fail(const std::string& file, const toml::node& n, const std::string& what) {
   throw InputError(at(file, n.source()), what);
-}
-
-void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
-                         const std::string& section) {
-  for (const auto& [key, node] : t) {
-    if (!known.count(std::string(key.str()))) {
-      std::string list;
-      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError(at(file, key.source()),
-                       fmt::format("unknown key '{}' in [{}] (expected one of: {})", key.str(), section, list));
-    }
-  }
 }
 
 Vec3d read_vector(const std::string& file, const toml::node& n, const std::string& what) {
@@ -42,15 +31,6 @@ Vec3d read_vector(const std::string& file, const toml::node& n, const std::strin
     v[static_cast<int>(i)] = *x;
   }
   return v;
-}
-
-AxisLimits read_limits(const std::string& file, const toml::node& n, double scale) {
-  const toml::array* a = n.as_array();
-  if (!a || a->size() != 2) fail(file, n, "limits: expected [min, max]");
-  auto lo = (*a)[0].value<double>(), hi = (*a)[1].value<double>();
-  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi)) fail(file, n, "limits: expected two finite numbers");
-  if (!(*lo < *hi)) fail(file, n, "limits: expected min < max");
-  return {*lo * scale, *hi * scale};
 }
 
 Axis read_axis(const std::string& file, char letter, const toml::table& t) {
@@ -67,7 +47,7 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
     if (t.contains("direction") || t.contains("pivot"))
       throw InputError(at(file, t.source()), fmt::format("[{}]: a linear axis takes no direction or pivot (X, Y, Z are the axes of M)", section));
     axis.direction = Vec3d::Unit(letter - 'X');
-    if (const toml::node* n = t.get("limits")) axis.limits = read_limits(file, *n, 1.0);
+    if (const toml::node* n = t.get("limits")) axis.limits = toml_reading::read_limits(file, *n, 1.0, "");
   } else if (*type == "rotary") {
     axis.kind = AxisKind::rotary;
     const toml::node* d = t.get("direction");
@@ -79,7 +59,7 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
     const toml::node* p = t.get("pivot");
     if (!p) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'pivot' (mm, a point of the axis line)", section));
     axis.pivot_mm = read_vector(file, *p, "pivot");
-    if (const toml::node* n = t.get("limits")) axis.limits = read_limits(file, *n, kPi / 180.0);
+    if (const toml::node* n = t.get("limits")) axis.limits = toml_reading::read_limits(file, *n, kPi / 180.0, "");
   } else {
     fail(file, *t.get("type"), fmt::format("type: expected \"linear\" or \"rotary\", got \"{}\"", *type));
   }
@@ -131,12 +111,7 @@ void assign_chain(Machine& m, const std::string& chain, const SourcePosition& wh
 }
 
 Machine parse_machine(const std::string& text, const std::string& file_name) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file_name);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file_name, e.source()), std::string(e.description()));
-  }
+  const toml::table root = toml_reading::parse_toml(text, file_name);
   if (const toml::table* t = root["machine"].as_table(); t && (*t)["kind"].value<std::string>() == "trr-xy")
     throw InputError(at(file_name, t->get("kind")->source()),  // a parallel machine: trr_xy_file.hpp reads it
                      "[machine] kind = \"trr-xy\": a TRR-XY parallel machine, not a serial chain (load it with "
@@ -182,12 +157,6 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
   return m;
 }
 
-Machine load_machine(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open the machine file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_machine(s.str(), path);
-}
+Machine load_machine(const std::string& path) { return parse_machine(toml_reading::read_text(path), path); }
 
 }  // namespace ncpost

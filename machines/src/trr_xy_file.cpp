@@ -8,40 +8,15 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "toml_reading.hpp"
+
 namespace ncpost {
 namespace {
 
-SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
-
-void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
-                         const std::string& section) {
-  for (const auto& [key, node] : t) {
-    if (!known.count(std::string(key.str()))) {
-      std::string list;
-      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError(at(file, key.source()),
-                       fmt::format("unknown key '{}' in [{}] (expected one of: {})", key.str(), section, list));
-    }
-  }
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open the machine file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-toml::table parse_toml(const std::string& text, const std::string& file) {
-  try {
-    return toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file, e.source()), std::string(e.description()));
-  }
-}
+using toml_reading::at;
+using toml_reading::parse_toml;
+using toml_reading::read_text;
+using toml_reading::reject_unknown_keys;
 
 double positive_length(const std::string& file, const toml::table& t, const char* key) {
   const toml::node* n = t.get(key);
@@ -50,16 +25,6 @@ double positive_length(const std::string& file, const toml::table& t, const char
   if (!v || !std::isfinite(*v) || *v <= 0.0)
     throw InputError(at(file, n->source()), fmt::format("[trr_xy] {}: expected a positive number (mm)", key));
   return *v;
-}
-
-AxisLimits read_limits(const std::string& file, const toml::node& n) {
-  const toml::array* a = n.as_array();
-  if (!a || a->size() != 2) throw InputError(at(file, n.source()), "limits: expected [min, max] (mm)");
-  auto lo = (*a)[0].value<double>(), hi = (*a)[1].value<double>();
-  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi))
-    throw InputError(at(file, n.source()), "limits: expected two finite numbers (mm)");
-  if (!(*lo < *hi)) throw InputError(at(file, n.source()), "limits: expected min < max");
-  return {*lo, *hi};
 }
 
 }  // namespace
@@ -127,7 +92,7 @@ trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& fi
     if (type->value<std::string>() != std::optional<std::string>("linear"))
       throw InputError(at(file, type->source()), fmt::format("[axes.{}] type: expected \"linear\"", k));
     std::optional<AxisLimits> lim;
-    if (const toml::node* n = t->get("limits")) lim = read_limits(file, *n);
+    if (const toml::node* n = t->get("limits")) lim = toml_reading::read_limits(file, *n, 1.0, " (mm)");
     const auto idx = letters.find(k[0]);
     if (idx < 2) m.table_limits[idx] = lim;
     else m.slider_limits[idx - 2] = lim;

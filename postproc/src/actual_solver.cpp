@@ -43,12 +43,7 @@ ToolPoseT<double> ActualSolver::execute(const AxisPosition& q) const {
 }
 
 void ActualSolver::advance(const AxisPosition& command) const {
-  if (!model_.has_reversal()) return;
-  const comp::RowState<double> state = comp::reversal_state(model_, command, actual_);
-  AxisPosition now = command;
-  const int n = static_cast<int>(model_.machine().axes.size());
-  for (int a = 0; a < n; ++a) now[a] += state.reversal[static_cast<std::size_t>(a)];
-  actual_ = now;
+  if (model_.has_reversal()) actual_ = comp::actual_after(model_, command, actual_);
 }
 
 std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, const AxisPosition& to) const {

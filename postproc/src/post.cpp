@@ -317,8 +317,7 @@ class Poster {
   }
 
   /// One hole as G81/G83 from the clearance point `top` (where the tool stands) down to `bottom`.
-  bool native_cycle(const ClPoint& top, const ClPoint& bottom, int line) {
-    (void)line;
+  bool native_cycle(const ClPoint& top, const ClPoint& bottom) {
     if (!options_.native_cycles || !writer_.has_iso_cycles()) return false;
     if (cycle_.kind != cl::Cycle::Kind::drill && cycle_.kind != cl::Cycle::Kind::deep) return false;
     const Vec3d xt = options_.rtcp ? top.tip_mm : previous_.q.linear_mm;
@@ -345,7 +344,7 @@ class Poster {
     const double saved_feed = feed_mm_min_;
     const bool saved_given = feed_given_;
     move_to(top, m.where.line, true);
-    if (native_cycle(top, bottom, m.where.line)) return;
+    if (native_cycle(top, bottom)) return;
     if (cycle_.feed > 0.0) {
       feed_mm_min_ = cycle_.feed;
       feed_given_ = true;

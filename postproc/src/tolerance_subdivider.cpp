@@ -30,7 +30,7 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve(cl, previous); };
     const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q};
     const nonlinear::SplitBlock split =
-        actual ? nonlinear::compensate_block(machine, setup, block, actual->errors_toward(to.q), ik, c)
+        actual ? nonlinear::compensate_block(machine, setup, block, actual->errors_from_here(), ik, c)
                : nonlinear::compensate_block(machine, setup, block, NominalErrors{}, ik, c);
     if (!split.ok()) throw Infeasible(fmt::format("{}: {}", input_name, split.failure));
     std::vector<SolvedPoint> points;

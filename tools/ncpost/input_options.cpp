@@ -17,20 +17,23 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
       ->check(CLI::IsMember({"auto", "cl", "machine", "rtcp"}));
 }
 
+Vec3d workpiece_origin_mm(const JobOptions& o) {
+  if (o.workpiece_origin.empty()) return Vec3d::Zero();
+  std::string s = o.workpiece_origin;
+  for (char& c : s)
+    if (c == ',') c = ' ';
+  std::istringstream in(s);
+  Vec3d v;
+  if (!(in >> v.x() >> v.y() >> v.z()) || !(in >> std::ws).eof() || !v.allFinite())
+    throw UsageError("--workpiece-origin: expected X,Y,Z in mm, got '" + o.workpiece_origin + "'");
+  return v;
+}
+
 LoadedJob load_job(const JobOptions& o) {
   LoadedJob job;
   job.machine = load_machine(o.machine);
   job.setup.tool_length_mm = o.tool_length_mm;
-  if (!o.workpiece_origin.empty()) {
-    std::string s = o.workpiece_origin;
-    for (char& c : s)
-      if (c == ',') c = ' ';
-    std::istringstream in(s);
-    Vec3d v;
-    if (!(in >> v.x() >> v.y() >> v.z()) || !(in >> std::ws).eof() || !v.allFinite())
-      throw UsageError("--workpiece-origin: expected X,Y,Z in mm, got '" + o.workpiece_origin + "'");
-    job.setup.workpiece_origin_mm = v;
-  }
+  job.setup.workpiece_origin_mm = workpiece_origin_mm(o);
   return job;
 }
 

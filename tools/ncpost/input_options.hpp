@@ -24,6 +24,8 @@ struct LoadedJob {
 };
 
 void add_job_options(CLI::App& sub, JobOptions& o);
+/// `--workpiece-origin X,Y,Z` (mm; zero when not given); UsageError when malformed.
+Vec3d workpiece_origin_mm(const JobOptions& o);
 LoadedJob load_job(const JobOptions& o);
 /// Opens the reader for the input's kind (detected from the content unless forced).
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,

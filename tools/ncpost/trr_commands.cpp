@@ -27,16 +27,7 @@ std::optional<TrrJob> load_trr_job(const JobOptions& o) {
   if (machine_file_kind(o.machine) != "trr-xy") return std::nullopt;
   TrrJob job;
   job.machine = load_trr_xy_machine(o.machine);
-  if (!o.workpiece_origin.empty()) {
-    std::string s = o.workpiece_origin;
-    for (char& c : s)
-      if (c == ',') c = ' ';
-    std::istringstream in(s);
-    Vec3d v;
-    if (!(in >> v.x() >> v.y() >> v.z()) || !(in >> std::ws).eof() || !v.allFinite())
-      throw UsageError("--workpiece-origin: expected X,Y,Z in mm, got '" + o.workpiece_origin + "'");
-    job.workpiece_origin_mm = v;
-  }
+  job.workpiece_origin_mm = workpiece_origin_mm(o);
   if (o.tool_length_mm != 0.0)
     throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
   if (o.input_kind != "auto" && o.input_kind != "cl")

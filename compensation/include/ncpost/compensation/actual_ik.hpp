@@ -50,4 +50,9 @@ ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const
 RowState<double> reversal_state(const MachineModel& model, const AxisPosition& command,
                                 const std::optional<AxisPosition>& previous_actual);
 
+/// Where the axes actually stand after moving to `command` from `previous_actual` (command plus
+/// its reversal offsets; the command itself without history).
+AxisPosition actual_after(const MachineModel& model, const AxisPosition& command,
+                          const std::optional<AxisPosition>& previous_actual);
+
 }  // namespace ncpost::comp

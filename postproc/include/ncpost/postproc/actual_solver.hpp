@@ -47,7 +47,7 @@ class ActualSolver final : public MotionSolver {
 
   /// The error hook for a block from where the axes stand now: each command's reversal offset is
   /// that of the dead band from there (RowState::previous_actual).
-  comp::ErrorFunctor<double> errors_toward(const AxisPosition& /*command*/) const {
+  comp::ErrorFunctor<double> errors_from_here() const {
     comp::RowState<double> state;
     if (actual_) {
       std::array<double, 5> previous{};

@@ -25,12 +25,7 @@ class ExecutedOn final : public MotionSolver {
   }
   void advance(const AxisPosition& q) const override {
     commands_.advance(q);
-    if (!executing_.has_reversal()) return;
-    const comp::RowState<double> state = comp::reversal_state(executing_, q, actual_);
-    AxisPosition now = q;
-    for (int a = 0; a < static_cast<int>(executing_.machine().axes.size()); ++a)
-      now[a] += state.reversal[static_cast<std::size_t>(a)];
-    actual_ = now;
+    if (executing_.has_reversal()) actual_ = comp::actual_after(executing_, q, actual_);
   }
   Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override { return commands_.programmed_tip(cl, q); }
   std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to) const override {

@@ -1,0 +1,64 @@
+#pragma once
+// Reading machine files (TOML) with file:line:column errors: shared by the serial-machine loader
+// (machine_file.cpp) and the TRR-XY loader (trr_xy_file.cpp). Internal to the machines library.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <toml++/toml.h>
+
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/machines/input_error.hpp"
+
+namespace ncpost::toml_reading {
+
+inline SourcePosition at(const std::string& file, const toml::source_region& r) {
+  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+}
+
+/// InputError at the first key of `t` not in `known`, listing the expected keys.
+inline void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
+                                const std::string& section) {
+  for (const auto& [key, node] : t) {
+    if (!known.count(std::string(key.str()))) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(at(file, key.source()),
+                       fmt::format("unknown key '{}' in [{}] (expected one of: {})", key.str(), section, list));
+    }
+  }
+}
+
+/// The whole machine file; InputError if it cannot be opened.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0}, "cannot open the machine file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The TOML document; a syntax error becomes an InputError at its position.
+inline toml::table parse_toml(const std::string& text, const std::string& file) {
+  try {
+    return toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw InputError(at(file, e.source()), std::string(e.description()));
+  }
+}
+
+/// `limits = [min, max]` times `scale`; `unit` is appended to the messages (e.g. " (mm)").
+inline AxisLimits read_limits(const std::string& file, const toml::node& n, double scale, const std::string& unit) {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 2) throw InputError(at(file, n.source()), "limits: expected [min, max]" + unit);
+  auto lo = (*a)[0].value<double>(), hi = (*a)[1].value<double>();
+  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi))
+    throw InputError(at(file, n.source()), "limits: expected two finite numbers" + unit);
+  if (!(*lo < *hi)) throw InputError(at(file, n.source()), "limits: expected min < max");
+  return {*lo * scale, *hi * scale};
+}
+
+}  // namespace ncpost::toml_reading
