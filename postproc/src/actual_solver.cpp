@@ -3,11 +3,10 @@
 namespace ncpost {
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, std::string& failure) const {
-  const comp::RowState<double> state = comp::reversal_state(model_, nominal, actual_);
-  uncompensated_.add((model_.tool_pose(nominal, setup_, state).tip_mm - cl.tip_mm).norm());
   comp::ActualIkOptions options;
   if (model_.has_reversal()) options.previous_actual = actual_;
   const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, nominal, options);
+  uncompensated_.add(r.start_tip_error_mm);
   if (!r.ok()) {
     failure = "compensated inverse kinematics: " + r.message;
     return nominal;

@@ -38,6 +38,7 @@ struct ActualIkOutcome {
   AxisPosition actual;                   ///< where the axes actually go (command + reversal offset)
   int iterations = 0;
   double tip_error_mm = 0.0;    ///< remaining |tip − CL tip|
+  double start_tip_error_mm = 0.0;  ///< |tip − CL tip| at the nominal guess: the uncompensated error
   double axis_error_rad = 0.0;  ///< remaining angle between the actual and the CL axis
   std::string message;          ///< why it failed, when !position
   bool ok() const { return position.has_value(); }
