@@ -43,6 +43,13 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
   if (!drift_terms_.empty() && drift_axis_ < 0)
     throw std::invalid_argument(specs_[static_cast<std::size_t>(drift_terms_.front())].name +
                                 ": no linear axis next to the bed to carry the drift");
+  acts_.assign(m.axes.size(), false);
+  for (std::size_t a = 0; a < m.axes.size(); ++a) {
+    bool any = !axis_terms_[a].empty() || (a < reversal_.size() && reversal_[a] >= 0) ||
+               (!drift_terms_.empty() && static_cast<int>(a) == drift_axis_);
+    for (const TableNodes& t : tables_[a]) any = any || !t.empty();
+    acts_[a] = any;
+  }
 }
 
 int ModelLayout::index_of(const std::string& name) const {

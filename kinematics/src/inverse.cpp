@@ -10,7 +10,7 @@ namespace ncpost {
 namespace {
 
 /// Unit vectors v with v·a_dir = a and v·b_dir = b (a_dir, b_dir unit, not parallel).
-std::vector<Vec3d> sphere_plane_plane(const Vec3d& a_dir, double a, const Vec3d& b_dir, double b, double tolerance) {
+SmallList<Vec3d, 2> sphere_plane_plane(const Vec3d& a_dir, double a, const Vec3d& b_dir, double b, double tolerance) {
   const double c = a_dir.dot(b_dir);
   const double det = 1.0 - c * c;
   assert(det > 1e-12);
@@ -19,10 +19,16 @@ std::vector<Vec3d> sphere_plane_plane(const Vec3d& a_dir, double a, const Vec3d&
   const Vec3d base = alpha * a_dir + beta * b_dir;
   const Vec3d normal = a_dir.cross(b_dir);
   const double rest = 1.0 - base.squaredNorm();
-  if (rest < -tolerance) return {};
+  SmallList<Vec3d, 2> out;
+  if (rest < -tolerance) return out;
   const double gamma = std::sqrt(std::max(0.0, rest) / normal.squaredNorm());
-  if (gamma == 0.0) return {base.normalized()};
-  return {(base + gamma * normal).normalized(), (base - gamma * normal).normalized()};
+  if (gamma == 0.0) {
+    out.push_back(base.normalized());
+    return out;
+  }
+  out.push_back((base + gamma * normal).normalized());
+  out.push_back((base - gamma * normal).normalized());
+  return out;
 }
 
 double wrap_pi(double a) {
@@ -69,12 +75,13 @@ std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d
   return std::atan2(d.dot(f.cross(t)), f.dot(t));
 }
 
-std::vector<RotarySolution> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance) {
+SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance) {
   const Vec3d u = axis_W.normalized();
   const Vec3d ez = Vec3d::UnitZ();
+  SmallList<RotarySolution, 2> out;
   if (m.rotary_count() == 0) {
-    if ((u - ez).norm() > std::sqrt(tolerance)) return {};
-    return {RotarySolution{}};
+    if ((u - ez).norm() <= std::sqrt(tolerance)) out.push_back(RotarySolution{});
+    return out;
   }
   const RotaryLayout l = layout_of(m);
   const Vec3d d1 = m.rotary(l.outer).direction;
@@ -90,7 +97,6 @@ std::vector<RotarySolution> rotary_solutions(const Machine& m, const Vec3d& axis
       plane2_vec = u; plane1_vec = ez; break;
   }
   const auto vs = sphere_plane_plane(d2, plane2_vec.dot(d2), d1, plane1_vec.dot(d1), tolerance);
-  std::vector<RotarySolution> out;
   const double free_tol = 1e-9;
   for (const Vec3d& v : vs) {
     RotarySolution s;
@@ -162,28 +168,43 @@ std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axi
   return best;
 }
 
-std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
-                                               const AxisPosition& previous, const IkPolicy& policy) {
-  std::vector<std::pair<double, AxisPosition>> ranked;
-  for (RotarySolution s : rotary_solutions(m, cl.axis, policy.reach_tolerance)) {
+namespace {
+
+/// The admissible solutions among the rotary solutions `raw`, best first (only the best with
+/// `best_only`: the linear axes of the others are not computed).
+SmallList<AxisPosition, 2> admissible_of(const Machine& m, const SmallList<RotarySolution, 2>& raw, const ClPoint& cl,
+                                         const Setup& setup, const AxisPosition& previous, bool best_only) {
+  SmallList<std::pair<double, AxisPosition>, 2> ranked;
+  for (RotarySolution s : raw) {
     if (s.free_axis >= 0) {
       // Singular: keep the free angle, solve the other one for it.
       s.rotary_rad[s.free_axis] = previous.rotary_rad[s.free_axis];
     }
     auto candidate = admissible_candidate(m, s.rotary_rad, previous.rotary_rad);
     if (!candidate) continue;
-    candidate->linear_mm = linear_for(m, candidate->rotary_rad, cl.tip_mm, setup);
+    const double cost = (candidate->rotary_rad - previous.rotary_rad).cwiseAbs().sum();
+    ranked.push_back({cost, *candidate});
+  }
+  // the cheaper first; equal costs (within 1e-12) keep the order of the rotary solutions
+  if (ranked.size() == 2 && ranked[1].first < ranked[0].first - 1e-12) std::swap(ranked[0], ranked[1]);
+  SmallList<AxisPosition, 2> out;
+  for (auto& r : ranked) {
+    AxisPosition& candidate = r.second;
+    candidate.linear_mm = linear_for(m, candidate.rotary_rad, cl.tip_mm, setup);
     bool within = true;
     for (int i = 0; i < 3; ++i)
-      if (m.axes[i].limits && !m.axes[i].limits->contains(candidate->linear_mm[i], 1e-6)) within = false;
-    if (!within) continue;
-    const double cost = (candidate->rotary_rad - previous.rotary_rad).cwiseAbs().sum();
-    ranked.emplace_back(cost, *candidate);
+      if (m.axes[i].limits && !m.axes[i].limits->contains(candidate.linear_mm[i], 1e-6)) within = false;
+    if (within) out.push_back(candidate);
+    if (best_only && !out.empty()) break;
   }
-  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first - 1e-12; });
-  std::vector<AxisPosition> out;
-  for (auto& r : ranked) out.push_back(r.second);
   return out;
+}
+
+}  // namespace
+
+SmallList<AxisPosition, 2> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
+                                                const AxisPosition& previous, const IkPolicy& policy) {
+  return admissible_of(m, rotary_solutions(m, cl.axis, policy.reach_tolerance), cl, setup, previous, false);
 }
 
 IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const AxisPosition& previous,
@@ -199,7 +220,7 @@ IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const A
     return outcome;
   }
   for (const auto& s : raw) outcome.singular = outcome.singular || s.free_axis >= 0;
-  auto all = admissible_solutions(m, cl, setup, previous, policy);
+  const auto all = admissible_of(m, raw, cl, setup, previous, true);
   if (all.empty()) {
     outcome.failure.message = "no solution within the axis limits";
     return outcome;

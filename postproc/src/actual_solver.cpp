@@ -2,24 +2,33 @@
 
 namespace ncpost {
 
-AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, std::string& failure) const {
+AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, SolveFigures* figures,
+                                      std::string& failure) const {
   comp::ActualIkOptions options;
+  options.tip_tolerance_mm = kPostTipToleranceMm;
+  options.axis_tolerance_rad = kPostAxisToleranceRad;
   if (model_.has_reversal()) options.previous_actual = actual_;
+  options.home = &home_;
   const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, nominal, options);
-  uncompensated_.add(r.start_tip_error_mm);
+  if (figures) figures->uncompensated_tip_mm = r.start_tip_error_mm;
   if (!r.ok()) {
     failure = "compensated inverse kinematics: " + r.message;
     return nominal;
   }
-  max_residual_mm_ = std::max(max_residual_mm_, r.tip_error_mm);
+  if (figures) figures->residual_mm = r.tip_error_mm;
   return *r.position;
 }
 
-IkOutcome ActualSolver::solve(const ClPoint& cl, const AxisPosition& previous) const {
+void ActualSolver::record(const SolveFigures& figures) const {
+  if (figures.uncompensated_tip_mm >= 0.0) uncompensated_.add(figures.uncompensated_tip_mm);
+  if (figures.residual_mm >= 0.0) max_residual_mm_ = std::max(max_residual_mm_, figures.residual_mm);
+}
+
+IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const {
   IkOutcome o = nominal_.solve(cl, previous);
   if (!o.ok()) return o;
   std::string failure;
-  const AxisPosition q = compensate(cl, *o.position, failure);
+  const AxisPosition q = compensate(cl, *o.position, figures, failure);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
@@ -33,7 +42,9 @@ AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d&
   // programmed angles (G-code input) are the start; the model then moves them as little as it must
   const AxisPosition nominal = nominal_.with_rotary(cl, rotary_rad);
   std::string failure;
-  const AxisPosition q = compensate(cl, nominal, failure);
+  SolveFigures figures;
+  const AxisPosition q = compensate(cl, nominal, &figures, failure);
+  record(figures);
   return failure.empty() ? q : nominal;
 }
 

@@ -69,9 +69,12 @@ struct AptReader::State {
   }
 
   /// Next logical statement: continuation lines joined, CR stripped. False at end of file.
+  std::string line;       ///< read buffers, kept between statements (no allocation per line)
+  std::string text;
+  std::string statement;
+
   bool read_logical(std::string& out, Location& where) {
     out.clear();
-    std::string line;
     bool continued = false;
     while (std::getline(in, line)) {
       ++line_number;
@@ -81,14 +84,14 @@ struct AptReader::State {
         const auto b = line.find_first_not_of(" \t");
         if (b == std::string::npos) continue;  // blank line
         where = {line_number, static_cast<int>(b) + 1};
-        line = line.substr(b);
+        line.erase(0, b);
       }
       const auto comment = line.find("$$");
       const std::size_t last_dollar = line.find_last_of('$');
       const bool continues = !line.empty() && line.back() == '$' &&
                              (comment == std::string::npos || last_dollar > comment + 1);
       if (continues) {
-        out += line.substr(0, line.size() - 1);
+        out.append(line, 0, line.size() - 1);
         continued = true;
         continue;
       }
@@ -255,7 +258,7 @@ AptReader::~AptReader() = default;
 
 std::optional<Record> AptReader::next() {
   State& s = *state_;
-  std::string text;
+  std::string& text = s.text;
   Location where;
   while (s.pending.empty()) {
     if (!s.read_logical(text, where)) return std::nullopt;
@@ -266,8 +269,8 @@ std::optional<Record> AptReader::next() {
       continue;
     }
     // an inline `$$` comment after a statement
-    std::string statement = text;
-    if (const auto c = text.find("$$"); c != std::string::npos) statement = text.substr(0, c);
+    std::string& statement = s.statement;
+    statement.assign(text, 0, text.find("$$"));
     if (statement.find_first_not_of(" \t") == std::string::npos) continue;
     s.apply(parse_apt_statement(statement, s.file, where), statement);
   }

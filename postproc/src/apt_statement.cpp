@@ -2,7 +2,12 @@
 //   statement := major [ '/' arguments ]
 //   arguments := argument % ','          (a trailing empty argument is dropped)
 //   argument  := number | word           (number: the whole trimmed field is a real number)
+// <cfloat> first: X3's table of powers of ten for double is only compiled in when DBL_MAX_10_EXP
+// is defined (otherwise every fractional number costs a call to std::pow).
+#include <cfloat>
+// clang-format off
 #include <boost/spirit/home/x3.hpp>
+// clang-format on
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -61,6 +66,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   // Fields are split at commas and read in place (string views: no copies on the hot path of
   // GOTO records); a field is a number when x3::double_ fills it up to trailing blanks.
   const std::string_view args(&*first, static_cast<std::size_t>(last - first));
+  st.arguments.reserve(8);
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = args.find(',', start);

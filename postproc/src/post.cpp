@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "lookahead.hpp"
+
 namespace ncpost {
 namespace {
 
@@ -21,9 +23,22 @@ class Poster {
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
-    while (auto record = reader.next()) {
-      std::visit([this](const auto& r) { on(r); }, *record);
-      for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
+    if (options_.threads > 1 && solver_.concurrent()) {
+      detail::Lookahead ahead(reader, solver_);
+      for (;;) {
+        detail::AheadItem item = ahead.next();
+        if (item.error) std::rethrow_exception(item.error);
+        if (!item.record) break;
+        ahead_ = item.solved ? &*item.solved : nullptr;
+        std::visit([this](const auto& r) { on(r); }, *item.record);
+        ahead_ = nullptr;
+        for (auto& n : item.notices) summary_.notices.push_back(std::move(n));
+      }
+    } else {
+      while (auto record = reader.next()) {
+        std::visit([this](const auto& r) { on(r); }, *record);
+        for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
+      }
     }
     if (options_.rtcp && rtcp_on_) writer_.rtcp(false);
     writer_.end_program();
@@ -107,10 +122,19 @@ class Poster {
 
   void move_to(const ClPoint& cl, int line, bool rapid, const std::optional<Eigen::Vector2d>& rotary = std::nullopt) {
     SolvedPoint next{cl, {}};
+    const detail::AheadSolve* ahead_used = nullptr;
     if (rotary) {
       next.q = solver_.with_rotary(cl, *rotary);
     } else {
-      const IkOutcome ik = solver_.solve(cl, previous_.q);
+      IkOutcome ik;
+      if (ahead_ && ahead_->fits(cl, previous_.q)) {  // solved on the read-ahead thread
+        ik = ahead_->ik;
+        solver_.record(ahead_->figures);
+        ahead_used = ahead_;
+        ahead_ = nullptr;
+      } else {
+        ik = solver_.solve(cl, previous_.q);
+      }
       if (!ik.ok())
         throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f})", input_,
                                      line, ik.failure.message, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(),
@@ -132,9 +156,10 @@ class Poster {
         const SolvedPoint still{previous_.cl, *q};
         emit(previous_, still, line, false);
         previous_ = still;
+        ahead_used = nullptr;  // its free travel was from the commands before the take-up
       }
     }
-    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
+    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q, ahead_used)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
                                      "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
@@ -155,9 +180,11 @@ class Poster {
     have_position_ = true;
   }
 
-  /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the limits.
-  bool branch_changed(const ClPoint& cl, const AxisPosition& q) const {
-    const auto free = unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
+  /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the
+  /// limits. `ahead` (if given) was solved for `cl` from previous_ and may hold the free travel.
+  bool branch_changed(const ClPoint& cl, const AxisPosition& q, const detail::AheadSolve* ahead) const {
+    const auto free = ahead && ahead->free_travel_rad ? *ahead->free_travel_rad
+                                                      : unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
     if (!free) return false;
     const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
     return chosen > *free + options_.branch_change_rad;
@@ -366,6 +393,7 @@ class Poster {
   }
 
   const std::string& input_;
+  const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
   const MotionSolver& solver_;
   NcWriter& writer_;
   const PostOptions& options_;

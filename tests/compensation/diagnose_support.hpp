@@ -114,7 +114,9 @@ class CompensatedOnTruth final : public MotionSolver {
  public:
   CompensatedOnTruth(const comp::MachineModel& identified, const comp::MachineModel& truth, const Setup& setup)
       : compensated_(identified, setup), truth_(truth), setup_(setup) {}
-  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override { return compensated_.solve(cl, previous); }
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override {
+    return compensated_.solve_quiet(cl, previous, figures);
+  }
   AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& r) const override { return compensated_.with_rotary(cl, r); }
   ToolPoseT<double> execute(const AxisPosition& q) const override { return truth_.tool_pose(q, setup_); }
   const Machine& machine() const override { return truth_.machine(); }

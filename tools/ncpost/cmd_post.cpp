@@ -32,6 +32,7 @@ struct PostArgs {
   std::string report;
   std::string verify_on;
   double retract_mm = 50.0;
+  int threads = 2;
   std::string output = "-";
   std::string input;
 };
@@ -117,6 +118,7 @@ int run_post(const PostArgs& a) {
   options.native_arcs = a.model.empty();  // the actual machine would not follow the control's circle
   options.native_cycles = a.model.empty();
   options.verify = account;
+  options.threads = a.threads;
   options.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
                     : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
                                            : PostOptions::FeedMode::automatic;
@@ -206,6 +208,10 @@ void add_post(CLI::App& app, Action& action) {
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
+  sub->add_option("--threads", a->threads,
+                  "1: everything on one thread; 2 (default): a second thread reads and solves the CL motions "
+                  "ahead (not for models with reversal). The program is the same either way")
+      ->check(CLI::Range(1, 2));
   sub->add_option("-o,--output", a->output, "Output NC program (default: standard output)");
   sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
   sub->callback([a, &action] { action = [a] { return run_post(*a); }; });

@@ -31,6 +31,7 @@ struct ActualIkOptions {
   double axis_tolerance_rad = 1e-8;
   int max_iterations = 30;
   std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
+  const HomeInverse* home = nullptr;            ///< the model's home inverse (home_inverse), if computed
 };
 
 struct ActualIkOutcome {

@@ -63,6 +63,10 @@ class ModelLayout {
     return tables_[static_cast<std::size_t>(axis_index)][static_cast<std::size_t>(component)];
   }
   int reversal_of(int axis_index) const { return reversal_[static_cast<std::size_t>(axis_index)]; }
+  /// False when no parameter acts on this axis (its transform is the nominal one).
+  bool acts_on(int axis_index) const {
+    return static_cast<std::size_t>(axis_index) < acts_.size() && acts_[static_cast<std::size_t>(axis_index)];
+  }
   bool has_reversal() const;
   const std::vector<int>& drift_terms() const { return drift_terms_; }
   int drift_axis() const { return drift_axis_; }
@@ -76,6 +80,7 @@ class ModelLayout {
   std::array<int, 5> reversal_{-1, -1, -1, -1, -1};
   std::vector<int> drift_terms_;
   int drift_axis_ = -1;
+  std::vector<bool> acts_;  ///< per axis: any parameter acts on it
   int ballbar_length_ = -1;
   std::array<int, 3> sphere_position_{-1, -1, -1};
 };
@@ -99,6 +104,16 @@ template <class P> class ErrorFunctor {
       : layout_(&layout), values_(values), state_(state), machine_only_(machine_only) {}
 
   void set_state(const RowState<P>& s) { state_ = s; }
+  /// The same functor carrying its home inverse (home_inverse() of this model; posting).
+  ErrorFunctor with_home(const HomeInverse* home) const {
+    ErrorFunctor f = *this;
+    f.home_ = home;
+    return f;
+  }
+  /// The carried home inverse when it was computed for this tool length, else nullptr.
+  const HomeInverse* cached_home(double tool_length_mm) const {
+    return home_ && home_->tool_length_mm == tool_length_mm ? home_ : nullptr;
+  }
   const RowState<P>& state() const { return state_; }
   const ModelLayout& layout() const { return *layout_; }
   /// Value of parameter i, or 0 for i < 0.
@@ -108,6 +123,7 @@ template <class P> class ErrorFunctor {
     using std::cos;
     using std::sin;
     AxisErrorTerms<S> e;
+    if (!layout_->acts_on(axis_index)) return e;
     for (int i : layout_->terms_of_axis(axis_index)) {
       const ParameterSpec& s = layout_->spec(i);
       const S v = S(values_[i]);
@@ -201,6 +217,7 @@ template <class P> class ErrorFunctor {
   const P* values_;
   RowState<P> state_;
   bool machine_only_;
+  const HomeInverse* home_ = nullptr;
 };
 
 }  // namespace ncpost::comp

@@ -28,8 +28,14 @@ class MachineModel {
     return ErrorFunctor<double>(layout_, values_.data(), state, true);
   }
   /// Actual tool tip and axis in W at command q.
-  ToolPoseT<double> tool_pose(const AxisPosition& q, const Setup& setup, const RowState<double>& state = {}) const {
-    return ncpost::tool_pose<double>(machine_, q, setup, errors(state));
+  ToolPoseT<double> tool_pose(const AxisPosition& q, const Setup& setup, const RowState<double>& state = {},
+                              const HomeInverse* home = nullptr) const {
+    return ncpost::tool_pose<double>(machine_, q, setup, errors(state).with_home(home));
+  }
+  /// The home inverse of this model for a tool length (pass it to the calls above and to
+  /// ErrorFunctor::with_home so that they skip recomputing it).
+  HomeInverse home_inverse(double tool_length_mm) const {
+    return ncpost::home_inverse(machine_, tool_length_mm, errors());
   }
 
  private:

@@ -63,10 +63,11 @@ template <class Errors = NominalErrors> class ExecutedBlock {
   ExecutedBlock(const Machine& machine, const Setup& setup, const ClBlock& block, const Errors& errors = {})
       : machine_(machine), setup_(setup), block_(block), errors_(errors) {
     if constexpr (!std::is_same_v<Errors, NominalErrors>) {  // nominal: every axis transform is I at home
-      const ChainPose<double> home =
-          raw_chain_pose<double>(machine_, AxisPosition{}, setup_.tool_length_mm, errors_, true);
-      home_table_inv_ = home.bed_T_table.inverse();
-      home_tool_inv_ = home.bed_T_tool.inverse();
+      const HomeInverse* cached = nullptr;
+      if constexpr (CachesHome<Errors>) cached = errors_.cached_home(setup_.tool_length_mm);
+      const HomeInverse home = cached ? *cached : home_inverse(machine_, setup_.tool_length_mm, errors_);
+      home_table_inv_ = home.table;
+      home_tool_inv_ = home.tool;
     }
   }
 

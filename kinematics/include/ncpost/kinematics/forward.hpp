@@ -14,6 +14,7 @@
 //   workpiece side  T_j(q) = Trans(R - (q + r_j)·d̂_j - δ(q)) · Rot(-ε(q)) · Trans(-R)
 // Each side composes from the bed outward. Set-up at home: the actual transforms are
 // T(q) · T(0)^-1, so that every error acts relative to home.
+#include <concepts>
 #include <type_traits>
 
 #include "ncpost/kinematics/machine.hpp"
@@ -75,8 +76,15 @@ Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double too
     const Vec3<S> tilt_along = e.location_tilt_rad.dot(d) * d;
     const Vec3<S> tilt_perp = e.location_tilt_rad - tilt_along;
     const Vec3<S> c = pivot + offset_perp;
-    const Vec3<S> d_actual = rotation_vector<S>(tilt_perp) * d;
     const S angle = q + e.reversal + e.location_tilt_rad.dot(d);
+    if constexpr (std::is_same_v<S, double>) {
+      // no error motion: the same transform without its identity factors (posting's hot path)
+      if (e.motion_mm.isZero(0) && e.motion_rad.isZero(0)) {
+        const Vec3<S> d_actual = tilt_perp.isZero(0) ? d : Vec3<S>(rotation_vector<S>(tilt_perp) * d);
+        return Rigid<S>::rotation_about_point(rotation_about<S>(d_actual, angle), c);
+      }
+    }
+    const Vec3<S> d_actual = rotation_vector<S>(tilt_perp) * d;
     Rigid<S> motion;
     motion.R = rotation_vector<S>(e.motion_rad);
     motion.t = e.motion_mm;
@@ -99,12 +107,42 @@ template <class S, class Errors>
 ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm,
                             const Errors& errors, bool at_home) {
   ChainPose<S> pose;
+  auto compose = [](Rigid<S>& pose_T, const Rigid<S>& axis_T) {
+    if constexpr (std::is_same_v<S, double>) {
+      if (axis_T.R == Mat3<S>::Identity()) {  // a linear axis without angular errors: translation only
+        pose_T.t += pose_T.R * axis_T.t;
+        return;
+      }
+    }
+    pose_T = pose_T * axis_T;
+  };
   for (int i : m.workpiece_side)
-    pose.bed_T_table = pose.bed_T_table * axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home);
+    compose(pose.bed_T_table, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home));
   for (int i : m.tool_side)
-    pose.bed_T_tool = pose.bed_T_tool * axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home);
+    compose(pose.bed_T_tool, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home));
   return pose;
 }
+
+/// The inverse of the chain's poses at home, T(0)^-1 on each side (the set-up), for one error
+/// model and tool length. It depends on neither the command nor the row state (reversal and drift
+/// do not act at home), so posting computes it once instead of once per evaluation.
+struct HomeInverse {
+  Rigidd table;
+  Rigidd tool;
+  double tool_length_mm = 0.0;
+};
+
+template <class Errors> HomeInverse home_inverse(const Machine& m, double tool_length_mm, const Errors& errors) {
+  const ChainPose<double> home = raw_chain_pose<double>(m, AxisPosition{}, tool_length_mm, errors, true);
+  return {home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm};
+}
+
+/// An error hook that carries its home inverse: `errors.cached_home(tool_length_mm)` returns it
+/// (or nullptr when it was computed for another tool length).
+template <class Errors>
+concept CachesHome = requires(const Errors& e) {
+  { e.cached_home(0.0) } -> std::convertible_to<const HomeInverse*>;
+};
 
 /// The actual chain at command q with the set-up at home: T(q) · T(0)^-1 on each side.
 template <class S, class Errors>
@@ -112,6 +150,10 @@ ChainPose<S> chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool
   // nominal: every axis transform is the identity at home
   if constexpr (std::is_same_v<Errors, NominalErrors>) return raw_chain_pose<S>(m, q, tool_length_mm, errors, false);
   const ChainPose<S> at_q = raw_chain_pose<S>(m, q, tool_length_mm, errors, false);
+  if constexpr (std::is_same_v<S, double> && CachesHome<Errors>) {
+    if (const HomeInverse* home = errors.cached_home(tool_length_mm))
+      return {at_q.bed_T_table * home->table, at_q.bed_T_tool * home->tool};
+  }
   const ChainPose<S> at_home = raw_chain_pose<S>(m, AxisPositionT<S>{}, tool_length_mm, errors, true);
   return {at_q.bed_T_table * at_home.bed_T_table.inverse(), at_q.bed_T_tool * at_home.bed_T_tool.inverse()};
 }

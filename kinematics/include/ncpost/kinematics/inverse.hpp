@@ -13,6 +13,8 @@
 // nearest the previous one. At the singular orientation (tool axis along the axis nearest the
 // tool-axis end of the chain, e.g. u = +Z on an AC table) the free angle keeps its previous value;
 // near it the angle follows the exact solution (no special smoothing: CAM-exact, as NX does).
+#include <array>
+#include <cassert>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +22,29 @@
 #include "ncpost/kinematics/machine.hpp"
 
 namespace ncpost {
+
+/// Up to N values held in place: the candidate lists of the inverse kinematics (no allocation
+/// per CL point).
+template <class T, std::size_t N> class SmallList {
+ public:
+  void push_back(const T& v) {
+    assert(size_ < N);
+    items_[size_++] = v;
+  }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T& operator[](std::size_t i) { return items_[i]; }
+  const T& operator[](std::size_t i) const { return items_[i]; }
+  const T& front() const { return items_[0]; }
+  T* begin() { return items_.data(); }
+  T* end() { return items_.data() + size_; }
+  const T* begin() const { return items_.data(); }
+  const T* end() const { return items_.data() + size_; }
+
+ private:
+  std::array<T, N> items_{};
+  std::size_t size_ = 0;
+};
 
 /// One rotary solution in principal angles (-π, π]; `free_axis` >= 0 at a singular pose
 /// names the rotary index whose angle is undetermined (set to 0 here).
@@ -31,7 +56,7 @@ struct RotarySolution {
 /// Rotary solutions for the tool axis `axis_W` (unit, in W). Empty if the orientation is out of
 /// reach of the machine (e.g. a tilt beyond what the axis directions allow, or a tilted axis on a
 /// three-axis machine). `tolerance` widens the reach test for rounding.
-std::vector<RotarySolution> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance = 1e-9);
+SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance = 1e-9);
 
 /// X Y Z (mm) that put the tool tip on `tip_W` for the given rotary angles.
 Vec3d linear_for(const Machine& m, const Eigen::Vector2d& rotary_rad, const Vec3d& tip_W, const Setup& setup);
@@ -62,7 +87,7 @@ IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const A
                 const IkPolicy& policy = {});
 
 /// All admissible solutions (unwound near `previous`), best first.
-std::vector<AxisPosition> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
+SmallList<AxisPosition, 2> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
                                                const AxisPosition& previous, const IkPolicy& policy = {});
 
 /// Rotary travel (sum of |Δangle|, rad) from `previous_rad` to the nearest solution for the tool

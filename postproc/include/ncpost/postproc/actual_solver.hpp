@@ -34,10 +34,19 @@ struct ErrorStats {
 
 class ActualSolver final : public MotionSolver {
  public:
-  ActualSolver(const comp::MachineModel& model, const Setup& setup)
-      : model_(model), setup_(setup), nominal_(model.machine(), setup) {}
+  /// Convergence of the compensated IK when posting: a tenth of the NC words' resolution
+  /// (4 decimals: 1e-4 mm, 1e-4 deg = 1.7e-6 rad). One fixed-point step reaches it on smooth
+  /// models where the library default (1e-6 mm, 1e-8 rad) takes two.
+  static constexpr double kPostTipToleranceMm = 1e-5;
+  static constexpr double kPostAxisToleranceRad = 1e-7;
 
-  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override;
+  ActualSolver(const comp::MachineModel& model, const Setup& setup)
+      : model_(model), setup_(setup), nominal_(model.machine(), setup), home_(model.home_inverse(setup.tool_length_mm)) {}
+
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override;
+  void record(const SolveFigures& figures) const override;
+  /// Without reversal terms the commands depend on the CL point and the previous commands only.
+  bool concurrent() const override { return !model_.has_reversal(); }
   AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override;
   ToolPoseT<double> execute(const AxisPosition& q) const override;
   void advance(const AxisPosition& command) const override;
@@ -54,7 +63,7 @@ class ActualSolver final : public MotionSolver {
       for (int a = 0; a < 5; ++a) previous[static_cast<std::size_t>(a)] = (*actual_)[a];
       state.previous_actual = previous;
     }
-    return model_.errors(state);
+    return model_.errors(state).with_home(&home_);
   }
   /// Tool-tip error at the CL points of the uncompensated (nominal) program on this machine.
   const ErrorStats& uncompensated() const { return uncompensated_; }
@@ -62,11 +71,13 @@ class ActualSolver final : public MotionSolver {
   double max_residual_mm() const { return max_residual_mm_; }
 
  private:
-  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, std::string& failure) const;
+  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, SolveFigures* figures,
+                          std::string& failure) const;
 
   const comp::MachineModel& model_;
   Setup setup_;
   NominalSolver nominal_;
+  HomeInverse home_;
   mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
   mutable ErrorStats uncompensated_;
   mutable double max_residual_mm_ = 0.0;

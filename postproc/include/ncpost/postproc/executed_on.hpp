@@ -16,7 +16,11 @@ class ExecutedOn final : public MotionSolver {
  public:
   ExecutedOn(const MotionSolver& commands, const comp::MachineModel& executing, const Setup& setup)
       : commands_(commands), executing_(executing), setup_(setup) {}
-  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override { return commands_.solve(cl, previous); }
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override {
+    return commands_.solve_quiet(cl, previous, figures);
+  }
+  void record(const SolveFigures& figures) const override { commands_.record(figures); }
+  bool concurrent() const override { return commands_.concurrent(); }
   AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
     return commands_.with_rotary(cl, rotary_rad);
   }

@@ -9,11 +9,31 @@
 
 namespace ncpost {
 
+/// What solving one CL point measured, kept by the solver as running figures (ActualSolver: the
+/// tip error of the uncompensated commands and the residual of the compensated ones, mm; < 0: none).
+struct SolveFigures {
+  double uncompensated_tip_mm = -1.0;
+  double residual_mm = -1.0;
+};
+
 class MotionSolver {
  public:
   virtual ~MotionSolver() = default;
-  /// Commands that put the tool on `cl`, nearest `previous` (continuity, limits).
-  virtual IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const = 0;
+  /// Commands that put the tool on `cl`, nearest `previous` (continuity, limits); the solver
+  /// records its figures of the point (solve_quiet + record).
+  virtual IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const {
+    SolveFigures figures;
+    IkOutcome o = solve_quiet(cl, previous, &figures);
+    record(figures);
+    return o;
+  }
+  /// solve() without recording: the figures go to `figures` (if given). When `concurrent()`, it
+  /// may run on another thread while the post calls anything else (the post's read-ahead).
+  virtual IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const = 0;
+  /// Records the figures of a solve_quiet() whose commands the post uses.
+  virtual void record(const SolveFigures& /*figures*/) const {}
+  /// True when solve_quiet() depends on nothing the post's progress changes (no reversal state).
+  virtual bool concurrent() const { return false; }
   /// Commands for `cl` with the rotary angles given (programmed angles of G-code input).
   virtual AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const = 0;
   /// Where the tool is at the commands q (tip and axis in W) on the machine the program is for.
@@ -35,9 +55,10 @@ class MotionSolver {
 class NominalSolver final : public MotionSolver {
  public:
   NominalSolver(const Machine& machine, const Setup& setup) : machine_(machine), setup_(setup) {}
-  IkOutcome solve(const ClPoint& cl, const AxisPosition& previous) const override {
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures*) const override {
     return ncpost::solve(machine_, cl, setup_, previous);
   }
+  bool concurrent() const override { return true; }
   AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
     AxisPosition q;
     q.rotary_rad = rotary_rad;

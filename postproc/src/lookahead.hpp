@@ -1,0 +1,83 @@
+#pragma once
+// The post's read-ahead on a second thread (PostOptions::threads = 2): while the post writes one
+// part of the program, another thread reads the next CL records and solves their motions
+// (MotionSolver::solve_quiet, the expensive part under `--model`), each from the commands of the
+// motion before it.
+//
+// The post uses a motion solved ahead only when it reaches that motion with the same CL point and
+// the same previous commands, bit for bit (`AheadSolve::fits`): anything that made the post's
+// sequence differ (arcs, cycles, retracts) just means it solves the motion itself. The program
+// is therefore the same as with one thread. Only solvers whose commands depend on nothing the
+// post's progress changes (`MotionSolver::concurrent`, i.e. no reversal state) are read ahead.
+//
+// Input errors thrown by the reader surface at the record where they occurred, after everything
+// before it has been posted. Memory is bounded: at most `kMaxBatches` batches of `kBatchSize`
+// records are held ahead.
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/motion_solver.hpp"
+
+namespace ncpost::detail {
+
+/// A motion solved ahead.
+struct AheadSolve {
+  ClPoint cl;
+  AxisPosition previous;  ///< the commands it was solved from
+  IkOutcome ik;
+  SolveFigures figures;
+  /// unlimited_rotary_travel(cl.axis, previous) when computed (feed motions): the post's test
+  /// for a limit-forced change of branch
+  std::optional<std::optional<double>> free_travel_rad;
+  bool fits(const ClPoint& point, const AxisPosition& from) const {
+    return point.tip_mm == cl.tip_mm && point.axis == cl.axis && from.linear_mm == previous.linear_mm &&
+           from.rotary_rad == previous.rotary_rad;
+  }
+};
+
+/// One record in input order, with the reader's notices about it and its motion solved ahead.
+struct AheadItem {
+  std::optional<cl::Record> record;  ///< nullopt: the end of the input (or `error`)
+  std::vector<std::string> notices;
+  std::optional<AheadSolve> solved;
+  std::exception_ptr error;  ///< the reader failed here
+};
+
+class Lookahead {
+ public:
+  static constexpr std::size_t kBatchSize = 256;
+  static constexpr std::size_t kMaxBatches = 8;
+
+  /// Starts reading. `reader` and `solver` must outlive the object; solver.concurrent() must hold.
+  Lookahead(cl::Reader& reader, const MotionSolver& solver);
+  /// also gives feed motions their free travel (AheadSolve::free_travel_rad)
+  ~Lookahead();  ///< stops the thread (also when the post failed half-way)
+  Lookahead(const Lookahead&) = delete;
+  Lookahead& operator=(const Lookahead&) = delete;
+
+  /// The next record in input order; waits while the reading thread is behind.
+  AheadItem next();
+
+ private:
+  void run();
+  bool push(std::vector<AheadItem>&& batch);  ///< false when stopped
+
+  cl::Reader& reader_;
+  const MotionSolver& solver_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<AheadItem>> ready_;
+  bool stop_ = false;
+  std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
+  std::size_t position_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace ncpost::detail
