@@ -12,6 +12,7 @@
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
+#include "ncpost/compensation/simulate.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "diagnose_support.hpp"
 
@@ -63,11 +64,42 @@ TEST_CASE("diagnose public-ezc: EZC:h1 found, the basic model's 33 um prediction
   CHECK(file.fit->rms_after_um == Approx(d.final_fit.rms_after_um));
 }
 
-// The issue's target: predictions within 1 um of the truth over the working space. Measured
-// 1.02 um (2000 poses; X, Y +-250, Z -150..350 mm: the largest deviations are at the far corners,
-// beyond the measured volume). It is limited by the noise of these data: every parameter is within
-// 2.5 standard uncertainties of the truth, and the sphere's noise (0.84 um) is above the
-// ballbar's (0.47 um). Kept visible as a known shortfall rather than hidden.
+// The issue's target, "the model's predictions within 1 um of the truth", read as the predictions
+// the job needs (README "Choices"): the tool tip at every pose of the scenario's own path (path.cls
+// with job.json's set-up) and the measurements themselves (the fitted values against the truth's
+// noise-free values).
+TEST_CASE("diagnose public-ezc: the final model predicts the job's tool tip and the measurements within 1 um", "[diagnose]") {
+  const std::string dir = test::public_scenario("public-ezc");
+  const Machine m = load_machine(dir + "machine.toml");
+  const ModelFile truth = read_model_json(dir + "truth.json", &m);
+  const DiagnoseResult& d = ezc_result(m);
+  Setup setup;
+  setup.workpiece_origin_mm = Vec3d(0, 0, 80);  // job.json
+  std::size_t poses = 0;
+  const double on_path_um =
+      test::worst_prediction_on_path_um(m, truth.parameters, d.final_fit.parameters, dir + "path.cls", setup, &poses);
+  const double basic_on_path_um =
+      test::worst_prediction_on_path_um(m, truth.parameters, d.basic.parameters, dir + "path.cls", setup);
+  REQUIRE(poses > 1000);
+  double measured_um = 0.0;
+  for (const auto& set : read_sets(dir, m)) {
+    const auto exact = simulate(m, set, truth.parameters, {});
+    const auto fitted = simulate(m, set, d.final_fit.parameters, {});
+    for (std::size_t r = 0; r < set.rows.size(); ++r)
+      measured_um = std::max(measured_um, 1e3 * (exact.rows[r].value - fitted.rows[r].value).cwiseAbs().maxCoeff());
+  }
+  printf("public-ezc: at the %zu poses of path.cls the final model is off the truth by %.3f um (basic model %.3f um); "
+         "its predictions of the measurements by %.3f um\n", poses, on_path_um, basic_on_path_um, measured_um);
+  CHECK(on_path_um < 1.0);
+  CHECK(measured_um < 1.0);
+  CHECK(basic_on_path_um > 10.0 * on_path_um);
+}
+
+// Over a wider box than the job uses (X, Y +-250, Z -150..350 mm, A -10..100 deg, C any; 2000
+// poses) the largest deviation is 1.02 um, at the far corners beyond the measured volume: there
+// the noise of these data (sphere 0.84 um, ballbar 0.47 um per value; every parameter within 2.5
+// standard uncertainties of the truth) gives a 1-sigma prediction uncertainty of up to 0.73 um.
+// Kept visible as a known shortfall rather than hidden.
 TEST_CASE("diagnose public-ezc: predictions within 1 um of the truth over the working space", "[diagnose][!mayfail]") {
   const std::string dir = test::public_scenario("public-ezc");
   const Machine m = load_machine(dir + "machine.toml");

@@ -108,6 +108,31 @@ inline double worst_prediction_um(const Machine& m, const comp::ErrorParameters&
   return worst;
 }
 
+/// Largest tool-tip deviation (um, in W) between two machines at the poses a job uses: every CL
+/// point of the APT file `cl_path` solved by the nominal IK (continuity from the previous point),
+/// with the set-up `setup`.
+inline double worst_prediction_on_path_um(const Machine& m, const comp::ErrorParameters& truth,
+                                          const comp::ErrorParameters& model, const std::string& cl_path,
+                                          const Setup& setup, std::size_t* poses = nullptr) {
+  const comp::MachineModel actual(m, truth), identified(m, model);
+  std::ifstream in(cl_path);
+  cl::AptReader reader(in, cl_path);
+  AxisPosition previous;
+  double worst = 0.0;
+  std::size_t n = 0;
+  while (auto r = reader.next()) {
+    const auto* motion = std::get_if<cl::Motion>(&*r);
+    if (!motion) continue;
+    const IkOutcome ik = solve(m, motion->point, setup, previous);
+    if (!ik.ok()) continue;
+    previous = *ik.position;
+    worst = std::max(worst, 1e3 * (actual.tool_pose(previous, setup).tip_mm - identified.tool_pose(previous, setup).tip_mm).norm());
+    ++n;
+  }
+  if (poses) *poses = n;
+  return worst;
+}
+
 /// Commands from the compensated IK of the identified model, execution on the truth: the post's
 /// verification then measures the cut the truth machine makes.
 class CompensatedOnTruth final : public MotionSolver {
