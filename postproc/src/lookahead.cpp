@@ -42,11 +42,9 @@ void Lookahead::run() {
     const bool last = !item.record;
     if (!last) {
       if (const auto* m = std::get_if<cl::Motion>(&*item.record); m && !m->rotary_rad) {
-        AheadSolve s{m->point, previous, {}, {}, {}};
+        AheadSolve s{m->point, previous, {}, {}};
         try {
           s.ik = solver_.solve_quiet(m->point, previous, &s.figures);
-          if (!m->rapid && !m->from && solver_.machine().rotary_count() == 2)
-            s.free_travel_rad = unlimited_rotary_travel(solver_.machine(), m->point.axis, previous.rotary_rad);
           if (s.ik.ok()) previous = *s.ik.position;
           item.solved = std::move(s);
         } catch (...) {

@@ -33,9 +33,6 @@ struct AheadSolve {
   AxisPosition previous;  ///< the commands it was solved from
   IkOutcome ik;
   SolveFigures figures;
-  /// unlimited_rotary_travel(cl.axis, previous) when computed (feed motions): the post's test
-  /// for a limit-forced change of branch
-  std::optional<std::optional<double>> free_travel_rad;
   bool fits(const ClPoint& point, const AxisPosition& from) const {
     return point.tip_mm == cl.tip_mm && point.axis == cl.axis && from.linear_mm == previous.linear_mm &&
            from.rotary_rad == previous.rotary_rad;
@@ -57,7 +54,6 @@ class Lookahead {
 
   /// Starts reading. `reader` and `solver` must outlive the object; solver.concurrent() must hold.
   Lookahead(cl::Reader& reader, const MotionSolver& solver);
-  /// also gives feed motions their free travel (AheadSolve::free_travel_rad)
   ~Lookahead();  ///< stops the thread (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;

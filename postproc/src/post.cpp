@@ -122,7 +122,6 @@ class Poster {
 
   void move_to(const ClPoint& cl, int line, bool rapid, const std::optional<Eigen::Vector2d>& rotary = std::nullopt) {
     SolvedPoint next{cl, {}};
-    const detail::AheadSolve* ahead_used = nullptr;
     if (rotary) {
       next.q = solver_.with_rotary(cl, *rotary);
     } else {
@@ -130,7 +129,6 @@ class Poster {
       if (ahead_ && ahead_->fits(cl, previous_.q)) {  // solved on the read-ahead thread
         ik = ahead_->ik;
         solver_.record(ahead_->figures);
-        ahead_used = ahead_;
         ahead_ = nullptr;
       } else {
         ik = solver_.solve(cl, previous_.q);
@@ -156,10 +154,9 @@ class Poster {
         const SolvedPoint still{previous_.cl, *q};
         emit(previous_, still, line, false);
         previous_ = still;
-        ahead_used = nullptr;  // its free travel was from the commands before the take-up
       }
     }
-    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q, ahead_used)) {
+    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
                                      "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
@@ -180,11 +177,9 @@ class Poster {
     have_position_ = true;
   }
 
-  /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the
-  /// limits. `ahead` (if given) was solved for `cl` from previous_ and may hold the free travel.
-  bool branch_changed(const ClPoint& cl, const AxisPosition& q, const detail::AheadSolve* ahead) const {
-    const auto free = ahead && ahead->free_travel_rad ? *ahead->free_travel_rad
-                                                      : unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
+  /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the limits.
+  bool branch_changed(const ClPoint& cl, const AxisPosition& q) const {
+    const auto free = unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
     if (!free) return false;
     const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
     return chosen > *free + options_.branch_change_rad;

@@ -14,7 +14,9 @@
 //   workpiece side  T_j(q) = Trans(R - (q + r_j)·d̂_j - δ(q)) · Rot(-ε(q)) · Trans(-R)
 // Each side composes from the bed outward. Set-up at home: the actual transforms are
 // T(q) · T(0)^-1, so that every error acts relative to home.
+#include <array>
 #include <concepts>
+#include <optional>
 #include <type_traits>
 
 #include "ncpost/kinematics/machine.hpp"
@@ -45,6 +47,25 @@ template <class S> struct ChainPose {
 
   /// The tool body seen from the table: table_T_tool.
   Rigid<S> table_T_tool() const { return bed_T_table.inverse() * bed_T_tool; }
+};
+
+/// The inverse of the chain's poses at home, T(0)^-1 on each side (the set-up), for one error
+/// model and tool length. It depends on neither the command nor the row state (reversal and drift
+/// do not act at home), so posting computes it once instead of once per evaluation.
+struct HomeInverse {
+  Rigidd table;
+  Rigidd tool;
+  double tool_length_mm = 0.0;
+  /// Per axis: the actual direction of a rotary axis tilted by its location errors,
+  /// Rot(ε⊥)·d (the hook's location terms are constants of the model).
+  std::array<std::optional<Vec3d>, 5> rotary_direction;
+};
+
+/// An error hook that carries its home inverse: `errors.cached_home(tool_length_mm)` returns it
+/// (or nullptr when it was computed for another tool length).
+template <class Errors>
+concept CachesHome = requires(const Errors& e) {
+  { e.cached_home(0.0) } -> std::convertible_to<const HomeInverse*>;
 };
 
 /// Transform of one axis (see header comment), without the set-up at home.
@@ -80,7 +101,12 @@ Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double too
     if constexpr (std::is_same_v<S, double>) {
       // no error motion: the same transform without its identity factors (posting's hot path)
       if (e.motion_mm.isZero(0) && e.motion_rad.isZero(0)) {
-        const Vec3<S> d_actual = tilt_perp.isZero(0) ? d : Vec3<S>(rotation_vector<S>(tilt_perp) * d);
+        const HomeInverse* cached = nullptr;
+        if constexpr (CachesHome<Errors>) cached = errors.cached_home(tool_length_mm);
+        const Vec3<S> d_actual = cached && cached->rotary_direction[static_cast<std::size_t>(axis_index)]
+                                     ? *cached->rotary_direction[static_cast<std::size_t>(axis_index)]
+                                 : tilt_perp.isZero(0) ? d
+                                                       : Vec3<S>(rotation_vector<S>(tilt_perp) * d);
         return Rigid<S>::rotation_about_point(rotation_about<S>(d_actual, angle), c);
       }
     }
@@ -123,26 +149,18 @@ ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double 
   return pose;
 }
 
-/// The inverse of the chain's poses at home, T(0)^-1 on each side (the set-up), for one error
-/// model and tool length. It depends on neither the command nor the row state (reversal and drift
-/// do not act at home), so posting computes it once instead of once per evaluation.
-struct HomeInverse {
-  Rigidd table;
-  Rigidd tool;
-  double tool_length_mm = 0.0;
-};
-
 template <class Errors> HomeInverse home_inverse(const Machine& m, double tool_length_mm, const Errors& errors) {
   const ChainPose<double> home = raw_chain_pose<double>(m, AxisPosition{}, tool_length_mm, errors, true);
-  return {home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm};
+  HomeInverse h{home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm, {}};
+  for (std::size_t i = 0; i < m.axes.size() && i < h.rotary_direction.size(); ++i) {
+    if (!m.axes[i].is_rotary()) continue;
+    const Vec3d d = m.axes[i].direction;
+    const Vec3d tilt = errors(static_cast<int>(i), 0.0, true).location_tilt_rad;
+    const Vec3d tilt_perp = tilt - tilt.dot(d) * d;
+    h.rotary_direction[i] = tilt_perp.isZero(0) ? d : Vec3d(rotation_vector<double>(tilt_perp) * d);
+  }
+  return h;
 }
-
-/// An error hook that carries its home inverse: `errors.cached_home(tool_length_mm)` returns it
-/// (or nullptr when it was computed for another tool length).
-template <class Errors>
-concept CachesHome = requires(const Errors& e) {
-  { e.cached_home(0.0) } -> std::convertible_to<const HomeInverse*>;
-};
 
 /// The actual chain at command q with the set-up at home: T(q) · T(0)^-1 on each side.
 template <class S, class Errors>
