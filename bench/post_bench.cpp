@@ -5,7 +5,8 @@
 //   dome    the public dome path repeated (1201 points per copy; 80% of its blocks bow over 5 µm)
 // posted to files: one block per motion, --tolerance 0.005 adaptive, harmonic, and adaptive on the
 // actual machine of truth.json (compensated IK, `--model`). Wall time and peak memory (ru_maxrss).
-// Usage: post_bench [N=1000000] [work dir=.] [spiral|dome] [verify] [model]
+// Usage: post_bench [N=1000000] [work dir=.] [spiral|dome] [verify] [model] [write-only]
+// (write-only: just the CL file DIR/bench_path.cls, for bench/run_post_bench.sh)
 // The gcode-parser comparison parses out_adaptive.nc (README).
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -139,10 +140,11 @@ int main(int argc, char** argv) {
   const long n = argc > 1 ? std::atol(argv[1]) : 1000000;
   const std::string dir = argc > 2 ? argv[2] : ".";
   const std::string kind = argc > 3 ? argv[3] : "spiral";
-  bool verify = false, with_model = false;
+  bool verify = false, with_model = false, write_only = false;
   for (int i = 4; i < argc; ++i) {
     verify = verify || std::string(argv[i]) == "verify";
     with_model = with_model || std::string(argv[i]) == "model";
+    write_only = write_only || std::string(argv[i]) == "write-only";
   }
   const std::string scenario = std::string(NCPOST_BENCH_SOURCE_DIR) + "/../shared/data/scenarios/public-clean/";
   const Machine m = load_machine(scenario + "machine.toml");
@@ -151,6 +153,10 @@ int main(int argc, char** argv) {
   const std::string cl = dir + "/bench_path.cls";
   if (kind == "dome") write_dome_copies(cl, scenario + "path.cls", n);
   else write_path(cl, n);
+  if (write_only) {
+    fmt::print("post_bench: wrote {} CL points ({}) to {}\n", n, kind, cl);
+    return 0;
+  }
   fmt::print("post_bench: {} CL points ({}), public-clean AC trunnion, tolerance 0.005 mm{}\n", n, kind,
              verify ? ", with --verify" : "");
   const NominalSolver nominal(m, setup);

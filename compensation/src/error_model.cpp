@@ -19,7 +19,10 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
       case ParameterKind::location:
       case ParameterKind::squareness:
       case ParameterKind::harmonic:
-      case ParameterKind::polynomial: axis_terms_[static_cast<std::size_t>(s.axis_index)].push_back(i); break;
+      case ParameterKind::polynomial:
+        axis_terms_[static_cast<std::size_t>(s.axis_index)].push_back(i);
+        command_dependent_ = command_dependent_ || s.kind == ParameterKind::harmonic || s.kind == ParameterKind::polynomial;
+        break;
       case ParameterKind::table: {
         TableNodes& nodes = tables_[static_cast<std::size_t>(s.axis_index)][static_cast<std::size_t>(s.component)];
         for (const auto& node : nodes)
@@ -27,9 +30,13 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
             throw std::invalid_argument(n + ": a node at this position is given twice (" + specs_[static_cast<std::size_t>(node.second)].name + ")");
         nodes.emplace_back(s.at_mm, i);
         std::sort(nodes.begin(), nodes.end());
+        command_dependent_ = true;
         break;
       }
-      case ParameterKind::reversal: reversal_[static_cast<std::size_t>(s.axis_index)] = i; break;
+      case ParameterKind::reversal:
+        reversal_[static_cast<std::size_t>(s.axis_index)] = i;
+        command_dependent_ = true;
+        break;
       case ParameterKind::drift: drift_terms_.push_back(i); break;
       case ParameterKind::ballbar_length: ballbar_length_ = i; break;
       case ParameterKind::sphere_position: sphere_position_[static_cast<std::size_t>(s.component)] = i; break;

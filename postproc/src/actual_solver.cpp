@@ -2,9 +2,10 @@
 
 namespace ncpost {
 
-AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, SolveFigures* figures,
-                                      std::string& failure) const {
+AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, bool nominal_solves_cl,
+                                      SolveFigures* figures, std::string& failure) const {
   comp::ActualIkOptions options;
+  options.guess_solves_cl = nominal_solves_cl;
   options.tip_tolerance_mm = kPostTipToleranceMm;
   options.axis_tolerance_rad = kPostAxisToleranceRad;
   if (model_.has_reversal()) options.previous_actual = actual_;
@@ -28,7 +29,7 @@ IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previ
   IkOutcome o = nominal_.solve(cl, previous);
   if (!o.ok()) return o;
   std::string failure;
-  const AxisPosition q = compensate(cl, *o.position, figures, failure);
+  const AxisPosition q = compensate(cl, *o.position, true, figures, failure);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
@@ -43,7 +44,7 @@ AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d&
   const AxisPosition nominal = nominal_.with_rotary(cl, rotary_rad);
   std::string failure;
   SolveFigures figures;
-  const AxisPosition q = compensate(cl, nominal, &figures, failure);
+  const AxisPosition q = compensate(cl, nominal, false, &figures, failure);
   record(figures);
   return failure.empty() ? q : nominal;
 }

@@ -60,7 +60,11 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   if (first == last) return st;
   st.has_slash = true;
   ++first;  // '/'
-  st.raw_arguments = trim(std::string(first, last));
+  {
+    const std::string_view rest(text.data() + (first - text.begin()), static_cast<std::size_t>(last - first));
+    const auto b = rest.find_first_not_of(" \t\r\n");
+    if (b != std::string_view::npos) st.raw_arguments.assign(rest.substr(b, rest.find_last_not_of(" \t\r\n") - b + 1));
+  }
   if (st.raw_arguments.empty()) return st;  // "RAPID/"
   const int base_column = where.column + static_cast<int>(first - text.begin());
   // Fields are split at commas and read in place (string views: no copies on the hot path of

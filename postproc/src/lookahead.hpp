@@ -71,7 +71,7 @@ class Lookahead {
   std::condition_variable changed_;
   std::deque<std::vector<AheadItem>> ready_;
   bool stop_ = false;
-  std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
+  alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
   std::size_t position_ = 0;
   std::thread thread_;
 };

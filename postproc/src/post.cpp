@@ -179,9 +179,10 @@ class Poster {
 
   /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the limits.
   bool branch_changed(const ClPoint& cl, const AxisPosition& q) const {
+    const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
+    if (chosen <= options_.branch_change_rad) return false;  // the free travel is >= 0
     const auto free = unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
     if (!free) return false;
-    const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
     return chosen > *free + options_.branch_change_rad;
   }
 

@@ -32,6 +32,9 @@ struct ActualIkOptions {
   int max_iterations = 30;
   std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
   const HomeInverse* home = nullptr;            ///< the model's home inverse (home_inverse), if computed
+  /// The guess is the nominal IK solution of this CL point (not programmed angles): its nominal
+  /// pose is the CL point itself, so the first step needs no nominal evaluation.
+  bool guess_solves_cl = false;
 };
 
 struct ActualIkOutcome {

@@ -63,6 +63,9 @@ class ModelLayout {
     return tables_[static_cast<std::size_t>(axis_index)][static_cast<std::size_t>(component)];
   }
   int reversal_of(int axis_index) const { return reversal_[static_cast<std::size_t>(axis_index)]; }
+  /// True when some parameter changes with the command (component error functions, tables,
+  /// reversal); false when every term is a constant of the machine (location errors, squareness).
+  bool command_dependent() const { return command_dependent_; }
   /// False when no parameter acts on this axis (its transform is the nominal one).
   bool acts_on(int axis_index) const {
     return static_cast<std::size_t>(axis_index) < acts_.size() && acts_[static_cast<std::size_t>(axis_index)];
@@ -81,6 +84,7 @@ class ModelLayout {
   std::vector<int> drift_terms_;
   int drift_axis_ = -1;
   std::vector<bool> acts_;  ///< per axis: any parameter acts on it
+  bool command_dependent_ = false;
   int ballbar_length_ = -1;
   std::array<int, 3> sphere_position_{-1, -1, -1};
 };
@@ -110,6 +114,12 @@ template <class P> class ErrorFunctor {
     f.home_ = home;
     return f;
   }
+  /// True when the machine this hook describes is a rigid chain like the nominal one with its axis
+  /// lines moved: every term a constant (no component error functions, tables, reversal, and no
+  /// drift unless measurement effects are left out).
+  bool constant_in_command() const {
+    return !layout_->command_dependent() && (machine_only_ || layout_->drift_terms().empty());
+  }
   /// The carried home inverse when it was computed for this tool length, else nullptr.
   const HomeInverse* cached_home(double tool_length_mm) const {
     return home_ && home_->tool_length_mm == tool_length_mm ? home_ : nullptr;
@@ -124,6 +134,11 @@ template <class P> class ErrorFunctor {
     using std::sin;
     AxisErrorTerms<S> e;
     if (!layout_->acts_on(axis_index)) return e;
+    if constexpr (std::is_same_v<S, double> && std::is_same_v<P, double>) {
+      // every term a constant: the terms computed once with the home pose (posting's hot path)
+      if (home_ && constant_in_command() && static_cast<std::size_t>(axis_index) < home_->terms_at_home.size())
+        return home_->terms_at_home[static_cast<std::size_t>(axis_index)];
+    }
     for (int i : layout_->terms_of_axis(axis_index)) {
       const ParameterSpec& s = layout_->spec(i);
       const S v = S(values_[i]);

@@ -72,6 +72,10 @@ template <class Errors = NominalErrors> class ExecutedBlock {
   }
 
   const ClBlock& block() const { return block_; }
+  const Errors& errors() const { return errors_; }
+  /// The tool side's home inverse (identity on the nominal machine): the TCP enters the raw chain
+  /// at home_tool_inverse().t.
+  const Rigidd& home_tool_inverse() const { return home_tool_inv_; }
 
   /// Executed tip and axis (W) at axis position q (the chain of `tool_pose`).
   ToolPoseT<double> pose_at(const AxisPosition& q) const {

@@ -13,13 +13,15 @@
 // t(1 − t)/2 · max|x''| <= a/8, and the distance from the CL segment is at most that plus the
 // larger end-point mismatch |x(0) − p0|, |x(1) − p1|. The tool axis is turned by the rotations
 // only: |a_axis''| <= (Σ|ω|)², giving the orientation bound likewise.
-// Axis lines are the nominal ones (the error model moves them by µm): use the bound with a margin
-// (the adaptive method screens at half the tolerance). On an actual machine (an error model) the
-// errors also change along the block — straightness and angular errors over a long linear move
-// bow the tip by µm even on a three-axis machine — so the deviation of the actual from the nominal
-// executed tip away from its own chord, sampled at t = ¼, ½, ¾ (the error functions are smooth:
-// polynomials of degree <= 3, harmonics, tables), is added with a factor 1.5; it is bounded through
-// the actual executed tip's own chord deviation plus the nominal bound. Units: mm, rad; W.
+// An actual machine whose errors are all constants (location errors, squareness: `rigid_chain`) is
+// a rigid chain of the same kind with its axis lines moved: the same bound holds on its own lines,
+// starting from the TCP carried through its set-up at home. Where the errors change along the
+// block (component error functions, tables, reversal) — straightness and angular errors over a
+// long linear move bow the tip by µm even on a three-axis machine — the bound is taken on the
+// nominal lines and the deviation of the actual from the nominal executed tip away from its own
+// chord, sampled at t = ¼, ½, ¾ (the error functions are smooth: polynomials of degree <= 3,
+// harmonics, tables), is added with a factor 1.5; it is bounded through the actual executed tip's
+// own chord deviation plus the nominal bound. Units: mm, rad; W.
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
@@ -33,27 +35,44 @@ struct NonlinearBound {
   double orientation_rad = 0.0;  ///< >= the exact largest orientation error
 };
 
+/// True when the error hook describes a rigid chain (every term a constant of the machine).
+template <class Errors> bool rigid_chain(const Errors& errors) {
+  if constexpr (std::is_same_v<Errors, NominalErrors>) return true;
+  else if constexpr (requires { errors.constant_in_command(); }) return errors.constant_in_command();
+  else return false;
+}
+
 template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Errors>& executed, const Machine& machine,
                                                        const Setup& setup) {
   const ClBlock& b = executed.block();
+  // A rigid actual chain (location errors, squareness) is bounded on its own axis lines, exactly
+  // like the nominal one; other error hooks on the nominal lines plus the sampled model bow below.
+  const bool rigid = rigid_chain(executed.errors());
   double speed = 0.0, accel = 0.0, omega_sum = 0.0;
-  Vec3d point = Vec3d::Zero();  // the TCP, in the frame of the innermost tool-side body (= M at home)
+  // the TCP, in the frame of the innermost tool-side body (= M at home), through the set-up at home
+  Vec3d point = rigid ? executed.home_tool_inverse().t : Vec3d::Zero();
   auto apply = [&](int index, bool inverse) {
     const Axis& axis = machine.axes[static_cast<std::size_t>(index)];
     const double travel = b.to[index] - b.from[index];
-    Rigidd at_start = axis_transform<double>(axis, index, b.from[index], setup.tool_length_mm, NominalErrors{}, false);
+    const double q = b.from[index];
+    Rigidd at_start = rigid ? axis_transform<double>(axis, index, q, setup.tool_length_mm, executed.errors(), false)
+                            : axis_transform<double>(axis, index, q, setup.tool_length_mm, NominalErrors{}, false);
     if (inverse) at_start = at_start.inverse();
     if (axis.is_rotary()) {
-      Vec3d pivot = axis.pivot_mm;
-      if (axis.side == Side::tool) pivot.z() += setup.tool_length_mm;
-      const Vec3d r = point - pivot;
-      const double rho = (r - r.dot(axis.direction) * axis.direction).norm() + speed;
+      const RotaryLine<double> line =
+          rigid ? rotary_line<double>(axis, index, executed.errors()(index, q, false), setup.tool_length_mm,
+                                      executed.errors())
+                : rotary_line<double>(axis, index, AxisErrorTerms<double>{}, setup.tool_length_mm, NominalErrors{});
+      const Vec3d r = point - line.point_mm;
+      const double rho = (r - r.dot(line.direction) * line.direction).norm() + speed;
       const double w = std::abs(travel);
       accel = w * w * rho + 2.0 * w * speed + accel;
       speed = w * rho + speed;
       omega_sum += w;
     } else {
-      speed += std::abs(travel) * axis.direction.norm();
+      const Vec3d direction = rigid ? Vec3d(axis.direction + executed.errors()(index, q, false).direction_offset)
+                                    : axis.direction;
+      speed += std::abs(travel) * direction.norm();
     }
     point = at_start.apply(point);
   };
@@ -64,7 +83,7 @@ template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Error
   const double mismatch = std::max((x0.tip_mm - b.start.tip_mm).norm(), (x1.tip_mm - b.end.tip_mm).norm());
   NonlinearBound out;
   out.error_mm = accel / 8.0 + mismatch;
-  if constexpr (!std::is_same_v<Errors, NominalErrors>) {
+  if (!rigid) {
     // x(t) = n(t) + d(t): the nominal execution n, bounded above, plus the model's offset d. The
     // chord deviation of d is at most that of x plus that of n (<= accel/8), so sampling x alone
     // (no nominal evaluations) bounds it: 1.5·(max sampled chord deviation of x + accel/8).

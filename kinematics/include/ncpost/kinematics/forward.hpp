@@ -59,6 +59,9 @@ struct HomeInverse {
   /// Per axis: the actual direction of a rotary axis tilted by its location errors,
   /// Rot(ε⊥)·d (the hook's location terms are constants of the model).
   std::array<std::optional<Vec3d>, 5> rotary_direction;
+  /// Per axis: the error terms at home, which are the terms at every command for a hook whose
+  /// terms are all constants (the hook decides when to use them).
+  std::array<AxisErrorTerms<double>, 5> terms_at_home;
 };
 
 /// An error hook that carries its home inverse: `errors.cached_home(tool_length_mm)` returns it
@@ -67,6 +70,31 @@ template <class Errors>
 concept CachesHome = requires(const Errors& e) {
   { e.cached_home(0.0) } -> std::convertible_to<const HomeInverse*>;
 };
+
+/// The actual line of a rotary axis under its error terms e: c_j = P_j + δ_j⊥ (tool-side pivots
+/// raised by the tool length) and d̂_j = Rot(ε_j⊥)·d_j (taken from the hook's cache when it has one).
+template <class S> struct RotaryLine {
+  Vec3<S> point_mm;
+  Vec3<S> direction;
+};
+
+template <class S, class Errors>
+RotaryLine<S> rotary_line(const Axis& axis, int axis_index, const AxisErrorTerms<S>& e, double tool_length_mm,
+                          const Errors& errors) {
+  const Vec3<S> d = axis.direction.template cast<S>();
+  Vec3<S> pivot = axis.pivot_mm.template cast<S>();
+  if (axis.side == Side::tool) pivot.z() += S(tool_length_mm);
+  const Vec3<S> offset_perp = e.location_offset_mm - e.location_offset_mm.dot(d) * d;
+  if constexpr (std::is_same_v<S, double> && CachesHome<Errors>) {
+    if (const HomeInverse* cached = errors.cached_home(tool_length_mm))
+      if (const auto& direction = cached->rotary_direction[static_cast<std::size_t>(axis_index)])
+        return {pivot + offset_perp, *direction};
+  }
+  const Vec3<S> tilt_perp = e.location_tilt_rad - e.location_tilt_rad.dot(d) * d;
+  if constexpr (std::is_same_v<S, double>)
+    if (tilt_perp.isZero(0)) return {pivot + offset_perp, d};
+  return {pivot + offset_perp, rotation_vector<S>(tilt_perp) * d};
+}
 
 /// Transform of one axis (see header comment), without the set-up at home.
 template <class S, class Errors>
@@ -91,26 +119,15 @@ Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double too
   }
   const Vec3<S> d = axis.direction.template cast<S>();
   if (axis.is_rotary()) {
-    Vec3<S> pivot = axis.pivot_mm.template cast<S>();
-    if (axis.side == Side::tool) pivot.z() += S(tool_length_mm);
-    const Vec3<S> offset_perp = e.location_offset_mm - e.location_offset_mm.dot(d) * d;
-    const Vec3<S> tilt_along = e.location_tilt_rad.dot(d) * d;
-    const Vec3<S> tilt_perp = e.location_tilt_rad - tilt_along;
-    const Vec3<S> c = pivot + offset_perp;
+    const RotaryLine<S> line = rotary_line<S>(axis, axis_index, e, tool_length_mm, errors);
+    const Vec3<S>& c = line.point_mm;
+    const Vec3<S>& d_actual = line.direction;
     const S angle = q + e.reversal + e.location_tilt_rad.dot(d);
     if constexpr (std::is_same_v<S, double>) {
       // no error motion: the same transform without its identity factors (posting's hot path)
-      if (e.motion_mm.isZero(0) && e.motion_rad.isZero(0)) {
-        const HomeInverse* cached = nullptr;
-        if constexpr (CachesHome<Errors>) cached = errors.cached_home(tool_length_mm);
-        const Vec3<S> d_actual = cached && cached->rotary_direction[static_cast<std::size_t>(axis_index)]
-                                     ? *cached->rotary_direction[static_cast<std::size_t>(axis_index)]
-                                 : tilt_perp.isZero(0) ? d
-                                                       : Vec3<S>(rotation_vector<S>(tilt_perp) * d);
+      if (e.motion_mm.isZero(0) && e.motion_rad.isZero(0))
         return Rigid<S>::rotation_about_point(rotation_about<S>(d_actual, angle), c);
-      }
     }
-    const Vec3<S> d_actual = rotation_vector<S>(tilt_perp) * d;
     Rigid<S> motion;
     motion.R = rotation_vector<S>(e.motion_rad);
     motion.t = e.motion_mm;
@@ -151,13 +168,12 @@ ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double 
 
 template <class Errors> HomeInverse home_inverse(const Machine& m, double tool_length_mm, const Errors& errors) {
   const ChainPose<double> home = raw_chain_pose<double>(m, AxisPosition{}, tool_length_mm, errors, true);
-  HomeInverse h{home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm, {}};
+  HomeInverse h{home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm, {}, {}};
   for (std::size_t i = 0; i < m.axes.size() && i < h.rotary_direction.size(); ++i) {
+    const int index = static_cast<int>(i);
+    h.terms_at_home[i] = errors(index, 0.0, true);
     if (!m.axes[i].is_rotary()) continue;
-    const Vec3d d = m.axes[i].direction;
-    const Vec3d tilt = errors(static_cast<int>(i), 0.0, true).location_tilt_rad;
-    const Vec3d tilt_perp = tilt - tilt.dot(d) * d;
-    h.rotary_direction[i] = tilt_perp.isZero(0) ? d : Vec3d(rotation_vector<double>(tilt_perp) * d);
+    h.rotary_direction[i] = rotary_line<double>(m.axes[i], index, h.terms_at_home[i], tool_length_mm, NominalErrors{}).direction;
   }
   return h;
 }

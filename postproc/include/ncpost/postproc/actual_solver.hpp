@@ -71,14 +71,17 @@ class ActualSolver final : public MotionSolver {
   double max_residual_mm() const { return max_residual_mm_; }
 
  private:
-  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, SolveFigures* figures,
-                          std::string& failure) const;
+  /// `nominal_solves_cl`: `nominal` is the nominal IK of cl (not programmed angles).
+  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, bool nominal_solves_cl,
+                          SolveFigures* figures, std::string& failure) const;
 
   const comp::MachineModel& model_;
   Setup setup_;
   NominalSolver nominal_;
   HomeInverse home_;
-  mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
+  // Written as the post goes, on its own cache line: the read-ahead thread reads home_ on every
+  // evaluation and must not lose it to these writes (false sharing).
+  alignas(64) mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
   mutable ErrorStats uncompensated_;
   mutable double max_residual_mm_ = 0.0;
 };
