@@ -20,11 +20,17 @@ bool has_word(const AptStatement& st, const char* w) {
   return false;
 }
 
-std::vector<double> numbers_of(const AptStatement& st) {
-  std::vector<double> v;
+/// The numeric arguments into `v` (a buffer kept between statements: no allocation per GOTO).
+const std::vector<double>& numbers_into(const AptStatement& st, std::vector<double>& v) {
+  v.clear();
   for (const auto& a : st.arguments)
     if (a.is_number) v.push_back(a.number);
   return v;
+}
+
+std::vector<double> numbers_of(const AptStatement& st) {
+  std::vector<double> v;
+  return numbers_into(st, v);
 }
 
 /// The number following the word `w` in the arguments, if any.
@@ -103,8 +109,10 @@ struct AptReader::State {
     return false;
   }
 
+  std::vector<double> numbers;  ///< the numbers of the current motion statement
+
   Motion motion(const AptStatement& st, bool relative) {
-    const auto v = numbers_of(st);
+    const std::vector<double>& v = numbers_into(st, numbers);
     if (v.size() != st.arguments.size())
       fail(st.where, fmt::format("{} expects numbers only", st.major), st.major + "/" + st.raw_arguments);
     Motion m;

@@ -4,30 +4,46 @@
 
 namespace ncpost::detail {
 
-Lookahead::Lookahead(cl::Reader& reader, const MotionSolver& solver)
-    : reader_(reader), solver_(solver), thread_([this] { run(); }) {}
-
-Lookahead::~Lookahead() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  changed_.notify_all();
-  thread_.join();
-}
-
-bool Lookahead::push(std::vector<AheadItem>&& batch) {
+bool BatchQueue::push(std::vector<AheadItem>&& batch) {
   std::unique_lock lock(mutex_);
-  changed_.wait(lock, [this] { return stop_ || ready_.size() < kMaxBatches; });
-  if (stop_) return false;
-  ready_.push_back(std::move(batch));
+  changed_.wait(lock, [this] { return stopped_ || batches_.size() < capacity_; });
+  if (stopped_) return false;
+  batches_.push_back(std::move(batch));
   lock.unlock();
   changed_.notify_all();
   return true;
 }
 
-void Lookahead::run() {
-  AxisPosition previous{};  // the post starts from the zero position too
+std::optional<std::vector<AheadItem>> BatchQueue::pop() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [this] { return stopped_ || !batches_.empty(); });
+  if (stopped_) return std::nullopt;
+  std::vector<AheadItem> batch = std::move(batches_.front());
+  batches_.pop_front();
+  lock.unlock();
+  changed_.notify_all();
+  return batch;
+}
+
+void BatchQueue::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stopped_ = true;
+  }
+  changed_.notify_all();
+}
+
+Lookahead::Lookahead(cl::Reader& reader, const MotionSolver& solver)
+    : reader_(reader), solver_(solver), reading_([this] { read(); }), solving_([this] { solve(); }) {}
+
+Lookahead::~Lookahead() {
+  parsed_.stop();
+  solved_.stop();
+  reading_.join();
+  solving_.join();
+}
+
+void Lookahead::read() {
   std::vector<AheadItem> batch;
   batch.reserve(kBatchSize);
   for (;;) {
@@ -40,36 +56,47 @@ void Lookahead::run() {
       item.error = std::current_exception();
     }
     const bool last = !item.record;
-    if (!last) {
-      if (const auto* m = std::get_if<cl::Motion>(&*item.record); m && !m->rotary_rad) {
-        AheadSolve s{m->point, previous, {}, {}};
-        try {
-          s.ik = solver_.solve_quiet(m->point, previous, &s.figures);
-          if (s.ik.ok()) previous = *s.ik.position;
-          item.solved = std::move(s);
-        } catch (...) {
-          // the post solves this motion itself and meets the same failure there
-        }
-      }
-    }
     batch.push_back(std::move(item));
     if (last || batch.size() == kBatchSize) {
-      if (!push(std::move(batch)) || last) return;  // push() sees a stop
+      if (!parsed_.push(std::move(batch)) || last) return;  // push() fails once stopped
       batch = {};
       batch.reserve(kBatchSize);
     }
   }
 }
 
+void Lookahead::solve() {
+  AxisPosition previous{};  // the post starts from the zero position too
+  for (;;) {
+    std::optional<std::vector<AheadItem>> batch = parsed_.pop();
+    if (!batch) return;
+    bool last = false;
+    for (AheadItem& item : *batch) {
+      if (!item.record) {
+        last = true;
+        break;
+      }
+      const auto* m = std::get_if<cl::Motion>(&*item.record);
+      if (!m || m->rotary_rad) continue;
+      AheadSolve s{m->point, previous, {}, {}};
+      try {
+        s.ik = solver_.solve_quiet(m->point, previous, &s.figures);
+        if (s.ik.ok()) previous = *s.ik.position;
+        item.solved = std::move(s);
+      } catch (...) {
+        // the post solves this motion itself and meets the same failure there
+      }
+    }
+    if (!solved_.push(std::move(*batch)) || last) return;
+  }
+}
+
 AheadItem Lookahead::next() {
   if (position_ == current_.size()) {
-    std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return !ready_.empty(); });
-    current_ = std::move(ready_.front());
-    ready_.pop_front();
+    std::optional<std::vector<AheadItem>> batch = solved_.pop();
+    if (!batch) return {};  // stopped: only while the object is being destroyed
+    current_ = std::move(*batch);
     position_ = 0;
-    lock.unlock();
-    changed_.notify_all();
   }
   return std::move(current_[position_++]);
 }

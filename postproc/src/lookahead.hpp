@@ -1,8 +1,8 @@
 #pragma once
-// The post's read-ahead on a second thread (PostOptions::threads = 2): while the post writes one
-// part of the program, another thread reads the next CL records and solves their motions
+// The post's read-ahead (PostOptions::threads = 2): while the post writes one part of the program,
+// a reading thread parses the next CL records and a solving thread solves their motions
 // (MotionSolver::solve_quiet, the expensive part under `--model`), each from the commands of the
-// motion before it.
+// motion before it. Three stages on two cores: reading is light, so it shares a core with the post.
 //
 // The post uses a motion solved ahead only when it reaches that motion with the same CL point and
 // the same previous commands, bit for bit (`AheadSolve::fits`): anything that made the post's
@@ -11,8 +11,8 @@
 // post's progress changes (`MotionSolver::concurrent`, i.e. no reversal state) are read ahead.
 //
 // Input errors thrown by the reader surface at the record where they occurred, after everything
-// before it has been posted. Memory is bounded: at most `kMaxBatches` batches of `kBatchSize`
-// records are held ahead.
+// before it has been posted. Memory is bounded: each stage holds at most `kMaxBatches` batches of
+// `kBatchSize` records.
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -47,6 +47,22 @@ struct AheadItem {
   std::exception_ptr error;  ///< the reader failed here
 };
 
+/// A bounded queue of batches between two threads; stop() wakes and releases both sides.
+class BatchQueue {
+ public:
+  explicit BatchQueue(std::size_t capacity) : capacity_(capacity) {}
+  bool push(std::vector<AheadItem>&& batch);           ///< false once stopped
+  std::optional<std::vector<AheadItem>> pop();         ///< nullopt once stopped
+  void stop();
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<AheadItem>> batches_;
+  std::size_t capacity_;
+  bool stopped_ = false;
+};
+
 class Lookahead {
  public:
   static constexpr std::size_t kBatchSize = 256;
@@ -54,26 +70,25 @@ class Lookahead {
 
   /// Starts reading. `reader` and `solver` must outlive the object; solver.concurrent() must hold.
   Lookahead(cl::Reader& reader, const MotionSolver& solver);
-  ~Lookahead();  ///< stops the thread (also when the post failed half-way)
+  ~Lookahead();  ///< stops the threads (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
 
-  /// The next record in input order; waits while the reading thread is behind.
+  /// The next record in input order; waits while the other threads are behind.
   AheadItem next();
 
  private:
-  void run();
-  bool push(std::vector<AheadItem>&& batch);  ///< false when stopped
+  void read();
+  void solve();
 
   cl::Reader& reader_;
   const MotionSolver& solver_;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<std::vector<AheadItem>> ready_;
-  bool stop_ = false;
+  BatchQueue parsed_{kMaxBatches};
+  BatchQueue solved_{kMaxBatches};
   alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
   std::size_t position_ = 0;
-  std::thread thread_;
+  std::thread reading_;
+  std::thread solving_;
 };
 
 }  // namespace ncpost::detail
