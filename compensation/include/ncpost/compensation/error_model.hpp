@@ -105,7 +105,8 @@ template <class P> class ErrorFunctor {
   /// `values` has layout.size() entries and must outlive the functor. With `machine_only`, the
   /// effects that act only while measuring (drift, instruments) are left out (posting).
   ErrorFunctor(const ModelLayout& layout, const P* values, RowState<P> state = {}, bool machine_only = false)
-      : layout_(&layout), values_(values), state_(state), machine_only_(machine_only) {}
+      : layout_(&layout), values_(values), state_(state), machine_only_(machine_only),
+        constant_(!layout.command_dependent() && (machine_only || layout.drift_terms().empty())) {}
 
   void set_state(const RowState<P>& s) { state_ = s; }
   /// The same functor carrying its home inverse (home_inverse() of this model; posting).
@@ -117,9 +118,7 @@ template <class P> class ErrorFunctor {
   /// True when the machine this hook describes is a rigid chain like the nominal one with its axis
   /// lines moved: every term a constant (no component error functions, tables, reversal, and no
   /// drift unless measurement effects are left out).
-  bool constant_in_command() const {
-    return !layout_->command_dependent() && (machine_only_ || layout_->drift_terms().empty());
-  }
+  bool constant_in_command() const { return constant_; }
   /// The carried home inverse when it was computed for this tool length, else nullptr.
   const HomeInverse* cached_home(double tool_length_mm) const {
     return home_ && home_->tool_length_mm == tool_length_mm ? home_ : nullptr;
@@ -132,13 +131,13 @@ template <class P> class ErrorFunctor {
   template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home) const {
     using std::cos;
     using std::sin;
-    AxisErrorTerms<S> e;
-    if (!layout_->acts_on(axis_index)) return e;
     if constexpr (std::is_same_v<S, double> && std::is_same_v<P, double>) {
       // every term a constant: the terms computed once with the home pose (posting's hot path)
-      if (home_ && constant_in_command() && static_cast<std::size_t>(axis_index) < home_->terms_at_home.size())
+      if (home_ && constant_ && static_cast<std::size_t>(axis_index) < home_->terms_at_home.size())
         return home_->terms_at_home[static_cast<std::size_t>(axis_index)];
     }
+    AxisErrorTerms<S> e;
+    if (!layout_->acts_on(axis_index)) return e;
     for (int i : layout_->terms_of_axis(axis_index)) {
       const ParameterSpec& s = layout_->spec(i);
       const S v = S(values_[i]);
@@ -232,6 +231,7 @@ template <class P> class ErrorFunctor {
   const P* values_;
   RowState<P> state_;
   bool machine_only_;
+  bool constant_;  ///< constant_in_command()
   const HomeInverse* home_ = nullptr;
 };
 
