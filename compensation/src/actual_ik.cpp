@@ -75,12 +75,15 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
       out.position = q;
       out.actual = q;
       for (int a = 0; a < 5; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
+      out.actual_pose = actual;
       return out;
     }
     // after a step q solves the previous target nominally, so the nominal pose is that target;
-    // evaluated all the same (the IK is exact to ~1e-12 mm), except at a guess known to solve cl
+    // evaluated all the same (the IK is exact to ~1e-12 mm), except at a guess known to solve a point
     const ToolPoseT<double> nominal =
-        out.iterations == 0 && o.guess_solves_cl ? ToolPoseT<double>{cl.tip_mm, u} : forward(m, q, setup);
+        out.iterations == 0 && o.guess_solves
+            ? ToolPoseT<double>{o.guess_solves->tip_mm, o.guess_solves->axis.normalized()}
+            : forward(m, q, setup);
     ClPoint target;
     target.tip_mm = cl.tip_mm - (actual.tip_mm - nominal.tip_mm);
     target.axis = (u - (actual.axis - nominal.axis)).normalized();

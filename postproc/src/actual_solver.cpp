@@ -1,22 +1,58 @@
 #include "ncpost/postproc/actual_solver.hpp"
 
+#include <atomic>
+
 namespace ncpost {
 
-AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& nominal, bool nominal_solves_cl,
-                                      SolveFigures* figures, std::string& failure) const {
+namespace {
+
+/// The last solution's machine error on this thread (ActualSolver::error_at).
+struct KeptError {
+  std::uint64_t owner = 0;
+  AxisPosition q;
+  ToolPoseT<double> error;
+};
+thread_local KeptError kept;
+
+bool same(const AxisPosition& a, const AxisPosition& b) {
+  return a.linear_mm == b.linear_mm && a.rotary_rad == b.rotary_rad;
+}
+
+}  // namespace
+
+std::uint64_t ActualSolver::next_id() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
+ToolPoseT<double> ActualSolver::error_at(const AxisPosition& q) const {
+  if (kept.owner == id_ && same(kept.q, q)) return kept.error;
+  const ToolPoseT<double> actual = model_.tool_pose(q, setup_, {}, &home_);
+  keep_error(q, actual);
+  return kept.error;
+}
+
+void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& actual) const {
+  const ToolPoseT<double> nominal = nominal_.execute(q);
+  kept = {id_, q, {actual.tip_mm - nominal.tip_mm, actual.axis - nominal.axis}};
+}
+
+AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
+                                      const std::optional<ClPoint>& guess_solves, SolveFigures* figures,
+                                      std::string& failure) const {
   comp::ActualIkOptions options;
-  options.guess_solves_cl = nominal_solves_cl;
+  options.guess_solves = guess_solves;
   options.tip_tolerance_mm = kPostTipToleranceMm;
   options.axis_tolerance_rad = kPostAxisToleranceRad;
   if (model_.has_reversal()) options.previous_actual = actual_;
   options.home = &home_;
-  const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, nominal, options);
-  if (figures) figures->uncompensated_tip_mm = r.start_tip_error_mm;
+  const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, guess, options);
   if (!r.ok()) {
     failure = "compensated inverse kinematics: " + r.message;
-    return nominal;
+    return guess;
   }
   if (figures) figures->residual_mm = r.tip_error_mm;
+  if (r.actual_pose && !model_.has_reversal()) keep_error(*r.position, *r.actual_pose);
   return *r.position;
 }
 
@@ -26,10 +62,33 @@ void ActualSolver::record(const SolveFigures& figures) const {
 }
 
 IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const {
-  IkOutcome o = nominal_.solve(cl, previous);
+  // The start: the nominal solution of the CL point less the machine's error at the previous
+  // commands (its error changes little from one point to the next), on the post's choice of
+  // solution; the compensated IK then usually converges at once. With reversal the error depends
+  // on the direction of the move: start from the nominal solution of the CL point itself.
+  ClPoint start = cl;
+  if (!model_.has_reversal()) {
+    const ToolPoseT<double> e = error_at(previous);
+    start.tip_mm = cl.tip_mm - e.tip_mm;
+    start.axis = (cl.axis.normalized() - e.axis).normalized();
+  }
+  IkOutcome o = nominal_.solve(start, previous);
+  if (!o.ok() && !model_.has_reversal()) {
+    start = cl;  // the shifted point out of reach (at a limit): the CL point itself
+    o = nominal_.solve(start, previous);
+  }
   if (!o.ok()) return o;
+  if (figures && measure_uncompensated_) {
+    // the tip error of the uncompensated program: the nominal commands of the CL point, executed
+    const bool from_cl = start.tip_mm == cl.tip_mm && start.axis == cl.axis;
+    const IkOutcome plain = from_cl ? o : nominal_.solve(cl, previous);
+    if (plain.ok())
+      figures->uncompensated_tip_mm =
+          (model_.tool_pose(*plain.position, setup_, comp::reversal_state(model_, *plain.position, actual_), &home_).tip_mm -
+           cl.tip_mm).norm();
+  }
   std::string failure;
-  const AxisPosition q = compensate(cl, *o.position, true, figures, failure);
+  const AxisPosition q = compensate(cl, *o.position, start, figures, failure);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
@@ -44,7 +103,10 @@ AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d&
   const AxisPosition nominal = nominal_.with_rotary(cl, rotary_rad);
   std::string failure;
   SolveFigures figures;
-  const AxisPosition q = compensate(cl, nominal, false, &figures, failure);
+  if (measure_uncompensated_)
+    figures.uncompensated_tip_mm =
+        (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, actual_), &home_).tip_mm - cl.tip_mm).norm();
+  const AxisPosition q = compensate(cl, nominal, std::nullopt, &figures, failure);
   record(figures);
   return failure.empty() ? q : nominal;
 }

@@ -88,6 +88,8 @@ int run_post(const PostArgs& a) {
     const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
     model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
     auto s = std::make_unique<ActualSolver>(*model, job.setup);
+    // the uncompensated error of each CL point is measured only when something reports it
+    s->set_measure_uncompensated(a.verify || !a.report.empty() || !a.verify_on.empty());
     actual = s.get();
     solver = std::move(s);
   } else {

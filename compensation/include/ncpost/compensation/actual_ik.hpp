@@ -32,9 +32,10 @@ struct ActualIkOptions {
   int max_iterations = 30;
   std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
   const HomeInverse* home = nullptr;            ///< the model's home inverse (home_inverse), if computed
-  /// The guess is the nominal IK solution of this CL point (not programmed angles): its nominal
-  /// pose is the CL point itself, so the first step needs no nominal evaluation.
-  bool guess_solves_cl = false;
+  /// The CL point whose nominal IK solution the guess is (the CL point itself, or the CL point less
+  /// a predicted error of the machine), if it is one (not programmed angles): its nominal pose is
+  /// then known, so the first step needs no nominal evaluation.
+  std::optional<ClPoint> guess_solves;
 };
 
 struct ActualIkOutcome {
@@ -44,6 +45,8 @@ struct ActualIkOutcome {
   double tip_error_mm = 0.0;    ///< remaining |tip − CL tip|
   double start_tip_error_mm = 0.0;  ///< |tip − CL tip| at the nominal guess: the uncompensated error
   double axis_error_rad = 0.0;  ///< remaining angle between the actual and the CL axis
+  /// The actual tool pose at `position` (W), when the fixed-point iteration evaluated it there
+  std::optional<ToolPoseT<double>> actual_pose;
   std::string message;          ///< why it failed, when !position
   bool ok() const { return position.has_value(); }
 };

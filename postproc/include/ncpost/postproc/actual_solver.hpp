@@ -11,6 +11,7 @@
 //
 // It also measures what compensation buys: `uncompensated()` is the tool-tip error at the CL
 // points of the nominal solution executed on this machine (the program without `--model`).
+#include <cstdint>
 #include <optional>
 
 #include "ncpost/compensation/actual_ik.hpp"
@@ -41,7 +42,13 @@ class ActualSolver final : public MotionSolver {
   static constexpr double kPostAxisToleranceRad = 1e-7;
 
   ActualSolver(const comp::MachineModel& model, const Setup& setup)
-      : model_(model), setup_(setup), nominal_(model.machine(), setup), home_(model.home_inverse(setup.tool_length_mm)) {}
+      : model_(model), setup_(setup), nominal_(model.machine(), setup), home_(model.home_inverse(setup.tool_length_mm)),
+        id_(next_id()) {}
+
+  /// Whether solve() measures the uncompensated tip error of each CL point (`uncompensated()`;
+  /// one more nominal IK and model evaluation per point). On by default; the post turns it off
+  /// when nothing reports it.
+  void set_measure_uncompensated(bool on) { measure_uncompensated_ = on; }
 
   IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override;
   void record(const SolveFigures& figures) const override;
@@ -71,14 +78,21 @@ class ActualSolver final : public MotionSolver {
   double max_residual_mm() const { return max_residual_mm_; }
 
  private:
-  /// `nominal_solves_cl`: `nominal` is the nominal IK of cl (not programmed angles).
-  AxisPosition compensate(const ClPoint& cl, const AxisPosition& nominal, bool nominal_solves_cl,
+  /// `guess` solves `guess_solves` nominally (nullopt: programmed angles).
+  AxisPosition compensate(const ClPoint& cl, const AxisPosition& guess, const std::optional<ClPoint>& guess_solves,
                           SolveFigures* figures, std::string& failure) const;
+  /// The error of the machine at commands q (actual − nominal tip and axis in W): the prediction
+  /// for the next CL point. Kept per thread for the last solution, so a path pays nothing for it.
+  ToolPoseT<double> error_at(const AxisPosition& q) const;
+  void keep_error(const AxisPosition& q, const ToolPoseT<double>& actual) const;
+  static std::uint64_t next_id();
 
   const comp::MachineModel& model_;
   Setup setup_;
   NominalSolver nominal_;
   HomeInverse home_;
+  std::uint64_t id_;  ///< tells this solver's entries of the per-thread prediction apart
+  bool measure_uncompensated_ = true;
   // Written as the post goes, on its own cache line: the read-ahead thread reads home_ on every
   // evaluation and must not lose it to these writes (false sharing).
   alignas(64) mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
