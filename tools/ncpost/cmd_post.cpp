@@ -211,8 +211,8 @@ void add_post(CLI::App& app, Action& action) {
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
   sub->add_option("--threads", a->threads,
-                  "1: everything on one thread; 2 (default): a second thread reads and solves the CL motions "
-                  "ahead (not for models with reversal). The program is the same either way")
+                  "1: everything on one thread; 2 (default): the CL records are read and their motions solved "
+                  "ahead on other threads (models with reversal: read only). The program is the same either way")
       ->check(CLI::Range(1, 2));
   sub->add_option("-o,--output", a->output, "Output NC program (default: standard output)");
   sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
