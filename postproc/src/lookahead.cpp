@@ -66,6 +66,7 @@ void Lookahead::read() {
 }
 
 void Lookahead::solve() {
+  const bool ahead = solver_.concurrent();
   AxisPosition previous{};  // the post starts from the zero position too
   for (;;) {
     std::optional<std::vector<AheadItem>> batch = parsed_.pop();
@@ -76,7 +77,7 @@ void Lookahead::solve() {
         last = true;
         break;
       }
-      const auto* m = std::get_if<cl::Motion>(&*item.record);
+      const auto* m = ahead ? std::get_if<cl::Motion>(&*item.record) : nullptr;
       if (!m || m->rotary_rad) continue;
       AheadSolve s{m->point, previous, {}, {}};
       try {

@@ -8,7 +8,8 @@
 // the same previous commands, bit for bit (`AheadSolve::fits`): anything that made the post's
 // sequence differ (arcs, cycles, retracts) just means it solves the motion itself. The program
 // is therefore the same as with one thread. Only solvers whose commands depend on nothing the
-// post's progress changes (`MotionSolver::concurrent`, i.e. no reversal state) are read ahead.
+// post's progress changes (`MotionSolver::concurrent`, i.e. no reversal state) solve ahead; for
+// the others the records are only read ahead.
 //
 // Input errors thrown by the reader surface at the record where they occurred, after everything
 // before it has been posted. Memory is bounded: each stage holds at most `kMaxBatches` batches of
@@ -68,7 +69,8 @@ class Lookahead {
   static constexpr std::size_t kBatchSize = 256;
   static constexpr std::size_t kMaxBatches = 8;
 
-  /// Starts reading. `reader` and `solver` must outlive the object; solver.concurrent() must hold.
+  /// Starts reading. `reader` and `solver` must outlive the object. Motions are solved ahead only
+  /// for a solver that is concurrent(); otherwise the records are only read ahead.
   Lookahead(cl::Reader& reader, const MotionSolver& solver);
   ~Lookahead();  ///< stops the threads (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;

@@ -5,9 +5,12 @@
 #include <cmath>
 
 #include "lookahead.hpp"
+#include "record_blocks.hpp"
 
 namespace ncpost {
 namespace {
+
+using detail::RecordBlocks;
 
 /// Unit vector interpolated on the great circle from a to b (t in [0, 1]).
 Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
@@ -23,7 +26,7 @@ class Poster {
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
-    if (options_.threads > 1 && solver_.concurrent()) {
+    if (options_.threads > 1) {
       detail::Lookahead ahead(reader, solver_);
       for (;;) {
         detail::AheadItem item = ahead.next();
@@ -68,32 +71,10 @@ class Poster {
   }
 
   void on(const cl::Feed& f) {
-    if (f.per_rev) {
-      if (spindle_rpm_ <= 0.0) {
-        notice(f.where, "feed per revolution before a spindle speed: taken as mm/min");
-        feed_mm_min_ = f.value;
-      } else {
-        feed_mm_min_ = f.value * spindle_rpm_;
-      }
-    } else {
-      feed_mm_min_ = f.value;
-    }
-    feed_given_ = true;
+    if (auto n = records_.feed(f)) notice(f.where, *n);
   }
-
-  void on(const cl::Spindle& s) {
-    if (s.direction == cl::Spindle::Direction::off) {
-      writer_.block("M5");
-      return;
-    }
-    if (s.rpm > 0.0) spindle_rpm_ = s.rpm;
-    writer_.block(fmt::format("S{:.0f} {}", spindle_rpm_, s.direction == cl::Spindle::Direction::ccw ? "M4" : "M3"));
-  }
-
-  void on(const cl::Coolant& c) {
-    if (!c.on) writer_.block("M9");
-    else writer_.block(c.mode == "MIST" ? "M7" : "M8");
-  }
+  void on(const cl::Spindle& s) { records_.spindle(s); }
+  void on(const cl::Coolant& c) { records_.coolant(c); }
 
   void on(const cl::ToolChange& t) {
     if (writer_.dialect().klartext) {
@@ -109,10 +90,8 @@ class Poster {
 
   void on(const cl::Circle& c) { pending_circle_ = c; }
   void on(const cl::Cycle& c) { cycle_ = c; }
-  void on(const cl::Comment& c) {
-    if (!c.text.empty()) writer_.comment(c.text);
-  }
-  void on(const cl::Unsupported& u) { writer_.comment(u.text); }
+  void on(const cl::Comment& c) { records_.comment(c); }
+  void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}
 
   // ---- motion ----------------------------------------------------------------------------
@@ -143,7 +122,7 @@ class Poster {
       writer_.rtcp(true);
       rtcp_on_ = true;
     }
-    if (!rapid && !feed_given_ && !default_feed_noticed_) {
+    if (!rapid && !records_.feed_given() && !default_feed_noticed_) {
       summary_.notices.push_back(fmt::format("{}:{}: feed motion before any FEDRAT: using {:.0f} mm/min", input_, line,
                                              options_.default_feed_mm_min));
       default_feed_noticed_ = true;
@@ -220,7 +199,7 @@ class Poster {
     }
     for (int k = 0; k < machine_.rotary_count(); ++k)
       m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
-    const double feed = feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min;
+    const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
     const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
     const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
@@ -325,7 +304,7 @@ class Poster {
       arc.end_mm[static_cast<std::size_t>(k)] = xe[k];
       arc.centre_offset_mm[static_cast<std::size_t>(k)] = xc[k] - xs[k];
     }
-    arc.feed_mm_min = feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min;
+    arc.feed_mm_min = records_.feed_mm_min(options_.default_feed_mm_min);
     writer_.arc(arc);
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
@@ -352,7 +331,7 @@ class Poster {
     c.bottom_mm = {xb.x(), xb.y(), xb.z()};
     c.r_plane_mm = xt.z();
     c.peck_mm = cycle_.step_mm;
-    c.feed_mm_min = cycle_.feed > 0.0 ? cycle_.feed : (feed_given_ ? feed_mm_min_ : options_.default_feed_mm_min);
+    c.feed_mm_min = cycle_.feed > 0.0 ? cycle_.feed : records_.feed_mm_min(options_.default_feed_mm_min);
     writer_.cycle(c);
     ++summary_.cycles_out;
     return true;  // the tool is back at `top` (G98, initial level), previous_ unchanged
@@ -364,13 +343,11 @@ class Poster {
     const Vec3d u = m.point.axis;
     const ClPoint top{m.point.tip_mm + cycle_.clearance_mm * u, u};
     const ClPoint bottom{m.point.tip_mm - cycle_.depth_mm * u, u};
-    const double saved_feed = feed_mm_min_;
-    const bool saved_given = feed_given_;
+    const RecordBlocks::Saved saved = records_.save();
     move_to(top, m.where.line, true);
     if (native_cycle(top, bottom)) return;
     if (cycle_.feed > 0.0) {
-      feed_mm_min_ = cycle_.feed;
-      feed_given_ = true;
+      records_.set_feed(cycle_.feed);
     }
     if (cycle_.kind == cl::Cycle::Kind::deep && cycle_.step_mm > 0.0) {
       double reached = 0.0;
@@ -384,8 +361,7 @@ class Poster {
     }
     move_to(bottom, m.where.line, false);
     move_to(top, m.where.line, true);
-    feed_mm_min_ = saved_feed;
-    feed_given_ = saved_given;
+    records_.restore(saved);
   }
 
   const std::string& input_;
@@ -400,10 +376,8 @@ class Poster {
   std::optional<std::array<double, 5>> last_values_;  ///< words of the last motion block (mm, deg)
   bool have_position_ = false;
   bool rtcp_on_ = false;
-  double feed_mm_min_ = 0.0;
-  bool feed_given_ = false;
+  RecordBlocks records_{writer_};
   bool default_feed_noticed_ = false;
-  double spindle_rpm_ = 0.0;
   std::optional<cl::Circle> pending_circle_;
   cl::Cycle cycle_;
 };

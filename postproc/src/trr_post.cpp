@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
+#include "record_blocks.hpp"
 
 namespace ncpost::trr {
 namespace {
@@ -54,19 +55,10 @@ class Poster {
     move_to(m.point, m.where.line, rapid);
   }
   void on(const cl::Feed& f) {
-    feed_mm_min_ = f.per_rev && spindle_rpm_ > 0 ? f.value * spindle_rpm_ : f.value;
-    if (f.per_rev && spindle_rpm_ <= 0) notice(f.where, "feed per revolution before a spindle speed: taken as mm/min");
-    feed_given_ = true;
+    if (auto n = records_.feed(f)) notice(f.where, *n);
   }
-  void on(const cl::Spindle& s) {
-    if (s.direction == cl::Spindle::Direction::off) {
-      writer_.block("M5");
-      return;
-    }
-    if (s.rpm > 0.0) spindle_rpm_ = s.rpm;
-    writer_.block(fmt::format("S{:.0f} {}", spindle_rpm_, s.direction == cl::Spindle::Direction::ccw ? "M4" : "M3"));
-  }
-  void on(const cl::Coolant& c) { writer_.block(!c.on ? "M9" : c.mode == "MIST" ? "M7" : "M8"); }
+  void on(const cl::Spindle& s) { records_.spindle(s); }
+  void on(const cl::Coolant& c) { records_.coolant(c); }
   void on(const cl::ToolChange& t) {
     if (writer_.dialect().klartext) writer_.block(fmt::format("TOOL CALL {} Z", t.number));
     else writer_.block(fmt::format("T{} M6", t.number));
@@ -76,10 +68,8 @@ class Poster {
     if (c.kind != cl::Cycle::Kind::off)
       notice(c.where, "drilling cycles are not expanded on the TRR-XY machine: the hole positions are plain points");
   }
-  void on(const cl::Comment& c) {
-    if (!c.text.empty()) writer_.comment(c.text);
-  }
-  void on(const cl::Unsupported& u) { writer_.comment(u.text); }
+  void on(const cl::Comment& c) { records_.comment(c); }
+  void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}
 
   void notice(cl::Location where, const std::string& what) {
@@ -106,7 +96,7 @@ class Poster {
     ClPoint cl = cl_in;
     cl.axis.normalize();
     const Solved next = solve(cl, line);
-    if (!rapid && !feed_given_ && !default_feed_noticed_) {
+    if (!rapid && !records_.feed_given() && !default_feed_noticed_) {
       notice({line, 0}, fmt::format("motion before any FEDRAT: feed {} mm/min", o_.default_feed_mm_min));
       default_feed_noticed_ = true;
     }
@@ -152,7 +142,7 @@ class Poster {
     m.rapid = rapid;
     const auto w = to.command.words();
     for (int i = 0; i < 5; ++i) m.values[static_cast<std::size_t>(i)] = w[i];
-    m.feed = feed_given_ ? feed_mm_min_ : o_.default_feed_mm_min;
+    m.feed = records_.feed_mm_min(o_.default_feed_mm_min);
     const bool had = have_emitted_;
     if (!writer_.motion(m)) return;
     if (had) {
@@ -215,8 +205,8 @@ class Poster {
   PostSummary summary_;
   Solved previous_{}, last_{};
   bool have_position_ = false, have_emitted_ = false;
-  double feed_mm_min_ = 0.0, spindle_rpm_ = 0.0;
-  bool feed_given_ = false, default_feed_noticed_ = false;
+  detail::RecordBlocks records_{writer_};
+  bool default_feed_noticed_ = false;
   std::optional<cl::Circle> pending_circle_;
 };
 

@@ -1,8 +1,9 @@
-// The post's read-ahead thread (PostOptions::threads = 2) writes the same program as one thread:
+// The post's read-ahead threads (PostOptions::threads = 2) write the same program as one thread:
 // under `--model --tolerance` (the compensated IK solved ahead), on real files whose arcs, cycles
 // and G-code angles make the post leave the motions solved ahead unused, and with a reversal model
-// (not read ahead). Errors surface the same way: a bad statement after thousands of good ones is
-// reported with its line, and a post that fails half-way stops the reading thread.
+// (records read ahead, motions solved on the post's thread). Errors surface the same way: a bad
+// statement after thousands of good ones is reported with its line, and a post that fails
+// half-way stops the reading threads.
 #include <catch2/catch.hpp>
 
 #include <fstream>

@@ -57,8 +57,8 @@ struct PostOptions {
   /// 0: no retract strategy, the post fails (Infeasible) naming the CL line.
   double retract_mm = 50.0;
   double branch_change_rad = 0.2;       ///< extra rotary travel (sum over the axes) that counts as a change
-  /// 2: a second thread reads and solves the CL motions ahead (only for a concurrent() solver; the
-  /// program is the same as with 1). The subdivider runs on the post's thread.
+  /// 2: other threads read the CL records and solve their motions ahead (solving only for a
+  /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
   int threads = 1;
   bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
   /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
