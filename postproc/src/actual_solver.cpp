@@ -39,7 +39,7 @@ void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& ac
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
                                       const std::optional<ClPoint>& guess_solves, SolveFigures* figures,
-                                      std::string& failure) const {
+                                      std::string& failure, std::optional<ToolPoseT<double>>* executed) const {
   comp::ActualIkOptions options;
   options.guess_solves = guess_solves;
   options.tip_tolerance_mm = kPostTipToleranceMm;
@@ -52,7 +52,10 @@ AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& gue
     return guess;
   }
   if (figures) figures->residual_mm = r.tip_error_mm;
-  if (r.actual_pose && !model_.has_reversal()) keep_error(*r.position, *r.actual_pose);
+  if (r.actual_pose && !model_.has_reversal()) {
+    keep_error(*r.position, *r.actual_pose);
+    if (executed) *executed = r.actual_pose;  // without reversal: the pose of every later execution
+  }
   return *r.position;
 }
 
@@ -88,13 +91,15 @@ IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previ
            cl.tip_mm).norm();
   }
   std::string failure;
-  const AxisPosition q = compensate(cl, *o.position, start, figures, failure);
+  std::optional<ToolPoseT<double>> executed;
+  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
     return o;
   }
   o.position = q;
+  o.executed = executed;
   return o;
 }
 

@@ -117,6 +117,7 @@ class Poster {
                                      line, ik.failure.message, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(),
                                      cl.axis.x(), cl.axis.y(), cl.axis.z()));
       next.q = *ik.position;
+      next.executed = ik.executed;
     }
     if (options_.rtcp && !rtcp_on_) {
       writer_.rtcp(true);

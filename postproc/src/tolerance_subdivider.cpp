@@ -29,7 +29,7 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
         nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
     // inserted points are not CL points of the input: the solver's figures are left as they are
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
-    const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q};
+    const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q, from.executed, to.executed};
     const nonlinear::SplitBlock split =
         actual ? nonlinear::compensate_block(machine, setup, block, actual->errors_from_here(), ik, c)
                : nonlinear::compensate_block(machine, setup, block, NominalErrors{}, ik, c);

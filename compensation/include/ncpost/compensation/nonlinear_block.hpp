@@ -13,6 +13,7 @@
 //   position error    = distance of x(t) from the segment p0 → p1 (closest point, clamped),
 //   orientation error = angle between a(t) and normalise((1 − t)·u0 + t·u1).
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "ncpost/kinematics/forward.hpp"
@@ -25,6 +26,10 @@ struct ClBlock {
   ClPoint end;
   AxisPosition from;
   AxisPosition to;
+  /// The executed poses at `from` and `to` on the block's machine, when the caller has them (the
+  /// solver evaluated them): the bound then does not evaluate them again.
+  std::optional<ToolPoseT<double>> from_pose = std::nullopt;
+  std::optional<ToolPoseT<double>> to_pose = std::nullopt;
 };
 
 /// q0 + t·(q1 − q0) on every axis (mm, rad).

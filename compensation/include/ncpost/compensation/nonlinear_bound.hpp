@@ -79,7 +79,8 @@ template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Error
   for (auto it = machine.tool_side.rbegin(); it != machine.tool_side.rend(); ++it) apply(*it, false);
   for (int index : machine.workpiece_side) apply(index, true);
 
-  const ToolPoseT<double> x0 = executed.pose_at(b.from), x1 = executed.pose_at(b.to);
+  const ToolPoseT<double> x0 = b.from_pose ? *b.from_pose : executed.pose_at(b.from);
+  const ToolPoseT<double> x1 = b.to_pose ? *b.to_pose : executed.pose_at(b.to);
   const double mismatch = std::max((x0.tip_mm - b.start.tip_mm).norm(), (x1.tip_mm - b.end.tip_mm).norm());
   NonlinearBound out;
   out.error_mm = accel / 8.0 + mismatch;

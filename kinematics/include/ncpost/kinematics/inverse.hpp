@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/kinematics/forward.hpp"
 
 namespace ncpost {
 
@@ -73,6 +73,9 @@ struct IkFailure {
 
 struct IkOutcome {
   std::optional<AxisPosition> position;
+  /// The tool pose (W) that the solver's machine executes at `position`, when the solver evaluated
+  /// it (the compensated IK does; the nominal closed form does not)
+  std::optional<ToolPoseT<double>> executed;
   IkFailure failure;  ///< set when !position
   bool singular = false;
   bool ok() const { return position.has_value(); }

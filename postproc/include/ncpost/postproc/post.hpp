@@ -22,6 +22,8 @@ namespace ncpost {
 struct SolvedPoint {
   ClPoint cl;
   AxisPosition q;
+  /// The pose the machine executes at q (W), when the solver evaluated it (IkOutcome::executed)
+  std::optional<ToolPoseT<double>> executed = std::nullopt;
 };
 
 /// Splits the block (from, to) into points ending with `to`'s; given by `--tolerance`.
