@@ -69,7 +69,6 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
     const RowState<double> state = reversal_state(model, q, o.previous_actual);
     const ToolPoseT<double> actual = model.tool_pose(q, setup, state, o.home);
     out.tip_error_mm = (actual.tip_mm - cl.tip_mm).norm();
-    if (out.iterations == 0) out.start_tip_error_mm = out.tip_error_mm;
     out.axis_error_rad = std::atan2(actual.axis.cross(u).norm(), actual.axis.dot(u));
     if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
       out.position = q;
@@ -187,11 +186,7 @@ ActualIkOutcome solve_by_newton(const MachineModel& model, const ClPoint& cl, co
 ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
                              const AxisPosition& nominal_guess, const ActualIkOptions& o) {
   if (auto fast = fixed_point(model, cl, setup, nominal_guess, o)) return *fast;
-  ActualIkOutcome out = solve_by_newton(model, cl, setup, nominal_guess, o);
-  out.start_tip_error_mm =
-      (model.tool_pose(nominal_guess, setup, reversal_state(model, nominal_guess, o.previous_actual), o.home).tip_mm - cl.tip_mm)
-          .norm();
-  return out;
+  return solve_by_newton(model, cl, setup, nominal_guess, o);
 }
 
 }  // namespace ncpost::comp

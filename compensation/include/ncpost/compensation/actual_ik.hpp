@@ -43,7 +43,6 @@ struct ActualIkOutcome {
   AxisPosition actual;                   ///< where the axes actually go (command + reversal offset)
   int iterations = 0;
   double tip_error_mm = 0.0;    ///< remaining |tip − CL tip|
-  double start_tip_error_mm = 0.0;  ///< |tip − CL tip| at the nominal guess: the uncompensated error
   double axis_error_rad = 0.0;  ///< remaining angle between the actual and the CL axis
   /// The actual tool pose at `position` (W), when the fixed-point iteration evaluated it there
   std::optional<ToolPoseT<double>> actual_pose;
