@@ -70,9 +70,15 @@ template <class Errors = NominalErrors> class ExecutedBlock {
     if constexpr (!std::is_same_v<Errors, NominalErrors>) {  // nominal: every axis transform is I at home
       const HomeInverse* cached = nullptr;
       if constexpr (CachesHome<Errors>) cached = errors_.cached_home(setup_.tool_length_mm);
-      const HomeInverse home = cached ? *cached : home_inverse(machine_, setup_.tool_length_mm, errors_);
-      home_table_inv_ = home.table;
-      home_tool_inv_ = home.tool;
+      if (cached) {
+        home_table_inv_ = cached->table;
+        home_tool_inv_ = cached->tool;
+      } else {
+        const ChainPose<double> home =
+            raw_chain_pose<double>(machine_, AxisPosition{}, setup_.tool_length_mm, errors_, true);
+        home_table_inv_ = home.bed_T_table.inverse();
+        home_tool_inv_ = home.bed_T_tool.inverse();
+      }
     }
   }
 
