@@ -10,6 +10,7 @@
 #include "ncpost/compensation/trr_identify.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
+#include "cli_run.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;
@@ -17,16 +18,11 @@ using namespace ncpost::trr;
 
 namespace {
 
+/// `ncpost ARGS`: the exit code; `err` (if given) gets what it printed.
 int run(const std::string& args, std::string* err = nullptr) {
-  const std::string cmd = std::string(NCPOST_BINARY) + " " + args + " >trr_cli.out 2>trr_cli.err";
-  const int rc = std::system(cmd.c_str());
-  if (err) {
-    std::ifstream e("trr_cli.err");
-    std::stringstream s;
-    s << e.rdbuf();
-    *err = s.str();
-  }
-  return WEXITSTATUS(rc);
+  const int rc = test::run_ncpost(args, "trr_cli.log");
+  if (err) *err = test::read_text_file("trr_cli.log");
+  return rc;
 }
 
 }  // namespace

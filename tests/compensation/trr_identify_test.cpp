@@ -13,6 +13,7 @@
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "test_paths.hpp"
+#include "trr_program.hpp"
 
 using namespace ncpost;
 using namespace ncpost::trr;
@@ -29,23 +30,6 @@ Errors random_truth(unsigned seed) {
   return e;
 }
 
-std::vector<Command> read_program(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<Command> out;
-  Eigen::Matrix<double, 5, 1> w = Eigen::Matrix<double, 5, 1>::Constant(std::nan(""));
-  const std::string letters = "XYUVW";
-  const std::regex word("([XYUVW])(-?[0-9]+\\.?[0-9]*)");
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '(' || line[0] == '%') continue;
-    bool moved = false;
-    for (std::sregex_iterator it(line.begin(), line.end(), word), end; it != end; ++it) {
-      w[static_cast<Eigen::Index>(letters.find((*it)[1].str()[0]))] = std::stod((*it)[2].str());
-      moved = true;
-    }
-    if (moved && w.allFinite()) out.push_back(Command::from_words(w));
-  }
-  return out;
-}
 
 /// A finishing path on the spec's test hemisphere (R 120 mm, tool normal, polar 5-30 deg): rings
 /// of 72 points, as APT CL source.
@@ -178,8 +162,8 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
                            " --workpiece-origin 0,0,-300 ";
   REQUIRE(std::system((base + "-o trr_before.nc trr_hemisphere.cls 2>/dev/null").c_str()) == 0);
   REQUIRE(std::system((base + "--model trr_identified.json -o trr_after.nc trr_hemisphere.cls 2>/dev/null").c_str()) == 0);
-  const Execution before = execute(actual, read_program("trr_before.nc"), cl);
-  const Execution after = execute(actual, read_program("trr_after.nc"), cl);
+  const Execution before = execute(actual, test::read_trr_program("trr_before.nc"), cl);
+  const Execution after = execute(actual, test::read_trr_program("trr_after.nc"), cl);
   WARN("hemisphere on the true machine: before " << before.max_end_mm * 1000 << " um (normal " << before.max_normal_um
        << " um), after compensation " << after.max_end_mm * 1000 << " um (normal " << after.max_normal_um << " um)");
   CHECK(before.max_end_mm > 0.02);

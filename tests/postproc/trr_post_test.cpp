@@ -13,7 +13,9 @@
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
+#include "cli_run.hpp"
 #include "test_paths.hpp"
+#include "trr_program.hpp"
 
 using namespace ncpost;
 using namespace ncpost::trr;
@@ -22,40 +24,21 @@ namespace {
 
 const Vec3d kOrigin(0.0, 0.0, -300.0);
 
+/// `ncpost ARGS`: the exit code; `err` (if given) gets what it printed.
 int run(const std::string& args, std::string* err = nullptr) {
-  const std::string cmd = std::string(NCPOST_BINARY) + " " + args + " >trr_post.out 2>trr_post.err";
-  const int rc = std::system(cmd.c_str());
-  if (err) {
-    std::ifstream e("trr_post.err");
-    std::stringstream s;
-    s << e.rdbuf();
-    *err = s.str();
-  }
-  return WEXITSTATUS(rc);
+  const int rc = test::run_ncpost(args, "trr_post.log");
+  if (err) *err = test::read_text_file("trr_post.log");
+  return rc;
+}
+
+/// The motion blocks of the NC program at `path` (which must exist).
+std::vector<Command> read_program(const std::string& path) {
+  REQUIRE(std::ifstream(path).good());
+  return test::read_trr_program(path);
 }
 
 std::string machine_path() { return test::source("machines/trr-xy.toml"); }
 std::string sample_path() { return test::source("samples/hemisphere_5axis.cls"); }
-
-/// The motion blocks of an NC program: modal X Y U V W values after each G0/G1 block.
-std::vector<Command> read_program(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::vector<Command> out;
-  Eigen::Matrix<double, 5, 1> w = Eigen::Matrix<double, 5, 1>::Constant(std::nan(""));
-  const std::string letters = "XYUVW";
-  const std::regex word("([XYUVW])(-?[0-9]+\\.?[0-9]*)");
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '(' || line[0] == '%') continue;
-    bool moved = false;
-    for (std::sregex_iterator it(line.begin(), line.end(), word), end; it != end; ++it) {
-      w[static_cast<Eigen::Index>(letters.find((*it)[1].str()[0]))] = std::stod((*it)[2].str());
-      moved = true;
-    }
-    if (moved && w.allFinite()) out.push_back(Command::from_words(w));
-  }
-  return out;
-}
 
 /// The CL points of the sample (the path the executed tip must follow).
 std::vector<Vec3d> read_cl_points(const std::string& path) {

@@ -35,7 +35,11 @@ std::optional<TrrJob> load_trr_job(const JobOptions& o) {
   return job;
 }
 
-std::unique_ptr<cl::Reader> open_apt(std::istream& in, const std::string& name, const JobOptions& o) {
+/// Opens the input file `name` into `in` and an APT reader on it (InputError when it cannot be
+/// opened or is not APT CL data).
+std::unique_ptr<cl::Reader> open_apt(std::ifstream& in, const std::string& name, const JobOptions& o) {
+  in.open(name, std::ios::binary);
+  if (!in) throw InputError({name, 0, 0}, "cannot open the input file");
   std::string head(4096, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
@@ -75,8 +79,7 @@ std::optional<int> post_if_trr_xy(const TrrPostRequest& a) {
     throw UsageError(std::string("--dialect: ") + e.what());
   }
   const trr::Kinematics k = kinematics_for(*job, a.model);
-  std::ifstream in(a.input, std::ios::binary);
-  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
+  std::ifstream in;
   auto reader = open_apt(in, a.input, a.job);
 
   trr::PostOptions o;
@@ -120,8 +123,7 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   const std::optional<TrrJob> job = load_trr_job(a.job);
   if (!job) return std::nullopt;
   const trr::Kinematics k = kinematics_for(*job, a.model);
-  std::ifstream in(a.input, std::ios::binary);
-  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
+  std::ifstream in;
   auto reader = open_apt(in, a.input, a.job);
 
   // the program as posted without a tolerance (one block per CL motion), written nowhere
