@@ -1,5 +1,5 @@
 // Benchmark of posting with nonlinear-error compensation (issue 4 "Speed"), on the public AC
-// trunnion (shared/data/scenarios/public-clean), N CL points of one of two paths:
+// trunnion (tests/data/scenarios/public-clean), N CL points of one of two paths:
 //   spiral  a dense spiral over a dome, tool axis along the normal (bows far below 5 µm: the
 //           cheap bound screens nearly every block);
 //   dome    the public dome path repeated (1201 points per copy; 80% of its blocks bow over 5 µm)
@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
     with_model = with_model || std::string(argv[i]) == "model";
     write_only = write_only || std::string(argv[i]) == "write-only";
   }
-  const std::string scenario = std::string(NCPOST_BENCH_SOURCE_DIR) + "/../shared/data/scenarios/public-clean/";
+  const std::string scenario = std::string(NCPOST_BENCH_SOURCE_DIR) + "/../tests/data/scenarios/public-clean/";
   const Machine m = load_machine(scenario + "machine.toml");
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);

@@ -12,7 +12,7 @@ N=${1:-1000000}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=$(mktemp -d /tmp/ncpost-post-bench.XXXXXX)
 trap 'rm -rf "$WORK"' EXIT INT TERM
-S="$ROOT/../shared/data/scenarios/public-clean"
+S="$ROOT/tests/data/scenarios/public-clean"
 
 cmake -S "$ROOT" -B "$ROOT/build" -G Ninja -DNCPOST_BUILD_BENCH=ON >/dev/null
 ninja -C "$ROOT/build" -j2 ncpost post_bench >/dev/null

@@ -20,7 +20,6 @@ function(ncpost_add_test file)
   target_link_libraries(${_target} PRIVATE ncpost_catch_main ${ARGN})
   target_compile_definitions(${_target} PRIVATE
     NCPOST_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
-    NCPOST_SHARED_DIR="${NCPOST_SHARED_DIR}"
     NCPOST_BINARY="$<TARGET_FILE:ncpost>")
   add_test(NAME "${_prefix}/${_name}" COMMAND ${_target})
   set_tests_properties("${_prefix}/${_name}" PROPERTIES WORKING_DIRECTORY "${CMAKE_BINARY_DIR}")

@@ -20,6 +20,6 @@ build/ncpost post --machine machines/ac-trunnion.toml --workpiece-origin 0,0,80 
 echo
 echo "== post the NX variable-axis path for the Haas UMC-750 with TCPC (RTCP)"
 build/ncpost post --machine machines/haas-umc750.toml --rtcp --dialect haas --units inch \
-  -o out/nx_variable_axis_umc750.nc ../shared/data/real/nx_APT_Variable_Axis.txt 2>&1 | grep -v '^notice' || true
+  -o out/nx_variable_axis_umc750.nc tests/data/real/nx_APT_Variable_Axis.txt 2>&1 | grep -v '^notice' || true
 echo
 echo "written: out/hemisphere_5axis.nc, out/post_report.html, out/model.json, out/identify.html, out/nx_variable_axis_umc750.nc"

@@ -32,7 +32,7 @@ double check_hits(const MachineModel& model, const ClPoint& cl, const Setup& set
 }  // namespace
 
 TEST_CASE("solve_actual on the public-clean truth") {
-  const std::string dir = std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/";
+  const std::string dir = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
   const Machine m = load_machine(dir + "machine.toml");
   const ModelFile truth = read_model_json(dir + "truth.json", &m);
   const MachineModel model(m, truth.parameters);

@@ -8,7 +8,7 @@ using namespace ncpost;
 using namespace ncpost::nonlinear;
 
 TEST_CASE("compensate_blocks: two threads, same result", "[adaptive][batch]") {
-  const Machine m = load_machine(std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml");
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   const Setup s = test::dome_setup();
   const auto blocks = test::blocks_of(m, s, test::read_gotos(test::dome_path()));
   const NominalSolver solver{m, s};

@@ -14,7 +14,7 @@ using namespace ncpost;
 using namespace ncpost::nonlinear;
 
 TEST_CASE("adaptive subdivision with an error model (dome path)", "[adaptive][model]") {
-  const Machine m = load_machine(std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml");
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   const Setup s = test::dome_setup();
   const test::LocationErrors errors;
   const test::ModelSolver<test::LocationErrors> solver{m, s, errors};
@@ -48,7 +48,7 @@ TEST_CASE("adaptive subdivision with an error model (dome path)", "[adaptive][mo
 }
 
 TEST_CASE("adaptive subdivision with the project's error model and compensated IK (truth.json)", "[adaptive][model]") {
-  const std::string scenario = std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/";
+  const std::string scenario = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
   const Machine m = load_machine(scenario + "machine.toml");
   const Setup s = test::dome_setup();
   const comp::ModelFile file = comp::read_model_json(scenario + "truth.json", &m);

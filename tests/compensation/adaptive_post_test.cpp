@@ -16,7 +16,7 @@ using namespace ncpost;
 namespace {
 
 PostSummary post_dome(nonlinear::Method method, double tolerance_mm, const std::string& out_path) {
-  const Machine m = load_machine(std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml");
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   const Setup setup = test::dome_setup();
   std::ifstream in(test::dome_path());
   cl::AptReader reader(in, "path.cls");

@@ -14,7 +14,7 @@ using namespace ncpost;
 using namespace ncpost::comp;
 
 namespace {
-const std::string kClean = std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/";
+const std::string kClean = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
 }
 
 TEST_CASE("ballbar-4axis plan reproduces the public scenario commands and lengths") {

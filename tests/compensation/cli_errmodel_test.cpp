@@ -23,7 +23,7 @@ TEST_CASE("plan, simulate and identify on the command line") {
   const fs::path dir = fs::temp_directory_path() / ("ncpost_cli_errmodel_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string d = dir.string() + "/";
-  const std::string clean = std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/";
+  const std::string clean = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
   const std::string machine = "--machine " + clean + "machine.toml";
   REQUIRE(run("plan " + machine + " ballbar-4axis --height 250 300 -o " + d + "bb", d + "log") == 0);
   CHECK(fs::exists(d + "bb_h250.csv"));

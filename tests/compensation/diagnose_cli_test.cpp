@@ -36,7 +36,7 @@ TEST_CASE("identify on the command line: effects found, before / after, measurin
   const fs::path dir = fs::temp_directory_path() / ("ncpost_diagnose_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string d = dir.string() + "/";
-  const std::string machine = "--machine " + std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml";
+  const std::string machine = "--machine " + std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml";
   std::ofstream(d + "truth.json") << R"({"machine": "public-clean", "parameters": {
     "EY0A": 0.018, "EZ0A": -0.012, "EB0A": 4e-05, "EC0A": -2.5e-05,
     "EX0C": 0.015, "EY0C": -0.022, "EA0C": 3e-05, "EB0C": -3.5e-05,

@@ -17,7 +17,7 @@ using namespace ncpost::comp;
 namespace {
 
 const Machine& machine() {
-  static const Machine m = load_machine(std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml");
+  static const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   return m;
 }
 

@@ -27,7 +27,7 @@
 namespace ncpost::test {
 
 inline std::string public_scenario(const std::string& name) {
-  return std::string(NCPOST_SHARED_DIR) + "/data/scenarios/" + name + "/";
+  return std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/" + name + "/";
 }
 inline Machine public_machine() { return load_machine(public_scenario("public-clean") + "machine.toml"); }
 

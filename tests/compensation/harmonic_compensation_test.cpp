@@ -41,7 +41,7 @@ TEST_CASE("harmonic compensation of the seed 001 segment", "[harmonic][seed001]"
 }
 
 TEST_CASE("harmonic compensation of the dome path", "[harmonic][dome]") {
-  const Machine m = load_machine(std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/machine.toml");
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   const Setup s = test::dome_setup();
   const auto blocks = test::blocks_of(m, s, test::read_gotos(test::dome_path()));
   HarmonicOptions o;

@@ -16,7 +16,7 @@ using namespace ncpost;
 using namespace ncpost::comp;
 
 namespace {
-const std::string kClean = std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/";
+const std::string kClean = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
 
 void print(const IdentifyResult& r) {
   printf("rank %d of %d, %s\n", r.identifiability.rank, r.identifiability.parameters, r.message.c_str());

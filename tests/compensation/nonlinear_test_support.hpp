@@ -18,7 +18,7 @@ inline Machine machine_file(const std::string& name) {
 }
 
 /// Location errors of both rotary axes and a command-dependent error motion (mm, rad), about the
-/// size of shared/data/scenarios/public-clean/truth.json.
+/// size of tests/data/scenarios/public-clean/truth.json.
 struct LocationErrors {
   template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool /*at_home*/) const {
     AxisErrorTerms<S> e;
@@ -73,7 +73,7 @@ inline std::vector<ClLine> read_gotos(const std::string& path) {
   return out;
 }
 
-inline std::string dome_path() { return std::string(NCPOST_SHARED_DIR) + "/data/scenarios/public-clean/path.cls"; }
+inline std::string dome_path() { return std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/path.cls"; }
 inline Setup dome_setup() {
   Setup s;
   s.workpiece_origin_mm = Vec3d(0, 0, 80);  // job.json

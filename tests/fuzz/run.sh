@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds the libFuzzer targets with clang-14 (ASan + UBSan) in build-fuzz/ and runs each for
 # SECONDS (default 60), starting from the seed corpus in tests/fuzz/corpus/ plus the real files
-# of ../shared/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
+# of tests/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
 #   tests/fuzz/run.sh [SECONDS]        (from the repository root)
 # Environment: TARGETS (default: all three), FUZZ_FLAGS (extra libFuzzer flags, e.g.
@@ -18,7 +18,7 @@ TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader}
 FUZZ_FLAGS=${FUZZ_FLAGS:-}
 ninja -C "$BUILD" -j2 $TARGETS
 
-SHARED="$ROOT/../shared/data/real"
+SHARED="$ROOT/tests/data/real"
 status=0
 for target in $TARGETS; do
   case $target in

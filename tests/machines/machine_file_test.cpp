@@ -51,7 +51,7 @@ TEST_CASE("every shipped machine and the scenario machines load") {
     const Machine m = load_machine(test::source(std::string("machines/") + name + ".toml"));
     CHECK(m.name == name);
   }
-  const Machine ac = load_machine(test::shared("data/scenarios/public-clean/machine.toml"));
+  const Machine ac = load_machine(test::data("scenarios/public-clean/machine.toml"));
   REQUIRE(ac.rotary_count() == 2);
   CHECK(ac.rotary(0).letter == 'A');
   CHECK(ac.rotary(1).letter == 'C');

@@ -1,4 +1,4 @@
-// The APT reader on the quirks of real CAM files (shared/data/real/README.md) and on bad input.
+// The APT reader on the quirks of real CAM files (tests/data/real/SOURCES.md) and on bad input.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -139,7 +139,7 @@ TEST_CASE("every real CL file reads completely") {
   for (const char* f : {"nx_APT_Variable_Axis.txt", "nx_APT_SimpleMillPlane.txt", "nx_APT_Zig_Zag_Smoothed.txt",
                         "nx_APT_Project2.txt", "catia_peening.aptsource", "creo_bohren_1.ncl", "creo_schruppen_1.ncl"}) {
     INFO(f);
-    std::ifstream in(test::shared(std::string("data/real/") + f), std::ios::binary);
+    std::ifstream in(test::data(std::string("real/") + f), std::ios::binary);
     REQUIRE(in);
     cl::AptReader r(in, f);
     int motions = 0;

@@ -28,7 +28,7 @@ void write(const std::string& path, const std::string& text) { std::ofstream(pat
 
 }  // namespace
 
-using ncpost::test::shared;
+using ncpost::test::data;
 using ncpost::test::source;
 
 TEST_CASE("help for ncpost and every subcommand") {
@@ -68,9 +68,9 @@ TEST_CASE("exit codes: usage 1, bad input 2, infeasible 3; no partial output") {
 TEST_CASE("post writes a program in each dialect") {
   for (const char* d : {"fanuc", "haas", "linuxcnc", "sinumerik", "heidenhain"}) {
     INFO(d);
-    CHECK(run(std::string("post --machine ") + shared("data/scenarios/public-clean/machine.toml") +
+    CHECK(run(std::string("post --machine ") + data("scenarios/public-clean/machine.toml") +
               " --workpiece-origin 0,0,80 --dialect " + d + " -o cli_dialect.nc " +
-              shared("data/scenarios/public-clean/path.cls")) == 0);
+              data("scenarios/public-clean/path.cls")) == 0);
     std::ifstream in("cli_dialect.nc");
     std::stringstream s;
     s << in.rdbuf();
@@ -82,7 +82,7 @@ TEST_CASE("post writes a program in each dialect") {
 }
 
 TEST_CASE("post --model --tolerance --verify-on --report: before/after printed, program and report written") {
-  const std::string d = shared("data/scenarios/public-clean/");
+  const std::string d = data("scenarios/public-clean/");
   std::string err;
   REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model.json " + d + "ballbar_h250.csv " + d +
               "ballbar_h300.csv " + d + "sphere.csv") == 0);
@@ -139,7 +139,7 @@ TEST_CASE("post: a limit-forced change of solution retracts, or fails with --ret
 }
 
 TEST_CASE("post --model re-posts a machine-axis G-code program the same way") {
-  const std::string d = shared("data/scenarios/public-clean/");
+  const std::string d = data("scenarios/public-clean/");
   std::string err;
   REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model2.json " + d + "ballbar_h250.csv " + d +
               "ballbar_h300.csv " + d + "sphere.csv") == 0);

@@ -123,7 +123,7 @@ double wrap(double a) { return std::remainder(a, 2.0 * kPi); }
 }  // namespace
 
 TEST_CASE("LinuxCNC peer: impeller (TCP on) gives LinuxCNC's xyzac-trt joints, both conventions") {
-  const std::string file = NCPOST_SHARED_DIR "/data/real/linuxcnc_impeller-7bl-xyzac.ngc";
+  const std::string file = NCPOST_SOURCE_DIR "/tests/data/real/linuxcnc_impeller-7bl-xyzac.ngc";
   const auto programmed = read_motions_independently(file);
   REQUIRE(programmed.size() > 4000);
   for (const bool conventional : {false, true}) {
@@ -183,7 +183,7 @@ TEST_CASE("LinuxCNC peer: impeller (TCP on) gives LinuxCNC's xyzac-trt joints, b
 }
 
 TEST_CASE("LinuxCNC peer: the boat xyzbc program parses completely") {
-  const std::string file = NCPOST_SHARED_DIR "/data/real/linuxcnc_boat-xyzbc.ngc";
+  const std::string file = NCPOST_SOURCE_DIR "/tests/data/real/linuxcnc_boat-xyzbc.ngc";
   // expected motions, counted independently: lines with an axis word outside (...) and ; comments
   std::ifstream in(file);
   std::string line;
@@ -235,7 +235,7 @@ TEST_CASE("NX post output for the Haas UMC-750 (G234, G20, G28, arcs) reads comp
   for (const char* name : {"nx_PostProcessed_SimpleMillPlane.txt", "nx_PostProcessed_Variable_Axis.txt",
                            "nx_PostProcessed_Zig_Zag_Smoothed.txt"}) {
     INFO(name);
-    const std::string file = std::string(NCPOST_SHARED_DIR "/data/real/") + name;
+    const std::string file = std::string(NCPOST_SOURCE_DIR "/tests/data/real/") + name;
     // lines that move, counted independently: an axis word outside comments, not G28, before M30
     std::set<int> expected_lines;
     std::set<int> arc_lines;

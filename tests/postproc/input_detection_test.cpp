@@ -22,13 +22,13 @@ TEST_CASE("every real file is detected as what it is") {
                         "nx_APT_Zig_Zag_Smoothed.txt", "catia_peening.aptsource", "creo_bohren_1.ncl",
                         "creo_schruppen_1.ncl"}) {
     INFO(f);
-    CHECK(ncpost::cl::looks_like_apt(head_of(ncpost::test::shared(std::string("data/real/") + f))));
+    CHECK(ncpost::cl::looks_like_apt(head_of(ncpost::test::data(std::string("real/") + f))));
   }
   for (const char* f : {"nx_PostProcessed_SimpleMillPlane.txt", "nx_PostProcessed_Variable_Axis.txt",
                         "nx_PostProcessed_Zig_Zag_Smoothed.txt", "linuxcnc_boat-xyzbc.ngc",
                         "linuxcnc_impeller-7bl-xyzac.ngc"}) {
     INFO(f);
-    CHECK_FALSE(ncpost::cl::looks_like_apt(head_of(ncpost::test::shared(std::string("data/real/") + f))));
+    CHECK_FALSE(ncpost::cl::looks_like_apt(head_of(ncpost::test::data(std::string("real/") + f))));
   }
 }
 

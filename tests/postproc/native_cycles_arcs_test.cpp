@@ -26,7 +26,7 @@ std::string read_text(const std::string& path) {
 
 /// Posts a real APT file on `machine` and returns the program text.
 std::string post(const std::string& file, const Machine& m, bool native_arcs, PostSummary* summary = nullptr) {
-  std::ifstream in(test::shared("data/real/" + file), std::ios::binary);
+  std::ifstream in(test::data("real/" + file), std::ios::binary);
   cl::AptReader reader(in, file);
   const std::string out_path = "native_cycles_arcs_test_" + std::to_string(native_arcs) + ".nc";
   {
@@ -81,14 +81,14 @@ double path_length_mm(const std::string& program, const Machine& m, std::size_t*
 TEST_CASE("G2/G3 from NX CIRCLE records: NX's own post's directions") {
   const Machine m = load_machine(test::source("machines/haas-umc750.toml"));
   const std::string ours = post("nx_APT_SimpleMillPlane.txt", m, true);
-  const std::string theirs = read_text(test::shared("data/real/nx_PostProcessed_SimpleMillPlane.txt"));
+  const std::string theirs = read_text(test::data("real/nx_PostProcessed_SimpleMillPlane.txt"));
   CHECK(arc_directions(ours) == arc_directions(theirs));
   CHECK(arc_directions(ours) == std::vector<int>{3, 3});
   CHECK_THAT(ours, Catch::Contains("G3 X-265.0000 Y164.9997 Z100.0000 I7.5000 J0.0000"));  // NX: G03 X-10.4331 Y6.4961 I.2953
 
   // Zig-zag: 35 CIRCLE records; NX writes the 0.85-degree one (chord 0.036 mm) as a line, we as an arc
   std::vector<int> zz = arc_directions(post("nx_APT_Zig_Zag_Smoothed.txt", m, true));
-  const std::vector<int> nx = arc_directions(read_text(test::shared("data/real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
+  const std::vector<int> nx = arc_directions(read_text(test::data("real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
   REQUIRE(zz.size() == 35);
   REQUIRE(nx.size() == 34);
   zz.erase(zz.begin() + 2);  // the tiny arc, third in the file
@@ -121,7 +121,7 @@ TEST_CASE("CYCLE/DEEP as G83 where the hole runs down Z, explicit pecks otherwis
   CHECK_THAT(program, Catch::Contains("G98 G83 X-16.7804 Y-23.0000 Z-3.0000 R1.5000 Q1.0000 F50.0"));
   CHECK_THAT(program, Catch::Contains("G80"));
   // Sinumerik has no G83: the pecks are written as moves (depth reached at Z-3)
-  std::ifstream in(test::shared("data/real/" + file), std::ios::binary);
+  std::ifstream in(test::data("real/" + file), std::ios::binary);
   cl::AptReader reader(in, file);
   {
     AtomicFile out("native_cycles_sinumerik.nc");

@@ -59,7 +59,7 @@ Outcome post_on_truth(const Machine& m, const Setup& setup, const std::string& c
 }  // namespace
 
 TEST_CASE("public-clean: identified model, dome path at 0.002 mm, executed on the truth within 5 um", "[model][post]") {
-  const std::string dir = test::shared("data/scenarios/public-clean/");
+  const std::string dir = test::data("scenarios/public-clean/");
   const Machine m = load_machine(dir + "machine.toml");
   std::vector<comp::MeasurementSet> sets;
   for (const char* f : {"ballbar_h250.csv", "ballbar_h300.csv", "sphere.csv"})

@@ -72,7 +72,7 @@ Posted post_text(const Machine& m, const Setup& setup, const std::string& cl, co
 }  // namespace
 
 TEST_CASE("read-ahead: --model --tolerance on the dome writes the same program as one thread", "[post][threads]") {
-  const std::string dir = test::shared("data/scenarios/public-clean/");
+  const std::string dir = test::data("scenarios/public-clean/");
   const Machine m = load_machine(dir + "machine.toml");
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);
@@ -106,7 +106,7 @@ TEST_CASE("read-ahead: real files with arcs, cycles and programmed angles post t
     const Setup setup;
     std::string program[2];
     for (int threads : {1, 2}) {
-      std::ifstream in(test::shared(std::string("data/real/") + c.file), std::ios::binary);
+      std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
       std::unique_ptr<cl::Reader> reader;
       if (c.gcode) reader = std::make_unique<gcode::GcodeClReader>(in, c.file, m, setup);
       else reader = std::make_unique<cl::AptReader>(in, c.file);
@@ -128,7 +128,7 @@ TEST_CASE("read-ahead: real files with arcs, cycles and programmed angles post t
 }
 
 TEST_CASE("read-ahead: a model with reversal is solved on the post's thread, same program", "[post][threads]") {
-  const std::string dir = test::shared("data/scenarios/public-clean/");
+  const std::string dir = test::data("scenarios/public-clean/");
   const Machine m = load_machine(dir + "machine.toml");
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);
@@ -143,7 +143,7 @@ TEST_CASE("read-ahead: a model with reversal is solved on the post's thread, sam
 }
 
 TEST_CASE("read-ahead: errors surface at their line; a failed post stops the reading thread", "[post][threads]") {
-  const std::string dir = test::shared("data/scenarios/public-clean/");
+  const std::string dir = test::data("scenarios/public-clean/");
   const Machine m = load_machine(dir + "machine.toml");
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);

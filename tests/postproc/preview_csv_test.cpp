@@ -34,7 +34,7 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path, std::str
 }  // namespace
 
 TEST_CASE("ncpost preview --csv on the dome path", "[preview]") {
-  const std::string scenario = test::shared("data/scenarios/public-clean/");
+  const std::string scenario = test::data("scenarios/public-clean/");
   const std::string cmd = std::string(NCPOST_BINARY) + " preview --machine " + scenario +
                           "machine.toml --workpiece-origin 0,0,80 --csv preview_csv_test.csv " + scenario +
                           "path.cls > preview_csv_test.out 2>&1";
@@ -75,7 +75,7 @@ TEST_CASE("ncpost preview --csv on the dome path", "[preview]") {
 }
 
 TEST_CASE("ncpost preview: exit codes", "[preview]") {
-  const std::string scenario = test::shared("data/scenarios/public-clean/");
+  const std::string scenario = test::data("scenarios/public-clean/");
   auto run = [](const std::string& args) {
     return WEXITSTATUS(std::system((std::string(NCPOST_BINARY) + " preview " + args + " > preview_rc.out 2>&1").c_str()));
   };
@@ -87,7 +87,7 @@ TEST_CASE("ncpost preview: exit codes", "[preview]") {
 }
 
 TEST_CASE("ncpost preview --model: the blocks of the compensated program on the actual machine", "[preview][model]") {
-  const std::string scenario = test::shared("data/scenarios/public-clean/");
+  const std::string scenario = test::data("scenarios/public-clean/");
   const std::string cmd = std::string(NCPOST_BINARY) + " preview --machine " + scenario +
                           "machine.toml --workpiece-origin 0,0,80 --model " + scenario +
                           "truth.json --csv preview_model_test.csv " + scenario + "path.cls > preview_model_test.out 2>&1";

@@ -24,7 +24,7 @@ bool have_chromium() { return std::system("command -v chromium > /dev/null 2>&1"
 }  // namespace
 
 TEST_CASE("ncpost preview --html renders in headless Chromium", "[preview][html]") {
-  const std::string scenario = ncpost::test::shared("data/scenarios/public-clean/");
+  const std::string scenario = ncpost::test::data("scenarios/public-clean/");
   const std::string cmd = std::string(NCPOST_BINARY) + " preview --machine " + scenario +
                           "machine.toml --workpiece-origin 0,0,80 --html preview_html_test.html " + scenario +
                           "path.cls > preview_html_test.out 2>&1";

@@ -12,9 +12,9 @@
 using namespace ncpost;
 
 TEST_CASE("public-clean dome path: every CL point is hit exactly by the posted commands") {
-  const Machine m = load_machine(test::shared("data/scenarios/public-clean/machine.toml"));
+  const Machine m = load_machine(test::data("scenarios/public-clean/machine.toml"));
   const Setup setup{Vec3d(0, 0, 80), 0.0};  // job.json
-  std::ifstream in(test::shared("data/scenarios/public-clean/path.cls"));
+  std::ifstream in(test::data("scenarios/public-clean/path.cls"));
   cl::AptReader reader(in, "path.cls");
   NominalSolver solver(m, setup);
   AxisPosition previous;
@@ -40,9 +40,9 @@ TEST_CASE("public-clean dome path: every CL point is hit exactly by the posted c
 }
 
 TEST_CASE("public-clean dome path: the written program re-executes onto the CL points (rounding only)") {
-  const Machine m = load_machine(test::shared("data/scenarios/public-clean/machine.toml"));
+  const Machine m = load_machine(test::data("scenarios/public-clean/machine.toml"));
   const Setup setup{Vec3d(0, 0, 80), 0.0};
-  std::ifstream in(test::shared("data/scenarios/public-clean/path.cls"));
+  std::ifstream in(test::data("scenarios/public-clean/path.cls"));
   cl::AptReader reader(in, "path.cls");
   NominalSolver solver(m, setup);
   const std::string out_path = "public_clean_test_out.nc";

@@ -1,4 +1,4 @@
-// Every real file of shared/data/real/ (README there) posts completely on a machine of its kind,
+// Every real file of tests/data/real/ (SOURCES.md there) posts completely on a machine of its kind,
 // with one output motion per input motion: exactly, less the motions that change no axis word
 // (duplicates, which produce no block), where the file has no circles or cycles, counting a rapid
 // written in two blocks (retract first / descend last) once; with more (expanded arcs and cycles)
@@ -39,7 +39,7 @@ std::unique_ptr<cl::Reader> open(std::istream& in, const Case& c, const Machine&
 
 /// Motions that repeat the previous one (tip, axis and programmed angles): no axis word changes.
 std::size_t duplicates(const Case& c, const Machine& m, const Setup& setup) {
-  std::ifstream in(test::shared(std::string("data/real/") + c.file), std::ios::binary);
+  std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
   auto reader = open(in, c, m, setup);
   std::size_t n = 0;
   std::optional<cl::Motion> last;
@@ -77,7 +77,7 @@ TEST_CASE("every real file posts with one output motion per input motion") {
     INFO(c.file << " on " << c.machine);
     const Machine m = load_machine(test::source(std::string("machines/") + c.machine + ".toml"));
     const Setup setup;
-    std::ifstream in(test::shared(std::string("data/real/") + c.file), std::ios::binary);
+    std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
     REQUIRE(in);
     auto reader = open(in, c, m, setup);
     AtomicFile out("real_files_post_test_out.nc");

@@ -172,7 +172,7 @@ TEST_CASE("preview --csv and --html on the TRR-XY machine: one row per feed bloc
 TEST_CASE("a CL point out of reach: exit 3 naming the line and the axis") {
   std::string err;
   CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_far.nc " +
-            test::shared("data/scenarios/public-clean/path.cls"), &err) == 3);
+            test::data("scenarios/public-clean/path.cls"), &err) == 3);
   CHECK(err.find("path.cls:729: V623.8594 is outside the limits [0, 600]") != std::string::npos);
   CHECK_FALSE(std::ifstream("trr_far.nc").good());
   std::ofstream("trr_bad_model.json") << "{\n \"machine\": \"trr-xy\",\n \"parameters\": {\"EX0C\": 0.01}\n}\n";

@@ -43,8 +43,8 @@ std::vector<std::pair<double, double>> nx_rotary_per_block(const std::string& pa
 
 TEST_CASE("UMC-750: B and C of every GOTO equal NX's post output") {
   const Machine m = load_machine(test::source("machines/haas-umc750.toml"));
-  const auto nx = nx_rotary_per_block(test::shared("data/real/nx_PostProcessed_Variable_Axis.txt"));
-  std::ifstream cl_in(test::shared("data/real/nx_APT_Variable_Axis.txt"));
+  const auto nx = nx_rotary_per_block(test::data("real/nx_PostProcessed_Variable_Axis.txt"));
+  std::ifstream cl_in(test::data("real/nx_APT_Variable_Axis.txt"));
   cl::AptReader reader(cl_in, "nx_APT_Variable_Axis.txt", {.default_inch = true});
   NominalSolver solver(m, {});
   AxisPosition previous;
