@@ -23,7 +23,7 @@ status=0
 for target in $TARGETS; do
   case $target in
     fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
-    *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc' ;;
+    *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc *.nc *.gcode' ;;
   esac
   corpus="$BUILD/fuzz/corpus/$target"
   findings="$BUILD/fuzz/findings/$target"
