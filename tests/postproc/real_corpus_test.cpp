@@ -141,6 +141,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       args += " " + ncpost::test::data("real/" + file);
       const int rc = ncpost::test::run_ncpost(args, log);
       const std::string messages = ncpost::test::read_text_file(log);
+      std::printf("%-40s %-12s expect %-6s exit %d\n", file.c_str(), e.at("machine").get<std::string>().c_str(),
+                  e.at("expect").get<std::string>().c_str(), rc);
       INFO(file << " on " << e.at("machine").get<std::string>() << " (" << e.at("system").get<std::string>()
                 << "): exit " << rc << "\n" << messages.substr(0, 600));
 
