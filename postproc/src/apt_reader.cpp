@@ -238,6 +238,16 @@ struct AptReader::State {
       c.axis = nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized());
       c.radius_mm = scale * v[6];
       pending.push_back(c);
+    } else if (w == "CUTCOM") {
+      CutterComp c;
+      c.where = at;
+      c.text = st.raw_arguments;
+      if (has_word(st, "LEFT")) c.side = CutterComp::Side::left;
+      else if (has_word(st, "RIGHT")) c.side = CutterComp::Side::right;
+      else if (!has_word(st, "OFF")) fail(at, "CUTCOM expects LEFT, RIGHT or OFF", text);
+      const auto v = numbers_of(st);
+      if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
+      pending.push_back(c);
     } else if (w == "CYCLE") {
       pending.push_back(cycle(st));
     } else if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
@@ -248,7 +258,7 @@ struct AptReader::State {
     } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
       pending.push_back(End{at, w == "FINI"});
     } else if (w == "MSYS" || w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" ||
-               w == "CUTCOM" || w == "MACHIN" || w == "CLRSRF" || w == "SELCTL") {
+               w == "MACHIN" || w == "CLRSRF" || w == "SELCTL") {
       // Information for the post that does not change the motion: kept as a comment.
       if (w != "PAINT") comment(w + (st.has_slash ? "/" + st.raw_arguments : ""));
     } else {

@@ -90,6 +90,8 @@ class Poster {
 
   void on(const cl::Circle& c) { pending_circle_ = c; }
   void on(const cl::Cycle& c) { cycle_ = c; }
+  // Not yet acted on: passed through as a comment, as before this record had its own type.
+  void on(const cl::CutterComp& c) { records_.comment(cl::Comment{c.where, "CUTCOM/" + c.text}); }
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}

@@ -68,6 +68,8 @@ class Poster {
     if (c.kind != cl::Cycle::Kind::off)
       notice(c.where, "drilling cycles are not expanded on the TRR-XY machine: the hole positions are plain points");
   }
+  // Not yet acted on: passed through as a comment, as before this record had its own type.
+  void on(const cl::CutterComp& c) { records_.comment(cl::Comment{c.where, "CUTCOM/" + c.text}); }
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}

@@ -78,6 +78,16 @@ struct Cycle {
   std::string text;            ///< the record as written
 };
 
+/// CUTCOM/LEFT|RIGHT|OFF (APT) or G41/G42/G40 (G-code): cutter radius compensation in the
+/// plane normal to the tool axis, from the next motion on. `offset_register`: the D number where
+/// the source names one (CUTCOM/LEFT,5 or G41 D5).
+struct CutterComp {
+  Location where;
+  enum class Side { off, left, right } side = Side::off;
+  std::optional<int> offset_register;
+  std::string text;            ///< the record as written
+};
+
 /// PPRINT, PARTNO, INSERT, `$$` comments and anything passed through as a comment.
 struct Comment {
   Location where;
@@ -96,7 +106,8 @@ struct End {
   bool program = false;        ///< FINI: end of the whole program
 };
 
-using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, Circle, Cycle, Comment, Unsupported, End>;
+using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, Circle, Cycle, CutterComp, Comment, Unsupported,
+                            End>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {
