@@ -70,10 +70,11 @@ void NcWriter::begin_program(const std::string& name, const std::vector<std::str
   block(dialect_.name == "sinumerik" ? "G90 G71 G94 G17" : "G90 G21 G94 G17 G40 G49 G80");
 }
 
-void NcWriter::rtcp(bool on) {
-  const std::string& w = on ? dialect_.rtcp_on : dialect_.rtcp_off;
-  if (!w.empty()) block(w);
+void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
+  for (const auto& words : blocks) block(with_tool(words, tool));
 }
+
+void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
 
 bool NcWriter::motion(const NcMotion& m) {
   const std::size_t line_start = buf_.size();
