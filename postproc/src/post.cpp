@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lookahead.hpp"
+#include "ncpost/postproc/unreachable.hpp"
 #include "record_blocks.hpp"
 
 namespace ncpost {
@@ -119,9 +120,7 @@ class Poster {
         ik = solver_.solve(cl, previous_.q);
       }
       if (!ik.ok())
-        throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f})", input_,
-                                     line, ik.failure.message, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(),
-                                     cl.axis.x(), cl.axis.y(), cl.axis.z()));
+        throw Infeasible(unreachable_message(input_, line, solver_, cl, previous_.q, ik.failure.message));
       next.q = *ik.position;
       next.executed = ik.executed;
     }
@@ -187,9 +186,10 @@ class Poster {
     const IkOutcome a = solver_.solve(up_here, previous_.q);
     const IkOutcome b = solver_.solve(up_there, next.q);
     if (!a.ok() || !b.ok())
-      throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution, and the retract point {} mm "
-                                   "along the tool axis is out of reach: {}", input_, line, d,
-                                   !a.ok() ? a.failure.message : b.failure.message));
+      throw Infeasible(unreachable_message(
+          input_, line, solver_, !a.ok() ? up_here : up_there, !a.ok() ? previous_.q : next.q,
+          fmt::format("the axis limits force a change of solution, and the retract point {} mm along the tool axis "
+                      "is out of reach: {}", d, !a.ok() ? a.failure.message : b.failure.message)));
     summary_.notices.push_back(fmt::format(
         "{}:{}: the axis limits force a change of solution (rotary {:.3f}, {:.3f} -> {:.3f}, {:.3f} deg): retract "
         "{} mm along the tool axis, reorient, re-engage", input_, line, rad_to_deg(previous_.q.rotary_rad[0]),

@@ -16,6 +16,10 @@
 
 namespace ncpost {
 
+/// `post` bounds the nonlinear error of every block to this by default (mm, as NX and Fusion post
+/// with a default tolerance); `--tolerance none` writes one block per CL motion.
+constexpr double kDefaultTolerance_mm = 0.01;
+
 /// Largest distance (mm) of the block's tips from the rotary pivots, in M at home, plus the tool
 /// length: how far a rounded angle can move the tip.
 double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint& a, const ClPoint& b);
