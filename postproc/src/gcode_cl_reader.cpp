@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "ncpost/kinematics/forward.hpp"
+#include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/gcode_line_source.hpp"
 #include "ncpost/postproc/gcode_modal.hpp"
@@ -115,9 +117,41 @@ struct GcodeClReader::State {
     const Rigidd table_T_tool = nominal_table_T_tool(q);
     m.point.axis = table_T_tool.R.col(2);
     m.point.tip_mm = last_rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
+    if (options.check_limits)
+      check_limits(last_rtcp ? AxisPosition{linear_for(machine, q.rotary_rad, q.linear_mm, setup), q.rotary_rad} : q,
+                 last_rtcp, where);
     m.inverse_time = effect.inverse_time;
     m.feed = effect.motion_feed;
     return m;
+  }
+
+  /// Infeasible (exit 3) when the machine commands `q` of a motion lie beyond an axis limit: the
+  /// re-posted program must fit the machine like one posted from CL data.
+  void check_limits(const AxisPosition& q, bool rtcp, cl::Location where) const {
+    // rotary axes first: in an RTCP program the linear commands follow from them
+    const std::size_t n = machine.axes.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (k + 3) % n;
+      const Axis& axis = machine.axes[i];
+      const double v = q[static_cast<int>(i)];
+      if (!axis.limits || axis.limits->contains(v, axis.is_rotary() ? 1e-9 : 1e-6)) continue;
+      const bool rotary = axis.is_rotary();
+      const double scale = rotary ? 180.0 / kPi : 1.0;
+      const char* unit = rotary ? "deg" : "mm";
+      const std::string subject =
+          rtcp && !rotary ? fmt::format("the programmed tool tip needs machine {} {:.3f} {}", axis.letter, v * scale, unit)
+                          : fmt::format("{} {:.3f} {}", axis.letter, v * scale, unit);
+      const std::string what_to_check =
+          rotary ? "check the program's angles against the machine file"
+                 : rtcp ? "check --workpiece-origin and --tool-length, or the machine file"
+                        : "check --workpiece-origin, or the machine file";
+      throw Infeasible(fmt::format(
+          "{}:{}:{}: {}, beyond the {} axis limit {:.3f} {} (travel {:.3f} .. {:.3f} {}) of machine {}: the program "
+          "does not fit the machine; {}",
+          file, where.line, where.column, subject, axis.letter,
+          (v > axis.limits->max ? axis.limits->max : axis.limits->min) * scale, unit, axis.limits->min * scale,
+          axis.limits->max * scale, unit, machine.name, what_to_check));
+    }
   }
 
   void check_rtcp_forced(int line) {
@@ -202,6 +236,7 @@ struct GcodeClReader::State {
     if (fx.tool_change) before.push_back(*fx.tool_change);
     if (fx.spindle) before.push_back(*fx.spindle);
     if (fx.coolant) before.push_back(*fx.coolant);
+    if (fx.cutter_comp) before.push_back(*fx.cutter_comp);
     for (const auto& u : fx.before_motion) before.push_back(u);
     if (fx.has_motion) {
       const cl::Location where{line_number, block.column};

@@ -22,6 +22,8 @@
 // control's motion) and then mapped like any motion; under G93 each of the n segments gets
 // n x F so that the arc still takes 1/F minutes.
 // Units: G20 (inch) lengths and feeds are converted to mm; rotary words are degrees.
+// Limits: a motion whose machine commands lie beyond an axis limit is Infeasible (exit 3), in
+// every InputKind (GcodeReaderOptions::check_limits).
 // Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
 // as truncated: InputError); text after the closing '%' is ignored, and so are lines before the
 // opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,
@@ -48,6 +50,10 @@ struct GcodeReaderOptions {
   bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
   bool block_delete = true;              ///< skip blocks that start with '/'
   double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
+  /// Every motion's machine commands (machine program: the words; RTCP: the linear axes that put
+  /// the tip there at the programmed angles) must lie within the machine's axis limits, else
+  /// Infeasible (exit 3) naming the line, the axis and the limit. Off only to study a reading.
+  bool check_limits = true;
 
   /// Empty when valid, else what is wrong.
   std::string validate() const;
