@@ -163,8 +163,16 @@ int run_post(const PostArgs& given) {
   NcWriter writer(out, dialect, axis_letters(job.machine));
   std::optional<ExecutedOn> verify_solver;
   if (executing) verify_solver.emplace(*solver, *executing, job.setup);
-  const PostSummary summary = post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
-                                           writer, options);
+  const PostSummary summary = [&] {
+    try {
+      return post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
+                          writer, options);
+    } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
+      const std::string hint = reader->failure_hint();
+      if (hint.empty()) throw;
+      throw Infeasible(std::string(e.what()) + "\n  " + hint);
+    }
+  }();
   if (tty) fmt::print(stderr, "\r");
   for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
   acc.motions_in = summary.motions_in;
