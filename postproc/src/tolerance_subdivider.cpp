@@ -38,6 +38,16 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
                                                 double tolerance_mm) {
   if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
   const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT);
+  // cheap screen on the nominal closed form (no linear axes): does any rotary solution just after
+  // the start lie near the start's angles?
+  for (const RotarySolution& r : rotary_solutions(machine, probe.axis)) {
+    double jump = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      const double d = r.rotary_rad[k] - from.q.rotary_rad[k];
+      jump = std::max(jump, std::abs(d - 2.0 * kPi * std::round(d / (2.0 * kPi))));
+    }
+    if (r.free_axis < 0 && jump <= 0.5 * kSingularJumpRad) return {};
+  }
   const IkOutcome o = solver.solve_quiet(probe, from.q, nullptr);
   if (!o.ok()) return {};
   const Eigen::Vector2d swing = o.position->rotary_rad - from.q.rotary_rad;
