@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -108,21 +109,89 @@ struct GcodeClReader::State {
     m.where = where;
     m.axis_given = true;
     m.rapid = effect.motion == MotionMode::rapid;
+    m.inverse_time = effect.inverse_time;
+    m.feed = effect.motion_feed;
+    last_rtcp = rtcp_now();
+    locate(m, p, last_rtcp);
+    return m;
+  }
+
+  /// The tip, tool axis and angles of the program point `p` (RTCP or machine reading), checked
+  /// against the machine's limits.
+  void locate(cl::Motion& m, const ProgramPoint& p, bool rtcp) const {
     AxisPosition q;
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
     for (int k = 0; k < machine.rotary_count(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     if (machine.rotary_count() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
-    last_rtcp = rtcp_now();
     const Rigidd table_T_tool = nominal_table_T_tool(q);
     m.point.axis = table_T_tool.R.col(2);
-    m.point.tip_mm = last_rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
+    m.point.tip_mm = rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
     if (options.check_limits)
-      check_limits(last_rtcp ? AxisPosition{linear_for(machine, q.rotary_rad, q.linear_mm, setup), q.rotary_rad} : q,
-                 last_rtcp, where);
-    m.inverse_time = effect.inverse_time;
-    m.feed = effect.motion_feed;
-    return m;
+      check_limits(rtcp ? AxisPosition{linear_for(machine, q.rotary_rad, q.linear_mm, setup), q.rotary_rad} : q, rtcp,
+                   m.where);
+  }
+
+  // ---- the start of the program: rapids before every axis is programmed are held back until
+  // the axes they lack are programmed, then take those first values (the program starts where it
+  // first says, never with a rapid to 0 the source did not make); a feed motion, an arc or the
+  // end releases them with 0 for the axes still unknown (where a control starting at program zero
+  // would be).
+  struct HeldMotion {
+    std::size_t index;  ///< into `held`
+    ProgramPoint p;
+    std::array<bool, 6> assumed;
+    bool rtcp;
+  };
+  static constexpr std::size_t kMaxHeld = 4096;  ///< records; beyond, release (memory stays flat)
+  std::vector<cl::Record> held;
+  std::vector<HeldMotion> held_motions;
+  bool start_settled = false;  ///< every axis known, or released: no more holding
+
+  /// Moves the current block's records (`before`, `after`) into `held`, the motion not located yet.
+  void hold_block(const BlockEffect& fx, cl::Location where) {
+    for (auto& r : before) held.push_back(std::move(r));
+    before.clear();
+    cl::Motion m;
+    m.where = where;
+    m.axis_given = true;
+    m.rapid = true;
+    m.feed = fx.motion_feed;
+    last_rtcp = rtcp_now();
+    held_motions.push_back(HeldMotion{held.size(), fx.end, fx.assumed, last_rtcp});
+    held.push_back(std::move(m));
+    for (auto& r : after) held.push_back(std::move(r));
+    after.clear();
+  }
+
+  /// Locates the held motions with the first programmed values of the axes they lacked (0 for
+  /// those still unknown) and puts the held records before the current block's.
+  /// `usable`: the axes whose first values may be taken (a feed motion that programs an axis for
+  /// the first time starts from 0 in it, as the notice says; the held rapids end there too).
+  void release_held(const std::array<bool, 6>& usable) {
+    start_settled = true;
+    if (held.empty()) return;
+    for (HeldMotion& h : held_motions) {
+      for (std::size_t i = 0; i < 6; ++i)
+        if (h.assumed[i]) h.p[i] = usable[i] ? first_value[i] : 0.0;
+      locate(std::get<cl::Motion>(held[h.index]), h.p, h.rtcp);
+    }
+    before.insert(before.begin(), std::make_move_iterator(held.begin()), std::make_move_iterator(held.end()));
+    held.clear();
+    held_motions.clear();
+  }
+
+  std::array<double, 6> first_value{};  ///< of each axis, once known (program units: mm, rad)
+  std::array<bool, 6> known_before{};
+
+  /// After a block: records the first values of the axes it programmed.
+  void note_first_values() {
+    const ModalState& st = interpreter.state();
+    for (std::size_t i = 0; i < 6; ++i)
+      if (st.known[i] && !known_before[i]) {
+        first_value[i] = st.position[i];
+        known_before[i] = true;
+      }
   }
 
   /// Infeasible (exit 3) when the machine commands `q` of a motion lie beyond an axis limit: the
@@ -210,6 +279,7 @@ struct GcodeClReader::State {
     if (leader_lines < 0) find_leader();
     std::string_view line;
     if (!source.next(line)) {
+      release_held(known_before);
       finish_input();
       return false;
     }
@@ -222,6 +292,7 @@ struct GcodeClReader::State {
         opened_percent = true;
         return true;
       }
+      release_held(known_before);
       return false;  // the closing '%': the rest of the file is not part of the program
     }
     seen_content = true;
@@ -229,6 +300,8 @@ struct GcodeClReader::State {
     for (const BlockComment& c : block.comments)
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
     interpreter.apply(block, line_number, line, effect);
+    const std::array<bool, 6> known_prior = known_before;
+    note_first_values();
     check_rtcp_forced(line_number);
     for (auto& n : interpreter.take_notices()) notices.push_back(std::move(n));
     const BlockEffect& fx = effect;
@@ -252,14 +325,32 @@ struct GcodeClReader::State {
         arc_segment = 0;
         arc_where = where;
         if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
+      } else if (!start_settled && fx.motion == MotionMode::rapid && held.size() < kMaxHeld) {
+        for (const auto& u : fx.after_motion) after.push_back(u);
+        hold_block(fx, where);
+        if (std::none_of(fx.assumed.begin(), fx.assumed.end(), [](bool b) { return b; })) release_held(known_before);
+        if (fx.program_end) {
+          release_held(known_before);
+          after.push_back(cl::End{cl::Location{line_number, block.column}, true});
+          return false;
+        }
+        return true;
       } else {
         before.push_back(motion_at(fx.end, where));
       }
+      if (!start_settled) release_held(known_prior);  // a feed motion or an arc starts from the held position
     }
     for (const auto& u : fx.after_motion) after.push_back(u);
     if (fx.program_end) {
+      release_held(known_before);
       after.push_back(cl::End{cl::Location{line_number, block.column}, true});
       return false;
+    }
+    if (!held.empty()) {  // a block without motion between held rapids keeps its place
+      for (auto& r : before) held.push_back(std::move(r));
+      for (auto& r : after) held.push_back(std::move(r));
+      before.clear();
+      after.clear();
     }
     return true;
   }
