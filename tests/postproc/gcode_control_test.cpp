@@ -215,3 +215,74 @@ TEST_CASE("gcode control: motions beyond the machine's axis limits are Infeasibl
   const Read ok = read_all("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z600 A120 C720 F100\nM30\n");
   CHECK(only<cl::Motion>(ok.records).size() == 2);
 }
+
+namespace {
+
+std::vector<cl::Record> read_vmc(const std::string& text) {
+  static const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;  // tips in W as written
+  std::istringstream in(text);
+  GcodeClReader r(in, "t.ngc", vmc, Setup{}, o);
+  std::vector<cl::Record> out;
+  while (auto x = r.next()) out.push_back(std::move(*x));
+  return out;
+}
+
+void check_tip(const cl::Motion& m, double x, double y, double z) {
+  INFO("line " << m.where.line);
+  CHECK(m.point.tip_mm.x() == Approx(x).margin(1e-12));
+  CHECK(m.point.tip_mm.y() == Approx(y).margin(1e-12));
+  CHECK(m.point.tip_mm.z() == Approx(z).margin(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("gcode control: the program starts at its first programmed position, not with a rapid to 0") {
+  {  // rapids only until every axis is programmed: they take the first values
+    const auto rs = read_vmc("G21 G90\nG0 Z10\nT1 M6\nG0 Y100\nG0 X-25\nG1 Z0 F100\nM30\n");
+    const auto ms = only<cl::Motion>(rs);
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -25, 100, 10);
+    check_tip(ms[1], -25, 100, 10);
+    check_tip(ms[2], -25, 100, 10);
+    check_tip(ms[3], -25, 100, 0);
+    CHECK(ms[0].where.line == 2);
+    // the tool change keeps its place between the held rapids
+    std::vector<int> order;
+    for (const auto& r : rs) {
+      if (const auto* m = std::get_if<cl::Motion>(&r)) order.push_back(m->where.line);
+      if (std::holds_alternative<cl::ToolChange>(r)) order.push_back(-3);
+    }
+    CHECK(order == std::vector<int>{2, -3, 4, 5, 6});
+  }
+  {  // a feed motion comes first for Y (CAMotics cds.gcode): Y is 0 there, as at a control's program zero
+    const auto ms = only<cl::Motion>(read_vmc("G21\nF400\nG0 Z3\nG0 X-26.9938\nG1 Z-1.5\nG1 X0 Y-26.9938\nM30\n"));
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -26.9938, 0, 3);
+    check_tip(ms[1], -26.9938, 0, 3);
+    check_tip(ms[2], -26.9938, 0, -1.5);
+    check_tip(ms[3], 0, -26.9938, -1.5);
+  }
+  {  // the feed motion that programs X and Y first starts from 0 in them
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nG1 X5 Y5 F100\nM30\n"));
+    REQUIRE(ms.size() == 2);
+    check_tip(ms[0], 0, 0, 10);
+    check_tip(ms[1], 5, 5, 10);
+  }
+  {  // the end before the other axes: 0
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nM30\n"));
+    REQUIRE(ms.size() == 1);
+    check_tip(ms[0], 0, 0, 10);
+  }
+  {  // rotary axes the program never writes: 0 on the five-axis machine, from the first feed motion on
+    const Read r = read_all("G0 Z10\nG0 X1 Y2\nG1 X3 F100\nM30\n");
+    const auto ms = only<cl::Motion>(r.records);
+    REQUIRE(ms.size() == 3);
+    for (const auto& m : ms) {
+      REQUIRE(m.rotary_rad);
+      CHECK(m.rotary_rad->norm() == 0.0);
+    }
+    CHECK(any_contains(r.notices, "t.ngc:1:4: X, Y, A, C not programmed before the first motion"));
+  }
+}
