@@ -132,6 +132,71 @@ struct GcodeClReader::State {
                    m.where);
   }
 
+  // ---- G93 (inverse time): the source gives each block's time (1/F minutes). The post times a
+  // block by max(tip path mm, rotary travel deg) / feed, so each G93 motion is preceded by the
+  // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
+  std::optional<cl::Motion> pending_motion;  ///< an arc segment waiting behind its feed record
+  std::optional<Vec3d> last_tip;
+  Eigen::Vector2d last_rotary = Eigen::Vector2d::Zero();
+
+  /// The feed record of a G93 motion (nullopt otherwise); follows the last position in any case.
+  std::optional<cl::Feed> source_time_feed(const cl::Motion& m) {
+    std::optional<cl::Feed> out;
+    const Eigen::Vector2d rotary = m.rotary_rad ? Eigen::Vector2d(*m.rotary_rad) : Eigen::Vector2d::Zero();
+    if (m.inverse_time && m.feed && *m.feed > 0.0 && last_tip) {
+      const double length_mm = (m.point.tip_mm - *last_tip).norm();
+      const double travel_deg = (rotary - last_rotary).cwiseAbs().maxCoeff() * 180.0 / kPi;
+      const double reach = std::max(length_mm, travel_deg);
+      if (reach > 1e-9) out = cl::Feed{m.where, reach * *m.feed, false};
+    }
+    last_tip = m.point.tip_mm;
+    last_rotary = rotary;
+    return out;
+  }
+
+  // ---- rollover: a continuous rotary axis whose values all lie within 0 .. 360 deg and that
+  // jumps by more than 180 deg (C359.857 -> C7.501) was programmed for a control that turns the
+  // short way across 0; the reader makes that turn explicit (C367.501), so the post, its G93 time
+  // and --verify all turn the same way. A value outside 0 .. 360 marks a program that counts turns
+  // (LinuxCNC's C-399.8): no unwrapping on that axis from then on.
+  std::array<double, 2> wrap_offset_rad{};      ///< added to rotary axis k's programmed value
+  std::array<bool, 2> counts_turns{};           ///< a value outside 0 .. 360 deg was seen
+  std::array<std::optional<double>, 2> last_programmed_rad{};
+
+  ProgramPoint unwrapped(ProgramPoint p) const {
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
+      p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])] += wrap_offset_rad[static_cast<std::size_t>(k)];
+    return p;
+  }
+
+  /// `may_unwrap`: false for arcs (their rotary words are followed, not unwrapped).
+  void update_wrap(const BlockEffect& fx, int line, bool may_unwrap) {
+    constexpr double kTurn = 2.0 * kPi;
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const double v = fx.end[static_cast<std::size_t>(rotary_axis[ku])];
+      const auto previous = last_programmed_rad[ku];
+      last_programmed_rad[ku] = v;
+      if (!may_unwrap || !machine.rotary(k).continuous() || interpreter.state().incremental) continue;
+      if (v < -1e-9 || v > kTurn + 1e-9) counts_turns[ku] = true;
+      if (counts_turns[ku] || !previous || std::abs(v - *previous) <= kPi + 1e-12) continue;
+      const double before = *previous + wrap_offset_rad[ku];
+      double offset = wrap_offset_rad[ku];
+      while (v + offset - before > kPi) offset -= kTurn;
+      while (v + offset - before < -kPi) offset += kTurn;
+      wrap_offset_rad[ku] = offset;
+      if (!wrap_noticed[ku]) {
+        wrap_noticed[ku] = true;
+        notices.push_back(fmt::format(
+            "{}:{}: {} {:.3f} -> {:.3f} deg read the short way ({:+.3f} deg across 0/360, as a rollover axis "
+            "turns): written as {} {:.3f}",
+            file, line, machine.rotary(k).letter, *previous * 180.0 / kPi, v * 180.0 / kPi,
+            (v + offset - before) * 180.0 / kPi, machine.rotary(k).letter, (v + offset) * 180.0 / kPi));
+      }
+    }
+  }
+  std::array<bool, 2> wrap_noticed{};
+
   // ---- the start of the program: rapids before every axis is programmed are held back until
   // the axes they lack are programmed, then take those first values (the program starts where it
   // first says, never with a rapid to 0 the source did not make); a feed motion, an arc or the
@@ -158,7 +223,7 @@ struct GcodeClReader::State {
     m.rapid = true;
     m.feed = fx.motion_feed;
     last_rtcp = rtcp_now();
-    held_motions.push_back(HeldMotion{held.size(), fx.end, fx.assumed, last_rtcp});
+    held_motions.push_back(HeldMotion{held.size(), unwrapped(fx.end), fx.assumed, last_rtcp});
     held.push_back(std::move(m));
     for (auto& r : after) held.push_back(std::move(r));
     after.clear();
@@ -175,6 +240,7 @@ struct GcodeClReader::State {
       for (std::size_t i = 0; i < 6; ++i)
         if (h.assumed[i]) h.p[i] = usable[i] ? first_value[i] : 0.0;
       locate(std::get<cl::Motion>(held[h.index]), h.p, h.rtcp);
+      source_time_feed(std::get<cl::Motion>(held[h.index]));  // rapids: only the last position
     }
     before.insert(before.begin(), std::make_move_iterator(held.begin()), std::make_move_iterator(held.end()));
     held.clear();
@@ -313,6 +379,8 @@ struct GcodeClReader::State {
     for (const auto& u : fx.before_motion) before.push_back(u);
     if (fx.has_motion) {
       const cl::Location where{line_number, block.column};
+      update_wrap(fx, line_number, !fx.arc);
+      if (fx.arc && !start_settled) release_held(known_prior);  // an arc starts from the held position
       if (fx.arc) {
         const long n = arc_segments(*fx.arc, options.arc_chord_tolerance_mm);
         if (n > kMaxArcSegments)
@@ -336,9 +404,11 @@ struct GcodeClReader::State {
         }
         return true;
       } else {
-        before.push_back(motion_at(fx.end, where));
+        if (!start_settled) release_held(known_prior);  // a feed motion starts from the held position
+        cl::Motion m = motion_at(unwrapped(fx.end), where);
+        if (auto f = source_time_feed(m)) before.push_back(*f);
+        before.push_back(std::move(m));
       }
-      if (!start_settled) release_held(known_prior);  // a feed motion or an arc starts from the held position
     }
     for (const auto& u : fx.after_motion) after.push_back(u);
     if (fx.program_end) {
@@ -367,11 +437,20 @@ struct GcodeClReader::State {
   std::optional<cl::Record> next() {
     for (;;) {
       if (before_next < before.size()) return std::move(before[before_next++]);
+      if (pending_motion) {
+        cl::Motion m = std::move(*pending_motion);
+        pending_motion.reset();
+        return m;
+      }
       if (arc) {
         ++arc_segment;
         const double t = static_cast<double>(arc_segment) / static_cast<double>(arc_segments_total);
-        cl::Motion m = motion_at(arc->at(t), arc_where);
+        cl::Motion m = motion_at(unwrapped(arc->at(t)), arc_where);
         if (arc_segment >= arc_segments_total) arc.reset();
+        if (auto f = source_time_feed(m)) {
+          pending_motion = std::move(m);
+          return *f;
+        }
         return m;
       }
       if (after_next < after.size()) return std::move(after[after_next++]);
