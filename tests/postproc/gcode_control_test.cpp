@@ -286,3 +286,30 @@ TEST_CASE("gcode control: the program starts at its first programmed position, n
     CHECK(any_contains(r.notices, "t.ngc:1:4: X, Y, A, C not programmed before the first motion"));
   }
 }
+
+TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blocks keep the source's time") {
+  const Read r = read_all("G21 G90\nG0 X0 Y0 Z50 A0 C350\nG93 G1 C10 F60\nG1 C359.857 F60\nG1 C7.501 F30\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 4);
+  const double expected_c_deg[] = {350.0, 370.0, 359.857, 367.501};
+  for (std::size_t i = 0; i < 4; ++i) {
+    REQUIRE(ms[i].rotary_rad);
+    CHECK((*ms[i].rotary_rad)[1] * 180.0 / kPi == Approx(expected_c_deg[i]).margin(1e-9));
+  }
+  // feed = rotary travel (deg) x F (1/min): the post's time max(length, travel) / feed is 1/F
+  const auto feeds = only<cl::Feed>(r.records);
+  REQUIRE(feeds.size() == 3);
+  CHECK(feeds[0].value == Approx(20.0 * 60));
+  CHECK(feeds[1].value == Approx(10.143 * 60));
+  CHECK(feeds[2].value == Approx(7.644 * 30));
+  CHECK(feeds[2].where.line == 5);
+  CHECK(any_contains(r.notices, "t.ngc:3: C 350.000 -> 10.000 deg read the short way (+20.000 deg"));
+  // a program that counts turns (a value outside 0 .. 360) is followed as written
+  const auto counted = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A0 C-10\nG1 C350 F100\nG1 C10\nM30\n").records);
+  REQUIRE(counted.size() == 3);
+  CHECK((*counted[1].rotary_rad)[1] * 180.0 / kPi == Approx(350.0));
+  CHECK((*counted[2].rotary_rad)[1] * 180.0 / kPi == Approx(10.0));
+  // A has limits: never unwrapped (a jump beyond them is the limits' business)
+  const auto a_axis = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A100 C0\nG1 A-100 F100\nM30\n").records);
+  CHECK((*a_axis[1].rotary_rad)[0] * 180.0 / kPi == Approx(-100.0));
+}
