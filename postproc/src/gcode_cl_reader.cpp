@@ -132,6 +132,47 @@ struct GcodeClReader::State {
                    m.where);
   }
 
+  // ---- a program without G20/G21 (or G70/G71/G700/G710) that looks like inches: X Y Z words
+  // mostly written with 4 decimals (inch posts) where 3 would do for mm, and every position within
+  // a 50-unit box (2 inches is 50.8 mm: an inch program read as mm shrinks 25.4 times). A notice.
+  long words_4_decimals = 0, words_other_decimals = 0;
+  Vec3d programmed_lo = Vec3d::Constant(1e300), programmed_hi = Vec3d::Constant(-1e300);
+  bool units_hint_given = false;
+
+  void observe_units(std::string_view line) {
+    for (const Word& w : block.words) {
+      if (w.letter != 'X' && w.letter != 'Y' && w.letter != 'Z') continue;
+      std::size_t at = static_cast<std::size_t>(w.column);  // just after the letter
+      while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '+' || line[at] == '-')) ++at;
+      while (at < line.size() && line[at] >= '0' && line[at] <= '9') ++at;
+      int decimals = 0;
+      if (at < line.size() && line[at] == '.')
+        while (++at < line.size() && line[at] >= '0' && line[at] <= '9') ++decimals;
+      (decimals == 4 ? words_4_decimals : words_other_decimals) += 1;
+    }
+    if (effect.has_motion) {
+      const ModalState& st = interpreter.state();
+      for (int i = 0; i < 3; ++i)
+        if (st.known[static_cast<std::size_t>(i)]) {
+          programmed_lo[i] = std::min(programmed_lo[i], effect.end[static_cast<std::size_t>(i)]);
+          programmed_hi[i] = std::max(programmed_hi[i], effect.end[static_cast<std::size_t>(i)]);
+        }
+    }
+  }
+
+  void units_hint() {
+    if (units_hint_given || options.default_inch || interpreter.state().units_programmed) return;
+    units_hint_given = true;
+    if (words_4_decimals < 5 || words_4_decimals <= 2 * words_other_decimals) return;
+    for (int i = 0; i < 3; ++i)
+      if (programmed_lo[i] <= programmed_hi[i] && (programmed_lo[i] < -50.0 || programmed_hi[i] > 50.0)) return;
+    const Vec3d span = (programmed_hi - programmed_lo).cwiseMax(0.0);
+    notices.push_back(fmt::format(
+        "{}:1: the program has no G20/G21 and looks like inches ({} of {} X/Y/Z words with 4 decimals, all positions "
+        "within {:.4g} x {:.4g} x {:.4g}): read as mm (the default); if it is inch, post with --units inch (or add G20)",
+        file, words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
+  }
+
   // ---- G93 (inverse time): the source gives each block's time (1/F minutes). The post times a
   // block by max(tip path mm, rotary travel deg) / feed, so each G93 motion is preceded by the
   // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
@@ -346,6 +387,7 @@ struct GcodeClReader::State {
     std::string_view line;
     if (!source.next(line)) {
       release_held(known_before);
+      units_hint();
       finish_input();
       return false;
     }
@@ -359,6 +401,7 @@ struct GcodeClReader::State {
         return true;
       }
       release_held(known_before);
+      units_hint();
       return false;  // the closing '%': the rest of the file is not part of the program
     }
     seen_content = true;
@@ -366,6 +409,7 @@ struct GcodeClReader::State {
     for (const BlockComment& c : block.comments)
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
     interpreter.apply(block, line_number, line, effect);
+    observe_units(line);
     const std::array<bool, 6> known_prior = known_before;
     note_first_values();
     check_rtcp_forced(line_number);
@@ -399,6 +443,7 @@ struct GcodeClReader::State {
         if (std::none_of(fx.assumed.begin(), fx.assumed.end(), [](bool b) { return b; })) release_held(known_before);
         if (fx.program_end) {
           release_held(known_before);
+          units_hint();
           after.push_back(cl::End{cl::Location{line_number, block.column}, true});
           return false;
         }
@@ -413,6 +458,7 @@ struct GcodeClReader::State {
     for (const auto& u : fx.after_motion) after.push_back(u);
     if (fx.program_end) {
       release_held(known_before);
+      units_hint();
       after.push_back(cl::End{cl::Location{line_number, block.column}, true});
       return false;
     }

@@ -313,3 +313,22 @@ TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blo
   const auto a_axis = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A100 C0\nG1 A-100 F100\nM30\n").records);
   CHECK((*a_axis[1].rotary_rad)[0] * 180.0 / kPi == Approx(-100.0));
 }
+
+TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice, a mm or explicit one none") {
+  const std::string square = "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
+  const Read r = read_all(square);
+  CHECK(any_contains(r.notices, "t.ngc:1: the program has no G20/G21 and looks like inches (8 of 8 X/Y/Z words with 4 "
+                                "decimals, all positions within 1.125 x 0.5 x 1.1)"));
+  CHECK(only<cl::Motion>(r.records)[1].point.tip_mm.z() == Approx(-0.1));  // still read as mm
+  CHECK_FALSE(any_contains(read_all("G21\n" + square).notices, "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G20\n" + square).notices, "looks like inches"));
+  GcodeReaderOptions inch;
+  inch.default_inch = true;
+  CHECK_FALSE(any_contains(read_all(square, inch).notices, "looks like inches"));
+  // mm-sized positions, or 3-decimal words: no notice
+  CHECK_FALSE(any_contains(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
+                                    "Y0.2500\nM30\n").notices,
+                           "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").notices,
+                           "looks like inches"));
+}
