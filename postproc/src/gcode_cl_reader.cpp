@@ -223,8 +223,7 @@ struct GcodeClReader::State {
       if (counts_turns[ku] || !previous || std::abs(v - *previous) <= kPi + 1e-12) continue;
       const double before = *previous + wrap_offset_rad[ku];
       double offset = wrap_offset_rad[ku];
-      while (v + offset - before > kPi) offset -= kTurn;
-      while (v + offset - before < -kPi) offset += kTurn;
+      offset += kTurn * std::round((before - (v + offset)) / kTurn);  // |turn| <= 180 deg
       wrap_offset_rad[ku] = offset;
       if (!wrap_noticed[ku]) {
         wrap_noticed[ku] = true;
