@@ -86,6 +86,7 @@ void BlockEffect::clear() {
   has_motion = false;
   motion = MotionMode::none;
   arc.reset();
+  assumed = {};
   motion_feed.reset();
   inverse_time = false;
   after_motion.clear();
@@ -391,22 +392,35 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     fx.motion = st.motion;
     fx.start = st.position;
     ProgramPoint end = st.position;
-    std::string unknown;  // axes whose start (or value) is not known yet: taken as 0
+    std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
+    const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
     for (std::size_t i = 0; i < 6; ++i) {
       const char L = kAxisLetters[i];
       const bool used = axis_letters_.find(L) != std::string::npos;
-      if (!st.known[i] && used && (!w.has(L) || st.incremental)) unknown += unknown.empty() ? std::string(1, L) : std::string(", ") + L;
       if (w.has(L)) {
         const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
         end[i] = st.incremental ? st.position[i] + v : v;
         if (!(std::abs(end[i]) <= kMaxCoordinate))
           fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
       }
-      if (used) st.known[i] = true;
+      if (!used || st.known[i]) continue;
+      if (!w.has(L)) {
+        fx.assumed[i] = true;
+        add(assumed, L);
+      } else {
+        if (st.incremental) add(incremental, L);
+        st.known[i] = true;
+      }
     }
-    if (!unknown.empty())
+    if (!assumed.empty())
       notice_once("unknown-axes", line_number, first_axis_column ? first_axis_column : block.column,
-                  fmt::format("{} not programmed before the first motion: taken as 0", unknown));
+                  fmt::format("{} not programmed before the first motion: each is taken from its first programmed "
+                              "value (the program starts where it first says), or as 0 where a feed motion or the "
+                              "end comes first",
+                              assumed));
+    if (!incremental.empty())
+      notice_once("incremental-unknown", line_number, first_axis_column ? first_axis_column : block.column,
+                  fmt::format("{} moved incrementally (G91) before any absolute position: taken from 0", incremental));
     if (is_arc) {
       const PlaneAxes ax = axes_of(st.plane);
       const char offset_letter[3] = {'I', 'J', 'K'};

@@ -215,3 +215,120 @@ TEST_CASE("gcode control: motions beyond the machine's axis limits are Infeasibl
   const Read ok = read_all("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z600 A120 C720 F100\nM30\n");
   CHECK(only<cl::Motion>(ok.records).size() == 2);
 }
+
+namespace {
+
+std::vector<cl::Record> read_vmc(const std::string& text) {
+  static const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;  // tips in W as written
+  std::istringstream in(text);
+  GcodeClReader r(in, "t.ngc", vmc, Setup{}, o);
+  std::vector<cl::Record> out;
+  while (auto x = r.next()) out.push_back(std::move(*x));
+  return out;
+}
+
+void check_tip(const cl::Motion& m, double x, double y, double z) {
+  INFO("line " << m.where.line);
+  CHECK(m.point.tip_mm.x() == Approx(x).margin(1e-12));
+  CHECK(m.point.tip_mm.y() == Approx(y).margin(1e-12));
+  CHECK(m.point.tip_mm.z() == Approx(z).margin(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("gcode control: the program starts at its first programmed position, not with a rapid to 0") {
+  {  // rapids only until every axis is programmed: they take the first values
+    const auto rs = read_vmc("G21 G90\nG0 Z10\nT1 M6\nG0 Y100\nG0 X-25\nG1 Z0 F100\nM30\n");
+    const auto ms = only<cl::Motion>(rs);
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -25, 100, 10);
+    check_tip(ms[1], -25, 100, 10);
+    check_tip(ms[2], -25, 100, 10);
+    check_tip(ms[3], -25, 100, 0);
+    CHECK(ms[0].where.line == 2);
+    // the tool change keeps its place between the held rapids
+    std::vector<int> order;
+    for (const auto& r : rs) {
+      if (const auto* m = std::get_if<cl::Motion>(&r)) order.push_back(m->where.line);
+      if (std::holds_alternative<cl::ToolChange>(r)) order.push_back(-3);
+    }
+    CHECK(order == std::vector<int>{2, -3, 4, 5, 6});
+  }
+  {  // a feed motion comes first for Y (CAMotics cds.gcode): Y is 0 there, as at a control's program zero
+    const auto ms = only<cl::Motion>(read_vmc("G21\nF400\nG0 Z3\nG0 X-26.9938\nG1 Z-1.5\nG1 X0 Y-26.9938\nM30\n"));
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -26.9938, 0, 3);
+    check_tip(ms[1], -26.9938, 0, 3);
+    check_tip(ms[2], -26.9938, 0, -1.5);
+    check_tip(ms[3], 0, -26.9938, -1.5);
+  }
+  {  // the feed motion that programs X and Y first starts from 0 in them
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nG1 X5 Y5 F100\nM30\n"));
+    REQUIRE(ms.size() == 2);
+    check_tip(ms[0], 0, 0, 10);
+    check_tip(ms[1], 5, 5, 10);
+  }
+  {  // the end before the other axes: 0
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nM30\n"));
+    REQUIRE(ms.size() == 1);
+    check_tip(ms[0], 0, 0, 10);
+  }
+  {  // rotary axes the program never writes: 0 on the five-axis machine, from the first feed motion on
+    const Read r = read_all("G0 Z10\nG0 X1 Y2\nG1 X3 F100\nM30\n");
+    const auto ms = only<cl::Motion>(r.records);
+    REQUIRE(ms.size() == 3);
+    for (const auto& m : ms) {
+      REQUIRE(m.rotary_rad);
+      CHECK(m.rotary_rad->norm() == 0.0);
+    }
+    CHECK(any_contains(r.notices, "t.ngc:1:4: X, Y, A, C not programmed before the first motion"));
+  }
+}
+
+TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blocks keep the source's time") {
+  const Read r = read_all("G21 G90\nG0 X0 Y0 Z50 A0 C350\nG93 G1 C10 F60\nG1 C359.857 F60\nG1 C7.501 F30\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 4);
+  const double expected_c_deg[] = {350.0, 370.0, 359.857, 367.501};
+  for (std::size_t i = 0; i < 4; ++i) {
+    REQUIRE(ms[i].rotary_rad);
+    CHECK((*ms[i].rotary_rad)[1] * 180.0 / kPi == Approx(expected_c_deg[i]).margin(1e-9));
+  }
+  // feed = rotary travel (deg) x F (1/min): the post's time max(length, travel) / feed is 1/F
+  const auto feeds = only<cl::Feed>(r.records);
+  REQUIRE(feeds.size() == 3);
+  CHECK(feeds[0].value == Approx(20.0 * 60));
+  CHECK(feeds[1].value == Approx(10.143 * 60));
+  CHECK(feeds[2].value == Approx(7.644 * 30));
+  CHECK(feeds[2].where.line == 5);
+  CHECK(any_contains(r.notices, "t.ngc:3: C 350.000 -> 10.000 deg read the short way (+20.000 deg"));
+  // a program that counts turns (a value outside 0 .. 360) is followed as written
+  const auto counted = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A0 C-10\nG1 C350 F100\nG1 C10\nM30\n").records);
+  REQUIRE(counted.size() == 3);
+  CHECK((*counted[1].rotary_rad)[1] * 180.0 / kPi == Approx(350.0));
+  CHECK((*counted[2].rotary_rad)[1] * 180.0 / kPi == Approx(10.0));
+  // A has limits: never unwrapped (a jump beyond them is the limits' business)
+  const auto a_axis = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A100 C0\nG1 A-100 F100\nM30\n").records);
+  CHECK((*a_axis[1].rotary_rad)[0] * 180.0 / kPi == Approx(-100.0));
+}
+
+TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice, a mm or explicit one none") {
+  const std::string square = "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
+  const Read r = read_all(square);
+  CHECK(any_contains(r.notices, "t.ngc:1: the program has no G20/G21 and looks like inches (8 of 8 X/Y/Z words with 4 "
+                                "decimals, all positions within 1.125 x 0.5 x 1.1)"));
+  CHECK(only<cl::Motion>(r.records)[1].point.tip_mm.z() == Approx(-0.1));  // still read as mm
+  CHECK_FALSE(any_contains(read_all("G21\n" + square).notices, "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G20\n" + square).notices, "looks like inches"));
+  GcodeReaderOptions inch;
+  inch.default_inch = true;
+  CHECK_FALSE(any_contains(read_all(square, inch).notices, "looks like inches"));
+  // mm-sized positions, or 3-decimal words: no notice
+  CHECK_FALSE(any_contains(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
+                                    "Y0.2500\nM30\n").notices,
+                           "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").notices,
+                           "looks like inches"));
+}

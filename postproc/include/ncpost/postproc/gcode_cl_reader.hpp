@@ -24,6 +24,17 @@
 // Units: G20 (inch) lengths and feeds are converted to mm; rotary words are degrees.
 // Limits: a motion whose machine commands lie beyond an axis limit is Infeasible (exit 3), in
 // every InputKind (GcodeReaderOptions::check_limits).
+// Start: rapids before every axis is programmed are held and take the axes' first programmed
+// values (no rapid to 0 the source never made); a feed motion, an arc or the end first releases
+// them with 0 for the axes still unknown (notice).
+// G93: each inverse-time motion is preceded by the cl::Feed max(tip path mm, rotary travel deg)
+// x F, with which the post's block time is the source's 1/F minutes.
+// Rollover: on a continuous rotary axis whose values stay within 0 .. 360 deg, a jump of more
+// than 180 deg turns the short way across 0 (C359.857 -> C367.501, notice); a value outside
+// 0 .. 360 marks a turn-counting program, followed as written.
+// Units: with no units word and X/Y/Z mostly written with 4 decimals within a 50-unit box, a
+// notice says the program looks like inches.
+// CutterComp: G41/G42 (D: the register)/G40 records precede the motion of their block.
 // Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
 // as truncated: InputError); text after the closing '%' is ignored, and so are lines before the
 // opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,

@@ -49,7 +49,7 @@ struct ModalState {
   int tool = 0;                      ///< the selected T
   Rtcp rtcp = Rtcp::off;
   ProgramPoint position{};           ///< the current position (mm, rad)
-  std::array<bool, 6> known{};       ///< the axis has been programmed (or taken as 0)
+  std::array<bool, 6> known{};       ///< the axis has been programmed (else its position is 0, assumed)
   bool ended = false;                ///< M2/M30 seen
 };
 
@@ -66,6 +66,7 @@ struct BlockEffect {
   ProgramPoint start{};
   ProgramPoint end{};
   std::optional<ArcMove> arc;              ///< for G2/G3
+  std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
