@@ -39,12 +39,16 @@ void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& ac
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
                                       const std::optional<ClPoint>& guess_solves, SolveFigures* figures,
-                                      std::string& failure, std::optional<ToolPoseT<double>>* executed) const {
+                                      std::string& failure, std::optional<ToolPoseT<double>>* executed,
+                                      const std::optional<AxisPosition>& previous) const {
   comp::ActualIkOptions options;
   options.guess_solves = guess_solves;
   options.tip_tolerance_mm = kPostTipToleranceMm;
   options.axis_tolerance_rad = kPostAxisToleranceRad;
-  if (model_.has_reversal()) options.previous_actual = actual_;
+  if (model_.has_reversal()) {
+    options.previous_actual = actual_;
+    options.previous_command = previous;
+  }
   options.home = &home_;
   const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, guess, options);
   if (!r.ok()) {
@@ -92,7 +96,7 @@ IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previ
   }
   std::string failure;
   std::optional<ToolPoseT<double>> executed;
-  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed);
+  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed, previous);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;

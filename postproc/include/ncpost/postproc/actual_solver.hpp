@@ -80,10 +80,12 @@ class ActualSolver final : public MotionSolver {
  private:
   /// `guess` solves `guess_solves` nominally (nullopt: programmed angles).
   /// `executed` (if given) gets the actual pose at the result when it is that of every execution
-  /// there (models without reversal).
+  /// there (models without reversal). `previous` (the previous commands, if known): with reversal
+  /// an axis that need not move keeps its command inside the play.
   AxisPosition compensate(const ClPoint& cl, const AxisPosition& guess, const std::optional<ClPoint>& guess_solves,
                           SolveFigures* figures, std::string& failure,
-                          std::optional<ToolPoseT<double>>* executed = nullptr) const;
+                          std::optional<ToolPoseT<double>>* executed = nullptr,
+                          const std::optional<AxisPosition>& previous = std::nullopt) const;
   /// The error of the machine at commands q (actual − nominal tip and axis in W): the prediction
   /// for the next CL point. Kept per thread for the last solution, so a path pays nothing for it.
   ToolPoseT<double> error_at(const AxisPosition& q) const;
