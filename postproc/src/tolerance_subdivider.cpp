@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/play_subdivision.hpp"
 
 namespace ncpost {
 
@@ -21,6 +22,9 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
 Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
                                      const ActualSolver* actual, const nonlinear::CompensationOptions& options,
                                      const Dialect& dialect, const std::string& input_name) {
+  // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
+  if (actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive)
+    actual->take_up_in_blocks();
   return [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
           angle = dialect.angle_decimals, input_name](const SolvedPoint& from, const SolvedPoint& to) {
     nonlinear::CompensationOptions c = options;
@@ -29,6 +33,12 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
         nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
     // inserted points are not CL points of the input: the solver's figures are left as they are
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
+    if (actual && actual->model().has_reversal() && c.method == nonlinear::Method::adaptive) {
+      std::string failure;
+      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, failure);
+      if (!failure.empty()) throw Infeasible(fmt::format("{}: {}", input_name, failure));
+      return points;
+    }
     const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q, from.executed, to.executed};
     const nonlinear::SplitBlock split =
         actual ? nonlinear::compensate_block(machine, setup, block, actual->errors_from_here(), ik, c)
