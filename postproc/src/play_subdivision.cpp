@@ -82,6 +82,22 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
     auto ik = [&](const ClPoint& cl, const AxisPosition& previous) {
       return actual.solve_standing(cl, previous, nullptr, stands);
     };
+    if (stands && !taken_up) {
+      // the way each axis starts, from points along the stretch: take up the play before it
+      std::vector<nonlinear::BlockNode> probes;
+      for (double t : {1.0 / 256, 1.0 / 64, 1.0 / 16, 0.25, 0.5}) {
+        const ClPoint p = nonlinear::cl_at(cur.cl, to.cl, t);
+        const IkOutcome o = ik(p, cur.q);
+        if (o.ok()) probes.push_back({t, p, *o.position});
+      }
+      probes.push_back({1.0, to.cl, end});
+      taken_up = true;
+      if (auto q = take_up_before(actual, cur.q, *stands, probes)) {
+        cur = {cur.cl, *q};
+        out.push_back(cur);
+        continue;  // the stretch again from the taken-up commands
+      }
+    }
     const nonlinear::ClBlock block{cur.cl, to.cl, cur.q, end};
     const nonlinear::SplitBlock split =
         nonlinear::compensate_block(machine, setup, block, actual.errors_from(stands), ik, options);
@@ -92,14 +108,6 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
     if (!stands) {  // no history: offsets 0 throughout, one stretch
       for (const auto& node : split.nodes) out.push_back({node.cl, node.q});
       return out;
-    }
-    if (!taken_up) {
-      if (auto q = take_up_before(actual, cur.q, *stands, split.nodes)) {
-        cur = {cur.cl, *q};
-        out.push_back(cur);
-        taken_up = true;
-        continue;  // the stretch again from the taken-up commands
-      }
     }
     // replay the nodes in sequence through the dead band
     AxisPosition in_sequence = *stands;
