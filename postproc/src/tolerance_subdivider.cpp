@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/play_subdivision.hpp"
 
 namespace ncpost {
 namespace {
@@ -98,6 +99,9 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
 Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
                                      const ActualSolver* actual, const nonlinear::CompensationOptions& options,
                                      const Dialect& dialect, const std::string& /*input_name*/) {
+  // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
+  if (actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive)
+    actual->take_up_in_blocks();
   return [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
           angle = dialect.angle_decimals](const SolvedPoint& from, const SolvedPoint& to) {
     nonlinear::CompensationOptions c = options;
@@ -107,6 +111,12 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
     const double inner_tolerance_mm = c.tolerance_mm - c.rounding_allowance_mm;
     // inserted points are not CL points of the input: the solver's figures are left as they are
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
+    if (actual && actual->model().has_reversal() && c.method == nonlinear::Method::adaptive) {
+      std::string failure;
+      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, failure);
+      if (!failure.empty()) throw Infeasible(failure);
+      return points;
+    }
     auto cut = [&](const auto& errors) {
       std::vector<SolvedPoint> points =
           turn_at_singular_start(machine, setup, solver, from, to, errors, inner_tolerance_mm);
