@@ -145,6 +145,27 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+void check_output_path(const std::string& path) {
+  if (path == "-") return;
+  if (path.empty()) throw FileError("an output file name is empty");
+  const std::string target = link_target(path);
+  const std::string shown = target == path ? "'" + path + "'" : "'" + path + "' (a link to '" + target + "')";
+  struct stat st {};
+  if (::stat(target.c_str(), &st) == 0) {
+    if (!S_ISREG(st.st_mode))
+      throw FileError("cannot write " + shown + ": it is " + kind_of(st.st_mode) +
+                      "; ncpost writes only regular files, give a file name");
+  } else if (errno != ENOENT) {
+    throw FileError("cannot write " + shown + ": " + reason());
+  }
+  const std::string folder = folder_of(target);
+  if (::stat(folder.c_str(), &st) != 0)
+    throw FileError("cannot write " + shown + ": the folder '" + folder + "' does not exist (" + reason() + ")");
+  if (!S_ISDIR(st.st_mode)) throw FileError("cannot write " + shown + ": '" + folder + "' is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw FileError("cannot write " + shown + ": cannot create a file in '" + folder + "': " + reason());
+}
+
 void write_file_atomically(const std::string& path, std::string_view data) {
   AtomicFile f(path);
   f.write(data);

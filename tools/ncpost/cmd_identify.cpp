@@ -1,4 +1,4 @@
-// ncpost identify: fit error parameters to measurements (cli.md, formats.md "Error model").
+// ncpost identify: fit error parameters to measurements (README "Worked example" and "Closing the loop").
 #include <fmt/format.h>
 
 #include <unistd.h>
@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "number_checks.hpp"
 #include "identify_laser.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
@@ -76,13 +78,16 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("--loss", a->loss, "squared (default), huber or cauchy (outlier-robust)")
       ->check(CLI::IsMember({"squared", "huber", "cauchy"}));
   sub->add_option("--loss-scale-um", a->loss_scale_um, "scale of the robust loss (µm, default 3)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
   sub->add_flag("--no-diagnose", a->no_diagnose, "fit the basic model only (no residual analysis)");
   sub->add_option("--report", a->report, "self-contained HTML report");
   sub->add_option("-o,--output", a->output, "model JSON to write")->required();
   sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
   sub->callback([&action, a] {
     action = [a] {
+      std::vector<NamedPath> inputs{{"--machine", a->machine}};
+      for (const auto& f : a->data) inputs.push_back({"data", f});
+      check_files({{"-o", a->output}, {"--report", a->report}}, inputs);
       if (auto rc = identify_if_trr_xy(a->machine, a->data, a->output,
                                        !a->params.empty() ? "--params" : !a->fixed.empty() ? "--fixed"
                                                                        : !a->report.empty() ? "--report" : ""))
@@ -107,11 +112,8 @@ void add_identify(CLI::App& app, Action& action) {
         const std::string n = item.substr(0, eq);
         const comp::ParseResult r = comp::parse_parameter_name(n, m);
         if (!r.spec) throw UsageError(fmt::format("--fixed: '{}': {}", n, r.error));
-        try {
-          o.fixed.set(n, std::stod(item.substr(eq + 1)));
-        } catch (const std::exception&) {
-          throw UsageError(fmt::format("--fixed: '{}' is not a number", item.substr(eq + 1)));
-        }
+        // mm or rad: no location or scale error of a real machine comes near a metre or a radian
+        o.fixed.set(n, finite_number(item.substr(eq + 1), "--fixed " + n, -1000.0, 1000.0, "mm or rad"));
       }
       if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
       if (!a->no_diagnose) return run_diagnose(m, sets, names, o, a->output, a->report);

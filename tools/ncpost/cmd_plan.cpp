@@ -1,10 +1,12 @@
-// ncpost plan: measurement plans and the NC programs that run them (cli.md).
+// ncpost plan: measurement plans and the NC programs that run them (README "Worked example").
 #include <fmt/format.h>
 
 #include <sstream>
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "number_checks.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
@@ -30,8 +32,9 @@ Vec3d parse_vec(const std::string& s, const char* option) {
   std::stringstream in(s);
   Vec3d v;
   char c1 = 0, c2 = 0;
-  if (!(in >> v.x() >> c1 >> v.y() >> c2 >> v.z()) || c1 != ',' || c2 != ',')
-    throw UsageError(fmt::format("{} expects X,Y,Z in mm, found '{}'", option, s));
+  if (!(in >> v.x() >> c1 >> v.y() >> c2 >> v.z()) || c1 != ',' || c2 != ',' || !(in >> std::ws).eof() ||
+      !v.allFinite() || v.cwiseAbs().maxCoeff() > 100000.0)
+    throw UsageError(fmt::format("{}: expected X,Y,Z in mm, each finite and within +-100000, got '{}'", option, s));
   return v;
 }
 
@@ -48,31 +51,46 @@ void add_plan(CLI::App& app, Action& action) {
                   "output: PLAN.csv (one set) or PLAN_<set>.csv (several), and PLAN.nc")
       ->required();
   sub->add_option("--height", a->heights, "ballbar-4axis: height of the balls above the tilt axis (mm), repeatable")
-      ->take_all();
-  sub->add_option("--bar-length", a->bar_length, "ballbar length (mm, default 100)");
-  sub->add_option("--points", a->points, "ballbar-4axis: rows per height (default 500)");
-  sub->add_option("--dt", a->dt, "time between rows (s)");
-  sub->add_option("--t0", a->t0, "time stamp of the first row (s, default 0)");
+      ->take_all()
+      ->check(finite_in(-5000.0, 5000.0, "mm"));
+  sub->add_option("--bar-length", a->bar_length, "ballbar length (mm, default 100)")
+      ->check(finite_in(0.0, 2000.0, "mm", Bound::open));
+  sub->add_option("--points", a->points, "ballbar-4axis: rows per height (default 500)")->check(CLI::Range(2, 1000000));
+  sub->add_option("--dt", a->dt, "time between rows (s)")->check(finite_in(0.0, 86400.0, "s", Bound::open));
+  sub->add_option("--t0", a->t0, "time stamp of the first row (s, default 0)")->check(finite_in(0.0, 1e9, "s"));
   sub->add_option("--sphere", a->sphere, "sphere: centre X,Y,Z at home (mm, default 120,40,80)");
-  sub->add_option("--levels", a->levels, "sphere: levels of the tilt axis (deg)")->delimiter(',');
-  sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)");
+  sub->add_option("--levels", a->levels, "sphere: levels of the tilt axis (deg)")
+      ->delimiter(',')
+      ->check(finite_in(-360.0, 360.0, "deg"));
+  sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)")
+      ->check(finite_in(0.0, 360.0, "deg", Bound::open));
   sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250); laser: reflector holder length (default 100)")
-      ->take_all();
+      ->take_all()
+      ->check(finite_in(0.0, 2000.0, "mm"));
   sub->add_flag("--seed-directions", a->seed_directions,
                 "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
   sub->add_option("--axes", a->laser.axes, "laser: axes to measure (default XYZ)");
-  sub->add_option("--target-step", a->laser.step_mm, "laser: target spacing (mm, default 50)")->check(CLI::PositiveNumber);
+  sub->add_option("--target-step", a->laser.step_mm, "laser: target spacing (mm, default 50)")
+      ->check(finite_in(0.0, 10000.0, "mm", Bound::open));
   sub->add_option("--runs", a->laser.runs, "laser: bidirectional runs per line (default 5, ISO 230-2)")
       ->check(CLI::Range(1, 100));
   sub->add_option("--lines", a->laser.lines, "laser: parallel lines per axis, 1..3 (default 3)")->check(CLI::Range(1, 3));
   sub->add_flag("--positioning-only", [a](std::int64_t) { a->laser.straightness = false; },
                 "laser: positioning only, no straightness sets");
   sub->add_option("--reflector-offset", a->laser.reflector_offset_mm,
-                  "laser: reflector offset from the spindle where a line cannot be reached by an axis (mm, default 100)");
-  sub->add_option("--margin", a->laser.margin_mm, "laser: kept clear of each travel end (mm, default 0)");
-  sub->add_option("--overshoot", a->laser.overshoot_mm, "laser: overshoot before each pass (mm, default 5)");
+                  "laser: reflector offset from the spindle where a line cannot be reached by an axis (mm, default 100)")
+      ->check(finite_in(-5000.0, 5000.0, "mm"));
+  sub->add_option("--margin", a->laser.margin_mm, "laser: kept clear of each travel end (mm, default 0)")
+      ->check(finite_in(0.0, 5000.0, "mm"));
+  sub->add_option("--overshoot", a->laser.overshoot_mm, "laser: overshoot before each pass (mm, default 5)")
+      ->check(finite_in(0.0, 1000.0, "mm"));
   sub->callback([&action, a] {
     action = [a] {
+      {  // before anything is computed; the per-set CSV names are checked again once known
+        std::string stem = a->output;
+        if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
+        check_files({{"-o (program)", stem + ".nc"}, {"-o (plan)", stem + ".csv"}}, {{"--machine", a->machine}});
+      }
       if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::NamedPlan> plans;
@@ -117,8 +135,14 @@ void add_plan(CLI::App& app, Action& action) {
       }
       std::string stem = a->output;
       if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
+      const auto csv_name = [&](const comp::NamedPlan& p) {
+        return plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+      };
+      std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
+      for (const auto& p : plans) outputs.push_back({"-o (plan)", csv_name(p)});
+      check_files(outputs, {{"--machine", a->machine}});
       for (const auto& p : plans) {
-        const std::string file = plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+        const std::string file = csv_name(p);
         write_file_atomically(file, comp::format_measurement_csv(p.set, m));
         fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
       }

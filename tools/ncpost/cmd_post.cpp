@@ -7,7 +7,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "input_file.hpp"
 #include "input_options.hpp"
+#include "number_checks.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/actual_solver.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
@@ -20,6 +23,9 @@
 
 namespace ncpost::cli {
 namespace {
+
+constexpr double kMaxToleranceMm = 10.0;  // a bound on the bow of a block: beyond it, a slip
+constexpr double kMaxRetractMm = 2000.0;
 
 struct PostArgs {
   JobOptions job;
@@ -36,13 +42,14 @@ struct PostArgs {
   double retract_mm = 50.0;
   int threads = 2;
   std::string output = "-";
-  std::string input;
+  std::string input;       ///< the INPUT argument; in a run, the name in messages ("<stdin>" for "-")
+  std::string input_path;  ///< in a run: the file read (the spool of standard input or a pipe)
 };
 
 /// The "before" of the account: the program with nominal commands, one block per CL motion,
 /// executed on the job's machine (the model's, or the nominal one).
 void account_before(const PostArgs& a, const LoadedJob& job, const comp::MachineModel* model, PostAccount& account) {
-  std::ifstream in(a.input, std::ios::binary);
+  std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
   const NominalSolver nominal(job.machine, job.setup);
@@ -53,6 +60,9 @@ void account_before(const PostArgs& a, const LoadedJob& job, const comp::Machine
   else
     evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
   double sum = 0.0;
+  std::function<void(std::size_t)> progress;
+  if (::isatty(STDERR_FILENO))
+    progress = [](std::size_t n) { fmt::print(stderr, "\rmeasuring the uncompensated program: {} motions", n); };
   try {
     preview::run_preview(*reader, a.input, nominal, *evaluator, [&](const preview::BlockRow& row) {
       const double e = row.exact.max_error_mm;
@@ -63,7 +73,7 @@ void account_before(const PostArgs& a, const LoadedJob& job, const comp::Machine
         account.before_worst_line = row.line;
       }
       account.before_series.add(row.line, e);
-    });
+    }, progress);
   } catch (const preview::PreviewInfeasible& e) {
     throw Infeasible(e.what());
   }
@@ -78,11 +88,18 @@ std::optional<double> tolerance_of(const std::string& text) {
 }
 
 int run_post(const PostArgs& given) {
+  // every file checked before anything is computed: no output over an input, only writable places
+  check_files({{"-o", given.output}, {"--report", given.report}},
+              {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
+               {"--verify-on", given.verify_on}});
+  const InputFile input(given.input);
   PostArgs a = given;
+  a.input = input.name();
+  a.input_path = input.path();
   a.tolerance_mm = tolerance_of(a.tolerance);
   if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
   if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
-                                 a.verify_on, a.output, a.input}))
+                                 a.verify_on, a.output, a.input, a.input_path}))
     return *rc;
   Dialect dialect;
   try {
@@ -110,7 +127,7 @@ int run_post(const PostArgs& given) {
   std::unique_ptr<comp::MachineModel> executing;  // --verify-on: the machine the program is re-executed on
   if (!a.verify_on.empty())
     executing = std::make_unique<comp::MachineModel>(job.machine, comp::read_model_json(a.verify_on, &job.machine).parameters);
-  std::ifstream in(a.input, std::ios::binary);
+  std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
 
@@ -156,7 +173,8 @@ int run_post(const PostArgs& given) {
     options.take_up_reversal = true;
     options.subdivide = make_tolerance_subdivider(job.machine, job.setup, *solver, actual, comp, dialect, a.input);
   }
-  const bool tty = ::isatty(STDERR_FILENO) && a.output != "-";
+  // progress only where someone watches: stderr on a terminal (and the program not on that terminal)
+  const bool tty = ::isatty(STDERR_FILENO) && !(a.output == "-" && ::isatty(STDOUT_FILENO));
   if (tty) options.progress = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };
 
   AtomicFile out(a.output);
@@ -173,7 +191,7 @@ int run_post(const PostArgs& given) {
       throw Infeasible(std::string(e.what()) + "\n  " + hint);
     }
   }();
-  if (tty) fmt::print(stderr, "\r");
+  if (tty) fmt::print(stderr, "\r\033[K");
   for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
   acc.motions_in = summary.motions_in;
   acc.blocks_out = summary.blocks_out;
@@ -184,9 +202,8 @@ int run_post(const PostArgs& given) {
     acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();
   }
   if (account && !a.rtcp) {
-    if (tty) fmt::print(stderr, "measuring the uncompensated program...\r");
     account_before(a, job, executing ? executing.get() : model.get(), acc);
-    if (tty) fmt::print(stderr, "\r");
+    if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
   }
   // everything computed: now the files appear, all or none
   std::optional<AtomicFile> report;
@@ -226,10 +243,10 @@ void add_post(CLI::App& app, Action& action) {
             try {
               std::size_t used = 0;
               const double x = std::stod(v, &used);
-              if (used == v.size() && x > 0 && std::isfinite(x)) return {};
+              if (used == v.size() && x > 0 && std::isfinite(x) && x <= kMaxToleranceMm) return {};
             } catch (const std::exception&) {
             }
-            return "expected a positive number of mm or 'none', got '" + v + "'";
+            return fmt::format("expected a number of mm in (0, {}] or 'none', got '{}'", kMaxToleranceMm, v);
           },
           ""));
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
@@ -244,7 +261,7 @@ void add_post(CLI::App& app, Action& action) {
   sub->add_option("--retract", a->retract_mm,
                   "When the axis limits force a change of solution mid-path: retract this far along the tool axis "
                   "(mm, default 50), reorient, re-engage; 0 refuses (exit 3)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_in(0.0, kMaxRetractMm, "mm"));
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
@@ -253,7 +270,7 @@ void add_post(CLI::App& app, Action& action) {
                   "ahead on other threads (models with reversal: read only). The program is the same either way")
       ->check(CLI::Range(1, 2));
   sub->add_option("-o,--output", a->output, "Output NC program (default: standard output)");
-  sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
+  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")->required()->check(existing_input());
   sub->callback([a, &action] { action = [a] { return run_post(*a); }; });
 }
 

@@ -1,4 +1,4 @@
-// ncpost preview: the nonlinear error of every block of a CL program (spec/cli.md, issue 4).
+// ncpost preview: the nonlinear error of every block of a CL program (README "Nonlinear error").
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "input_file.hpp"
 #include "input_options.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -23,11 +25,18 @@ struct PreviewArgs {
   std::string model;
   std::string csv;
   std::string html;
-  std::string input;
+  std::string input;       ///< the INPUT argument; in a run, the name in messages
+  std::string input_path;  ///< in a run: the file read (the spool of standard input or a pipe)
 };
 
-int run_preview(const PreviewArgs& a) {
-  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input})) return *rc;
+int run_preview(const PreviewArgs& given) {
+  check_files({{"--csv", given.csv}, {"--html", given.html}},
+              {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model}});
+  const InputFile input(given.input);
+  PreviewArgs a = given;
+  a.input = input.name();
+  a.input_path = input.path();
+  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input, a.input_path})) return *rc;
   const LoadedJob job = load_job(a.job);
   std::unique_ptr<comp::MachineModel> model;
   std::unique_ptr<MotionSolver> solver;
@@ -42,7 +51,7 @@ int run_preview(const PreviewArgs& a) {
     solver = std::make_unique<NominalSolver>(job.machine, job.setup);
     evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
   }
-  std::ifstream in(a.input, std::ios::binary);
+  std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
 
@@ -68,7 +77,7 @@ int run_preview(const PreviewArgs& a) {
   } catch (const preview::PreviewInfeasible& e) {
     throw Infeasible(e.what());
   }
-  if (tty) fmt::print(stderr, "\r");
+  if (tty) fmt::print(stderr, "\r\033[K");
 
   if (!a.html.empty()) {
     preview::HtmlReport report;
@@ -79,7 +88,7 @@ int run_preview(const PreviewArgs& a) {
     report.stats = stats;
     std::vector<int> lines;
     for (const auto& w : summary.worst()) lines.push_back(w.line);
-    report.worst_source_lines = preview::source_lines(a.input, lines);
+    report.worst_source_lines = preview::source_lines(a.input_path, lines);
     if (!summary.worst().empty()) report.worst_curve_mm = evaluator->error_curve(summary.worst().front().cl, 200);
     write_file_atomically(a.html, preview::render_html(report));
   }
@@ -90,7 +99,7 @@ int run_preview(const PreviewArgs& a) {
   if (!summary.worst().empty())
     worst = fmt::format(" (block {}, CL line {})", summary.worst().front().block, summary.worst().front().line);
   fmt::print("{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm{}, mean {:.4f} mm, largest "
-             "orientation error {:.4f} deg; blocks over 5 um: {}\n",
+             "orientation error {:.4f} deg; blocks over 5 µm: {}\n",
              stats.motions, summary.blocks(), summary.max_error_mm(), worst, summary.mean_error_mm(),
              rad_to_deg(summary.max_orientation_rad()), summary.blocks_over(0.005));
   return 0;
@@ -105,7 +114,7 @@ void add_preview(CLI::App& app, Action& action) {
   sub->add_option("--model", a->model, "Error model JSON: preview on the actual machine");
   sub->add_option("--csv", a->csv, "Write one row per block: block,line,max_error_mm,at_t,harmonic_mm,...");
   sub->add_option("--html", a->html, "Write a self-contained HTML report (inline SVG)");
-  sub->add_option("INPUT", a->input, "APT CL data or G-code")->required()->check(CLI::ExistingFile);
+  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")->required()->check(existing_input());
   sub->callback([a, &action] { action = [a] { return run_preview(*a); }; });
 }
 

@@ -1,9 +1,11 @@
-// ncpost sensitivity: the TRR-XY sensitivity maps (spec trr-xy.md "Sensitivity map", seed 004).
+// ncpost sensitivity: the TRR-XY sensitivity maps (README "TRR-XY hybrid machine").
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "number_checks.hpp"
 #include "ncpost/compensation/trr_sensitivity.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
@@ -21,6 +23,7 @@ struct SensitivityArgs {
 };
 
 int run_sensitivity(const SensitivityArgs& a) {
+  check_files({{"--json", a.json}, {"--html", a.html}}, {{"--machine", a.machine}});
   const std::string kind = machine_file_kind(a.machine);
   if (kind != "trr-xy")
     throw UsageError(fmt::format("--machine {}: sensitivity maps are defined for the TRR-XY machine (kind \"trr-xy\"), "
@@ -56,8 +59,10 @@ void add_sensitivity(CLI::App& app, Action& action) {
   sub->add_option("--machine", a->machine, "TRR-XY machine definition (TOML)")->required()->check(CLI::ExistingFile);
   sub->add_option("--json", a->json, "Write {\"dr_a\": {\"max_um\", \"min_um\", \"range_um\", ...}, ...}");
   sub->add_option("--html", a->html, "Write a self-contained HTML page with each parameter's map (inline SVG)");
-  sub->add_option("--polar-step", a->polar_step_deg, "Grid step in polar angle (deg, default 1)");
-  sub->add_option("--azimuth-step", a->azimuth_step_deg, "Grid step in azimuth (deg, default 1)");
+  sub->add_option("--polar-step", a->polar_step_deg, "Grid step in polar angle (deg, default 1)")
+      ->check(finite_in(0.0, 30.0, "deg", Bound::open));
+  sub->add_option("--azimuth-step", a->azimuth_step_deg, "Grid step in azimuth (deg, default 1)")
+      ->check(finite_in(0.0, 120.0, "deg", Bound::open));
   sub->callback([a, &action] { action = [a] { return run_sensitivity(*a); }; });
 }
 

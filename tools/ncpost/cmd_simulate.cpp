@@ -1,9 +1,11 @@
-// ncpost simulate: run a measurement plan on a machine described by a model JSON (cli.md).
+// ncpost simulate: run a measurement plan on a machine described by a model JSON (README "Worked example").
 #include <fmt/format.h>
 
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "file_checks.hpp"
+#include "number_checks.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -25,14 +27,15 @@ void add_simulate(CLI::App& app, Action& action) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* sub = app.add_subcommand("simulate", "Simulate a measurement plan on a machine with errors");
   sub->add_option("--machine", args->machine, "machine definition (TOML)")->required();
-  sub->add_option("--model", args->model, "error model (JSON, formats.md): the simulated machine")->required();
-  sub->add_option("--noise-um", args->noise_um, "standard deviation of Gaussian noise on every value (µm)")
-      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--model", args->model, "error model JSON (written by identify): the simulated machine")->required();
+  sub->add_option("--noise-um", args->noise_um, "standard deviation of Gaussian noise on every value (µm, 0 to 1000)")
+      ->check(finite_in(0.0, 1000.0, "µm"));
   sub->add_option("--seed", args->seed, "random seed of the noise");
   sub->add_option("-o,--output", args->output, "measurement CSV to write")->required();
   sub->add_option("plan", args->plan, "plan CSV (a measurement CSV; value columns absent or ignored)")->required();
   sub->callback([&action, args] {
     action = [args] {
+      check_files({{"-o", args->output}}, {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
       if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed))
         return *rc;
       const Machine m = load_machine(args->machine);

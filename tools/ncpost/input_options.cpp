@@ -1,18 +1,27 @@
 #include "input_options.hpp"
 
+#include <fmt/format.h>
+
 #include <sstream>
 #include <string_view>
 
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "number_checks.hpp"
+#include "terminal_text.hpp"
 
 namespace ncpost::cli {
+
+// Plausible set-up values (README "Command line"): beyond them a typing slip, not a machine.
+constexpr double kMaxToolLengthMm = 2000.0;
+constexpr double kMaxWorkpieceOriginMm = 100000.0;
 
 void add_job_options(CLI::App& sub, JobOptions& o) {
   sub.add_option("--machine", o.machine, "Machine definition (TOML)")->required()->check(CLI::ExistingFile);
   sub.add_option("--workpiece-origin", o.workpiece_origin, "Origin of the workpiece frame W in M at home: X,Y,Z (mm)");
-  sub.add_option("--tool-length", o.tool_length_mm, "Tool length (mm): places head pivots");
+  sub.add_option("--tool-length", o.tool_length_mm, "Tool length (mm): places head pivots")
+      ->check(finite_in(0.0, kMaxToolLengthMm, "mm"));
   sub.add_option("--units", o.units, "Units of a CL file that does not say (mm or inch)")->check(CLI::IsMember({"mm", "inch"}));
   sub.add_option("--input-kind", o.input_kind, "cl, machine (machine-axis G-code), rtcp (tool-tip G-code), auto")
       ->check(CLI::IsMember({"auto", "cl", "machine", "rtcp"}));
@@ -31,8 +40,10 @@ Vec3d workpiece_origin_mm(const JobOptions& o) {
     if (c == ',') c = ' ';
   std::istringstream in(s);
   Vec3d v;
-  if (!(in >> v.x() >> v.y() >> v.z()) || !(in >> std::ws).eof() || !v.allFinite())
-    throw UsageError("--workpiece-origin: expected X,Y,Z in mm, got '" + o.workpiece_origin + "'");
+  if (!(in >> v.x() >> v.y() >> v.z()) || !(in >> std::ws).eof() || !v.allFinite() ||
+      v.cwiseAbs().maxCoeff() > kMaxWorkpieceOriginMm)
+    throw UsageError(fmt::format("--workpiece-origin: expected X,Y,Z in mm, each finite and within +-{:g} mm, got '{}'",
+                                 kMaxWorkpieceOriginMm, terminal_text(o.workpiece_origin)));
   return v;
 }
 

@@ -35,10 +35,11 @@ std::optional<TrrJob> load_trr_job(const JobOptions& o) {
   return job;
 }
 
-/// Opens the input file `name` into `in` and an APT reader on it (InputError when it cannot be
-/// opened or is not APT CL data).
-std::unique_ptr<cl::Reader> open_apt(std::ifstream& in, const std::string& name, const JobOptions& o) {
-  in.open(name, std::ios::binary);
+/// Opens the input file `path` into `in` and an APT reader on it, named `name` in messages
+/// (InputError when it cannot be opened or is not APT CL data).
+std::unique_ptr<cl::Reader> open_apt(std::ifstream& in, const std::string& path, const std::string& name,
+                                     const JobOptions& o) {
+  in.open(path, std::ios::binary);
   if (!in) throw InputError({name, 0, 0}, "cannot open the input file");
   std::string head(4096, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
@@ -78,7 +79,7 @@ std::optional<int> post_if_trr_xy(const TrrPostRequest& a) {
   }
   const trr::Kinematics k = kinematics_for(*job, a.model);
   std::ifstream in;
-  auto reader = open_apt(in, a.input, a.job);
+  auto reader = open_apt(in, a.input_path, a.input, a.job);
 
   trr::PostOptions o;
   o.workpiece_origin_mm = job->workpiece_origin_mm;
@@ -122,7 +123,7 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   if (!job) return std::nullopt;
   const trr::Kinematics k = kinematics_for(*job, a.model);
   std::ifstream in;
-  auto reader = open_apt(in, a.input, a.job);
+  auto reader = open_apt(in, a.input_path, a.input, a.job);
 
   // the program as posted without a tolerance (one block per CL motion), written nowhere
   trr::PostOptions o;
@@ -176,7 +177,7 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   if (csv_file) csv_file->commit();
   for (const auto& n : s.notices) fmt::print(stderr, "notice: {}\n", n);
   fmt::print("{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm (block {}, CL line {}), mean {:.4f} mm, "
-             "largest orientation error {:.4f} deg; blocks over 5 um: {}\n",
+             "largest orientation error {:.4f} deg; blocks over 5 µm: {}\n",
              s.motions_in, blocks, worst, worst_block, worst_line, blocks ? sum / static_cast<double>(blocks) : 0.0,
              rad_to_deg(worst_orientation), over);
   return 0;

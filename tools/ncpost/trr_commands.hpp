@@ -21,7 +21,8 @@ struct TrrPostRequest {
   const std::string& report;
   const std::string& verify_on;
   const std::string& output;
-  const std::string& input;
+  const std::string& input;       ///< name in messages
+  const std::string& input_path;  ///< the file read
 };
 
 /// The exit code if the machine is a TRR-XY machine (then the post has run), else nullopt.
@@ -32,7 +33,8 @@ struct TrrPreviewRequest {
   const std::string& model;
   const std::string& csv;
   const std::string& html;
-  const std::string& input;
+  const std::string& input;       ///< name in messages
+  const std::string& input_path;  ///< the file read
 };
 
 /// The exit code if the machine is a TRR-XY machine (then the preview has run), else nullopt.

@@ -106,7 +106,7 @@ std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vec
 
   fmt::print("TRR-XY identification from {} probed points: rank {} of {} ({} iterations)\n", data.size(),
              id.identifiability.rank, id.identifiability.parameters, id.iterations);
-  fmt::print("residual rms {:.3f} -> {:.3f} um, max {:.3f} -> {:.3f} um\n", id.rms_before_um, id.rms_after_um,
+  fmt::print("residual rms {:.3f} -> {:.3f} µm, max {:.3f} -> {:.3f} µm\n", id.rms_before_um, id.rms_after_um,
              id.max_before_um, id.max_after_um);
   for (int k = 0; k < trr::kParameterCount; ++k) {
     const double sd = id.uncertainty[static_cast<std::size_t>(k)];
@@ -116,7 +116,7 @@ std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vec
       fmt::print("  {:<6} not determined (null space)\n", trr::Errors::name(k));
     else
       fmt::print("  {:<6} {:>10.3f} ± {:.3f} {}\n", trr::Errors::name(k), id.errors[k] * scale, sd * scale,
-                 angle ? "urad" : "um");
+                 angle ? "µrad" : "µm");
   }
   fmt::print("directions the data cannot see (weights per unit of effect):\n");
   for (const auto& dir : id.identifiability.null_space) {

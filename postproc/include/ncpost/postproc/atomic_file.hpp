@@ -40,6 +40,11 @@ class AtomicFile {
   bool to_stdout_ = false;
 };
 
+/// Checks, before anything is computed, that an AtomicFile could be made at `path`: FileError (with
+/// the reason) for a device, FIFO, socket or folder at the path, a missing folder or one without
+/// write permission. "-" (standard output) passes.
+void check_output_path(const std::string& path);
+
 /// Writes a whole small file atomically.
 void write_file_atomically(const std::string& path, std::string_view data);
 
