@@ -5,11 +5,12 @@
 
 #include "commands.hpp"
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ncpost: five-axis CNC post-processor with nonlinear-error and geometric-error compensation"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ncpost 0.1.0");
+  app.set_version_flag("--version", "ncpost " + ncpost::version());
   ncpost::cli::Action action;
   ncpost::cli::add_post(app, action);
   ncpost::cli::add_preview(app, action);
