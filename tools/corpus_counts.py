@@ -176,6 +176,7 @@ def count_gcode(path):
          "lo": [math.inf] * 3, "hi": [-math.inf] * 3}
     mode, plane, pending_t = None, 17, None
     pos = [None, None, None]
+    held = False  # the rapids so far started before every axis was programmed
     with open(path, "rb") as f:
         text = f.read().decode("latin-1").replace("\r", "")
     for no, raw in enumerate(text.split("\n"), 1):
@@ -221,6 +222,12 @@ def count_gcode(path):
                 pos[i] = vals[k]
         if mode in (0, 1) and before == pos:
             r["repeats"] += 1
+        elif mode == 0 and held and all(before[i] is None for i, k in enumerate("XYZ") if k in vals):
+            # rapids before every axis is programmed take the axes' first values (the program starts
+            # where it first says): a rapid that only programs axes unknown so far coincides with the
+            # one before it
+            r["repeats"] += 1
+        held = mode == 0 and (held or r["motions"] == 0) and None in pos
         if None not in pos:
             for i in range(3):
                 r["lo"][i] = min(r["lo"][i], pos[i])

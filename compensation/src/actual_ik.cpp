@@ -4,6 +4,8 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
+#include <vector>
 #include <cmath>
 #include <unsupported/Eigen/AutoDiff>
 
@@ -153,40 +155,137 @@ ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup
   return out;
 }
 
-/// The Newton routes of solve_actual (the fixed point did not converge).
-ActualIkOutcome solve_by_newton(const MachineModel& model, const ClPoint& cl, const Setup& setup,
+/// The side of its dead band an axis with reversal takes in a solution.
+enum class PlaySide { rising, falling, standing };
+
+/// A row state that holds each axis with reversal on a chosen side of its play, for Newton: a
+/// rising axis stands at command + min(0, b), a falling one at command + max(0, b) (smooth in the
+/// command), a standing one where it stands (its command moves it not at all: a zero column of the
+/// Jacobian, which the truncated SVD leaves alone).
+RowState<double> held_on(const std::array<PlaySide, 5>& side, const AxisPosition& previous_actual) {
+  RowState<double> s;
+  std::array<double, 5> from{};
+  for (int a = 0; a < 5; ++a) {
+    const double far = 1e9;  // beyond any band: the clamp picks the edge of the side
+    switch (side[static_cast<std::size_t>(a)]) {
+      case PlaySide::rising: from[static_cast<std::size_t>(a)] = -far; break;
+      case PlaySide::falling: from[static_cast<std::size_t>(a)] = far; break;
+      case PlaySide::standing: from[static_cast<std::size_t>(a)] = previous_actual[a]; break;
+    }
+  }
+  s.previous_actual = from;
+  return s;
+}
+
+/// The actual pose at q from where the axes stand (the dead band evaluated exactly), its errors
+/// against the CL point written into `out`; true when within the tolerances.
+bool check_exact(const MachineModel& model, const ClPoint& cl, const Setup& setup, const AxisPosition& q,
+                 const ActualIkOptions& o, ActualIkOutcome& out) {
+  const int n = 3 + model.machine().rotary_count();
+  const RowState<double> state = reversal_state(model, q, o.previous_actual);
+  const ToolPoseT<double> pose = model.tool_pose(q, setup, state, o.home);
+  const Vec3d u = cl.axis.normalized();
+  out.tip_error_mm = (pose.tip_mm - cl.tip_mm).norm();
+  out.axis_error_rad = std::atan2(pose.axis.cross(u).norm(), pose.axis.dot(u));
+  if (out.tip_error_mm > o.tip_tolerance_mm || (n == 5 && out.axis_error_rad > o.axis_tolerance_rad)) return false;
+  out.position = q;
+  out.actual = q;
+  for (int a = 0; a < n; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
+  out.actual_pose = pose;
+  return true;
+}
+
+/// Reversal is a play: the actual position of an axis is a non-smooth function of its command
+/// (it stands still while the command crosses the band), which Newton on the exact dead band cannot
+/// follow where the axis must move little or turn back. Solve instead for where the axes must
+/// actually go (the model without offsets, smooth), which tells each axis with reversal the side
+/// of its band the motion implies; then solve the commands with every axis held on its side
+/// (smooth again), and check the result on the exact dead band. An axis whose needed move is
+/// within the tolerances stands still (its command stays where it was, inside the band): crossing
+/// the play for a move below the NC words' resolution would only add take-ups. Where the first
+/// choice of sides fails the check (a move so small that the offsets' own effect turns it), every
+/// other choice is tried: a solution within the limits is never given up for the kink.
+ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, const Setup& setup,
                                 const AxisPosition& nominal_guess, const ActualIkOptions& o) {
   const int n = 3 + model.machine().rotary_count();
-  if (n == 3 && o.previous_actual && model.has_reversal()) {
-    // Three-axis machine with reversal: the dead band makes the actual position a non-smooth
-    // function of the command (it stands still inside the band), which Newton cannot follow.
-    // Solve for where the axes must actually go (no offsets), then fix each offset by the
-    // direction from where the axis stands (rising: min(0, b), falling: max(0, b)) and solve
-    // the commands with those offsets held.
-    const ActualIkOutcome free = newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
-    if (!free.ok()) return free;
-    RowState<double> fixed;
-    AxisPosition guess = *free.position;
-    for (int a = 0; a < 3; ++a) {
-      const int p = model.layout().reversal_of(a);
-      if (p < 0) continue;
-      const double b = model.values()[static_cast<std::size_t>(p)];
-      const bool rising = (*free.position)[a] >= (*o.previous_actual)[a];
-      fixed.reversal[static_cast<std::size_t>(a)] = rising ? std::min(0.0, b) : std::max(0.0, b);
-      guess[a] -= fixed.reversal[static_cast<std::size_t>(a)];
-    }
-    return newton(model, cl, setup, guess, o, [&](const AxisPosition&) { return fixed; });
+  const AxisPosition& from = *o.previous_actual;
+  ActualIkOutcome free = newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
+  if (!free.ok()) return free;
+  std::vector<int> play_axes;
+  std::array<PlaySide, 5> implied{};
+  implied.fill(PlaySide::rising);
+  for (int a = 0; a < n; ++a) {
+    if (model.layout().reversal_of(a) < 0) continue;
+    play_axes.push_back(a);
+    implied[static_cast<std::size_t>(a)] = (*free.position)[a] >= from[a] ? PlaySide::rising : PlaySide::falling;
   }
-  return newton(model, cl, setup, nominal_guess, o,
-                [&](const AxisPosition& q) { return reversal_state(model, q, o.previous_actual); });
+  // the command of side s for the actual position x of axis a
+  auto command_for = [&](int a, PlaySide s, double x) {
+    const double b = model.values()[static_cast<std::size_t>(model.layout().reversal_of(a))];
+    const double lo = std::min(0.0, b), hi = std::max(0.0, b);
+    if (s == PlaySide::rising) return x - lo;
+    if (s == PlaySide::falling) return x - hi;
+    // standing: anywhere in [from − hi, from − lo]; where the command was, if known
+    const double keep = o.previous_command ? (*o.previous_command)[a] : (*free.position)[a];
+    return std::clamp(keep, from[a] - hi, from[a] - lo);
+  };
+  auto attempt = [&](const std::array<PlaySide, 5>& side, ActualIkOutcome& out) {
+    AxisPosition guess = *free.position;
+    for (int a : play_axes) guess[a] = command_for(a, side[static_cast<std::size_t>(a)], (*free.position)[a]);
+    const RowState<double> held = held_on(side, from);
+    const ActualIkOutcome r = newton(model, cl, setup, guess, o, [&](const AxisPosition&) { return held; });
+    out = r;
+    out.position.reset();
+    return r.ok() && check_exact(model, cl, setup, *r.position, o, out);
+  };
+  // first the implied sides with every axis whose move is tiny standing; then the implied sides;
+  // then every other choice (3^k, k axes with reversal)
+  std::vector<std::array<PlaySide, 5>> order;
+  std::array<PlaySide, 5> still = implied;
+  for (int a : play_axes) {
+    const double move = std::abs((*free.position)[a] - from[a]);
+    const double small = a < 3 ? o.tip_tolerance_mm : o.axis_tolerance_rad;
+    if (move <= small) still[static_cast<std::size_t>(a)] = PlaySide::standing;
+  }
+  order.push_back(still);
+  if (still != implied) order.push_back(implied);
+  const int k = static_cast<int>(play_axes.size());
+  int combos = 1;
+  for (int i = 0; i < k; ++i) combos *= 3;
+  for (int c = 0; c < combos; ++c) {
+    std::array<PlaySide, 5> side = implied;
+    int code = c;
+    for (int a : play_axes) {
+      side[static_cast<std::size_t>(a)] = static_cast<PlaySide>(code % 3);
+      code /= 3;
+    }
+    if (std::find(order.begin(), order.end(), side) == order.end()) order.push_back(side);
+  }
+  ActualIkOutcome best;
+  bool have_best = false;
+  for (const auto& side : order) {
+    ActualIkOutcome out;
+    if (attempt(side, out)) return out;
+    if (!have_best || out.tip_error_mm < best.tip_error_mm) {
+      best = out;
+      have_best = true;
+    }
+  }
+  best.message = fmt::format(
+      "no command on either side of the reversal play reaches the CL point (closest: tip {:.3g} mm, axis {:.3g} rad)",
+      best.tip_error_mm, best.axis_error_rad);
+  return best;
 }
 
 }  // namespace
 
 ActualIkOutcome solve_actual(const MachineModel& model, const ClPoint& cl, const Setup& setup,
                              const AxisPosition& nominal_guess, const ActualIkOptions& o) {
+  // with reversal the fixed point may converge on a needless crossing of the play: Newton on sides
+  if (o.previous_actual && model.has_reversal()) return solve_with_play(model, cl, setup, nominal_guess, o);
   if (auto fast = fixed_point(model, cl, setup, nominal_guess, o)) return *fast;
-  return solve_by_newton(model, cl, setup, nominal_guess, o);
+  // no history: reversal offsets 0 (approach from below)
+  return newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
 }
 
 }  // namespace ncpost::comp

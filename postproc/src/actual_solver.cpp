@@ -39,12 +39,17 @@ void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& ac
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
                                       const std::optional<ClPoint>& guess_solves, SolveFigures* figures,
-                                      std::string& failure, std::optional<ToolPoseT<double>>* executed) const {
+                                      std::string& failure, std::optional<ToolPoseT<double>>* executed,
+                                      const std::optional<AxisPosition>& previous,
+                                      const std::optional<AxisPosition>& stands) const {
   comp::ActualIkOptions options;
   options.guess_solves = guess_solves;
   options.tip_tolerance_mm = kPostTipToleranceMm;
   options.axis_tolerance_rad = kPostAxisToleranceRad;
-  if (model_.has_reversal()) options.previous_actual = actual_;
+  if (model_.has_reversal()) {
+    options.previous_actual = stands;
+    options.previous_command = previous;
+  }
   options.home = &home_;
   const comp::ActualIkOutcome r = comp::solve_actual(model_, cl, setup_, guess, options);
   if (!r.ok()) {
@@ -65,6 +70,11 @@ void ActualSolver::record(const SolveFigures& figures) const {
 }
 
 IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const {
+  return solve_standing(cl, previous, figures, actual_);
+}
+
+IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures,
+                                       const std::optional<AxisPosition>& stands) const {
   // The start: the nominal solution of the CL point less the machine's error at the previous
   // commands (its error changes little from one point to the next), on the post's choice of
   // solution; the compensated IK then usually converges at once. With reversal the error depends
@@ -87,12 +97,12 @@ IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previ
     const IkOutcome plain = from_cl ? o : nominal_.solve(cl, previous);
     if (plain.ok())
       figures->uncompensated_tip_mm =
-          (model_.tool_pose(*plain.position, setup_, comp::reversal_state(model_, *plain.position, actual_), &home_).tip_mm -
+          (model_.tool_pose(*plain.position, setup_, comp::reversal_state(model_, *plain.position, stands), &home_).tip_mm -
            cl.tip_mm).norm();
   }
   std::string failure;
   std::optional<ToolPoseT<double>> executed;
-  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed);
+  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed, previous, stands);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
@@ -111,7 +121,7 @@ AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d&
   if (measure_uncompensated_)
     figures.uncompensated_tip_mm =
         (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, actual_), &home_).tip_mm - cl.tip_mm).norm();
-  const AxisPosition q = compensate(cl, nominal, std::nullopt, &figures, failure);
+  const AxisPosition q = compensate(cl, nominal, std::nullopt, &figures, failure, nullptr, std::nullopt, actual_);
   record(figures);
   return failure.empty() ? q : nominal;
 }
@@ -125,7 +135,7 @@ void ActualSolver::advance(const AxisPosition& command) const {
 }
 
 std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, const AxisPosition& to) const {
-  if (!model_.has_reversal() || !actual_) return std::nullopt;
+  if (!model_.has_reversal() || !actual_ || take_up_in_blocks_) return std::nullopt;
   AxisPosition q = from;
   bool any = false;
   const int n = static_cast<int>(model_.machine().axes.size());
@@ -144,6 +154,14 @@ std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, cons
   }
   if (!any) return std::nullopt;
   return q;
+}
+
+bool ActualSolver::reaches(const ClPoint& cl, const AxisPosition& q, const std::optional<AxisPosition>& stands) const {
+  const ToolPoseT<double> pose = model_.tool_pose(q, setup_, comp::reversal_state(model_, q, stands), &home_);
+  const Vec3d u = cl.axis.normalized();
+  const double axis_rad = std::atan2(pose.axis.cross(u).norm(), pose.axis.dot(u));
+  return (pose.tip_mm - cl.tip_mm).norm() <= kPostTipToleranceMm &&
+         (model_.machine().rotary_count() == 0 || axis_rad <= kPostAxisToleranceRad);
 }
 
 Vec3d ActualSolver::programmed_tip(const ClPoint&, const AxisPosition& q) const {

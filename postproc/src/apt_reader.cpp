@@ -5,6 +5,8 @@
 #include <cmath>
 #include <deque>
 
+#include "ncpost/postproc/apt_line_source.hpp"
+#include "ncpost/postproc/apt_nurbs.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 
 #include <cctype>
@@ -41,18 +43,35 @@ std::optional<double> number_after(const AptStatement& st, const char* w) {
   return std::nullopt;
 }
 
-bool is_binary_junk(const std::string& line) {
-  int bad = 0;
+bool is_binary_junk(std::string_view line) {
   for (unsigned char c : line)
-    if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f) ++bad;
-  return bad > 0;
+    if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f) return true;
+  return false;
 }
+
+/// Largest coordinate accepted (mm): a CL point 10 km away is damaged input, not a part.
+constexpr double kMaxCoordinateMm = 1e7;
 
 }  // namespace
 
+/// The position of the comma before "CNTRL/" in "KNOT/k,CNTRL/x,y,z", else npos.
+std::size_t knot_with_control_point(const std::string& statement) {
+  const std::size_t b = statement.find_first_not_of(" \t");
+  if (b == std::string::npos || statement.size() < b + 4) return std::string::npos;
+  std::string head;
+  for (std::size_t i = b; i < statement.size(); ++i) head += static_cast<char>(std::toupper(static_cast<unsigned char>(statement[i])));
+  if (head.rfind("KNOT", 0) != 0) return std::string::npos;
+  const std::size_t c = head.find("CNTRL");
+  if (c == std::string::npos) return std::string::npos;
+  const std::size_t comma = head.find_last_of(',', c);
+  if (comma == std::string::npos || head.find_first_not_of(" \t", comma + 1) != c) return std::string::npos;
+  return b + comma;
+}
+
 struct AptReader::State {
-  std::istream& in;
+  AptLineSource lines;
   std::string file;
+  ReaderOptions options;
   double scale = 1.0;  // mm per file unit
   int line_number = 0;
   Vec3d axis = Vec3d::UnitZ();
@@ -65,13 +84,52 @@ struct AptReader::State {
   bool nx_circle_axis = false;
   std::deque<Record> pending;
   std::vector<std::string> notices;
+  bool have_position = false;     ///< a motion has set `position`
+  bool any_statement = false;
+  bool last_was_end = false;      ///< the last statement was FINI, END or END-OF-PATH
+  /// A 6-value CIRCLE (radius taken from the start point): the next motion must end on it.
+  struct ArcCheck {
+    Location where;
+    Vec3d center_mm, axis;
+    double radius_mm;
+  };
+  std::optional<ArcCheck> arc_check;
+  /// NX MSYS: W = msys_origin + msys_R * (file coordinates) under Msys::apply.
+  Vec3d msys_origin_mm = Vec3d::Zero();
+  Eigen::Matrix3d msys_R = Eigen::Matrix3d::Identity();
+  std::optional<Location> first_msys;
+  std::optional<Location> rotating_msys;  ///< an MSYS that rotates, posted as written (ignore)
+  /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
+  struct NurbsBlock {
+    Location where;
+    std::optional<int> degree;
+    NurbsCurve curve;
+  };
+  std::optional<NurbsBlock> nurbs;
 
-  State(std::istream& i, std::string f, ReaderOptions o) : in(i), file(std::move(f)) {
+  State(std::istream& i, std::string f, ReaderOptions o) : lines(i, f), file(std::move(f)), options(o) {
     if (o.default_inch) scale = kMmPerInch;
+    if (!(options.curve_tolerance_mm > 0.0) || !std::isfinite(options.curve_tolerance_mm))
+      throw InputError({file, 0, 0}, "the curve tolerance must be a positive number of mm");
+  }
+
+  /// A point / direction of the file (in mm) in W.
+  Vec3d to_w(const Vec3d& p_mm) const {
+    return options.msys == ReaderOptions::Msys::apply ? Vec3d(msys_origin_mm + msys_R * p_mm) : p_mm;
+  }
+  Vec3d dir_to_w(const Vec3d& v) const {
+    return options.msys == ReaderOptions::Msys::apply ? Vec3d(msys_R * v) : v;
+  }
+  void check_coordinates(const AptStatement& st, const std::vector<double>& v, std::size_t count) const {
+    for (std::size_t i = 0; i < count && i < v.size(); ++i)
+      if (std::abs(v[i] * scale) > kMaxCoordinateMm)
+        fail(st.where, fmt::format("{} coordinate {:.6g} mm is out of range (expected |x| <= {:g} mm)", st.major,
+                                   v[i] * scale, kMaxCoordinateMm),
+             echo_of(st.major + "/" + st.raw_arguments));
   }
 
   [[noreturn]] void fail(Location w, const std::string& what, const std::string& text) const {
-    throw InputError({file, w.line, w.column}, what, text);
+    throw InputError({file, w.line, w.column}, what, echo_for(text, w.column));
   }
 
   /// Next logical statement: continuation lines joined, CR stripped. False at end of file.
@@ -82,10 +140,11 @@ struct AptReader::State {
   bool read_logical(std::string& out, Location& where) {
     out.clear();
     bool continued = false;
-    while (std::getline(in, line)) {
-      ++line_number;
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      if (is_binary_junk(line)) fail({line_number, 1}, "binary or control characters (expected APT CL text)", "");
+    std::string_view physical;
+    while (lines.next(physical)) {
+      line_number = lines.line_number();
+      if (is_binary_junk(physical)) fail({line_number, 1}, "binary or control characters (expected APT CL text)", "");
+      line.assign(physical);
       if (!continued) {
         const auto b = line.find_first_not_of(" \t");
         if (b == std::string::npos) continue;  // blank line
@@ -105,11 +164,22 @@ struct AptReader::State {
       return true;
     }
     if (continued) return true;  // a file ending in '$': take what we have
-    if (in.bad()) fail({line_number, 0}, "read error", "");
     return false;
   }
 
   std::vector<double> numbers;  ///< the numbers of the current motion statement
+
+  /// The end of the input: an empty file, or one whose last statement is not FINI / END /
+  /// END-OF-PATH (a cut copy would post a gouge) is refused.
+  void end_of_file() const {
+    if (!any_statement)
+      fail({0, 0}, "the CL file is empty (no statements); expected APT CL data ending with FINI", "");
+    if (!last_was_end && !options.allow_unterminated)
+      fail({line_number, 0},
+           "file ends without FINI: truncated? (the last statement is not FINI, END or END-OF-PATH); check the copy, or "
+           "give --allow-unterminated to post it as it is",
+           "");
+  }
 
   Motion motion(const AptStatement& st, bool relative) {
     const std::vector<double>& v = numbers_into(st, numbers);
@@ -118,21 +188,23 @@ struct AptReader::State {
     Motion m;
     m.where = st.where;
     if (relative) {
-      if (v.size() == 3) position += scale * Vec3d(v[0], v[1], v[2]);
+      check_coordinates(st, v, 3);
+      if (v.size() == 3) position += dir_to_w(scale * Vec3d(v[0], v[1], v[2]));
       else if (v.size() == 1) position += scale * v[0] * axis;
       else fail(st.where, fmt::format("GODLTA expects 1 or 3 numbers, got {}", v.size()), "GODLTA/" + st.raw_arguments);
     } else {
       if (v.size() != 3 && v.size() != 6)
         fail(st.where, fmt::format("{} expects 3 or 6 numbers (x,y,z[,i,j,k]), got {}", st.major, v.size()),
              st.major + "/" + st.raw_arguments);
-      position = scale * Vec3d(v[0], v[1], v[2]);
+      check_coordinates(st, v, 3);
+      position = to_w(scale * Vec3d(v[0], v[1], v[2]));
       if (v.size() == 6) {
         const Vec3d a(v[3], v[4], v[5]);
         if (a.norm() < 1e-9)
           fail(st.where, "tool axis (i, j, k) is zero (expected a unit vector)", st.major + "/" + st.raw_arguments);
         if (std::abs(a.norm() - 1.0) > 1e-3)
           notices.push_back(fmt::format("{}:{}: tool axis of length {:.6f} normalised", file, st.where.line, a.norm()));
-        axis = a.normalized();
+        axis = dir_to_w(a.normalized());
         m.axis_given = true;
       }
     }
@@ -140,7 +212,28 @@ struct AptReader::State {
     m.point.axis = axis;
     m.rapid = rapid_pending;
     rapid_pending = false;
+    have_position = true;
+    if (arc_check) check_arc_end(*arc_check, st);
+    arc_check.reset();
     return m;
+  }
+
+  /// The distance of `p` from the axis of a circle (its radius if `p` is on the circle).
+  static double radius_at(const Vec3d& p, const Vec3d& center, const Vec3d& n) {
+    const Vec3d r = p - center;
+    return (r - r.dot(n) * n).norm();
+  }
+
+  /// The end of a 6-value CIRCLE (whose radius came from its start) must lie on the same circle.
+  void check_arc_end(const ArcCheck& c, const AptStatement& end) const {
+    const double r_end = radius_at(position, c.center_mm, c.axis);
+    const double tol = options.curve_tolerance_mm;
+    if (std::abs(r_end - c.radius_mm) > tol)
+      fail(c.where,
+           fmt::format("CIRCLE: the arc starts {:.4f} mm from its axis but ends {:.4f} mm from it at line {} (more than "
+                       "the tolerance {:g} mm): the start point, centre or end point is wrong",
+                       c.radius_mm, r_end, end.where.line, tol),
+           "");
   }
 
   Feed feed(const AptStatement& st) {
@@ -179,8 +272,180 @@ struct AptReader::State {
     return c;
   }
 
+  /// CIRCLE/xc,yc,zc,i,j,k,r[,...] (APT, NX, Creo) or CIRCLE/xc,yc,zc,i,j,k (SOLIDWORKS CAM: the
+  /// radius is the start point's distance from the axis, and the end point must agree).
+  Circle circle(const AptStatement& st, const std::string& text) {
+    const auto v = numbers_of(st);
+    if (v.size() != 6 && v.size() < 7)
+      fail(st.where, fmt::format("CIRCLE expects 6 numbers (xc,yc,zc,i,j,k) or 7 and more (xc,yc,zc,i,j,k,r,...), got {}",
+                                 v.size()),
+           echo_of(text));
+    check_coordinates(st, v, 3);
+    Circle c;
+    c.where = st.where;
+    c.center_mm = to_w(scale * Vec3d(v[0], v[1], v[2]));
+    const Vec3d a(v[3], v[4], v[5]);
+    if (a.norm() < 1e-9) fail(st.where, "CIRCLE axis is zero", echo_of(text));
+    c.axis = dir_to_w(nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized()));
+    if (v.size() >= 7) {
+      c.radius_mm = scale * v[6];
+      return c;
+    }
+    if (!have_position)
+      fail(st.where, "CIRCLE without a radius before any motion: the radius is taken from the start point", echo_of(text));
+    c.radius_mm = radius_at(position, c.center_mm, c.axis);
+    if (c.radius_mm < 1e-6) fail(st.where, "CIRCLE: the start point lies on the circle's axis (radius 0)", echo_of(text));
+    arc_check = ArcCheck{st.where, c.center_mm, c.axis, c.radius_mm};
+    return c;
+  }
+
+  /// MSYS/x,y,z, xi,xj,xk, yi,yj,yk: the MCS in the absolute frame.
+  void msys(const AptStatement& st, const std::string& text) {
+    const auto v = numbers_of(st);
+    if (v.size() != 9) fail(st.where, fmt::format("MSYS expects 9 numbers (origin, X axis, Y axis), got {}", v.size()), echo_of(text));
+    check_coordinates(st, v, 3);
+    const Vec3d x(v[3], v[4], v[5]), y(v[6], v[7], v[8]);
+    if (std::abs(x.norm() - 1.0) > 1e-4 || std::abs(y.norm() - 1.0) > 1e-4 || std::abs(x.dot(y)) > 1e-4)
+      fail(st.where, "MSYS: the X and Y axes must be orthogonal unit vectors", echo_of(text));
+    Eigen::Matrix3d r;
+    r.col(0) = x.normalized();
+    r.col(2) = x.cross(y).normalized();
+    r.col(1) = r.col(2).cross(r.col(0));
+    const Vec3d origin = scale * Vec3d(v[0], v[1], v[2]);
+    const bool same = (r - msys_R).cwiseAbs().maxCoeff() < 1e-6 && (origin - msys_origin_mm).norm() < 1e-6;
+    const bool rotates = (r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-6;
+    if (options.msys == ReaderOptions::Msys::ignore) {
+      if (first_msys && !same)
+        fail(st.where,
+             fmt::format("MSYS differs from the one at line {}: the operations' GOTOs are written in different MCSs, which "
+                         "--msys ignore would post in one frame; use --msys apply to post them all in the absolute frame",
+                         first_msys->line),
+             echo_of(text));
+      if (rotates && !rotating_msys) {
+        rotating_msys = st.where;
+        notices.push_back(fmt::format("{}:{}: MSYS rotates the MCS (its Z axis is {:.6f}, {:.6f}, {:.6f} in the absolute "
+                                      "frame); the GOTOs are posted as written, in the MCS (--msys ignore)",
+                                      file, st.where.line, r(0, 2), r(1, 2), r(2, 2)));
+      }
+    }
+    if (!first_msys) first_msys = st.where;
+    msys_R = r;
+    msys_origin_mm = origin;
+  }
+
+  /// NURBS/[degree] starts a curve; KNOT/k... and CNTRL/x,y,z[,w] or x,y,z,i,j,k[,w] fill it.
+  void nurbs_record(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    if (w == "NURBS") {
+      nurbs = NurbsBlock{st.where, std::nullopt, {}};
+      const auto v = numbers_of(st);
+      if (auto d = number_after(st, "DEGREE")) nurbs->degree = static_cast<int>(*d);
+      else if (auto o = number_after(st, "ORDER")) nurbs->degree = static_cast<int>(*o) - 1;
+      else if (!v.empty()) fail(st.where, "NURBS: a number without DEGREE or ORDER before it", echo_of(text));
+      return;
+    }
+    if (!nurbs) fail(st.where, fmt::format("{} outside a NURBS/ curve", w), echo_of(text));
+    const auto v = numbers_of(st);
+    if (v.size() != st.arguments.size()) fail(st.where, fmt::format("{} expects numbers only", w), echo_of(text));
+    if (w == "KNOT") {
+      if (v.empty()) fail(st.where, "KNOT expects one or more knot values", echo_of(text));
+      nurbs->curve.knots.insert(nurbs->curve.knots.end(), v.begin(), v.end());
+      return;
+    }
+    // CNTRL
+    if (v.size() != 3 && v.size() != 4 && v.size() != 6 && v.size() != 7)
+      fail(st.where, fmt::format("CNTRL expects x,y,z[,w] or x,y,z,i,j,k[,w], got {} numbers", v.size()), echo_of(text));
+    check_coordinates(st, v, 3);
+    NurbsCurve& c = nurbs->curve;
+    if (!c.points_mm.empty() && (c.axes.empty() != (v.size() < 6)))
+      fail(st.where, "CNTRL: a tool axis on some control points but not on others", echo_of(text));
+    c.points_mm.push_back(to_w(scale * Vec3d(v[0], v[1], v[2])));
+    c.weights.push_back(v.size() == 4 ? v[3] : v.size() == 7 ? v[6] : 1.0);
+    if (v.size() >= 6) {
+      const Vec3d a(v[3], v[4], v[5]);
+      if (a.norm() < 1e-9) fail(st.where, "CNTRL: tool axis is zero", echo_of(text));
+      c.axes.push_back(dir_to_w(a.normalized()));
+    }
+  }
+
+  /// Ends the NURBS curve being collected: its chords become motions. `next` is the statement
+  /// after the curve: a GOTO at the curve's end is the curve's last motion (its axis ends it).
+  /// Returns true if `next` was consumed so.
+  bool finish_nurbs(const AptStatement* next) {
+    NurbsBlock b = std::move(*nurbs);
+    nurbs.reset();
+    NurbsCurve& c = b.curve;
+    if (c.weights.size() < c.points_mm.size()) c.weights.resize(c.points_mm.size(), 1.0);
+    if (!b.degree) b.degree = static_cast<int>(c.knots.size()) - static_cast<int>(c.points_mm.size()) - 1;
+    c.degree = *b.degree;
+    if (const std::string d = c.defect(); !d.empty()) fail(b.where, "NURBS: " + d, "");
+    if (!have_position) fail(b.where, "NURBS before any motion: the curve must start where the tool is", "");
+    const Vec3d start = c.point_at(c.u_begin());
+    const double tol = std::max(options.curve_tolerance_mm, 1e-3);
+    if ((start - position).norm() > tol)
+      fail(b.where,
+           fmt::format("NURBS starts {:.4f} mm away from the tool position ({:.4f}, {:.4f}, {:.4f}); expected the curve "
+                       "to start where the previous motion ended",
+                       (start - position).norm(), position.x(), position.y(), position.z()),
+           "");
+    const Vec3d end = c.point_at(c.u_end());
+    // the GOTO after the curve, when it is the curve's end, gives the end tool axis
+    std::optional<Vec3d> end_axis;
+    bool consumed = false;
+    Location end_where = b.where;
+    if (next && next->major == "GOTO") {
+      const std::vector<double>& v = numbers_into(*next, numbers);
+      if ((v.size() == 3 || v.size() == 6) && v.size() == next->arguments.size() &&
+          (to_w(scale * Vec3d(v[0], v[1], v[2])) - end).norm() <= tol) {
+        consumed = true;
+        end_where = next->where;
+        if (v.size() == 6 && Vec3d(v[3], v[4], v[5]).norm() > 1e-9) end_axis = dir_to_w(Vec3d(v[3], v[4], v[5]).normalized());
+      }
+    }
+    const Vec3d axis0 = axis;
+    const Vec3d axis1 = end_axis.value_or(axis0);
+    const std::vector<double> us = linearize(c, options.curve_tolerance_mm);
+    const double u0 = c.u_begin(), u1 = c.u_end();
+    const bool rapid = rapid_pending;
+    rapid_pending = false;
+    for (std::size_t i = 1; i < us.size(); ++i) {
+      const bool last = i + 1 == us.size();
+      Motion m;
+      m.where = last ? end_where : b.where;
+      m.point.tip_mm = last && consumed ? to_w(scale * Vec3d(numbers[0], numbers[1], numbers[2])) : c.point_at(us[i]);
+      if (auto a = c.axis_at(us[i])) {
+        m.point.axis = *a;
+        m.axis_given = true;
+      } else {
+        const double t = (us[i] - u0) / (u1 - u0);
+        const Vec3d blend = (1.0 - t) * axis0 + t * axis1;  // the file gives the ends only
+        m.point.axis = blend.norm() > 1e-9 ? Vec3d(blend.normalized()) : axis1;
+        m.axis_given = end_axis.has_value();
+      }
+      m.rapid = rapid;
+      position = m.point.tip_mm;
+      axis = m.point.axis;
+      pending.push_back(m);
+    }
+    return consumed;
+  }
+
   /// Applies a statement: queues the records it produces (none for modal settings).
   void apply(const AptStatement& st, const std::string& text) {
+    any_statement = true;
+    if (nurbs && st.major != "KNOT" && st.major != "CNTRL") {
+      if (finish_nurbs(&st)) {
+        last_was_end = false;
+        return;
+      }
+    }
+    const bool is_end = st.major == "END-OF-PATH" || st.major == "END" || st.major == "FINI";
+    // lines of an NX listing around the data ("Tool Path Listing has 81 lines.") are no statements
+    if (is_end || st.has_slash || st.major == "RAPID") last_was_end = is_end;
+    apply_statement(st, text);
+  }
+
+  void apply_statement(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
     const Location at = st.where;
     auto comment = [&](std::string t) { pending.push_back(Comment{at, std::move(t)}); };
@@ -202,7 +467,7 @@ struct AptReader::State {
       multax = !has_word(st, "OFF");
     } else if (w == "TLAXIS") {
       const auto v = numbers_of(st);
-      if (v.size() >= 3 && Vec3d(v[0], v[1], v[2]).norm() > 1e-9) axis = Vec3d(v[0], v[1], v[2]).normalized();
+      if (v.size() >= 3 && Vec3d(v[0], v[1], v[2]).norm() > 1e-9) axis = dir_to_w(Vec3d(v[0], v[1], v[2]).normalized());
       else fail(at, "TLAXIS expects i, j, k of a non-zero vector", text);
     } else if (w == "SPINDL") {
       Spindle s;
@@ -228,16 +493,7 @@ struct AptReader::State {
       if (auto l = number_after(st, "LENGTH")) t.length_mm = *l * scale;
       pending.push_back(t);
     } else if (w == "CIRCLE") {
-      const auto v = numbers_of(st);
-      if (v.size() < 7) fail(at, fmt::format("CIRCLE expects at least 7 numbers (xc,yc,zc,i,j,k,r), got {}", v.size()), text);
-      Circle c;
-      c.where = at;
-      c.center_mm = scale * Vec3d(v[0], v[1], v[2]);
-      const Vec3d a(v[3], v[4], v[5]);
-      if (a.norm() < 1e-9) fail(at, "CIRCLE axis is zero", text);
-      c.axis = nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized());
-      c.radius_mm = scale * v[6];
-      pending.push_back(c);
+      pending.push_back(circle(st, text));
     } else if (w == "CUTCOM") {
       CutterComp c;
       c.where = at;
@@ -254,10 +510,18 @@ struct AptReader::State {
       if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
-      comment("PARTNO " + (st.has_slash ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)))));
+      // PARTNO/text, or PARTNO text (which may hold a '/' of its own)
+      std::string rest = w == "PARTNO" ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)));
+      rest.erase(0, std::min(rest.size(), rest.find_first_not_of(" \t/")));
+      comment("PARTNO " + rest);
     } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
       pending.push_back(End{at, w == "FINI"});
-    } else if (w == "MSYS" || w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" ||
+    } else if (w == "NURBS" || w == "KNOT" || w == "CNTRL") {
+      nurbs_record(st, text);
+    } else if (w == "MSYS") {
+      msys(st, text);
+      comment(w + "/" + st.raw_arguments);
+    } else if (w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" ||
                w == "MACHIN" || w == "CLRSRF" || w == "SELCTL") {
       // Information for the post that does not change the motion: kept as a comment.
       if (w != "PAINT") comment(w + (st.has_slash ? "/" + st.raw_arguments : ""));
@@ -279,7 +543,16 @@ std::optional<Record> AptReader::next() {
   std::string& text = s.text;
   Location where;
   while (s.pending.empty()) {
-    if (!s.read_logical(text, where)) return std::nullopt;
+    if (!s.read_logical(text, where)) {
+      if (s.nurbs) {
+        s.finish_nurbs(nullptr);
+        s.last_was_end = false;
+        continue;
+      }
+      s.end_of_file();
+      return std::nullopt;
+    }
+    s.any_statement = true;
     if (text.rfind("$$", 0) == 0) {
       std::string c = text.substr(2);
       const auto b = c.find_first_not_of(" \t");
@@ -290,11 +563,27 @@ std::optional<Record> AptReader::next() {
     std::string& statement = s.statement;
     statement.assign(text, 0, text.find("$$"));
     if (statement.find_first_not_of(" \t") == std::string::npos) continue;
+    // NX may write a knot and a control point in one record: KNOT/k,CNTRL/x,y,z
+    if (const std::size_t cntrl = knot_with_control_point(statement); cntrl != std::string::npos) {
+      const std::string second = statement.substr(cntrl + 1);
+      statement.resize(cntrl);
+      s.apply(parse_apt_statement(statement, s.file, where), statement);
+      s.apply(parse_apt_statement(second, s.file, {where.line, where.column + static_cast<int>(cntrl) + 1}), second);
+      continue;
+    }
     s.apply(parse_apt_statement(statement, s.file, where), statement);
   }
   Record r = std::move(s.pending.front());
   s.pending.pop_front();
   return r;
+}
+
+std::string AptReader::failure_hint() const {
+  const State& s = *state_;
+  if (!s.rotating_msys) return {};
+  return fmt::format("{}:{}: the file's MSYS rotates the MCS and the GOTOs were posted as written (--msys ignore): MSYS is "
+                     "the likely cause; try --msys apply",
+                     s.file, s.rotating_msys->line);
 }
 
 std::vector<std::string> AptReader::take_notices() {
@@ -309,11 +598,11 @@ bool looks_like_apt(const std::string& head) {
   static const char* const kMajor[] = {"GOTO", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$",
                                        "FEDRAT", "UNITS", "UNIT", "CIRCLE", "SPINDL", "COOLNT", "RAPID",
                                        "TLAXIS", "CUTTER", "MSYS", "PPRINT"};
-  std::size_t start = 0;
+  std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte order mark
   while (start < head.size()) {
-    std::size_t end = head.find('\n', start);
+    std::size_t end = head.find_first_of("\n\r", start);  // LF, CRLF or CR-only line ends
     if (end == std::string::npos) end = head.size();
-    std::size_t b = head.find_first_not_of(" \t\r", start);
+    std::size_t b = head.find_first_not_of(" \t", start);
     if (b < end) {
       std::string line;
       for (std::size_t i = b; i < end; ++i) line += static_cast<char>(std::toupper(static_cast<unsigned char>(head[i])));

@@ -1,7 +1,10 @@
 // The Spirit X3 grammar of one APT statement:
 //   statement := major [ '/' arguments ]
 //   arguments := argument % ','          (a trailing empty argument is dropped)
-//   argument  := number | word           (number: the whole trimmed field is a real number)
+//   argument  := number | word           (number: the whole trimmed field is a real number;
+//                                          word: a name, which may start with a digit: 1STPECK)
+// The statements that carry free text (PPRINT, INSERT, PARTNO, TPRINT, OPERATION NAME, TOOL PATH)
+// keep their text whole: it is never read as numbers.
 // <cfloat> first: X3's table of powers of ten for double is only compiled in when DBL_MAX_10_EXP
 // is defined (otherwise every fractional number costs a call to std::pow).
 #include <cfloat>
@@ -14,6 +17,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "ncpost/postproc/apt_line_source.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 
 namespace ncpost::cl {
@@ -36,6 +40,20 @@ std::string trim(const std::string& s) {
 // Grammar pieces: the major word (up to '/'); fields are split at commas and read by x3::double_.
 const auto major_word = x3::rule<struct major_tag, std::string>{"major word"} = x3::raw[+(x3::char_ - '/')];
 
+/// A field that starts with a digit but is not a number: a name (1STPECK, 10_SVERL_63_N2) when it
+/// has a character no number has; otherwise a malformed number (2.5.3, 1.5E).
+bool is_digit_first_word(std::string_view t) {
+  if (t.empty() || !std::isdigit(static_cast<unsigned char>(t[0]))) return false;
+  for (char c : t)
+    if (!std::isdigit(static_cast<unsigned char>(c)) && c != '.' && c != 'e' && c != 'E' && c != '+' && c != '-') return true;
+  return false;
+}
+
+bool carries_free_text(const std::string& major) {
+  return major == "PPRINT" || major == "INSERT" || major == "TPRINT" || major == "OPERATION NAME" ||
+         major == "TOOL PATH" || major.rfind("PARTNO", 0) == 0;
+}
+
 }  // namespace
 
 AptStatement parse_apt_statement(const std::string& text, const std::string& file, Location where) {
@@ -45,7 +63,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   const auto last = text.end();
   std::string major;
   if (!x3::parse(first, last, major_word, major))
-    throw InputError({file, where.line, where.column}, "expected a major word before '/'", text);
+    throw InputError({file, where.line, where.column}, "expected a major word before '/'", echo_for(text, where.column));
   st.major = upper(trim(major));
   // Fold runs of blanks inside the major word ("TOOL  PATH" -> "TOOL PATH").
   std::string folded;
@@ -65,7 +83,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
     const auto b = rest.find_first_not_of(" \t\r\n");
     if (b != std::string_view::npos) st.raw_arguments.assign(rest.substr(b, rest.find_last_not_of(" \t\r\n") - b + 1));
   }
-  if (st.raw_arguments.empty()) return st;  // "RAPID/"
+  if (st.raw_arguments.empty() || carries_free_text(st.major)) return st;  // "RAPID/", or text
   const int base_column = where.column + static_cast<int>(first - text.begin());
   // Fields are split at commas and read in place (string views: no copies on the hot path of
   // GOTO records); a field is a number when x3::double_ fills it up to trailing blanks.
@@ -82,7 +100,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
     a.column = base_column + static_cast<int>(start) + static_cast<int>(lead == std::string_view::npos ? 0 : lead);
     if (lead == std::string_view::npos) {
       if (last_field && !st.arguments.empty()) break;  // trailing comma
-      throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)", text);
+      throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)", echo_for(text, a.column));
     }
     const std::string_view t = f.substr(lead, f.find_last_not_of(" \t\r\n") - lead + 1);
     double value = 0.0;
@@ -91,15 +109,17 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
     const bool starts_numeric = std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
     if (starts_numeric && x3::parse(nb, ne, x3::double_, value) && nb == ne) {
       if (!std::isfinite(value))
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", t), text);
+        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)), echo_for(text, a.column));
       a.is_number = true;
       a.number = value;
+    } else if (is_digit_first_word(t)) {
+      a.word = upper(std::string(t));
     } else if (starts_numeric) {
-      throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", t), text);
+      throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", echo_of(t, 40)), echo_for(text, a.column));
     } else {
       a.word = upper(std::string(t));
       if (a.word == "NAN" || a.word == "INF" || a.word == "INFINITY" || a.word == "-NAN")
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", t), text);
+        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)), echo_for(text, a.column));
     }
     st.arguments.push_back(std::move(a));
     if (last_field) break;

@@ -131,6 +131,37 @@ std::string explain(const ParseState& s, Iterator at, Iterator end, const char* 
   return fmt::format("expected {}, found '{}'", expected, c);
 }
 
+bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+/// A name where a word was expected (`MCALL`, `CYCLE81(...)`, `TRANS`): what it is, when known
+/// (empty otherwise).
+std::string keyword_message(Iterator at, Iterator end) {
+  Iterator p = at;
+  std::string name;
+  while (p != end && (is_letter(*p) || is_digit(*p) || *p == '_') && name.size() < 32) name += upper(*p++);
+  struct Known {
+    const char* name;
+    const char* what;
+  };
+  static constexpr Known kKnown[] = {
+      {"MCALL", "a Sinumerik modal subprogram call, repeated at every following position"},
+      {"CALL", "a Sinumerik subprogram call"},
+      {"TRANS", "a Sinumerik programmable work offset"}, {"ATRANS", "a Sinumerik additive work offset"},
+      {"ROT", "a Sinumerik frame rotation"}, {"AROT", "a Sinumerik additive frame rotation"},
+      {"SCALE", "a Sinumerik frame scaling"}, {"MIRROR", "a Sinumerik frame mirroring"},
+      {"SUPA", "a Sinumerik suppression of all frames"}, {"CYCLE800", "a Sinumerik swivel (tilted plane) cycle"},
+      {"DIAMON", "Sinumerik lathe diameter programming"}, {"GOTOF", "Sinumerik program flow"},
+      {"GOTOB", "Sinumerik program flow"}, {"REPEAT", "Sinumerik program flow"},
+  };
+  for (const Known& k : kKnown)
+    if (name == k.name)
+      return fmt::format("{} ({}) is not supported: post the CL data, or expand it into G-code blocks", name, k.what);
+  if (name.rfind("CYCLE", 0) == 0 && name.size() > 5)
+    return fmt::format("{} (a Sinumerik cycle call) is not supported: post the CL data, or expand it into G-code "
+                       "blocks", name);
+  return {};
+}
+
 constexpr const char* kOWordFlow =
     "O-word subroutines and control flow (sub, call, if, while, ...) are not supported; "
     "expected a program number";
@@ -158,6 +189,9 @@ void parse_block(std::string_view line, Block& block, const std::string& file, i
     const Iterator at = e.where();
     if (e.which() == "number") {
       const char letter = block.words.back().letter;
+      const Iterator letter_at = s.line_begin + block.words.back().column - 1;
+      if (letter != 'O' && at == letter_at + 1 && at != end && is_letter(*at))
+        if (const std::string known = keyword_message(letter_at, end); !known.empty()) s.fail(letter_at, known);
       if (at != end && (*at == '#' || *at == '[' || *at == '=' || *at == '<'))
         s.fail(at, explain(s, at, end, "a number"));
       if (starts_with_o_word(block) || letter == 'O') s.fail(s.line_begin + block.words.back().column - 1, kOWordFlow);

@@ -4,11 +4,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
 
 #include "ncpost/kinematics/forward.hpp"
+#include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/gcode_line_source.hpp"
 #include "ncpost/postproc/gcode_modal.hpp"
@@ -106,18 +109,224 @@ struct GcodeClReader::State {
     m.where = where;
     m.axis_given = true;
     m.rapid = effect.motion == MotionMode::rapid;
+    m.inverse_time = effect.inverse_time;
+    m.feed = effect.motion_feed;
+    last_rtcp = rtcp_now();
+    locate(m, p, last_rtcp);
+    return m;
+  }
+
+  /// The tip, tool axis and angles of the program point `p` (RTCP or machine reading), checked
+  /// against the machine's limits.
+  void locate(cl::Motion& m, const ProgramPoint& p, bool rtcp) const {
     AxisPosition q;
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
     for (int k = 0; k < machine.rotary_count(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     if (machine.rotary_count() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
-    last_rtcp = rtcp_now();
     const Rigidd table_T_tool = nominal_table_T_tool(q);
     m.point.axis = table_T_tool.R.col(2);
-    m.point.tip_mm = last_rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
-    m.inverse_time = effect.inverse_time;
-    m.feed = effect.motion_feed;
-    return m;
+    m.point.tip_mm = rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
+    if (options.check_limits)
+      check_limits(rtcp ? AxisPosition{linear_for(machine, q.rotary_rad, q.linear_mm, setup), q.rotary_rad} : q, rtcp,
+                   m.where);
+  }
+
+  // ---- a program without G20/G21 (or G70/G71/G700/G710) that looks like inches: X Y Z words
+  // mostly written with 4 decimals (inch posts) where 3 would do for mm, and every position within
+  // a 50-unit box (2 inches is 50.8 mm: an inch program read as mm shrinks 25.4 times). A notice.
+  long words_4_decimals = 0, words_other_decimals = 0;
+  Vec3d programmed_lo = Vec3d::Constant(1e300), programmed_hi = Vec3d::Constant(-1e300);
+  bool units_hint_given = false;
+
+  void observe_units(std::string_view line) {
+    for (const Word& w : block.words) {
+      if (w.letter != 'X' && w.letter != 'Y' && w.letter != 'Z') continue;
+      std::size_t at = static_cast<std::size_t>(w.column);  // just after the letter
+      while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '+' || line[at] == '-')) ++at;
+      while (at < line.size() && line[at] >= '0' && line[at] <= '9') ++at;
+      int decimals = 0;
+      if (at < line.size() && line[at] == '.')
+        while (++at < line.size() && line[at] >= '0' && line[at] <= '9') ++decimals;
+      (decimals == 4 ? words_4_decimals : words_other_decimals) += 1;
+    }
+    if (effect.has_motion) {
+      const ModalState& st = interpreter.state();
+      for (int i = 0; i < 3; ++i)
+        if (st.known[static_cast<std::size_t>(i)]) {
+          programmed_lo[i] = std::min(programmed_lo[i], effect.end[static_cast<std::size_t>(i)]);
+          programmed_hi[i] = std::max(programmed_hi[i], effect.end[static_cast<std::size_t>(i)]);
+        }
+    }
+  }
+
+  void units_hint() {
+    if (units_hint_given || options.default_inch || interpreter.state().units_programmed) return;
+    units_hint_given = true;
+    if (words_4_decimals < 5 || words_4_decimals <= 2 * words_other_decimals) return;
+    for (int i = 0; i < 3; ++i)
+      if (programmed_lo[i] <= programmed_hi[i] && (programmed_lo[i] < -50.0 || programmed_hi[i] > 50.0)) return;
+    const Vec3d span = (programmed_hi - programmed_lo).cwiseMax(0.0);
+    notices.push_back(fmt::format(
+        "{}:1: the program has no G20/G21 and looks like inches ({} of {} X/Y/Z words with 4 decimals, all positions "
+        "within {:.4g} x {:.4g} x {:.4g}): read as mm (the default); if it is inch, post with --units inch (or add G20)",
+        file, words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
+  }
+
+  // ---- G93 (inverse time): the source gives each block's time (1/F minutes). The post times a
+  // block by max(tip path mm, rotary travel deg) / feed, so each G93 motion is preceded by the
+  // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
+  std::optional<cl::Motion> pending_motion;  ///< an arc segment waiting behind its feed record
+  std::optional<Vec3d> last_tip;
+  Eigen::Vector2d last_rotary = Eigen::Vector2d::Zero();
+
+  /// The feed record of a G93 motion (nullopt otherwise); follows the last position in any case.
+  std::optional<cl::Feed> source_time_feed(const cl::Motion& m) {
+    std::optional<cl::Feed> out;
+    const Eigen::Vector2d rotary = m.rotary_rad ? Eigen::Vector2d(*m.rotary_rad) : Eigen::Vector2d::Zero();
+    if (m.inverse_time && m.feed && *m.feed > 0.0 && last_tip) {
+      const double length_mm = (m.point.tip_mm - *last_tip).norm();
+      const double travel_deg = (rotary - last_rotary).cwiseAbs().maxCoeff() * 180.0 / kPi;
+      const double reach = std::max(length_mm, travel_deg);
+      if (reach > 1e-9) out = cl::Feed{m.where, reach * *m.feed, false};
+    }
+    last_tip = m.point.tip_mm;
+    last_rotary = rotary;
+    return out;
+  }
+
+  // ---- rollover: a continuous rotary axis whose values all lie within 0 .. 360 deg and that
+  // jumps by more than 180 deg (C359.857 -> C7.501) was programmed for a control that turns the
+  // short way across 0; the reader makes that turn explicit (C367.501), so the post, its G93 time
+  // and --verify all turn the same way. A value outside 0 .. 360 marks a program that counts turns
+  // (LinuxCNC's C-399.8): no unwrapping on that axis from then on.
+  std::array<double, 2> wrap_offset_rad{};      ///< added to rotary axis k's programmed value
+  std::array<bool, 2> counts_turns{};           ///< a value outside 0 .. 360 deg was seen
+  std::array<std::optional<double>, 2> last_programmed_rad{};
+
+  ProgramPoint unwrapped(ProgramPoint p) const {
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
+      p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])] += wrap_offset_rad[static_cast<std::size_t>(k)];
+    return p;
+  }
+
+  /// `may_unwrap`: false for arcs (their rotary words are followed, not unwrapped).
+  void update_wrap(const BlockEffect& fx, int line, bool may_unwrap) {
+    constexpr double kTurn = 2.0 * kPi;
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const double v = fx.end[static_cast<std::size_t>(rotary_axis[ku])];
+      const auto previous = last_programmed_rad[ku];
+      last_programmed_rad[ku] = v;
+      if (!may_unwrap || !machine.rotary(k).continuous() || interpreter.state().incremental) continue;
+      if (v < -1e-9 || v > kTurn + 1e-9) counts_turns[ku] = true;
+      if (counts_turns[ku] || !previous || std::abs(v - *previous) <= kPi + 1e-12) continue;
+      const double before = *previous + wrap_offset_rad[ku];
+      double offset = wrap_offset_rad[ku];
+      offset += kTurn * std::round((before - (v + offset)) / kTurn);  // |turn| <= 180 deg
+      wrap_offset_rad[ku] = offset;
+      if (!wrap_noticed[ku]) {
+        wrap_noticed[ku] = true;
+        notices.push_back(fmt::format(
+            "{}:{}: {} {:.3f} -> {:.3f} deg read the short way ({:+.3f} deg across 0/360, as a rollover axis "
+            "turns): written as {} {:.3f}",
+            file, line, machine.rotary(k).letter, *previous * 180.0 / kPi, v * 180.0 / kPi,
+            (v + offset - before) * 180.0 / kPi, machine.rotary(k).letter, (v + offset) * 180.0 / kPi));
+      }
+    }
+  }
+  std::array<bool, 2> wrap_noticed{};
+
+  // ---- the start of the program: rapids before every axis is programmed are held back until
+  // the axes they lack are programmed, then take those first values (the program starts where it
+  // first says, never with a rapid to 0 the source did not make); a feed motion, an arc or the
+  // end releases them with 0 for the axes still unknown (where a control starting at program zero
+  // would be).
+  struct HeldMotion {
+    std::size_t index;  ///< into `held`
+    ProgramPoint p;
+    std::array<bool, 6> assumed;
+    bool rtcp;
+  };
+  static constexpr std::size_t kMaxHeld = 4096;  ///< records; beyond, release (memory stays flat)
+  std::vector<cl::Record> held;
+  std::vector<HeldMotion> held_motions;
+  bool start_settled = false;  ///< every axis known, or released: no more holding
+
+  /// Moves the current block's records (`before`, `after`) into `held`, the motion not located yet.
+  void hold_block(const BlockEffect& fx, cl::Location where) {
+    for (auto& r : before) held.push_back(std::move(r));
+    before.clear();
+    cl::Motion m;
+    m.where = where;
+    m.axis_given = true;
+    m.rapid = true;
+    m.feed = fx.motion_feed;
+    last_rtcp = rtcp_now();
+    held_motions.push_back(HeldMotion{held.size(), unwrapped(fx.end), fx.assumed, last_rtcp});
+    held.push_back(std::move(m));
+    for (auto& r : after) held.push_back(std::move(r));
+    after.clear();
+  }
+
+  /// Locates the held motions with the first programmed values of the axes they lacked (0 for
+  /// those still unknown) and puts the held records before the current block's.
+  /// `usable`: the axes whose first values may be taken (a feed motion that programs an axis for
+  /// the first time starts from 0 in it, as the notice says; the held rapids end there too).
+  void release_held(const std::array<bool, 6>& usable) {
+    start_settled = true;
+    if (held.empty()) return;
+    for (HeldMotion& h : held_motions) {
+      for (std::size_t i = 0; i < 6; ++i)
+        if (h.assumed[i]) h.p[i] = usable[i] ? first_value[i] : 0.0;
+      locate(std::get<cl::Motion>(held[h.index]), h.p, h.rtcp);
+      source_time_feed(std::get<cl::Motion>(held[h.index]));  // rapids: only the last position
+    }
+    before.insert(before.begin(), std::make_move_iterator(held.begin()), std::make_move_iterator(held.end()));
+    held.clear();
+    held_motions.clear();
+  }
+
+  std::array<double, 6> first_value{};  ///< of each axis, once known (program units: mm, rad)
+  std::array<bool, 6> known_before{};
+
+  /// After a block: records the first values of the axes it programmed.
+  void note_first_values() {
+    const ModalState& st = interpreter.state();
+    for (std::size_t i = 0; i < 6; ++i)
+      if (st.known[i] && !known_before[i]) {
+        first_value[i] = st.position[i];
+        known_before[i] = true;
+      }
+  }
+
+  /// Infeasible (exit 3) when the machine commands `q` of a motion lie beyond an axis limit: the
+  /// re-posted program must fit the machine like one posted from CL data.
+  void check_limits(const AxisPosition& q, bool rtcp, cl::Location where) const {
+    // rotary axes first: in an RTCP program the linear commands follow from them
+    const std::size_t n = machine.axes.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (k + 3) % n;
+      const Axis& axis = machine.axes[i];
+      const double v = q[static_cast<int>(i)];
+      if (!axis.limits || axis.limits->contains(v, axis.is_rotary() ? 1e-9 : 1e-6)) continue;
+      const bool rotary = axis.is_rotary();
+      const double scale = rotary ? 180.0 / kPi : 1.0;
+      const char* unit = rotary ? "deg" : "mm";
+      const std::string subject =
+          rtcp && !rotary ? fmt::format("the programmed tool tip needs machine {} {:.3f} {}", axis.letter, v * scale, unit)
+                          : fmt::format("{} {:.3f} {}", axis.letter, v * scale, unit);
+      const std::string what_to_check =
+          rotary ? "check the program's angles against the machine file"
+                 : rtcp ? "check --workpiece-origin and --tool-length, or the machine file"
+                        : "check --workpiece-origin, or the machine file";
+      throw Infeasible(fmt::format(
+          "{}:{}:{}: {}, beyond the {} axis limit {:.3f} {} (travel {:.3f} .. {:.3f} {}) of machine {}: the program "
+          "does not fit the machine; {}",
+          file, where.line, where.column, subject, axis.letter,
+          (v > axis.limits->max ? axis.limits->max : axis.limits->min) * scale, unit, axis.limits->min * scale,
+          axis.limits->max * scale, unit, machine.name, what_to_check));
+    }
   }
 
   void check_rtcp_forced(int line) {
@@ -176,6 +385,8 @@ struct GcodeClReader::State {
     if (leader_lines < 0) find_leader();
     std::string_view line;
     if (!source.next(line)) {
+      release_held(known_before);
+      units_hint();
       finish_input();
       return false;
     }
@@ -188,6 +399,8 @@ struct GcodeClReader::State {
         opened_percent = true;
         return true;
       }
+      release_held(known_before);
+      units_hint();
       return false;  // the closing '%': the rest of the file is not part of the program
     }
     seen_content = true;
@@ -195,6 +408,9 @@ struct GcodeClReader::State {
     for (const BlockComment& c : block.comments)
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
     interpreter.apply(block, line_number, line, effect);
+    observe_units(line);
+    const std::array<bool, 6> known_prior = known_before;
+    note_first_values();
     check_rtcp_forced(line_number);
     for (auto& n : interpreter.take_notices()) notices.push_back(std::move(n));
     const BlockEffect& fx = effect;
@@ -202,9 +418,12 @@ struct GcodeClReader::State {
     if (fx.tool_change) before.push_back(*fx.tool_change);
     if (fx.spindle) before.push_back(*fx.spindle);
     if (fx.coolant) before.push_back(*fx.coolant);
+    if (fx.cutter_comp) before.push_back(*fx.cutter_comp);
     for (const auto& u : fx.before_motion) before.push_back(u);
     if (fx.has_motion) {
       const cl::Location where{line_number, block.column};
+      update_wrap(fx, line_number, !fx.arc);
+      if (fx.arc && !start_settled) release_held(known_prior);  // an arc starts from the held position
       if (fx.arc) {
         const long n = arc_segments(*fx.arc, options.arc_chord_tolerance_mm);
         if (n > kMaxArcSegments)
@@ -217,14 +436,36 @@ struct GcodeClReader::State {
         arc_segment = 0;
         arc_where = where;
         if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
+      } else if (!start_settled && fx.motion == MotionMode::rapid && held.size() < kMaxHeld) {
+        for (const auto& u : fx.after_motion) after.push_back(u);
+        hold_block(fx, where);
+        if (std::none_of(fx.assumed.begin(), fx.assumed.end(), [](bool b) { return b; })) release_held(known_before);
+        if (fx.program_end) {
+          release_held(known_before);
+          units_hint();
+          after.push_back(cl::End{cl::Location{line_number, block.column}, true});
+          return false;
+        }
+        return true;
       } else {
-        before.push_back(motion_at(fx.end, where));
+        if (!start_settled) release_held(known_prior);  // a feed motion starts from the held position
+        cl::Motion m = motion_at(unwrapped(fx.end), where);
+        if (auto f = source_time_feed(m)) before.push_back(*f);
+        before.push_back(std::move(m));
       }
     }
     for (const auto& u : fx.after_motion) after.push_back(u);
     if (fx.program_end) {
+      release_held(known_before);
+      units_hint();
       after.push_back(cl::End{cl::Location{line_number, block.column}, true});
       return false;
+    }
+    if (!held.empty()) {  // a block without motion between held rapids keeps its place
+      for (auto& r : before) held.push_back(std::move(r));
+      for (auto& r : after) held.push_back(std::move(r));
+      before.clear();
+      after.clear();
     }
     return true;
   }
@@ -241,11 +482,20 @@ struct GcodeClReader::State {
   std::optional<cl::Record> next() {
     for (;;) {
       if (before_next < before.size()) return std::move(before[before_next++]);
+      if (pending_motion) {
+        cl::Motion m = std::move(*pending_motion);
+        pending_motion.reset();
+        return m;
+      }
       if (arc) {
         ++arc_segment;
         const double t = static_cast<double>(arc_segment) / static_cast<double>(arc_segments_total);
-        cl::Motion m = motion_at(arc->at(t), arc_where);
+        cl::Motion m = motion_at(unwrapped(arc->at(t)), arc_where);
         if (arc_segment >= arc_segments_total) arc.reset();
+        if (auto f = source_time_feed(m)) {
+          pending_motion = std::move(m);
+          return *f;
+        }
         return m;
       }
       if (after_next < after.size()) return std::move(after[after_next++]);

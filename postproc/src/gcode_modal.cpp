@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "ncpost/postproc/gcode_control_words.hpp"
+
 namespace ncpost::gcode {
 namespace {
 
@@ -50,19 +52,18 @@ int g_group(int code10, const char*& why) {
     case 901: case 911: return g_arc_distance;
     case 930: case 940: case 950: return g_feed;
     case 200: case 210: return g_units;
-    case 400: return g_cutter;
+    case 400: case 410: case 420: return g_cutter;
     case 430: case 431: case 434: case 435: case 490: case 2340: return g_length;
     case 980: case 990: return g_return;
     case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
       return g_coordinates;
     case 610: case 611: case 640: return g_path;
     case 2540: case 2550: return g_dynamic_offset;  // Haas DWO on/off
-    case 410: case 420: case 411: case 421: why = "cutter radius compensation"; return -1;
+    case 411: case 421: why = "dynamic cutter radius compensation"; return -1;
     case 330: case 331: case 760: why = "threading"; return -1;
     case 382: case 383: case 384: case 385: why = "probing"; return -1;
     case 50: case 51: case 52: case 53: why = "splines"; return -1;
     case 70: case 80: why = "lathe diameter/radius mode"; return -1;
-    case 100: why = "setting offsets (G10)"; return -1;
     case 920: case 921: case 922: case 923: case 520: why = "coordinate offsets (G52/G92)"; return -1;
     case 680: case 690: case 681: why = "coordinate rotation"; return -1;
     case 500: case 510: why = "scaling"; return -1;
@@ -80,10 +81,12 @@ void BlockEffect::clear() {
   spindle.reset();
   tool_change.reset();
   coolant.reset();
+  cutter_comp.reset();
   before_motion.clear();
   has_motion = false;
   motion = MotionMode::none;
   arc.reset();
+  assumed = {};
   motion_feed.reset();
   inverse_time = false;
   after_motion.clear();
@@ -107,7 +110,7 @@ struct Interpreter::Words {
 
 Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch)
     : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)) {
-  state_.inch = default_inch;
+  state_.inch = state_.feed_inch = default_inch;
 }
 
 std::vector<std::string> Interpreter::take_notices() {
@@ -173,11 +176,34 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     w.column[i] = word.column;
   }
 
-  // ---- G codes by modal group
+  // ---- G codes by modal group (control-specific words apart: gcode_control_words.hpp)
+  bool has_axis_words = false;
+  for (const char* p = kAxisLetters; *p; ++p) has_axis_words = has_axis_words || w.has(*p);
+  Code control_units{-1, 0};
+  bool control_inch = false, control_feeds_too = false;
   std::array<Code, g_group_count> group{};
   std::array<bool, g_group_count> in_group{};
   for (int k = 0; k < w.g_count; ++k) {
     const Code c = w.g[static_cast<std::size_t>(k)];
+    const auto word_of = [&](char L) { return w.has(L) ? std::optional<double>(w.get(L)) : std::nullopt; };
+    const ControlWord cw = classify_control_word(
+        c.code10, has_axis_words, w.has('I') || w.has('J') || w.has('K') || w.has('R'), word_of('P'), word_of('Q'),
+        word_of('L'));
+    if (cw.action != ControlWordAction::none) {
+      if (cw.action == ControlWordAction::refuse) fail(c.column, cw.text);
+      if (cw.action == ControlWordAction::drop) {
+        notice_once(g_name(c.code10), line_number, c.column, cw.text);
+        continue;
+      }
+      const bool inch = cw.action == ControlWordAction::length_inch || cw.action == ControlWordAction::units_inch;
+      if (control_units.column)
+        fail(c.column, fmt::format("{} and {} both set the units", g_name(control_units.code10), g_name(c.code10)));
+      control_units = c;
+      control_inch = inch;
+      control_feeds_too = cw.action == ControlWordAction::units_inch || cw.action == ControlWordAction::units_mm;
+      if (!cw.text.empty()) notice_once(g_name(c.code10), line_number, c.column, cw.text);
+      continue;
+    }
     const char* why = nullptr;
     const int g = g_group(c.code10, why);
     if (g < 0) {
@@ -218,9 +244,18 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
 
   ModalState& st = state_;
   // units first, so that every length word of the block is read in them
-  if (g_is(g_units, 200)) st.inch = true;
-  if (g_is(g_units, 210)) st.inch = false;
+  if (control_units.column && in_group[g_units])
+    fail(control_units.column, fmt::format("{} and {} both set the units", g_name(group[g_units].code10),
+                                           g_name(control_units.code10)));
+  if (g_is(g_units, 200)) st.inch = st.feed_inch = true;
+  if (g_is(g_units, 210)) st.inch = st.feed_inch = false;
+  if (control_units.column) {
+    st.inch = control_inch;
+    if (control_feeds_too) st.feed_inch = control_inch;
+  }
+  if (in_group[g_units] || control_units.column) st.units_programmed = true;
   const double length_scale = st.inch ? kMmPerInch : 1.0;
+  const double feed_length_scale = st.feed_inch ? kMmPerInch : 1.0;
 
   // ---- feed mode and F
   if (in_group[g_feed]) {
@@ -231,7 +266,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     double f = w.get('F');
     if (f < 0.0 || f > 1e9) fail(w.col('F'), "expected a feed within 0 .. 1e9");
     if (st.feed_mode != FeedMode::inverse_time) {
-      f *= length_scale;
+      f *= feed_length_scale;
       fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
     }
     st.feed = f;
@@ -258,6 +293,25 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
   if (m_coolant.code10 >= 0) {
     const int c = m_coolant.code10;
     fx.coolant = cl::Coolant{at(m_coolant.column), c != 9, c == 7 ? "MIST" : c == 8 ? "FLOOD" : "OFF"};
+  }
+
+  // ---- cutter radius compensation (G40, G41/G42 with D)
+  if (in_group[g_cutter]) {
+    const Code c = group[g_cutter];
+    cl::CutterComp comp;
+    comp.where = at(c.column);
+    comp.side = c.code10 == 410   ? cl::CutterComp::Side::left
+                : c.code10 == 420 ? cl::CutterComp::Side::right
+                                  : cl::CutterComp::Side::off;
+    comp.text = g_name(c.code10);
+    if (w.has('D') && c.code10 != 400) {
+      const double d = w.get('D');
+      if (d < 0.0 || d != std::floor(d) || d > 1e6) fail(w.col('D'), "expected an offset register D (an integer >= 0)");
+      comp.offset_register = static_cast<int>(d);
+      comp.text += fmt::format(" D{}", static_cast<int>(d));
+    }
+    st.cutter = comp.side;
+    fx.cutter_comp = std::move(comp);
   }
 
   // ---- dwell, modal settings, RTCP
@@ -338,22 +392,35 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     fx.motion = st.motion;
     fx.start = st.position;
     ProgramPoint end = st.position;
-    std::string unknown;  // axes whose start (or value) is not known yet: taken as 0
+    std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
+    const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
     for (std::size_t i = 0; i < 6; ++i) {
       const char L = kAxisLetters[i];
       const bool used = axis_letters_.find(L) != std::string::npos;
-      if (!st.known[i] && used && (!w.has(L) || st.incremental)) unknown += unknown.empty() ? std::string(1, L) : std::string(", ") + L;
       if (w.has(L)) {
         const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
         end[i] = st.incremental ? st.position[i] + v : v;
         if (!(std::abs(end[i]) <= kMaxCoordinate))
           fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
       }
-      if (used) st.known[i] = true;
+      if (!used || st.known[i]) continue;
+      if (!w.has(L)) {
+        fx.assumed[i] = true;
+        add(assumed, L);
+      } else {
+        if (st.incremental) add(incremental, L);
+        st.known[i] = true;
+      }
     }
-    if (!unknown.empty())
+    if (!assumed.empty())
       notice_once("unknown-axes", line_number, first_axis_column ? first_axis_column : block.column,
-                  fmt::format("{} not programmed before the first motion: taken as 0", unknown));
+                  fmt::format("{} not programmed before the first motion: each is taken from its first programmed "
+                              "value (the program starts where it first says), or as 0 where a feed motion or the "
+                              "end comes first",
+                              assumed));
+    if (!incremental.empty())
+      notice_once("incremental-unknown", line_number, first_axis_column ? first_axis_column : block.column,
+                  fmt::format("{} moved incrementally (G91) before any absolute position: taken from 0", incremental));
     if (is_arc) {
       const PlaneAxes ax = axes_of(st.plane);
       const char offset_letter[3] = {'I', 'J', 'K'};

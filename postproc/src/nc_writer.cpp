@@ -1,19 +1,11 @@
 #include "ncpost/postproc/nc_writer.hpp"
 
 #include "ncpost/postproc/fixed_format.hpp"
+#include "ncpost/postproc/nc_text.hpp"
 
 #include <cmath>
 
 namespace ncpost {
-namespace {
-
-std::string sanitize_comment(std::string text) {
-  for (char& c : text)
-    if (c == '(' || c == ')' || c == '\n' || c == '\r' || c == ';') c = ' ';
-  return text;
-}
-
-}  // namespace
 
 NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
     : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)) {}
@@ -45,8 +37,10 @@ void NcWriter::flush() {
 
 void NcWriter::comment(const std::string& text) {
   if (dialect_.klartext) start_line();
-  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), "; {}", text);
-  else fmt::format_to(std::back_inserter(buf_), "({})", sanitize_comment(text));
+  // every text from outside (file and machine names, PARTNO, PPRINT) arrives here: one sanitiser
+  const std::string safe = nc_comment_text(text, dialect_);
+  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), "; {}", safe);
+  else fmt::format_to(std::back_inserter(buf_), "({})", safe);
   end_line();
 }
 
@@ -57,7 +51,7 @@ void NcWriter::block(const std::string& words) {
 }
 
 void NcWriter::begin_program(const std::string& name, const std::vector<std::string>& header_comments) {
-  program_name_ = name.empty() ? "NCPOST" : name;
+  program_name_ = nc_program_name(name, dialect_);
   if (dialect_.klartext) {
     block(fmt::format("BEGIN PGM {} MM", program_name_));
     for (const auto& c : header_comments) comment(c);
@@ -65,15 +59,16 @@ void NcWriter::begin_program(const std::string& name, const std::vector<std::str
   }
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   if (dialect_.name == "fanuc" || dialect_.name == "haas")
-    fmt::format_to(std::back_inserter(buf_), "O0001 ({})\n", sanitize_comment(program_name_));
+    fmt::format_to(std::back_inserter(buf_), "O0001 ({})\n", program_name_);
   for (const auto& c : header_comments) comment(c);
   block(dialect_.name == "sinumerik" ? "G90 G71 G94 G17" : "G90 G21 G94 G17 G40 G49 G80");
 }
 
-void NcWriter::rtcp(bool on) {
-  const std::string& w = on ? dialect_.rtcp_on : dialect_.rtcp_off;
-  if (!w.empty()) block(w);
+void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
+  for (const auto& words : blocks) block(with_tool(words, tool));
 }
+
+void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
 
 bool NcWriter::motion(const NcMotion& m) {
   const std::size_t line_start = buf_.size();

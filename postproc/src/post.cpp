@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lookahead.hpp"
+#include "ncpost/postproc/unreachable.hpp"
 #include "record_blocks.hpp"
 
 namespace ncpost {
@@ -43,7 +44,7 @@ class Poster {
         for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
       }
     }
-    if (options_.rtcp && rtcp_on_) writer_.rtcp(false);
+    if (options_.rtcp && rtcp_on_) writer_.rtcp(false, tool_);
     writer_.end_program();
     summary_.blocks_out = writer_.blocks_written();
     return summary_;
@@ -76,15 +77,19 @@ class Poster {
   void on(const cl::Spindle& s) { records_.spindle(s); }
   void on(const cl::Coolant& c) { records_.coolant(c); }
 
+  /// Every tool runs with its own length: RTCP off around the change, the tool call, then the
+  /// length (or RTCP with the length) of the new tool (the dialect's words).
   void on(const cl::ToolChange& t) {
-    if (writer_.dialect().klartext) {
-      writer_.block(fmt::format("TOOL CALL {} Z", t.number));
+    const Dialect& d = writer_.dialect();
+    if (rtcp_on_) writer_.rtcp(false, tool_);
+    rtcp_on_ = false;
+    tool_ = t.number;
+    writer_.tool_blocks(d.tool_call, tool_);
+    if (options_.rtcp) {
+      writer_.rtcp(true, tool_);
+      rtcp_on_ = true;
     } else {
-      writer_.block(fmt::format("T{} M6", t.number));
-      if (!options_.rtcp && writer_.dialect().name != "sinumerik" && writer_.dialect().name != "linuxcnc")
-        writer_.block(fmt::format("G43 H{}", t.number));
-      else if (!options_.rtcp && writer_.dialect().name == "linuxcnc")
-        writer_.block("G43");
+      writer_.tool_blocks(d.tool_length_on, tool_);
     }
   }
 
@@ -115,14 +120,12 @@ class Poster {
         ik = solver_.solve(cl, previous_.q);
       }
       if (!ik.ok())
-        throw Infeasible(fmt::format("{}:{}: {} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f})", input_,
-                                     line, ik.failure.message, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(),
-                                     cl.axis.x(), cl.axis.y(), cl.axis.z()));
+        throw Infeasible(unreachable_message(input_, line, solver_, cl, previous_.q, ik.failure.message));
       next.q = *ik.position;
       next.executed = ik.executed;
     }
-    if (options_.rtcp && !rtcp_on_) {
-      writer_.rtcp(true);
+    if (options_.rtcp && !rtcp_on_) {  // motion before any tool change: the tool in the spindle (1)
+      writer_.rtcp(true, tool_);
       rtcp_on_ = true;
     }
     if (!rapid && !records_.feed_given() && !default_feed_noticed_) {
@@ -148,7 +151,13 @@ class Poster {
     }
     if (have_position_ && !rapid && options_.subdivide && !options_.rtcp) {
       SolvedPoint from = previous_;
-      for (const SolvedPoint& p : options_.subdivide(previous_, next)) {
+      std::vector<SolvedPoint> points;
+      try {
+        points = options_.subdivide(previous_, next);
+      } catch (const Infeasible& e) {
+        throw Infeasible(fmt::format("{}:{}: {}", input_, line, e.what()));
+      }
+      for (const SolvedPoint& p : points) {
         emit(from, p, line, rapid);
         from = p;
       }
@@ -177,9 +186,10 @@ class Poster {
     const IkOutcome a = solver_.solve(up_here, previous_.q);
     const IkOutcome b = solver_.solve(up_there, next.q);
     if (!a.ok() || !b.ok())
-      throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution, and the retract point {} mm "
-                                   "along the tool axis is out of reach: {}", input_, line, d,
-                                   !a.ok() ? a.failure.message : b.failure.message));
+      throw Infeasible(unreachable_message(
+          input_, line, solver_, !a.ok() ? up_here : up_there, !a.ok() ? previous_.q : next.q,
+          fmt::format("the axis limits force a change of solution, and the retract point {} mm along the tool axis "
+                      "is out of reach: {}", d, !a.ok() ? a.failure.message : b.failure.message)));
     summary_.notices.push_back(fmt::format(
         "{}:{}: the axis limits force a change of solution (rotary {:.3f}, {:.3f} -> {:.3f}, {:.3f} deg): retract "
         "{} mm along the tool axis, reorient, re-engage", input_, line, rad_to_deg(previous_.q.rotary_rad[0]),
@@ -235,9 +245,11 @@ class Poster {
       split = writer_.motion(first);  // nothing is written if no word changes
     }
     last_values_ = m.values;
-    if (!writer_.motion(m)) return;
-    if (split) ++summary_.rapid_splits;
-    if (options_.verify && have_position_ && !rapid && !options_.rtcp) {
+    const bool written = writer_.motion(m);
+    if (written && split) ++summary_.rapid_splits;
+    if (!written && !split) return;  // the control is already there
+    // (a split rapid that keeps Z is written whole by its first block: the machine is at `to` all the same)
+    if (written && options_.verify && have_position_ && !rapid && !options_.rtcp) {
       const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
     }
@@ -379,6 +391,7 @@ class Poster {
   std::optional<std::array<double, 5>> last_values_;  ///< words of the last motion block (mm, deg)
   bool have_position_ = false;
   bool rtcp_on_ = false;
+  int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)
   RecordBlocks records_{writer_};
   bool default_feed_noticed_ = false;
   std::optional<cl::Circle> pending_circle_;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "ncpost/postproc/unreachable.hpp"
+
 #include <optional>
 #include <variant>
 
@@ -31,7 +33,8 @@ class Previewer {
       q = solver_.with_rotary(m.point, *m.rotary_rad);
     } else {
       const IkOutcome ik = solver_.solve(m.point, previous_q_);
-      if (!ik.ok()) throw PreviewInfeasible(fmt::format("{}:{}: {}", input_, m.where.line, ik.failure.message));
+      if (!ik.ok())
+        throw PreviewInfeasible(unreachable_message(input_, m.where.line, solver_, m.point, previous_q_, ik.failure.message));
       q = *ik.position;
     }
     const bool cutting = !(m.rapid || m.from) && cycle_ == cl::Cycle::Kind::off;

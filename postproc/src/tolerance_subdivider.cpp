@@ -3,10 +3,88 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/play_subdivision.hpp"
 
 namespace ncpost {
+namespace {
+
+/// A piece of a block's rotary swing this much faster than the block's own pace counts as the
+/// swing of a free angle at a singular start (the tool axis along the inner rotary axis).
+constexpr double kSingularProbeT = 1e-6;    ///< where along the block the start's free angle is read
+constexpr double kSingularJumpRad = 1e-3;   ///< rotary change over that much of the block that is a swing
+constexpr double kTurnAxisDriftRad = 1e-3;  ///< the turn may tilt the tool axis this little (near-singular)
+constexpr int kMaxTurnBlocks = 4096;
+
+/// `words` with `value` as printed by "{}" replaced by its 4 significant digits (the compensation
+/// library prints the inner tolerance in full).
+std::string rounded_in(std::string words, double value) {
+  const std::string full = fmt::format("{}", value), shortened = fmt::format("{:.4g}", value);
+  for (std::size_t at = 0; (at = words.find(full, at)) != std::string::npos; at += shortened.size())
+    words.replace(at, full.size(), shortened);
+  return words;
+}
+
+/// The blocks that turn the free rotary angle at the block's start, where the tool axis lies along
+/// the inner rotary axis (so the angle is undetermined and the post kept the previous one), to the
+/// angle the block's exact solution leaves with — the tool tip standing still on the start point,
+/// the tool axis unchanged (it lies along the turning axis), each turn block within
+/// `tolerance_mm` of that point on the machine of `errors`. Empty when the start is not singular
+/// or the swing cannot be done in place (it would tilt the tool axis).
+template <class Errors>
+std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const MotionSolver& solver,
+                                                const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
+                                                double tolerance_mm) {
+  if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
+  const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT);
+  // cheap screen on the nominal closed form (no linear axes): does any rotary solution just after
+  // the start lie near the start's angles?
+  for (const RotarySolution& r : rotary_solutions(machine, probe.axis)) {
+    double jump = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      const double d = r.rotary_rad[k] - from.q.rotary_rad[k];
+      jump = std::max(jump, std::abs(d - 2.0 * kPi * std::round(d / (2.0 * kPi))));
+    }
+    if (r.free_axis < 0 && jump <= 0.5 * kSingularJumpRad) return {};
+  }
+  const IkOutcome o = solver.solve_quiet(probe, from.q, nullptr);
+  if (!o.ok()) return {};
+  const Eigen::Vector2d swing = o.position->rotary_rad - from.q.rotary_rad;
+  if (swing.cwiseAbs().maxCoeff() <= kSingularJumpRad) return {};
+  auto node = [&](double s) {
+    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * swing)};
+  };
+  auto tilt_ok = [&](const SolvedPoint& p) {
+    return nonlinear::angle_between(solver.execute(p.q).axis, from.cl.axis) <= kTurnAxisDriftRad;
+  };
+  // the linear axes follow the tip round the turning axis on a circle of radius r: start from the
+  // chord count for r, then double until every turn block is within
+  const double swing_rad = swing.cwiseAbs().maxCoeff();
+  const double ds = std::min(1.0, 0.01 / swing_rad);
+  const double radius_mm = (node(ds).q.linear_mm - from.q.linear_mm).norm() / (ds * swing_rad);
+  const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance_mm / std::max(radius_mm, tolerance_mm)));
+  for (int n = std::max(1, static_cast<int>(std::ceil(swing_rad / step))); n <= kMaxTurnBlocks; n *= 2) {
+    std::vector<SolvedPoint> turn;
+    SolvedPoint a{from.cl, from.q};
+    bool within = true;
+    for (int k = 1; k <= n && within; ++k) {
+      const SolvedPoint b = node(static_cast<double>(k) / n);
+      if (!tilt_ok(b)) return {};
+      const nonlinear::NonlinearError e =
+          nonlinear::nonlinear_error(machine, setup, nonlinear::ClBlock{from.cl, from.cl, a.q, b.q}, errors,
+                                     nonlinear::fast_error_options());
+      within = e.max_error_mm <= tolerance_mm;
+      turn.push_back(b);
+      a = b;
+    }
+    if (within) return turn;
+  }
+  return {};
+}
+
+}  // namespace
 
 double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint& a, const ClPoint& b) {
   double reach = 0.0;
@@ -20,24 +98,40 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
 
 Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
                                      const ActualSolver* actual, const nonlinear::CompensationOptions& options,
-                                     const Dialect& dialect, const std::string& input_name) {
+                                     const Dialect& dialect, const std::string& /*input_name*/) {
+  // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
+  if (actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive)
+    actual->take_up_in_blocks();
   return [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
-          angle = dialect.angle_decimals, input_name](const SolvedPoint& from, const SolvedPoint& to) {
+          angle = dialect.angle_decimals](const SolvedPoint& from, const SolvedPoint& to) {
     nonlinear::CompensationOptions c = options;
     c.rounding_allowance_mm = std::min(
         0.5 * c.tolerance_mm,
         nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
+    const double inner_tolerance_mm = c.tolerance_mm - c.rounding_allowance_mm;
     // inserted points are not CL points of the input: the solver's figures are left as they are
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
-    const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q, from.executed, to.executed};
-    const nonlinear::SplitBlock split =
-        actual ? nonlinear::compensate_block(machine, setup, block, actual->errors_from_here(), ik, c)
-               : nonlinear::compensate_block(machine, setup, block, NominalErrors{}, ik, c);
-    if (!split.ok()) throw Infeasible(fmt::format("{}: {}", input_name, split.failure));
-    std::vector<SolvedPoint> points;
-    points.reserve(split.nodes.size());
-    for (const auto& node : split.nodes) points.push_back({node.cl, node.q});
-    return points;
+    if (actual && actual->model().has_reversal() && c.method == nonlinear::Method::adaptive) {
+      std::string failure;
+      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, failure);
+      if (!failure.empty()) throw Infeasible(failure);
+      return points;
+    }
+    auto cut = [&](const auto& errors) {
+      std::vector<SolvedPoint> points =
+          turn_at_singular_start(machine, setup, solver, from, to, errors, inner_tolerance_mm);
+      const SolvedPoint start = points.empty() ? from : SolvedPoint{from.cl, points.back().q};
+      const nonlinear::ClBlock block{start.cl, to.cl, start.q, to.q, points.empty() ? from.executed : std::nullopt,
+                                     to.executed};
+      const nonlinear::SplitBlock split = nonlinear::compensate_block(machine, setup, block, errors, ik, c);
+      if (!split.ok())
+        throw Infeasible(fmt::format("the move cannot be cut within the tolerance {:.4g} mm: {}", c.tolerance_mm,
+                                     rounded_in(split.failure, inner_tolerance_mm)));
+      points.reserve(points.size() + split.nodes.size());
+      for (const auto& node : split.nodes) points.push_back({node.cl, node.q});
+      return points;
+    };
+    return actual ? cut(actual->errors_from_here()) : cut(NominalErrors{});
   };
 }
 

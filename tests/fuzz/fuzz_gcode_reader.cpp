@@ -1,11 +1,13 @@
 // libFuzzer target: the whole G-code input path (line source, grammar, modal interpreter, arc
 // expansion, nominal kinematics) through gcode::GcodeClReader on an AC trunnion with offset
-// pivots. Bad input must end in InputError; every motion must be finite.
+// pivots. Bad input must end in InputError (or Infeasible beyond the axis limits); every motion
+// must be finite.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
 
+#include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 
@@ -54,6 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     (void)reader.take_notices();
   } catch (const ncpost::InputError&) {
+  } catch (const ncpost::Infeasible&) {  // beyond the axis limits (A -120 .. 120): exit 3 in the CLI
   }
   return 0;
 }

@@ -13,7 +13,9 @@ using namespace ncpost;
 
 namespace {
 std::size_t read_all(std::istream& in, const std::string& name, const Machine& m) {
-  gcode::GcodeClReader reader(in, name, m, Setup{});
+  gcode::GcodeReaderOptions counting;  // the arcs' point counts, not whether they fit the machine
+  counting.check_limits = false;
+  gcode::GcodeClReader reader(in, name, m, Setup{}, counting);
   std::size_t n = 0;
   while (auto r = reader.next()) n += std::holds_alternative<cl::Motion>(*r) ? 1 : 0;
   return n;

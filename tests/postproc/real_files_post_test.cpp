@@ -68,7 +68,6 @@ TEST_CASE("every real file posts with one output motion per input motion") {
       {"creo_schruppen_1.ncl", "ac-trunnion", false, false, true},
       {"creo_bohren_1.ncl", "ac-trunnion", false, false, true},
       {"linuxcnc_impeller-7bl-xyzac.ngc", "linuxcnc-xyzac-trt", true, false, false},
-      {"linuxcnc_boat-xyzbc.ngc", "haas-umc750", true, false, false},
       {"nx_PostProcessed_Variable_Axis.txt", "haas-umc750", true, false, false},
       {"nx_PostProcessed_SimpleMillPlane.txt", "haas-umc750", true, false, true},
       {"nx_PostProcessed_Zig_Zag_Smoothed.txt", "haas-umc750", true, false, true},
@@ -94,5 +93,24 @@ TEST_CASE("every real file posts with one output motion per input motion") {
     const std::size_t motions_out = s.blocks_out - s.rapid_splits;
     if (c.expands) CHECK(motions_out >= s.motions_in - dup);
     else CHECK(motions_out + dup == s.motions_in);
+  }
+}
+
+TEST_CASE("the LinuxCNC boat program does not fit the UMC-750's B travel: refused at its line 380 (exit 3)") {
+  // B reaches -38.849 deg at line 380; the UMC-750 tilts B -35 .. 120 deg (issue 14, item 11)
+  const Case c{"linuxcnc_boat-xyzbc.ngc", "haas-umc750", true, false, false};
+  const Machine m = load_machine(test::source(std::string("machines/") + c.machine + ".toml"));
+  const Setup setup;
+  std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
+  REQUIRE(in);
+  auto reader = open(in, c, m, setup);
+  AtomicFile out("real_files_post_test_boat.nc");
+  NcWriter writer(out, dialect_named("fanuc"), "XYZBC");
+  try {
+    post_program(*reader, c.file, NominalSolver(m, setup), writer, PostOptions{});
+    FAIL("the boat program posted on the UMC-750");
+  } catch (const Infeasible& e) {
+    CHECK_THAT(std::string(e.what()),
+               Catch::StartsWith("linuxcnc_boat-xyzbc.ngc:380:1: B -38.849 deg, beyond the B axis limit -35.000 deg"));
   }
 }

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <fstream>
 #include <memory>
 
@@ -24,7 +25,8 @@ namespace {
 struct PostArgs {
   JobOptions job;
   std::string model;
-  std::optional<double> tolerance_mm;
+  std::string tolerance;                ///< --tolerance as given: MM, "none", or "" (the default)
+  std::optional<double> tolerance_mm;   ///< resolved from `tolerance`: nullopt = none
   std::string nonlinear = "adaptive";
   bool rtcp = false;
   std::string dialect = "fanuc";
@@ -69,7 +71,17 @@ void account_before(const PostArgs& a, const LoadedJob& job, const comp::Machine
   account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
 }
 
-int run_post(const PostArgs& a) {
+/// --tolerance MM|none ("" = the default, kDefaultTolerance_mm).
+std::optional<double> tolerance_of(const std::string& text) {
+  if (text.empty()) return kDefaultTolerance_mm;
+  if (text == "none") return std::nullopt;
+  return std::stod(text);  // checked by the option's validator
+}
+
+int run_post(const PostArgs& given) {
+  PostArgs a = given;
+  a.tolerance_mm = tolerance_of(a.tolerance);
+  if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
   if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
                                  a.verify_on, a.output, a.input}))
     return *rc;
@@ -79,7 +91,7 @@ int run_post(const PostArgs& a) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--dialect: ") + e.what());
   }
-  if (a.tolerance_mm && a.rtcp)
+  if (a.tolerance_mm && a.rtcp)  // given explicitly
     fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
   const LoadedJob job = load_job(a.job);
   std::unique_ptr<comp::MachineModel> model;
@@ -132,7 +144,9 @@ int run_post(const PostArgs& a) {
       fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm, tool length {:.4f} mm", job.setup.workpiece_origin_mm.x(),
                   job.setup.workpiece_origin_mm.y(), job.setup.workpiece_origin_mm.z(), job.setup.tool_length_mm),
       fmt::format("model {}, tolerance {}", a.model.empty() ? "none (nominal machine)" : a.model,
-                  a.tolerance_mm ? fmt::format("{} mm ({})", *a.tolerance_mm, a.nonlinear) : std::string("none")),
+                  a.tolerance_mm ? fmt::format("{} mm ({}{})", *a.tolerance_mm, a.nonlinear,
+                                               a.tolerance.empty() ? ", the default" : "")
+                                 : std::string("none")),
       a.rtcp ? std::string("RTCP: tool tip in the workpiece frame") : std::string("machine axes, no RTCP")};
   if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
 
@@ -150,8 +164,16 @@ int run_post(const PostArgs& a) {
   NcWriter writer(out, dialect, axis_letters(job.machine));
   std::optional<ExecutedOn> verify_solver;
   if (executing) verify_solver.emplace(*solver, *executing, job.setup);
-  const PostSummary summary = post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
-                                           writer, options);
+  const PostSummary summary = [&] {
+    try {
+      return post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
+                          writer, options);
+    } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
+      const std::string hint = reader->failure_hint();
+      if (hint.empty()) throw;
+      throw Infeasible(std::string(e.what()) + "\n  " + hint);
+    }
+  }();
   if (tty) fmt::print(stderr, "\r");
   for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
   acc.motions_in = summary.motions_in;
@@ -194,7 +216,23 @@ void add_post(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("post", "Post-process CL data (APT) or G-code into an NC program");
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON (identify): compensate the machine's geometric errors");
-  sub->add_option("--tolerance", a->tolerance_mm, "Bound the nonlinear error of every block (mm, in W)")->check(CLI::PositiveNumber);
+  sub->add_option("--tolerance", a->tolerance,
+                  fmt::format("Bound the nonlinear error of every block (mm, in W): blocks that bow more are cut "
+                              "into shorter ones. Default {} mm; 'none' writes one block per CL motion",
+                              kDefaultTolerance_mm))
+      ->type_name("MM|none")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            if (v == "none") return {};
+            try {
+              std::size_t used = 0;
+              const double x = std::stod(v, &used);
+              if (used == v.size() && x > 0 && std::isfinite(x)) return {};
+            } catch (const std::exception&) {
+            }
+            return "expected a positive number of mm or 'none', got '" + v + "'";
+          },
+          ""));
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");

@@ -1,6 +1,7 @@
 #include "input_options.hpp"
 
 #include <sstream>
+#include <string_view>
 
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
@@ -15,6 +16,12 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
   sub.add_option("--units", o.units, "Units of a CL file that does not say (mm or inch)")->check(CLI::IsMember({"mm", "inch"}));
   sub.add_option("--input-kind", o.input_kind, "cl, machine (machine-axis G-code), rtcp (tool-tip G-code), auto")
       ->check(CLI::IsMember({"auto", "cl", "machine", "rtcp"}));
+  sub.add_flag("--allow-unterminated", o.allow_unterminated,
+               "Post a CL file that ends without FINI/END/END-OF-PATH (refused otherwise: a cut copy)");
+  sub.add_option("--msys", o.msys,
+                 "NX MSYS: ignore = GOTOs as written, in the MCS, as NX's posts do (default); apply = map them "
+                 "through MSYS into the absolute frame (README, Choices)")
+      ->check(CLI::IsMember({"ignore", "apply"}));
 }
 
 Vec3d workpiece_origin_mm(const JobOptions& o) {
@@ -37,10 +44,17 @@ LoadedJob load_job(const JobOptions& o) {
   return job;
 }
 
-std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
-                                           const LoadedJob& job) {
+cl::ReaderOptions reader_options(const JobOptions& o) {
   cl::ReaderOptions ro;
   ro.default_inch = o.units == "inch";
+  ro.allow_unterminated = o.allow_unterminated;
+  ro.msys = o.msys == "apply" ? cl::ReaderOptions::Msys::apply : cl::ReaderOptions::Msys::ignore;
+  return ro;
+}
+
+std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
+                                           const LoadedJob& job) {
+  const cl::ReaderOptions ro = reader_options(o);
   std::string kind = o.input_kind;
   if (kind == "auto") {
     std::string head(4096, '\0');
@@ -48,6 +62,10 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
     head.resize(static_cast<std::size_t>(in.gcount()));
     in.clear();
     in.seekg(0);
+    std::string_view body(head);
+    if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
+    if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
     kind = cl::looks_like_apt(head) ? "cl" : "gcode";
   }
   if (kind == "cl") return std::make_unique<cl::AptReader>(in, name, ro);

@@ -16,6 +16,8 @@ struct JobOptions {
   double tool_length_mm = 0.0;
   std::string units;              ///< "", "mm" or "inch": units of a CL file that does not say
   std::string input_kind = "auto";
+  bool allow_unterminated = false;  ///< accept a CL file that ends without FINI / END / END-OF-PATH
+  std::string msys = "ignore";      ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
 };
 
 struct LoadedJob {
@@ -27,6 +29,8 @@ void add_job_options(CLI::App& sub, JobOptions& o);
 /// `--workpiece-origin X,Y,Z` (mm; zero when not given); UsageError when malformed.
 Vec3d workpiece_origin_mm(const JobOptions& o);
 LoadedJob load_job(const JobOptions& o);
+/// The CL reader's options from the command line.
+cl::ReaderOptions reader_options(const JobOptions& o);
 /// Opens the reader for the input's kind (detected from the content unless forced).
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
                                            const LoadedJob& job);

@@ -48,9 +48,7 @@ std::unique_ptr<cl::Reader> open_apt(std::ifstream& in, const std::string& name,
   in.seekg(0);
   if (o.input_kind != "cl" && !cl::looks_like_apt(head))
     throw InputError({name, 1, 1}, "expected APT CL data: G-code input is not supported on the TRR-XY machine");
-  cl::ReaderOptions ro;
-  ro.default_inch = o.units == "inch";
-  return std::make_unique<cl::AptReader>(in, name, ro);
+  return std::make_unique<cl::AptReader>(in, name, reader_options(o));
 }
 
 trr::Kinematics kinematics_for(const TrrJob& job, const std::string& model) {

@@ -14,11 +14,13 @@
 // angular errors leave (issue 7).
 //
 // Reversal: with `previous_actual` (where each axis actually stands, after the previous block)
-// the dead-band offset of each axis follows from the direction of the new command
-// (reversal.hpp); it is re-evaluated at every iterate, so the solution is consistent with the
-// direction its own command implies. Without it, offsets are 0 (approach from below). On a
-// three-axis machine the offsets are instead fixed from the direction in which each axis must
-// actually move (the dead band is not smooth enough for Newton when the needed move is within it).
+// the dead band makes the actual position a non-smooth function of the command (a play: it stands
+// still while the command crosses the band). The solver first finds where the axes must actually
+// go (no offsets), which gives each axis with reversal the side of its band the motion implies
+// (rising, falling, or standing where the needed move is within the tolerances), solves the
+// commands with the axes held on those sides, and checks the result on the exact dead band; where
+// that choice fails, every other choice of sides is tried before giving up. Without history the
+// offsets are 0 (approach from below).
 #include <optional>
 #include <string>
 
@@ -31,6 +33,8 @@ struct ActualIkOptions {
   double axis_tolerance_rad = 1e-8;
   int max_iterations = 30;
   std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
+  /// for reversal: the commands that put them there (an axis that need not move keeps its command)
+  std::optional<AxisPosition> previous_command;
   const HomeInverse* home = nullptr;            ///< the model's home inverse (home_inverse), if computed
   /// The CL point whose nominal IK solution the guess is (the CL point itself, or the CL point less
   /// a predicted error of the machine), if it is one (not programmed angles): its nominal pose is

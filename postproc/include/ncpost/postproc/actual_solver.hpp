@@ -51,6 +51,10 @@ class ActualSolver final : public MotionSolver {
   void set_measure_uncompensated(bool on) { measure_uncompensated_ = on; }
 
   IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override;
+  /// solve_quiet with the axes standing at `stands` (reversal; nullopt: no history) instead of
+  /// where the emitted program left them: the nodes of a block after a reversal inside it.
+  IkOutcome solve_standing(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures,
+                           const std::optional<AxisPosition>& stands) const;
   void record(const SolveFigures& figures) const override;
   /// Without reversal terms the commands depend on the CL point and the previous commands only.
   bool concurrent() const override { return !model_.has_reversal(); }
@@ -63,15 +67,29 @@ class ActualSolver final : public MotionSolver {
 
   /// The error hook for a block from where the axes stand now: each command's reversal offset is
   /// that of the dead band from there (RowState::previous_actual).
-  comp::ErrorFunctor<double> errors_from_here() const {
+  comp::ErrorFunctor<double> errors_from_here() const { return errors_from(actual_); }
+  /// The same from axes standing at `stands` (nullopt: no history, offsets 0).
+  comp::ErrorFunctor<double> errors_from(const std::optional<AxisPosition>& stands) const {
     comp::RowState<double> state;
-    if (actual_) {
+    if (stands) {
       std::array<double, 5> previous{};
-      for (int a = 0; a < 5; ++a) previous[static_cast<std::size_t>(a)] = (*actual_)[a];
+      for (int a = 0; a < 5; ++a) previous[static_cast<std::size_t>(a)] = (*stands)[a];
       state.previous_actual = previous;
     }
     return model_.errors(state).with_home(&home_);
   }
+  /// Where the axes stand after the emitted program (reversal models; nullopt before any block).
+  const std::optional<AxisPosition>& stands() const { return actual_; }
+  /// Where they stand after moving to `command` from `stands`.
+  AxisPosition stands_after(const AxisPosition& command, const std::optional<AxisPosition>& stands) const {
+    return comp::actual_after(model_, command, stands);
+  }
+  /// True when commands q, reached from `stands`, put the tool on `cl` within the IK's tolerances.
+  bool reaches(const ClPoint& cl, const AxisPosition& q, const std::optional<AxisPosition>& stands) const;
+  const comp::MachineModel& model() const { return model_; }
+  /// The subdivision takes up the play inside blocks (play_subdivision.hpp): take_up() then gives
+  /// nothing at the CL points.
+  void take_up_in_blocks() const { take_up_in_blocks_ = true; }
   /// Tool-tip error at the CL points of the uncompensated (nominal) program on this machine.
   const ErrorStats& uncompensated() const { return uncompensated_; }
   /// Largest remaining tip error of the compensated inverse kinematics (mm).
@@ -80,10 +98,13 @@ class ActualSolver final : public MotionSolver {
  private:
   /// `guess` solves `guess_solves` nominally (nullopt: programmed angles).
   /// `executed` (if given) gets the actual pose at the result when it is that of every execution
-  /// there (models without reversal).
+  /// there (models without reversal). `previous` (the previous commands, if known): with reversal
+  /// an axis that need not move keeps its command inside the play.
   AxisPosition compensate(const ClPoint& cl, const AxisPosition& guess, const std::optional<ClPoint>& guess_solves,
                           SolveFigures* figures, std::string& failure,
-                          std::optional<ToolPoseT<double>>* executed = nullptr) const;
+                          std::optional<ToolPoseT<double>>* executed,
+                          const std::optional<AxisPosition>& previous,
+                          const std::optional<AxisPosition>& stands) const;
   /// The error of the machine at commands q (actual − nominal tip and axis in W): the prediction
   /// for the next CL point. Kept per thread for the last solution, so a path pays nothing for it.
   ToolPoseT<double> error_at(const AxisPosition& q) const;
@@ -99,6 +120,7 @@ class ActualSolver final : public MotionSolver {
   // Written as the post goes, on its own cache line: the read-ahead thread reads home_ on every
   // evaluation and must not lose it to these writes (false sharing).
   alignas(64) mutable std::optional<AxisPosition> actual_;  ///< where the axes stand (models with reversal)
+  mutable bool take_up_in_blocks_ = false;
   mutable ErrorStats uncompensated_;
   mutable double max_residual_mm_ = 0.0;
 };

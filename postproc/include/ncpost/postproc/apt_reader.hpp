@@ -39,6 +39,7 @@ class AptReader final : public Reader {
   ~AptReader() override;
   std::optional<Record> next() override;
   std::vector<std::string> take_notices() override;
+  std::string failure_hint() const override;
 
  private:
   struct State;

@@ -1,16 +1,22 @@
 #pragma once
 // An output file written atomically (spec/cli.md): the data go to a temporary file in the same
 // folder, which `commit()` flushes and renames into place. Destroyed without commit (an error on
-// the way), the temporary file is removed and an existing file at the path is left untouched.
+// the way) or stopped by SIGINT/SIGTERM/SIGHUP, the temporary file is removed and an existing file
+// at the path is left untouched. Only regular files are written: a device, FIFO, socket or folder
+// at the path is refused (FileError, temp_files.hpp); a symbolic link is followed and its target
+// replaced (the link stays); a replaced file keeps its mode.
 #include <cstdio>
 #include <string>
 #include <string_view>
+
+#include "ncpost/postproc/temp_files.hpp"
 
 namespace ncpost {
 
 class AtomicFile {
  public:
-  /// Opens a temporary file beside `path`; "-" writes to stdout (commit only flushes).
+  /// Opens a temporary file beside `path` (beside its target if it is a link); "-" writes to
+  /// stdout (commit only flushes). FileError, naming the path and the reason, when it cannot.
   explicit AtomicFile(std::string path);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -18,12 +24,16 @@ class AtomicFile {
 
   void write(std::string_view data);
   std::FILE* stream() { return file_; }
-  /// Flushes, syncs and renames into place. Throws std::runtime_error on failure.
+  /// Flushes, syncs and renames into place. Throws FileError on failure.
   void commit();
   const std::string& path() const { return path_; }
 
  private:
+  std::string fmt_refusal(unsigned mode) const;
+  void discard();
+
   std::string path_;
+  std::string target_;  ///< the file replaced: `path_`, or the target of the link at `path_`
   std::string temp_path_;
   std::FILE* file_ = nullptr;
   bool committed_ = false;

@@ -117,6 +117,15 @@ inline Location location_of(const Record& r) {
 /// Options of every CL reader.
 struct ReaderOptions {
   bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
+  /// Accept a file that ends without FINI / END / END-OF-PATH (otherwise: "truncated?", exit 2).
+  bool allow_unterminated = false;
+  /// NX MSYS (the MCS the GOTOs are written in, given in the part's absolute frame):
+  /// `ignore` posts the GOTOs as written, W = the MCS (what NX's own posts do; a file whose MSYS
+  /// changes between operations is refused); `apply` maps every position and axis through the
+  /// current MSYS into the absolute frame, W = the absolute frame.
+  enum class Msys { ignore, apply } msys = Msys::ignore;
+  /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
+  double curve_tolerance_mm = 0.01;
 };
 
 /// A pull-style stream of records; readers stream so memory stays flat in the input size.
@@ -127,6 +136,9 @@ class Reader {
   virtual std::optional<Record> next() = 0;
   /// Notices gathered so far (unsupported statements, ignored words), with their position.
   virtual std::vector<std::string> take_notices() { return {}; }
+  /// What in the input most likely explains a failure to post it ("" if nothing), for the
+  /// message of that failure (e.g. an NX MSYS that rotates the MCS, posted as written).
+  virtual std::string failure_hint() const { return {}; }
 };
 
 }  // namespace ncpost::cl

@@ -22,6 +22,19 @@
 // control's motion) and then mapped like any motion; under G93 each of the n segments gets
 // n x F so that the arc still takes 1/F minutes.
 // Units: G20 (inch) lengths and feeds are converted to mm; rotary words are degrees.
+// Limits: a motion whose machine commands lie beyond an axis limit is Infeasible (exit 3), in
+// every InputKind (GcodeReaderOptions::check_limits).
+// Start: rapids before every axis is programmed are held and take the axes' first programmed
+// values (no rapid to 0 the source never made); a feed motion, an arc or the end first releases
+// them with 0 for the axes still unknown (notice).
+// G93: each inverse-time motion is preceded by the cl::Feed max(tip path mm, rotary travel deg)
+// x F, with which the post's block time is the source's 1/F minutes.
+// Rollover: on a continuous rotary axis whose values stay within 0 .. 360 deg, a jump of more
+// than 180 deg turns the short way across 0 (C359.857 -> C367.501, notice); a value outside
+// 0 .. 360 marks a turn-counting program, followed as written.
+// Units: with no units word and X/Y/Z mostly written with 4 decimals within a 50-unit box, a
+// notice says the program looks like inches.
+// CutterComp: G41/G42 (D: the register)/G40 records precede the motion of their block.
 // Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
 // as truncated: InputError); text after the closing '%' is ignored, and so are lines before the
 // opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,
@@ -48,6 +61,10 @@ struct GcodeReaderOptions {
   bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
   bool block_delete = true;              ///< skip blocks that start with '/'
   double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
+  /// Every motion's machine commands (machine program: the words; RTCP: the linear axes that put
+  /// the tip there at the programmed angles) must lie within the machine's axis limits, else
+  /// Infeasible (exit 3) naming the line, the axis and the limit. Off only to study a reading.
+  bool check_limits = true;
 
   /// Empty when valid, else what is wrong.
   std::string validate() const;

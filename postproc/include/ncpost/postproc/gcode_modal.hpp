@@ -9,9 +9,12 @@
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
 //   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
 //   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
-//   R S T X Y Z. Cutter compensation (G41/G42), canned cycles, G10/G52/G92 offsets, rotation,
-//   scaling, polar coordinates, threading, probing, subprograms (M97/M98/M99), U V W and E are
-//   "not supported" errors; so are rotary letters the machine lacks.
+//   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
+//   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
+//   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), canned
+//   cycles, G10/G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
+//   subprograms (M97/M98/M99), U V W and E are "not supported" errors; so are rotary letters the
+//   machine lacks.
 //
 // RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
 // (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
@@ -33,7 +36,10 @@ enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 struct ModalState {
   MotionMode motion = MotionMode::none;
   Plane plane = Plane::xy;
-  bool inch = false;
+  bool inch = false;                 ///< lengths in inch (G20, G70, G700)
+  bool feed_inch = false;            ///< feeds in inch (G20, G700; G70 leaves them)
+  bool units_programmed = false;     ///< a units word (G20/G21/G70/G71/G700/G710) was seen
+  cl::CutterComp::Side cutter = cl::CutterComp::Side::off;  ///< G40/G41/G42
   bool incremental = false;
   bool arc_centre_absolute = false;  ///< G90.1
   FeedMode feed_mode = FeedMode::per_minute;
@@ -43,7 +49,7 @@ struct ModalState {
   int tool = 0;                      ///< the selected T
   Rtcp rtcp = Rtcp::off;
   ProgramPoint position{};           ///< the current position (mm, rad)
-  std::array<bool, 6> known{};       ///< the axis has been programmed (or taken as 0)
+  std::array<bool, 6> known{};       ///< the axis has been programmed (else its position is 0, assumed)
   bool ended = false;                ///< M2/M30 seen
 };
 
@@ -53,12 +59,14 @@ struct BlockEffect {
   std::optional<cl::Spindle> spindle;      ///< S while turning, or M3/M4/M5
   std::optional<cl::ToolChange> tool_change;
   std::optional<cl::Coolant> coolant;
+  std::optional<cl::CutterComp> cutter_comp;  ///< G40, G41/G42 (D: the offset register)
   std::vector<cl::Unsupported> before_motion;  ///< dwell, G28/G30 ... (passed through)
   bool has_motion = false;
   MotionMode motion = MotionMode::none;
   ProgramPoint start{};
   ProgramPoint end{};
   std::optional<ArcMove> arc;              ///< for G2/G3
+  std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)

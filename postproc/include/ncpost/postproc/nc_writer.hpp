@@ -60,7 +60,10 @@ class NcWriter {
   void cycle(const NcCycle& c);
   /// True if the dialect has the ISO drilling cycles G81/G83.
   bool has_iso_cycles() const;
-  void rtcp(bool on);
+  /// Blocks of the dialect's tool words (Dialect::tool_call, ...) for `tool`.
+  void tool_blocks(const std::vector<std::string>& blocks, int tool);
+  /// RTCP/TCPM on with the length of `tool`, or off.
+  void rtcp(bool on, int tool);
   void end_program();
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).
   void flush();

@@ -1,0 +1,79 @@
+// Control-specific G codes (see gcode_control_words.hpp).
+#include "ncpost/postproc/gcode_control_words.hpp"
+
+#include <fmt/format.h>
+
+namespace ncpost::gcode {
+namespace {
+
+bool is_switch(std::optional<double> v, double on) { return v && (*v == on || *v == 0.0); }
+
+std::string number(double v) { return fmt::format("{}", v); }
+
+}  // namespace
+
+ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, std::optional<double> p,
+                                  std::optional<double> q, std::optional<double> l) {
+  const bool geometry = axis_words || arc_words;
+  switch (code10) {
+    case 51:  // Fanuc G05.1 Q1/Q0; LinuxCNC G5.1 is a quadratic B-spline (I J with X Y)
+      if (!geometry && is_switch(q, 1.0))
+        return {ControlWordAction::drop,
+                fmt::format("G05.1 Q{} (Fanuc AI contour control: look-ahead) is a control mode word, not a motion: "
+                            "dropped (the posted program runs with its control's own look-ahead setting)",
+                            number(*q))};
+      return {ControlWordAction::refuse,
+              "G5.1 with axis words (a quadratic B-spline) is not supported: post the CL data, or have the CAM "
+              "system write the spline as G1/G2/G3 blocks"};
+    case 50:  // Fanuc G05 P10000/P0; LinuxCNC G5 is a cubic spline (I J P Q with X Y)
+      if (!geometry && !q && is_switch(p, 10000.0))
+        return {ControlWordAction::drop,
+                fmt::format("G05 P{} (Fanuc high-speed high-precision contour control) is a control mode word, not "
+                            "a motion: dropped",
+                            number(*p))};
+      return {ControlWordAction::refuse,
+              "G5 with axis words (a cubic spline) is not supported: post the CL data, or have the CAM system write "
+              "the spline as G1/G2/G3 blocks"};
+    case 80:  // Fanuc G08 P1/P0; LinuxCNC G8 is lathe radius mode
+      if (!geometry && is_switch(p, 1.0))
+        return {ControlWordAction::drop,
+                fmt::format("G08 P{} (Fanuc advanced preview control: look-ahead) is a control mode word, not a "
+                            "motion: dropped",
+                            number(*p))};
+      return {ControlWordAction::none, {}};
+    case 700:
+      if (p || q) return {ControlWordAction::refuse, "G70 with P/Q (a lathe finishing cycle) is not supported"};
+      return {ControlWordAction::length_inch,
+              "G70 (Sinumerik): lengths are read in inch; feeds stay in the control's basic unit (mm unless --units "
+              "inch); use G700 if the feeds are in inch too"};
+    case 710:
+      if (p || q) return {ControlWordAction::refuse, "G71 with P/Q (a lathe roughing cycle) is not supported"};
+      return {ControlWordAction::length_mm,
+              "G71 (Sinumerik): lengths are read in mm; feeds stay in the control's basic unit (mm unless --units "
+              "inch)"};
+    case 7000: return {ControlWordAction::units_inch, {}};
+    case 7100: return {ControlWordAction::units_mm, {}};
+    case 100: {
+      const int kind = l ? static_cast<int>(*l) : -1;
+      const std::string p_text = p ? fmt::format(" P{}", number(*p)) : std::string();
+      if (kind == 2 || kind == 20)
+        return {ControlWordAction::refuse,
+                fmt::format("G10 L{}{} sets a work offset from within the program: the coordinates that follow are "
+                            "relative to an offset ncpost cannot know, so a re-post would be wrong; remove the G10 "
+                            "blocks and the work-offset selections they serve, and give the part's position with "
+                            "--workpiece-origin",
+                            kind, p_text)};
+      if (kind == 1 || kind == 10 || kind == 11)
+        return {ControlWordAction::refuse,
+                fmt::format("G10 L{}{} writes the tool table from within the program: not supported; remove it "
+                            "(tool lengths are the control's offsets, --tool-length for the post)",
+                            kind, p_text)};
+      return {ControlWordAction::refuse,
+              "G10 (writing offsets or parameters from within the program) is not supported: remove it and give the "
+              "part's position with --workpiece-origin"};
+    }
+    default: return {ControlWordAction::none, {}};
+  }
+}
+
+}  // namespace ncpost::gcode

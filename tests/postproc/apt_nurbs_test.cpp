@@ -1,0 +1,122 @@
+// NX NURBS records: the rational B-spline evaluated and linearized within the curve tolerance.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "ncpost/postproc/apt_nurbs.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+std::vector<cl::Motion> motions(const std::string& text, cl::ReaderOptions o = {}) {
+  std::istringstream in(text);
+  cl::AptReader r(in, "n.cls", o);
+  std::vector<cl::Motion> out;
+  while (auto x = r.next())
+    if (auto* m = std::get_if<cl::Motion>(&*x)) out.push_back(*m);
+  return out;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    motions(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* const kQuarterCircle =  // radius 50 about the origin, as a rational quadratic
+    "GOTO/50,0,0,0,0,1\n"
+    "NURBS/\n"
+    "KNOT/0,0,0,1,1,1\n"
+    "CNTRL/50,0,0,1\n"
+    "CNTRL/50,50,0,0.70710678118654757\n"
+    "CNTRL/0,50,0,1\n"
+    "GOTO/0,50,0,0,0,1\n"
+    "FINI\n";
+
+}  // namespace
+
+TEST_CASE("a quarter circle as a rational spline: every point on the circle, every chord within the tolerance") {
+  for (const double tol : {0.01, 0.001}) {
+    INFO("tolerance " << tol);
+    cl::ReaderOptions o;
+    o.curve_tolerance_mm = tol;
+    const auto m = motions(kQuarterCircle, o);
+    REQUIRE(m.size() >= 3);
+    CHECK(m.front().point.tip_mm == Vec3d(50, 0, 0));
+    CHECK(m.back().point.tip_mm == Vec3d(0, 50, 0));
+    CHECK(m.back().where.line == 7);  // the GOTO at the curve's end is its last motion
+    // the chords a circle of radius 50 needs at this tolerance: sagitta R (1 - cos(a/2)) <= tol
+    const double step = 2.0 * std::acos(1.0 - tol / 50.0);
+    const auto needed = static_cast<std::size_t>(std::ceil(0.5 * M_PI / step));
+    const std::size_t chords = m.size() - 1;
+    CHECK(chords >= needed);
+    CHECK(chords <= 4 * needed);
+    double worst = 0.0;
+    for (std::size_t i = 1; i < m.size(); ++i) {
+      const Vec3d a = m[i - 1].point.tip_mm, b = m[i].point.tip_mm;
+      CHECK(std::abs(b.norm() - 50.0) < 1e-9);
+      CHECK(b.z() == 0.0);
+      const double angle = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+      worst = std::max(worst, 50.0 * (1.0 - std::cos(0.5 * angle)));  // the exact sagitta of the chord
+      CHECK(std::atan2(b.y(), b.x()) > std::atan2(a.y(), a.x()));  // in order, counter-clockwise
+    }
+    CHECK(worst <= tol);
+    CHECK(worst > 0.25 * tol);  // not needlessly fine
+  }
+}
+
+TEST_CASE("NURBS: degree from the counts, KNOT/CNTRL on one line, tool axis blended to the end GOTO's") {
+  // a cubic Bezier as a B-spline (weights 1): C(0.5) = (P0 + 3 P1 + 3 P2 + P3) / 8
+  cl::NurbsCurve c;
+  c.degree = 3;
+  c.knots = {0, 0, 0, 0, 2, 2, 2, 2};
+  c.points_mm = {Vec3d(0, 0, 0), Vec3d(10, 20, 0), Vec3d(30, 20, 5), Vec3d(40, 0, 5)};
+  c.weights = {1, 1, 1, 1};
+  CHECK(c.defect().empty());
+  CHECK((c.point_at(1.0) - Vec3d(20, 15, 2.5)).norm() < 1e-12);
+  const std::string file =
+      "GOTO/0,0,0,0,0,1\nNURBS/\nKNOT/0,CNTRL/0,0,0\nKNOT/0\nKNOT/0\nKNOT/0,CNTRL/10,20,0\nKNOT/2,CNTRL/30,20,5\n"
+      "KNOT/2,CNTRL/40,0,5\nKNOT/2\nKNOT/2\nGOTO/40,0,5,0,0.6,0.8\nFINI\n";
+  const auto m = motions(file);
+  REQUIRE(m.size() > 10);
+  for (const auto& x : m) {
+    // every point on the curve: its distance to the curve's samples is tiny
+    double best = 1e9;
+    for (int i = 0; i <= 200000; ++i) best = std::min(best, (c.point_at(i * 1e-5) - x.point.tip_mm).norm());
+    CHECK(best < 1e-3);
+    CHECK(std::abs(x.point.axis.norm() - 1.0) < 1e-12);
+    CHECK(x.point.axis.x() == 0.0);
+  }
+  CHECK((m.back().point.axis - Vec3d(0, 0.6, 0.8)).norm() < 1e-12);
+  CHECK(m[m.size() / 2].point.axis.y() > 0.05);
+  CHECK(m[m.size() / 2].point.axis.y() < 0.55);
+  // a GOTO elsewhere after the curve: the curve ends with the current axis, then the GOTO moves
+  const auto away = motions("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nGOTO/10,5,0\nFINI\n");
+  REQUIRE(away.size() == 3);
+  CHECK(away[1].point.tip_mm == Vec3d(10, 0, 0));
+  CHECK(away[2].point.tip_mm == Vec3d(10, 5, 0));
+  // tool axes on the control points are a spline too
+  const auto axes = motions("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,0,0,1\nCNTRL/10,0,0,0,1,0\nEND\n");
+  REQUIRE(axes.size() == 2);
+  CHECK(axes[1].point.axis == Vec3d(0, 1, 0));
+}
+
+TEST_CASE("NURBS: bad curves are refused naming the line") {
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,3\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("2 control points for degree 3 (expected at least 4)"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/ORDER,2\nKNOT/0,0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("5 knots for 2 control points of degree 1 (expected 4)"));
+  CHECK_THAT(error_of("GOTO/5,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("starts 5.0000 mm away"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nKNOT/0,0,1,1\nFINI\n"), Catch::Contains("n.cls:2:1") && Catch::Contains("outside a NURBS"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,1,0,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
+             Catch::Contains("less than the one before"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,0\nCNTRL/10,0,0,1\nFINI\n"), Catch::Contains("weight"));
+  CHECK_THAT(error_of("NURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"), Catch::Contains("before any motion"));
+}

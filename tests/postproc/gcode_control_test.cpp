@@ -1,0 +1,334 @@
+// G-code input of issue 13 item 12 and issue 14 item 11: cutter compensation records, control
+// mode words, Sinumerik units and keywords, G10 refusals, and the machine's axis limits.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
+
+using namespace ncpost;
+using namespace ncpost::gcode;
+
+namespace {
+
+const Machine& ac_machine() {  // Z -600 .. 600 mm, A -120 .. 120 deg, C continuous
+  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
+  return m;
+}
+
+struct Read {
+  std::vector<cl::Record> records;
+  std::vector<std::string> notices;
+};
+
+Read read_all(const std::string& text, GcodeReaderOptions o = {}, Setup s = {}) {
+  std::istringstream in(text);
+  GcodeClReader r(in, "t.ngc", ac_machine(), s, o);
+  Read out;
+  while (auto x = r.next()) {
+    out.records.push_back(std::move(*x));
+    for (auto& n : r.take_notices()) out.notices.push_back(std::move(n));
+  }
+  for (auto& n : r.take_notices()) out.notices.push_back(std::move(n));
+  return out;
+}
+
+template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
+  std::vector<T> out;
+  for (const auto& r : rs)
+    if (const T* x = std::get_if<T>(&r)) out.push_back(*x);
+  return out;
+}
+
+InputError input_error(const std::string& text) {
+  try {
+    read_all(text);
+  } catch (const InputError& e) {
+    return e;
+  }
+  FAIL("no input error for: " << text);
+  throw;
+}
+
+std::string infeasible(const std::string& text, InputKind kind, Setup s = {}) {
+  GcodeReaderOptions o;
+  o.kind = kind;
+  try {
+    read_all(text, o, s);
+  } catch (const Infeasible& e) {
+    return e.what();
+  }
+  FAIL("no Infeasible for: " << text);
+  return {};
+}
+
+bool any_contains(const std::vector<std::string>& notices, const std::string& part) {
+  for (const auto& n : notices)
+    if (n.find(part) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("gcode control: G41/G42 with D and G40 become CutterComp records before the block's motion") {
+  const Read r = read_all("G21 G90 G0 X0 Y0 Z5\nG41 D7 G1 X10 F100\nG3 X20 Y10 I5 J5\nG42 G1 X30\nG40 G0 Z50\nM30\n");
+  const auto comps = only<cl::CutterComp>(r.records);
+  REQUIRE(comps.size() == 3);
+  CHECK(comps[0].side == cl::CutterComp::Side::left);
+  REQUIRE(comps[0].offset_register);
+  CHECK(*comps[0].offset_register == 7);
+  CHECK(comps[0].where.line == 2);
+  CHECK(comps[0].where.column == 1);
+  CHECK(comps[0].text == "G41 D7");
+  CHECK(comps[1].side == cl::CutterComp::Side::right);
+  CHECK_FALSE(comps[1].offset_register);  // no D: the control's current tool radius
+  CHECK(comps[1].where.line == 4);
+  CHECK(comps[2].side == cl::CutterComp::Side::off);
+  CHECK(comps[2].where.line == 5);
+  // the record precedes the motion of its block
+  std::size_t comp_at = 0, motion_at = 0;
+  for (std::size_t i = 0; i < r.records.size(); ++i) {
+    if (const auto* c = std::get_if<cl::CutterComp>(&r.records[i]); c && c->where.line == 2) comp_at = i;
+    if (const auto* m = std::get_if<cl::Motion>(&r.records[i]); m && m->where.line == 2 && !motion_at) motion_at = i;
+  }
+  CHECK(comp_at < motion_at);
+  CHECK(input_error("G41 D-1 G1 X1 F1\n").where().column == 5);
+  CHECK_THAT(input_error("G41.1 D6 G1 X1 F1\n").detail(), Catch::Contains("dynamic cutter radius compensation"));
+}
+
+TEST_CASE("gcode control: the real LinuxCNC cutter-compensation sample reads its two G41 (lines 37, 77) and two G40 (lines 11, 52)") {
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;
+  Setup s;
+  s.workpiece_origin_mm = Vec3d(-60, -50, -100);
+  const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
+  auto reader = open_gcode(NCPOST_SOURCE_DIR "/tests/data/real/linuxcnc_gmoccapy_2_tools_cutcom.ngc", vmc, s, o);
+  std::vector<int> left_lines, off_lines;
+  while (auto r = reader->next())
+    if (const auto* c = std::get_if<cl::CutterComp>(&*r))
+      (c->side == cl::CutterComp::Side::left ? left_lines : off_lines).push_back(c->where.line);
+  CHECK(left_lines == std::vector<int>{37, 77});
+  CHECK(off_lines == std::vector<int>{11, 52});
+}
+
+TEST_CASE("gcode control: look-ahead mode words are dropped with a notice, splines are still refused") {
+  const Read r = read_all("G21 G90\nG05.1 Q1\nG0 X1 Y2 Z3\nG5.1 Q0\nG05 P10000\nG08 P1\nG1 X4 F100\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 2);
+  CHECK(ms[1].point.tip_mm.x() == Approx(4.0));
+  CHECK(only<cl::Unsupported>(r.records).empty());
+  CHECK(any_contains(r.notices, "t.ngc:2:1: G05.1 Q1 (Fanuc AI contour control: look-ahead)"));
+  CHECK(any_contains(r.notices, "t.ngc:5:1: G05 P10000"));
+  CHECK(any_contains(r.notices, "t.ngc:6:1: G08 P1"));
+  CHECK_THAT(input_error("G0 X0 Y0\nG5.1 X10 Y5 I2 J2\n").detail(), Catch::Contains("quadratic B-spline"));
+  CHECK_THAT(input_error("G0 X0 Y0\nG5 X10 Y5 I2 J2 P1 Q1\n").detail(), Catch::Contains("cubic spline"));
+}
+
+TEST_CASE("gcode control: Sinumerik G70/G71 set length units, G700/G710 lengths and feeds") {
+  {
+    const Read r = read_all("G70 G0 X1 Y2 Z0.5\nG1 X2 F100\nG71 X10\nM30\n");
+    const auto ms = only<cl::Motion>(r.records);
+    REQUIRE(ms.size() == 3);
+    CHECK(ms[0].point.tip_mm.x() == Approx(25.4));
+    CHECK(ms[0].point.tip_mm.z() == Approx(12.7));
+    CHECK(ms[1].point.tip_mm.x() == Approx(50.8));
+    REQUIRE(ms[1].feed);
+    CHECK(*ms[1].feed == Approx(100.0));  // G70 leaves feeds in the basic unit (mm/min)
+    CHECK(ms[2].point.tip_mm.x() == Approx(10.0));
+    CHECK(any_contains(r.notices, "t.ngc:1:1: G70 (Sinumerik): lengths are read in inch"));
+  }
+  {
+    const Read r = read_all("G700 G0 X1 Y0 Z0\nG1 X2 F10\nG710 X10 F100\nM30\n");
+    const auto ms = only<cl::Motion>(r.records);
+    REQUIRE(ms.size() == 3);
+    CHECK(ms[1].point.tip_mm.x() == Approx(50.8));
+    REQUIRE(ms[1].feed);
+    CHECK(*ms[1].feed == Approx(254.0));
+    CHECK(ms[2].point.tip_mm.x() == Approx(10.0));
+    CHECK(*ms[2].feed == Approx(100.0));
+  }
+  CHECK_THAT(input_error("G21 G70 X1\n").detail(), Catch::Contains("both set the units"));
+  CHECK_THAT(input_error("G71 P10 Q20\n").detail(), Catch::Contains("lathe roughing cycle"));
+}
+
+TEST_CASE("gcode control: Sinumerik keywords and G10 are refused naming what they are and what to do") {
+  const InputError mcall = input_error("G0 X1 Y1 Z1\nMCALL CYCLE81(10,0,2,-5)\n");
+  CHECK(mcall.where().line == 2);
+  CHECK(mcall.where().column == 1);
+  CHECK_THAT(mcall.detail(), Catch::Contains("MCALL (a Sinumerik modal subprogram call"));
+  CHECK_THAT(input_error("  CYCLE83(1,2)\n").detail(), Catch::Contains("CYCLE83 (a Sinumerik cycle call)"));
+  CHECK(input_error("  CYCLE83(1,2)\n").where().column == 3);
+  CHECK_THAT(input_error("TRANS X10\n").detail(), Catch::Contains("programmable work offset"));
+  const InputError g10 = input_error("G90 G21\nG0 X0 Y0 Z5\n\nG10 L2 P1 X0 Y0 Z0\n");
+  CHECK(g10.where().line == 4);
+  CHECK(g10.where().column == 1);
+  CHECK_THAT(g10.detail(), Catch::Contains("G10 L2 P1 sets a work offset"));
+  CHECK_THAT(g10.detail(), Catch::Contains("--workpiece-origin"));
+  CHECK_THAT(input_error("G10 L1 P3 R5\n").detail(), Catch::Contains("tool table"));
+}
+
+TEST_CASE("gcode control: the real CAMotics botomata program is refused at its G10 L2 (line 6)") {
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;
+  Setup s;
+  s.workpiece_origin_mm = Vec3d(-100, -100, -100);
+  const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
+  auto reader = open_gcode(NCPOST_SOURCE_DIR "/tests/data/real/camotics_botomata_bottom.nc", vmc, s, o);
+  try {
+    while (reader->next()) {
+    }
+    FAIL("botomata read without an error");
+  } catch (const InputError& e) {
+    CHECK(e.where().line == 6);
+    CHECK(e.where().column == 1);
+    CHECK_THAT(e.detail(), Catch::Contains("G10 L2 P1 sets a work offset"));
+  }
+}
+
+TEST_CASE("gcode control: motions beyond the machine's axis limits are Infeasible in every input kind") {
+  const std::string program = "G21 G90\nG0 X0 Y0 Z10 A0 C0\nG1 X10 Z5000 A150 F100\nM30\n";
+  for (InputKind kind : {InputKind::machine, InputKind::rtcp, InputKind::automatic}) {
+    const std::string what = infeasible(program, kind);
+    INFO(what);
+    // the rotary axis first: the linear commands of an RTCP program follow from it
+    CHECK(what == "t.ngc:3:1: A 150.000 deg, beyond the A axis limit 120.000 deg (travel -120.000 .. 120.000 deg) of "
+                  "machine ac-trunnion: the program does not fit the machine; check the program's angles against the "
+                  "machine file");
+  }
+  CHECK(infeasible("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z5000 F100\n", InputKind::machine) ==
+        "t.ngc:2:1: Z 5000.000 mm, beyond the Z axis limit 600.000 mm (travel -600.000 .. 600.000 mm) of machine "
+        "ac-trunnion: the program does not fit the machine; check --workpiece-origin, or the machine file");
+  Setup s;
+  s.workpiece_origin_mm = Vec3d(0, 0, 80);
+  // RTCP: tip Z 5000 in W is machine Z 5080 at A0 C0 (W origin 80 mm above M's)
+  CHECK_THAT(infeasible("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z5000 F100\n", InputKind::rtcp, s),
+             Catch::StartsWith("t.ngc:2:1: the programmed tool tip needs machine Z 5080.000 mm, beyond the Z axis "
+                               "limit 600.000 mm"));
+  CHECK_THAT(infeasible("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z-700 F100\n", InputKind::machine),
+             Catch::StartsWith("t.ngc:2:1: Z -700.000 mm, beyond the Z axis limit -600.000 mm"));
+  // an arc whose middle leaves the travel: Y reaches 510 mm between end points within it
+  CHECK_THAT(infeasible("G0 X-10 Y500 Z0 A0 C0\nG2 X10 Y500 I10 J0 F100\n", InputKind::machine),
+             Catch::StartsWith("t.ngc:2:1: Y 50"));
+  // within the limits (A exactly at 120, C continuous at 720): no error
+  const Read ok = read_all("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z600 A120 C720 F100\nM30\n");
+  CHECK(only<cl::Motion>(ok.records).size() == 2);
+}
+
+namespace {
+
+std::vector<cl::Record> read_vmc(const std::string& text) {
+  static const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;  // tips in W as written
+  std::istringstream in(text);
+  GcodeClReader r(in, "t.ngc", vmc, Setup{}, o);
+  std::vector<cl::Record> out;
+  while (auto x = r.next()) out.push_back(std::move(*x));
+  return out;
+}
+
+void check_tip(const cl::Motion& m, double x, double y, double z) {
+  INFO("line " << m.where.line);
+  CHECK(m.point.tip_mm.x() == Approx(x).margin(1e-12));
+  CHECK(m.point.tip_mm.y() == Approx(y).margin(1e-12));
+  CHECK(m.point.tip_mm.z() == Approx(z).margin(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("gcode control: the program starts at its first programmed position, not with a rapid to 0") {
+  {  // rapids only until every axis is programmed: they take the first values
+    const auto rs = read_vmc("G21 G90\nG0 Z10\nT1 M6\nG0 Y100\nG0 X-25\nG1 Z0 F100\nM30\n");
+    const auto ms = only<cl::Motion>(rs);
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -25, 100, 10);
+    check_tip(ms[1], -25, 100, 10);
+    check_tip(ms[2], -25, 100, 10);
+    check_tip(ms[3], -25, 100, 0);
+    CHECK(ms[0].where.line == 2);
+    // the tool change keeps its place between the held rapids
+    std::vector<int> order;
+    for (const auto& r : rs) {
+      if (const auto* m = std::get_if<cl::Motion>(&r)) order.push_back(m->where.line);
+      if (std::holds_alternative<cl::ToolChange>(r)) order.push_back(-3);
+    }
+    CHECK(order == std::vector<int>{2, -3, 4, 5, 6});
+  }
+  {  // a feed motion comes first for Y (CAMotics cds.gcode): Y is 0 there, as at a control's program zero
+    const auto ms = only<cl::Motion>(read_vmc("G21\nF400\nG0 Z3\nG0 X-26.9938\nG1 Z-1.5\nG1 X0 Y-26.9938\nM30\n"));
+    REQUIRE(ms.size() == 4);
+    check_tip(ms[0], -26.9938, 0, 3);
+    check_tip(ms[1], -26.9938, 0, 3);
+    check_tip(ms[2], -26.9938, 0, -1.5);
+    check_tip(ms[3], 0, -26.9938, -1.5);
+  }
+  {  // the feed motion that programs X and Y first starts from 0 in them
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nG1 X5 Y5 F100\nM30\n"));
+    REQUIRE(ms.size() == 2);
+    check_tip(ms[0], 0, 0, 10);
+    check_tip(ms[1], 5, 5, 10);
+  }
+  {  // the end before the other axes: 0
+    const auto ms = only<cl::Motion>(read_vmc("G0 Z10\nM30\n"));
+    REQUIRE(ms.size() == 1);
+    check_tip(ms[0], 0, 0, 10);
+  }
+  {  // rotary axes the program never writes: 0 on the five-axis machine, from the first feed motion on
+    const Read r = read_all("G0 Z10\nG0 X1 Y2\nG1 X3 F100\nM30\n");
+    const auto ms = only<cl::Motion>(r.records);
+    REQUIRE(ms.size() == 3);
+    for (const auto& m : ms) {
+      REQUIRE(m.rotary_rad);
+      CHECK(m.rotary_rad->norm() == 0.0);
+    }
+    CHECK(any_contains(r.notices, "t.ngc:1:4: X, Y, A, C not programmed before the first motion"));
+  }
+}
+
+TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blocks keep the source's time") {
+  const Read r = read_all("G21 G90\nG0 X0 Y0 Z50 A0 C350\nG93 G1 C10 F60\nG1 C359.857 F60\nG1 C7.501 F30\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 4);
+  const double expected_c_deg[] = {350.0, 370.0, 359.857, 367.501};
+  for (std::size_t i = 0; i < 4; ++i) {
+    REQUIRE(ms[i].rotary_rad);
+    CHECK((*ms[i].rotary_rad)[1] * 180.0 / kPi == Approx(expected_c_deg[i]).margin(1e-9));
+  }
+  // feed = rotary travel (deg) x F (1/min): the post's time max(length, travel) / feed is 1/F
+  const auto feeds = only<cl::Feed>(r.records);
+  REQUIRE(feeds.size() == 3);
+  CHECK(feeds[0].value == Approx(20.0 * 60));
+  CHECK(feeds[1].value == Approx(10.143 * 60));
+  CHECK(feeds[2].value == Approx(7.644 * 30));
+  CHECK(feeds[2].where.line == 5);
+  CHECK(any_contains(r.notices, "t.ngc:3: C 350.000 -> 10.000 deg read the short way (+20.000 deg"));
+  // a program that counts turns (a value outside 0 .. 360) is followed as written
+  const auto counted = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A0 C-10\nG1 C350 F100\nG1 C10\nM30\n").records);
+  REQUIRE(counted.size() == 3);
+  CHECK((*counted[1].rotary_rad)[1] * 180.0 / kPi == Approx(350.0));
+  CHECK((*counted[2].rotary_rad)[1] * 180.0 / kPi == Approx(10.0));
+  // A has limits: never unwrapped (a jump beyond them is the limits' business)
+  const auto a_axis = only<cl::Motion>(read_all("G0 X0 Y0 Z50 A100 C0\nG1 A-100 F100\nM30\n").records);
+  CHECK((*a_axis[1].rotary_rad)[0] * 180.0 / kPi == Approx(-100.0));
+}
+
+TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice, a mm or explicit one none") {
+  const std::string square = "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
+  const Read r = read_all(square);
+  CHECK(any_contains(r.notices, "t.ngc:1: the program has no G20/G21 and looks like inches (8 of 8 X/Y/Z words with 4 "
+                                "decimals, all positions within 1.125 x 0.5 x 1.1)"));
+  CHECK(only<cl::Motion>(r.records)[1].point.tip_mm.z() == Approx(-0.1));  // still read as mm
+  CHECK_FALSE(any_contains(read_all("G21\n" + square).notices, "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G20\n" + square).notices, "looks like inches"));
+  GcodeReaderOptions inch;
+  inch.default_inch = true;
+  CHECK_FALSE(any_contains(read_all(square, inch).notices, "looks like inches"));
+  // mm-sized positions, or 3-decimal words: no notice
+  CHECK_FALSE(any_contains(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
+                                    "Y0.2500\nM30\n").notices,
+                           "looks like inches"));
+  CHECK_FALSE(any_contains(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").notices,
+                           "looks like inches"));
+}
