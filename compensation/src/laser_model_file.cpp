@@ -1,5 +1,7 @@
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "ncpost/compensation/laser_identify.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 
@@ -63,7 +65,7 @@ ModelFile laser_model_file(const Machine& m, const LaserIdentifyResult& r) {
   laser["iso230_2"] = iso;
   laser["rms_fit_um"] = r4(r.rms_fit_um);
   laser["max_fit_um"] = r4(r.max_fit_um);
-  f.extra["laser"] = laser;
+  f.extra["laser"] = laser.dump();
   return f;
 }
 

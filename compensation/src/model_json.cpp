@@ -1,6 +1,7 @@
 #include "ncpost/compensation/model_json.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -109,7 +110,7 @@ ModelFile parse_model_json(const std::string& text, const std::string& file, con
       f.max_nominal_um = v.value("max_nominal_um", 0.0);
       m.fit = f;
     } else {
-      m.extra[k] = nlohmann::json::parse(v.dump());
+      m.extra[k] = v.dump();
     }
   }
   return m;
@@ -159,7 +160,7 @@ std::string format_model_json(const ModelFile& m) {
                 {"rms_after_um", r(f.rms_after_um)},   {"max_after_um", r(f.max_after_um)},
                 {"rms_nominal_um", r(f.rms_nominal_um)}, {"max_nominal_um", r(f.max_nominal_um)}};
   }
-  for (auto it = m.extra.begin(); it != m.extra.end(); ++it) j[it.key()] = ordered_json::parse(it.value().dump());
+  for (const auto& [key, text] : m.extra) j[key] = ordered_json::parse(text);
   return j.dump(1) + "\n";
 }
 

@@ -7,6 +7,7 @@
 
 #include "ncpost/postproc/preview_html.hpp"
 #include "ncpost/postproc/preview_svg.hpp"
+#include "ncpost/version.hpp"
 
 namespace ncpost::preview {
 namespace {
@@ -153,7 +154,7 @@ std::string render_html(const HtmlReport& r) {
     }
     h += "</ul>\n";
   }
-  h += "<p class=\"note\">ncpost 0.1.0</p>\n</body></html>\n";
+  h += "<p class=\"note\">ncpost " + ncpost::version() + "</p>\n</body></html>\n";
   return h;
 }
 

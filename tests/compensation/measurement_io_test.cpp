@@ -69,7 +69,7 @@ TEST_CASE("model JSON: names checked against the machine, round trip") {
   CHECK(*f.parameters.get("ECC:h2:cos") == 4e-5);
   const ModelFile back = parse_model_json(format_model_json(f), "n.json", &m);
   CHECK(back.parameters.names() == f.parameters.names());
-  CHECK(back.extra["note"] == "kept");
+  CHECK(back.extra.at("note") == "\"kept\"");  // the value's JSON text
   CHECK(back.effects_added == std::vector<std::string>{"ECC:h2"});
 
   std::string bad = text;

@@ -20,6 +20,7 @@
 #include "ncpost/postproc/preview_blocks.hpp"
 #include "ncpost/postproc/tolerance_subdivider.hpp"
 #include "trr_commands.hpp"
+#include "ncpost/version.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -155,7 +156,7 @@ int run_post(const PostArgs& given) {
                                            : PostOptions::FeedMode::automatic;
   options.program_name = "NCPOST";
   options.header_comments = {
-      fmt::format("ncpost 0.1.0 from {}", a.input),
+      fmt::format("ncpost {} from {}", ncpost::version_string, a.input),
       fmt::format("machine {} ({})", job.machine.name, a.job.machine),
       fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm, tool length {:.4f} mm", job.setup.workpiece_origin_mm.x(),
                   job.setup.workpiece_origin_mm.y(), job.setup.workpiece_origin_mm.z(), job.setup.tool_length_mm),

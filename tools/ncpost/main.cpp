@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/temp_files.hpp"
+#include "ncpost/version.hpp"
 #include "option_spelling.hpp"
 #include "terminal_text.hpp"
 
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
   using ncpost::cli::terminal_text;
   CLI::App app{"ncpost: five-axis CNC post-processor with nonlinear-error and geometric-error compensation"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ncpost 0.1.0");
+  app.set_version_flag("--version", "ncpost " + ncpost::version());
   app.footer("Exit codes: 0 done, 1 usage, 2 bad input or file, 3 infeasible, 4 internal fault (README \"Exit codes\").");
   ncpost::cli::Action action;
   ncpost::cli::add_post(app, action);

@@ -14,6 +14,7 @@
 #include "ncpost/postproc/preview_csv.hpp"
 #include "ncpost/postproc/trr_post.hpp"
 #include "ncpost/postproc/trr_preview_html.hpp"
+#include "ncpost/version.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -87,7 +88,7 @@ std::optional<int> post_if_trr_xy(const TrrPostRequest& a) {
   o.verify = a.verify;
   o.program_name = "NCPOST";
   o.header_comments = {
-      fmt::format("ncpost 0.1.0 from {}", a.input),
+      fmt::format("ncpost {} from {}", ncpost::version_string, a.input),
       fmt::format("machine {} ({}): TRR-XY, X Y table, U V W sliders of chains a b c", job->machine.name, a.job.machine),
       fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm", o.workpiece_origin_mm.x(), o.workpiece_origin_mm.y(),
                   o.workpiece_origin_mm.z()),

@@ -6,13 +6,12 @@
 //
 // Reading validates every parameter name against the machine (when given): an unknown or
 // impossible name is an InputError naming the file, the line of the name and the reason. Keys
-// this page does not know are kept (`extra`) and written back.
+// this page does not know are kept (`extra`, as their JSON text) and written back.
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "ncpost/compensation/error_parameters.hpp"
 #include "ncpost/kinematics/machine.hpp"
@@ -49,7 +48,8 @@ struct ModelFile {
   std::vector<std::string> effects_added;
   std::optional<Identifiability> identifiability;
   std::optional<FitSummary> fit;
-  nlohmann::json extra = nlohmann::json::object();  ///< other top-level keys, kept as they are
+  /// Other top-level keys, kept as they are: key → the value's JSON text (written back in key order).
+  std::map<std::string, std::string> extra;
 };
 
 /// Parses a model file; with `machine`, every parameter name is checked against it.

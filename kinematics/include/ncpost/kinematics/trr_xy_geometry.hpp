@@ -1,6 +1,6 @@
 #pragma once
 // Geometry and error parameters of the TRR-XY hybrid machine (seed 004; the contract is
-// ../shared/spec/trr-xy.md): a 3-PRS parallel spindle head (chains a, b, c at 0°, 120°, 240°
+// docs/trr-xy.md): a 3-PRS parallel spindle head (chains a, b, c at 0°, 120°, 240°
 // about +Z: vertical ball screw, slider, pin joint, link, ball joint on the spindle plate) on
 // an XY table.
 //

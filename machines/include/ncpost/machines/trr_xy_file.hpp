@@ -1,5 +1,5 @@
 #pragma once
-// Loading the TRR-XY machine file (../shared/spec/trr-xy.md "Machine file"): [machine] with
+// Loading the TRR-XY machine file (docs/trr-xy.md "Machine file"): [machine] with
 // kind = "trr-xy" and no chain, [trr_xy] with the five dimensions (mm), and [axes.X], [axes.Y]
 // (table) and [axes.U], [axes.V], [axes.W] (sliders of chains a, b, c), all type = "linear" with
 // optional limits (mm). Optional extra key of ncpost: [trr_xy] max_link_angle (deg, default 45).

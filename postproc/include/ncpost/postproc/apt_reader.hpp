@@ -1,6 +1,6 @@
 #pragma once
 // Streaming reader of APT CL source as CAM systems write it (NX CLSF, CATIA APT, Creo
-// Pro/CLfile): spec/formats.md "CL data" and shared/data/real/README.md.
+// Pro/CLfile): docs/formats.md "CL data" and tests/data/real/SOURCES.md.
 //
 // One statement at a time (memory stays flat in the file size). `$` at the end of a line
 // continues the statement on the next line, possibly inside a number (`0$` / `.000000`);

@@ -1,0 +1,30 @@
+#pragma once
+// ncpost: the umbrella header of the installed library (find_package(ncpost CONFIG REQUIRED),
+// target ncpost::ncpost). It brings in the version and the entry points a program needs to post
+// CL data as `ncpost post` does: the machine file loader, the error model file, the CL and G-code
+// readers, the solvers (nominal and compensated), the tolerance subdivider, the NC writer and its
+// dialects, and the post itself with its verification figures. The module headers
+// (<ncpost/kinematics/...>, <ncpost/machines/...>, <ncpost/compensation/...>, <ncpost/postproc/...>)
+// can be included one by one instead. Reference: docs/ (conventions, file formats, CLI).
+//
+// Units inside the library: lengths in mm, angles in radians; degrees only in files and NC words.
+
+#include "ncpost/version.hpp"
+
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/machine_file.hpp"
+
+#include "ncpost/compensation/machine_model.hpp"
+#include "ncpost/compensation/model_json.hpp"
+
+#include "ncpost/postproc/actual_solver.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/motion_solver.hpp"
+#include "ncpost/postproc/nc_writer.hpp"
+#include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "ncpost/postproc/verify.hpp"
