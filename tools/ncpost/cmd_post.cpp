@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "model_input.hpp"
 #include "input_options.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/actual_solver.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct PostArgs {
   JobOptions job;
   std::string model;
+  bool force_model = false;  // --force: model checks as warnings
   std::optional<double> tolerance_mm;
   std::string nonlinear = "adaptive";
   bool rtcp = false;
@@ -85,7 +87,7 @@ int run_post(const PostArgs& a) {
   std::unique_ptr<MotionSolver> solver;
   const ActualSolver* actual = nullptr;
   if (!a.model.empty()) {
-    const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
+    const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
     model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
     auto s = std::make_unique<ActualSolver>(*model, job.setup);
     // the uncompensated error of each CL point is measured only when something reports it
@@ -97,7 +99,7 @@ int run_post(const PostArgs& a) {
   }
   std::unique_ptr<comp::MachineModel> executing;  // --verify-on: the machine the program is re-executed on
   if (!a.verify_on.empty())
-    executing = std::make_unique<comp::MachineModel>(job.machine, comp::read_model_json(a.verify_on, &job.machine).parameters);
+    executing = std::make_unique<comp::MachineModel>(job.machine, read_model_for(a.verify_on, job.machine, a.force_model).parameters);
   std::ifstream in(a.input, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
@@ -193,6 +195,7 @@ void add_post(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("post", "Post-process CL data (APT) or G-code into an NC program");
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON (identify): compensate the machine's geometric errors");
+  add_model_force_option(*sub, a->force_model);
   sub->add_option("--tolerance", a->tolerance_mm, "Bound the nonlinear error of every block (mm, in W)")->check(CLI::PositiveNumber);
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
