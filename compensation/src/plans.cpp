@@ -216,7 +216,7 @@ std::string ballbar_static_moves(const Machine& m, const MeasurementSet& s, cons
 /// Sphere set: approach along the probe axis, read, retract along it, turn at the clearance.
 std::string sphere_moves(const Machine& m, const MeasurementSet& s, const PlanProgramOptions& o) {
   const Setup setup;  // the rows put the gauge point (tool length 0) on the centre
-  const double away = o.clearance_mm + o.guide_tolerance_mm;
+  const double away = o.clearance_mm + o.turn_tolerance_mm;
   const auto clear_of = [&](const Eigen::Vector2d& rotary) {
     AxisPosition q;
     q.rotary_rad = rotary;
@@ -231,7 +231,7 @@ std::string sphere_moves(const Machine& m, const MeasurementSet& s, const PlanPr
   for (std::size_t k = 0; k < s.rows.size(); ++k) {
     if (k > 0) {
       auto poses = guided_turn(m, s.rows[k - 1].command.rotary_rad, s.rows[k].command.rotary_rad, clear_of, setup,
-                               o.guide_tolerance_mm);
+                               o.turn_tolerance_mm);
       poses.back() = retracted(s.rows[k]);
       out += guided_blocks(m, poses);
     }
@@ -261,7 +261,7 @@ std::string plan_program(const Machine& m, const std::vector<NamedPlan>& plans, 
     if (s.type == MeasurementType::sphere) {
       const Setup setup;
       start.linear_mm = linear_for(m, start.rotary_rad,
-                                   s.sphere_mm + (o.clearance_mm + o.guide_tolerance_mm) * forward(m, start, setup).axis, setup);
+                                   s.sphere_mm + (o.clearance_mm + o.turn_tolerance_mm) * forward(m, start, setup).axis, setup);
     }
     out += "G94 G0" + axis_words(m, start) + "\n";
     out += "M0 (mount the instrument, start recording)\n";

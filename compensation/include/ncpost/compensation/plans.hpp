@@ -65,7 +65,8 @@ std::vector<NamedPlan> plan_bc_head(const Machine& machine, const BcHeadPlanOpti
 struct PlanProgramOptions {
   bool continuous = false;        ///< ballbar-4axis: the rows are one measuring move (G93 G1 through them)
   double clearance_mm = 30.0;     ///< sphere: the stylus stays this far from the centre between probing points
-  double guide_tolerance_mm = 0.01;  ///< how far a guided move may leave its target (plan_moves.hpp)
+  double guide_tolerance_mm = 0.01;  ///< ballbar: how far a guided turn may change the bar length (plan_moves.hpp)
+  double turn_tolerance_mm = 0.5;    ///< sphere: how far a turn at the clearance may leave its target
 };
 
 /// The NC program (ISO G-code, G90 G21) that runs the sets in order. Each set: set-up G0 to its
@@ -75,7 +76,7 @@ struct PlanProgramOptions {
 ///  - static ballbar sets (bc-head): a dwell to read each row, guided turns holding the tool ball
 ///    (the bar keeps its length within guide_tolerance_mm);
 ///  - sphere sets: the stylus comes to each probing pose along the probe axis (G1 with the rotary
-///    axes still), dwells, retracts along the probe axis to clearance_mm + guide_tolerance_mm from
+///    axes still), dwells, retracts along the probe axis to clearance_mm + turn_tolerance_mm from
 ///    the centre, then turns guided on that distance (never nearer than clearance_mm).
 std::string plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
                          const PlanProgramOptions& options);
