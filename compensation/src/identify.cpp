@@ -249,6 +249,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 ModelFile to_model_file(const Machine& m, const IdentifyResult& r) {
   ModelFile f;
   f.machine = m.name;
+  f.axes = model_axes(m);
   f.parameters = r.parameters;
   f.uncertainty = r.uncertainty;
   f.identifiability = r.identifiability;

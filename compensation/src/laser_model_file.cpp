@@ -10,6 +10,7 @@ namespace ncpost::comp {
 ModelFile laser_model_file(const Machine& m, const LaserIdentifyResult& r) {
   ModelFile f;
   f.machine = m.name;
+  f.axes = model_axes(m);
   f.parameters = r.parameters;
   for (const auto& fn : r.functions)
     for (std::size_t i = 0; i < fn.nodes_mm.size(); ++i)

@@ -61,6 +61,38 @@ Vec3d vector3(const std::string& value, const Context& where, const std::string&
 
 std::string format_vec(const Vec3d& v) { return fmt::format("{:.4f}, {:.4f}, {:.4f}", v.x(), v.y(), v.z()); }
 
+/// The largest deviation a reading of each instrument can show (README "Measurement files"): a
+/// ballbar's measuring range is about ±1 mm, a probed sphere centre or a laser reading off by more
+/// than 5 mm is a typing or export error, never a machine error the model could explain.
+struct ReadingRange {
+  MeasurementType type;
+  double max_deviation;  ///< in the unit of the value column
+  const char* unit;
+};
+constexpr ReadingRange kReadingRange[] = {
+    {MeasurementType::ballbar, 2.0, "mm"},
+    {MeasurementType::sphere, 5.0, "mm"},
+    {MeasurementType::laser, 5000.0, "µm"},
+};
+
+const ReadingRange& reading_range(MeasurementType type) {
+  for (const auto& r : kReadingRange)
+    if (r.type == type) return r;
+  return kReadingRange[0];
+}
+
+/// 1-based column of field `index` in the raw line (for messages).
+int column_of_field(const std::string& raw, std::size_t index) {
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < index; ++k) {
+    const auto comma = raw.find(',', at);
+    if (comma == std::string::npos) return 0;
+    at = comma + 1;
+  }
+  while (at < raw.size() && (raw[at] == ' ' || raw[at] == '\t')) ++at;
+  return static_cast<int>(at) + 1;
+}
+
 }  // namespace
 
 MeasurementSet parse_measurement_csv(const std::string& text, const std::string& file_name, const Machine& m,
@@ -200,6 +232,11 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
     MeasurementRow row;
     row.line = line_no;
     row.time_s = number(fields[static_cast<std::size_t>(t_col)], where, "t");
+    if (!set.rows.empty() && !(row.time_s > set.rows.back().time_s))
+      where.fail(fmt::format("time t = {} s is not after the previous row's t = {} s (line {}): rows must be in "
+                             "recording order with increasing time stamps; sort the rows or correct the time column",
+                             fields[static_cast<std::size_t>(t_col)], set.rows.back().time_s, set.rows.back().line),
+                 column_of_field(raw, static_cast<std::size_t>(t_col)));
     for (std::size_t a = 0; a < m.axes.size(); ++a) {
       if (column_of_axis[a] < 0) continue;
       const double v = number(fields[static_cast<std::size_t>(column_of_axis[a])], where, std::string(1, m.axes[a].letter));
@@ -228,11 +265,26 @@ MeasurementSet parse_measurement_csv(const std::string& text, const std::string&
       }
     }
     if (set.has_values)
-      for (std::size_t v = 0; v < value_cols.size(); ++v)
-        row.value[static_cast<Eigen::Index>(v)] = number(fields[static_cast<std::size_t>(value_cols[v])], where, header[static_cast<std::size_t>(value_cols[v])]);
+      for (std::size_t v = 0; v < value_cols.size(); ++v) {
+        const auto col = static_cast<std::size_t>(value_cols[v]);
+        const double value = number(fields[col], where, header[col]);
+        row.value[static_cast<Eigen::Index>(v)] = value;
+        const ReadingRange& range = reading_range(set.type);
+        const double deviation = set.type == MeasurementType::ballbar ? value - set.bar_length_mm : value;
+        if (!(std::abs(deviation) <= range.max_deviation))
+          where.fail(fmt::format("{} = {} is {:g} {} from {}, beyond what the instrument can read (at most {:g} {}): a "
+                                 "typing or export error; correct or delete the row",
+                                 header[col], fields[col], std::abs(deviation), range.unit,
+                                 set.type == MeasurementType::ballbar ? "the bar length" : "zero", range.max_deviation,
+                                 range.unit),
+                     column_of_field(raw, col));
+      }
     set.rows.push_back(row);
   }
   if (header.empty()) throw InputError({file_name, line_no, 0}, "no header line (expected e.g. 't,X,Y,Z,A,C,L')");
+  if (set.rows.empty())
+    throw InputError({file_name, header_line, 0},
+                     "no rows after the header: the file holds no measurements (was the export cut short?)");
   return set;
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "ncpost/compensation/model_plausibility.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 
 namespace ncpost::comp {
@@ -53,24 +54,88 @@ ErrorParameters read_parameters(const ordered_json& obj, const std::string& what
   return p;
 }
 
+/// Where the number nlohmann could not hold ("number overflow parsing '1e400'") stands in the text.
+SourcePosition position_of_overflow(const std::string& text, const std::string& message, const std::string& file) {
+  const auto open = message.find('\'');
+  const auto close = open == std::string::npos ? open : message.find('\'', open + 1);
+  if (close == std::string::npos) return {file, 1, 1};
+  const auto at = text.find(message.substr(open + 1, close - open - 1));
+  return at == std::string::npos ? SourcePosition{file, 1, 1} : position_of(text, at, file);
+}
+
+/// The machine, its axes and the parameter values: the checks of a model applied to `machine`.
+void check_for_machine(ModelFile& m, const std::string& text, const std::string& file, const Machine& machine,
+                       const ModelReadOptions& options) {
+  std::vector<InputError> problems;
+  if (m.machine != machine.name)
+    problems.emplace_back(
+        position_of_key(text, "machine", file).line > 0 ? position_of_key(text, "machine", file) : SourcePosition{file, 1, 1},
+        m.machine.empty()
+            ? fmt::format("the model names no machine (key \"machine\"); it may be of another machine than '{}': "
+                          "identify it on this machine, or add \"machine\": \"{}\" if it is (--force applies it anyway)",
+                          machine.name, machine.name)
+            : fmt::format("the model is of machine '{}', not '{}': its errors are another machine's; identify this "
+                          "machine or give its model (--force applies it anyway)",
+                          m.machine, machine.name));
+  if (!m.axes.empty() && m.axes != model_axes(machine))
+    problems.emplace_back(position_of_key(text, "axes", file),
+                          fmt::format("the model is of axes {}, the machine '{}' has {}: give this machine's model "
+                                      "(--force applies it anyway)",
+                                      m.axes, machine.name, model_axes(machine)));
+  for (std::size_t i = 0; i < m.parameters.size(); ++i) {
+    const std::string& name = m.parameters.names()[i];
+    const ParseResult r = parse_parameter_name(name, machine);
+    if (!r.spec) continue;  // refused by read_parameters already
+    const std::string why = implausibility(*r.spec, machine, m.parameters.values()[i]);
+    if (!why.empty())
+      problems.emplace_back(position_of_key(text, name, file),
+                            fmt::format("'{}' {}: a wrong unit (mm/rad, not µm/µrad or degrees) or a wrong file; "
+                                        "correct the value (--force applies it anyway)",
+                                        name, why));
+  }
+  if (problems.empty()) return;
+  if (!options.force) throw problems.front();
+  for (const auto& p : problems) m.warnings.push_back(p.what());
+}
+
 }  // namespace
 
-ModelFile parse_model_json(const std::string& text, const std::string& file, const Machine* machine) {
+std::string model_axes(const Machine& machine) {
+  std::string s;
+  for (const auto& a : machine.axes) s += a.letter;
+  return s;
+}
+
+ModelFile parse_model_json(const std::string& text, const std::string& file, const Machine* machine,
+                           const ModelReadOptions& options) {
   ordered_json j;
   try {
     j = ordered_json::parse(text);
   } catch (const ordered_json::parse_error& e) {
     throw InputError(position_of(text, e.byte > 0 ? e.byte - 1 : 0, file), fmt::format("not valid JSON: {}", e.what()));
+  } catch (const ordered_json::out_of_range& e) {  // 1e400: beyond double
+    throw InputError(position_of_overflow(text, e.what(), file),
+                     fmt::format("a number beyond the range of a double ({}): values are mm and rad, a few digits; "
+                                 "correct the number",
+                                 e.what()));
+  } catch (const ordered_json::exception& e) {
+    throw InputError({file, 1, 1}, fmt::format("not valid JSON: {}", e.what()));
   }
   if (!j.is_object()) throw InputError({file, 1, 1}, "expected a JSON object with 'parameters'");
   if (!j.contains("parameters")) throw InputError({file, 1, 1}, "missing key 'parameters' (name → value in mm/rad)");
   ModelFile m;
+  std::string key;  // the key being read, for a message on a value of the wrong type
+  try {
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string& k = it.key();
+    key = k;
     const auto& v = it.value();
     if (k == "machine") {
       if (!v.is_string()) throw InputError(position_of_key(text, k, file), "'machine' must be a string");
       m.machine = v.get<std::string>();
+    } else if (k == "axes") {
+      if (!v.is_string()) throw InputError(position_of_key(text, k, file), "'axes' must be a string of axis letters, e.g. \"XYZAC\"");
+      m.axes = v.get<std::string>();
     } else if (k == "parameters") {
       m.parameters = read_parameters(v, k, text, file, machine);
     } else if (k == "uncertainty") {
@@ -113,20 +178,25 @@ ModelFile parse_model_json(const std::string& text, const std::string& file, con
       m.extra[k] = v.dump();
     }
   }
+  } catch (const ordered_json::exception& e) {
+    throw InputError(position_of_key(text, key, file), fmt::format("'{}' has a value of the wrong type: {}", key, e.what()));
+  }
+  if (machine) check_for_machine(m, text, file, *machine, options);
   return m;
 }
 
-ModelFile read_model_json(const std::string& path, const Machine* machine) {
+ModelFile read_model_json(const std::string& path, const Machine* machine, const ModelReadOptions& options) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError({path, 0, 0}, "cannot open the model file");
   std::ostringstream s;
   s << f.rdbuf();
-  return parse_model_json(s.str(), path, machine);
+  return parse_model_json(s.str(), path, machine, options);
 }
 
 std::string format_model_json(const ModelFile& m) {
   ordered_json j;
   j["machine"] = m.machine;
+  if (!m.axes.empty()) j["axes"] = m.axes;
   ordered_json p = ordered_json::object();
   for (std::size_t i = 0; i < m.parameters.size(); ++i) p[m.parameters.names()[i]] = m.parameters.values()[i];
   j["parameters"] = p;

@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "ncpost/compensation/plan_moves.hpp"
+#include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 
 namespace ncpost::comp {
@@ -164,42 +167,116 @@ std::vector<NamedPlan> plan_bc_head(const Machine& m, const BcHeadPlanOptions& o
   return out;
 }
 
-std::string plan_program(const Machine& m, const std::vector<NamedPlan>& plans, const std::string& title,
-                         bool continuous) {
-  std::string out = "%\nO1000 (" + title + ")\n(written by ncpost plan; rows of the plan CSV in order)\nG90 G21 G17\n";
-  auto words = [&](const MeasurementRow& r) {
-    std::string w;
-    for (std::size_t a = 0; a < m.axes.size(); ++a) {
-      const double v = r.command[static_cast<int>(a)];
-      w += fmt::format(" {}{:.5f}", m.axes[a].letter, m.axes[a].is_rotary() ? rad_to_deg(v) : v);
+namespace {
+
+/// The words of a pose: every axis, mm and degrees.
+std::string axis_words(const Machine& m, const AxisPosition& q) {
+  std::string w;
+  for (std::size_t a = 0; a < m.axes.size(); ++a) {
+    const double v = q[static_cast<int>(a)];
+    w += fmt::format(" {}{:.5f}", m.axes[a].letter, m.axes[a].is_rotary() ? rad_to_deg(v) : v);
+  }
+  return w;
+}
+
+std::string dwell(const MeasurementSet& s, std::size_t k) {
+  const auto& r = s.rows[k];
+  const double seconds = k + 1 < s.rows.size() ? std::max(0.0, s.rows[k + 1].time_s - r.time_s - 1.0) : 1.0;
+  return fmt::format("G4 X{:.1f} (dwell s, read point {})\n", seconds, k + 1);
+}
+
+/// G93 G1 blocks through guided poses, half a second each.
+std::string guided_blocks(const Machine& m, const std::vector<AxisPosition>& poses) {
+  std::string out;
+  for (const auto& q : poses) out += "G93 G1" + axis_words(m, q) + " F120.000\n";
+  return out + "G94\n";
+}
+
+/// Static ballbar set: read each row, turn between rows holding the tool ball.
+std::string ballbar_static_moves(const Machine& m, const MeasurementSet& s, const PlanProgramOptions& o) {
+  Setup setup;
+  setup.tool_length_mm = s.tool_length_mm;
+  std::string out;
+  for (std::size_t k = 0; k < s.rows.size(); ++k) {
+    if (k > 0) {
+      const Vec3d from = forward(m, s.rows[k - 1].command, setup).tip_mm;
+      const Vec3d to = forward(m, s.rows[k].command, setup).tip_mm;
+      if ((from - to).norm() > o.guide_tolerance_mm)
+        throw std::invalid_argument("a static ballbar set must hold the tool ball on one point");
+      auto poses = guided_turn(m, s.rows[k - 1].command.rotary_rad, s.rows[k].command.rotary_rad,
+                               [&](const Eigen::Vector2d&) { return from; }, setup, o.guide_tolerance_mm);
+      poses.back() = s.rows[k].command;  // the row as planned (rounded as in the CSV)
+      out += guided_blocks(m, poses);
     }
-    return w;
+    out += dwell(s, k);
+  }
+  return out;
+}
+
+/// Sphere set: approach along the probe axis, read, retract along it, turn at the clearance.
+std::string sphere_moves(const Machine& m, const MeasurementSet& s, const PlanProgramOptions& o) {
+  const Setup setup;  // the rows put the gauge point (tool length 0) on the centre
+  const double away = o.clearance_mm + o.turn_tolerance_mm;
+  const auto clear_of = [&](const Eigen::Vector2d& rotary) {
+    AxisPosition q;
+    q.rotary_rad = rotary;
+    return Vec3d(s.sphere_mm + away * forward(m, q, setup).axis);
   };
+  const auto retracted = [&](const MeasurementRow& r) {
+    AxisPosition q = r.command;
+    q.linear_mm = linear_for(m, q.rotary_rad, clear_of(q.rotary_rad), setup);
+    return q;
+  };
+  std::string out;
+  for (std::size_t k = 0; k < s.rows.size(); ++k) {
+    if (k > 0) {
+      auto poses = guided_turn(m, s.rows[k - 1].command.rotary_rad, s.rows[k].command.rotary_rad, clear_of, setup,
+                               o.turn_tolerance_mm);
+      poses.back() = retracted(s.rows[k]);
+      out += guided_blocks(m, poses);
+    }
+    out += "G1" + axis_words(m, s.rows[k].command) + " F1000. (approach along the probe axis)\n";
+    out += dwell(s, k);
+    out += "G1" + axis_words(m, retracted(s.rows[k])) + " (retract along the probe axis)\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string plan_program(const Machine& m, const std::vector<NamedPlan>& plans, const std::string& title,
+                         const PlanProgramOptions& o) {
+  std::string out = "%\nO1000 (" + title + ")\n(written by ncpost plan; rows of the plan CSV in order)\nG90 G21 G17\n";
   for (const auto& p : plans) {
     const auto& s = p.set;
     out += fmt::format("(--- set {}: {} ---)\n", p.name, s.meta("test"));
     if (s.type == MeasurementType::ballbar)
       out += fmt::format("(table ball at {} mm, bar {} mm, tool length {} mm)\n", fmt_vec(s.table_ball_mm),
                          fmt_num(s.bar_length_mm), fmt_num(s.tool_length_mm));
-    if (s.type == MeasurementType::sphere) out += fmt::format("(sphere centre at {} mm)\n", fmt_vec(s.sphere_mm));
+    if (s.type == MeasurementType::sphere)
+      out += fmt::format("(sphere centre at {} mm; the stylus turns {} mm from it, moves to it along the probe axis only)\n",
+                         fmt_vec(s.sphere_mm), fmt_num(o.clearance_mm));
     if (s.rows.empty()) continue;
-    out += "G94 G0" + words(s.rows.front()) + "\n";
-    out += "M0 (mount the instrument, start recording)\n";
-    for (std::size_t k = 0; k < s.rows.size(); ++k) {
-      const auto& r = s.rows[k];
-      if (continuous) {
-        if (k == 0) continue;
-        const double dt = r.time_s - s.rows[k - 1].time_s;
-        out += fmt::format("G93 G1{} F{:.3f}\n", words(r), dt > 0 ? 60.0 / dt : 600.0);
-      } else {
-        if (k > 0) out += "G0" + words(r) + "\n";
-        out += fmt::format("G4 X{:.1f} (dwell s, read point {})\n", s.rows.size() > 1 && k + 1 < s.rows.size()
-                                                                   ? std::max(0.0, s.rows[k + 1].time_s - r.time_s - 1.0)
-                                                                   : 1.0,
-                           k + 1);
-      }
+    AxisPosition start = s.rows.front().command;
+    if (s.type == MeasurementType::sphere) {
+      const Setup setup;
+      start.linear_mm = linear_for(m, start.rotary_rad,
+                                   s.sphere_mm + (o.clearance_mm + o.turn_tolerance_mm) * forward(m, start, setup).axis, setup);
     }
-    if (continuous) out += "G94\n";
+    out += "G94 G0" + axis_words(m, start) + "\n";
+    out += "M0 (mount the instrument, start recording)\n";
+    if (s.type == MeasurementType::sphere) {
+      out += sphere_moves(m, s, o);
+    } else if (o.continuous) {
+      for (std::size_t k = 1; k < s.rows.size(); ++k) {
+        const double dt = s.rows[k].time_s - s.rows[k - 1].time_s;
+        out += fmt::format("G93 G1{} F{:.3f}\n", axis_words(m, s.rows[k].command), dt > 0 ? 60.0 / dt : 600.0);
+      }
+      out += "G94\n";
+    } else {
+      out += ballbar_static_moves(m, s, o);
+    }
+    out += "M0 (stop recording, remove the instrument)\n";
   }
   out += "M30\n%\n";
   return out;

@@ -62,7 +62,7 @@ TEST_CASE("CSV errors name file and line") {
 
 TEST_CASE("model JSON: names checked against the machine, round trip") {
   const Machine m = ac();
-  const std::string text = "{\n \"machine\": \"ac\",\n \"parameters\": {\n  \"EY0C\": -0.02,\n  \"ECC:h2:cos\": 4e-5,\n"
+  const std::string text = "{\n \"machine\": \"ac-trunnion\",\n \"parameters\": {\n  \"EY0C\": -0.02,\n  \"ECC:h2:cos\": 4e-5,\n"
                            "  \"reversal:A\": 1e-5\n },\n \"effects_added\": [\"ECC:h2\"],\n \"note\": \"kept\"\n}\n";
   const ModelFile f = parse_model_json(text, "m.json", &m);
   CHECK(f.parameters.size() == 3);

@@ -18,7 +18,7 @@
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/laser_identify.hpp"
-#include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/compensation/measurement_files.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -93,8 +93,7 @@ void add_identify(CLI::App& app, Action& action) {
                                                                        : !a->report.empty() ? "--report" : ""))
         return *rc;
       const Machine m = load_machine(a->machine);
-      std::vector<comp::MeasurementSet> sets;
-      for (const auto& f : a->data) sets.push_back(comp::read_measurement_csv(f, m));
+      const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a->data, m);
       if (comp::all_laser(sets))  // issue 7
         return identify_laser(m, sets, a->output, a->report, !a->params.empty() || !a->fixed.empty() || a->loss != "squared");
       std::vector<std::string> names = a->no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);

@@ -23,6 +23,7 @@ struct PlanArgs {
   std::vector<double> heights, tool_lengths, levels;
   std::optional<double> bar_length, dt, t0, step;
   int points = 500;
+  double clearance_mm = 30.0;
   std::string sphere;
   bool seed_directions = false;
   comp::LaserPlanOptions laser;
@@ -62,6 +63,10 @@ void add_plan(CLI::App& app, Action& action) {
   sub->add_option("--levels", a->levels, "sphere: levels of the tilt axis (deg)")
       ->delimiter(',')
       ->check(finite_in(-360.0, 360.0, "deg"));
+  sub->add_option("--clearance", a->clearance_mm,
+                  "sphere: distance of the stylus from the sphere centre while it turns between probing poses "
+                  "(mm, default 30)")
+      ->check(finite_in(0.0, 1000.0, "mm", Bound::open));
   sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)")
       ->check(finite_in(0.0, 360.0, "deg", Bound::open));
   sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250); laser: reflector holder length (default 100)")
@@ -94,7 +99,7 @@ void add_plan(CLI::App& app, Action& action) {
       if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
       const Machine m = load_machine(a->machine);
       std::vector<comp::NamedPlan> plans;
-      bool continuous = false;
+      comp::PlanProgramOptions program;
       try {
         if (a->test == "ballbar-4axis") {
           comp::BallbarPlanOptions o;
@@ -104,7 +109,7 @@ void add_plan(CLI::App& app, Action& action) {
           if (a->t0) o.t0_s = *a->t0;
           o.points = a->points;
           plans = comp::plan_ballbar_4axis(m, o);
-          continuous = true;
+          program.continuous = true;
         } else if (a->test == "sphere") {
           comp::SpherePlanOptions o;
           if (!a->sphere.empty()) o.sphere_mm = parse_vec(a->sphere, "--sphere");
@@ -113,6 +118,7 @@ void add_plan(CLI::App& app, Action& action) {
           if (a->dt) o.dt_s = *a->dt;
           if (a->t0) o.t0_s = *a->t0;
           plans = comp::plan_sphere(m, o);
+          program.clearance_mm = a->clearance_mm;
         } else if (a->test == "laser") {
           comp::LaserPlanOptions o = a->laser;
           if (a->dt) o.dt_s = *a->dt;
@@ -133,6 +139,13 @@ void add_plan(CLI::App& app, Action& action) {
       } catch (const std::invalid_argument& e) {
         throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
       }
+      std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
+      try {
+        program_text = a->test == "laser" ? comp::laser_program(m, plans, a->laser)
+                                          : comp::plan_program(m, plans, "ncpost plan " + a->test, program);
+      } catch (const std::invalid_argument& e) {
+        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
+      }
       std::string stem = a->output;
       if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
       const auto csv_name = [&](const comp::NamedPlan& p) {
@@ -146,8 +159,7 @@ void add_plan(CLI::App& app, Action& action) {
         write_file_atomically(file, comp::format_measurement_csv(p.set, m));
         fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
       }
-      write_file_atomically(stem + ".nc", a->test == "laser" ? comp::laser_program(m, plans, a->laser)
-                                                             : comp::plan_program(m, plans, "ncpost plan " + a->test, continuous));
+      write_file_atomically(stem + ".nc", program_text);
       fmt::print("NC program -> {}.nc\n", stem);
       return 0;
     };

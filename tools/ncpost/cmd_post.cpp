@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "input_file.hpp"
+#include "model_input.hpp"
 #include "input_options.hpp"
 #include "number_checks.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -33,6 +34,7 @@ struct PostArgs {
   std::string model;
   std::string tolerance;                ///< --tolerance as given: MM, "none", or "" (the default)
   std::optional<double> tolerance_mm;   ///< resolved from `tolerance`: nullopt = none
+  bool force_model = false;  // --force: model checks as warnings
   std::string nonlinear = "adaptive";
   bool rtcp = false;
   std::string dialect = "fanuc";
@@ -115,7 +117,7 @@ int run_post(const PostArgs& given) {
   std::unique_ptr<MotionSolver> solver;
   const ActualSolver* actual = nullptr;
   if (!a.model.empty()) {
-    const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
+    const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
     model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
     auto s = std::make_unique<ActualSolver>(*model, job.setup);
     // the uncompensated error of each CL point is measured only when something reports it
@@ -127,7 +129,7 @@ int run_post(const PostArgs& given) {
   }
   std::unique_ptr<comp::MachineModel> executing;  // --verify-on: the machine the program is re-executed on
   if (!a.verify_on.empty())
-    executing = std::make_unique<comp::MachineModel>(job.machine, comp::read_model_json(a.verify_on, &job.machine).parameters);
+    executing = std::make_unique<comp::MachineModel>(job.machine, read_model_for(a.verify_on, job.machine, a.force_model).parameters);
   std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   auto reader = open_cl_reader(in, a.input, a.job, job);
@@ -233,6 +235,7 @@ void add_post(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("post", "Post-process CL data (APT) or G-code into an NC program");
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON (identify): compensate the machine's geometric errors");
+  add_model_force_option(*sub, a->force_model);
   sub->add_option("--tolerance", a->tolerance,
                   fmt::format("Bound the nonlinear error of every block (mm, in W): blocks that bow more are cut "
                               "into shorter ones. Default {} mm; 'none' writes one block per CL motion",

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "input_file.hpp"
+#include "model_input.hpp"
 #include "input_options.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct PreviewArgs {
   JobOptions job;
   std::string model;
+  bool force_model = false;  // --force: model checks as warnings
   std::string csv;
   std::string html;
   std::string input;       ///< the INPUT argument; in a run, the name in messages
@@ -42,7 +44,7 @@ int run_preview(const PreviewArgs& given) {
   std::unique_ptr<MotionSolver> solver;
   std::unique_ptr<preview::BlockEvaluator> evaluator;
   if (!a.model.empty()) {
-    const comp::ModelFile file = comp::read_model_json(a.model, &job.machine);
+    const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
     model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
     solver = std::make_unique<preview::ModelMotionSolver>(*model, job.setup);
     evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
@@ -112,6 +114,7 @@ void add_preview(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("preview", "Preview the nonlinear error of every block (exact and harmonic model)");
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON: preview on the actual machine");
+  add_model_force_option(*sub, a->force_model);
   sub->add_option("--csv", a->csv, "Write one row per block: block,line,max_error_mm,at_t,harmonic_mm,...");
   sub->add_option("--html", a->html, "Write a self-contained HTML report (inline SVG)");
   sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")->required()->check(existing_input());

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
+#include "model_input.hpp"
 #include "trr_commands.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -18,6 +19,7 @@ namespace ncpost::cli {
 namespace {
 struct SimulateArgs {
   std::string machine, model, output, plan;
+  bool force_model = false;  // --force: model checks as warnings
   double noise_um = 0.0;
   std::uint64_t seed = 1;
 };
@@ -28,6 +30,7 @@ void add_simulate(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("simulate", "Simulate a measurement plan on a machine with errors");
   sub->add_option("--machine", args->machine, "machine definition (TOML)")->required();
   sub->add_option("--model", args->model, "error model JSON (written by identify): the simulated machine")->required();
+  add_model_force_option(*sub, args->force_model);
   sub->add_option("--noise-um", args->noise_um, "standard deviation of Gaussian noise on every value (µm, 0 to 1000)")
       ->check(finite_in(0.0, 1000.0, "µm"));
   sub->add_option("--seed", args->seed, "random seed of the noise");
@@ -39,7 +42,7 @@ void add_simulate(CLI::App& app, Action& action) {
       if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed))
         return *rc;
       const Machine m = load_machine(args->machine);
-      const comp::ModelFile model = comp::read_model_json(args->model, &m);
+      const comp::ModelFile model = read_model_for(args->model, m, args->force_model);
       const comp::MeasurementSet plan = comp::read_measurement_csv(args->plan, m, {true});
       const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {args->noise_um, args->seed});
       write_file_atomically(args->output, comp::format_measurement_csv(data, m));

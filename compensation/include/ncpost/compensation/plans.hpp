@@ -62,9 +62,29 @@ std::vector<NamedPlan> plan_ballbar_4axis(const Machine& machine, const BallbarP
 std::vector<NamedPlan> plan_sphere(const Machine& machine, const SpherePlanOptions& options);
 std::vector<NamedPlan> plan_bc_head(const Machine& machine, const BcHeadPlanOptions& options);
 
-/// The NC program (ISO G-code, G90 G21) that runs the sets in order: continuous sets (ballbar
-/// 4-axis) as G93 inverse-time G1 blocks, static sets as G0 positioning with a dwell for reading.
+struct PlanProgramOptions {
+  bool continuous = false;        ///< ballbar-4axis: the rows are one measuring move (G93 G1 through them)
+  double clearance_mm = 30.0;     ///< sphere: the stylus stays this far from the centre between probing points
+  double guide_tolerance_mm = 0.01;  ///< ballbar: how far a guided turn may change the bar length (plan_moves.hpp)
+  double turn_tolerance_mm = 0.5;    ///< sphere: how far a turn at the clearance may leave its target
+};
+
+/// The NC program (ISO G-code, G90 G21) that runs the sets in order. Each set: set-up G0 to its
+/// start (instrument off), `M0` to mount the instrument, the measuring moves, `M0` to remove it;
+/// set-up moves only after that stop. With the instrument on every move is guided (plan_moves.hpp):
+///  - continuous sets (ballbar 4-axis): G93 inverse-time G1 through the rows;
+///  - static ballbar sets (bc-head): a dwell to read each row, guided turns holding the tool ball
+///    (the bar keeps its length within guide_tolerance_mm);
+///  - sphere sets: the stylus comes to each probing pose along the probe axis (G1 with the rotary
+///    axes still), dwells, retracts along the probe axis to clearance_mm + turn_tolerance_mm from
+///    the centre, then turns guided on that distance (never nearer than clearance_mm).
 std::string plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
-                         bool continuous);
+                         const PlanProgramOptions& options);
+inline std::string plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
+                                bool continuous) {
+  PlanProgramOptions o;
+  o.continuous = continuous;
+  return plan_program(machine, plans, title, o);
+}
 
 }  // namespace ncpost::comp
