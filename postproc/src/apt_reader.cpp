@@ -249,6 +249,9 @@ struct AptReader::State {
     if (has_word(st, "MMPR")) { unit = 1.0; f.per_rev = true; }
     f.value *= unit;
     if (!(f.value > 0.0)) fail(st.where, "FEDRAT: the feed must be positive", "FEDRAT/" + st.raw_arguments);
+    if (f.value > kMaxCoordinateMm)
+      fail(st.where, fmt::format("FEDRAT: the feed {:.6g} is out of range (expected at most {:g} mm/min)", f.value, kMaxCoordinateMm),
+           "FEDRAT/" + st.raw_arguments);
     return f;
   }
 
@@ -289,6 +292,8 @@ struct AptReader::State {
     c.axis = dir_to_w(nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized()));
     if (v.size() >= 7) {
       c.radius_mm = scale * v[6];
+      if (!(std::abs(c.radius_mm) <= kMaxCoordinateMm))
+        fail(st.where, fmt::format("CIRCLE radius {:.6g} mm is out of range", c.radius_mm), echo_of(text));
       return c;
     }
     if (!have_position)
