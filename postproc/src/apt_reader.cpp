@@ -410,6 +410,9 @@ struct AptReader::State {
     const Vec3d axis0 = axis;
     const Vec3d axis1 = end_axis.value_or(axis0);
     const std::vector<double> us = linearize(c, options.curve_tolerance_mm);
+    if (us.empty())
+      fail(b.where, fmt::format("NURBS: more than a million chords would be needed within {:g} mm (extreme weights or "
+                                "a damaged curve?)", options.curve_tolerance_mm), "");
     const double u0 = c.u_begin(), u1 = c.u_end();
     const bool rapid = rapid_pending;
     rapid_pending = false;
