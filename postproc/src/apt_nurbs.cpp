@@ -90,7 +90,7 @@ std::optional<Vec3d> NurbsCurve::axis_at(double u) const {
   return Vec3d(a.normalized());
 }
 
-std::vector<double> linearize(const NurbsCurve& c, double tolerance_mm) {
+std::vector<double> linearize(const NurbsCurve& c, double tolerance_mm, std::size_t max_chords) {
   std::vector<double> out{c.u_begin()};
   struct Piece {
     double u0, u1;
@@ -118,6 +118,7 @@ std::vector<double> linearize(const NurbsCurve& c, double tolerance_mm) {
       double worst = 0.0;
       for (const double f : {0.25, 0.5, 0.75})
         worst = std::max(worst, distance_to_chord(c.point_at(piece.u0 + f * (piece.u1 - piece.u0)), piece.p0, piece.p1));
+      if (out.size() + stack.size() > max_chords) return {};
       if (worst > tolerance_mm && piece.depth < 40) {
         const double um = 0.5 * (piece.u0 + piece.u1);
         const Vec3d pm = c.point_at(um);

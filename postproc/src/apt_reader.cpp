@@ -249,6 +249,9 @@ struct AptReader::State {
     if (has_word(st, "MMPR")) { unit = 1.0; f.per_rev = true; }
     f.value *= unit;
     if (!(f.value > 0.0)) fail(st.where, "FEDRAT: the feed must be positive", "FEDRAT/" + st.raw_arguments);
+    if (f.value > kMaxCoordinateMm)
+      fail(st.where, fmt::format("FEDRAT: the feed {:.6g} is out of range (expected at most {:g} mm/min)", f.value, kMaxCoordinateMm),
+           "FEDRAT/" + st.raw_arguments);
     return f;
   }
 
@@ -289,6 +292,8 @@ struct AptReader::State {
     c.axis = dir_to_w(nx_circle_axis ? Vec3d(-a.normalized()) : Vec3d(a.normalized()));
     if (v.size() >= 7) {
       c.radius_mm = scale * v[6];
+      if (!(std::abs(c.radius_mm) <= kMaxCoordinateMm))
+        fail(st.where, fmt::format("CIRCLE radius {:.6g} mm is out of range", c.radius_mm), echo_of(text));
       return c;
     }
     if (!have_position)
@@ -405,6 +410,9 @@ struct AptReader::State {
     const Vec3d axis0 = axis;
     const Vec3d axis1 = end_axis.value_or(axis0);
     const std::vector<double> us = linearize(c, options.curve_tolerance_mm);
+    if (us.empty())
+      fail(b.where, fmt::format("NURBS: more than a million chords would be needed within {:g} mm (extreme weights or "
+                                "a damaged curve?)", options.curve_tolerance_mm), "");
     const double u0 = c.u_begin(), u1 = c.u_end();
     const bool rapid = rapid_pending;
     rapid_pending = false;

@@ -135,6 +135,8 @@ TEST_CASE("huge numbers are refused with a short message") {
   const auto e = error_of("GOTO/1e308,0,0\nFINI\n");
   CHECK_THAT(e.first, Catch::Contains("t.cls:1:1") && Catch::Contains("1e+308") && Catch::Contains("out of range"));
   CHECK(e.first.size() < 200);
+  CHECK_THAT(error_of("FEDRAT/1e300,MMPM\nFINI\n").first, Catch::Contains("1e+300") && Catch::Contains("out of range"));
+  CHECK_THAT(error_of("GOTO/1,0,0\nCIRCLE/0,0,0,0,0,1,1e300\nFINI\n").first, Catch::Contains("1e+300"));
 }
 
 TEST_CASE("MSYS: ignore posts GOTOs as written; apply maps them into the absolute frame") {

@@ -108,6 +108,16 @@ TEST_CASE("NURBS: degree from the counts, KNOT/CNTRL on one line, tool axis blen
 }
 
 TEST_CASE("NURBS: bad curves are refused naming the line") {
+  {
+    cl::NurbsCurve big;  // a circle of radius 1e6 mm: 90 degrees need 5,554 chords at 0.01 mm
+    big.degree = 2;
+    big.knots = {0, 0, 0, 1, 1, 1};
+    big.points_mm = {Vec3d(1e6, 0, 0), Vec3d(1e6, 1e6, 0), Vec3d(0, 1e6, 0)};
+    big.weights = {1, std::sqrt(0.5), 1};
+    CHECK(cl::linearize(big, 0.01, 1000).empty());
+    const double needed = 0.5 * M_PI / (2.0 * std::acos(1.0 - 0.01 / 1e6));
+    CHECK(cl::linearize(big, 0.01).size() - 1 >= static_cast<std::size_t>(std::ceil(needed)));
+  }
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,3\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
              Catch::Contains("n.cls:2:1") && Catch::Contains("2 control points for degree 3 (expected at least 4)"));
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/ORDER,2\nKNOT/0,0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),

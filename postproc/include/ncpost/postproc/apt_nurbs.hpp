@@ -31,7 +31,7 @@ struct NurbsCurve {
 
 /// Parameters u_begin = u_0 < u_1 < ... < u_k = u_end such that each chord C(u_i) C(u_i+1)
 /// stays within `tolerance_mm` of the curve between them (checked at interior samples of every
-/// chord; chords are halved until they pass).
-std::vector<double> linearize(const NurbsCurve& curve, double tolerance_mm);
+/// chord; chords are halved until they pass). Empty when that takes more than `max_chords`.
+std::vector<double> linearize(const NurbsCurve& curve, double tolerance_mm, std::size_t max_chords = 1000000);
 
 }  // namespace ncpost::cl
