@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/play_subdivision.hpp"
@@ -11,10 +12,12 @@
 namespace ncpost {
 namespace {
 
-/// A piece of a block's rotary swing this much faster than the block's own pace counts as the
-/// swing of a free angle at a singular start (the tool axis along the inner rotary axis).
-constexpr double kSingularProbeT = 1e-6;    ///< where along the block the start's free angle is read
-constexpr double kSingularJumpRad = 1e-3;   ///< rotary change over that much of the block that is a swing
+/// Where the block starts at (or within a few µrad of) a singular pose, its exact solution swings
+/// the free angle within the first millionths of the block: the solutions at these parameters
+/// are compared with the start's.
+constexpr double kSingularProbeT[] = {1e-6, 1e-5, 1e-4, 1e-3};
+constexpr double kSingularJumpRad = 1e-3;   ///< a rotary change above this ...
+constexpr double kSingularPaceFactor = 10;  ///< ... and this many times the block's own pace is a swing
 constexpr double kTurnAxisDriftRad = 1e-3;  ///< the turn may tilt the tool axis this little (near-singular)
 constexpr int kMaxTurnBlocks = 4096;
 
@@ -38,7 +41,7 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
                                                 const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
                                                 double tolerance_mm) {
   if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
-  const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT);
+  const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT[0]);
   // cheap screen on the nominal closed form (no linear axes): does any rotary solution just after
   // the start lie near the start's angles?
   for (const RotarySolution& r : rotary_solutions(machine, probe.axis)) {
@@ -49,19 +52,31 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
     }
     if (r.free_axis < 0 && jump <= 0.5 * kSingularJumpRad) return {};
   }
-  const IkOutcome o = solver.solve_quiet(probe, from.q, nullptr);
-  if (!o.ok()) return {};
-  const Eigen::Vector2d swing = o.position->rotary_rad - from.q.rotary_rad;
-  if (swing.cwiseAbs().maxCoeff() <= kSingularJumpRad) return {};
+  // the free angle as the exact solution leaves the start: the farthest probe that still swings
+  // far faster than the block's pace (near a singular pose the swing is spread over the first probes)
+  const double pace_rad = (to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff();
+  std::optional<Eigen::Vector2d> swing;
+  for (double t : kSingularProbeT) {
+    const IkOutcome o = solver.solve_quiet(nonlinear::cl_at(from.cl, to.cl, t), from.q, nullptr);
+    if (!o.ok()) break;
+    const Eigen::Vector2d d = o.position->rotary_rad - from.q.rotary_rad;
+    if (d.cwiseAbs().maxCoeff() <= std::max(kSingularJumpRad, kSingularPaceFactor * t * pace_rad)) break;
+    swing = d;
+  }
+  if (!swing) return {};
+  // only the swinging (free) axis turns; the other keeps its angle, so the tool axis stays put
+  int free = 0;
+  if (std::abs((*swing)[1]) > std::abs((*swing)[0])) free = 1;
+  (*swing)[1 - free] = 0.0;
   auto node = [&](double s) {
-    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * swing)};
+    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * *swing)};
   };
   auto tilt_ok = [&](const SolvedPoint& p) {
     return nonlinear::angle_between(solver.execute(p.q).axis, from.cl.axis) <= kTurnAxisDriftRad;
   };
   // the linear axes follow the tip round the turning axis on a circle of radius r: start from the
   // chord count for r, then double until every turn block is within
-  const double swing_rad = swing.cwiseAbs().maxCoeff();
+  const double swing_rad = swing->cwiseAbs().maxCoeff();
   const double ds = std::min(1.0, 0.01 / swing_rad);
   const double radius_mm = (node(ds).q.linear_mm - from.q.linear_mm).norm() / (ds * swing_rad);
   const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance_mm / std::max(radius_mm, tolerance_mm)));

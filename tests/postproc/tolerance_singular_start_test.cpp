@@ -26,9 +26,9 @@ struct Posted {
   std::string program, messages;
 };
 
-Posted post(const std::string& options) {
+Posted post(const std::string& options, const std::string& text = kLeavesVertical) {
   static const std::string dir = ncpost::test::make_temp_dir("ncpost_singular_start");
-  const std::string cl = ncpost::test::write_text_file(dir + "/s.apt", kLeavesVertical);
+  const std::string cl = ncpost::test::write_text_file(dir + "/s.apt", text);
   Posted p;
   p.rc = ncpost::test::run_ncpost("post --machine " + ncpost::test::source("machines/ac-trunnion.toml") +
                                       " --workpiece-origin 0,0,80 --verify " + options + " -o " + dir + "/s.nc " + cl,
@@ -105,4 +105,18 @@ TEST_CASE("a move that cannot be cut within the tolerance names the CL line, num
   CHECK_THAT(p.messages, Catch::Contains("s.apt:5: the move cannot be cut within the tolerance 1e-06 mm"));
   CHECK_THAT(p.messages, Catch::Contains("tolerance 5e-07 mm not reached"));
   CHECK_FALSE(std::regex_search(p.messages, std::regex(R"([0-9]\.[0-9]{8,})")));  // no unrounded numbers
+}
+
+TEST_CASE("--tolerance where the tool leaves a nearly vertical axis (1 µrad, 0.1 mrad off toward +Y)",
+          "[post][tolerance]") {
+  // C at the start follows the tiny tilt toward +Y (C −90°) and must swing to 0° within the first
+  // millionths of the move: turned in place like the exact singular start
+  for (const char* tilt : {"0.000001", "0.0001"}) {
+    INFO(tilt);
+    const Posted p = post("--tolerance 0.005", std::string("UNITS/MM\nMULTAX/ON\nFEDRAT/500\nGOTO/30,0,0,0,") + tilt +
+                                                   ",1\nGOTO/60,0,0,0.5,0,0.8660254\nFINI\n");
+    INFO(p.messages);
+    REQUIRE(p.rc == 0);
+    CHECK(after_mm(p.messages) <= 0.005);
+  }
 }
