@@ -212,7 +212,7 @@ void add_post(CLI::App& app, Action& action) {
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON (identify): compensate the machine's geometric errors");
   sub->add_option("--tolerance", a->tolerance_mm, "Bound the nonlinear error of every block (mm, in W)")->check(finite_in(0.0, kMaxToleranceMm, "mm", Bound::open));
-  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
+  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
   sub->add_option("--dialect", a->dialect, "fanuc (default), haas, linuxcnc, sinumerik, heidenhain")
