@@ -327,7 +327,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
                             : "no significant candidate is identifiable and plausible";
       break;
     }
-    say(fmt::format("added {}: rms {:.3f} -> {:.3f} um (F = {:.4g}, p = {:.3g}, {} candidates)", best->candidate.effect,
+    say(fmt::format("added {}: rms {:.3f} -> {:.3f} µm (F = {:.4g}, p = {:.3g}, {} candidates)", best->candidate.effect,
                     best->rms_before_um, best->rms_after_um, best->f_statistic, best->p_value, tested));
     out.added.push_back(*best);
     model = best_model;

@@ -115,7 +115,7 @@ std::string sensitivity_table(const SensitivityResult& r) {
   }
   // largest |deviation| by kind, over the three chains
   const char* kinds[] = {"dr", "dt", "ar", "at", "ds", "gp", "dl", "drs", "dts", "dzs"};
-  s += "\nlargest |deviation| per kind (chains a / b / c, um):\n";
+  s += "\nlargest |deviation| per kind (chains a / b / c, µm):\n";
   for (int f = 0; f < kPerChain; ++f) {
     s += fmt::format("  {:<4}", kinds[f]);
     for (int c = 0; c < 3; ++c) {

@@ -242,5 +242,6 @@ TEST_CASE("exit 4 is not used for user errors; help texts cite the README, not i
     const std::string help = slurp(f / "help.txt");
     CHECK_THAT(help, !Catch::Contains("formats.md") && !Catch::Contains("cli.md") && !Catch::Contains("spec/"));
     CHECK_THAT(help, !Catch::Contains(" um"));
+    CHECK_THAT(help, !Catch::Contains("seed 00") && !Catch::Contains("issue "));
   }
 }

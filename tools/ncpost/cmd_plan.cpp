@@ -73,7 +73,7 @@ void add_plan(CLI::App& app, Action& action) {
       ->take_all()
       ->check(finite_in(0.0, 2000.0, "mm"));
   sub->add_flag("--seed-directions", a->seed_directions,
-                "bc-head: read the B test along X and Z only, as seed 002 (the B-line tilts are then not seen)");
+                "bc-head: read the B test along X and Z only, as the published BC-head test (the B-line tilts are then not seen)");
   sub->add_option("--axes", a->laser.axes, "laser: axes to measure (default XYZ)");
   sub->add_option("--target-step", a->laser.step_mm, "laser: target spacing (mm, default 50)")
       ->check(finite_in(0.0, 10000.0, "mm", Bound::open));

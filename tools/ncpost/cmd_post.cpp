@@ -253,7 +253,7 @@ void add_post(CLI::App& app, Action& action) {
             return fmt::format("expected a number of mm in (0, {}] or 'none', got '{}'", kMaxToleranceMm, v);
           },
           ""));
-  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (seed 001)")
+  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
   sub->add_option("--dialect", a->dialect, "fanuc (default), haas, linuxcnc, sinumerik, heidenhain")
