@@ -26,7 +26,14 @@
 
 namespace ncpost::gcode {
 
-enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw };
+enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw, cycle };
+
+/// The modal canned cycle (G73, G74, G81-G86, G89): its words as last given, absolute mm.
+struct CycleModal {
+  int code10 = 0;                ///< 810 for G81, ...
+  std::optional<double> bottom_z, r_z, q, p_s;
+  double initial_z = 0.0;        ///< Z when the cycle mode started (the G98 return level)
+};
 enum class FeedMode { per_minute, inverse_time, per_revolution };
 enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 
@@ -42,6 +49,8 @@ struct ModalState {
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   int tool = 0;                      ///< the selected T
   Rtcp rtcp = Rtcp::off;
+  bool retract_to_r = false;         ///< G99 (else G98)
+  CycleModal cycle;                  ///< while motion == cycle
   ProgramPoint position{};           ///< the current position (mm, rad)
   std::array<bool, 6> known{};       ///< the axis has been programmed (or taken as 0)
   bool ended = false;                ///< M2/M30 seen
@@ -63,6 +72,10 @@ struct BlockEffect {
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30
+  /// A canned-cycle block: the cycle of this hole (distances from the motion's end, the hole at
+  /// its R plane, along machine Z), written before the motion; `cycle_off` ends a cycle first.
+  std::optional<cl::Cycle> cycle;
+  bool cycle_off = false;
 
   void clear();
 };
