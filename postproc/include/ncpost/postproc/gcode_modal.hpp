@@ -7,9 +7,9 @@
 //
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
-//   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
+//   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
 //   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
-//   R S T X Y Z. Cutter compensation (G41/G42), canned cycles, G10/G52/G92 offsets, rotation,
+//   R S T X Y Z. Cutter compensation (G41/G42), G87/G88 and cycles under G91 or with L/K repeats, G10/G52/G92 offsets, rotation,
 //   scaling, polar coordinates, threading, probing, subprograms (M97/M98/M99), U V W and E are
 //   "not supported" errors; so are rotary letters the machine lacks.
 //
