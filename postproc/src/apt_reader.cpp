@@ -8,6 +8,7 @@
 #include "ncpost/postproc/apt_line_source.hpp"
 #include "ncpost/postproc/apt_nurbs.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/apt_cycle.hpp"
 
 #include <cctype>
 
@@ -255,26 +256,6 @@ struct AptReader::State {
     return f;
   }
 
-  Cycle cycle(const AptStatement& st) {
-    Cycle c;
-    c.where = st.where;
-    c.text = st.raw_arguments;
-    if (st.arguments.empty() || st.arguments[0].is_number) { c.kind = Cycle::Kind::other; return c; }
-    const std::string& k = st.arguments[0].word;
-    c.kind = k == "OFF" ? Cycle::Kind::off : k == "DRILL" ? Cycle::Kind::drill : k == "DEEP" ? Cycle::Kind::deep
-           : k == "TAP" ? Cycle::Kind::tap : k == "BORE" ? Cycle::Kind::bore : Cycle::Kind::other;
-    if (auto d = number_after(st, "DEPTH")) c.depth_mm = *d * scale;
-    if (auto d = number_after(st, "CLEAR")) c.clearance_mm = *d * scale;
-    if (auto d = number_after(st, "STEP")) c.step_mm = *d * scale;
-    if (auto d = number_after(st, "MMPM")) c.feed = *d;
-    if (auto d = number_after(st, "IPM")) c.feed = *d * kMmPerInch;
-    if (auto d = number_after(st, "DWELL")) c.dwell_s = *d;
-    // NX style: CYCLE/DRILL,depth,MMPM,feed,clearance (positional numbers)
-    const auto v = numbers_of(st);
-    if (c.depth_mm == 0.0 && !v.empty() && c.kind != Cycle::Kind::off) c.depth_mm = v[0] * scale;
-    return c;
-  }
-
   /// CIRCLE/xc,yc,zc,i,j,k,r[,...] (APT, NX, Creo) or CIRCLE/xc,yc,zc,i,j,k (SOLIDWORKS CAM: the
   /// radius is the start point's distance from the axis, and the end point must agree).
   Circle circle(const AptStatement& st, const std::string& text) {
@@ -513,7 +494,7 @@ struct AptReader::State {
       if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
       pending.push_back(c);
     } else if (w == "CYCLE") {
-      pending.push_back(cycle(st));
+      if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) pending.push_back(std::move(*c));
     } else if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
       if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));

@@ -420,7 +420,25 @@ struct GcodeClReader::State {
     if (fx.coolant) before.push_back(*fx.coolant);
     if (fx.cutter_comp) before.push_back(*fx.cutter_comp);
     for (const auto& u : fx.before_motion) before.push_back(u);
-    if (fx.has_motion) {
+    if (fx.cycle_off) {
+      cl::Cycle off;  // kind off
+      off.where = {line_number, block.column};
+      before.push_back(off);
+    }
+    if (fx.has_motion && fx.cycle) {
+      // a canned-cycle hole: its cycle, then the hole at its R plane (the cycle runs along machine Z)
+      const cl::Location where{line_number, block.column};
+      cl::Motion m = motion_at(fx.end, where);
+      ProgramPoint below = fx.end;
+      below[2] -= 1.0;
+      const cl::Motion d = motion_at(below, where);
+      if ((m.point.tip_mm - d.point.tip_mm - m.point.axis).norm() > 1e-6)
+        throw InputError({file, line_number, block.column},
+                         "a canned cycle where machine Z is not the tool axis (a tilted head) is not supported",
+                         std::string(line));
+      before.push_back(*fx.cycle);
+      before.push_back(m);
+    } else if (fx.has_motion) {
       const cl::Location where{line_number, block.column};
       update_wrap(fx, line_number, !fx.arc);
       if (fx.arc && !start_settled) release_held(known_prior);  // an arc starts from the held position

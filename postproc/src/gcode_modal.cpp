@@ -68,10 +68,52 @@ int g_group(int code10, const char*& why) {
     case 680: case 690: case 681: why = "coordinate rotation"; return -1;
     case 500: case 510: why = "scaling"; return -1;
     case 150: case 160: why = "polar coordinates"; return -1;
-    case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 870: case 880: case 890:
-      why = "canned cycles"; return -1;
+    case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 890: return g_motion;
+    case 870: case 880: why = "back boring and manual boring cycles"; return -1;
     default: why = nullptr; return -1;
   }
+}
+
+/// A hole of the modal canned cycle: the cl::Cycle of the hole (distances from its R plane point,
+/// where the motion ends) and the end of the motion at the R plane.
+void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, ProgramPoint& end, BlockEffect& fx) {
+  const CycleModal& c = st.cycle;
+  if (!c.bottom_z || !c.r_z) fail(column, "a canned cycle needs its Z (the bottom) and R (the R plane)");
+  if (!(*c.bottom_z < *c.r_z)) fail(column, "canned cycle: the bottom Z is not below the R plane");
+  using K = cl::Cycle::Kind;
+  cl::Cycle k;
+  k.where = {line, column};
+  k.kind_word = g_name(c.code10);
+  k.text = k.kind_word;
+  switch (c.code10) {
+    case 730: k.kind = K::chip_break; break;
+    case 740: k.kind = K::tap, k.left_hand = true; break;
+    case 810: case 820: k.kind = K::drill; break;
+    case 830: k.kind = K::deep; break;
+    case 840: k.kind = K::tap; break;
+    case 850: case 890: k.kind = K::bore; break;
+    case 860: k.kind = K::bore_drag; break;
+    default: fail(column, fmt::format("{} is not supported", g_name(c.code10)));
+  }
+  k.depth_mm = *c.r_z - *c.bottom_z;
+  k.rapid_to_mm = 0.0;
+  if (!st.retract_to_r && c.initial_z > *c.r_z + 1e-9) k.retract_mm = c.initial_z - *c.r_z;
+  if (k.kind == K::deep || k.kind == K::chip_break) {
+    if (!c.q || !(*c.q > 0.0)) fail(column, fmt::format("{} needs a positive peck depth Q", g_name(c.code10)));
+    k.peck_mm = k.first_peck_mm = *c.q;
+  }
+  if ((c.code10 == 820 || c.code10 == 890) && c.p_s) k.dwell_s = *c.p_s;
+  if (st.feed_mode == FeedMode::inverse_time) fail(column, "canned cycles under inverse-time feed (G93) are not supported");
+  if (!(st.feed > 0.0)) fail(column, "a canned cycle before any feed F");
+  k.feed = st.feed;
+  k.feed_per_rev = st.feed_mode == FeedMode::per_revolution;
+  if (k.kind == K::tap) {
+    if (k.feed_per_rev) k.pitch_mm = st.feed;
+    else if (st.spindle_rpm > 0.0) k.pitch_mm = st.feed / st.spindle_rpm;
+    else fail(column, "a tapping cycle before any spindle speed S: the pitch (F / S) is unknown");
+  }
+  end[2] = *c.r_z;
+  fx.cycle = k;
 }
 
 }  // namespace
@@ -91,6 +133,8 @@ void BlockEffect::clear() {
   inverse_time = false;
   after_motion.clear();
   program_end = false;
+  cycle.reset();
+  cycle_off = false;
 }
 
 /// The words of one block sorted by letter (G and M codes listed apart).
@@ -347,14 +391,41 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (in_group[g_distance]) st.incremental = group[g_distance].code10 == 910;
   if (in_group[g_arc_distance]) st.arc_centre_absolute = group[g_arc_distance].code10 == 901;
+  if (in_group[g_return]) st.retract_to_r = group[g_return].code10 == 990;
+  if (in_group[g_motion] && st.motion == MotionMode::cycle &&
+      group[g_motion].code10 != st.cycle.code10)
+    fx.cycle_off = true;  // G80, another motion or another cycle ends this one
   if (in_group[g_motion]) {
-    switch (group[g_motion].code10) {
+    const int code = group[g_motion].code10;
+    if (code == 730 || code == 740 || (code >= 810 && code <= 890)) {
+      if (st.motion != MotionMode::cycle || st.cycle.code10 != code) {
+        st.cycle = CycleModal{};
+        st.cycle.code10 = code;
+        st.cycle.initial_z = st.position[2];
+      }
+    }
+    switch (code) {
       case 0: st.motion = MotionMode::rapid; break;
       case 10: st.motion = MotionMode::linear; break;
       case 20: st.motion = MotionMode::arc_cw; break;
       case 30: st.motion = MotionMode::arc_ccw; break;
-      default: st.motion = MotionMode::none; break;  // G80
+      case 800: st.motion = MotionMode::none; break;
+      default: st.motion = MotionMode::cycle; break;  // G73 G74 G81-G86 G89
     }
+  }
+  if (st.motion == MotionMode::cycle) {
+    // the cycle's words are modal within it (Z bottom, R plane, Q peck, P dwell)
+    if (st.incremental) fail(group[g_motion].column ? group[g_motion].column : block.column,
+                             "canned cycles under G91 (incremental Z and R) are not supported");
+    if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale;
+    if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale;
+    if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
+    if (w.has('P')) {
+      st.cycle.p_s = w.get('P');
+      notice_once("cycle-P", line_number, w.col('P'), "the dwell P of a canned cycle is read in seconds (RS274NGC)");
+    }
+    if (w.has('L') || w.has('K'))
+      fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
   }
 
   // ---- motion
@@ -375,7 +446,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
                             g_name(c.code10)));
   }
   const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
-  const bool arc_words = w.has('I') || w.has('J') || w.has('K') || w.has('R');
+  const bool arc_words = !(st.motion == MotionMode::cycle) && (w.has('I') || w.has('J') || w.has('K') || w.has('R'));
   if (arc_words && !(is_arc && (in_group[g_motion] || has_axis)) && !home_return) {
     const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
     fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));
@@ -464,8 +535,11 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
              "inverse-time feed (G93): every G1, G2, G3 block needs an F word");
       fx.inverse_time = true;
     }
+    if (st.motion == MotionMode::cycle) cycle_hole(st, line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
     fx.end = end;
     st.position = end;
+    if (st.motion == MotionMode::cycle)
+      st.position[2] = st.retract_to_r ? *st.cycle.r_z : std::max(st.cycle.initial_z, *st.cycle.r_z);
   }
 
   // ---- stops

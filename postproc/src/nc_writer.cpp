@@ -45,6 +45,7 @@ void NcWriter::comment(const std::string& text) {
 }
 
 void NcWriter::block(const std::string& words) {
+  if (active_cycle_ && words != "G80") end_cycle();
   start_line();
   buf_.append(words);
   end_line();
@@ -71,6 +72,14 @@ void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
 void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
 
 bool NcWriter::motion(const NcMotion& m) {
+  if (active_cycle_) {
+    // G80 first if this motion writes a block (a move to where the tool is writes none)
+    bool moves = false;
+    for (std::size_t i = 0; i < letters_.size(); ++i)
+      if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
+    if (!moves) return false;
+    end_cycle();
+  }
   const std::size_t line_start = buf_.size();
   const long number_before = line_number_;
   const auto saved_motion = last_motion_;
@@ -143,6 +152,7 @@ bool NcWriter::motion(const NcMotion& m) {
 }
 
 void NcWriter::arc(const NcArc& a) {
+  end_cycle();
   start_line();
   if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
     buf_.append(std::string_view("G94 "));
@@ -179,41 +189,77 @@ void NcWriter::arc(const NcArc& a) {
   ++blocks_;
 }
 
-bool NcWriter::has_iso_cycles() const {
-  return dialect_.name == "fanuc" || dialect_.name == "haas" || dialect_.name == "linuxcnc";
+bool NcWriter::continues(const NcCycle& c, double return_z_mm) const {
+  if (!active_cycle_) return false;
+  const NcCycle& a = *active_cycle_;
+  if (a.code != c.code || a.retract_to_r != c.retract_to_r || a.words != c.words ||
+      std::abs(a.feed_mm_min - c.feed_mm_min) > 1e-9)
+    return false;
+  if (rounded(2, return_z_mm) != cycle_return_z_) return false;
+  // G99 travels at the R plane: only to a hole with the same R plane
+  return !c.retract_to_r || rounded(2, c.r_plane_mm) == rounded(2, a.r_plane_mm);
+}
+
+void NcWriter::end_cycle() {
+  if (!active_cycle_) return;
+  active_cycle_.reset();
+  block("G80");
+  last_motion_.reset();  // the next motion writes its G0/G1
 }
 
 void NcWriter::cycle(const NcCycle& c) {
-  start_line();
-  if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
-    buf_.append(std::string_view("G94 "));
-    last_feed_mode_ = NcMotion::FeedMode::per_minute;
+  if (!continues(c, c.retract_to_r ? c.r_plane_mm : last_[2].value_or(c.r_plane_mm))) {
+    end_cycle();
+    start_line();
+    if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
+      buf_.append(std::string_view("G94 "));
+      last_feed_mode_ = NcMotion::FeedMode::per_minute;
+    }
+    // the initial level of G98 is where the tool stands now
+    cycle_return_z_ = c.retract_to_r ? rounded(2, c.r_plane_mm) : last_[2].value_or(rounded(2, c.r_plane_mm));
+    fmt::format_to(std::back_inserter(buf_), "{} {}", c.retract_to_r ? "G99" : "G98", c.code);
+    for (std::size_t i = 0; i < 3; ++i) {
+      buf_.push_back(' ');
+      buf_.push_back(letters_[i]);
+      append_fixed(buf_, rounded(static_cast<int>(i), c.bottom_mm[i]), dialect_.linear_decimals);
+    }
+    buf_.append(std::string_view(" R"));
+    append_fixed(buf_, rounded(2, c.r_plane_mm), dialect_.linear_decimals);
+    buf_.append(c.words);
+    buf_.append(std::string_view(" F"));
+    append_fixed(buf_, c.feed_mm_min, 1);
+    last_feed_ = c.feed_mm_min;
+    active_cycle_ = c;
+  } else {
+    // the next hole of the modal cycle: the words that change (X at least, so the block drills)
+    start_line();
+    const NcCycle& a = *active_cycle_;
+    bool any = false;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double v = rounded(static_cast<int>(i), c.bottom_mm[i]);
+      const double before = i < 2 ? *last_[i] : rounded(2, a.bottom_mm[2]);
+      if (v == before && !(i == 1 && !any)) continue;
+      if (any) buf_.push_back(' ');
+      buf_.push_back(letters_[i]);
+      append_fixed(buf_, v, dialect_.linear_decimals);
+      any = true;
+    }
+    if (rounded(2, c.r_plane_mm) != rounded(2, a.r_plane_mm)) {
+      buf_.append(std::string_view(" R"));
+      append_fixed(buf_, rounded(2, c.r_plane_mm), dialect_.linear_decimals);
+    }
+    active_cycle_ = c;
   }
-  buf_.append(std::string_view(c.peck ? "G98 G83" : "G98 G81"));
-  for (std::size_t i = 0; i < 3; ++i) {
-    buf_.push_back(' ');
-    buf_.push_back(letters_[i]);
-    append_fixed(buf_, rounded(static_cast<int>(i), c.bottom_mm[i]), dialect_.linear_decimals);
-  }
-  buf_.append(std::string_view(" R"));
-  append_fixed(buf_, rounded(2, c.r_plane_mm), dialect_.linear_decimals);
-  if (c.peck) {
-    buf_.append(std::string_view(" Q"));
-    append_fixed(buf_, c.peck_mm, dialect_.linear_decimals);
-  }
-  buf_.append(std::string_view(" F"));
-  append_fixed(buf_, c.feed_mm_min, 1);
-  last_feed_ = c.feed_mm_min;
   end_line();
   ++blocks_;
-  block("G80");
-  last_motion_.reset();  // the next motion writes its G0/G1
+  last_motion_.reset();
   last_[0] = rounded(0, c.bottom_mm[0]);
   last_[1] = rounded(1, c.bottom_mm[1]);
-  last_[2] = rounded(2, c.r_plane_mm);  // G98 returns to the initial level: the caller positioned there
+  last_[2] = cycle_return_z_;
 }
 
 void NcWriter::end_program() {
+  end_cycle();
   if (dialect_.klartext) {
     block(dialect_.program_end);
     block(fmt::format("END PGM {} MM", program_name_));

@@ -6,6 +6,8 @@
 
 #include "lookahead.hpp"
 #include "ncpost/postproc/unreachable.hpp"
+#include "ncpost/postproc/cycle_words.hpp"
+#include "post_cycle.hpp"
 #include "record_blocks.hpp"
 
 namespace ncpost {
@@ -56,6 +58,7 @@ class Poster {
     ++summary_.motions_in;
     if (options_.progress && summary_.motions_in % 4096 == 0) options_.progress(summary_.motions_in);
     const bool rapid = m.rapid || m.from;
+    check_comp(m);
     if (pending_circle_) {
       const cl::Circle c = *pending_circle_;
       pending_circle_.reset();
@@ -94,9 +97,10 @@ class Poster {
   }
 
   void on(const cl::Circle& c) { pending_circle_ = c; }
-  void on(const cl::Cycle& c) { cycle_ = c; }
-  // Not yet acted on: passed through as a comment, as before this record had its own type.
-  void on(const cl::CutterComp& c) { records_.comment(cl::Comment{c.where, "CUTCOM/" + c.text}); }
+  void on(const cl::Cycle& c) {
+    cycle_ = c;
+    if (c.kind == cl::Cycle::Kind::off) writer_.end_cycle();
+  }
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}
@@ -333,50 +337,125 @@ class Poster {
     return true;
   }
 
-  /// One hole as G81/G83 from the clearance point `top` (where the tool stands) down to `bottom`.
-  bool native_cycle(const ClPoint& top, const ClPoint& bottom) {
-    if (!options_.native_cycles || !writer_.has_iso_cycles()) return false;
-    if (cycle_.kind != cl::Cycle::Kind::drill && cycle_.kind != cl::Cycle::Kind::deep) return false;
-    const Vec3d xt = options_.rtcp ? top.tip_mm : previous_.q.linear_mm;
-    const Vec3d xb = options_.rtcp ? bottom.tip_mm : solver_.with_rotary(bottom, previous_.q.rotary_rad).linear_mm;
-    // the hole must run straight down −Z of the program frame
-    if (std::abs(xt.x() - xb.x()) > 1e-7 || std::abs(xt.y() - xb.y()) > 1e-7 || xb.z() >= xt.z()) return false;
-    NcCycle c;
-    c.peck = cycle_.kind == cl::Cycle::Kind::deep && cycle_.step_mm > 0.0;
-    c.bottom_mm = {xb.x(), xb.y(), xb.z()};
-    c.r_plane_mm = xt.z();
-    c.peck_mm = cycle_.step_mm;
-    c.feed_mm_min = cycle_.feed > 0.0 ? cycle_.feed : records_.feed_mm_min(options_.default_feed_mm_min);
-    writer_.cycle(c);
-    ++summary_.cycles_out;
-    return true;  // the tool is back at `top` (G98, initial level), previous_ unchanged
-  }
-
+  /// One hole of the active cycle: native (cycle_words.hpp) where the hole runs down −Z of the
+  /// program frame, else explicit moves along the tool axis (post_cycle.hpp).
   void drill(const cl::Motion& m) {
-    // Canned cycles expanded into explicit moves along the tool axis (valid at any orientation):
-    // rapid to the clearance point, feed to depth (in pecks for DEEP), rapid back.
-    const Vec3d u = m.point.axis;
-    const ClPoint top{m.point.tip_mm + cycle_.clearance_mm * u, u};
-    const ClPoint bottom{m.point.tip_mm - cycle_.depth_mm * u, u};
-    const RecordBlocks::Saved saved = records_.save();
-    move_to(top, m.where.line, true);
-    if (native_cycle(top, bottom)) return;
-    if (cycle_.feed > 0.0) {
-      records_.set_feed(cycle_.feed);
+    const detail::HolePlanes p = detail::hole_planes(cycle_, m.point);
+    const double rpm = records_.spindle_rpm();
+    const SourcePosition at{input_, m.where.line, m.where.column};
+    double feed = records_.feed_mm_min(options_.default_feed_mm_min);
+    if (cycle_.feed && cycle_.feed_per_rev && !(rpm > 0.0))
+      throw InputError(at, "a cycle feed per revolution before any spindle speed (give SPINDL/rpm before the cycle)");
+    if (cycle_.feed) feed = cycle_.feed_per_rev ? *cycle_.feed * rpm : *cycle_.feed;
+    if (cycle_.kind == cl::Cycle::Kind::tap) {
+      if (!(rpm > 0.0))
+        throw InputError(at, "a tapped hole before any spindle speed: the tapping feed (pitch x rpm) is unknown "
+                             "(give SPINDL/rpm before the cycle)");
+      feed = cycle_.pitch_mm * rpm;
     }
-    if (cycle_.kind == cl::Cycle::Kind::deep && cycle_.step_mm > 0.0) {
-      double reached = 0.0;
-      const double total = cycle_.depth_mm + cycle_.clearance_mm;
-      while (reached + cycle_.step_mm < total) {
-        reached += cycle_.step_mm;
-        move_to({top.tip_mm - reached * u, u}, m.where.line, false);
-        move_to(top, m.where.line, true);
-        move_to({top.tip_mm - (reached - std::min(reached, 0.5)) * u, u}, m.where.line, true);
+    if (native_hole(p, feed, m.where.line)) return;
+    const RecordBlocks::Saved saved = records_.save();
+    move_to(p.retract, m.where.line, true);
+    for (const detail::HoleStep& s : detail::expand_hole(cycle_, p, feed, records_.spindle_ccw())) {
+      if (s.kind == detail::HoleStep::Kind::rapid || s.kind == detail::HoleStep::Kind::feed) {
+        records_.set_feed(s.feed_mm_min > 0.0 ? s.feed_mm_min : feed);
+        move_to(s.to, m.where.line, s.kind == detail::HoleStep::Kind::rapid);
+      } else if (s.kind == detail::HoleStep::Kind::dwell) {
+        for (const std::string& b : dwell_blocks(writer_.dialect(), s.dwell_s)) writer_.block(b);
+      } else {
+        writer_.block(s.words);
       }
     }
-    move_to(bottom, m.where.line, false);
-    move_to(top, m.where.line, true);
     records_.restore(saved);
+  }
+
+  bool native_hole(const detail::HolePlanes& p, double feed, int line) {
+    const auto words = cycle_words(writer_.dialect());
+    if (!options_.native_cycles || !words) return false;
+    const IkOutcome ik = solver_.solve(p.retract, previous_.q);
+    if (!ik.ok()) return false;  // the expansion names the failure
+    const Eigen::Vector2d rotary = ik.position->rotary_rad;
+    auto frame = [&](const ClPoint& c) {
+      return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary).linear_mm;
+    };
+    const Vec3d xt = frame(p.retract), xr = frame(p.r_plane), xb = frame(p.bottom);
+    auto on_axis = [&](const Vec3d& a) { return std::abs(a.x() - xb.x()) < 1e-7 && std::abs(a.y() - xb.y()) < 1e-7; };
+    if (!on_axis(xt) || !on_axis(xr) || !(xb.z() < xr.z()) || xt.z() < xr.z() - 1e-9) return false;
+    std::string note;
+    const auto nc = detail::native_hole(cycle_, *words, xr, xb, p.retract_to_r, feed, writer_.dialect().linear_decimals, note);
+    if (!nc) return false;
+    if (!note.empty() && noticed_cycle_line_ != cycle_.where.line) {
+      notice(cycle_.where, note);
+      noticed_cycle_line_ = cycle_.where.line;
+    }
+    const SolvedPoint at_retract{p.retract, *ik.position};
+    const bool same_rotary = !have_position_ || (rotary - previous_.q.rotary_rad).cwiseAbs().maxCoeff() < 1e-12;
+    if (have_position_ && same_rotary && writer_.continues(*nc, p.retract_to_r ? xr.z() : xt.z())) {
+      // the modal cycle travels there itself: the tool stands at the return level over the hole
+      AxisPosition executed = at_retract.q;
+      for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
+      solver_.advance(executed);
+      last_executed_ = executed;
+      previous_ = at_retract;
+      if (last_values_)
+        for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xt[k]);
+    } else {
+      writer_.end_cycle();
+      move_to(p.retract, line, true);
+    }
+    writer_.cycle(*nc);
+    ++summary_.cycles_out;
+    if (options_.verify && !options_.rtcp) {
+      // the feed of the cycle block re-executed: R plane to the bottom (and back for taps and bores)
+      auto executed = [&](const ClPoint& c) {
+        AxisPosition q = solver_.with_rotary(c, rotary);
+        for (int i = 0; i < 3; ++i) q.linear_mm[i] = writer_.rounded(i, q.linear_mm[i]);
+        return q;
+      };
+      const double e = verify_block(solver_, p.r_plane, executed(p.r_plane), p.bottom, executed(p.bottom), line,
+                                    summary_.verify);
+      if (options_.on_verified) options_.on_verified(line, e);
+    }
+    return true;
+  }
+
+  /// CUTCOM/LEFT|RIGHT|OFF as G41/G42 D<n> / G40 (cycle_words.hpp `comp_words`).
+  void on(const cl::CutterComp& c) {
+    const SourcePosition at{input_, c.where.line, c.where.column};
+    const auto words = comp_words(writer_.dialect());
+    if (!words)
+      throw InputError(at, fmt::format("CUTCOM: ncpost writes no radius compensation in the {} dialect; post with "
+                                       "fanuc, haas, linuxcnc or sinumerik, or post the path without CUTCOM",
+                                       writer_.dialect().name), "CUTCOM/" + c.text);
+    comp_ = c;
+    if (c.side == cl::CutterComp::Side::off) {
+      writer_.block(words->off);
+      return;
+    }
+    const int reg = c.offset_register.value_or(tool_);
+    writer_.block((c.side == cl::CutterComp::Side::left ? words->left : words->right) +
+                  (words->register_letter.empty() ? std::string() : " " + words->register_letter + std::to_string(reg)));
+  }
+
+  /// With G41/G42 active the motion must keep the tool axis and have it along Z of the program
+  /// frame (the control compensates in the XY plane): else the post stops.
+  void check_comp(const cl::Motion& m) {
+    if (!comp_ || comp_->side == cl::CutterComp::Side::off || !have_position_) return;
+    const std::string side = comp_->side == cl::CutterComp::Side::left ? "LEFT" : "RIGHT";
+    const SourcePosition at{input_, m.where.line, m.where.column};
+    if (m.point.axis.cross(previous_.cl.axis).norm() > 1e-9)
+      throw InputError(at, fmt::format("CUTCOM/{} (line {}) is active in a simultaneous five-axis move (the tool axis "
+                                       "turns): G41/G42 compensate in a plane normal to a fixed tool axis; post the "
+                                       "path without CUTCOM (the CL data are then the tool centre path)",
+                                       side, comp_->where.line));
+    const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad).linear_mm;
+    const Vec3d up = options_.rtcp ? Vec3d(previous_.cl.tip_mm + previous_.cl.axis)
+                                   : solver_.with_rotary(ClPoint{previous_.cl.tip_mm + previous_.cl.axis, previous_.cl.axis},
+                                                         previous_.q.rotary_rad).linear_mm;
+    if ((up - tip - Vec3d::UnitZ()).norm() > 1e-6)
+      throw InputError(at, fmt::format("CUTCOM/{} (line {}): the tool axis is not along Z of the program frame here, "
+                                       "and G41/G42 compensate in the XY plane; post the path without CUTCOM",
+                                       side, comp_->where.line));
   }
 
   const std::string& input_;
@@ -396,6 +475,8 @@ class Poster {
   bool default_feed_noticed_ = false;
   std::optional<cl::Circle> pending_circle_;
   cl::Cycle cycle_;
+  std::optional<cl::CutterComp> comp_;  ///< the last CUTCOM
+  int noticed_cycle_line_ = 0;          ///< the cycle record whose native form was noticed
 };
 
 }  // namespace

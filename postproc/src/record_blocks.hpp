@@ -33,6 +33,7 @@ class RecordBlocks {
       return;
     }
     if (s.rpm > 0.0) spindle_rpm_ = s.rpm;
+    spindle_ccw_ = s.direction == cl::Spindle::Direction::ccw;
     writer_.block(fmt::format("S{:.0f} {}", spindle_rpm_, s.direction == cl::Spindle::Direction::ccw ? "M4" : "M3"));
   }
 
@@ -43,6 +44,8 @@ class RecordBlocks {
   void unsupported(const cl::Unsupported& u) { writer_.comment(u.text); }
 
   bool feed_given() const { return given_; }
+  double spindle_rpm() const { return spindle_rpm_; }  ///< 0 before any speed
+  bool spindle_ccw() const { return spindle_ccw_; }
   /// The feed in force (mm/min), or `fallback` before any FEDRAT.
   double feed_mm_min(double fallback) const { return given_ ? feed_mm_min_ : fallback; }
 
@@ -66,6 +69,7 @@ class RecordBlocks {
   double feed_mm_min_ = 0.0;
   bool given_ = false;
   double spindle_rpm_ = 0.0;
+  bool spindle_ccw_ = false;
 };
 
 }  // namespace ncpost::detail

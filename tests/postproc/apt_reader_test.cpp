@@ -106,9 +106,10 @@ TEST_CASE("Creo: CIRCLE over two lines, $$-> comments, CYCLE/DEEP, FINI") {
   REQUIRE(cy.size() == 2);
   CHECK(cy[0].kind == cl::Cycle::Kind::deep);
   CHECK(cy[0].depth_mm == 3.5);
-  CHECK(cy[0].step_mm == 1.0);
-  CHECK(cy[0].clearance_mm == 1.0);
-  CHECK(cy[0].feed == 50.0);
+  CHECK(cy[0].peck_mm == 1.0);
+  CHECK(cy[0].rapid_to_mm == 1.0);
+  REQUIRE(cy[0].feed);
+  CHECK(*cy[0].feed == 50.0);
   CHECK(cy[1].kind == cl::Cycle::Kind::off);
   CHECK(only<cl::Comment>(rs).size() == 1);
   REQUIRE(only<cl::End>(rs).size() == 1);

@@ -365,7 +365,7 @@ TEST_CASE("gcode reader: semantic errors with their positions") {
   check("G0 X1 X2\n", 1, 7, "twice");
   check("G0 G1 X2\n", 1, 4, "same modal group");
   check("X5\n", 1, 1, "without a motion mode");
-  check("G0 X1\nG81 X1 Y1 Z-5 R1\n", 2, 1, "canned cycles");
+  check("G0 X1\nG81 X1 Y1 Z-5 R1\n", 2, 11, "canned cycle before any feed F");  // cycles are read (post_cycle_test)
   check("G1 X1e5 F1\n", 1, 6, "E words");
   check("G0 U1\n", 1, 4, "U axis");
   check("M98 P100\n", 1, 1, "subprograms");

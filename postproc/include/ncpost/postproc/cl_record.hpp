@@ -66,16 +66,34 @@ struct Circle {
   double radius_mm = 0.0;
 };
 
-/// CYCLE/DRILL|DEEP|... (OFF ends it); the GOTOs that follow are the holes.
+/// CYCLE/DRILL|DEEP|TAP|BORE|... (OFF ends it); the GOTOs that follow are the holes. Every
+/// distance is along the tool axis from each hole's GOTO point (the hole top): the R plane
+/// `rapid_to_mm` above it, the bottom `depth_mm` below it, the retract plane `retract_mm` above it.
+/// Read from NX/CATIA APT (RAPTO, FEDTO, RTRCTO, STEP), Creo (DEPTH, CLEAR, TPI) and SOLIDWORKS CAM
+/// (FEDTO, RAPTO, RTRCTO, 1STPECK, SUBPECK, INCR) by apt_cycle.cpp, or from G73–G89 G-code input.
 struct Cycle {
   Location where;
-  enum class Kind { off, drill, deep, tap, bore, other } kind = Kind::off;
-  double depth_mm = 0.0;       ///< drilling depth below the GOTO point, along the tool axis
-  double clearance_mm = 0.0;   ///< retract plane distance above the GOTO point
-  double step_mm = 0.0;        ///< peck depth (DEEP)
-  double feed = 0.0;           ///< mm/min (0: keep the current feed)
-  double dwell_s = 0.0;
-  std::string text;            ///< the record as written
+  enum class Kind {
+    off,
+    drill,        ///< feed to depth (dwell_s > 0: dwell there), rapid out: G81 / G82
+    deep,         ///< peck drilling, full retract after each peck: G83
+    chip_break,   ///< peck drilling, short retract after each peck: G73
+    tap,          ///< rigid/floating tap: feed in, reverse the spindle, feed out: G84 (G74 left hand)
+    bore,         ///< feed in, feed out (also REAM): G85 (dwell_s > 0: G89)
+    bore_drag,    ///< feed in, spindle stop, rapid out: G86
+  } kind = Kind::off;
+  std::string kind_word;             ///< the cycle's words as written (DEEP2, DRILL DEEP, ...)
+  double depth_mm = 0.0;             ///< the bottom below the GOTO point
+  double rapid_to_mm = 0.0;          ///< the R plane above the GOTO point (feed starts there)
+  std::optional<double> retract_mm;  ///< the plane above the GOTO point the tool returns to (none: the R plane)
+  double first_peck_mm = 0.0;        ///< first peck (0: `peck_mm`)
+  double peck_mm = 0.0;              ///< (subsequent) peck depth; 0 for kinds without pecks
+  std::optional<double> feed;        ///< the cycle's own feed (mm/min, or mm/rev when feed_per_rev); none: the feed in force
+  bool feed_per_rev = false;
+  double dwell_s = 0.0;              ///< dwell at the bottom
+  double pitch_mm = 0.0;             ///< thread pitch (tap): PITCH, or 25.4 / TPI
+  bool left_hand = false;            ///< left-hand tap (spindle counter-clockwise in)
+  std::string text;                  ///< the record as written
 };
 
 /// CUTCOM/LEFT|RIGHT|OFF (APT) or G41/G42/G40 (G-code): cutter radius compensation in the

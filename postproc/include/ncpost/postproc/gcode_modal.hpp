@@ -7,12 +7,12 @@
 //
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
-//   G61 G61.1 G64 G80 G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
+//   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
 //   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
 //   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
 //   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
-//   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), canned
-//   cycles, G10/G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
+//   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and
+//   cycles under G91 or with L/K repeats, G10/G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
 //   subprograms (M97/M98/M99), U V W and E are "not supported" errors; so are rotary letters the
 //   machine lacks.
 //
@@ -29,7 +29,14 @@
 
 namespace ncpost::gcode {
 
-enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw };
+enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw, cycle };
+
+/// The modal canned cycle (G73, G74, G81-G86, G89): its words as last given, absolute mm.
+struct CycleModal {
+  int code10 = 0;                ///< 810 for G81, ...
+  std::optional<double> bottom_z, r_z, q, p_s;
+  double initial_z = 0.0;        ///< Z when the cycle mode started (the G98 return level)
+};
 enum class FeedMode { per_minute, inverse_time, per_revolution };
 enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 
@@ -48,6 +55,8 @@ struct ModalState {
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   int tool = 0;                      ///< the selected T
   Rtcp rtcp = Rtcp::off;
+  bool retract_to_r = false;         ///< G99 (else G98)
+  CycleModal cycle;                  ///< while motion == cycle
   ProgramPoint position{};           ///< the current position (mm, rad)
   std::array<bool, 6> known{};       ///< the axis has been programmed (else its position is 0, assumed)
   bool ended = false;                ///< M2/M30 seen
@@ -71,6 +80,10 @@ struct BlockEffect {
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30
+  /// A canned-cycle block: the cycle of this hole (distances from the motion's end, the hole at
+  /// its R plane, along machine Z), written before the motion; `cycle_off` ends a cycle first.
+  std::optional<cl::Cycle> cycle;
+  bool cycle_off = false;
 
   void clear();
 };

@@ -32,13 +32,16 @@ struct NcArc {
   double feed_mm_min = 0.0;
 };
 
-/// A drilling cycle at one hole along +Z of the program frame: G81 (drill) or G83 (peck, Q),
-/// returning to the initial level (G98), cancelled by G80 after the hole. Output units (mm).
+/// One hole of a canned cycle along −Z of the program frame, output units (mm): `code` (G81,
+/// G83, ...: cycle_words.hpp) with G98 (back to the initial level, where the tool stands when the
+/// cycle starts) or G99 (back to the R plane). Holes that follow with the same code, words and
+/// return level continue the modal cycle (X Y only); anything else is written after G80.
 struct NcCycle {
-  bool peck = false;
+  std::string code;
+  bool retract_to_r = false;          ///< G99, else G98
   std::array<double, 3> bottom_mm{};  ///< X Y of the hole, Z of its bottom
-  double r_plane_mm = 0.0;            ///< Z of the R plane (the clearance point)
-  double peck_mm = 0.0;               ///< Q of G83
+  double r_plane_mm = 0.0;            ///< Z of the R plane
+  std::string words;                  ///< further words as written (" Q2.0000", " P500"), leading blank each
   double feed_mm_min = 0.0;
 };
 
@@ -55,15 +58,19 @@ class NcWriter {
   bool motion(const NcMotion& m);
   /// Writes a circular block; the rotary words stay as they are.
   void arc(const NcArc& a);
-  /// Writes one canned-cycle hole and its G80; the tool ends at the initial level (unchanged X Y Z
-  /// words are then those of the position before the cycle, X Y of the hole).
+  /// Writes one canned-cycle hole, continuing the modal cycle when `continues(c)`; the tool ends at
+  /// X Y of the hole, Z of the initial level (G98) or of the R plane (G99).
   void cycle(const NcCycle& c);
-  /// True if the dialect has the ISO drilling cycles G81/G83.
-  bool has_iso_cycles() const;
   /// Blocks of the dialect's tool words (Dialect::tool_call, ...) for `tool`.
   void tool_blocks(const std::vector<std::string>& blocks, int tool);
   /// RTCP/TCPM on with the length of `tool`, or off.
   void rtcp(bool on, int tool);
+  /// True if the hole continues the active modal cycle: same code, words, feed and return level,
+  /// the tool at the return level (`return_z_mm`: the initial level for G98, the R plane for G99).
+  bool continues(const NcCycle& c, double return_z_mm) const;
+  /// G80 if a cycle is active (every other block ends it by itself).
+  void end_cycle();
+  bool cycle_active() const { return active_cycle_.has_value(); }
   void end_program();
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).
   void flush();
@@ -89,6 +96,8 @@ class NcWriter {
   std::size_t blocks_ = 0;
   long line_number_ = 0;
   std::string program_name_;
+  std::optional<NcCycle> active_cycle_;
+  double cycle_return_z_ = 0.0;  ///< the level the active cycle returns to (rounded)
 };
 
 }  // namespace ncpost
