@@ -173,6 +173,48 @@ struct GcodeClReader::State {
         file, words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
   }
 
+  // ---- arcs that the post can write as arcs (G2/G3 of its dialect): a single planar turn
+  // (no helix, no P turns), the rotary axes still, not under G93: a cl::Circle (centre and axis in
+  // W, counter-clockwise about the axis) before the end motion, as a CL file gives it. Others are
+  // expanded into points (chord error <= arc_chord_tolerance_mm). The points between are still
+  // checked against the axis limits.
+  Vec3d tip_in_W(const ProgramPoint& p, bool rtcp) const {
+    if (rtcp) return Vec3d(p[0], p[1], p[2]);
+    AxisPosition q;
+    q.linear_mm = Vec3d(p[0], p[1], p[2]);
+    for (int k = 0; k < machine.rotary_count(); ++k)
+      q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
+    return Vec3d(nominal_table_T_tool(q).t - setup.workpiece_origin_mm);
+  }
+
+  std::optional<cl::Circle> as_circle(const ArcMove& a, cl::Location where, long segments) {
+    if (!options.circles || effect.inverse_time || std::abs(a.sweep_rad) > 2.0 * kPi + 1e-9) return std::nullopt;
+    const auto normal = static_cast<std::size_t>(a.axes.normal);
+    if (std::abs(a.end[normal] - a.start[normal]) > 1e-9) return std::nullopt;  // a helix
+    for (std::size_t i = 3; i < 6; ++i)
+      if (a.end[i] != a.start[i]) return std::nullopt;
+    if (std::abs(a.radius_start_mm - a.radius_end_mm) > 5e-4 || a.radius_start_mm < 1e-3) return std::nullopt;
+    const bool rtcp = rtcp_now();
+    if (options.check_limits)
+      for (long i = 1; i < segments; ++i) {
+        cl::Motion scratch;
+        scratch.where = where;
+        locate(scratch, unwrapped(a.at(static_cast<double>(i) / static_cast<double>(segments))), rtcp);
+      }
+    ProgramPoint centre = unwrapped(a.start);
+    centre[static_cast<std::size_t>(a.axes.a1)] = a.centre1_mm;
+    centre[static_cast<std::size_t>(a.axes.a2)] = a.centre2_mm;
+    ProgramPoint above = centre;
+    above[normal] += 1.0;
+    cl::Circle c;
+    c.where = where;
+    c.center_mm = tip_in_W(centre, rtcp);
+    const Vec3d up = tip_in_W(above, rtcp) - c.center_mm;
+    c.axis = (a.sweep_rad > 0.0 ? 1.0 : -1.0) * up.normalized();
+    c.radius_mm = a.radius_start_mm;
+    return c;
+  }
+
   // ---- G93 (inverse time): the source gives each block's time (1/F minutes). The post times a
   // block by max(tip path mm, rotary travel deg) / feed, so each G93 motion is preceded by the
   // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
@@ -449,11 +491,18 @@ struct GcodeClReader::State {
                            fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
                                        kMaxArcSegments, options.arc_chord_tolerance_mm),
                            std::string(line));
-        arc = fx.arc;
-        arc_segments_total = n;
-        arc_segment = 0;
-        arc_where = where;
-        if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
+        if (auto circle = as_circle(*fx.arc, where, n)) {
+          before.push_back(*circle);
+          cl::Motion m = motion_at(unwrapped(fx.arc->end), where);
+          source_time_feed(m);  // not G93 (as_circle): follows the position
+          before.push_back(std::move(m));
+        } else {
+          arc = fx.arc;
+          arc_segments_total = n;
+          arc_segment = 0;
+          arc_where = where;
+          if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
+        }
       } else if (!start_settled && fx.motion == MotionMode::rapid && held.size() < kMaxHeld) {
         for (const auto& u : fx.after_motion) after.push_back(u);
         hold_block(fx, where);

@@ -332,3 +332,30 @@ TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice,
   CHECK_FALSE(any_contains(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").notices,
                            "looks like inches"));
 }
+
+TEST_CASE("gcode control: with `circles`, a planar single-turn arc is a Circle and its end motion") {
+  GcodeReaderOptions o;
+  o.circles = true;
+  o.kind = InputKind::rtcp;
+  Setup s;
+  s.workpiece_origin_mm = Vec3d(0, 0, 80);
+  const Read r = read_all("G21 G90 G17\nG0 X0 Y0 Z10 A0 C0\nG1 Z0 F100\nG2 I-45\nG3 X20 Y20 I10 J10\n"
+                          "G3 X0 Y0 Z-1 I-10 J-10\nM30\n",
+                          o, s);
+  const auto circles = only<cl::Circle>(r.records);
+  REQUIRE(circles.size() == 2);  // the helix (Z changes) is expanded into points
+  CHECK(circles[0].where.line == 4);
+  CHECK((circles[0].center_mm - Vec3d(-45, 0, 0)).norm() < 1e-12);
+  CHECK((circles[0].axis - Vec3d(0, 0, -1)).norm() < 1e-12);  // G2: counter-clockwise about -Z
+  CHECK(circles[0].radius_mm == Approx(45.0));
+  CHECK((circles[1].center_mm - Vec3d(10, 10, 0)).norm() < 1e-12);
+  CHECK((circles[1].axis - Vec3d(0, 0, 1)).norm() < 1e-12);
+  CHECK(circles[1].radius_mm == Approx(std::sqrt(200.0)));
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() > 6);
+  CHECK(ms[2].where.line == 4);  // the full circle's end motion, back at the start
+  CHECK(ms[2].point.tip_mm.norm() < 1e-12);
+  CHECK((ms[3].point.tip_mm - Vec3d(20, 20, 0)).norm() < 1e-12);
+  // without the option (the default) every arc is points
+  CHECK(only<cl::Circle>(read_all("G0 X0 Y0 Z10 A0 C0\nG1 Z0 F100\nG2 I-45\nM30\n").records).empty());
+}

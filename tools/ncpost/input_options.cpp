@@ -82,6 +82,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
   if (kind == "cl") return std::make_unique<cl::AptReader>(in, name, ro);
   gcode::GcodeReaderOptions go;
   go.default_inch = ro.default_inch;
+  go.circles = true;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.kind = o.input_kind == "machine" ? gcode::InputKind::machine
           : o.input_kind == "rtcp"    ? gcode::InputKind::rtcp
                                       : gcode::InputKind::automatic;

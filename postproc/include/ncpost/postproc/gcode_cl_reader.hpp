@@ -65,6 +65,9 @@ struct GcodeReaderOptions {
   /// the tip there at the programmed angles) must lie within the machine's axis limits, else
   /// Infeasible (exit 3) naming the line, the axis and the limit. Off only to study a reading.
   bool check_limits = true;
+  /// Single-turn planar arcs with the rotary axes still (not under G93) become a cl::Circle and
+  /// their end motion, which the post writes as G2/G3; otherwise every arc is expanded into points.
+  bool circles = false;
 
   /// Empty when valid, else what is wrong.
   std::string validate() const;
