@@ -5,6 +5,8 @@
 // same reversal (dead band followed block by block), stays within 2 µm of the CL path.
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -64,8 +66,7 @@ struct Cut {
 
 /// Posts `cl` compensated for `model` with `--tolerance`, executed on `truth`.
 Cut post_on_truth(const Machine& m, const comp::MachineModel& model, const comp::MachineModel& truth,
-                  const std::string& cl, double tolerance_mm) {
-  const Setup setup = dome_setup();
+                  const std::string& cl, double tolerance_mm, const Setup& setup = dome_setup()) {
   std::istringstream in(cl);
   cl::AptReader reader(in, "dome.cls");
   const ActualSolver actual(model, setup);
@@ -80,7 +81,9 @@ Cut post_on_truth(const Machine& m, const comp::MachineModel& model, const comp:
   options.subdivide = make_tolerance_subdivider(m, setup, actual, &actual, comp, dialect, "dome.cls");
   Cut c;
   AtomicFile out("reversal_play_test.nc");
-  NcWriter writer(out, dialect, "XYZAC");
+  std::string letters;
+  for (const auto& axis : m.axes) letters += axis.letter;
+  NcWriter writer(out, dialect, letters);
   try {
     c.summary = post_program(reader, "dome.cls", on_truth, writer, options);
     c.ok = true;
@@ -137,7 +140,7 @@ TEST_CASE("compensated IK at the kink of the play: tiny moves either way, standi
   }
 }
 
-TEST_CASE("post --model --tolerance 0.002 with reversal of A or C cuts within 2 um on the true machine", "[reversal]") {
+TEST_CASE("post --model --tolerance 0.002 with reversal of A or C cuts within 2 µm on the true machine", "[reversal]") {
   const Machine m = load_machine(kDir + "machine.toml");
   struct Path {
     const char* name;
@@ -165,4 +168,29 @@ TEST_CASE("post --model --tolerance 0.002 with reversal of A or C cuts within 2 
       }
     }
   }
+}
+
+TEST_CASE("three-axis VMC with reversal of X, Y, Z: a dome posted with --tolerance 0.002 cuts within 2 µm", "[reversal]") {
+  // the laser-identified model of samples/measurements/vmcl600 and its truth (21 errors, plays of
+  // 3 to 5 µm); a hemisphere of radius 120 mm in rings every 10 deg, points every 10 deg
+  const std::string dir = test::source("samples/measurements/vmcl600/");
+  const Machine m = load_machine(test::source("machines/vmcl600.toml"));
+  Setup setup;
+  setup.workpiece_origin_mm = Vec3d(0, 0, -450);
+  setup.tool_length_mm = 150;
+  const comp::MachineModel model(m, comp::read_model_json(dir + "model.json", &m).parameters);
+  const comp::MachineModel truth(m, comp::read_model_json(dir + "truth.json", &m).parameters);
+  REQUIRE(model.has_reversal());
+  std::string cl = "PARTNO/DOME\nUNITS/MM\nFEDRAT/2000\n";
+  for (int lat = 10; lat < 90; lat += 10)
+    for (int lon = 0; lon <= 360; lon += 10) {
+      const double t = lat * kPi / 180, p = lon * kPi / 180;
+      cl += fmt::format("GOTO/{:.4f},{:.4f},{:.4f}\n", 120 * std::sin(t) * std::cos(p), 120 * std::sin(t) * std::sin(p),
+                        120 * std::cos(t));
+    }
+  cl += "END\n";
+  const Cut c = post_on_truth(m, model, truth, cl, 0.002, setup);
+  INFO(c.failure);
+  REQUIRE(c.ok);
+  CHECK(c.summary.verify.max_contour_mm <= 0.002);
 }
