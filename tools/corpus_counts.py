@@ -160,7 +160,14 @@ def count_apt(path):
                     r["repeats"] += 1
             prev2 = prev_tip
             prev_tip = tip
-            last = (tip, axis)
+            if cycle is not None and last is not None:
+                # after a hole the tool stands above it on the retract plane: GOTO + RTRCTO along the
+                # tool axis, else the level it came from (G98)
+                p = r["_params"]
+                up = p["RTRCTO"] if "RTRCTO" in p else sum((a - b) * k for a, b, k in zip(last[0], tip, axis))
+                last = ([t + up * k for t, k in zip(tip, axis)], axis)
+            else:
+                last = (tip, axis)
             rapid = False
     r.pop("_params", None)
     return r
@@ -280,10 +287,10 @@ def main(argv):
             print(os.path.basename(name), json.dumps(s))
             continue
         e = entries[os.path.basename(name)]
-        got = {"units": s["units"], "tools": s["tools"], "motions": s["motions"],
+        got = {"units": s["units"], "tools": s["tools"], "motions": s["motions"], "repeats": s["repeats"],
                "cycles": sorted([k.lower(), v] for k, v in s["cycles"].items()),
                "arcs": [s["arcs"]["cw"], s["arcs"]["ccw"]], "axis_kind": s["axis_kind"]}
-        want = {"units": e["units"], "tools": e["tools"], "motions": e["motions"]["count"],
+        want = {"units": e["units"], "tools": e["tools"], "motions": e["motions"]["count"], "repeats": e["motions"]["repeats"],
                 "cycles": sorted([c["kind"].lower(), c["count"]] for c in e["cycles"]),
                 "arcs": [e["arcs"]["cw"], e["arcs"]["ccw"]], "axis_kind": e["axis_kind"]}
         diff = {k: (want[k], got[k]) for k in want if want[k] != got[k]}

@@ -173,8 +173,8 @@ struct GcodeClReader::State {
         file, words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
   }
 
-  // ---- arcs that the post can write as arcs (G2/G3 of its dialect): a single planar turn
-  // (no helix, no P turns), the rotary axes still, not under G93: a cl::Circle (centre and axis in
+  // ---- arcs that the post can write as arcs (G2/G3 of its dialect): a single turn, planar
+  // or helical (no P turns), the rotary axes still, not under G93: a cl::Circle (centre and axis in
   // W, counter-clockwise about the axis) before the end motion, as a CL file gives it. Others are
   // expanded into points (chord error <= arc_chord_tolerance_mm). The points between are still
   // checked against the axis limits.
@@ -190,7 +190,6 @@ struct GcodeClReader::State {
   std::optional<cl::Circle> as_circle(const ArcMove& a, cl::Location where, long segments) {
     if (!options.circles || effect.inverse_time || std::abs(a.sweep_rad) > 2.0 * kPi + 1e-9) return std::nullopt;
     const auto normal = static_cast<std::size_t>(a.axes.normal);
-    if (std::abs(a.end[normal] - a.start[normal]) > 1e-9) return std::nullopt;  // a helix
     for (std::size_t i = 3; i < 6; ++i)
       if (a.end[i] != a.start[i]) return std::nullopt;
     if (std::abs(a.radius_start_mm - a.radius_end_mm) > 5e-4 || a.radius_start_mm < 1e-3) return std::nullopt;

@@ -292,13 +292,13 @@ class Poster {
   }
 
   /// The arc from the current point to `end` about `c` (sweep `angle` counter-clockwise about the
-  /// circle axis) as one G2/G3 block, when the program's frame sees it in a principal plane.
+  /// circle axis) as one G2/G3 block, when the program's frame sees it in a principal plane; a
+  /// helix (the end higher or lower along the axis) carries the third coordinate in the same block.
   bool native_arc(const cl::Circle& c, const cl::Motion& end, bool rapid, double angle) {
     if (!options_.native_arcs || rapid || writer_.dialect().klartext || !have_position_) return false;
     const Vec3d n = c.axis.normalized();
     const Vec3d start = previous_.cl.tip_mm, stop = end.point.tip_mm;
     if (previous_.cl.axis.cross(n).norm() > 1e-9 || end.point.axis.cross(n).norm() > 1e-9) return false;
-    if (std::abs((stop - start).dot(n)) > 1e-6) return false;  // a helix: points
     const IkOutcome ik = solver_.solve(end.point, previous_.q);
     if (!ik.ok() || (ik.position->rotary_rad - previous_.q.rotary_rad).cwiseAbs().maxCoeff() > 1e-12) return false;
     const Vec3d centre = c.center_mm + (start - c.center_mm).dot(n) * n;  // in the plane of the arc
@@ -313,7 +313,9 @@ class Poster {
     for (int k = 0; k < 3; ++k)
       if (std::abs(std::abs(normal[k]) - 1.0) < 1e-9) plane_axis = k;
     if (plane_axis < 0) return false;
-    const double r_start = (xs - xc).norm(), r_end = (xe - xc).norm();
+    // a helix rises along the circle axis: its radius is measured in the plane of the arc
+    const Vec3d to_end = xe - xc;
+    const double r_start = (xs - xc).norm(), r_end = (to_end - to_end.dot(normal) * normal).norm();
     // CAM data carry 4 decimals; controls accept a few µm between the start and end radii
     if (r_start < 1e-3 || std::abs(r_start - r_end) > 5e-4 || angle < 1e-6) return false;
     NcArc arc;

@@ -333,7 +333,7 @@ TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice,
                            "looks like inches"));
 }
 
-TEST_CASE("gcode control: with `circles`, a planar single-turn arc is a Circle and its end motion") {
+TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) is a Circle and its end motion") {
   GcodeReaderOptions o;
   o.circles = true;
   o.kind = InputKind::rtcp;
@@ -343,7 +343,7 @@ TEST_CASE("gcode control: with `circles`, a planar single-turn arc is a Circle a
                           "G3 X0 Y0 Z-1 I-10 J-10\nM30\n",
                           o, s);
   const auto circles = only<cl::Circle>(r.records);
-  REQUIRE(circles.size() == 2);  // the helix (Z changes) is expanded into points
+  REQUIRE(circles.size() == 3);  // the helix too: its centre at the start's height, the end motion gives Z
   CHECK(circles[0].where.line == 4);
   CHECK((circles[0].center_mm - Vec3d(-45, 0, 0)).norm() < 1e-12);
   CHECK((circles[0].axis - Vec3d(0, 0, -1)).norm() < 1e-12);  // G2: counter-clockwise about -Z
@@ -351,8 +351,12 @@ TEST_CASE("gcode control: with `circles`, a planar single-turn arc is a Circle a
   CHECK((circles[1].center_mm - Vec3d(10, 10, 0)).norm() < 1e-12);
   CHECK((circles[1].axis - Vec3d(0, 0, 1)).norm() < 1e-12);
   CHECK(circles[1].radius_mm == Approx(std::sqrt(200.0)));
+  CHECK(circles[2].where.line == 6);
+  CHECK((circles[2].center_mm - Vec3d(10, 10, 0)).norm() < 1e-12);
+  CHECK((circles[2].axis - Vec3d(0, 0, 1)).norm() < 1e-12);
   const auto ms = only<cl::Motion>(r.records);
-  REQUIRE(ms.size() > 6);
+  REQUIRE(ms.size() == 5);
+  CHECK((ms[4].point.tip_mm - Vec3d(0, 0, -1)).norm() < 1e-12);  // the helix ends 1 mm lower
   CHECK(ms[2].where.line == 4);  // the full circle's end motion, back at the start
   CHECK(ms[2].point.tip_mm.norm() < 1e-12);
   CHECK((ms[3].point.tip_mm - Vec3d(20, 20, 0)).norm() < 1e-12);

@@ -118,7 +118,7 @@ TEST_CASE("post: a file name with a newline and a hostile PARTNO never become bl
   const std::string cl = (dir / "part\nG0 Z-500\n%.cls").string();
   {
     std::ofstream out(cl);
-    out << "PARTNO/ab) G0 Z-500 (% \xc3\xbc\nPPRINT/x) M30 (\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/10,0,10,0,0,1\n";
+    out << "PARTNO/ab) G0 Z-500 (% \xc3\xbc\nPPRINT/x) M30 (\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/10,0,10,0,0,1\nFINI\n";
   }
   for (const char* name : kDialects) {
     INFO(name);

@@ -250,7 +250,9 @@ void add_post(CLI::App& app, Action& action) {
               if (used == v.size() && x > 0 && std::isfinite(x) && x <= kMaxToleranceMm) return {};
             } catch (const std::exception&) {
             }
-            return fmt::format("expected a number of mm in (0, {}] or 'none', got '{}'", kMaxToleranceMm, v);
+            return fmt::format("expected a finite number above 0 and at most {} (mm), got '{}' ('none' turns the "
+                               "linearization off)",
+                               kMaxToleranceMm, v);
           },
           ""));
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
