@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Times the cncjs `gcode-parser` npm package parsing a G-code file (the side-by-side reference
 // of bench/run_parse_bench.sh). Usage: node gcode_parser_time.js FILE [parseFile|parseLine]
 //   parseFile: the package's streaming file API (documented usage), results dropped as they come

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // G-code parse and re-post throughput on a generated five-axis program (figures in the README).
 //
 //   parse_bench [--blocks N] [--file PATH] [--keep] [--generate-only] [--stage lex|to-cl|re-post|re-post-ik|all]

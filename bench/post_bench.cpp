@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benchmark of posting with nonlinear-error compensation (issue 4 "Speed"), on the public AC
 // trunnion (tests/data/scenarios/public-clean), N CL points of one of two paths:
 //   spiral  a dense spiral over a dome, tool axis along the normal (bows far below 5 µm: the

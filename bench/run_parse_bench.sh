@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Side-by-side G-code parse benchmark: ncpost (bench/parse_bench) and the cncjs `gcode-parser` npm
 # package on the same generated 1,000,000-block five-axis program, in one run.
 #   bench/run_parse_bench.sh [BLOCKS]        (run from the repository root; builds in build/)

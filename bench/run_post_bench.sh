@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Side-by-side benchmark of issue 4's speed target: N CL points (a dense five-axis spiral over a dome,
 # bench/post_bench.cpp) posted by the real CLI with an error model and a tolerance,
 #   ncpost post --model truth.json --tolerance 0.005   (public-clean AC trunnion)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ncpost_library(NAME DEPS...): one library per top-level folder, sources = src/*.cpp,
 # public headers under include/ncpost/NAME/, alias ncpost::NAME (also the exported name).
 # Installed with its headers into the export set ncpostTargets (cmake/ncpost_install.cmake).

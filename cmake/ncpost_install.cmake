@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Installation: `cmake --install build --prefix P` puts the ncpost executable in P/bin, the public
 # headers in P/include/ncpost/, the static libraries in P/lib, and the CMake package in
 # P/lib/cmake/ncpost/ (ncpostConfig.cmake, ncpostConfigVersion.cmake, ncpostTargets.cmake), so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Posting from code with the installed ncpost library (find_package(ncpost), ncpost::ncpost):
 // the bundled hemisphere sample on the AC trunnion, once with one block per CL motion and once with
 // the nonlinear error bounded to a tolerance, both re-executed on the machine (verification), and

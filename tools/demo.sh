@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job on the bundled samples (results in out/):
 #  1. identify the AC trunnion's geometric errors from the bundled ballbar and sphere measurements
 #     (samples/measurements/ac-trunnion/, simulated from truth.json with 0.5 um noise);

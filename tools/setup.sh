@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 build dependencies, configures and builds ncpost in build/, then runs
 # the main job on the bundled samples (tools/demo.sh). Pass --no-demo to only install and build.
 set -euo pipefail

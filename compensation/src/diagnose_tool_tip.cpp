@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/diagnose_tool_tip.hpp"
 
 #include <algorithm>

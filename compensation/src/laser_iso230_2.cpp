@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/laser_iso230_2.hpp"
 
 #include <algorithm>

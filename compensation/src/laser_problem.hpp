@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The least-squares problem of laser identification (laser_identify.hpp; internal): table nodes
 // of the measured axes, the model layout, residuals and the Jacobian by central differences

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text helpers of the identification reports (identify_report, diagnose_report, laser_report).
 // Internal to the compensation library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // ncpost: the umbrella header of the installed library (find_package(ncpost CONFIG REQUIRED),
 // target ncpost::ncpost). It brings in the version and the entry points a program needs to post

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading machine files (TOML) with file:line:column errors: shared by the serial-machine loader
 // (machine_file.cpp) and the TRR-XY loader (trr_xy_file.cpp). Internal to the machines library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CYCLE/ statements of NX/CATIA APT, Creo and SOLIDWORKS CAM (apt_cycle.hpp). The kinds and the
 // parameter words are tables; anything else stops the post naming the line.
 #include "ncpost/postproc/apt_cycle.hpp"

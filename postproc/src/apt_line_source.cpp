@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/apt_line_source.hpp"
 
 #include <fmt/format.h>

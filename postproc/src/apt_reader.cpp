@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Meaning of APT statements: units, motions, feeds, tool, spindle, coolant, circles, cycles,
 // comments. Unknown statements become Unsupported records with a notice; they never abort.
 #include <fmt/format.h>

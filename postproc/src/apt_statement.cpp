@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Spirit X3 grammar of one APT statement:
 //   statement := major [ '/' arguments ]
 //   arguments := argument % ','          (a trailing empty argument is dropped)

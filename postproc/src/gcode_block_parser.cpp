@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Spirit X3 grammar of one RS274 block (see gcode_block.hpp for the rules it implements).
 // Semantic actions append straight into the caller's Block (no attribute containers), so a line
 // costs no allocation once the Block's vectors have grown.

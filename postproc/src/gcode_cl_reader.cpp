@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // G-code -> CL records: line source, block grammar, modal interpreter, then the nominal
 // kinematics of the machine (see gcode_cl_reader.hpp).
 #include "ncpost/postproc/gcode_cl_reader.hpp"

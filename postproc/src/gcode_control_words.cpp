@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control-specific G codes (see gcode_control_words.hpp).
 #include "ncpost/postproc/gcode_control_words.hpp"
 

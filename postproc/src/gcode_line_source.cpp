@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/gcode_line_source.hpp"
 
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Modal interpretation of RS274 blocks (see gcode_modal.hpp for what is supported).
 #include "ncpost/postproc/gcode_modal.hpp"
 

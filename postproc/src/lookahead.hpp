@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The post's read-ahead (PostOptions::threads = 2): while the post writes one part of the program,
 // a reading thread parses the next CL records and a solving thread solves their motions

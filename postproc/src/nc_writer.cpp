@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/nc_writer.hpp"
 
 #include "ncpost/postproc/fixed_format.hpp"

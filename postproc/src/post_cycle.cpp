@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "post_cycle.hpp"
 
 #include <fmt/format.h>

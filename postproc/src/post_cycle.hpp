@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One hole of a CYCLE (cl::Cycle) in W: its planes along the tool axis, the explicit moves that
 // drill, peck, tap or bore it where no native cycle can (a dialect without the cycle, a hole not

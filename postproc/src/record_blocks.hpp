@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The CL records that the serial post (post.cpp) and the TRR-XY post (trr_post.cpp) turn into NC
 // blocks alike: the feed they keep (mm/min; a feed per revolution times the spindle speed), the

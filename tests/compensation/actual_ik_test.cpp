@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compensated inverse kinematics: the actual forward kinematics of the solution hits the CL
 // point (1e-6 mm, 1e-8 rad) on an AC table, at the singular orientation, with reversal, and on a
 // BC head.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // compensate_blocks on two threads gives the same output blocks as one block at a time.
 #include <catch2/catch.hpp>
 

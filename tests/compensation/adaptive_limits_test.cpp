@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive subdivision near the singular cone and at axis limits: no rotary flips inside a block,
 // and a clear failure (not a wrong program) when an inserted point has no admissible solution.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive subdivision on an actual machine (geometric errors through the error hook, IK of the
 // actual machine): the dome path's output blocks, re-executed on that machine, stay within 5 um of
 // the CL segments, and the inserted points are on the CL segment.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The compensation API wired into the lead's post pipeline through `PostOptions::subdivide`
 // (the way `ncpost post --tolerance` is to call it), on the public dome path: the post's own
 // verification (re-execution of the written, rounded program) sees every block within 5 um.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive block insertion (adaptive_subdivision.hpp): every output block within the tolerance,
 // verified by an independent re-execution, with few blocks (issue 4: <= 1.25x an ideal per-block
 // subdivision), on the seed 001 segment and on the public dome path.

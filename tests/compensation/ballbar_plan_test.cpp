@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seed-000 ballbar plan reproduces the public scenario's commands, and simulating it on the
 // scenario's truth reproduces the recorded lengths within the noise.
 #include <catch2/catch.hpp>

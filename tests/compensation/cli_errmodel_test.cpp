@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost plan → simulate → identify end to end, exit codes and atomic outputs (cli.md).
 #include <catch2/catch.hpp>
 

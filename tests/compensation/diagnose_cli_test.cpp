@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The worked example of compensation/DIAGNOSE.md on the command line: `ncpost plan` and
 // `ncpost simulate` make the public scenarios' measurements on a machine with a cyclic angular
 // error of C (ECC:h2) and a warm-up drift along Z that the analysis is not told about;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parameter kinds residual analysis adds behave as conventions.md says (sphere deviations,
 // ballbar lengths, predicted through the error model exactly as identification predicts them):
 // squareness, scale, harmonic component errors relative to the set-up at home, reversal as a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Residual analysis finds an undeclared effect by name (issue 6, "Evidence it works"): data sets
 // made as `ncpost plan` + `ncpost simulate` make them (ballbar-4axis at 250 and 300 mm, sphere;
 // 0.5 um noise) on the public machine with public-clean's location errors plus one effect the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // No false positives (issue 6): data sets whose only errors are those of the basic model (the
 // location errors of public-clean's truth.json), simulated as `ncpost simulate` does with
 // several noise seeds and levels: residual analysis adds nothing.

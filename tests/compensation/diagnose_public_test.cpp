@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Residual analysis on the public scenarios: public-ezc holds an axial error motion of C
 // (truth.json: EZC:h1) that the basic model lacks — it is found by name and the final model
 // predicts the truth's tool-tip deviations within 1 um over the working space (measured as in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The linearised screening of residual analysis (diagnose_screening.hpp) on synthetic columns:
 // the drop it reports is the least-squares drop, aliased and equivalent candidates are told, and
 // the drift law (lin, exp with its time constant, or both) is chosen as the data say.

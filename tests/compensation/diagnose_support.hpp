@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Test support for residual analysis (tests/compensation/diagnose_*_test.cpp): data sets made the
 // way `ncpost plan` + `ncpost simulate` make them, from a truth the analysis is not told about, and

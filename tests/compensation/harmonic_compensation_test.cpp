@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The paper's harmonic compensation realised as NC blocks (harmonic_compensation.hpp): on the seed
 // 001 segment (BV100) and on the public dome path, blocks added and the largest remaining error,
 // verified by re-execution.

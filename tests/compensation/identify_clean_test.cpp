@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Acceptance on the public clean scenario: identification from the two ballbar heights and the
 // sphere recovers the truth, and the identified model predicts the truth's tool-tip deviations
 // within 1 µm over the working space.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The automatic-differentiation Jacobian of the residuals agrees with central finite
 // differences for every kind of parameter and every kind of measurement.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 7 on the command line: plan laser → simulate → identify (laser dispatch), exit codes.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 7: the table parameter kind (EXX:t:<pos>) and the laser CSV additions (`# axis:`,
 // `# line:`, column `approach`): names, interpolation, model JSON and CSV round trips, bad input.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A simulated VMCL600 (seed 003) with all 21 geometric errors, for the laser tests (issue 7).
 //

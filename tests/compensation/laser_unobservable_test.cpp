@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 7: what a given set of laser lines cannot see is reported, and held at 0 — never given an
 // invented value (style guide "Report identifiability").
 #include <catch2/catch.hpp>

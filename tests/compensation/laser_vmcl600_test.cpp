@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 7 acceptance: a VMCL600 (seed 003) with all 21 geometric errors (+ reversal) is measured
 // by the laser plan (three lines per axis, positioning and straightness, ISO 230-2 cycle, noisy),
 // the errors are identified, a 3D test path is posted with the identified model through the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile measurement files (issue 14 item 5): a header without rows, time going backwards, a
 // reading far beyond any instrument's range, the same file given twice or a copy of it. Each is
 // exit 2 naming the file (and line:column), never a crash or a fit that reports success.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Measurement CSV and model JSON: strict readers (file:line errors), writers, round trips.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A model JSON applied to a machine must be that machine's and plausible (issue 14 item 10):
 // another machine's name (or none), other axes, a value no machine could have (EB0A = 1000 rad),
 // a number beyond double range (1e400) are exit 2 with FILE:LINE:COL; --force applies the model

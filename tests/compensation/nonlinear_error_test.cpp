@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact nonlinear error of a block against a dense independent simulation (issue 4: within
 // 3% per block), on random blocks of several machines, nominal and with geometric errors.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seed 001 (Zhang, Wang, Tang 2023) on the BV100 machine (machines/bv100.toml): the sample
 // segment's nonlinear error, its profile against the paper's table 1, and the harmonic model.
 #include <catch2/catch.hpp>

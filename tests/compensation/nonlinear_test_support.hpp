@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Test support for the nonlinear-error tests: a small geometric error functor, random blocks,
 // the seed 001 sample segment, and the GOTO points of the public dome path.

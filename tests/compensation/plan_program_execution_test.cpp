@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The programs `plan` writes, executed (issue 14 item 14): each block of the written program is
 // parsed and its straight line in axis space followed through the nominal forward kinematics.
 // With the instrument mounted (between "M0 (mount" and "M0 (... remove") every move is a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reversal (a play, reversal.hpp) in compensated posting (issue 17): the compensated IK solves at
 // the kink of the dead band (the needed move tiny, either way, or the axis standing inside its
 // band), and `post --model --tolerance 0.002` on a model with reversal of either rotary axis

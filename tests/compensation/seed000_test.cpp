@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seed 000 (Tsutsumi & Saito 2003): simultaneous four-axis ballbar test of an AC tilting-rotary
 // table. Single-deviation trajectories (0.005° and 0.01 mm, bar 100 mm, height 250 mm), their
 // growth with height, the couplings at one height and full rank at two.

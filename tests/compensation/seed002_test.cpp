@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seed 002 (Gao et al.): ballbar tests of a BC swivel head. With the two positioning errors
 // (zero errors of B and C) given, the remaining eight location errors of B and C are unique when
 // the C test is read at two tool lengths and the B test also along Y; with the seed's single tool length, the offset and the

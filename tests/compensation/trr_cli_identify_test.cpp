@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TRR-XY measurement loop through the CLI: plan sphere → simulate → identify → the model
 // predicts the true machine; bad probing data fail with file and line.
 #include <catch2/catch.hpp>

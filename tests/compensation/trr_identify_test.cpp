@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Identification of the TRR-XY error parameters from simulated sphere probing (issue 8, beyond the
 // seed), with the identifiability report, and the compensated post of a test path executed on the
 // true machine: error before and after.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the APT CL reader (cl::AptReader, postproc/src/apt_*.cpp). Bad input must
 // end in InputError; anything else is a finding. The first byte picks the reader's options
 // (MSYS applied or not, a coarse or fine curve tolerance, unterminated files allowed or not).

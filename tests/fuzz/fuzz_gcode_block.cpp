@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the Spirit X3 block grammar alone (gcode::parse_block), line by line.
 // Bad input must end in InputError; anything else (crash, other exception, sanitizer report,
 // hang) is a finding.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the whole G-code input path (line source, grammar, modal interpreter, arc
 // expansion, nominal kinematics) through gcode::GcodeClReader on an AC trunnion with offset
 // pivots. Bad input must end in InputError (or Infeasible beyond the axis limits); every motion

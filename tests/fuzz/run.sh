@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer targets with clang-14 (ASan + UBSan) in build-fuzz/ and runs each for
 # SECONDS (default 60), starting from the seed corpus in tests/fuzz/corpus/ plus the real files
 # of tests/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)

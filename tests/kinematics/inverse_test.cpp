@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Property tests of the closed-form inverse kinematics over every shipped machine:
 // forward(inverse(x)) = x on thousands of random reachable poses, and the chosen solution
 // respects the limits and is the one nearest the previous pose.

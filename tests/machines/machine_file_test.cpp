@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Machine files: every shipped machine loads; bad files fail with file, line and what was expected.
 #include <catch2/catch.hpp>
 

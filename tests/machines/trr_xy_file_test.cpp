@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TRR-XY machine file (spec trr-xy.md "Machine file"): the shipped file loads with the seed's
 // numbers; bad files fail with file, line and what was expected; the serial loader refuses it.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ncpost executable on the APT input rules: FINI required (--allow-unterminated), empty
 // input, an over-long line (bounded output), NX MSYS (--msys apply|ignore and the hint).
 #include <catch2/catch.hpp>

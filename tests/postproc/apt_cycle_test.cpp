@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CYCLE/ statements of NX, Creo and SOLIDWORKS CAM read into cl::Cycle (apt_cycle.hpp): every
 // distance along the tool axis from the hole's GOTO point, the feed units, the pecks and the
 // thread pitch; an unknown kind or word is an error naming the line.

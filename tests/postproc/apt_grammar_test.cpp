@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The APT reader on the grammar of issue 13/14: digit-first words, free text, 6-value CIRCLE,
 // FINI at the end, empty files, CR-only line ends, a byte order mark, over-long lines, MSYS.
 #include <catch2/catch.hpp>

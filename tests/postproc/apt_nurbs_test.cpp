@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // NX NURBS records: the rational B-spline evaluated and linearized within the curve tolerance.
 #include <catch2/catch.hpp>
 

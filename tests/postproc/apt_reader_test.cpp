@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The APT reader on the quirks of real CAM files (tests/data/real/SOURCES.md) and on bad input.
 #include <catch2/catch.hpp>
 

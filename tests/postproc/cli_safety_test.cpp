@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile input and file safety of the ncpost executable (issue 14): what -o may replace, output
 // paths that are inputs, signals, stdin, numeric options, escaped messages, misspelt options.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fixed_format.hpp writes the same text as fmt's "{:.Nf}" (minus sign of a value rounding to zero aside).
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

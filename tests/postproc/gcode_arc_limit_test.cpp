@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An arc that would expand into more points than kMaxArcSegments is bad input (a fuzzer timeout:
 // tests/fuzz/findings/gcode_reader_huge_arc_timeout.ngc), reported with file and line.
 #include <catch2/catch.hpp>

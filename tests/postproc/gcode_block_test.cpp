@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lexical quirks of RS274 blocks: case, spacing, numbers, comments, framing, N/O words, block
 // delete, and errors with their exact columns.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The G-code input paths of issues 13.12 and 14.11 through the ncpost executable: exit codes and
 // the messages a user reads (file:line, the axis and its limit; G10 with what to do).
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // G-code input of issue 13 item 12 and issue 14 item 11: cutter compensation records, control
 // mode words, Sinumerik units and keywords, G10 refusals, and the machine's axis limits.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Acceptance against a real peer: LinuxCNC's xyzac-trt kinematics.
 //
 // `linuxcnc_impeller-7bl-xyzac.ngc` is CAM output for LinuxCNC with TCP on (M428): X Y Z are the

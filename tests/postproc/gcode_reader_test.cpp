@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // G-code -> CL: modal state, units, incremental mode, feeds, arcs, records, both program kinds,
 // framing, and errors with positions.
 #include <catch2/catch.hpp>

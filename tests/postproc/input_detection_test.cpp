@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Input kind detection (APT or G-code) from the head of a file: every real file, and G-code whose
 // comments contain APT major words (ncpost's own headers: "(ncpost 0.1.0 from part.cls)").
 #include <catch2/catch.hpp>

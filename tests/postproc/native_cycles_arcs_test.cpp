@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIRCLE records written as G2/G3 (post.hpp `native_arcs`) and CYCLE holes as G81/G83: the arc
 // directions of NX's own post on the same files, the same tool path as the point expansion when
 // the program is read back, and the cycle words of a Creo drilling file.

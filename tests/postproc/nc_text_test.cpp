@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Text written into NC programs (issue 14 item 13): one sanitiser per dialect, so that no file
 // name, machine name, PARTNO or comment becomes a block, ends the tape or carries non-ASCII.
 #include <catch2/catch.hpp>

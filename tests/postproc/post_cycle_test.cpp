@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cycles and cutter compensation posted (post_cycle.hpp, cycle_words.hpp): per kind and dialect
 // the reviewed blocks — native G81/G82/G83/G73/G84/G85/G86 with R plane, depth, Q, P and G98/G99
 // from the retract plane, the modal continuation over the holes, the explicit expansion where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `post --model --tolerance`: the compensated program executed on the *true* machine. The model
 // is identified from measurements (never the truth itself); the written, rounded program is
 // re-executed on the truth (the post's own verification, with a solver whose commands come from the

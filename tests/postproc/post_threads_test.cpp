@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The post's read-ahead threads (PostOptions::threads = 2) write the same program as one thread:
 // under `--model --tolerance` (the compensated IK solved ahead), on real files whose arcs, cycles
 // and G-code angles make the post leave the motions solved ahead unused, and with a reversal model

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost preview --html: a self-contained report (no scripts, no network) that headless Chromium
 // renders; the screenshot must exist and show more than a blank page. Skipped (with a message)
 // when chromium is not installed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The public scenario posts, and re-executing the output through the forward kinematics
 // (linear interpolation in axis space) hits every CL point.
 #include <catch2/catch.hpp>

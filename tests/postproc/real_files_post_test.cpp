@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every real file of tests/data/real/ (SOURCES.md there) posts completely on a machine of its kind,
 // with one output motion per input motion: exactly, less the motions that change no axis word
 // (duplicates, which produce no block), where the file has no circles or cycles, counting a rapid

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 13 item 1: with --rtcp every tool change activates that tool's length, in each dialect's
 // words (Dialect::tool_call / rtcp_on / rtcp_off with "{tool}"): RTCP off before the change, the
 // tool call, RTCP on with the new tool's length after it; without RTCP the tool's length offset.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 13 items 6 and 7: `post` bounds every block's nonlinear error by default (0.01 mm;
 // `--tolerance none` turns it off), and the bound is met where the tool leaves the vertical on a
 // table-table machine: at the singular start the C angle is free (the post kept C0), the move

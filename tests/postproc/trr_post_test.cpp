@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Posting on the TRR-XY machine (issue 8): the NC program (X Y U V W) re-executed independently
 // — parsed back from the file, every block interpolated linearly in X Y U V W at 200 points and
 // run through the forward kinematics — stays within the tolerance of the CL path; --verify,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Acceptance against a real post: NX's own Haas UMC-750 output (TCPC G234) of the same CL file
 // gives, for every GOTO, the B and C we compute (within 0.001 deg), including the near-singular
 // stretch where C swings by tens of degrees per block.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 13 item 9: "no solution within the axis limits" names, for each solution, the axis that
 // leaves its travel, the value it would need and its limits — so that a user whose Z travel is
 // short does not blame B/C — in `post` and in `preview`, both with the tip and axis of the point.

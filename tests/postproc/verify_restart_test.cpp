@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 13 item 8: `--verify` re-executes each block from where the previous block really ended.
 // A rapid that keeps Z is written whole by the first of its two rapid blocks (the second changes no
 // word); the feed that follows starts there, not at the position before the rapid (which gave a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The version is defined once, by project(ncpost VERSION ...) in CMakeLists.txt: ncpost::version(),
 // `ncpost --version`, the NC program header and the tests' own working folder follow it.
 #include <catch2/catch.hpp>

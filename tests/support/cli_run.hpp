@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Running the ncpost executable from tests: the exit code, with stdout and stderr in a log file.
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A temporary folder of its own for a test that writes files, and writing a text file there.
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading back a TRR-XY NC program in tests (trr_post_test, trr_identify_test): the motion blocks
 // as modal X Y U V W values after each block that moves.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost identify: fit error parameters to measurements (README "Worked example" and "Closing the loop").
 #include <fmt/format.h>
 

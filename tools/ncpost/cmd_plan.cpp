@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost plan: measurement plans and the NC programs that run them (README "Worked example").
 #include <fmt/format.h>
 

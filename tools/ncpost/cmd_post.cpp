@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost post: CL data or G-code in, NC program out (spec/cli.md).
 #include <fmt/format.h>
 #include <unistd.h>

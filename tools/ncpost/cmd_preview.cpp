@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost preview: the nonlinear error of every block of a CL program (README "Nonlinear error").
 #include <fmt/format.h>
 #include <unistd.h>

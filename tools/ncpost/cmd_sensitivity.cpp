@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost sensitivity: the TRR-XY sensitivity maps (README "TRR-XY hybrid machine").
 #include <fmt/format.h>
 

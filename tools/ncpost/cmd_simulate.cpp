@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost simulate: run a measurement plan on a machine described by a model JSON (README "Worked example").
 #include <fmt/format.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Subcommands of the ncpost executable, one per file. Each `add_*` registers its subcommand on
 // the app and sets `action` to the function that runs it when it is chosen.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Checks on the files of a command line, made before anything is computed or written: an output
 // must not be one of the inputs nor another output (compared by device and inode, so links and

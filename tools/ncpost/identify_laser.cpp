@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "identify_laser.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `ncpost identify` on laser interferometer data (issue 7): the 21 errors of the linear axes
 // (compensation/laser_identify.hpp), model JSON, text report on stdout, optional HTML report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The input of `post` and `preview`, which is read more than once (the kind is detected from its
 // first bytes, --verify reads it a second time): a regular file is read where it is; standard

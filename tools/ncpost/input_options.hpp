@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Options shared by the subcommands that read a job (machine, set-up, input kind and units).
 #include <memory>

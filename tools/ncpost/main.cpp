@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ncpost: CNC post-processor with error compensation for five-axis machine tools.
 // Exit codes (README "Exit codes"): 0 done, 1 usage, 2 bad input or a file that cannot be read or
 // written, 3 infeasible, 4 internal fault (a bug: please report it), 128+N stopped by signal N.

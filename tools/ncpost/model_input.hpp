@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A model JSON for a command (post, preview, simulate): read, checked against the machine
 // (machine name, axes, plausible values; compensation/README.md "Model checks"), and with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Numeric options: every value must be a finite number in the option's range. The check runs on
 // the text as given, so the message repeats what the user typed (never a 300-digit expansion)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Misspelt options and subcommands: "unknown option --tolerence; did you mean --tolerance?"
 // instead of the misspelt word being taken for a value or a file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text from input files and the command line shown on the terminal: control characters (C0, DEL,
 // C1) and bytes that are not UTF-8 are written as escapes (\n, \r, \t, \xNN), so that a file cannot

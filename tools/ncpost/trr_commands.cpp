@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TRR-XY paths of `ncpost post` and `ncpost preview`.
 #include "trr_commands.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `ncpost post` and `ncpost preview` on the TRR-XY machine (spec trr-xy.md): the serial
 // subcommands call these first; they run the TRR-XY path when --machine is a kind = "trr-xy" file.

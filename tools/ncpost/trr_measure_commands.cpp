@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `plan`, `simulate` and `identify` on the TRR-XY machine (sphere probing, trr_identify.hpp).
 #include <fmt/format.h>
 

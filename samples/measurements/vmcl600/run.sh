@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates this directory with the CLI (LASER.md): plan, simulate the truth with 0.3 µm
 # noise, identify. Run from the repository root after building (build/ncpost).
 set -e

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Compensated inverse kinematics: the commands that make the *actual* machine (MachineModel)
 // put the tool tip on the CL point with the CL tool axis (conventions.md "Nominal closure", with

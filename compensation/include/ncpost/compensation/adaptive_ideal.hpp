@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The ideal subdivision of a block, the yardstick of the adaptive method (issue 4: at most 1.25x
 // the blocks of an ideal per-block subdivision): the fewest output blocks, with end points on the

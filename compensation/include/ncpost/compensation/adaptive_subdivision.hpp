@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Adaptive block insertion to a tolerance (`ncpost post --tolerance MM`, the default
 // `--nonlinear adaptive`): an input block whose exact nonlinear error (nonlinear_error.hpp)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The size of an added effect in one number, its standard uncertainty, and whether it is
 // physically plausible (diagnose.hpp, step 2). Units mm or rad (`is_angle`):

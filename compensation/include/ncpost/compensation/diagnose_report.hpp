@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reports of residual analysis (issue 6, step 4): text for the terminal and an HTML section for
 // `identify --report` (the identification page of identify_report.hpp with the residual

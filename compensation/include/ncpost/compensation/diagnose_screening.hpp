@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Linearised screening of candidate effects (diagnose.hpp, step 1). Everything acts on Jacobian
 // columns of the residual (residuals.hpp: mm per parameter unit) at the current solution and on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Looking at a residual directly (issue 6, step 2): its spectrum against each rotary angle, its
 // correlation with the direction each axis last moved (reversal) and with time. Descriptive

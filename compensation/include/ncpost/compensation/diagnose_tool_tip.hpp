@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Predicted tool-tip error of the machine before and after compensation (issue 6, step 4), over
 // a sample of the working space: commands uniform within the axis limits (linear axes capped to

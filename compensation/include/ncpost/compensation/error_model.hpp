@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The error model as the error hook of the one kinematic chain (kinematics/forward.hpp): named
 // parameters (parameter_name.hpp) turned into AxisErrorTerms per axis and command.

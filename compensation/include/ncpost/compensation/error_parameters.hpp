@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // ErrorParameters: an ordered set of named error parameters (name → value, mm / rad / s), the
 // in-memory form of the `parameters` object of the model JSON (formats.md "Error model").

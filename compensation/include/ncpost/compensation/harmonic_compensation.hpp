@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's harmonic compensation (seed 001, Zhang, Wang, Tang 2023, eq. 4: P = E − L(t)),
 // realised as NC blocks (`ncpost post --nonlinear harmonic`).

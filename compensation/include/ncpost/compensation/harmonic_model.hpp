@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The harmonic model of a block's nonlinear error (seed 001, Zhang, Wang, Tang 2023, eq. 2–3):
 //   L(t) = Σ A_k sin(kπt) + B_k cos(kπt); with zero error at both block ends the first-order form

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Identifiability of parameters from a Jacobian (Ceres covariance.h discusses the same problem):
 // columns are scaled to unit norm (so that mm and rad parameters compare), the singular values

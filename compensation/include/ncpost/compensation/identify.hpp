@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Identification of error parameters from measurements (cli.md `identify`; seeds 000, 002):
 // nonlinear least squares (Levenberg–Marquardt with Marquardt scaling) on the residuals of

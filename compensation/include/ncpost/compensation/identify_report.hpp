@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Human reports of an identification: text for the terminal and a self-contained HTML page
 // (inline SVG, no external resources) with the ballbar trajectories as polar plots (measured,

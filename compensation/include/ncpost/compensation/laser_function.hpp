@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One identified component error function of a linear axis (issue 7): a table over the axis
 // position (mm) with linear interpolation, as the error model evaluates `E<c><axis>:t:<pos>`

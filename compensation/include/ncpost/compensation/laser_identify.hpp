@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The 21 geometric errors of the linear axes from laser interferometer lines (issue 7; seed 003,
 // Li et al. 2008; ISO 230-1 for straightness, angular and squareness errors; ISO 230-2 for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // ISO 230-2 (2014) evaluation of a bidirectional positioning test of one linear axis on one
 // line: at each target i the mean positional deviations x̄↑_i, x̄↓_i (µm; deviation = actual −

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Laser interferometer plan for the linear axes (issue 7; seed 003, Li et al. 2008; ISO 230-2
 // test cycle; ISO 230-1 straightness and angular errors from parallel lines).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Laser interferometer readings predicted by the error model (conventions.md "Measurements",
 // formats.md laser CSV; issue 7). A reading is 1000 · the `component` of

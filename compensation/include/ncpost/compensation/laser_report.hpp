@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Human reports of a laser identification (issue 7): text for stdout, self-contained HTML with a
 // plot per error function (SVG). Values in µm and µrad; ISO 230-2 figures per positioning line;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The actual machine for posting and simulated execution: the nominal machine plus the machine
 // errors of a model file. Effects that act only while measuring (drift, instrument terms) are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Measurement data and plans (formats.md "Measurement data (CSV)"; conventions.md
 // "Measurements"). A plan is a measurement set whose value columns are absent.

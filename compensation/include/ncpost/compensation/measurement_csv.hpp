@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading and writing measurement CSV (formats.md "Measurement data (CSV)").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The measurement files of one identification, read together (issue 14 item 5): each file once.
 // A path given twice (the same file by device and inode, whatever its name) or a file whose rows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The error model file (formats.md "Error model (JSON)"): written by `identify`, read by
 // `post --model` and `simulate`. Parameters in mm / rad (names: parameter_name.hpp; component

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Plausible sizes of error parameters (issue 14 item 10; bounds in compensation/README.md
 // "Model checks"). A model is applied to a real machine: a value no machine could have (a tilt of

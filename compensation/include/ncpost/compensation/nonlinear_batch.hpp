@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Compensating many blocks on several threads (issue 4 "Speed": use both cores where it pays).
 //

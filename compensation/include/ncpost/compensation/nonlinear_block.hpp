@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One NC block as the control executes it, and its deviation from the CL data
 // (conventions.md "Execution model of an NC program"; seed 001, Zhang, Wang, Tang 2023).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A cheap upper bound of a block's nonlinear error, to skip the exact maximisation
 // (nonlinear_error.hpp) for blocks far within the tolerance (dense paths: nearly all of them).

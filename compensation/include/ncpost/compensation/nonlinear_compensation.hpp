@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The entry point of nonlinear-error compensation for the post (`ncpost post --tolerance MM
 // [--nonlinear adaptive|harmonic]`): one input block in, the output block end points out.

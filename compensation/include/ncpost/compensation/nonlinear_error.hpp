@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The exact nonlinear error of one block (conventions.md "Execution model of an NC program";
 // seed 001): the largest distance (mm, W) of the executed tool tip from the straight CL segment,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Bracketed maximisation of a scalar function of one parameter on [a, b]: a uniform scan
 // brackets the local maxima, then Brent's method (golden section with parabolic steps; R. P. Brent,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A block replaced by several output blocks (nonlinear-error compensation): the inserted nodes
 // and the verified result. Shared by the adaptive subdivision (adaptive_subdivision.hpp) and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Error-parameter names (conventions.md "Geometric errors", "Effect names"; formats.md "Error
 // model") parsed into what they act on. Units of the values: mm for lengths, rad for angles, s for

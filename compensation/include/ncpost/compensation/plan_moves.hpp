@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Moves of a measurement program while the instrument is on the machine (issue 14 item 14): the
 // tool point (ballbar tool ball, probe stylus) is guided, never left to the straight line the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Measurement plans (the tests users run), as measurement sets without values. Commands are the
 // nominal ones that put the tool ball / probe on the target (kinematics/inverse.hpp linear_for),

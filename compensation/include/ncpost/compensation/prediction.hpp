@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Predictions of measurements by the error model (conventions.md "Measurements"), templated on
 // the parameter scalar P so that identification differentiates them exactly.

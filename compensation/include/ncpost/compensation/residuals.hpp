@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Residuals and their exact Jacobian for identification: predicted − measured for every value
 // of every measurement set, in mm (laser values converted from µm), stacked set by set, row by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reversal (backlash) as a play / dead band (conventions.md "Geometric errors"): the actual
 // position of an axis with reversal width b follows

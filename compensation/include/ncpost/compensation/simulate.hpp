@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Simulated measurements: a plan run on a machine described by error parameters (the truth),
 // with Gaussian noise (formats.md, cli.md `simulate`). Values in the file's units (mm; laser µm);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The nonlinear error of one block on the TRR-XY machine (conventions.md "Execution model"):
 // the control interpolates X, Y, U, V, W linearly between the block's end commands; the executed

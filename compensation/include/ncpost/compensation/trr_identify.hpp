@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Identification of the TRR-XY error parameters (spec trr-xy.md, 30 parameters) from simulated
 // sphere probing (conventions.md "Measurements", sphere): at each probing pose (slider commands;

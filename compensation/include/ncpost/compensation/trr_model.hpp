@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // TRR-XY error parameters in the model JSON (formats.md "Error model"; names of trr-xy.md:
 // `<param>_<chain>`, e.g. `dl_a`, in mm and rad). Parameters not in the file are zero.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Sensitivity maps of the TRR-XY machine (spec trr-xy.md "Sensitivity map", seed 004 section 5).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Forward kinematics of the generic serial chain, with an optional error model
 // (conventions.md "Axes and chains" and "Geometric errors"; ISO 230-1 notation).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Closed-form inverse kinematics of the nominal serial chain (conventions.md "Nominal closure"):
 //   (X, Y, Z) + T_t(q)·0 = T_w(q)·(workpiece_origin + p)   and   R_t(q)·e_z = R_w(q)·u

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The nominal description of a serial machine tool: its axes and its structural chain
 // (ISO 10791-1 style, conventions.md "Axes and chains").

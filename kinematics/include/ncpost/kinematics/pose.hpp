@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rigid transforms and small rotation helpers, templated on the scalar so that the same code
 // runs on double (posting) and on automatic-differentiation scalars (identification).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Forward kinematics of the TRR-XY machine (trr_xy_geometry.hpp, spec trr-xy.md "Forward
 // kinematics"): from the slider commands (s_a, s_b, s_c) to the plate pose `machine_T_plate`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Geometry and error parameters of the TRR-XY hybrid machine (seed 004; the contract is
 // docs/trr-xy.md): a 3-PRS parallel spindle head (chains a, b, c at 0°, 120°, 240°

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Inverse kinematics of the TRR-XY machine (spec trr-xy.md "Inverse kinematics"): a CL point p
 // with tool axis u (in W; the table only translates, so u is also the axis in M) →

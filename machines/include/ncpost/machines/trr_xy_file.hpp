@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Loading the TRR-XY machine file (docs/trr-xy.md "Machine file"): [machine] with
 // kind = "trr-xy" and no chain, [trr_xy] with the five dimensions (mm), and [axes.X], [axes.Y]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The actual machine of `--model` as a MotionSolver (`post --model`, `preview --model`): commands
 // from the compensated inverse kinematics (compensation/actual_ik.hpp), started from the nominal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The meaning of an APT `CYCLE/` statement (cl::Cycle): the cycle vocabularies of NX and CATIA
 // (`CYCLE/DRILL,DEEP,RAPTO,3,FEDTO,-20,STEP,2,MMPM,250`, `RTRCTO,AUTO`), Creo

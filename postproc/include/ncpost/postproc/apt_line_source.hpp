@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Physical lines of an APT CL file, read in fixed-size chunks so that memory stays bounded
 // however long the file or a line: LF, CRLF and CR-only line ends all end a line; a UTF-8 byte

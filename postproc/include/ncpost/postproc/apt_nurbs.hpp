@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rational B-spline curves as NX writes them in a CLSF (`NURBS/`, then `KNOT/` and `CNTRL/`
 // records) and their linearization into chords within a tolerance.

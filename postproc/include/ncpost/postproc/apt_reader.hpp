@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Streaming reader of APT CL source as CAM systems write it (NX CLSF, CATIA APT, Creo
 // Pro/CLfile): docs/formats.md "CL data" and tests/data/real/SOURCES.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An output file written atomically (spec/cli.md): the data go to a temporary file in the same
 // folder, which `commit()` flushes and renames into place. Destroyed without commit (an error on

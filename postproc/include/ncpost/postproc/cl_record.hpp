@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The records of a CL (cutter location) program as the post acts on them, independent of the
 // source format (APT CL source from NX, CATIA, Creo; G-code mapped back to CL).

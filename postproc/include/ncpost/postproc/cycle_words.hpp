@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The words of the canned drilling cycles and of cutter radius compensation per dialect (data:
 // cycle_words.cpp). A kind whose word is empty has no native cycle in the dialect and is

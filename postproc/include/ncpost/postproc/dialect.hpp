@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // NC program dialects: words, comments and program framing of the controls ncpost writes for.
 // Output is ISO G-code (RS274 family) except Heidenhain, which gets Klartext L blocks.

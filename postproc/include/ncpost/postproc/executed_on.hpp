@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A MotionSolver whose commands come from one solver and whose execution is another machine's:
 // `post --verify-on TRUTH.json` re-executes the written program on a machine other than the one

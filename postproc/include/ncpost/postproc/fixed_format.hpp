@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fixed-point formatting of NC word values ("-12.3450" with 4 decimals) without the general float
 // formatter: the value is rounded to an integer count of 10^-decimals and its digits written.

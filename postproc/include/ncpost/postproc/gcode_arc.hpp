@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Circular (and helical, and slightly spiral) G2/G3 arcs in program coordinates, and their
 // expansion into points with a bounded chord error.

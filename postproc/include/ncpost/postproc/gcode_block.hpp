@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One block (line) of an RS274-family program as written: its words, comments and markers,
 // before any meaning is applied (spec/formats.md "NC programs").

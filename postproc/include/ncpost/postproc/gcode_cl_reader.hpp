@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // G-code input mapped back to CL records (spec/cli.md "post": INPUT may be G-code), streaming.
 //

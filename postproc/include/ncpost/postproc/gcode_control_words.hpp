@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // G codes whose meaning depends on the control that wrote the program, and that the modal
 // interpreter does not handle as motion or a modal group of its own:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Telling G-code from APT CL data, and RTCP programs from machine-axis programs, by content.
 #include <istream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Streaming line reader for NC programs: reads the input in fixed-size chunks and hands out one
 // line at a time (without its terminator: LF, CRLF), so that memory stays flat however long the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The meaning of RS274 blocks: modal state (G0-G3, G17-G19, G20/G21, G90/G91, G90.1/G91.1,
 // G93/G94/G95, F, S, T, M, RTCP on/off) and what each block does, in the RS274NGC order of

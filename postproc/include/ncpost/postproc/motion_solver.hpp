@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How the post turns a CL point into axis commands, and how it re-executes commands: the
 // nominal machine (closed-form inverse kinematics), or an actual machine with identified errors

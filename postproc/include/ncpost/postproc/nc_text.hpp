@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text written into an NC program (comments, the program name): file names, the machine's name,
 // PARTNO and PPRINT text come from users and CAM files, so every such text passes through the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Streams an NC program in a dialect: one motion per block, absolute (G90), metric (G21),
 // modal words written only when they change. Values arrive in output units (mm, deg) and are

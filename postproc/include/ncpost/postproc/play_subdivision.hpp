@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `post --model --tolerance` on a model with reversal: the block subdivision that follows the play.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The post-processor: CL records in, NC blocks out (spec/cli.md `ncpost post`).
 //

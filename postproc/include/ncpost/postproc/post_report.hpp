@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The before/after account of `ncpost post` (printed, and `--report FILE.html`): the program as it
 // would be without `--model` and `--tolerance` (nominal commands, one block per CL motion) executed

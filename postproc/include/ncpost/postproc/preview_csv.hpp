@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The CSV of `ncpost preview --csv` (spec/cli.md): one row per previewed block,
 //   block,line,max_error_mm,at_t,harmonic_mm,orientation_error_deg,orientation_at_t,harmonic_residual_mm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The self-contained HTML report of `ncpost preview --html` (inline SVG, no scripts, no network):
 // totals, the error of every block along the program, a histogram, the tool path (XY of W)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `preview --model` uses the post's actual-machine solver (actual_solver.hpp).
 #include "ncpost/postproc/actual_solver.hpp"

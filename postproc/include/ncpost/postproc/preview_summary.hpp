@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the HTML report of `ncpost preview` shows, gathered block by block with bounded memory:
 // totals, a log-scale histogram of the block errors, the error along the program and the tool

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Inline SVG charts for the self-contained HTML reports (no scripts, no network): a line chart,
 // a bar chart, an XY path coloured by a value, and the colour scale they share. Sizes in CSS px.

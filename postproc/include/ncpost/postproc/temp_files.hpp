@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Temporary files that must not outlive the run: the `.tmp.*` file of an output being written and
 // the spool of an input read from a pipe. Registered paths are removed when the process is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `post --tolerance MM [--nonlinear adaptive|harmonic]`: the post's Subdivider (post.hpp) built on
 // nonlinear_compensation.hpp. Blocks are cut on the machine the program is for: the nominal one,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The HTML report of `ncpost preview --html` on the TRR-XY machine: self-contained (inline SVG,
 // no scripts): summary, the nonlinear error of every feed block (exact and the harmonic model's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reports of `ncpost sensitivity` (spec trr-xy.md "Sensitivity map"): the JSON
 // {"dr_a": {"max_um": .., "min_um": .., "range_um": ..}, ...} for all 30 parameters in the order

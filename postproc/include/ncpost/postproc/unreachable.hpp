@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The message for a CL point the machine cannot reach (exit 3): the solver's reason, and for
 // "no solution within the axis limits" which axis of each solution leaves its travel, the value

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Built-in verification (`post --verify`): re-executes each emitted block as the control does
 // (linear interpolation in axis space of the rounded commands, conventions.md "Execution model")
