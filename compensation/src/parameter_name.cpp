@@ -72,7 +72,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
       s.kind = ParameterKind::squareness;
       return accept(s);
     }
-    return refuse("the squareness errors are EC0Y, EB0Z and EA0Z (conventions.md)");
+    return refuse("the squareness errors are EC0Y, EB0Z and EA0Z (docs/conventions.md)");
   }
   if (std::regex_match(name, g, harmonic)) {
     s.kind = ParameterKind::harmonic;
@@ -127,7 +127,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     s.component = g[1].str()[0] - 'x';
     return accept(s);
   }
-  return refuse("not an error parameter name of conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
+  return refuse("not an error parameter name of docs/conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
                 "EXX:t:-250, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
 }
 

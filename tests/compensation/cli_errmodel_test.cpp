@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ncpost plan → simulate → identify end to end, exit codes and atomic outputs (cli.md).
+// ncpost plan → simulate → identify end to end, exit codes and atomic outputs (docs/cli.md).
 #include <catch2/catch.hpp>
 
 #include "cli_run.hpp"

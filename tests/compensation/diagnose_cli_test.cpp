@@ -2,7 +2,7 @@
 // The worked example of compensation/DIAGNOSE.md on the command line: `ncpost plan` and
 // `ncpost simulate` make the public scenarios' measurements on a machine with a cyclic angular
 // error of C (ECC:h2) and a warm-up drift along Z that the analysis is not told about;
-// `ncpost identify` finds both, writes effects_added and fit (formats.md), and the report shows
+// `ncpost identify` finds both, writes effects_added and fit (docs/formats.md), and the report shows
 // the residual before and after. `--no-diagnose` keeps the basic model.
 #include <catch2/catch.hpp>
 

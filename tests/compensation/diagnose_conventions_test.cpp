@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The parameter kinds residual analysis adds behave as conventions.md says (sphere deviations,
+// The parameter kinds residual analysis adds behave as docs/conventions.md says (sphere deviations,
 // ballbar lengths, predicted through the error model exactly as identification predicts them):
 // squareness, scale, harmonic component errors relative to the set-up at home, reversal as a
 // play (static positions approached from above read command + b), drift zero at t = 0 and

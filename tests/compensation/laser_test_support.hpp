@@ -5,7 +5,7 @@
 // The truth: polynomial component errors (p1..p3, value·x^k, x in mm) of realistic sizes —
 // positioning tens of µm over the travel, straightness a few µm, angular errors 10–50 µrad —
 // squareness 20–50 µrad and reversal of a few µm. The machine frame M is defined by the axes
-// (conventions.md: x̂ = (1,0,0), ŷ in the XY plane), so the straightness of X in Y and Z and of Y
+// (docs/conventions.md: x̂ = (1,0,0), ŷ in the XY plane), so the straightness of X in Y and Z and of Y
 // in Z carry no least-squares slope over the measured targets (ISO 230-1 reference lines); the
 // other three straightnesses keep theirs, which the identification must move into squareness.
 #include <array>

@@ -18,7 +18,7 @@ using namespace ncpost::comp;
 namespace {
 
 const std::string kMachine = std::string(NCPOST_SOURCE_DIR) + "/machines/tsutsumi-zxfyac.toml";
-// The seed's eight deviations in ISO 230-1 names (conventions.md), with the seed's own names.
+// The seed's eight deviations in ISO 230-1 names (docs/conventions.md), with the seed's own names.
 const std::vector<std::pair<std::string, std::string>> kSeed = {
     {"EA0C", "alphaAY"}, {"EB0A", "betaAY"}, {"EC0A", "gammaAY"}, {"EB0C", "betaCA"},
     {"EX0C", "deltaxAY"}, {"EY0A", "deltayAY"}, {"EZ0A", "deltazAY"}, {"EY0C", "deltayCA"}};

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// TRR-XY sensitivity maps (spec trr-xy.md, seed 004 section 5): the seed's conclusions — angular
+// TRR-XY sensitivity maps (docs/trr-xy.md, seed 004 section 5): the seed's conclusions — angular
 // errors dominate position and length errors; chains b and c repeat chain a turned by 120° and
 // 240° — and the CLI's JSON and HTML.
 #include <catch2/catch.hpp>

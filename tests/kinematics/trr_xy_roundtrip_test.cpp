@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// TRR-XY kinematics (spec trr-xy.md): forward(inverse(x)) = x over the workspace, on the nominal
+// TRR-XY kinematics (docs/trr-xy.md): forward(inverse(x)) = x over the workspace, on the nominal
 // machine and on machines with random errors; two routes agree (closed-form home geometry,
 // nominal inverse against Newton forward); out-of-reach poses fail with a message.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The TRR-XY machine file (spec trr-xy.md "Machine file"): the shipped file loads with the seed's
+// The TRR-XY machine file (docs/trr-xy.md "Machine file"): the shipped file loads with the seed's
 // numbers; bad files fail with file, line and what was expected; the serial loader refuses it.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The ncpost executable: exit codes of spec/cli.md, atomic output, help for every subcommand.
+// The ncpost executable: exit codes of docs/cli.md, atomic output, help for every subcommand.
 #include <catch2/catch.hpp>
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // ncpost preview --csv on the public dome path: one row per feed block with the columns of
-// spec/cli.md, values equal to the library's exact nonlinear error of the same block.
+// docs/cli.md, values equal to the library's exact nonlinear error of the same block.
 #include <catch2/catch.hpp>
 
 #include <cstdlib>

@@ -2,7 +2,7 @@
 #pragma once
 // Subcommands of the ncpost executable, one per file. Each `add_*` registers its subcommand on
 // the app and sets `action` to the function that runs it when it is chosen.
-// Exit codes (spec/cli.md): 0 done, 1 usage, 2 bad input, 3 infeasible.
+// Exit codes (docs/cli.md): 0 done, 1 usage, 2 bad input, 3 infeasible.
 #include <CLI/CLI.hpp>
 
 #include <functional>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// `ncpost post` and `ncpost preview` on the TRR-XY machine (spec trr-xy.md): the serial
+// `ncpost post` and `ncpost preview` on the TRR-XY machine (docs/trr-xy.md): the serial
 // subcommands call these first; they run the TRR-XY path when --machine is a kind = "trr-xy" file.
 #include <cstdint>
 #include <optional>

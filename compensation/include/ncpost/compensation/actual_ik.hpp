@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Compensated inverse kinematics: the commands that make the *actual* machine (MachineModel)
-// put the tool tip on the CL point with the CL tool axis (conventions.md "Nominal closure", with
+// put the tool tip on the CL point with the CL tool axis (docs/conventions.md "Nominal closure", with
 // the error model in the chain). For `post --model` (issue 5).
 //
 // Method: Newton–Gauss from the nominal solution. Unknowns: the five commands (mm, rad).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Residual analysis (issue 6, cli.md `identify`): fit the basic model, then add by forward
+// Residual analysis (issue 6, docs/cli.md `identify`): fit the basic model, then add by forward
 // selection the named effects (diagnose_candidates.hpp) the residual asks for, refit, and report
 // before and after.
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The catalogue of candidate effects of residual analysis (issue 6; conventions.md "Effect
+// The catalogue of candidate effects of residual analysis (issue 6; docs/conventions.md "Effect
 // names"): each candidate is one named physical cause and the error parameters that express it
 // (parameter_name.hpp; values mm / rad / s).
 //

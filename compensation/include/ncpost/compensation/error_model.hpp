@@ -9,7 +9,7 @@
 // offsets, time). Its call operator is templated on the command scalar S, so the same model also
 // gives exact derivatives with respect to the commands (compensated inverse kinematics).
 //
-// Frames and units: every term is in M axes at home (mm, rad), conventions.md "Geometric errors":
+// Frames and units: every term is in M axes at home (mm, rad), docs/conventions.md "Geometric errors":
 //   location errors   → location_offset_mm / location_tilt_rad of the rotary axis
 //   squareness        → direction_offset: ŷ = (−EC0Y, 1, 0), ẑ = (EB0Z, −EA0Z, 1)
 //   component errors  → motion_mm (EX, EY, EZ) / motion_rad (EA, EB, EC) of the axis:

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // ErrorParameters: an ordered set of named error parameters (name → value, mm / rad / s), the
-// in-memory form of the `parameters` object of the model JSON (formats.md "Error model").
-// Names follow conventions.md; see parameter_name.hpp for the full list and units.
+// in-memory form of the `parameters` object of the model JSON (docs/formats.md "Error model").
+// Names follow docs/conventions.md; see parameter_name.hpp for the full list and units.
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Identification of error parameters from measurements (cli.md `identify`; seeds 000, 002):
+// Identification of error parameters from measurements (docs/cli.md `identify`; seeds 000, 002):
 // nonlinear least squares (Levenberg–Marquardt with Marquardt scaling) on the residuals of
 // residuals.hpp, Jacobians by automatic differentiation through the templated chain.
 //

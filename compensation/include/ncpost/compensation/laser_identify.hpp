@@ -7,7 +7,7 @@
 // Model: each of the 18 component error functions E<c><j> of a measured axis j is a table
 // (parameter_name.hpp `E<c><j>:t:<pos>`) with a node at every target of the axis and at home
 // (0), linear in between. The home node is 0 by definition (every error acts relative to home,
-// conventions.md "Set-up at home"; a constant of a table has no effect). Reversal of each axis
+// docs/conventions.md "Set-up at home"; a constant of a table has no effect). Reversal of each axis
 // (`reversal:<j>`) where the data have both approach directions.
 //
 // Fit: all readings of all lines at once, linear least squares iterated (Gauss–Newton) on the
@@ -22,7 +22,7 @@
 //
 // ISO 230-1 reference: squareness is not fitted; each straightness table's least-squares slope
 // over its nodes is moved into the squareness (x̂ = (1,0,0) and ŷ in the XY plane define M,
-// conventions.md):
+// docs/conventions.md):
 //   EC0Y = −(s_YX + s_XY),  EB0Z = s_XZ + s_ZX,  EA0Z = −(s_YZ + s_ZY)
 // with s_cj the slope of straightness E<c><j> (rad). The slopes of X (s_YX, s_ZX) and of Y in Z
 // (s_ZY) beyond that are a turn of the whole machine relative to M, which the straightness
@@ -78,7 +78,7 @@ bool all_laser(const std::vector<MeasurementSet>& sets);
 LaserIdentifyResult identify_laser(const Machine& machine, const std::vector<MeasurementSet>& sets,
                                    const LaserIdentifyOptions& options = {});
 
-/// The model file (formats.md): parameters, uncertainty, identifiability, fit, and an extra key
+/// The model file (docs/formats.md): parameters, uncertainty, identifiability, fit, and an extra key
 /// `laser` with the polynomials, ISO 230-1 straightness and ISO 230-2 figures.
 ModelFile laser_model_file(const Machine& machine, const LaserIdentifyResult& result);
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Laser interferometer readings predicted by the error model (conventions.md "Measurements",
-// formats.md laser CSV; issue 7). A reading is 1000 · the `component` of
+// Laser interferometer readings predicted by the error model (docs/conventions.md "Measurements",
+// docs/formats.md laser CSV; issue 7). A reading is 1000 · the `component` of
 // [table_T_tool(q) · tool_point − nominal] (µm), with the set-up at home, minus the same at the
 // first row of the run (the instrument is zeroed there).
 //

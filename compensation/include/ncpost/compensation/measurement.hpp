@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Measurement data and plans (formats.md "Measurement data (CSV)"; conventions.md
+// Measurement data and plans (docs/formats.md "Measurement data (CSV)"; docs/conventions.md
 // "Measurements"). A plan is a measurement set whose value columns are absent.
 //
 // Units: commands in mm and rad (degrees only in the file), time in s, values in mm for ballbar

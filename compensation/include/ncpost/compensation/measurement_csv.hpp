@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Reading and writing measurement CSV (formats.md "Measurement data (CSV)").
+// Reading and writing measurement CSV (docs/formats.md "Measurement data (CSV)").
 //
 // Reader: `# key: value` comment lines, a header, rows. Required keys per type (ballbar:
 // table_ball, tool_ball, bar_length; sphere: sphere; laser: component, tool_point), `tool_length`

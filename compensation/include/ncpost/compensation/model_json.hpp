@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The error model file (formats.md "Error model (JSON)"): written by `identify`, read by
+// The error model file (docs/formats.md "Error model (JSON)"): written by `identify`, read by
 // `post --model` and `simulate`. Parameters in mm / rad (names: parameter_name.hpp; component
 // errors of linear axes either as polynomial terms `EXX:p1` or as table nodes `EXX:t:-250`, the
 // value at that axis position, interpolated linearly — issue 7, compensation/LASER.md).

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One NC block as the control executes it, and its deviation from the CL data
-// (conventions.md "Execution model of an NC program"; seed 001, Zhang, Wang, Tang 2023).
+// (docs/conventions.md "Execution model of an NC program"; seed 001, Zhang, Wang, Tang 2023).
 //
 // A block goes from axis position q0 to q1; the control interpolates every axis linearly,
 // q(t) = q0 + t·(q1 − q0), t ∈ [0, 1] (no RTCP). The executed tool tip x(t) and tool axis a(t)

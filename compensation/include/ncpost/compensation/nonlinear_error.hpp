@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The exact nonlinear error of one block (conventions.md "Execution model of an NC program";
+// The exact nonlinear error of one block (docs/conventions.md "Execution model of an NC program";
 // seed 001): the largest distance (mm, W) of the executed tool tip from the straight CL segment,
 // where along the block it occurs (t ∈ [0, 1], linear in axis space), and the largest orientation
 // error (rad) between the executed tool axis and the normalised, linearly interpolated CL axis.

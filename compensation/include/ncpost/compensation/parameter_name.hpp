@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Error-parameter names (conventions.md "Geometric errors", "Effect names"; formats.md "Error
+// Error-parameter names (docs/conventions.md "Geometric errors", "Effect names"; docs/formats.md "Error
 // model") parsed into what they act on. Units of the values: mm for lengths, rad for angles, s for
 // time constants; polynomial terms are value · x^k with x in mm, harmonic terms value · cos/sin(k q).
 //
@@ -72,7 +72,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& machine
 /// The name of the table node of E<component><axis> at `at_mm` (e.g. "EXX:t:-275", "ECY:t:12.5").
 std::string table_parameter_name(char component, char axis, double at_mm);
 
-/// The effect a parameter belongs to (conventions.md "Effect names"): "ECC:h2" for "ECC:h2:cos",
+/// The effect a parameter belongs to (docs/conventions.md "Effect names"): "ECC:h2" for "ECC:h2:cos",
 /// "drift:Z:t" for "drift:Z:t:lin", "sphere:position" for "sphere:position:x", else the name.
 std::string effect_of(const std::string& name);
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Predictions of measurements by the error model (conventions.md "Measurements"), templated on
+// Predictions of measurements by the error model (docs/conventions.md "Measurements"), templated on
 // the parameter scalar P so that identification differentiates them exactly.
 //
 //   ballbar  L = | bed_T_tool(q)·tool_ball − bed_T_table(q)·table_ball | + ballbar:length      (mm)

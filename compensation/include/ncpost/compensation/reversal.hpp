@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Reversal (backlash) as a play / dead band (conventions.md "Geometric errors"): the actual
+// Reversal (backlash) as a play / dead band (docs/conventions.md "Geometric errors"): the actual
 // position of an axis with reversal width b follows
 //   actual_k = clamp(actual_{k-1}, command_k, command_k + b)
 // so that it equals the command while the command rises, command + b while it falls, and stands

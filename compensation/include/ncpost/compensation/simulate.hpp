@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Simulated measurements: a plan run on a machine described by error parameters (the truth),
-// with Gaussian noise (formats.md, cli.md `simulate`). Values in the file's units (mm; laser µm);
+// with Gaussian noise (docs/formats.md, docs/cli.md `simulate`). Values in the file's units (mm; laser µm);
 // the noise standard deviation is given in µm for every type.
 #include <cstdint>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The nonlinear error of one block on the TRR-XY machine (conventions.md "Execution model"):
+// The nonlinear error of one block on the TRR-XY machine (docs/conventions.md "Execution model"):
 // the control interpolates X, Y, U, V, W linearly between the block's end commands; the executed
 // tool tip (forward kinematics, trr_xy_forward.hpp, relative to the workpiece, in W) leaves the
 // straight CL segment between the end points. Measured in W (mm) as the distance from the

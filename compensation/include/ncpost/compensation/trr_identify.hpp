@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Identification of the TRR-XY error parameters (spec trr-xy.md, 30 parameters) from simulated
-// sphere probing (conventions.md "Measurements", sphere): at each probing pose (slider commands;
+// Identification of the TRR-XY error parameters (docs/trr-xy.md, 30 parameters) from simulated
+// sphere probing (docs/conventions.md "Measurements", sphere): at each probing pose (slider commands;
 // the XY table is error free, so its commands do not matter) a probe of stylus length L — the
 // probed point is fixed to the tool at (0, 0, −L) from the TCP at home, i.e. L mm further along
 // −axis — reads the sphere centre deviation (dx, dy, dz) = −(P_true − P_nominal) in M (mm).

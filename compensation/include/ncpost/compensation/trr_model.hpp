@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// TRR-XY error parameters in the model JSON (formats.md "Error model"; names of trr-xy.md:
+// TRR-XY error parameters in the model JSON (docs/formats.md "Error model"; names of docs/trr-xy.md:
 // `<param>_<chain>`, e.g. `dl_a`, in mm and rad). Parameters not in the file are zero.
 #include <string>
 

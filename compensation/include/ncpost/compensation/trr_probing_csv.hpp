@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Sphere-probing data of the TRR-XY machine in CSV (formats.md "Measurement data", an ncpost
+// Sphere-probing data of the TRR-XY machine in CSV (docs/formats.md "Measurement data", an ncpost
 // variant for this machine, documented in kinematics/TRR-XY.md):
 //   # type: sphere
 //   # machine: trr-xy

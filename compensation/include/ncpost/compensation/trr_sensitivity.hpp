@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Sensitivity maps of the TRR-XY machine (spec trr-xy.md "Sensitivity map", seed 004 section 5).
+// Sensitivity maps of the TRR-XY machine (docs/trr-xy.md "Sensitivity map", seed 004 section 5).
 //
 // Test surface: a hemisphere of radius 120 mm whose centre is the workpiece origin, at (0, 0, −300)
 // in M, finished with the tool normal to the surface for polar angles 0–30°. CL points on a grid

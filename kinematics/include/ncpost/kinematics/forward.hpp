@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Forward kinematics of the generic serial chain, with an optional error model
-// (conventions.md "Axes and chains" and "Geometric errors"; ISO 230-1 notation).
+// (docs/conventions.md "Axes and chains" and "Geometric errors"; ISO 230-1 notation).
 //
 // Written once, templated on the scalar S: double for posting and simulation, automatic
 // differentiation scalars for identification. The error model is a functor supplying, for each

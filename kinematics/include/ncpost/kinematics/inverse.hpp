@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Closed-form inverse kinematics of the nominal serial chain (conventions.md "Nominal closure"):
+// Closed-form inverse kinematics of the nominal serial chain (docs/conventions.md "Nominal closure"):
 //   (X, Y, Z) + T_t(q)·0 = T_w(q)·(workpiece_origin + p)   and   R_t(q)·e_z = R_w(q)·u
 // for table-table, head-head and head-table machines with any axis directions.
 //

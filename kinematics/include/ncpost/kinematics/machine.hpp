@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The nominal description of a serial machine tool: its axes and its structural chain
-// (ISO 10791-1 style, conventions.md "Axes and chains").
+// (ISO 10791-1 style, docs/conventions.md "Axes and chains").
 //
 // Frames and units: directions and pivots are given at home in M (mm). Head-axis pivots are
 // relative to the spindle gauge point (the job's tool length is added along +Z). Limits are in mm
@@ -80,7 +80,7 @@ struct ClPoint {
   Vec3d axis = Vec3d::UnitZ();
 };
 
-/// Job settings that place the workpiece and the tool (set up at home, conventions.md).
+/// Job settings that place the workpiece and the tool (set up at home, docs/conventions.md).
 struct Setup {
   Vec3d workpiece_origin_mm = Vec3d::Zero();  ///< origin of W in M at home
   double tool_length_mm = 0.0;                ///< places head pivots and the linear-axis reference point

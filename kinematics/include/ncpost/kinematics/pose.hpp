@@ -5,7 +5,7 @@
 //
 // Naming rule, used throughout ncpost: `a_T_b` maps the coordinates of a point given in frame b
 // to frame a, so that `a_T_b * b_T_c == a_T_c` and `a_T_b.apply(p_b) == p_a`.
-// Frames (conventions.md): M = machine program frame (bed), W = workpiece frame (fixed to the
+// Frames (docs/conventions.md): M = machine program frame (bed), W = workpiece frame (fixed to the
 // table). Lengths in mm, angles in radians.
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Forward kinematics of the TRR-XY machine (trr_xy_geometry.hpp, spec trr-xy.md "Forward
+// Forward kinematics of the TRR-XY machine (trr_xy_geometry.hpp, docs/trr-xy.md "Forward
 // kinematics"): from the slider commands (s_a, s_b, s_c) to the plate pose `machine_T_plate`
 // (plate frame: origin at the ball-joint plane centre P_c, axes R_p; the tool axis is R_p·e_z)
 // by Newton–Raphson on the three link lengths and the three pin-plane constraints, starting
 // from a previous pose (seed 004).
 //
-// Errors act relative to home (conventions.md "Setup at home"): the tool side moves by
+// Errors act relative to home (docs/conventions.md "Setup at home"): the tool side moves by
 // `machine_T_plate(s) · machine_T_plate(0)⁻¹`, where both are poses of the actual machine; the
 // TCP is where that transform takes the origin of M, the tool axis where it turns e_z. On the
 // nominal machine this is P_c − (hs + lt)·R_p·e_z and R_p·e_z.

@@ -5,7 +5,7 @@
 // about +Z: vertical ball screw, slider, pin joint, link, ball joint on the spindle plate) on
 // an XY table.
 //
-// Frame M (conventions.md): Z up along the spindle, origin at the TCP at home (all sliders at 0,
+// Frame M (docs/conventions.md): Z up along the spindle, origin at the TCP at home (all sliders at 0,
 // plate level and centred). Lengths in mm, angles in rad. Chain i has the radial unit vector
 // r_i = (cos θ_i, sin θ_i, 0) and the tangential t_i = (−sin θ_i, cos θ_i, 0).
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Inverse kinematics of the TRR-XY machine (spec trr-xy.md "Inverse kinematics"): a CL point p
+// Inverse kinematics of the TRR-XY machine (docs/trr-xy.md "Inverse kinematics"): a CL point p
 // with tool axis u (in W; the table only translates, so u is also the axis in M) →
 // X, Y (table) and U, V, W (sliders of chains a, b, c).
 //

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The error every reader of user input throws: it names the file, line and column, what was
-// expected and the offending text. The CLI maps it to exit code 2 (spec/cli.md).
+// expected and the offending text. The CLI maps it to exit code 2 (docs/cli.md).
 #include <stdexcept>
 #include <string>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Loading machine definitions (TOML, spec/formats.md "Machine definition") with validation.
+// Loading machine definitions (TOML, docs/formats.md "Machine definition") with validation.
 // Every error is an InputError naming the file, the line and what was expected.
 #include <string>
 

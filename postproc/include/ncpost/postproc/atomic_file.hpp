@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// An output file written atomically (spec/cli.md): the data go to a temporary file in the same
+// An output file written atomically (docs/cli.md): the data go to a temporary file in the same
 // folder, which `commit()` flushes and renames into place. Destroyed without commit (an error on
 // the way) or stopped by SIGINT/SIGTERM/SIGHUP, the temporary file is removed and an existing file
 // at the path is left untouched. Only regular files are written: a device, FIFO, socket or folder

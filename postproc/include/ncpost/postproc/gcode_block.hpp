@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One block (line) of an RS274-family program as written: its words, comments and markers,
-// before any meaning is applied (spec/formats.md "NC programs").
+// before any meaning is applied (docs/formats.md "NC programs").
 //
 // Lexical rules (the Spirit X3 grammar is in gcode_block_parser.cpp):
 //   block   := [ '/' ] [ name ] { comment | keyword | word } [ ';' text ] -- blanks anywhere between

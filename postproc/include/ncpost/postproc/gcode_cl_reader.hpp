@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// G-code input mapped back to CL records (spec/cli.md "post": INPUT may be G-code), streaming.
+// G-code input mapped back to CL records (docs/cli.md "post": INPUT may be G-code), streaming.
 //
-// Two kinds of program (conventions.md frames M and W):
+// Two kinds of program (docs/conventions.md frames M and W):
 //   machine-axis program: X Y Z and the rotary words are machine commands (no RTCP); each motion
 //     is mapped through the NOMINAL forward kinematics of the machine and job set-up to the tool
 //     tip and tool axis in W.

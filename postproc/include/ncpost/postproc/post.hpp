@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The post-processor: CL records in, NC blocks out (spec/cli.md `ncpost post`).
+// The post-processor: CL records in, NC blocks out (docs/cli.md `ncpost post`).
 //
 // Every CL motion becomes one block (circles and cycles are expanded into motions first), unless
 // a subdivider is given (`--tolerance`: the nonlinear error of each block is bounded). Commands

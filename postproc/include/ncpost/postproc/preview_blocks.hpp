@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// `ncpost preview` (spec/cli.md; issue 4): the nonlinear error of every block of a CL program as
+// `ncpost preview` (docs/cli.md; issue 4): the nonlinear error of every block of a CL program as
 // the post would write it without `--tolerance` (one G1 block per CL motion), streamed block by
 // block so that memory stays flat in the input size.
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The CSV of `ncpost preview --csv` (spec/cli.md): one row per previewed block,
+// The CSV of `ncpost preview --csv` (docs/cli.md): one row per previewed block,
 //   block,line,max_error_mm,at_t,harmonic_mm,orientation_error_deg,orientation_at_t,harmonic_residual_mm
 // (exact largest deviation from the straight CL segment in W and where along the block; the
 // harmonic model's Emax; the largest orientation error; how far the harmonic curve is from the

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The post-processor for the TRR-XY machine (spec trr-xy.md; cli.md `ncpost post`/`preview`):
+// The post-processor for the TRR-XY machine (docs/trr-xy.md; docs/cli.md `ncpost post`/`preview`):
 // CL records in, NC blocks with the words X Y (table) U V W (sliders of chains a, b, c) out.
 //
 // Every CL motion is solved by the TRR-XY inverse kinematics on `k` (the nominal machine, or

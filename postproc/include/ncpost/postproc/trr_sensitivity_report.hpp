@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Reports of `ncpost sensitivity` (spec trr-xy.md "Sensitivity map"): the JSON
+// Reports of `ncpost sensitivity` (docs/trr-xy.md "Sensitivity map"): the JSON
 // {"dr_a": {"max_um": .., "min_um": .., "range_um": ..}, ...} for all 30 parameters in the order
 // of the spec's table (chain a, b, c), the human table, and a self-contained HTML page (inline SVG,
 // no scripts) with each parameter's deviation map over the hemisphere seen from above (+Z up the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Built-in verification (`post --verify`): re-executes each emitted block as the control does
-// (linear interpolation in axis space of the rounded commands, conventions.md "Execution model")
+// (linear interpolation in axis space of the rounded commands, docs/conventions.md "Execution model")
 // through the forward kinematics, and measures the contour error (distance of the executed tool
 // tip from the straight CL segment, mm, in W) and the orientation error (angle between the executed
 // tool axis and the normalised linearly interpolated CL axis, rad).
