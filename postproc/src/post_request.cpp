@@ -81,7 +81,8 @@ std::string PostRequest::invalid() const {
 PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
   if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
   // the control interpolates the tool tip under RTCP: no tolerance unless asked for
-  const std::optional<double> tolerance_mm = r.rtcp && r.tolerance_is_default ? std::nullopt : r.tolerance_mm;
+  std::optional<double> tolerance_mm = r.tolerance_mm;
+  if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();
   const bool account = r.verify || r.verify_on.has_value();
 
   std::unique_ptr<comp::MachineModel> model;
