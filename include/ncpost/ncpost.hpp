@@ -4,7 +4,8 @@
 // target ncpost::ncpost). It brings in the version and the entry points a program needs to post
 // CL data as `ncpost post` does: the machine file loader, the error model file, the CL and G-code
 // readers, the solvers (nominal and compensated), the tolerance subdivider, the NC writer and its
-// dialects, and the post itself with its verification figures. The module headers
+// dialects, the post itself with its verification figures, and the entry point that does all of
+// `ncpost post` from a stream to a stream (ncpost::post, <ncpost/postproc/post_request.hpp>). The module headers
 // (<ncpost/kinematics/...>, <ncpost/machines/...>, <ncpost/compensation/...>, <ncpost/postproc/...>)
 // can be included one by one instead. Reference: docs/ (conventions, file formats, CLI).
 //
@@ -22,10 +23,13 @@
 #include "ncpost/postproc/actual_solver.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/cl_input.hpp"
 #include "ncpost/postproc/dialect.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/motion_solver.hpp"
 #include "ncpost/postproc/nc_writer.hpp"
 #include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/post_report.hpp"
+#include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/tolerance_subdivider.hpp"
 #include "ncpost/postproc/verify.hpp"

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <ostream>
 #include <vector>
 
 #include "ncpost/postproc/temp_files.hpp"
@@ -111,13 +112,20 @@ void AtomicFile::discard() {
   forget_temp_file(temp_path_);
 }
 
+AtomicFile::AtomicFile(std::ostream& sink) : path_("<stream>"), sink_(&sink) {}
+
 AtomicFile::~AtomicFile() {
-  if (to_stdout_ || committed_) return;
+  if (sink_ || to_stdout_ || committed_) return;
   if (file_) std::fclose(file_);
   discard();
 }
 
 void AtomicFile::write(std::string_view data) {
+  if (sink_) {
+    if (!sink_->write(data.data(), static_cast<std::streamsize>(data.size())))
+      throw FileError("cannot write the program: the output stream failed");
+    return;
+  }
   if (std::fwrite(data.data(), 1, data.size(), file_) != data.size()) {
     if (to_stdout_) throw FileError("cannot write to standard output: " + reason());
     throw FileError("cannot write '" + path_ + "': " + reason());
@@ -125,6 +133,10 @@ void AtomicFile::write(std::string_view data) {
 }
 
 void AtomicFile::commit() {
+  if (sink_) {
+    if (!sink_->flush()) throw FileError("cannot write the program: the output stream failed");
+    return;
+  }
   if (to_stdout_) {
     if (std::fflush(stdout) != 0) throw FileError("cannot write to standard output: " + reason());
     return;

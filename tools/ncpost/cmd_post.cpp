@@ -6,6 +6,8 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "commands.hpp"
 #include "file_checks.hpp"
@@ -13,16 +15,11 @@
 #include "model_input.hpp"
 #include "input_options.hpp"
 #include "number_checks.hpp"
+#include "atomic_ostream.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/executed_on.hpp"
-#include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/post_report.hpp"
-#include "ncpost/postproc/preview_blocks.hpp"
-#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "ncpost/postproc/post_request.hpp"
 #include "trr_commands.hpp"
-#include "ncpost/version.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -50,40 +47,6 @@ struct PostArgs {
   std::string input_path;  ///< in a run: the file read (the spool of standard input or a pipe)
 };
 
-/// The "before" of the account: the program with nominal commands, one block per CL motion,
-/// executed on the job's machine (the model's, or the nominal one).
-void account_before(const PostArgs& a, const LoadedJob& job, const comp::MachineModel* model, PostAccount& account) {
-  std::ifstream in(a.input_path, std::ios::binary);
-  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
-  auto reader = open_cl_reader(in, a.input, a.job, job);
-  const NominalSolver nominal(job.machine, job.setup);
-  std::unique_ptr<preview::BlockEvaluator> evaluator;
-  if (model)
-    evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
-                                                                                       model->errors());
-  else
-    evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
-  double sum = 0.0;
-  std::function<void(std::size_t)> progress;
-  if (::isatty(STDERR_FILENO))
-    progress = [](std::size_t n) { fmt::print(stderr, "\rmeasuring the uncompensated program: {} motions", n); };
-  try {
-    preview::run_preview(*reader, a.input, nominal, *evaluator, [&](const preview::BlockRow& row) {
-      const double e = row.exact.max_error_mm;
-      ++account.before_blocks;
-      sum += e;
-      if (e > account.before_max_mm) {
-        account.before_max_mm = e;
-        account.before_worst_line = row.line;
-      }
-      account.before_series.add(row.line, e);
-    }, progress);
-  } catch (const preview::PreviewInfeasible& e) {
-    throw Infeasible(e.what());
-  }
-  account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
-}
-
 /// --tolerance MM|none ("" = the default, kDefaultTolerance_mm).
 std::optional<double> tolerance_of(const std::string& text) {
   if (text.empty()) return kDefaultTolerance_mm;
@@ -105,125 +68,74 @@ int run_post(const PostArgs& given) {
   if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
                                  a.verify_on, a.output, a.input, a.input_path}))
     return *rc;
-  Dialect dialect;
+  PostRequest r;
   try {
-    dialect = dialect_named(a.dialect);
+    r.dialect = dialect_named(a.dialect);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--dialect: ") + e.what());
   }
   if (a.tolerance_mm && a.rtcp)  // given explicitly
     fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
-  const LoadedJob job = load_job(a.job);
-  std::unique_ptr<comp::MachineModel> model;
-  std::unique_ptr<MotionSolver> solver;
-  const ActualSolver* actual = nullptr;
+  LoadedJob job = load_job(a.job);
+  r.machine = std::move(job.machine);
+  r.machine_source = a.job.machine;
+  r.setup = job.setup;
+  r.input_name = a.input;
+  r.input_kind = input_kind_named(a.job.input_kind);
+  r.reader = reader_options(a.job);
   if (!a.model.empty()) {
-    const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
-    model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
-    auto s = std::make_unique<ActualSolver>(*model, job.setup);
-    // the uncompensated error of each CL point is measured only when something reports it
-    s->set_measure_uncompensated(a.verify || !a.report.empty() || !a.verify_on.empty());
-    actual = s.get();
-    solver = std::move(s);
-  } else {
-    solver = std::make_unique<NominalSolver>(job.machine, job.setup);
+    r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+    r.model_source = a.model;
   }
-  std::unique_ptr<comp::MachineModel> executing;  // --verify-on: the machine the program is re-executed on
-  if (!a.verify_on.empty())
-    executing = std::make_unique<comp::MachineModel>(job.machine, read_model_for(a.verify_on, job.machine, a.force_model).parameters);
-  std::ifstream in(a.input_path, std::ios::binary);
-  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
-  auto reader = open_cl_reader(in, a.input, a.job, job);
-
-  const bool account = a.verify || !a.report.empty() || executing;
-  PostAccount acc;
-  acc.input_name = a.input;
-  acc.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
-  acc.model_name = a.model;
-  acc.executed_on = !a.verify_on.empty() ? "the machine of " + a.verify_on
-                  : !a.model.empty()     ? "the machine of " + a.model + " (as compensated)"
-                                         : "the nominal machine";
-  acc.dialect_name = dialect.name;
-  acc.method_name = a.nonlinear;
-  acc.tolerance_mm = a.tolerance_mm.value_or(0.0);
-
-  PostOptions options;
-  options.rtcp = a.rtcp;
-  options.retract_mm = a.retract_mm;
-  options.native_arcs = a.model.empty();  // the actual machine would not follow the control's circle
-  options.native_cycles = a.model.empty();
-  options.verify = account;
-  options.threads = a.threads;
-  options.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
-                    : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
-                                           : PostOptions::FeedMode::automatic;
-  options.program_name = "NCPOST";
-  options.header_comments = {
-      fmt::format("ncpost {} from {}", ncpost::version_string, a.input),
-      fmt::format("machine {} ({})", job.machine.name, a.job.machine),
-      fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm, tool length {:.4f} mm", job.setup.workpiece_origin_mm.x(),
-                  job.setup.workpiece_origin_mm.y(), job.setup.workpiece_origin_mm.z(), job.setup.tool_length_mm),
-      fmt::format("model {}, tolerance {}", a.model.empty() ? "none (nominal machine)" : a.model,
-                  a.tolerance_mm ? fmt::format("{} mm ({}{})", *a.tolerance_mm, a.nonlinear,
-                                               a.tolerance.empty() ? ", the default" : "")
-                                 : std::string("none")),
-      a.rtcp ? std::string("RTCP: tool tip in the workpiece frame") : std::string("machine axes, no RTCP")};
-  if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
-
-  nonlinear::CompensationOptions comp;
-  if (a.tolerance_mm) {
-    comp.method = *nonlinear::method_named(a.nonlinear);
-    comp.tolerance_mm = *a.tolerance_mm;
-    options.take_up_reversal = true;
-    options.subdivide = make_tolerance_subdivider(job.machine, job.setup, *solver, actual, comp, dialect, a.input);
+  if (!a.verify_on.empty()) {
+    r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
+    r.verify_on_source = a.verify_on;
   }
+  r.tolerance_mm = tolerance_of(a.tolerance);
+  r.tolerance_is_default = a.tolerance.empty();
+  r.nonlinear = *nonlinear::method_named(a.nonlinear);
+  r.rtcp = a.rtcp;
+  r.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
+              : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
+                                     : PostOptions::FeedMode::automatic;
+  r.retract_mm = a.retract_mm;
+  r.threads = a.threads;
+  r.verify = a.verify || !a.report.empty();
   // progress only where someone watches: stderr on a terminal (and the program not on that terminal)
   const bool tty = ::isatty(STDERR_FILENO) && !(a.output == "-" && ::isatty(STDOUT_FILENO));
-  if (tty) options.progress = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };
+  if (tty) r.progress.posting = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };
+  r.progress.posted = [tty](const PostSummary& summary) {
+    if (tty) fmt::print(stderr, "\r\033[K");
+    for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
+  };
+  if (::isatty(STDERR_FILENO)) {
+    r.progress.measuring = [](std::size_t n) {
+      fmt::print(stderr, "\rmeasuring the uncompensated program: {} motions", n);
+    };
+    r.progress.measured = [] { fmt::print(stderr, "\r\033[K"); };
+  }
 
+  std::ifstream in(a.input_path, std::ios::binary);
+  if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
   AtomicFile out(a.output);
-  NcWriter writer(out, dialect, axis_letters(job.machine));
-  std::optional<ExecutedOn> verify_solver;
-  if (executing) verify_solver.emplace(*solver, *executing, job.setup);
-  const PostSummary summary = [&] {
-    try {
-      return post_program(*reader, a.input, verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver,
-                          writer, options);
-    } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
-      const std::string hint = reader->failure_hint();
-      if (hint.empty()) throw;
-      throw Infeasible(std::string(e.what()) + "\n  " + hint);
-    }
-  }();
-  if (tty) fmt::print(stderr, "\r\033[K");
-  for (const auto& n : summary.notices) fmt::print(stderr, "notice: {}\n", n);
-  acc.motions_in = summary.motions_in;
-  acc.blocks_out = summary.blocks_out;
-  acc.after = summary.verify;
-  acc.notices = summary.notices;
-  if (actual) {
-    acc.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
-    acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();
-  }
-  if (account && !a.rtcp) {
-    account_before(a, job, executing ? executing.get() : model.get(), acc);
-    if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
-  }
+  AtomicOstream program(out);
+  const PostResult result = post(in, program, r);
   // everything computed: now the files appear, all or none
   std::optional<AtomicFile> report;
   if (!a.report.empty()) {
     report.emplace(a.report);
-    report->write(render_post_html(acc));
+    report->write(render_post_html(result.account));
   }
   out.commit();
   if (report) report->commit();
+  const PostSummary& summary = result.summary;
   if (a.output != "-")
     fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (account) {
+  if (r.verify || r.verify_on) {
     if (a.rtcp)
       fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
     else
-      fmt::print(stderr, "{}", account_text(acc));
+      fmt::print(stderr, "{}", account_text(result.account));
   }
   if (report) fmt::print(stderr, "report written to {}\n", a.report);
   return 0;

@@ -4,11 +4,9 @@
 #include <fmt/format.h>
 
 #include <sstream>
-#include <string_view>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/cl_input.hpp"
 #include "number_checks.hpp"
 #include "terminal_text.hpp"
 
@@ -66,34 +64,7 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
 
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
                                            const LoadedJob& job) {
-  const cl::ReaderOptions ro = reader_options(o);
-  std::string kind = o.input_kind;
-  if (kind == "auto") {
-    std::string head(4096, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    in.clear();
-    in.seekg(0);
-    std::string_view body(head);
-    if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
-    if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
-      throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
-    kind = cl::looks_like_apt(head) ? "cl" : "gcode";
-  }
-  if (kind == "cl") return std::make_unique<cl::AptReader>(in, name, ro);
-  gcode::GcodeReaderOptions go;
-  go.default_inch = ro.default_inch;
-  go.circles = true;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
-  go.kind = o.input_kind == "machine" ? gcode::InputKind::machine
-          : o.input_kind == "rtcp"    ? gcode::InputKind::rtcp
-                                      : gcode::InputKind::automatic;
-  return std::make_unique<gcode::GcodeClReader>(in, name, job.machine, job.setup, go);
-}
-
-std::string axis_letters(const Machine& m) {
-  std::string s;
-  for (const Axis& a : m.axes) s += a.letter;
-  return s;
+  return ncpost::open_cl_reader(in, name, input_kind_named(o.input_kind), reader_options(o), job.machine, job.setup);
 }
 
 }  // namespace ncpost::cli

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "ncpost/kinematics/machine.hpp"
+#include "ncpost/postproc/cl_input.hpp"
 #include "ncpost/postproc/cl_record.hpp"
 
 namespace ncpost::cli {
@@ -35,7 +36,6 @@ cl::ReaderOptions reader_options(const JobOptions& o);
 /// Opens the reader for the input's kind (detected from the content unless forced).
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
                                            const LoadedJob& job);
-/// NC axis words of the machine, e.g. "XYZAC".
-std::string axis_letters(const Machine& m);
+// NC axis words of the machine: ncpost::axis_letters (ncpost/postproc/cl_input.hpp)
 
 }  // namespace ncpost::cli

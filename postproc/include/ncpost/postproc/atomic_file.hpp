@@ -7,6 +7,7 @@
 // at the path is refused (FileError, temp_files.hpp); a symbolic link is followed and its target
 // replaced (the link stays); a replaced file keeps its mode.
 #include <cstdio>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,9 @@ class AtomicFile {
   /// Opens a temporary file beside `path` (beside its target if it is a link); "-" writes to
   /// stdout (commit only flushes). FileError, naming the path and the reason, when it cannot.
   explicit AtomicFile(std::string path);
+  /// Writes into `sink` instead (the library entry point, post_request.hpp): nothing is renamed,
+  /// `commit` flushes the stream; FileError when the stream fails. `sink` must outlive this.
+  explicit AtomicFile(std::ostream& sink);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -39,6 +43,7 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
   bool committed_ = false;
   bool to_stdout_ = false;
+  std::ostream* sink_ = nullptr;
 };
 
 /// Checks, before anything is computed, that an AtomicFile could be made at `path`: FileError (with

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The reader of a post's input: APT CL data, or G-code (machine axes or tool tip under RTCP) read
+// back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
+// the first 4 KiB of the stream, which is then put back where it was: the stream must be seekable.
+#include <istream>
+#include <memory>
+#include <string>
+
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/postproc/cl_record.hpp"
+
+namespace ncpost {
+
+enum class InputKind {
+  automatic,  ///< CL data if the text looks like APT, else G-code of either kind (detected)
+  cl,         ///< APT CL data
+  machine,    ///< G-code with machine axis positions
+  rtcp,       ///< G-code with the tool tip in W and rotary angles (RTCP)
+};
+
+/// "auto", "cl", "machine", "rtcp" (the CLI words); std::invalid_argument otherwise.
+InputKind input_kind_named(const std::string& name);
+
+/// Opens the reader of `in` for its kind. InputError (naming `name`) when `automatic` finds an
+/// empty input. `machine` and `setup` read G-code back into CL points; they must outlive the reader.
+std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
+                                           const cl::ReaderOptions& options, const Machine& machine,
+                                           const Setup& setup);
+
+/// The NC axis words of the machine in chain order, e.g. "XYZAC".
+std::string axis_letters(const Machine& machine);
+
+}  // namespace ncpost

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The library entry point of `ncpost post` (docs/cli.md): CL data or G-code from a stream, the NC
+// program to a stream, with the policy of the command — the solver (nominal machine, or the actual
+// machine of an error model), the nonlinear-error tolerance (on by default, off under RTCP unless
+// asked for), native arcs and cycles only on the nominal machine, the program header, and the
+// before/after account of `--verify` (the plain post executed on the job's machine against the
+// written program re-executed on it). The `ncpost post` command only parses its arguments, reads
+// the files (machine, models) and calls `post`; a program from code gets the same program.
+//
+//   ncpost::PostRequest r;
+//   r.machine = ncpost::load_machine("machines/ac-trunnion.toml");
+//   r.machine_source = "machines/ac-trunnion.toml";
+//   r.setup.workpiece_origin_mm = {0, 0, 80};
+//   r.verify = true;
+//   std::ifstream in("samples/hemisphere_5axis.cls", std::ios::binary);
+//   std::ofstream out("hemisphere.nc", std::ios::binary);
+//   const ncpost::PostResult result = ncpost::post(in, out, r);
+//   // result.account.before_max_mm, result.account.after.max_contour_mm, result.summary.notices
+//
+// Units: mm and radians inside; CL data in the workpiece frame W (conventions.md).
+#include <cstddef>
+#include <functional>
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "ncpost/compensation/error_parameters.hpp"
+#include "ncpost/compensation/nonlinear_compensation.hpp"
+#include "ncpost/kinematics/machine.hpp"
+#include "ncpost/postproc/cl_input.hpp"
+#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/post_report.hpp"
+#include "ncpost/postproc/tolerance_subdivider.hpp"
+
+namespace ncpost {
+
+/// Progress and events of a run, each optional; called on the caller's thread.
+struct PostProgress {
+  std::function<void(std::size_t motions)> posting;    ///< every 4096 CL motions of the post
+  /// The program is written: its summary (notices known), before the account is measured.
+  std::function<void(const PostSummary& summary)> posted;
+  std::function<void(std::size_t motions)> measuring;  ///< every 4096 CL motions of the "before"
+  std::function<void()> measured;                      ///< the "before" is measured
+};
+
+struct PostRequest {
+  // the job
+  Machine machine;              ///< a serial machine (load_machine); TRR-XY machines: trr_post.hpp
+  std::string machine_source;   ///< where it came from (the machine file), named in the program header
+  Setup setup;                  ///< workpiece origin and tool length
+  // the input
+  std::string input_name = "<input>";  ///< the name in messages (file:line:col) and the program header
+  InputKind input_kind = InputKind::automatic;
+  cl::ReaderOptions reader;     ///< units of a file that does not say, unterminated files, NX MSYS
+  // the machine the program is for
+  std::optional<comp::ErrorParameters> model;  ///< the identified errors: a compensated program (`--model`)
+  std::string model_source;     ///< the model file, named in the header and the account
+  // the nonlinear error
+  /// Bound on every block's nonlinear error (mm, in W); nullopt: one block per CL motion.
+  std::optional<double> tolerance_mm = kDefaultTolerance_mm;
+  /// True when `tolerance_mm` is the default rather than asked for: then RTCP turns it off (the
+  /// control interpolates the tool tip) and the header says "the default".
+  bool tolerance_is_default = true;
+  nonlinear::Method nonlinear = nonlinear::Method::adaptive;
+  // the program
+  Dialect dialect = dialect_named("fanuc");
+  bool rtcp = false;            ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
+  PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
+  double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
+  int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same
+  std::string program_name = "NCPOST";
+  // verification
+  /// Re-execute the written program and measure the plain post (one block per CL motion, nominal
+  /// commands) on the same machine: PostResult::account. Implied by `verify_on`.
+  bool verify = false;
+  /// Re-execute on this machine instead of the model's (`--verify-on`, e.g. a simulated truth).
+  std::optional<comp::ErrorParameters> verify_on;
+  std::string verify_on_source;  ///< its file, named in the account
+  PostProgress progress;
+
+  /// Empty when the request can run, else what is wrong with it.
+  std::string invalid() const;
+};
+
+struct PostResult {
+  PostSummary summary;  ///< CL motions, blocks, notices, and (with verification) the written program re-executed
+  /// Names, counts and notices always; with verification the figures before and after (account_text,
+  /// render_post_html). Under RTCP nothing is re-executed (the control does the kinematics).
+  PostAccount account;
+  bool verified = false;  ///< the account holds the before/after figures
+};
+
+/// Posts `input` (read from where it stands; seekable: it is read again for the "before") into
+/// `program`. Throws InputError (bad input, naming input_name:line:col), Infeasible (a CL point
+/// the machine cannot reach, naming the line), FileError (`program` failed), std::invalid_argument
+/// (PostRequest::invalid()).
+PostResult post(std::istream& input, std::ostream& program, const PostRequest& request);
+
+}  // namespace ncpost

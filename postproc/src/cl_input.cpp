@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "ncpost/postproc/cl_input.hpp"
+
+#include <stdexcept>
+#include <string_view>
+
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/gcode_cl_reader.hpp"
+
+namespace ncpost {
+
+InputKind input_kind_named(const std::string& name) {
+  if (name == "auto") return InputKind::automatic;
+  if (name == "cl") return InputKind::cl;
+  if (name == "machine") return InputKind::machine;
+  if (name == "rtcp") return InputKind::rtcp;
+  throw std::invalid_argument("unknown input kind '" + name + "' (auto, cl, machine, rtcp)");
+}
+
+std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
+                                           const cl::ReaderOptions& options, const Machine& machine,
+                                           const Setup& setup) {
+  bool apt = kind == InputKind::cl;
+  if (kind == InputKind::automatic) {
+    const std::istream::pos_type start = in.tellg();
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    in.clear();
+    in.seekg(start);
+    std::string_view body(head);
+    if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
+    if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
+    apt = cl::looks_like_apt(head);
+  }
+  if (apt) return std::make_unique<cl::AptReader>(in, name, options);
+  gcode::GcodeReaderOptions go;
+  go.default_inch = options.default_inch;
+  go.circles = true;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
+  go.kind = kind == InputKind::machine ? gcode::InputKind::machine
+          : kind == InputKind::rtcp    ? gcode::InputKind::rtcp
+                                       : gcode::InputKind::automatic;
+  return std::make_unique<gcode::GcodeClReader>(in, name, machine, setup, go);
+}
+
+std::string axis_letters(const Machine& machine) {
+  std::string s;
+  for (const Axis& a : machine.axes) s += a.letter;
+  return s;
+}
+
+}  // namespace ncpost

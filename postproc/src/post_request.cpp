@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "ncpost/postproc/post_request.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "ncpost/compensation/machine_model.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/actual_solver.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/executed_on.hpp"
+#include "ncpost/postproc/nc_writer.hpp"
+#include "ncpost/postproc/preview_blocks.hpp"
+#include "ncpost/version.hpp"
+
+namespace ncpost {
+namespace {
+
+const char* method_word(nonlinear::Method m) { return m == nonlinear::Method::harmonic ? "harmonic" : "adaptive"; }
+
+/// The "before" of the account: the program with nominal commands, one block per CL motion,
+/// executed on the job's machine (the model's, or the nominal one), read again from `in` at `start`.
+void measure_before(std::istream& in, std::istream::pos_type start, const PostRequest& r,
+                    const comp::MachineModel* model, PostAccount& account) {
+  in.clear();
+  in.seekg(start);
+  if (!in) throw InputError({r.input_name, 0, 0}, "cannot read the input again (the stream is not seekable)");
+  auto reader = open_cl_reader(in, r.input_name, r.input_kind, r.reader, r.machine, r.setup);
+  const NominalSolver nominal(r.machine, r.setup);
+  std::unique_ptr<preview::BlockEvaluator> evaluator;
+  if (model)
+    evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), r.setup,
+                                                                                       model->errors());
+  else
+    evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(r.machine, r.setup);
+  double sum = 0.0;
+  try {
+    preview::run_preview(*reader, r.input_name, nominal, *evaluator, [&](const preview::BlockRow& row) {
+      const double e = row.exact.max_error_mm;
+      ++account.before_blocks;
+      sum += e;
+      if (e > account.before_max_mm) {
+        account.before_max_mm = e;
+        account.before_worst_line = row.line;
+      }
+      account.before_series.add(row.line, e);
+    }, r.progress.measuring);
+  } catch (const preview::PreviewInfeasible& e) {
+    throw Infeasible(e.what());
+  }
+  account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
+}
+
+std::vector<std::string> header_comments(const PostRequest& r, const std::optional<double>& tolerance_mm) {
+  const Vec3d& o = r.setup.workpiece_origin_mm;
+  return {fmt::format("ncpost {} from {}", ncpost::version_string, r.input_name),
+          fmt::format("machine {} ({})", r.machine.name, r.machine_source),
+          fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm, tool length {:.4f} mm", o.x(), o.y(), o.z(),
+                      r.setup.tool_length_mm),
+          fmt::format("model {}, tolerance {}", r.model ? r.model_source : std::string("none (nominal machine)"),
+                      tolerance_mm ? fmt::format("{} mm ({}{})", *tolerance_mm, method_word(r.nonlinear),
+                                                 r.tolerance_is_default ? ", the default" : "")
+                                   : std::string("none")),
+          r.rtcp ? std::string("RTCP: tool tip in the workpiece frame") : std::string("machine axes, no RTCP")};
+}
+
+}  // namespace
+
+std::string PostRequest::invalid() const {
+  if (machine.axes.empty()) return "no machine (load_machine)";
+  if (tolerance_mm && !(*tolerance_mm > 0 && std::isfinite(*tolerance_mm)))
+    return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
+  if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
+  if (threads < 1 || threads > 2) return fmt::format("threads: expected 1 or 2, got {}", threads);
+  return {};
+}
+
+PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
+  if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
+  // the control interpolates the tool tip under RTCP: no tolerance unless asked for
+  std::optional<double> tolerance_mm = r.tolerance_mm;
+  if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();
+  const bool account = r.verify || r.verify_on.has_value();
+
+  std::unique_ptr<comp::MachineModel> model;
+  std::unique_ptr<MotionSolver> solver;
+  const ActualSolver* actual = nullptr;
+  if (r.model) {
+    model = std::make_unique<comp::MachineModel>(r.machine, *r.model);
+    auto s = std::make_unique<ActualSolver>(*model, r.setup);
+    s->set_measure_uncompensated(account);  // the uncompensated error of each CL point, when reported
+    actual = s.get();
+    solver = std::move(s);
+  } else {
+    solver = std::make_unique<NominalSolver>(r.machine, r.setup);
+  }
+  std::unique_ptr<comp::MachineModel> executing;  // the machine the program is re-executed on
+  if (r.verify_on) executing = std::make_unique<comp::MachineModel>(r.machine, *r.verify_on);
+  const std::istream::pos_type start = input.tellg();
+  auto reader = open_cl_reader(input, r.input_name, r.input_kind, r.reader, r.machine, r.setup);
+
+  PostResult result;
+  PostAccount& acc = result.account;
+  acc.input_name = r.input_name;
+  acc.machine_name = fmt::format("{} ({})", r.machine.name, r.machine_source);
+  acc.model_name = r.model ? r.model_source : std::string();
+  acc.executed_on = r.verify_on ? "the machine of " + r.verify_on_source
+                  : r.model     ? "the machine of " + r.model_source + " (as compensated)"
+                                : "the nominal machine";
+  acc.dialect_name = r.dialect.name;
+  acc.method_name = method_word(r.nonlinear);
+  acc.tolerance_mm = tolerance_mm.value_or(0.0);
+
+  PostOptions options;
+  options.rtcp = r.rtcp;
+  options.retract_mm = r.retract_mm;
+  options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
+  options.native_cycles = !r.model;
+  options.verify = account;
+  options.threads = r.threads;
+  options.feed_mode = r.feed_mode;
+  options.program_name = r.program_name;
+  options.header_comments = header_comments(r, tolerance_mm);
+  options.progress = r.progress.posting;
+  if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
+  nonlinear::CompensationOptions comp;
+  if (tolerance_mm) {
+    comp.method = r.nonlinear;
+    comp.tolerance_mm = *tolerance_mm;
+    options.take_up_reversal = true;
+    options.subdivide = make_tolerance_subdivider(r.machine, r.setup, *solver, actual, comp, r.dialect, r.input_name);
+  }
+
+  AtomicFile out(program);
+  NcWriter writer(out, r.dialect, axis_letters(r.machine));
+  std::optional<ExecutedOn> verify_solver;
+  if (executing) verify_solver.emplace(*solver, *executing, r.setup);
+  try {
+    result.summary = post_program(*reader, r.input_name,
+                                  verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver, writer,
+                                  options);
+  } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
+    const std::string hint = reader->failure_hint();
+    if (hint.empty()) throw;
+    throw Infeasible(std::string(e.what()) + "\n  " + hint);
+  }
+  out.commit();  // flushes `program`
+  reader.reset();
+  if (r.progress.posted) r.progress.posted(result.summary);
+  acc.motions_in = result.summary.motions_in;
+  acc.blocks_out = result.summary.blocks_out;
+  acc.after = result.summary.verify;
+  acc.notices = result.summary.notices;
+  if (actual) {
+    acc.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
+    acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();
+  }
+  if (account && !r.rtcp) {
+    measure_before(input, start, r, executing ? executing.get() : model.get(), acc);
+    if (r.progress.measured) r.progress.measured();
+    result.verified = true;
+  }
+  return result;
+}
+
+}  // namespace ncpost
