@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
+#include "ncpost/machines/input_error.hpp"
 #include "record_blocks.hpp"
 
 namespace ncpost::trr {
@@ -65,12 +66,22 @@ class Poster {
     else writer_.block(fmt::format("T{} M6", t.number));
   }
   void on(const cl::Circle& c) { pending_circle_ = c; }
+  // Cycles and cutter compensation are not written on the TRR-XY machine: posting the hole
+  // positions as plain points, or the path without its offset, would cut a wrong part.
   void on(const cl::Cycle& c) {
     if (c.kind != cl::Cycle::Kind::off)
-      notice(c.where, "drilling cycles are not expanded on the TRR-XY machine: the hole positions are plain points");
+      throw InputError({input_, c.where.line, c.where.column},
+                       "drilling cycles are not posted on the TRR-XY machine (its holes would be plain points, never "
+                       "drilled): post the operation as explicit moves",
+                       "CYCLE/" + c.text);
   }
-  // Not yet acted on: passed through as a comment, as before this record had its own type.
-  void on(const cl::CutterComp& c) { records_.comment(cl::Comment{c.where, "CUTCOM/" + c.text}); }
+  void on(const cl::CutterComp& c) {
+    if (c.side != cl::CutterComp::Side::off)
+      throw InputError({input_, c.where.line, c.where.column},
+                       "cutter radius compensation is not posted on the TRR-XY machine: post the tool centre path "
+                       "without CUTCOM",
+                       "CUTCOM/" + c.text);
+  }
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::End&) {}
