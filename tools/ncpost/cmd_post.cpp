@@ -270,8 +270,8 @@ void add_post(CLI::App& app, Action& action) {
               if (v == n) return {};
             std::string list;
             for (const auto& n : builtin_dialect_names()) list += (list.empty() ? "" : ", ") + n;
-            return "expected a built-in dialect (" + list + ") or the path of a dialect file (with a '/' or "
-                   "ending in .toml)";
+            return "'" + v + "': expected a built-in dialect (" + list + ") or the path of a dialect file (with a "
+                   "'/' or ending in .toml)";
           },
           ""));
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")
