@@ -7,21 +7,6 @@
 namespace ncpost {
 namespace {
 
-// One row per dialect. '%' ends the tape (Fanuc, Haas) or starts a program header (Sinumerik
-// "%_N_"), so it is replaced everywhere. Parenthesis comments end at ')' and cannot nest (Fanuc,
-// Haas, LinuxCNC); ';' is the ISO end-of-block character and starts a comment in LinuxCNC. The
-// semicolon dialects (Sinumerik, Klartext) end a comment only at the end of the line, which no
-// sanitised text contains. 120 characters keep a comment block within every control's block
-// length (Fanuc reads 128-character comments on the screen, Klartext comment blocks hold 254).
-constexpr NcTextRules kRules[] = {
-    {"fanuc", "()%;", "[]  ", 120, 24},
-    {"haas", "()%;", "[]  ", 120, 24},
-    {"linuxcnc", "()%;", "[]  ", 120, 24},
-    {"sinumerik", "%;", "  ", 120, 24},
-    {"heidenhain", "%;", "  ", 120, 24},
-};
-constexpr NcTextRules kStrictest{"", "()%;", "[]  ", 120, 24};
-
 /// Length of the UTF-8 sequence that starts with `lead` (1 for a stray continuation byte).
 std::size_t utf8_length(unsigned char lead) {
   if (lead >= 0xF0 && lead < 0xF8) return 4;
@@ -32,16 +17,10 @@ std::size_t utf8_length(unsigned char lead) {
 
 }  // namespace
 
-const NcTextRules& nc_text_rules(std::string_view dialect) {
-  for (const NcTextRules& r : kRules)
-    if (r.dialect == dialect) return r;
-  return kStrictest;
-}
-
 std::string nc_comment_text(std::string_view text, const Dialect& dialect) {
-  const NcTextRules& rules = nc_text_rules(dialect.name);
+  const CommentRules& rules = dialect.comment_rules;
   std::string out;
-  out.reserve(std::min(text.size(), rules.max_comment_chars + 3));
+  out.reserve(std::min(text.size(), rules.max_chars + 3));
   for (std::size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c >= 0x80) {  // one '?' per character (code point), whatever its bytes
@@ -53,20 +32,20 @@ std::string nc_comment_text(std::string_view text, const Dialect& dialect) {
       continue;
     }
     char ch = c < 0x20 || c == 0x7F ? ' ' : static_cast<char>(c);
-    if (const auto at = rules.replaced.find(ch); at != std::string_view::npos) ch = rules.replacements[at];
+    if (const auto at = rules.replaced.find(ch); at != std::string::npos) ch = rules.replacements[at];
     out.push_back(ch);
     ++i;
   }
-  if (out.size() > rules.max_comment_chars) {  // keep both ends: a path's folder and its file name
-    const std::size_t head = (rules.max_comment_chars - 3) / 2;
-    const std::size_t tail = rules.max_comment_chars - 3 - head;
+  if (out.size() > rules.max_chars) {  // keep both ends: a path's folder and its file name
+    const std::size_t head = (rules.max_chars - 3) / 2;
+    const std::size_t tail = rules.max_chars - 3 - head;
     out = out.substr(0, head) + "..." + out.substr(out.size() - tail);
   }
   return out;
 }
 
 std::string nc_program_name(std::string_view name, const Dialect& dialect) {
-  const NcTextRules& rules = nc_text_rules(dialect.name);
+  const CommentRules& rules = dialect.comment_rules;
   std::string out;
   for (const char ch : name) {
     const auto c = static_cast<unsigned char>(ch);

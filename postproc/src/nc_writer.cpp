@@ -54,16 +54,14 @@ void NcWriter::block(const std::string& words) {
 
 void NcWriter::begin_program(const std::string& name, const std::vector<std::string>& header_comments) {
   program_name_ = nc_program_name(name, dialect_);
-  if (dialect_.klartext) {
-    block(fmt::format("BEGIN PGM {} MM", program_name_));
-    for (const auto& c : header_comments) comment(c);
-    return;
-  }
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
-  if (dialect_.name == "fanuc" || dialect_.name == "haas")
-    fmt::format_to(std::back_inserter(buf_), "O0001 ({})\n", program_name_);
-  for (const auto& c : header_comments) comment(c);
-  block(dialect_.name == "sinumerik" ? "G90 G71 G94 G17" : "G90 G21 G94 G17 G40 G49 G80");
+  for (const auto& words : dialect_.program_start) {
+    if (words == "{comments}") {
+      for (const auto& c : header_comments) comment(c);
+    } else {
+      block(with_value(words, "{program}", program_name_));
+    }
+  }
 }
 
 void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
@@ -261,13 +259,8 @@ void NcWriter::cycle(const NcCycle& c) {
 
 void NcWriter::end_program() {
   end_cycle();
-  if (dialect_.klartext) {
-    block(dialect_.program_end);
-    block(fmt::format("END PGM {} MM", program_name_));
-  } else {
-    block(dialect_.program_end);
-    if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
-  }
+  for (const auto& words : dialect_.program_end) block(with_value(words, "{program}", program_name_));
+  if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   flush();
 }
 

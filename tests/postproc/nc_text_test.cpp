@@ -66,7 +66,7 @@ TEST_CASE("nc_comment_text: the rules of each dialect") {
                     : "part) G0 Z-500 ( G0 Z-500  M30     x?m ? ?  end"));
     const std::string long_text = "from /a/very/long/folder/" + std::string(300, 'f') + "/part.cls";
     const std::string cut = nc_comment_text(long_text, d);
-    CHECK(cut.size() == nc_text_rules(name).max_comment_chars);
+    CHECK(cut.size() == d.comment_rules.max_chars);
     CHECK_THAT(cut, Catch::StartsWith("from /a/very/long/folder/") && Catch::EndsWith("/part.cls") &&
                         Catch::Contains("..."));
     CHECK(nc_program_name("my part\n%1", d) == "MYPART1");

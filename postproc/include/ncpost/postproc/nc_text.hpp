@@ -5,7 +5,8 @@
 // sanitiser of the program's dialect before it is written. Whatever the input, the result is one
 // line of printable ASCII that cannot end the comment, the block or the tape (README "Output
 // text"): control characters (newlines included) become spaces, non-ASCII characters '?', the
-// dialect's comment terminators and '%' are replaced, and the text is cut to the dialect's length.
+// dialect's comment terminators and '%' are replaced, and the text is cut to the dialect's length
+// (the rules: Dialect::comment_rules, from the dialect file's [comments]).
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -13,18 +14,6 @@
 #include "ncpost/postproc/dialect.hpp"
 
 namespace ncpost {
-
-/// How a dialect's comments may be written: characters replaced and the longest comment text.
-struct NcTextRules {
-  std::string_view dialect;
-  std::string_view replaced;      ///< characters that must not appear in a comment ...
-  std::string_view replacements;  ///< ... and what each becomes (same length as `replaced`)
-  std::size_t max_comment_chars;  ///< comment text length after sanitising (longer: its middle becomes "...")
-  std::size_t max_name_chars;     ///< program name length
-};
-
-/// The rules of the dialect named `dialect` (the strictest rules for a name not in the table).
-const NcTextRules& nc_text_rules(std::string_view dialect);
 
 /// `text` made safe as the text of one comment in `dialect`.
 std::string nc_comment_text(std::string_view text, const Dialect& dialect);

@@ -1,0 +1,32 @@
+(ncpost 0.1.0 from sample.apt)
+(machine ac-trunnion [ac-trunnion.toml])
+(workpiece origin 0.0000 0.0000 80.0000 mm, tool length 0.0000 mm)
+(model none [nominal machine], tolerance none)
+(RTCP: tool tip in the workpiece frame)
+G90 G21 G94 G17 G40 G49 G80
+(PARTNO GOLDEN DIALECTS)
+T1 M6
+G43 H1
+M428
+S2000 M3
+G0 X20.0000 Y0.0000 Z50.0000 A0.0000 C0.0000
+G94 G1 Z0.0000 F500.0
+G3 X0.0000 Y20.0000 Z0.0000 I-20.0000 J0.0000
+G0 Z25.0000
+M429
+G49
+T2 M6
+G43 H2
+M428
+S1500 M3
+X10.0000
+G98 G81 X10.0000 Y20.0000 Z-5.0000 R3.0000 F100.0
+X30.0000
+G80
+G0 Z40.0000
+G1 Z30.0000 A30.0000 F800.0
+Y0.0000 C90.0000
+G0 Z80.0000
+M429
+G49
+M2
