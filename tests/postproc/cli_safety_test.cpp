@@ -150,7 +150,9 @@ TEST_CASE("SIGTERM, SIGINT, SIGHUP remove the temporary file; the previous outpu
     // stdin from a pipe that stays open 30 s: the run is inside its input spool or its post
     // set -m: without job control bash starts background commands with SIGINT ignored
     script(f, "set -m\n" + std::string(NCPOST_BINARY) + " post --machine " + kMachine +
-                  " --tolerance 0.0001 --verify -o out.nc big.cls 2>/dev/null & p=$!; sleep 1\n" +
+                  " --tolerance 0.0001 --verify -o out.nc big.cls 2>/dev/null & p=$!\n" +
+                  // wait (up to 30 s: a loaded machine) until the run writes its temporary file
+                  "for i in $(seq 300); do ls | grep -q '[.]tmp[.]' && break; sleep 0.1; done\n" +
                   "ls | grep -c '[.]tmp[.]' > during.txt; kill -" + sig + " $p; wait $p; echo $? > rc.txt");
     CHECK(slurp(f / "during.txt") == "1\n");  // the run was writing when stopped
     CHECK(temp_files_in(f.dir) == 0);
@@ -160,7 +162,8 @@ TEST_CASE("SIGTERM, SIGINT, SIGHUP remove the temporary file; the previous outpu
   // the spool of standard input too (TMPDIR: the spool goes into this test's folder)
   write(f / "out.nc", "PREVIOUS\n");
   script(f, "export TMPDIR=$PWD; cat big.cls | (cat; sleep 30) | " + std::string(NCPOST_BINARY) + " post --machine " +
-                kMachine + " -o out.nc - 2>/dev/null & p=$!; sleep 1\n" +
+                kMachine + " -o out.nc - 2>/dev/null & p=$!\n" +
+                "for i in $(seq 300); do ls | grep -q ncpost-input && break; sleep 0.1; done\n" +
                 "ls | grep -c ncpost-input > during.txt; kill -TERM $p; wait $p; echo $? > rc.txt");
   CHECK(slurp(f / "during.txt") == "1\n");
   CHECK(std::atoi(slurp(f / "rc.txt").c_str()) > 128);
