@@ -222,6 +222,12 @@ class Poster {
     const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
+    if (inverse && !rapid && writer_.dialect().klartext)
+      // Klartext has no inverse-time feed: a G93 number written as F would run at the wrong feed
+      throw Infeasible(fmt::format(
+          "{}:{}: this move turns a rotary axis while the tool cuts, and the Heidenhain (Klartext) dialect has no "
+          "inverse-time feed (G93) for it: post with --rtcp (M128 keeps the tool-tip feed)",
+          input_, line));
     if (inverse) {
       // time of the block from the tool-tip path length; a pure reorientation runs its rotary
       // travel at the feed read as deg/min
