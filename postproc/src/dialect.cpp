@@ -84,6 +84,19 @@ std::string with_value(const std::string& words, const std::string& placeholder,
   return out.append(words, from, std::string::npos);
 }
 
+std::string without_word(const std::string& words, const std::string& placeholder) {
+  std::string out;
+  std::size_t from = 0;
+  while (from <= words.size()) {
+    std::size_t end = words.find(' ', from);
+    if (end == std::string::npos) end = words.size();
+    const std::string word = words.substr(from, end - from);
+    if (!word.empty() && word.find(placeholder) == std::string::npos) out += (out.empty() ? "" : " ") + word;
+    from = end + 1;
+  }
+  return out;
+}
+
 std::string with_tool(const std::string& words, int tool) { return with_value(words, "{tool}", std::to_string(tool)); }
 
 }  // namespace ncpost

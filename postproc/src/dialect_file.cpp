@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -68,6 +69,13 @@ class Section {
     return *v;
   }
 
+  /// A string in which `placeholders` are the only "{...}" allowed.
+  std::string text(const char* key, const std::set<std::string>& placeholders) const {
+    const std::string v = text(key);
+    check_placeholders(node(key), key, v, placeholders);
+    return v;
+  }
+
   /// A list of blocks; `placeholders` are the only "{...}" allowed in them.
   std::vector<std::string> blocks(const char* key, const std::set<std::string>& placeholders) const {
     const toml::node& n = node(key);
@@ -78,20 +86,19 @@ class Section {
       auto v = e.value_exact<std::string>();
       if (!v) throw wrong(e, key, "a string (one block)");
       check_printable(e, key, *v);
-      for (std::size_t open = v->find('{'); open != std::string::npos; open = v->find('{', open + 1)) {
-        const std::size_t close = v->find('}', open);
-        const std::string p = close == std::string::npos ? v->substr(open) : v->substr(open, close - open + 1);
-        if (!placeholders.count(p)) {
-          std::string list;
-          for (const auto& k : placeholders) list += (list.empty() ? "" : ", ") + k;
-          throw InputError(at(file_, e.source()),
-                           fmt::format("unknown placeholder '{}' in {} of [{}] (expected {})", p, key, name_,
-                                       list.empty() ? "none" : list));
-        }
-      }
+      check_placeholders(e, key, *v, placeholders);
       out.push_back(*v);
     }
     return out;
+  }
+
+  /// `placeholder` must appear in `blocks` (read from `key`): else the word it stands for would be lost.
+  void require(const char* key, const std::vector<std::string>& blocks, const std::string& placeholder,
+               const std::string& why) const {
+    for (const auto& b : blocks)
+      if (b.find(placeholder) != std::string::npos) return;
+    throw InputError(at(file_, node(key).source()),
+                     fmt::format("{} in [{}] names no {}: {}", key, name_, placeholder, why));
   }
 
   InputError wrong(const toml::node& n, const char* key, const std::string& expected) const {
@@ -99,6 +106,20 @@ class Section {
   }
 
  private:
+  void check_placeholders(const toml::node& n, const char* key, const std::string& v,
+                          const std::set<std::string>& placeholders) const {
+    for (std::size_t open = v.find('{'); open != std::string::npos; open = v.find('{', open + 1)) {
+      const std::size_t close = v.find('}', open);
+      const std::string p = close == std::string::npos ? v.substr(open) : v.substr(open, close - open + 1);
+      if (!placeholders.count(p)) {
+        std::string list;
+        for (const auto& k : placeholders) list += (list.empty() ? "" : ", ") + k;
+        throw InputError(at(file_, n.source()), fmt::format("unknown placeholder '{}' in {} of [{}] (expected {})", p,
+                                                            key, name_, list.empty() ? "none" : list));
+      }
+    }
+  }
+
   /// Text written into the program: printable ASCII, one line (a newline would be a block of its own).
   void check_printable(const toml::node& n, const char* key, const std::string& v) const {
     for (const char c : v)
@@ -113,9 +134,91 @@ class Section {
   const toml::table* t_ = nullptr;
 };
 
+/// A word written into a block: not empty.
+std::string word(const Section& s, const char* key) {
+  std::string v = s.text(key, {});
+  if (v.empty()) throw s.wrong(s.node(key), key, "a word (not empty)");
+  return v;
+}
+
+void read_blocks(const Section& s, Dialect& d) {
+  s.known({"line_numbers", "number_format", "number_start", "number_step", "number_comments", "linear_decimals",
+           "angle_decimals", "plus_sign"});
+  d.line_numbers = s.boolean("line_numbers");
+  d.numbers.format = s.text("number_format", {"{n}"});
+  if (d.numbers.format.find("{n}") == std::string::npos)
+    throw s.wrong(s.node("number_format"), "number_format", "the number's place \"{n}\", e.g. \"N{n} \"");
+  d.numbers.start = static_cast<long>(s.integer("number_start", 0, 99999));
+  d.numbers.step = static_cast<long>(s.integer("number_step", 1, 1000));
+  d.numbers.comments = s.boolean("number_comments");
+  d.linear_decimals = static_cast<int>(s.integer("linear_decimals", 0, 6));
+  d.angle_decimals = static_cast<int>(s.integer("angle_decimals", 0, 6));
+  d.motion.plus_sign = s.boolean("plus_sign");
+}
+
+void read_motion(const Section& s, Dialect& d) {
+  s.known({"rapid", "linear", "modal", "rapid_feed", "feed_letter", "feed_decimals", "feed_modal", "per_minute",
+           "inverse_time", "inverse_time_decimals"});
+  MotionWords& m = d.motion;
+  m.rapid = word(s, "rapid");
+  m.linear = word(s, "linear");
+  m.modal = s.boolean("modal");
+  if (m.modal && m.rapid == m.linear)
+    throw s.wrong(s.node("modal"), "modal", "false when rapid and linear are the same word (a rapid would not be "
+                                            "told from a feed move)");
+  m.rapid_feed = s.text("rapid_feed", {});
+  if (m.rapid == m.linear && m.rapid_feed.empty())
+    throw s.wrong(s.node("rapid_feed"), "rapid_feed", "a word (rapid and linear are the same word)");
+  m.feed_letter = word(s, "feed_letter");
+  m.feed_decimals = static_cast<int>(s.integer("feed_decimals", 0, 4));
+  m.feed_modal = s.boolean("feed_modal");
+  m.per_minute = s.text("per_minute", {});
+  m.inverse_time = s.text("inverse_time", {});
+  m.inverse_time_decimals = static_cast<int>(s.integer("inverse_time_decimals", 1, 6));
+}
+
+void read_arcs(const Section& s, Dialect& d) {
+  s.known({"native", "clockwise", "counter_clockwise", "planes", "centre_letters"});
+  if (!s.boolean("native")) return;
+  ArcWords a;
+  a.clockwise = word(s, "clockwise");
+  a.counter_clockwise = word(s, "counter_clockwise");
+  const std::vector<std::string> planes = s.blocks("planes", {});
+  if (planes.size() != 3) throw s.wrong(s.node("planes"), "planes", "three words: XY, ZX, YZ, e.g. [\"G17\", \"G18\", \"G19\"]");
+  for (std::size_t i = 0; i < 3; ++i) a.planes[i] = planes[i];
+  a.centre_letters = s.text("centre_letters", {});
+  if (a.centre_letters.size() != 3)
+    throw s.wrong(s.node("centre_letters"), "centre_letters", "three letters (along X, Y, Z), e.g. \"IJK\"");
+  d.arcs = a;
+}
+
+void read_spindle(const Section& s, Dialect& d, bool call_takes_speed) {
+  s.known({"start", "after_call", "stop", "clockwise", "counter_clockwise"});
+  SpindleWords& w = d.spindle;
+  w.start = s.blocks("start", {"{rpm}", "{turn}"});
+  s.require("start", w.start, "{rpm}", "the speed would not be written");
+  s.require("start", w.start, "{turn}", "the direction would not be written");
+  if (call_takes_speed) {
+    w.after_call = s.blocks("after_call", {"{rpm}", "{turn}"});
+    s.require("after_call", w.after_call, "{turn}", "the direction would not be written");
+  } else if (s.has("after_call")) {
+    throw s.wrong(s.node("after_call"), "after_call", "no such key: [tool] call names no {rpm}");
+  }
+  w.stop = s.blocks("stop", {});
+  w.clockwise = word(s, "clockwise");
+  w.counter_clockwise = word(s, "counter_clockwise");
+}
+
+void read_coolant(const Section& s, Dialect& d) {
+  s.known({"flood", "mist", "off"});
+  d.coolant.flood = s.blocks("flood", {});
+  d.coolant.mist = s.blocks("mist", {});
+  d.coolant.off = s.blocks("off", {});
+}
+
 void read_cycles(const Section& s, Dialect& d) {
   s.known({"native", "drill", "drill_dwell", "deep", "chip_break", "tap", "tap_left", "bore", "bore_dwell", "bore_drag",
-           "dwell_in_ms", "first_peck_ijk"});
+           "dwell_in_ms", "first_peck_ijk", "cancel", "return_initial", "return_r"});
   if (!s.boolean("native")) return;
   CycleWords w;
   w.drill = s.text("drill"), w.drill_dwell = s.text("drill_dwell"), w.deep = s.text("deep");
@@ -123,6 +226,9 @@ void read_cycles(const Section& s, Dialect& d) {
   w.bore = s.text("bore"), w.bore_dwell = s.text("bore_dwell"), w.bore_drag = s.text("bore_drag");
   w.dwell_in_ms = s.boolean("dwell_in_ms");
   w.first_peck_ijk = s.boolean("first_peck_ijk");
+  w.cancel = word(s, "cancel");
+  w.return_initial = word(s, "return_initial");
+  w.return_r = word(s, "return_r");
   d.cycles = w;
 }
 
@@ -167,12 +273,14 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   } catch (const toml::parse_error& e) {
     throw InputError(at(file, e.source()), std::string(e.description()));
   }
-  const std::set<std::string> sections{"dialect", "program", "blocks", "comments", "tool", "cycles", "dwell", "compensation"};
+  const std::vector<std::string> sections{"dialect", "program", "blocks",  "motion", "arcs",         "comments",
+                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation"};
   for (const auto& [key, node] : root)
-    if (!sections.count(std::string(key.str())))
-      throw InputError(at(file, key.source()),
-                       fmt::format("unknown section [{}] (expected dialect, program, blocks, comments, tool, cycles, "
-                                   "dwell, compensation)", key.str()));
+    if (std::find(sections.begin(), sections.end(), std::string(key.str())) == sections.end()) {
+      std::string list;
+      for (const auto& k : sections) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(at(file, key.source()), fmt::format("unknown section [{}] (expected {})", key.str(), list));
+    }
   Dialect d;
   d.file = file;
   const Section head(file, root, "dialect");
@@ -189,21 +297,22 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
       throw program.wrong(program.node("start"), "start", "\"{comments}\" as an entry of its own");
   d.program_end = program.blocks("end", {"{program}"});
 
-  const Section blocks(file, root, "blocks");
-  blocks.known({"line_numbers", "klartext", "linear_decimals", "angle_decimals"});
-  d.line_numbers = blocks.boolean("line_numbers");
-  d.klartext = blocks.boolean("klartext");
-  d.linear_decimals = static_cast<int>(blocks.integer("linear_decimals", 0, 6));
-  d.angle_decimals = static_cast<int>(blocks.integer("angle_decimals", 0, 6));
-
+  read_blocks(Section(file, root, "blocks"), d);
+  read_motion(Section(file, root, "motion"), d);
+  read_arcs(Section(file, root, "arcs"), d);
   read_comments(Section(file, root, "comments"), d);
 
   const Section tool(file, root, "tool");
   tool.known({"call", "length_on", "rtcp_on", "rtcp_off"});
-  d.tool_call = tool.blocks("call", {"{tool}"});
+  d.tool_call = tool.blocks("call", {"{tool}", "{rpm}"});
+  tool.require("call", d.tool_call, "{tool}", "the tool number would not be written");
   d.tool_length_on = tool.blocks("length_on", {"{tool}"});
   d.rtcp_on = tool.blocks("rtcp_on", {"{tool}"});
   d.rtcp_off = tool.blocks("rtcp_off", {"{tool}"});
+  bool call_takes_speed = false;
+  for (const auto& b : d.tool_call) call_takes_speed = call_takes_speed || b.find("{rpm}") != std::string::npos;
+  read_spindle(Section(file, root, "spindle"), d, call_takes_speed);
+  read_coolant(Section(file, root, "coolant"), d);
 
   read_cycles(Section(file, root, "cycles"), d);
   const Section dwell(file, root, "dwell");

@@ -9,7 +9,7 @@
 namespace ncpost {
 
 NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
-    : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)) {}
+    : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)), line_number_(dialect_.numbers.start) {}
 
 double NcWriter::rounded(int axis, double value) const {
   const int decimals = axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals;
@@ -20,10 +20,9 @@ double NcWriter::rounded(int axis, double value) const {
 }
 
 void NcWriter::start_line() {
-  if (dialect_.line_numbers) {
-    if (dialect_.klartext) fmt::format_to(std::back_inserter(buf_), "{} ", line_number_++);
-    else fmt::format_to(std::back_inserter(buf_), "N{} ", (++line_number_) * 10);
-  }
+  if (!dialect_.line_numbers) return;
+  buf_.append(with_value(dialect_.numbers.format, "{n}", std::to_string(line_number_)));
+  line_number_ += dialect_.numbers.step;
 }
 
 void NcWriter::end_line() {
@@ -37,7 +36,7 @@ void NcWriter::flush() {
 }
 
 void NcWriter::comment(const std::string& text) {
-  if (dialect_.klartext) start_line();
+  if (dialect_.numbers.comments) start_line();
   // every text from outside (file and machine names, PARTNO, PPRINT) arrives here: one sanitiser
   const std::string safe = nc_comment_text(text, dialect_);
   if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), "; {}", safe);
@@ -46,10 +45,66 @@ void NcWriter::comment(const std::string& text) {
 }
 
 void NcWriter::block(const std::string& words) {
-  if (active_cycle_ && words != "G80") end_cycle();
+  write_held("");
+  write_block(words);
+}
+
+void NcWriter::write_block(const std::string& words) {
+  if (active_cycle_ && words != dialect_.cycles->cancel) end_cycle();
   start_line();
   buf_.append(words);
   end_line();
+}
+
+void NcWriter::blocks(const std::vector<std::string>& list) {
+  for (const auto& words : list) block(words);
+}
+
+std::string NcWriter::rpm_text(double rpm) const { return rpm > 0.0 ? fmt::format("{:.0f}", rpm) : std::string(); }
+
+/// `words` with "{rpm}" as `rpm`, or without the word that names it when `rpm` is empty.
+static std::string with_rpm(const std::string& words, const std::string& rpm) {
+  return rpm.empty() ? without_word(words, "{rpm}") : with_value(words, "{rpm}", rpm);
+}
+
+void NcWriter::write_held(const std::string& rpm) {
+  if (!held_) return;
+  const std::vector<std::string> held = std::move(*held_);
+  held_.reset();
+  const std::string speed = rpm.empty() ? rpm_text(spindle_rpm_) : rpm;
+  for (const auto& words : held)
+    if (const std::string b = with_rpm(words, speed); !b.empty()) write_block(b);
+}
+
+void NcWriter::tool_change(const std::vector<std::string>& list) {
+  write_held("");
+  for (const auto& words : list)
+    if (words.find("{rpm}") != std::string::npos) {
+      held_ = list;
+      return;
+    }
+  for (const auto& words : list) write_block(words);
+}
+
+void NcWriter::spindle_on(double rpm, bool counter_clockwise) {
+  const SpindleWords& w = dialect_.spindle;
+  if (rpm > 0.0) spindle_rpm_ = rpm;
+  const std::string speed = rpm_text(spindle_rpm_);
+  const std::vector<std::string>* list = &w.start;
+  if (held_) {  // the speed goes into the tool call
+    write_held(speed);
+    list = &w.after_call;
+  }
+  for (const auto& words : *list) {
+    const std::string b = with_rpm(with_value(words, "{turn}", counter_clockwise ? w.counter_clockwise : w.clockwise), speed);
+    if (!b.empty()) write_block(b);
+  }
+}
+
+void NcWriter::spindle_stop() { blocks(dialect_.spindle.stop); }
+
+void NcWriter::spindle_turn(bool counter_clockwise) {
+  block(counter_clockwise ? dialect_.spindle.counter_clockwise : dialect_.spindle.clockwise);
 }
 
 void NcWriter::begin_program(const std::string& name, const std::vector<std::string>& header_comments) {
@@ -71,14 +126,16 @@ void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
 void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
 
 bool NcWriter::motion(const NcMotion& m) {
+  write_held("");
   if (active_cycle_) {
-    // G80 first if this motion writes a block (a move to where the tool is writes none)
+    // the cancel word first if this motion writes a block (a move to where the tool is writes none)
     bool moves = false;
     for (std::size_t i = 0; i < letters_.size(); ++i)
       if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
     if (!moves) return false;
     end_cycle();
   }
+  const MotionWords& w = dialect_.motion;
   const std::size_t line_start = buf_.size();
   const long number_before = line_number_;
   const auto saved_motion = last_motion_;
@@ -86,38 +143,19 @@ bool NcWriter::motion(const NcMotion& m) {
   const auto saved_feed = last_feed_;
   int words = 0;
   start_line();
-  auto out = std::back_inserter(buf_);
-  if (dialect_.klartext) {
-    buf_.append(std::string_view("L"));
-    for (std::size_t i = 0; i < letters_.size(); ++i) {
-      const double v = rounded(static_cast<int>(i), m.values[i]);
-      if (last_[i] && *last_[i] == v) continue;
-      buf_.push_back(' ');
-      buf_.push_back(letters_[i]);
-      append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, true);
-      last_[i] = v;
-      ++words;
-    }
-    if (words == 0) {
-      buf_.resize(line_start);
-      line_number_ = number_before;
-      return false;
-    }
-    if (m.rapid) buf_.append(std::string_view(" FMAX"));
-    else fmt::format_to(out, " F{:.0f}", m.feed);
-    end_line();
-    ++blocks_;
-    return true;
-  }
-  const int g = m.rapid ? 0 : 1;
-  std::string prefix;
+  const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
   if (!m.rapid && (!last_feed_mode_ || *last_feed_mode_ != m.feed_mode)) {
-    fmt::format_to(out, "{} ", m.feed_mode == NcMotion::FeedMode::inverse_time ? "G93" : "G94");
+    const std::string& mode = inverse ? w.inverse_time : w.per_minute;
+    if (!mode.empty()) {
+      buf_.append(mode);
+      buf_.push_back(' ');
+    }
     last_feed_mode_ = m.feed_mode;
     last_feed_.reset();
   }
-  if (!last_motion_ || *last_motion_ != g) {
-    fmt::format_to(out, "G{}", g);
+  const int g = m.rapid ? 0 : 1;
+  if (!w.modal || !last_motion_ || *last_motion_ != g) {
+    buf_.append(m.rapid ? w.rapid : w.linear);
     last_motion_ = g;
   }
   for (std::size_t i = 0; i < letters_.size(); ++i) {
@@ -125,7 +163,7 @@ bool NcWriter::motion(const NcMotion& m) {
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
     buf_.push_back(letters_[i]);
-    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals);
+    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, w.plus_sign);
     last_[i] = v;
     ++words;
   }
@@ -137,13 +175,16 @@ bool NcWriter::motion(const NcMotion& m) {
     last_feed_ = saved_feed;
     return false;
   }
-  if (!m.rapid) {
-    const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
-    if (inverse || !last_feed_ || std::abs(*last_feed_ - m.feed) > 1e-9) {
-      buf_.append(std::string_view(" F"));
-      append_fixed(buf_, m.feed, inverse ? 4 : 1);
-      last_feed_ = m.feed;
+  if (m.rapid) {
+    if (!w.rapid_feed.empty()) {
+      buf_.push_back(' ');
+      buf_.append(w.rapid_feed);
     }
+  } else if (inverse || !w.feed_modal || !last_feed_ || std::abs(*last_feed_ - m.feed) > 1e-9) {
+    buf_.push_back(' ');
+    buf_.append(w.feed_letter);
+    append_fixed(buf_, m.feed, inverse ? w.inverse_time_decimals : w.feed_decimals);
+    last_feed_ = m.feed;
   }
   end_line();
   ++blocks_;
@@ -151,37 +192,36 @@ bool NcWriter::motion(const NcMotion& m) {
 }
 
 void NcWriter::arc(const NcArc& a) {
+  write_held("");
   end_cycle();
   start_line();
-  if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
-    buf_.append(std::string_view("G94 "));
-    last_feed_mode_ = NcMotion::FeedMode::per_minute;
-    last_feed_.reset();
-  }
+  const ArcWords& words = *dialect_.arcs;  // the post writes arcs only in a dialect that has them
+  const MotionWords& w = dialect_.motion;
+  per_minute_mode();
   if (a.plane != plane_) {
-    fmt::format_to(std::back_inserter(buf_), "G{} ", a.plane);
+    buf_.append(words.planes[static_cast<std::size_t>(a.plane == 17 ? 0 : a.plane == 18 ? 1 : 2)]);
+    buf_.push_back(' ');
     plane_ = a.plane;
   }
-  const int g = a.clockwise ? 2 : 3;
-  fmt::format_to(std::back_inserter(buf_), "G{}", g);
-  last_motion_ = g;
+  buf_.append(a.clockwise ? words.clockwise : words.counter_clockwise);
+  last_motion_ = a.clockwise ? 2 : 3;
   for (std::size_t i = 0; i < 3; ++i) {
     const double v = rounded(static_cast<int>(i), a.end_mm[i]);
     buf_.push_back(' ');
     buf_.push_back(letters_[i]);
-    append_fixed(buf_, v, dialect_.linear_decimals);
+    append_fixed(buf_, v, dialect_.linear_decimals, w.plus_sign);
     last_[i] = v;
   }
-  static constexpr char kCentre[] = "IJK";
   for (int i = 0; i < 3; ++i) {
     if ((a.plane == 17 && i == 2) || (a.plane == 18 && i == 1) || (a.plane == 19 && i == 0)) continue;
     buf_.push_back(' ');
-    buf_.push_back(kCentre[i]);
-    append_fixed(buf_, a.centre_offset_mm[static_cast<std::size_t>(i)], dialect_.linear_decimals);
+    buf_.push_back(words.centre_letters[static_cast<std::size_t>(i)]);
+    append_fixed(buf_, a.centre_offset_mm[static_cast<std::size_t>(i)], dialect_.linear_decimals, w.plus_sign);
   }
-  if (!last_feed_ || std::abs(*last_feed_ - a.feed_mm_min) > 1e-9) {
-    buf_.append(std::string_view(" F"));
-    append_fixed(buf_, a.feed_mm_min, 1);
+  if (!w.feed_modal || !last_feed_ || std::abs(*last_feed_ - a.feed_mm_min) > 1e-9) {
+    buf_.push_back(' ');
+    buf_.append(w.feed_letter);
+    append_fixed(buf_, a.feed_mm_min, w.feed_decimals);
     last_feed_ = a.feed_mm_min;
   }
   end_line();
@@ -199,24 +239,33 @@ bool NcWriter::continues(const NcCycle& c, double return_z_mm) const {
   return !c.retract_to_r || rounded(2, c.r_plane_mm) == rounded(2, a.r_plane_mm);
 }
 
+void NcWriter::per_minute_mode() {
+  if (last_feed_mode_ && *last_feed_mode_ == NcMotion::FeedMode::per_minute) return;
+  if (!dialect_.motion.per_minute.empty()) {
+    buf_.append(dialect_.motion.per_minute);
+    buf_.push_back(' ');
+  }
+  last_feed_mode_ = NcMotion::FeedMode::per_minute;
+  last_feed_.reset();
+}
+
 void NcWriter::end_cycle() {
   if (!active_cycle_) return;
   active_cycle_.reset();
-  block("G80");
+  write_block(dialect_.cycles->cancel);
   last_motion_.reset();  // the next motion writes its G0/G1
 }
 
 void NcWriter::cycle(const NcCycle& c) {
+  write_held("");
+  const CycleWords& words = *dialect_.cycles;  // the post writes cycles only in a dialect that has them
   if (!continues(c, c.retract_to_r ? c.r_plane_mm : last_[2].value_or(c.r_plane_mm))) {
     end_cycle();
     start_line();
-    if (!last_feed_mode_ || *last_feed_mode_ != NcMotion::FeedMode::per_minute) {
-      buf_.append(std::string_view("G94 "));
-      last_feed_mode_ = NcMotion::FeedMode::per_minute;
-    }
+    per_minute_mode();
     // the initial level of G98 is where the tool stands now
     cycle_return_z_ = c.retract_to_r ? rounded(2, c.r_plane_mm) : last_[2].value_or(rounded(2, c.r_plane_mm));
-    fmt::format_to(std::back_inserter(buf_), "{} {}", c.retract_to_r ? "G99" : "G98", c.code);
+    fmt::format_to(std::back_inserter(buf_), "{} {}", c.retract_to_r ? words.return_r : words.return_initial, c.code);
     for (std::size_t i = 0; i < 3; ++i) {
       buf_.push_back(' ');
       buf_.push_back(letters_[i]);
@@ -225,8 +274,9 @@ void NcWriter::cycle(const NcCycle& c) {
     buf_.append(std::string_view(" R"));
     append_fixed(buf_, rounded(2, c.r_plane_mm), dialect_.linear_decimals);
     buf_.append(c.words);
-    buf_.append(std::string_view(" F"));
-    append_fixed(buf_, c.feed_mm_min, 1);
+    buf_.push_back(' ');
+    buf_.append(dialect_.motion.feed_letter);
+    append_fixed(buf_, c.feed_mm_min, dialect_.motion.feed_decimals);
     last_feed_ = c.feed_mm_min;
     active_cycle_ = c;
   } else {
@@ -258,8 +308,9 @@ void NcWriter::cycle(const NcCycle& c) {
 }
 
 void NcWriter::end_program() {
+  write_held("");
   end_cycle();
-  for (const auto& words : dialect_.program_end) block(with_value(words, "{program}", program_name_));
+  for (const auto& words : dialect_.program_end) write_block(with_value(words, "{program}", program_name_));
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   flush();
 }

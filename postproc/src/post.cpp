@@ -85,16 +85,16 @@ class Poster {
   /// length (or RTCP with the length) of the new tool (the dialect's words).
   void on(const cl::ToolChange& t) {
     const Dialect& d = writer_.dialect();
-    if (rtcp_on_) writer_.rtcp(false, tool_);
-    rtcp_on_ = false;
+    std::vector<std::string> blocks;
+    auto add = [&](const std::vector<std::string>& list, int tool) {
+      for (const auto& b : list) blocks.push_back(with_tool(b, tool));
+    };
+    if (rtcp_on_) add(d.rtcp_off, tool_);
     tool_ = t.number;
-    writer_.tool_blocks(d.tool_call, tool_);
-    if (options_.rtcp) {
-      writer_.rtcp(true, tool_);
-      rtcp_on_ = true;
-    } else {
-      writer_.tool_blocks(d.tool_length_on, tool_);
-    }
+    add(d.tool_call, tool_);
+    add(options_.rtcp ? d.rtcp_on : d.tool_length_on, tool_);
+    rtcp_on_ = options_.rtcp;
+    writer_.tool_change(blocks);
   }
 
   void on(const cl::Circle& c) { pending_circle_ = c; }
@@ -222,12 +222,13 @@ class Poster {
     const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
-    if (inverse && !rapid && writer_.dialect().klartext)
-      // Klartext has no inverse-time feed: a G93 number written as F would run at the wrong feed
+    if (inverse && !rapid && writer_.dialect().motion.inverse_time.empty())
+      // an inverse-time number written as a plain feed would run at the wrong feed
       throw Infeasible(fmt::format(
-          "{}:{}: this move turns a rotary axis while the tool cuts, and the Heidenhain (Klartext) dialect has no "
-          "inverse-time feed (G93) for it: post with --rtcp (M128 keeps the tool-tip feed)",
-          input_, line));
+          "{}:{}: this move turns a rotary axis while the tool cuts, and the {} dialect has no inverse-time feed "
+          "(G93) for it ([motion] inverse_time is empty in {}): post with --rtcp (the control's tool-tip control "
+          "keeps the feed)",
+          input_, line, writer_.dialect().name, writer_.dialect().file));
     if (inverse) {
       // time of the block from the tool-tip path length; a pure reorientation runs its rotary
       // travel at the feed read as deg/min
@@ -302,7 +303,7 @@ class Poster {
   /// circle axis) as one G2/G3 block, when the program's frame sees it in a principal plane; a
   /// helix (the end higher or lower along the axis) carries the third coordinate in the same block.
   bool native_arc(const cl::Circle& c, const cl::Motion& end, bool rapid, double angle) {
-    if (!options_.native_arcs || rapid || writer_.dialect().klartext || !have_position_) return false;
+    if (!options_.native_arcs || rapid || !writer_.dialect().arcs || !have_position_) return false;
     const Vec3d n = c.axis.normalized();
     const Vec3d start = previous_.cl.tip_mm, stop = end.point.tip_mm;
     if (previous_.cl.axis.cross(n).norm() > 1e-9 || end.point.axis.cross(n).norm() > 1e-9) return false;
@@ -366,13 +367,16 @@ class Poster {
     const RecordBlocks::Saved saved = records_.save();
     move_to(p.retract, m.where.line, true);
     for (const detail::HoleStep& s : detail::expand_hole(cycle_, p, feed, records_.spindle_ccw())) {
-      if (s.kind == detail::HoleStep::Kind::rapid || s.kind == detail::HoleStep::Kind::feed) {
+      using Kind = detail::HoleStep::Kind;
+      if (s.kind == Kind::rapid || s.kind == Kind::feed) {
         records_.set_feed(s.feed_mm_min > 0.0 ? s.feed_mm_min : feed);
-        move_to(s.to, m.where.line, s.kind == detail::HoleStep::Kind::rapid);
-      } else if (s.kind == detail::HoleStep::Kind::dwell) {
+        move_to(s.to, m.where.line, s.kind == Kind::rapid);
+      } else if (s.kind == Kind::dwell) {
         for (const std::string& b : dwell_blocks(writer_.dialect(), s.dwell_s)) writer_.block(b);
+      } else if (s.turn == detail::HoleStep::Turn::stop) {
+        writer_.spindle_stop();
       } else {
-        writer_.block(s.words);
+        writer_.spindle_turn(s.turn == detail::HoleStep::Turn::counter_clockwise);
       }
     }
     records_.restore(saved);

@@ -28,7 +28,7 @@ std::vector<HoleStep> expand_hole(const cl::Cycle& c, const HolePlanes& p, doubl
   auto below_r = [&](double d) { return ClPoint{p.r_plane.tip_mm - d * u, u}; };
   auto rapid = [&](const ClPoint& to) { s.push_back({HoleStep::Kind::rapid, to, 0.0, 0.0, {}}); };
   auto feed = [&](const ClPoint& to) { s.push_back({HoleStep::Kind::feed, to, feed_mm_min, 0.0, {}}); };
-  auto block = [&](std::string w) { s.push_back({HoleStep::Kind::block, {}, 0.0, 0.0, std::move(w)}); };
+  auto block = [&](HoleStep::Turn t) { s.push_back({HoleStep::Kind::spindle, {}, 0.0, 0.0, t}); };
   auto dwell = [&]() {
     if (c.dwell_s > 0.0) s.push_back({HoleStep::Kind::dwell, {}, 0.0, c.dwell_s, {}});
   };
@@ -53,8 +53,9 @@ std::vector<HoleStep> expand_hole(const cl::Cycle& c, const HolePlanes& p, doubl
     feed(p.bottom);
   }
   dwell();
-  const char* forward = spindle_ccw ? "M4" : "M3";
-  const char* reverse = spindle_ccw ? "M3" : "M4";
+  using Turn = HoleStep::Turn;
+  const Turn forward = spindle_ccw ? Turn::counter_clockwise : Turn::clockwise;
+  const Turn reverse = spindle_ccw ? Turn::clockwise : Turn::counter_clockwise;
   switch (c.kind) {
     case K::tap:
       block(reverse);  // the thread is followed out with the spindle reversed
@@ -65,7 +66,7 @@ std::vector<HoleStep> expand_hole(const cl::Cycle& c, const HolePlanes& p, doubl
       feed(p.r_plane);
       break;
     case K::bore_drag:
-      block("M5");
+      block(Turn::stop);
       rapid(p.r_plane);
       block(forward);
       break;

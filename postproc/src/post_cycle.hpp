@@ -24,11 +24,11 @@ HolePlanes hole_planes(const cl::Cycle& c, const ClPoint& hole);
 
 /// One explicit step of an expanded hole.
 struct HoleStep {
-  enum class Kind { rapid, feed, dwell, block } kind = Kind::rapid;
+  enum class Kind { rapid, feed, dwell, spindle } kind = Kind::rapid;
   ClPoint to;                 ///< rapid, feed
   double feed_mm_min = 0.0;   ///< feed
   double dwell_s = 0.0;       ///< dwell
-  std::string words;          ///< block: "M4", "M5", "M3"
+  enum class Turn { clockwise, counter_clockwise, stop } turn = Turn::stop;  ///< spindle (the dialect's words)
 };
 
 /// Retract of a chip-breaking peck (G73 style), mm; and the clearance above the previous depth at

@@ -28,17 +28,22 @@ class RecordBlocks {
     return notice;
   }
 
+  /// The dialect's spindle words (SpindleWords; a held tool call takes the speed).
   void spindle(const cl::Spindle& s) {
     if (s.direction == cl::Spindle::Direction::off) {
-      writer_.block("M5");
+      writer_.spindle_stop();
       return;
     }
     if (s.rpm > 0.0) spindle_rpm_ = s.rpm;
     spindle_ccw_ = s.direction == cl::Spindle::Direction::ccw;
-    writer_.block(fmt::format("S{:.0f} {}", spindle_rpm_, s.direction == cl::Spindle::Direction::ccw ? "M4" : "M3"));
+    writer_.spindle_on(spindle_rpm_, spindle_ccw_);
   }
 
-  void coolant(const cl::Coolant& c) { writer_.block(!c.on ? "M9" : c.mode == "MIST" ? "M7" : "M8"); }
+  /// The dialect's coolant words (CoolantWords).
+  void coolant(const cl::Coolant& c) {
+    const CoolantWords& w = writer_.dialect().coolant;
+    writer_.blocks(!c.on ? w.off : c.mode == "MIST" ? w.mist : w.flood);
+  }
   void comment(const cl::Comment& c) {
     if (!c.text.empty()) writer_.comment(c.text);
   }

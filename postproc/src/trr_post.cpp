@@ -61,9 +61,11 @@ class Poster {
   }
   void on(const cl::Spindle& s) { records_.spindle(s); }
   void on(const cl::Coolant& c) { records_.coolant(c); }
+  /// The dialect's tool call (the TRR-XY head carries the tool length in its kinematics).
   void on(const cl::ToolChange& t) {
-    if (writer_.dialect().klartext) writer_.block(fmt::format("TOOL CALL {} Z", t.number));
-    else writer_.block(fmt::format("T{} M6", t.number));
+    std::vector<std::string> blocks;
+    for (const auto& b : writer_.dialect().tool_call) blocks.push_back(with_tool(b, t.number));
+    writer_.tool_change(blocks);
   }
   void on(const cl::Circle& c) { pending_circle_ = c; }
   // Cycles and cutter compensation are not written on the TRR-XY machine: posting the hole

@@ -49,7 +49,7 @@ int post(const std::string& dir, const std::string& dialect, std::string* progra
 
 TEST_CASE("a user's copy of fanuc.toml with M99 and a header line writes that program", "[dialect][file]") {
   const std::string dir = test::make_temp_dir("dialect_file");
-  std::string text = replaced(kFanuc, "end = [\"M30\"]", "end = [\"M99\"]");
+  std::string text = replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M5\", \"M99\"]");
   text = replaced(text, "start = [\"O0001 ({program})\", ", "start = [\"O0001 ({program})\", \"(SHOP: CELL 4)\", ");
   const std::string mine = test::write_text_file(dir + "/my-fanuc.toml", text);
   std::string program, log, fanuc;
@@ -57,9 +57,13 @@ TEST_CASE("a user's copy of fanuc.toml with M99 and a header line writes that pr
   REQUIRE(post(dir, "fanuc", &fanuc, &log) == 0);
   // the same program but for the header line and the end
   std::string expected = replaced(fanuc, "O0001 (NCPOST)\n", "O0001 (NCPOST)\n(SHOP: CELL 4)\n");
-  expected = replaced(expected, "\nM30\n%\n", "\nM99\n%\n");
+  expected = replaced(expected, "\nM5\nM9\nG91 G28 Z0\nG90\nM30\n%\n", "\nM5\nM99\n%\n");
   CHECK(program == expected);
-  CHECK_THAT(program, Catch::StartsWith("%\nO0001 (NCPOST)\n(SHOP: CELL 4)\n") && Catch::EndsWith("G1 X10.0000 F400.0\nM99\n%\n"));
+  // the start and the end exactly: the edited blocks, then the built-in file's blocks
+  CHECK_THAT(program, Catch::StartsWith("%\nO0001 (NCPOST)\n(SHOP: CELL 4)\n(ncpost "));
+  CHECK_THAT(program, Catch::Contains(")\nG90 G21 G94 G17 G40 G49 G80\nT3 M6\nG43 H3\nG0 X"));
+  CHECK_THAT(program, Catch::EndsWith("\nG1 X10.0000 F400.0\nM5\nM99\n%\n"));
+  CHECK_THAT(fanuc, Catch::EndsWith("\nG1 X10.0000 F400.0\nM5\nM9\nG91 G28 Z0\nG90\nM30\n%\n"));
 }
 
 TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[dialect][file]") {
@@ -68,15 +72,32 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
     std::string from, to, message;
   };
   const Case cases[] = {
-      {"line_numbers = false", "line_numbers = false\nblock_skip = true", ":16:1: unknown key 'block_skip' in [blocks]"},
-      {"linear_decimals = 4", "linear_decimals = \"4\"", ":17:19: linear_decimals in [blocks]: expected an integer"},
-      {"angle_decimals = 4", "angle_decimals = 12", ":18:18: angle_decimals in [blocks] is 12: expected 0 to 6"},
-      {"end = [\"M30\"]", "end = \"M30\"", ":12:7: end in [program]: expected a list of blocks"},
-      {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 H{length}\"]", ":28:9: unknown placeholder '{length}'"},
+      {"line_numbers = false", "line_numbers = false\nblock_skip = true", ":18:1: unknown key 'block_skip' in [blocks]"},
+      {"linear_decimals = 4", "linear_decimals = \"4\"", ":22:19: linear_decimals in [blocks]: expected an integer"},
+      {"angle_decimals = 4", "angle_decimals = 12", ":23:18: angle_decimals in [blocks] is 12: expected 0 to 6"},
+      {"end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = \"M30\"",
+       ":14:7: end in [program]: expected a list of blocks"},
+      {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 H{length}\"]", ":53:9: unknown placeholder '{length}'"},
       {"replaced = \"()%;\"        # characters that must not appear in a comment ...\nreplacements = \"[]  \"",
-       "replaced = \"(%;\"\nreplacements = \"[  \"", ":22:12: replaced in [comments]: expected ')' among the characters"},
-      {"\n[dwell]", "\n[dwel]", ":47:2: unknown section [dwel]"},
+       "replaced = \"(%;\"\nreplacements = \"[  \"", ":47:12: replaced in [comments]: expected ')' among the characters"},
+      {"\n[dwell]", "\n[dwel]", ":86:2: unknown section [dwel]"},
       {"style = \"parentheses\"", "style = \"braces\"", "expected \"parentheses\" or \"semicolon\""},
+      // the words that were C++ before: motion, feed, block numbers, arcs, spindle, cycles
+      {"feed_modal = true", "feed_modal = \"yes\"", ":33:14: feed_modal in [motion]: expected true or false"},
+      {"rapid_feed = \"\"", "rapid_feed = \"\"\nrapid_word = \"G00\"", ":31:1: unknown key 'rapid_word' in [motion]"},
+      {"rapid = \"G0\"", "rapid = \"G1\"", ":29:9: modal in [motion]: expected false when rapid and linear are the same"},
+      {"feed_letter = \"F\"", "feed_letter = \"\"", ":31:15: feed_letter in [motion]: expected a word"},
+      {"number_format = \"N{n} \"", "number_format = \"N \"", ":18:17: number_format in [blocks]: expected the number's place"},
+      {"number_format = \"N{n} \"", "number_format = \"N{line} \"", ":18:17: unknown placeholder '{line}' in number_format"},
+      {"planes = [\"G17\", \"G18\", \"G19\"]", "planes = [\"G17\", \"G18\"]", ":42:10: planes in [arcs]: expected three words"},
+      {"cancel = \"G80\"", "cancel = 80", ":82:10: cancel in [cycles]: expected a string"},
+      // a missing placeholder would lose a word of the program
+      {"call = [\"T{tool} M6\"]", "call = [\"M6\"]", ":53:8: call in [tool] names no {tool}: the tool number would not be written"},
+      {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} M3\"]", ":59:9: start in [spindle] names no {turn}"},
+      {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} {turn}\"]\nafter_call = [\"{turn}\"]",
+       ":60:14: after_call in [spindle]: expected no such key: [tool] call names no {rpm}"},
+      {"inverse_time = \"G93\"     # inverse-time feed of simultaneous moves (\"\": none; such a cut then needs --rtcp)\n", "",
+       ":26:1: missing key 'inverse_time' in [motion]"},
   };
   for (const Case& c : cases) {
     INFO(c.to);

@@ -4,6 +4,7 @@
 // tool call, RTCP on with the new tool's length after it; without RTCP the tool's length offset.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -41,12 +42,13 @@ std::vector<std::string> tool_blocks(const std::string& dialect, bool rtcp) {
   }
   std::ifstream text(path);
   std::vector<std::string> blocks;
+  const std::vector<std::string>& end = dialect_named(dialect).program_end;  // M5 ... M30: not tool words
   for (std::string line; std::getline(text, line);) {
     if (dialect == "heidenhain") line = line.substr(line.find(' ') + 1);  // block number
     static const std::regex axis_word(R"([XYZAC][-+]?[0-9])");
     if (line.empty() || line[0] == '%' || line[0] == '(' || line[0] == ';' || line[0] == 'O' ||
         line.rfind("G90", 0) == 0 || line.rfind("BEGIN", 0) == 0 || line.rfind("END", 0) == 0 ||
-        std::regex_search(line, axis_word) || line == "M30" || line == "M2")
+        std::regex_search(line, axis_word) || std::find(end.begin(), end.end(), line) != end.end())
       continue;
     blocks.push_back(line);
   }

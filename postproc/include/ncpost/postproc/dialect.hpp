@@ -2,13 +2,18 @@
 #pragma once
 // NC program dialects: words, comments and program framing of the controls ncpost writes for,
 // as data read from a dialect file (postproc/dialects/<name>.toml, README "Dialect files"). The
-// post's C++ names no dialect: every difference between controls is a field here.
-// Output is ISO G-code (RS274 family) unless `klartext` (Heidenhain conversational L blocks).
+// post's C++ names no dialect: every difference between controls is a field here (motion words,
+// feed words, block numbers, spindle, coolant, cycle and arc words), so ISO G-code and Heidenhain
+// Klartext are two sets of data for one writer.
 //
 // Block lists are data: "{tool}" stands for the tool number (`with_tool`), "{program}" for the
-// program name, and an entry "{comments}" in `program_start` for the header comments. A tool change
-// writes `rtcp_off` (if RTCP is on), `tool_call`, then `tool_length_on` without RTCP or `rtcp_on`
-// with it, so every tool runs with its own length.
+// program name, "{rpm}" for the spindle speed, and an entry "{comments}" in `program_start` for the
+// header comments. A space-separated word whose placeholder has no value (no spindle speed yet) is
+// left out. A tool change writes `rtcp_off` (if RTCP is on), `tool_call`, then `tool_length_on`
+// without RTCP or `rtcp_on` with it, so every tool runs with its own length; when a block of the
+// tool call names "{rpm}", the change waits for the next spindle record and takes its speed
+// (Klartext `TOOL CALL 6 Z S2000`), the spindle then writes `SpindleWords::after_call`.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +30,9 @@ struct CycleWords {
   std::string drill, drill_dwell, deep, chip_break, tap, tap_left, bore, bore_dwell, bore_drag;
   bool dwell_in_ms = true;       ///< P in integer milliseconds (Fanuc, Haas), else seconds with decimals
   bool first_peck_ijk = false;   ///< G83 takes I (first peck), J (reduction), K (minimum peck): Haas
+  std::string cancel = "G80";          ///< ends the modal cycle
+  std::string return_initial = "G98";  ///< back to the level the cycle started from
+  std::string return_r = "G99";        ///< back to the R plane
   /// The word of this kind (with or without a dwell at the bottom), empty when not native.
   const std::string& word(const cl::Cycle& c) const;
 };
@@ -43,14 +51,61 @@ struct CommentRules {
   std::size_t max_name_chars = 24;    ///< program name length
 };
 
+/// Block numbers: `format` with "{n}" for the number, from `start` by `step` ("N10 ", "N20 ";
+/// Klartext "0 ", "1 ").
+struct BlockNumbers {
+  std::string format = "N{n} ";
+  long start = 10;
+  long step = 10;
+  bool comments = false;           ///< comment lines numbered too (Klartext)
+};
+
+/// Motion and feed words of straight blocks.
+struct MotionWords {
+  std::string rapid = "G0";        ///< the motion word of a rapid (Klartext "L")
+  std::string linear = "G1";       ///< the motion word of a feed move
+  bool modal = true;               ///< the motion word only when it changes, else on every block
+  std::string rapid_feed;          ///< word after the axes of a rapid (Klartext "FMAX"), empty: none
+  bool plus_sign = false;          ///< '+' before non-negative axis values (Klartext "X+20.0000")
+  std::string feed_letter = "F";
+  int feed_decimals = 1;           ///< mm/min
+  bool feed_modal = true;          ///< F only when it changes, else on every feed block
+  std::string per_minute = "G94";  ///< feed-per-minute mode word, empty: the only mode
+  std::string inverse_time = "G93";  ///< inverse-time mode word, empty: the dialect has none
+  int inverse_time_decimals = 4;   ///< 1/min
+};
+
+/// Circular blocks: G2/G3 with incremental centre words in a principal plane.
+struct ArcWords {
+  std::string clockwise = "G2", counter_clockwise = "G3";
+  std::array<std::string, 3> planes{"G17", "G18", "G19"};  ///< XY, ZX, YZ
+  std::string centre_letters = "IJK";                      ///< centre − start along X, Y, Z
+};
+
+/// Spindle words: "{rpm}" the speed, "{turn}" the `clockwise` or `counter_clockwise` word.
+struct SpindleWords {
+  std::vector<std::string> start{"S{rpm} {turn}"};  ///< a spindle record: speed and direction
+  std::vector<std::string> after_call;  ///< right after a tool call that took the speed ("{rpm}" in it)
+  std::vector<std::string> stop{"M5"};
+  std::string clockwise = "M3", counter_clockwise = "M4";
+};
+
+struct CoolantWords {
+  std::vector<std::string> flood{"M8"}, mist{"M7"}, off{"M9"};
+};
+
 struct Dialect {
   std::string name;
   std::string file;                ///< where it was read ("<built-in>/fanuc.toml" for an embedded copy)
   enum class Comments { parentheses, semicolon } comments = Comments::parentheses;
   CommentRules comment_rules;
   bool percent_framing = true;     ///< '%' first and last line
-  bool line_numbers = false;       ///< N words (Klartext: 0, 1, ...)
-  bool klartext = false;           ///< Heidenhain conversational (L X.. Y.. FMAX)
+  bool line_numbers = false;       ///< numbered blocks (`numbers`)
+  BlockNumbers numbers;
+  MotionWords motion;
+  std::optional<ArcWords> arcs;    ///< none: arcs are written as lines within the chord tolerance
+  SpindleWords spindle;
+  CoolantWords coolant;
   std::vector<std::string> program_start{"{comments}", "G90 G21 G94 G17 G40 G49 G80"};
   std::vector<std::string> program_end{"M30"};
   std::vector<std::string> tool_call{"T{tool} M6"};  ///< blocks of a tool change
@@ -83,5 +138,9 @@ std::string with_tool(const std::string& words, int tool);
 
 /// `words` with every `placeholder` replaced by `value`.
 std::string with_value(const std::string& words, const std::string& placeholder, const std::string& value);
+
+/// `words` with every space-separated word that names `placeholder` left out ("TOOL CALL 1 Z S{rpm}"
+/// before any spindle speed is "TOOL CALL 1 Z").
+std::string without_word(const std::string& words, const std::string& placeholder);
 
 }  // namespace ncpost

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Streams an NC program in a dialect: one motion per block, absolute (G90), metric (G21),
-// modal words written only when they change. Values arrive in output units (mm, deg) and are
-// rounded to the dialect's decimals here; `rounded()` gives the values the control will see.
+// Streams an NC program in a dialect: one motion per block, absolute, metric, in the words of the
+// dialect (dialect.hpp: motion and feed words, modal or not, block numbers, arc, cycle, spindle
+// and coolant words). Values arrive in output units (mm, deg) and are rounded to the dialect's
+// decimals here; `rounded()` gives the values the control will see.
 #include <array>
 #include <optional>
 #include <string>
@@ -34,9 +35,10 @@ struct NcArc {
 };
 
 /// One hole of a canned cycle along −Z of the program frame, output units (mm): `code` (G81,
-/// G83, ...: cycle_words.hpp) with G98 (back to the initial level, where the tool stands when the
-/// cycle starts) or G99 (back to the R plane). Holes that follow with the same code, words and
-/// return level continue the modal cycle (X Y only); anything else is written after G80.
+/// G83, ...: cycle_words.hpp) with the return word to the initial level (G98: where the tool
+/// stands when the cycle starts) or to the R plane (G99). Holes that follow with the same code,
+/// words and return level continue the modal cycle (X Y only); anything else is written after the
+/// cancel word (G80); CycleWords of the dialect.
 struct NcCycle {
   std::string code;
   bool retract_to_r = false;          ///< G99, else G98
@@ -64,12 +66,23 @@ class NcWriter {
   void cycle(const NcCycle& c);
   /// Blocks of the dialect's tool words (Dialect::tool_call, ...) for `tool`.
   void tool_blocks(const std::vector<std::string>& blocks, int tool);
+  /// The blocks of a tool change ("{tool}" already replaced). When one names "{rpm}" they wait
+  /// for the next spindle start, which puts its speed in them, or are written (with the speed in
+  /// force, or without the speed word) before the next block that is not a comment.
+  void tool_change(const std::vector<std::string>& blocks);
+  /// The spindle on at `rpm` (0: the speed in force), clockwise or not (SpindleWords).
+  void spindle_on(double rpm, bool counter_clockwise);
+  void spindle_stop();
+  /// The spindle's direction word alone (a tap reversing out of its hole).
+  void spindle_turn(bool counter_clockwise);
+  /// Each of `blocks` (no placeholders), e.g. the dialect's coolant words.
+  void blocks(const std::vector<std::string>& blocks);
   /// RTCP/TCPM on with the length of `tool`, or off.
   void rtcp(bool on, int tool);
   /// True if the hole continues the active modal cycle: same code, words, feed and return level,
   /// the tool at the return level (`return_z_mm`: the initial level for G98, the R plane for G99).
   bool continues(const NcCycle& c, double return_z_mm) const;
-  /// G80 if a cycle is active (every other block ends it by itself).
+  /// The cycle's cancel word (G80) if a cycle is active (every other block ends it by itself).
   void end_cycle();
   bool cycle_active() const { return active_cycle_.has_value(); }
   void end_program();
@@ -84,6 +97,13 @@ class NcWriter {
  private:
   void start_line();
   void end_line();
+  /// A block as is (no held tool change first).
+  void write_block(const std::string& words);
+  /// The held tool change, with `rpm` (empty: the speed in force, or none).
+  void write_held(const std::string& rpm);
+  std::string rpm_text(double rpm) const;
+  /// The feed-per-minute word if another feed mode is in force.
+  void per_minute_mode();
 
   AtomicFile& out_;
   Dialect dialect_;
@@ -96,6 +116,8 @@ class NcWriter {
   std::optional<double> last_feed_;
   std::size_t blocks_ = 0;
   long line_number_ = 0;
+  double spindle_rpm_ = 0.0;  ///< the speed in force (0: none yet)
+  std::optional<std::vector<std::string>> held_;  ///< a tool change waiting for the spindle's speed
   std::string program_name_;
   std::optional<NcCycle> active_cycle_;
   double cycle_return_z_ = 0.0;  ///< the level the active cycle returns to (rounded)
