@@ -62,8 +62,8 @@ TEST_CASE("a user's copy of fanuc.toml with M99 and a header line writes that pr
   // the start and the end exactly: the edited blocks, then the built-in file's blocks
   CHECK_THAT(program, Catch::StartsWith("%\nO0001 (NCPOST)\n(SHOP: CELL 4)\n(ncpost "));
   CHECK_THAT(program, Catch::Contains(")\nG90 G21 G94 G17 G40 G49 G80\nT3 M6\nG43 H3\nG0 X"));
-  CHECK_THAT(program, Catch::EndsWith("\nG1 X10.0000 F400.0\nM5\nM99\n%\n"));
-  CHECK_THAT(fanuc, Catch::EndsWith("\nG1 X10.0000 F400.0\nM5\nM9\nG91 G28 Z0\nG90\nM30\n%\n"));
+  CHECK_THAT(program, Catch::EndsWith("\nG94 G1 X10.0000 F400.0\nM5\nM99\n%\n"));
+  CHECK_THAT(fanuc, Catch::EndsWith("\nG94 G1 X10.0000 F400.0\nM5\nM9\nG91 G28 Z0\nG90\nM30\n%\n"));
 }
 
 TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[dialect][file]") {
@@ -124,7 +124,8 @@ TEST_CASE("built-in dialects: the embedded copies, or an edited copy in $NCPOST_
           d.program_end);
   }
   const std::string dir = test::make_temp_dir("dialect_env");
-  test::write_text_file(dir + "/fanuc.toml", replaced(kFanuc, "end = [\"M30\"]", "end = [\"M99\"]"));
+  test::write_text_file(dir + "/fanuc.toml",
+                        replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M99\"]"));
   std::string program, log;
   REQUIRE(post(dir, "fanuc", &program, &log, "NCPOST_DIALECT_DIR='" + dir + "' ") == 0);
   CHECK_THAT(program, Catch::EndsWith("\nM99\n%\n"));
