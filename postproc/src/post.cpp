@@ -437,9 +437,10 @@ class Poster {
     const SourcePosition at{input_, c.where.line, c.where.column};
     const auto words = comp_words(writer_.dialect());
     if (!words)
-      throw InputError(at, fmt::format("CUTCOM: ncpost writes no radius compensation in the {} dialect; post with "
-                                       "fanuc, haas, linuxcnc or sinumerik, or post the path without CUTCOM",
-                                       writer_.dialect().name), "CUTCOM/" + c.text);
+      throw InputError(at, fmt::format("CUTCOM: the {} dialect writes no radius compensation ([compensation] native "
+                                       "= false in {}); post with a dialect that has it, or post the path without "
+                                       "CUTCOM",
+                                       writer_.dialect().name, writer_.dialect().file), "CUTCOM/" + c.text);
     comp_ = c;
     if (c.side == cl::CutterComp::Side::off) {
       writer_.block(words->off);
