@@ -122,6 +122,7 @@ std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const Setup&
   const std::regex word(R"(([XYZ])\s*(-?[0-9]*\.?[0-9]+))");
   while (std::getline(nc, line)) {
     line = std::regex_replace(line, std::regex(R"(\([^)]*\))"), "");
+    if (line.find("G28") != std::string::npos) continue;  // the program end's return to the reference point
     bool any = false;
     for (auto it = std::sregex_iterator(line.begin(), line.end(), word); it != std::sregex_iterator(); ++it) {
       modal[(*it)[1].str()[0] - 'X'] = std::stod((*it)[2].str());

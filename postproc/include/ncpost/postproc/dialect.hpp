@@ -133,14 +133,14 @@ Dialect dialect_named(const std::string& name_or_path);
 /// The dialect described by `text` (TOML), read from `file` (for messages); InputError if invalid.
 Dialect parse_dialect(const std::string& text, const std::string& file);
 
+/// `words` with every space-separated word that names `placeholder` left out ("TOOL CALL 1 Z S{rpm}"
+/// before any spindle speed is "TOOL CALL 1 Z").
+std::string without_word(const std::string& words, const std::string& placeholder);
+
 /// `words` with every "{tool}" replaced by the tool number.
 std::string with_tool(const std::string& words, int tool);
 
 /// `words` with every `placeholder` replaced by `value`.
 std::string with_value(const std::string& words, const std::string& placeholder, const std::string& value);
-
-/// `words` with every space-separated word that names `placeholder` left out ("TOOL CALL 1 Z S{rpm}"
-/// before any spindle speed is "TOOL CALL 1 Z").
-std::string without_word(const std::string& words, const std::string& placeholder);
 
 }  // namespace ncpost
