@@ -96,6 +96,8 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
       {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} M3\"]", ":59:9: start in [spindle] names no {turn}"},
       {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} {turn}\"]\nafter_call = [\"{turn}\"]",
        ":60:14: after_call in [spindle]: expected no such key: [tool] call names no {rpm}"},
+      // a tool call that takes the speed (Klartext TOOL CALL 6 Z S2000) needs the blocks after it
+      {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 S{rpm}\"]", ":58:1: missing key 'after_call' in [spindle]"},
       {"inverse_time = \"G93\"     # inverse-time feed of simultaneous moves (\"\": none; such a cut then needs --rtcp)\n", "",
        ":26:1: missing key 'inverse_time' in [motion]"},
   };
