@@ -44,7 +44,7 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   AxisExport out;
   out.axis_index = m.index_of(letter);
   if (out.axis_index < 0)
-    throw std::invalid_argument(fmt::format("the machine '{}' has no axis {} (its axes: {})", m.name, letter,
+    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("the machine '{}' has no axis {} (its axes: {})", m.name, letter,
                                             [&] {
                                               std::string s;
                                               for (const Axis& a : m.axes) s += a.letter;
@@ -104,7 +104,7 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
     for (int c = 1; c < 3; ++c)
       if (std::abs(axis.direction[c]) > std::abs(axis.direction[dominant])) dominant = c;
     const std::string own = out.rotary ? fmt::format("E{}{}", char('A' + dominant), letter) : fmt::format("E{}{}", letter, letter);
-    throw std::invalid_argument(fmt::format("the model has no positioning error ({}) and no reversal (reversal:{}) of "
+    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("the model has no positioning error ({}) and no reversal (reversal:{}) of "
                                             "axis {}: there is nothing for a one-axis table to hold",
                                             own, letter, letter));
   }
@@ -123,7 +123,7 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
     out.travel_min = out.model_nodes.empty() ? 0.0 : out.model_nodes.front();
     out.travel_max = out.model_nodes.empty() ? 0.0 : out.model_nodes.back();
   } else {
-    throw std::invalid_argument(fmt::format(
+    throw ExportRefusal(ExportRefusal::Source::machine, fmt::format(
         "axis {} has no limits in the machine file and its error is a polynomial, which grows without "
         "bound beyond any table: add `limits = [MIN, MAX]` (mm) to [axes.{}] so that the table covers the travel",
         letter, letter));
@@ -181,7 +181,7 @@ std::vector<double> export_nodes(const AxisExport& axis, int max_nodes) {
   nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) < 1e-9 * scale; }),
               nodes.end());
   if (static_cast<int>(nodes.size()) > max_nodes)
-    throw std::invalid_argument(fmt::format("axis {} needs {} nodes, more than the {} the table can hold", axis.letter,
+    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("axis {} needs {} nodes, more than the {} the table can hold", axis.letter,
                                             nodes.size(), max_nodes));
   return nodes;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_machine.hpp"
 
+#include "ncpost/compensation/export_axis_table.hpp"
+
 #include <fmt/format.h>
 
 #include <set>
@@ -51,7 +53,7 @@ MachineExport corrected_machine(const MachineModel& model) {
     }
   }
   if (location.empty())
-    throw std::invalid_argument(
+    throw ExportRefusal(ExportRefusal::Source::model, 
         "the model has no location error of a rotary axis (EX0C, EY0C, EA0C, EB0C, ...): there is nothing to "
         "write into the machine file");
   const MachineModel located(m, location);

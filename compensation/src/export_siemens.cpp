@@ -39,7 +39,7 @@ SiemensLecTable siemens_lec_table(const MachineModel& model, char letter) {
   table.axis = describe_axis_export(model, letter);
   AxisExport& a = table.axis;
   if (!a.has_positioning)
-    throw std::invalid_argument(fmt::format(
+    throw ExportRefusal(ExportRefusal::Source::model, fmt::format(
         "the model has only a reversal of {}: a SINUMERIK LEC table is one for both directions and cannot hold it "
         "(export it with --format linuxcnc, or enter it as the control's backlash, MD32450)",
         letter));

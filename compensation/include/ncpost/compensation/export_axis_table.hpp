@@ -12,12 +12,20 @@
 // Everything else acting on the axis (straightness, roll/pitch/yaw, radial and tilt motions,
 // location errors, squareness) is "left out": listed for the caller to print and to write into
 // the exported file. Units: mm / rad inside, as everywhere.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "ncpost/compensation/machine_model.hpp"
 
 namespace ncpost::comp {
+
+/// Why an export cannot be made, and which input is at fault (the model, or the machine file).
+struct ExportRefusal : std::invalid_argument {
+  enum class Source { model, machine };
+  ExportRefusal(Source s, const std::string& what) : std::invalid_argument(what), source(s) {}
+  Source source;
+};
 
 /// One axis of a model, as the exporters see it.
 struct AxisExport {
@@ -36,7 +44,7 @@ struct AxisExport {
   int other_axis_terms = 0;           ///< machine terms of the other axes (not in a one-axis table)
 };
 
-/// Describes axis `letter` of the model. Throws std::invalid_argument with the reason when the
+/// Describes axis `letter` of the model. Throws ExportRefusal with the reason when the
 /// machine has no such axis, or the model has no positioning error and no reversal for it (nothing
 /// to export), or a linear axis whose error is not a table needs limits the machine file lacks.
 AxisExport describe_axis_export(const MachineModel& model, char letter);
