@@ -54,13 +54,13 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   out.letter = letter;
   out.rotary = axis.is_rotary();
   const ModelLayout& layout = model.layout();
-  std::set<std::string> left_seen;
+  std::set<std::string> left_seen, other_effects;
   bool has_positioning = false;
   for (std::size_t i = 0; i < layout.size(); ++i) {
     const ParameterSpec& s = layout.spec(static_cast<int>(i));
     if (s.measurement_only()) continue;
     if (s.axis_index != out.axis_index) {
-      ++out.other_axis_terms;
+      other_effects.insert(listed_effect(s));
       continue;
     }
     const double v = model.values()[i];
@@ -108,6 +108,7 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
                                             "axis {}: there is nothing for a one-axis table to hold",
                                             own, letter, letter));
   }
+  out.other_axis_terms = static_cast<int>(other_effects.size());
   std::sort(out.model_nodes.begin(), out.model_nodes.end());
   out.model_nodes.erase(std::unique(out.model_nodes.begin(), out.model_nodes.end()), out.model_nodes.end());
 

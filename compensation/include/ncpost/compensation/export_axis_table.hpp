@@ -41,7 +41,7 @@ struct AxisExport {
   bool has_positioning = false;     ///< some positioning term (not only the reversal)
   std::vector<std::string> held;      ///< parameter names the table holds
   std::vector<std::string> left_out;  ///< "NAME (why)" for every term acting on the axis it cannot hold
-  int other_axis_terms = 0;           ///< machine terms of the other axes (not in a one-axis table)
+  int other_axis_terms = 0;           ///< machine effects of the other axes (a table of nodes counts once)
 };
 
 /// Describes axis `letter` of the model. Throws ExportRefusal with the reason when the
