@@ -203,7 +203,10 @@ TEST_CASE("linuxcnc export on the command line: refusals and the file", "[export
   // several axes have tables: --axis is needed (usage)
   CHECK(test::run_ncpost("export --format linuxcnc" + machine + " -o " + d + "z.comp " + model, d + "log") == 1);
   // the axis the machine lacks; an axis without a table: bad input, naming the model file
-  CHECK(test::run_ncpost("export --format linuxcnc --axis C" + machine + " -o " + d + "c.comp " + model, d + "log") == 1);
+  CHECK(test::run_ncpost("export --format linuxcnc --axis C" + machine + " -o " + d + "c.comp " + model, d + "log") == 2);
+  CHECK(test::read_text_file(d + "log").find(model + ": the machine 'vmcl600' has no axis C (its axes: XYZ)") !=
+        std::string::npos);
+  CHECK(test::run_ncpost("export --format linuxcnc --axis Q" + machine + " -o " + d + "c.comp " + model, d + "log") == 1);
   const std::string ac = test::source("samples/measurements/ac-trunnion/model.json");
   const std::string ac_machine = " --machine " + test::source("machines/ac-trunnion.toml");
   CHECK(test::run_ncpost("export --format linuxcnc --axis X" + ac_machine + " -o " + d + "x2.comp " + ac, d + "log") == 2);
