@@ -219,3 +219,34 @@ TEST_CASE("linuxcnc export on the command line: refusals and the file", "[export
   CHECK(test::run_ncpost("export --format heidenhain --axis X" + machine + " -o " + d + "h " + model, d + "log") == 1);
   fs::remove_all(dir);
 }
+
+TEST_CASE("linuxcnc export: a polynomial error is sampled over the limits, within 0.5 µm between rows too", "[export]") {
+  const Machine m = load_machine(test::source("machines/vmcl600.toml"));
+  ErrorParameters p;
+  p.set("EXY:p1", 20e-6);    // straightness of Y in X: left out of the Y table
+  p.set("EYY:p1", 40e-6);    // 40 µm/m scale error
+  p.set("EYY:p2", 1.5e-7);   // a bow: 6.6 µm at the ends
+  p.set("EYY:p3", -2e-10);
+  p.set("reversal:Y", 0.002);
+  const MachineModel model(m, p);
+  const LinuxcncCompTable table = linuxcnc_comp_table(model, 'Y');
+  CHECK_FALSE(table.axis.piecewise_linear);
+  CHECK(table.rows.size() <= 256);
+  CHECK(table.rows.front()[0] == Approx(-210.0));
+  CHECK(table.rows.back()[0] == Approx(210.0));
+  REQUIRE(table.axis.left_out.size() == 1);
+  CHECK(table.axis.left_out[0].rfind("EXY:p1 (", 0) == 0);
+  const Residual r = apply_file(model, 'Y', format_linuxcnc_comp(table, model, {"m.json", "", "test"}));
+  CHECK(r.max_model > 0.012);
+  CHECK(r.max_compensated < 0.5e-3);
+  // without limits in the machine file a polynomial has no end: refused, naming the machine
+  Machine unlimited = m;
+  unlimited.axes[1].limits.reset();
+  const MachineModel open_model(unlimited, p);
+  try {
+    (void)linuxcnc_comp_table(open_model, 'Y');
+    FAIL("no refusal");
+  } catch (const ExportRefusal& e) {
+    CHECK(e.source == ExportRefusal::Source::machine);
+  }
+}
