@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   ncpost::cli::add_simulate(app, action);
   ncpost::cli::add_plan(app, action);
   ncpost::cli::add_sensitivity(app, action);
+  ncpost::cli::add_export(app, action);
   if (const std::string misspelt = ncpost::cli::misspelt_option(app, argc, argv); !misspelt.empty()) {
     print_error(misspelt);
     return 1;
