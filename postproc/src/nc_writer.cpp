@@ -74,7 +74,7 @@ bool NcWriter::motion(const NcMotion& m) {
   if (active_cycle_) {
     // G80 first if this motion writes a block (a move to where the tool is writes none)
     bool moves = false;
-    for (std::size_t i = 0; i < letters_.size(); ++i)
+    for (std::size_t i = 0; i < word_count(); ++i)
       if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
     if (!moves) return false;
     end_cycle();
@@ -89,7 +89,7 @@ bool NcWriter::motion(const NcMotion& m) {
   auto out = std::back_inserter(buf_);
   if (dialect_.klartext) {
     buf_.append(std::string_view("L"));
-    for (std::size_t i = 0; i < letters_.size(); ++i) {
+    for (std::size_t i = 0; i < word_count(); ++i) {
       const double v = rounded(static_cast<int>(i), m.values[i]);
       if (last_[i] && *last_[i] == v) continue;
       buf_.push_back(' ');
@@ -120,7 +120,7 @@ bool NcWriter::motion(const NcMotion& m) {
     fmt::format_to(out, "G{}", g);
     last_motion_ = g;
   }
-  for (std::size_t i = 0; i < letters_.size(); ++i) {
+  for (std::size_t i = 0; i < word_count(); ++i) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
@@ -255,6 +255,22 @@ void NcWriter::cycle(const NcCycle& c) {
   last_[0] = rounded(0, c.bottom_mm[0]);
   last_[1] = rounded(1, c.bottom_mm[1]);
   last_[2] = cycle_return_z_;
+}
+
+void NcWriter::tilted_plane(const std::vector<std::string>& blocks, bool on) {
+  end_cycle();
+  for (const auto& words : blocks) block(words);
+  tilted_ = on;
+  // the plane's coordinates (or, after it, the program frame's) start afresh: every word is written
+  for (auto& v : last_) v.reset();
+  last_motion_.reset();
+}
+
+std::string NcWriter::word_value(int axis, double value) const {
+  fmt::memory_buffer b;
+  append_fixed(b, rounded(axis, value), axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals,
+               dialect_.klartext);
+  return fmt::to_string(b);
 }
 
 void NcWriter::end_program() {
