@@ -15,10 +15,13 @@
 #include <regex>
 #include <sstream>
 
+#include "cli_run.hpp"
+#include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/tilted_plane.hpp"
 #include "ncpost/postproc/verify.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;
@@ -365,4 +368,48 @@ TEST_CASE("tilted planes: verify measures where the plane's words put the tool")
   VerifyReport bad;
   CHECK(verify_block(solver, a, qa, b, wrong, 1, bad) == Approx(0.05).margin(1e-6));
   CHECK(bad.max_endpoint_mm == Approx(0.05).margin(1e-6));
+}
+
+TEST_CASE("tilted planes: [tilted_plane] of a dialect file is checked") {
+  const std::string fanuc = test::read_text_file(test::source("postproc/dialects/fanuc.toml"));
+  const Dialect d = parse_dialect(fanuc, "fanuc.toml");
+  REQUIRE(d.tilted_plane);
+  CHECK(d.tilted_plane->angles == TiltedPlaneWords::Angles::euler_zxz);
+  CHECK(d.tilted_plane->on == std::vector<std::string>{"G68.2 X{x} Y{y} Z{z} I{a} J{b} K{c}", "G53.1"});
+  CHECK(d.tilted_plane->off == std::vector<std::string>{"G69"});
+  auto error_of = [&](const std::string& from, const std::string& to) {
+    std::string text = fanuc;
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    try {
+      parse_dialect(text, "mine.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error_of("angles = \"euler_zxz\"", "angles = \"zyz\""), Catch::Contains("euler_zxz") && Catch::Contains("mine.toml:"));
+  CHECK_THAT(error_of(" K{c}\"", "\""), Catch::Contains("{c} is missing"));
+  CHECK_THAT(error_of("G53.1\"]", "G53.1 {tool}\"]"), Catch::Contains("unknown placeholder '{tool}'"));
+  CHECK_THAT(error_of("native = true\nangles", "native = true\nangle_words = 1\nangles"), Catch::Contains("unknown key 'angle_words'"));
+  // a file without the section (an older copy) has no tilted plane
+  const std::string old = fanuc.substr(0, fanuc.find("\n[tilted_plane]"));
+  CHECK_FALSE(parse_dialect(old, "old.toml").tilted_plane);
+}
+
+TEST_CASE("tilted planes: the command line") {
+  const std::string dir = test::make_temp_dir("tilted_plane_cli");
+  CHECK(test::run_ncpost("post --help", dir + "/help.txt") == 0);
+  CHECK_THAT(test::read_text_file(dir + "/help.txt"), Catch::Contains("--tilted-plane") && Catch::Contains("G68.2"));
+  const std::string base = "post --machine '" + test::source("machines/ac-trunnion.toml") +
+                           "' --workpiece-origin 0,0,80 --tilted-plane ";
+  const std::string cl = "'" + test::data("tilted/two_planes.cls") + "'";
+  CHECK(test::run_ncpost(base + "--rtcp -o '" + dir + "/a.nc' " + cl, dir + "/rtcp.txt") == 1);
+  CHECK_THAT(test::read_text_file(dir + "/rtcp.txt"), Catch::Contains("--tilted-plane: not with --rtcp"));
+  CHECK(test::run_ncpost(base + "--verify --tolerance 0.005 -o '" + dir + "/b.nc' " + cl, dir + "/verify.txt") == 0);
+  const std::string log = test::read_text_file(dir + "/verify.txt");
+  INFO(log);
+  CHECK_THAT(log, Catch::Contains("block ends 0.0000 mm"));
+  CHECK_THAT(test::read_text_file(dir + "/b.nc"), Catch::Contains("G68.2 X10.0000 Y-40.0000 Z144.6410 I0.0000 J30.0000 K0.0000\nG53.1\n"));
 }

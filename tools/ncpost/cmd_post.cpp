@@ -60,6 +60,11 @@ int run_post(const PostArgs& given) {
   check_files({{"-o", given.output}, {"--report", given.report}},
               {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
                {"--verify-on", given.verify_on}});
+  if (given.tilted_plane && given.rtcp)
+    throw UsageError("--tilted-plane: not with --rtcp (in a tilted plane the control carries the tool tip itself)");
+  if (given.tilted_plane && !given.model.empty())
+    throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
+                     "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
   const InputFile input(given.input);
   PostArgs a = given;
   a.input = input.name();
@@ -69,11 +74,6 @@ int run_post(const PostArgs& given) {
   if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
                                  a.verify_on, a.output, a.input, a.input_path}))
     return *rc;
-  if (a.tilted_plane && a.rtcp)
-    throw UsageError("--tilted-plane: not with --rtcp (in a tilted plane the control carries the tool tip itself)");
-  if (a.tilted_plane && !a.model.empty())
-    throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
-                     "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
   PostRequest r;
   try {
     r.dialect = dialect_named(a.dialect);
