@@ -117,7 +117,15 @@ class Poster {
 
   void move_to(const ClPoint& cl, int line, bool rapid, std::optional<Eigen::Vector2d> rotary = std::nullopt) {
     if (plane_ && (cl.axis - plane_->axis_W).norm() > 1e-9) close_plane();  // (a motion of a cycle or arc)
-    if (plane_ && !rotary) rotary = plane_->rotary_rad;  // the rotary axes stand still in the plane
+    if (plane_ && !rotary) {
+      // the rotary axes stand still in the plane, where the point is within the limits there;
+      // else the plane ends and the motion is posted as without it (limits, retract, message)
+      const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, nullptr);
+      if (ik.ok() && (ik.position->rotary_rad - plane_->rotary_rad).cwiseAbs().maxCoeff() < 1e-9)
+        rotary = plane_->rotary_rad;
+      else
+        close_plane();
+    }
     SolvedPoint next{cl, {}};
     if (rotary) {
       next.q = solver_.with_rotary(cl, *rotary);
@@ -229,7 +237,8 @@ class Poster {
       m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
     const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
-    const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
+    // (in a tilted plane the control turned the rotary axes before: the block moves X Y Z only)
+    const bool simultaneous = !plane_ && machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
     if (inverse && !rapid && writer_.dialect().klartext)

@@ -413,3 +413,22 @@ TEST_CASE("tilted planes: the command line") {
   CHECK_THAT(log, Catch::Contains("block ends 0.0000 mm"));
   CHECK_THAT(test::read_text_file(dir + "/b.nc"), Catch::Contains("G68.2 X10.0000 Y-40.0000 Z144.6410 I0.0000 J30.0000 K0.0000\nG53.1\n"));
 }
+
+TEST_CASE("tilted planes: a point out of the travel in the plane ends it and is refused as without it") {
+  // X 600 mm: beyond the AC trunnion's X travel (±500) on both rotary solutions
+  const std::string cl = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\nRAPID\nGOTO/10,-40,64.641016,0,-0.5,0.866025\n"
+                         "FEDRAT/MMPM,300\nGOTO/10,-20,30,0,-0.5,0.866025\nGOTO/600,-20,30,0,-0.5,0.866025\nFINI\n";
+  std::string with, without;
+  try {
+    post_text(cl, request("fanuc", true));
+  } catch (const Infeasible& e) {
+    with = e.what();
+  }
+  try {
+    post_text(cl, request("fanuc", false));
+  } catch (const Infeasible& e) {
+    without = e.what();
+  }
+  CHECK_THAT(with, Catch::Contains("two_planes.cls:9"));
+  CHECK(with == without);
+}
