@@ -130,7 +130,7 @@ bool NcWriter::motion(const NcMotion& m) {
   if (active_cycle_) {
     // the cancel word first if this motion writes a block (a move to where the tool is writes none)
     bool moves = false;
-    for (std::size_t i = 0; i < letters_.size(); ++i)
+    for (std::size_t i = 0; i < word_count(); ++i)
       if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
     if (!moves) return false;
     end_cycle();
@@ -158,7 +158,7 @@ bool NcWriter::motion(const NcMotion& m) {
     buf_.append(m.rapid ? w.rapid : w.linear);
     last_motion_ = g;
   }
-  for (std::size_t i = 0; i < letters_.size(); ++i) {
+  for (std::size_t i = 0; i < word_count(); ++i) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
@@ -305,6 +305,22 @@ void NcWriter::cycle(const NcCycle& c) {
   last_[0] = rounded(0, c.bottom_mm[0]);
   last_[1] = rounded(1, c.bottom_mm[1]);
   last_[2] = cycle_return_z_;
+}
+
+void NcWriter::tilted_plane(const std::vector<std::string>& blocks, bool on) {
+  end_cycle();
+  for (const auto& words : blocks) block(words);
+  tilted_ = on;
+  // the plane's coordinates (or, after it, the program frame's) start afresh: every word is written
+  for (auto& v : last_) v.reset();
+  last_motion_.reset();
+}
+
+std::string NcWriter::word_value(int axis, double value) const {
+  fmt::memory_buffer b;
+  append_fixed(b, rounded(axis, value), axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals,
+               dialect_.motion.plus_sign);
+  return fmt::to_string(b);
 }
 
 void NcWriter::end_program() {

@@ -75,6 +75,10 @@ std::string PostRequest::invalid() const {
     return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
   if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
   if (threads < 1 || threads > 2) return fmt::format("threads: expected 1 or 2, got {}", threads);
+  if (tilted_plane && rtcp) return "tilted_plane: not with rtcp (the tilted plane carries the tool tip itself)";
+  if (tilted_plane && model)
+    return "tilted_plane: not with a model (the control maps the plane's coordinates on its nominal kinematics, so "
+           "the compensation cannot be carried)";
   return {};
 }
 
@@ -119,6 +123,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   options.retract_mm = r.retract_mm;
   options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
   options.native_cycles = !r.model;
+  options.tilted_plane = r.tilted_plane;
   options.verify = account;
   options.threads = r.threads;
   options.feed_mode = r.feed_mode;
@@ -149,6 +154,10 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   }
   out.commit();  // flushes `program`
   reader.reset();
+  if (r.tilted_plane && !r.dialect.tilted_plane)
+    result.summary.notices.push_back(fmt::format(
+        "--tilted-plane: the {} dialect ({}) has no tilted work plane ([tilted_plane] native = false or absent): the "
+        "3+2 runs are written with the machine's axes, as without the option", r.dialect.name, r.dialect.file));
   if (r.progress.posted) r.progress.posted(result.summary);
   acc.motions_in = result.summary.motions_in;
   acc.blocks_out = result.summary.blocks_out;

@@ -35,6 +35,7 @@ struct PostArgs {
   bool force_model = false;  // --force: model checks as warnings
   std::string nonlinear = "adaptive";
   bool rtcp = false;
+  bool tilted_plane = false;
   std::string dialect = "fanuc";
   std::string feed_mode = "auto";
   bool verify = false;
@@ -59,6 +60,11 @@ int run_post(const PostArgs& given) {
   check_files({{"-o", given.output}, {"--report", given.report}},
               {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
                {"--verify-on", given.verify_on}});
+  if (given.tilted_plane && given.rtcp)
+    throw UsageError("--tilted-plane: not with --rtcp (in a tilted plane the control carries the tool tip itself)");
+  if (given.tilted_plane && !given.model.empty())
+    throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
+                     "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
   const InputFile input(given.input);
   PostArgs a = given;
   a.input = input.name();
@@ -95,6 +101,7 @@ int run_post(const PostArgs& given) {
   r.tolerance_is_default = a.tolerance.empty();
   r.nonlinear = *nonlinear::method_named(a.nonlinear);
   r.rtcp = a.rtcp;
+  r.tilted_plane = a.tilted_plane;
   r.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
               : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
                                      : PostOptions::FeedMode::automatic;
@@ -171,6 +178,11 @@ void add_post(CLI::App& app, Action& action) {
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
+  sub->add_flag("--tilted-plane", a->tilted_plane,
+                "3+2: write each run of motions with a constant tilted tool axis (opened by a rapid) in a tilted "
+                "work plane: Fanuc G68.2/G53.1 ... G69, Haas G268/G253 ... G269, Sinumerik CYCLE800, Heidenhain "
+                "PLANE SPATIAL ... STAY (the dialect's [tilted_plane]; LinuxCNC: machine axes as without it), X Y Z in "
+                "the plane, G2/G3 and drilling cycles in its XY. Not with --rtcp or --model");
   sub->add_option("--dialect", a->dialect,
                   "A built-in dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain; or the path of a "
                   "dialect file (a copy of postproc/dialects/fanuc.toml, edited; README \"Dialect files\")")

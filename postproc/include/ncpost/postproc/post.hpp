@@ -63,6 +63,11 @@ struct PostOptions {
   /// 2: other threads read the CL records and solve their motions ahead (solving only for a
   /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
   int threads = 1;
+  /// `--tilted-plane`: a run of motions with a constant tool axis other than +Z of W, opened by a
+  /// rapid (or the first motion), is written in a tilted work plane (the dialect's [tilted_plane]
+  /// words, tilted_plane.hpp) with X Y Z in the plane's frame; simultaneous motions stay as they
+  /// are. Machine-axis programs on the nominal machine only (not with `rtcp`).
+  bool tilted_plane = false;
   bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
   /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
   std::function<void(int line, double contour_mm)> on_verified;
@@ -74,6 +79,7 @@ struct PostSummary {
   std::size_t rapid_splits = 0;  ///< rapid moves written in two blocks (order_rapids)
   std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
   std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
+  std::size_t tilted_planes = 0;  ///< tilted work planes written (`tilted_plane`)
   std::vector<std::string> notices;
   VerifyReport verify;
 };

@@ -69,6 +69,9 @@ struct PostRequest {
   // the program
   Dialect dialect = dialect_named("fanuc");
   bool rtcp = false;            ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
+  /// 3+2 runs in tilted work planes (PostOptions::tilted_plane; the dialect's [tilted_plane]);
+  /// not with `rtcp` nor `model` (the control maps the plane's coordinates on its nominal kinematics).
+  bool tilted_plane = false;
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
   double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
   int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same
