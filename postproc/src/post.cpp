@@ -26,7 +26,8 @@ Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
 class Poster {
  public:
   Poster(const std::string& input, const MotionSolver& solver, NcWriter& writer, const PostOptions& options)
-      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()) {}
+      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()),
+        words_(solver.words()) {}
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
@@ -72,7 +73,7 @@ class Poster {
       drill(m);
       return;
     }
-    move_to(m.point, m.where.line, rapid, m.rotary_rad);
+    move_to(m.point, m.where.line, rapid, words_.serial ? m.rotary_rad : std::nullopt);  // angles: serial chains
   }
 
   void on(const cl::Feed& f) {
@@ -92,7 +93,7 @@ class Poster {
     if (options_.rtcp) {
       writer_.rtcp(true, tool_);
       rtcp_on_ = true;
-    } else {
+    } else if (options_.tool_length_on_change) {
       writer_.tool_blocks(d.tool_length_on, tool_);
     }
   }
@@ -146,7 +147,7 @@ class Poster {
         previous_ = still;
       }
     }
-    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
+    if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
                                      "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
@@ -154,7 +155,7 @@ class Poster {
                                      rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1])));
       retract_and_reorient(next, line);
     }
-    if (have_position_ && !rapid && options_.subdivide && !options_.rtcp) {
+    if (have_position_ && (!rapid || options_.subdivide_rapids) && options_.subdivide && !options_.rtcp) {
       SolvedPoint from = previous_;
       std::vector<SolvedPoint> points;
       try {
@@ -212,14 +213,15 @@ class Poster {
     if (options_.rtcp) {
       const Vec3d tip_mm = solver_.programmed_tip(to.cl, to.q);
       for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = tip_mm[i];
-    } else {
-      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = to.q.linear_mm[i];
     }
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
+    for (int i = options_.rtcp ? 3 : 0; i < words_.count; ++i) {  // the words of the solver (CommandWords)
+      const auto u = static_cast<std::size_t>(i);
+      m.values[u] = words_.angle[u] ? rad_to_deg(to.q[i]) : to.q[i];
+    }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
-    const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
-    const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
+    const double rotary_travel_deg =
+        words_.rotary_count > 0 ? rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff()) : 0.0;
+    const bool simultaneous = words_.rotary_count > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
     if (inverse && !rapid && writer_.dialect().klartext)
@@ -240,9 +242,9 @@ class Poster {
     }
     // the control executes the rounded values
     AxisPosition executed = to.q;
-    for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, to.q.linear_mm[i]);
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
+    for (int i = 0; i < words_.count; ++i)
+      executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
+                                                               : writer_.rounded(i, to.q[i]);
     bool split = false;
     if (rapid && options_.order_rapids && last_values_) {
       // retract first when going up, descend last when going down
@@ -264,6 +266,8 @@ class Poster {
       const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
     }
+    if (written && options_.on_block && have_position_)
+      options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
     solver_.advance(executed);
     last_executed_ = executed;
   }
@@ -431,6 +435,11 @@ class Poster {
   /// CUTCOM/LEFT|RIGHT|OFF as G41/G42 D<n> / G40 (cycle_words.hpp `comp_words`).
   void on(const cl::CutterComp& c) {
     const SourcePosition at{input_, c.where.line, c.where.column};
+    if (!words_.serial && c.side != cl::CutterComp::Side::off)
+      throw InputError(at, fmt::format("cutter radius compensation is not posted on the {} machine (its control "
+                                       "compensates in no plane of these axes): post the tool centre path without "
+                                       "CUTCOM", machine_.name), "CUTCOM/" + c.text);
+    if (!words_.serial) return;  // CUTCOM/OFF: nothing was on
     const auto words = comp_words(writer_.dialect());
     if (!words)
       throw InputError(at, fmt::format("CUTCOM: ncpost writes no radius compensation in the {} dialect; post with "
@@ -473,6 +482,7 @@ class Poster {
   NcWriter& writer_;
   const PostOptions& options_;
   const Machine& machine_;
+  const CommandWords words_;  ///< what each command slot is (read once: no virtual call per point)
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
