@@ -179,6 +179,19 @@ TEST_CASE("TRR-XY: re-posting its own G-code output gives back the program (X Y 
   CHECK(blocks <= source.size() + source.size() / 20);
 }
 
+TEST_CASE("TRR-XY preview of its own G-code output: every block within the tolerance it was posted with") {
+  std::string err;
+  REQUIRE(run(post_args() + "--tolerance 0.005 -o trr_prev_src.nc " + sample_path(), &err) == 0);
+  REQUIRE(run("preview --machine " + machine_path() + " --workpiece-origin 0,0,-300 trr_prev_src.nc", &err) == 0);
+  const std::regex re("([0-9]+) blocks previewed; largest nonlinear error ([0-9.]+) mm");
+  std::smatch m;
+  REQUIRE(std::regex_search(err, m, re));
+  WARN(err);
+  CHECK(std::stoi(m[1].str()) > 435);
+  CHECK(std::stod(m[2].str()) <= 0.005);
+  CHECK(std::stod(m[2].str()) > 0.0);
+}
+
 TEST_CASE("TRR-XY G-code input: words of another machine, arcs and cycles are input errors naming the line") {
   std::string err;
   std::ofstream("trr_z.nc") << "G90 G21 G94\nG0 X0 Y0 U280 V280 W280\nG1 Z5 F100\nM30\n";

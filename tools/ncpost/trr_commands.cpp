@@ -36,25 +36,20 @@ std::optional<TrrPreviewJob> load_trr_job(const JobOptions& o) {
   job.workpiece_origin_mm = workpiece_origin_mm(o);
   if (o.tool_length_mm != 0.0)
     throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
-  if (o.input_kind != "auto" && o.input_kind != "cl")
-    throw UsageError("--input-kind: the TRR-XY machine posts APT CL data only");
+  if (o.input_kind == "rtcp")
+    throw UsageError("--input-kind rtcp: the TRR-XY machine has no RTCP programs (its G-code input is X Y U V W)");
   return job;
 }
 
-/// Opens the input file `path` into `in` and an APT reader on it, named `name` in messages
-/// (InputError when it cannot be opened or is not APT CL data).
-std::unique_ptr<cl::Reader> open_apt(std::ifstream& in, const std::string& path, const std::string& name,
-                                     const JobOptions& o) {
+/// Opens the input file `path` into `in` and its reader, named `name` in messages (InputError when
+/// it cannot be opened): APT CL data, or a program of the words X Y U V W read back through the
+/// nominal machine `reading` (which must outlive the reader).
+std::unique_ptr<cl::Reader> open_input(std::ifstream& in, const std::string& path, const std::string& name,
+                                       const JobOptions& o, const TrrSolver& reading) {
   in.open(path, std::ios::binary);
   if (!in) throw InputError({name, 0, 0}, "cannot open the input file");
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  in.clear();
-  in.seekg(0);
-  if (o.input_kind != "cl" && !cl::looks_like_apt(head))
-    throw InputError({name, 1, 1}, "expected APT CL data: G-code input is not supported on the TRR-XY machine");
-  return std::make_unique<cl::AptReader>(in, name, reader_options(o));
+  return open_cl_reader(in, name, input_kind_named(o.input_kind), reader_options(o), reading.machine(), Setup{},
+                        [&reading](const AxisPosition& q, std::string* why) { return reading.pose(q, why); });
 }
 
 trr::Kinematics kinematics_for(const TrrPreviewJob& job, const std::string& model) {
@@ -86,8 +81,10 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   const std::optional<TrrPreviewJob> job = load_trr_job(a.job);
   if (!job) return std::nullopt;
   const trr::Kinematics k = kinematics_for(*job, a.model);
+  const trr::Kinematics nominal(job->machine);
+  const TrrSolver reading(nominal, nominal, job->workpiece_origin_mm);
   std::ifstream in;
-  auto reader = open_apt(in, a.input_path, a.input, a.job);
+  auto reader = open_input(in, a.input_path, a.input, a.job, reading);
 
   // the program as posted without a tolerance (one block per CL motion), written nowhere
   const TrrSolver solver(k, k, job->workpiece_origin_mm);
