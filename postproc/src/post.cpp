@@ -27,7 +27,8 @@ Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
 class Poster {
  public:
   Poster(const std::string& input, const MotionSolver& solver, NcWriter& writer, const PostOptions& options)
-      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()) {}
+      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()),
+        words_(solver.words()) {}
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
@@ -75,7 +76,7 @@ class Poster {
       drill(m);
       return;
     }
-    move_to(m.point, m.where.line, rapid, m.rotary_rad);
+    move_to(m.point, m.where.line, rapid, words_.serial ? m.rotary_rad : std::nullopt);  // angles: serial chains
   }
 
   void on(const cl::Feed& f) {
@@ -96,7 +97,8 @@ class Poster {
     if (rtcp_on_) add(d.rtcp_off, tool_);
     tool_ = t.number;
     add(d.tool_call, tool_);
-    add(options_.rtcp ? d.rtcp_on : d.tool_length_on, tool_);
+    if (options_.rtcp) add(d.rtcp_on, tool_);
+    else if (options_.tool_length_on_change) add(d.tool_length_on, tool_);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
   }
@@ -160,7 +162,7 @@ class Poster {
         previous_ = still;
       }
     }
-    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
+    if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
                                      "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
@@ -169,7 +171,7 @@ class Poster {
       retract_and_reorient(next, line);
     }
     // (in a tilted plane the tool axis and the rotary axes are still: a straight line, nothing to bound)
-    if (have_position_ && !rapid && options_.subdivide && !options_.rtcp && !plane_) {
+    if (have_position_ && (!rapid || options_.subdivide_rapids) && options_.subdivide && !options_.rtcp && !plane_) {
       SolvedPoint from = previous_;
       std::vector<SolvedPoint> points;
       try {
@@ -230,15 +232,16 @@ class Poster {
     } else if (options_.rtcp) {
       const Vec3d tip_mm = solver_.programmed_tip(to.cl, to.q);
       for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = tip_mm[i];
-    } else {
-      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = to.q.linear_mm[i];
     }
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
+    for (int i = (options_.rtcp || plane_) ? 3 : 0; i < words_.count; ++i) {  // the words of the solver (CommandWords)
+      const auto u = static_cast<std::size_t>(i);
+      m.values[u] = words_.angle[u] ? rad_to_deg(to.q[i]) : to.q[i];
+    }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
-    const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
+    const double rotary_travel_deg =
+        words_.rotary_count > 0 ? rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff()) : 0.0;
     // (in a tilted plane the control turned the rotary axes before: the block moves X Y Z only)
-    const bool simultaneous = !plane_ && machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
+    const bool simultaneous = !plane_ && words_.rotary_count > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
     if (inverse && !rapid && writer_.dialect().motion.inverse_time.empty())
@@ -263,9 +266,9 @@ class Poster {
     if (plane_) {
       executed = plane_executed(Vec3d(m.values[0], m.values[1], m.values[2]));
     } else {
-      for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, to.q.linear_mm[i]);
-      for (int k = 0; k < machine_.rotary_count(); ++k)
-        executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
+      for (int i = 0; i < words_.count; ++i)
+        executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
+                                                                 : writer_.rounded(i, to.q[i]);
     }
     bool split = false;
     if (rapid && options_.order_rapids && last_values_) {
@@ -288,6 +291,8 @@ class Poster {
       const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
     }
+    if (written && options_.on_block && have_position_)
+      options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
     solver_.advance(executed);
     last_executed_ = executed;
   }
@@ -468,6 +473,11 @@ class Poster {
   /// CUTCOM/LEFT|RIGHT|OFF as G41/G42 D<n> / G40 (cycle_words.hpp `comp_words`).
   void on(const cl::CutterComp& c) {
     const SourcePosition at{input_, c.where.line, c.where.column};
+    if (!words_.serial && c.side != cl::CutterComp::Side::off)
+      throw InputError(at, fmt::format("cutter radius compensation is not posted on the {} machine (its control "
+                                       "compensates in no plane of these axes): post the tool centre path without "
+                                       "CUTCOM", machine_.name), "CUTCOM/" + c.text);
+    if (!words_.serial) return;  // CUTCOM/OFF: nothing was on
     const auto words = comp_words(writer_.dialect());
     if (!words)
       throw InputError(at, fmt::format("CUTCOM: the {} dialect writes no radius compensation ([compensation] native "
@@ -512,6 +522,7 @@ class Poster {
   NcWriter& writer_;
   const PostOptions& options_;
   const Machine& machine_;
+  const CommandWords words_;  ///< what each command slot is (read once: no virtual call per point)
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
@@ -544,7 +555,7 @@ class Poster {
   /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
   /// first motion, to a tool axis other than +Z of W).
   void update_plane(const cl::Motion& m, bool rapid) {
-    if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2) return;
+    if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 || !words_.serial) return;
     const Vec3d k = m.point.axis.normalized();
     if (plane_ && (k - plane_->axis_W).norm() <= 1e-9) return;
     close_plane();

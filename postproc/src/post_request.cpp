@@ -15,6 +15,7 @@
 #include "ncpost/postproc/nc_writer.hpp"
 #include "ncpost/postproc/preview_blocks.hpp"
 #include "ncpost/version.hpp"
+#include "trr_post_request.hpp"
 
 namespace ncpost {
 namespace {
@@ -70,7 +71,8 @@ std::vector<std::string> header_comments(const PostRequest& r, const std::option
 }  // namespace
 
 std::string PostRequest::invalid() const {
-  if (machine.axes.empty()) return "no machine (load_machine)";
+  if (machine.axes.empty() && !trr) return "no machine (load_machine)";
+  if (trr && rtcp) return "rtcp: the TRR-XY machine has no RTCP dialect (it is posted in X Y U V W)";
   if (tolerance_mm && !(*tolerance_mm > 0 && std::isfinite(*tolerance_mm)))
     return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
   if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
@@ -84,6 +86,7 @@ std::string PostRequest::invalid() const {
 
 PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
   if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
+  if (r.trr) return detail::post_trr(input, program, r);
   // the control interpolates the tool tip under RTCP: no tolerance unless asked for
   std::optional<double> tolerance_mm = r.tolerance_mm;
   if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();

@@ -19,6 +19,7 @@
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/post_report.hpp"
 #include "ncpost/postproc/post_request.hpp"
+#include "ncpost/machines/trr_xy_file.hpp"
 #include "trr_commands.hpp"
 
 namespace ncpost::cli {
@@ -71,9 +72,6 @@ int run_post(const PostArgs& given) {
   a.input_path = input.path();
   a.tolerance_mm = tolerance_of(a.tolerance);
   if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
-  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
-                                 a.verify_on, a.output, a.input, a.input_path}))
-    return *rc;
   PostRequest r;
   try {
     r.dialect = dialect_named(a.dialect);
@@ -82,20 +80,29 @@ int run_post(const PostArgs& given) {
   }
   if (a.tolerance_mm && a.rtcp)  // given explicitly
     fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
-  LoadedJob job = load_job(a.job);
-  r.machine = std::move(job.machine);
   r.machine_source = a.job.machine;
-  r.setup = job.setup;
   r.input_name = a.input;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
-  if (!a.model.empty()) {
-    r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+  if (machine_file_kind(a.job.machine) == "trr-xy") {
+    r.trr = load_trr_post_job(a.job, a.model, a.verify_on, a.rtcp);
+    r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
     r.model_source = a.model;
-  }
-  if (!a.verify_on.empty()) {
-    r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
     r.verify_on_source = a.verify_on;
+    if (a.tolerance_mm && a.nonlinear == "harmonic")
+      fmt::print(stderr, "notice: --nonlinear harmonic: the TRR-XY post meets the tolerance by adaptive insertion\n");
+  } else {
+    LoadedJob job = load_job(a.job);
+    r.machine = std::move(job.machine);
+    r.setup = job.setup;
+    if (!a.model.empty()) {
+      r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+      r.model_source = a.model;
+    }
+    if (!a.verify_on.empty()) {
+      r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
+      r.verify_on_source = a.verify_on;
+    }
   }
   r.tolerance_mm = tolerance_of(a.tolerance);
   r.tolerance_is_default = a.tolerance.empty();
@@ -138,7 +145,7 @@ int run_post(const PostArgs& given) {
   const PostSummary& summary = result.summary;
   if (a.output != "-")
     fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (r.verify || r.verify_on) {
+  if (r.verify || r.verify_on || (r.trr && r.trr->verify_on)) {
     if (a.rtcp)
       fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
     else
