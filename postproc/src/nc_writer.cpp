@@ -323,10 +323,30 @@ std::string NcWriter::word_value(int axis, double value) const {
   return fmt::to_string(b);
 }
 
+namespace {
+
+/// True when `words` hold an axis word (a letter of X Y Z A B C U V W and a number) for an axis
+/// that is not one of `letters` (the end's `G91 G28 Z0` on a machine without Z).
+bool names_missing_axis(const std::string& words, const std::string& letters) {
+  std::size_t at = 0;
+  while (at < words.size()) {
+    const std::size_t end = std::min(words.find(' ', at), words.size());
+    const std::string word = words.substr(at, end - at);
+    at = end + 1;
+    if (word.size() < 2 || std::string("XYZABCUVW").find(word[0]) == std::string::npos) continue;
+    if (word.find_first_not_of("+-.0123456789", 1) != std::string::npos) continue;
+    if (letters.find(word[0]) == std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void NcWriter::end_program() {
   write_held("");
   end_cycle();
-  for (const auto& words : dialect_.program_end) write_block(with_value(words, "{program}", program_name_));
+  for (const auto& words : dialect_.program_end)
+    if (!names_missing_axis(words, letters_)) write_block(with_value(words, "{program}", program_name_));
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   flush();
 }
