@@ -45,8 +45,8 @@ constexpr const char* kScript = R"JS(
         col.push(v.c[3 * i] / 255, v.c[3 * i + 1] / 255, v.c[3 * i + 2] / 255);
       }
     }
-    // axis triad at the lower corner: X red, Y green, Z blue
-    var o = [-1, -1, -1];
+    // axis triad at the lower corner of the paths' box: X red, Y green, Z blue
+    var o = NCPOST_CORNER;
     [[1, 0, 0], [0, 1, 0], [0, 0, 1]].forEach(function (d) {
       pos.push(o[0], o[1], o[2], o[0] + 0.3 * d[0], o[1] + 0.3 * d[1], o[2] + 0.3 * d[2]);
       col.push(d[0] * 0.8, d[1] * 0.6, d[2] * 0.9, d[0] * 0.8, d[1] * 0.6, d[2] * 0.9);
@@ -140,17 +140,20 @@ std::string path_view_3d(const std::vector<PathView3d>& views, const ColourScale
       c += fmt::format("{}{},{},{}", c.empty() ? "" : ",", rgb[0], rgb[1], rgb[2]);
     }
     data += fmt::format("{}{{\"id\":\"{}\",\"p\":[{}],\"c\":[{}]}}", i ? "," : "", v.id, p, c);
-    html += fmt::format("<div class=\"plot\"><div>{}</div><canvas class=\"path3d\" id=\"{}\" width=\"520\" height=\"440\">"
+    html += fmt::format("<div class=\"plot\"><div>{}</div><canvas class=\"path3d\" id=\"{}\" width=\"460\" height=\"400\">"
                         "</canvas></div>",
                         escape(v.title), escape(v.id));
   }
   data += "]";
-  html += "<div class=\"plot\">" + colour_bar_svg(scale, 440, bar_title) + "</div></div>\n";
+  html += "<div class=\"plot\">" + colour_bar_svg(scale, 400, bar_title) + "</div></div>\n";
   html += "<p class=\"note\">Drag to turn both views, wheel to zoom. Axes at the lower corner: X red, Y green, Z blue "
           "(workpiece frame W). " + fmt::format("{:.4g} mm across.", 2 * radius) + "</p>\n";
   std::string script = kScript;
-  const auto at = script.find("NCPOST_VIEWS");
-  script.replace(at, 12, data);
+  script.replace(script.find("NCPOST_VIEWS"), 12, data);
+  std::string corner = "[";
+  for (int k = 0; k < 3; ++k)
+    corner += fmt::format("{}{:.4f}", k ? "," : "", std::isfinite(lo[k]) ? (lo[k] - centre[k]) / radius : -0.5);
+  script.replace(script.find("NCPOST_CORNER"), 13, corner + "]");
   return html + "<script>" + script + "</script>\n";
 }
 
