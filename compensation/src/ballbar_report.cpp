@@ -130,9 +130,9 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
   f.subtitle = subtitle;
   f.angle_axis = t.axis;
   h += "<div class=\"plots\"><div class=\"plot\">" +
-       report::polar_plot(f, {{"measured", "#1f5fbf", t.angle, measured_um},
+       report::polar_plot(f, {{"nominal model", "#999999", t.angle, nominal_um, true},
                               {"identified model", "#d0402b", t.angle, fitted_um},
-                              {"nominal model", "#999999", t.angle, nominal_um, true}}) +
+                              {"measured", "#1f5fbf", t.angle, measured_um}}) +
        "</div>";
   f.title = name + ": residual after identification (own scale)";
   h += "<div class=\"plot\">" + report::polar_plot(f, {{"measured − identified model", "#2a8a3a", t.angle, residual_um}}) +
