@@ -88,4 +88,35 @@ std::string colour_bar_svg(const ColourScale& s, double height, const std::strin
   return o + "</svg>";
 }
 
+std::string diverging_colour(double f) {
+  f = std::clamp(std::isfinite(f) ? f : 0.0, -1.0, 1.0);
+  const auto mix = [](double a, double b, double t) { return static_cast<int>(std::lround(a + (b - a) * t)); };
+  int r, g, b;
+  if (f < 0) {
+    r = mix(255, 33, -f), g = mix(255, 102, -f), b = mix(255, 172, -f);
+  } else {
+    r = mix(255, 178, f), g = mix(255, 24, f), b = mix(255, 43, f);
+  }
+  return fmt::format("#{:02x}{:02x}{:02x}", r, g, b);
+}
+
+std::string diverging_bar_svg(double span, const std::string& unit, double width, bool no_effect) {
+  const double x0 = 30, w = width - 60, y = 4, h = 10;
+  std::string o = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"colour-bar\" width=\"{0}\" height=\"32\" viewBox=\"0 0 {0} 32\" "
+      "font-family=\"sans-serif\" font-size=\"10\">",
+      width);
+  const int n = 40;
+  for (int i = 0; i < n; ++i)
+    o += fmt::format("<rect x=\"{:.2f}\" y=\"{}\" width=\"{:.2f}\" height=\"{}\" fill=\"{}\"/>", x0 + w * i / n, y,
+                     w / n + 0.5, h, diverging_colour(-1.0 + 2.0 * (i + 0.5) / n));
+  o += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#666\"/>", x0, y, w, h);
+  const std::string s = no_effect ? format_tick(kNoEffectUm) : format_tick(span);
+  o += fmt::format("<text x=\"{}\" y=\"27\" text-anchor=\"middle\">−{}</text><text x=\"{}\" y=\"27\" "
+                   "text-anchor=\"middle\">0</text><text x=\"{}\" y=\"27\" text-anchor=\"middle\">+{} {}</text>",
+                   x0, s, x0 + w / 2, x0 + w, s, escape(unit));
+  if (no_effect) o += fmt::format("<text x=\"{}\" y=\"27\" fill=\"#c0241b\">no effect</text>", x0 + w / 2 + 12);
+  return o + "</svg>";
+}
+
 }  // namespace ncpost::report

@@ -31,4 +31,15 @@ ColourScale colour_scale_for(double largest, const std::string& unit);
 /// A vertical colour bar (SVG, width ~90 px) with ticks in the scale's unit.
 std::string colour_bar_svg(const ColourScale& scale, double height_px, const std::string& title);
 
+/// Signed maps: blue (−1) → white (0) → red (+1), as "#rrggbb".
+std::string diverging_colour(double fraction);
+
+/// Below this largest |value| (µm) a map has no effect: it is drawn as zero (white), never
+/// stretched to saturate its colours with rounding noise.
+constexpr double kNoEffectUm = 1e-3;
+
+/// A horizontal diverging colour bar (SVG, `width` px) from −span to +span in `unit`; with
+/// `no_effect` it says so and labels ±kNoEffectUm.
+std::string diverging_bar_svg(double span, const std::string& unit, double width, bool no_effect);
+
 }  // namespace ncpost::report
