@@ -114,7 +114,7 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
       sphere += sections::sphere_section(m, sets[s], r.fitted[s], r.nominal[s]);
   }
   if (!ballbar.empty())
-    h += "<h2>Ballbar tests</h2><p class=\"note\">ΔL = L − bar length (µm) against the angle of the axis that turns most "
+    h += "<h2 id=\"ballbar\">Ballbar tests</h2><p class=\"note\">ΔL = L − bar length (µm) against the angle of the axis that turns most "
          "(0° to the right, counter-clockwise positive), about a base circle; rings in µm. Left: measured, predicted by "
          "the identified model and by the nominal model; right: what the identified model leaves, on its own scale. "
          "ISO 230-4 figures from ΔL as the radial deviation.</p>" + ballbar;

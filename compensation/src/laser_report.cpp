@@ -59,7 +59,7 @@ std::string iso230_plot(const Iso230Figures& g) {
                          g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.systematic_E_um, g.mean_bidirectional_M_um);
   fr.x_label = fmt::format("target position {} (mm)", g.axis);
   fr.y_label = "positional deviation (µm)";
-  fr.width = 600;
+  fr.width = 560;
   fr.height = 300;
   return report::xy_chart(fr, {up, down, reversal});
 }
@@ -120,7 +120,7 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
   if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
   std::string h = report::page_start(p);
   if (!r.iso230.empty()) {
-    h += "<h2>ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
+    h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
          "approached from below (x̄↑) and from above (x̄↓) with ± 2s over the runs, and the reversal value "
          "B_i = x̄↑ − x̄↓; A accuracy, R repeatability, B reversal, E systematic deviation, M mean bidirectional "
          "deviation (µm).</p>";

@@ -175,7 +175,7 @@ std::string render_post_html(const PostAccount& a) {
   h += "</table>\n<p class=\"note\">Contour error: distance of the executed tool tip from the straight CL segment of "
        "its block, in the workpiece frame. Before: the program with one block per CL motion and nominal commands; "
        "after: the written program (rounded words), both executed on the same machine.</p>\n";
-  h += "<h2>Tool path in 3D</h2>\n" + path_3d(a);
+  h += "<h2 id=\"path3d\">Tool path in 3D</h2>\n" + path_3d(a);
   auto um = [](std::vector<double> v) {
     for (double& x : v) x *= 1e3;
     return v;

@@ -112,7 +112,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
                   : r.model     ? "the machine of " + r.model_source + " (as compensated)"
                                 : "the nominal machine";
   acc.dialect_name = r.dialect.name;
-  acc.inputs.push_back({"CL input", r.input_name});
+  acc.inputs.push_back({"CL input", r.input_file.empty() ? r.input_name : r.input_file, r.input_name});
   if (!r.machine_source.empty()) acc.inputs.push_back({"machine file", r.machine_source});
   if (r.model) acc.inputs.push_back({"error model", r.model_source});
   if (r.verify_on) acc.inputs.push_back({"executed on (model)", r.verify_on_source});

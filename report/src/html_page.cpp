@@ -51,7 +51,7 @@ std::string provenance_table(const Provenance& p) {
   auto row = [&](const std::string& k, const std::string& v) { t += fmt::format("<tr><th>{}</th><td class=n>{}</td></tr>\n", k, v); };
   for (const InputFile& f : p.inputs) {
     const auto hash = file_sha256_hex(f.path);
-    row(escape(f.role), fmt::format("{} <span class=\"hash\">SHA-256 {}</span>", escape(f.path),
+    row(escape(f.role), fmt::format("{} <span class=\"hash\">SHA-256 {}</span>", escape(f.shown.empty() ? f.path : f.shown),
                                     hash ? *hash : std::string("(not a file: not hashed)")));
   }
   row("machine", escape(p.machine));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "ncpost/report/html_page.hpp"
 
@@ -67,7 +68,7 @@ constexpr const char* kScript = R"JS(
     var m = [cy, sp * sy, cp * sy, -sy, sp * cy, cp * cy, 0, cp, -sp];
     drawn.forEach(function (d) {
       if (!d) return;
-      var gl = d.gl, w = d.canvas.width, h = d.canvas.height, s = 0.55 * state.zoom;
+      var gl = d.gl, w = d.canvas.width, h = d.canvas.height, s = 1.2 * state.zoom;
       gl.viewport(0, 0, w, h);
       gl.clearColor(1, 1, 1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
       gl.enable(gl.DEPTH_TEST); gl.depthFunc(gl.LEQUAL);
@@ -111,13 +112,23 @@ constexpr const char* kScript = R"JS(
 }  // namespace
 
 std::string path_view_3d(const std::vector<PathView3d>& views, const ColourScale& scale, const std::string& bar_title) {
-  // one centre and scale for all views, so that they overlay when turned together
+  // one centre and scale for all views, so that they overlay when turned together; framed on the
+  // bulk of the path (2nd to 98th percentile of each coordinate), so that a far approach move
+  // does not shrink the part to a corner (it runs off the canvas; the wheel zooms out)
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (const auto& v : views)
-    for (const auto& p : v.points) {
-      const double q[3] = {p.x, p.y, p.z};
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
-    }
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> c;
+    for (const auto& v : views)
+      for (const auto& p : v.points) c.push_back(k == 0 ? p.x : k == 1 ? p.y : p.z);
+    if (c.empty()) continue;
+    const auto at = [&](double q) {
+      auto it = c.begin() + static_cast<long>(q * static_cast<double>(c.size() - 1));
+      std::nth_element(c.begin(), it, c.end());
+      return *it;
+    };
+    lo[k] = at(0.02);
+    hi[k] = at(0.98);
+  }
   double centre[3] = {0, 0, 0}, radius = 1.0;
   if (std::isfinite(lo[0])) {
     double r2 = 0;
@@ -147,7 +158,7 @@ std::string path_view_3d(const std::vector<PathView3d>& views, const ColourScale
   data += "]";
   html += "<div class=\"plot\">" + colour_bar_svg(scale, 400, bar_title) + "</div></div>\n";
   html += "<p class=\"note\">Drag to turn both views, wheel to zoom. Axes at the lower corner: X red, Y green, Z blue "
-          "(workpiece frame W). " + fmt::format("{:.4g} mm across.", 2 * radius) + "</p>\n";
+          "(workpiece frame W). " + fmt::format("{:.4g} mm across the frame.", 2 * radius) + "</p>\n";
   std::string script = kScript;
   script.replace(script.find("NCPOST_VIEWS"), 12, data);
   std::string corner = "[";

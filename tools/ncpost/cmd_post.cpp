@@ -81,6 +81,7 @@ int run_post(const PostArgs& given) {
   r.machine_source = a.job.machine;
   r.setup = job.setup;
   r.input_name = a.input;
+  r.input_file = a.input_path;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
   if (!a.model.empty()) {

@@ -18,6 +18,7 @@ std::string base_name(const std::string& path);
 struct InputFile {
   std::string role;  ///< "machine", "measurement", "CL input", "model", ...
   std::string path;  ///< as given; its bytes are hashed when the page is made
+  std::string shown = {};  ///< the name shown, if not the path (e.g. "<stdin>" for its spool file)
 };
 
 struct Provenance {
