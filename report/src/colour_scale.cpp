@@ -103,7 +103,7 @@ std::string diverging_colour(double f) {
 std::string diverging_bar_svg(double span, const std::string& unit, double width, bool no_effect) {
   const double x0 = 30, w = width - 60, y = 4, h = 10;
   std::string o = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"colour-bar\" width=\"{0}\" height=\"32\" viewBox=\"0 0 {0} 32\" "
+      "<svg class=\"colour-bar\" width=\"{0}\" height=\"32\" viewBox=\"0 0 {0} 32\" "
       "font-family=\"sans-serif\" font-size=\"10\">",
       width);
   const int n = 40;
