@@ -13,7 +13,7 @@ target_include_directories(ncpost_all INTERFACE
   "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>"
   "$<BUILD_INTERFACE:${NCPOST_GENERATED_INCLUDE_DIR}>"
   "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
-target_link_libraries(ncpost_all INTERFACE ncpost::postproc ncpost::compensation ncpost::machines ncpost::kinematics)
+target_link_libraries(ncpost_all INTERFACE ncpost::postproc ncpost::compensation ncpost::machines ncpost::kinematics ncpost::report)
 target_compile_features(ncpost_all INTERFACE cxx_std_20)
 
 install(TARGETS ncpost_all EXPORT ncpostTargets)

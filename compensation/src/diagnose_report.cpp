@@ -157,8 +157,8 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
 }
 
 std::string html_diagnose_report(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d,
-                                 const ToolTipComparison& tt) {
-  std::string page = html_report(m, sets, d.final_fit);
+                                 const ToolTipComparison& tt, const IdentifyReportInputs& inputs) {
+  std::string page = html_report(m, sets, d.final_fit, inputs);
   std::string h = "<h1>Residual analysis</h1>";
   h += fmt::format("<p>Basic model: rms {:.3f} µm, max {:.3f} µm; final model: rms {:.3f} µm, max {:.3f} µm. Noise level "
                    "estimated from the data: {:.3f} µm. Stopped: {}.</p>",

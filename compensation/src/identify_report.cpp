@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "ncpost/compensation/parameter_name.hpp"
+#include "identify_report_sections.hpp"
+#include "ncpost/report/html_page.hpp"
 #include "report_text.hpp"
 
 namespace ncpost::comp {
@@ -14,57 +16,6 @@ namespace {
 
 using report::base_name;
 using report::escape;
-
-/// Polar plot angle of each row: the rotary axis that turns most (e.g. C, 0..360°).
-std::vector<double> polar_angles(const MeasurementSet& s) {
-  int axis = 3;
-  double best = -1.0;
-  for (int a = 3; a < 5; ++a) {
-    double lo = 1e9, hi = -1e9;
-    for (const auto& r : s.rows) {
-      lo = std::min(lo, r.command[a]);
-      hi = std::max(hi, r.command[a]);
-    }
-    if (hi - lo > best) {
-      best = hi - lo;
-      axis = a;
-    }
-  }
-  std::vector<double> out;
-  for (const auto& r : s.rows) out.push_back(r.command[axis]);
-  return out;
-}
-
-std::string polar_svg(const MeasurementSet& s, const std::vector<double>& fitted, const std::vector<double>& nominal) {
-  const std::vector<double> ang = polar_angles(s);
-  std::vector<double> meas, fit, nom;
-  for (std::size_t k = 0; k < s.rows.size(); ++k) {
-    meas.push_back(1e3 * (s.rows[k].value[0] - s.bar_length_mm));
-    fit.push_back(1e3 * (fitted[k] - s.bar_length_mm));
-    nom.push_back(1e3 * (nominal[k] - s.bar_length_mm));
-  }
-  double span = 1.0;
-  for (double v : meas) span = std::max(span, std::abs(v));
-  span = std::ceil(span / 5.0) * 5.0;
-  const double c = 170.0, r0 = 90.0, gain = 70.0 / span;  // ΔL = ±span maps to r0 ± 70 px
-  auto path = [&](const std::vector<double>& v, const char* colour, double width) {
-    std::string d;
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      const double r = r0 + gain * v[k];
-      d += fmt::format("{}{:.2f},{:.2f} ", k == 0 ? "M" : "L", c + r * std::cos(ang[k]), c - r * std::sin(ang[k]));
-    }
-    return fmt::format(R"(<path d="{}" fill="none" stroke="{}" stroke-width="{}"/>)", d, colour, width);
-  };
-  std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" width="340" height="360" viewBox="0 0 340 360">)";
-  for (double g : {-span, -span / 2, 0.0, span / 2, span})
-    svg += fmt::format(R"(<circle cx="{}" cy="{}" r="{:.1f}" fill="none" stroke="#ccc" stroke-width="{}"/>)", c, c,
-                       r0 + gain * g, g == 0.0 ? 1.5 : 0.7);
-  svg += fmt::format(R"(<text x="{}" y="{}" font-size="10" fill="#888">{:+g} µm</text>)", c + 3, c - r0 - 70 - 2, span);
-  svg += fmt::format(R"(<text x="{}" y="{}" font-size="10" fill="#888">0</text>)", c + 3, c - r0 - 2);
-  svg += path(nom, "#bbb", 1.0) + path(meas, "#1f5fbf", 1.2) + path(fit, "#d0402b", 1.2);
-  svg += R"(<text x="10" y="352" font-size="11"><tspan fill="#1f5fbf">measured</tspan>  <tspan fill="#d0402b">fitted</tspan>  <tspan fill="#999">nominal model</tspan></text>)";
-  return svg + "</svg>";
-}
 
 }  // namespace
 
@@ -119,12 +70,19 @@ std::string text_report(const Machine& m, const std::vector<MeasurementSet>& set
   return o;
 }
 
-std::string html_report(const Machine& m, const std::vector<MeasurementSet>& sets, const IdentifyResult& r) {
-  std::string h = R"(<!DOCTYPE html><html><head><meta charset="utf-8"><title>ncpost identify</title><style>
-body{font-family:sans-serif;margin:2em;color:#222}table{border-collapse:collapse}td,th{padding:2px 10px;border-bottom:1px solid #ddd;text-align:right}
-th{background:#f3f3f3}td.n,th.n{text-align:left}.plots{display:flex;flex-wrap:wrap;gap:1em}.plot{border:1px solid #eee;padding:.5em}
-</style></head><body>)";
-  h += fmt::format("<h1>Identification of {}</h1><p>{}</p>", escape(m.name), escape(r.message));
+std::string html_report(const Machine& m, const std::vector<MeasurementSet>& sets, const IdentifyResult& r,
+                        const IdentifyReportInputs& in) {
+  report::Provenance p;
+  p.title = "Identification of " + m.name;
+  p.machine = m.name + (in.machine_file.empty() ? std::string() : " (" + in.machine_file + ")");
+  p.model = "identified here" + (in.model_file.empty() ? std::string() : ", written to " + in.model_file);
+  if (!in.machine_file.empty()) p.inputs.push_back({"machine file", in.machine_file});
+  for (const auto& s : sets) p.inputs.push_back({std::string(to_string(s.type)) + " data", s.file});
+  if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm", *in.pass_tolerance_um)});
+  std::string h = report::page_start(p);
+  h += "<p>" + escape(r.message) + "</p>";
+  h += sections::verdict_section(r, in.pass_tolerance_um);
+  h += sections::control_values_section(m, r);
   h += "<h2>Parameters</h2><table><tr><th class=n>name</th><th>value</th><th>± uncertainty</th><th class=n>unit</th></tr>";
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     const std::string& n = r.parameters.names()[i];
@@ -147,12 +105,21 @@ th{background:#f3f3f3}td.n,th.n{text-align:left}.plots{display:flex;flex-wrap:wr
   for (const auto& f : r.files)
     h += fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>",
                      escape(base_name(f.file)), f.values, f.rms_nominal_um, f.max_nominal_um, f.rms_after_um, f.max_after_um);
-  h += "</table><h2>Ballbar trajectories</h2><p>ΔL = L − bar length against the rotary angle (polar).</p><div class=plots>";
-  for (std::size_t s = 0; s < sets.size(); ++s) {
-    if (sets[s].type != MeasurementType::ballbar || sets[s].rows.size() < 8) continue;
-    h += fmt::format("<div class=plot><div>{}</div>{}</div>", escape(base_name(sets[s].file)), polar_svg(sets[s], r.fitted[s], r.nominal[s]));
+  h += "</table>";
+  std::string ballbar, sphere;
+  for (std::size_t s = 0; s < sets.size() && s < r.fitted.size() && s < r.nominal.size(); ++s) {
+    if (sets[s].type == MeasurementType::ballbar)
+      ballbar += sections::ballbar_section(m, sets[s], r.fitted[s], r.nominal[s], in.pass_tolerance_um);
+    else if (sets[s].type == MeasurementType::sphere)
+      sphere += sections::sphere_section(m, sets[s], r.fitted[s], r.nominal[s]);
   }
-  return h + "</div></body></html>\n";
+  if (!ballbar.empty())
+    h += "<h2 id=\"ballbar\">Ballbar tests</h2><p class=\"note\">ΔL = L − bar length (µm) against the angle of the axis that turns most "
+         "(0° to the right, counter-clockwise positive), about a base circle; rings in µm. Left: measured, predicted by "
+         "the identified model and by the nominal model; right: what the identified model leaves, on its own scale. "
+         "ISO 230-4 figures from ΔL as the radial deviation.</p>" + ballbar;
+  if (!sphere.empty()) h += "<h2>Sphere probing</h2>" + sphere;
+  return h + report::page_end();
 }
 
 }  // namespace ncpost::comp

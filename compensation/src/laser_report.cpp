@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include "ncpost/report/html_page.hpp"
+#include "ncpost/report/xy_chart.hpp"
 #include "report_text.hpp"
 
 namespace ncpost::comp {
@@ -15,38 +17,51 @@ using report::escape;
 double shown(const LaserFunction& f, double v) { return f.is_angle() ? v * 1e6 : v * 1e3; }
 const char* unit(const LaserFunction& f) { return f.is_angle() ? "µrad" : "µm"; }
 
-/// A small line plot of the table (and its polynomial) in µm / µrad.
+/// The identified table (and its polynomial) in µm / µrad, with tick values.
 std::string svg_plot(const LaserFunction& f) {
-  const double w = 320, h = 150, pad = 30;
+  report::XySeries table{"table", "#1f5fbf", f.nodes_mm, {}, {}, {}, false, true};
+  for (double v : f.values) table.y.push_back(shown(f, v));
+  report::XySeries poly{"p1..p3", "#e09020", {}, {}, {}, {}, true, false};
   const double x0 = f.nodes_mm.front(), x1 = f.nodes_mm.back();
-  double lo = 0, hi = 0;
-  for (double v : f.values) {
-    lo = std::min(lo, shown(f, v));
-    hi = std::max(hi, shown(f, v));
-  }
-  if (hi - lo < 1e-9) hi = lo + 1;
-  auto X = [&](double x) { return pad + (x - x0) / std::max(1e-9, x1 - x0) * (w - 2 * pad); };
-  auto Y = [&](double y) { return h - pad - (y - lo) / (hi - lo) * (h - 2 * pad); };
-  std::string s = fmt::format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="{}" height="{}" style="background:#fff;border:1px solid #ccc">)", w, h);
-  s += fmt::format(R"(<line x1="{}" y1="{:.1f}" x2="{}" y2="{:.1f}" stroke="#999"/>)", pad, Y(0), w - pad, Y(0));
-  std::string pts, poly;
-  for (std::size_t i = 0; i < f.nodes_mm.size(); ++i) {
-    pts += fmt::format("{:.1f},{:.1f} ", X(f.nodes_mm[i]), Y(shown(f, f.values[i])));
-    s += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="2.5" fill="{}"/>)", X(f.nodes_mm[i]),
-                     Y(shown(f, f.values[i])), f.seen[i] ? "#1f5fbf" : "#d0402b");
-  }
   for (int k = 0; k <= 60; ++k) {
     const double x = x0 + (x1 - x0) * k / 60.0;
-    const double v = f.polynomial[0] * x + f.polynomial[1] * x * x + f.polynomial[2] * x * x * x;
-    poly += fmt::format("{:.1f},{:.1f} ", X(x), Y(shown(f, v)));
+    poly.x.push_back(x);
+    poly.y.push_back(shown(f, f.polynomial[0] * x + f.polynomial[1] * x * x + f.polynomial[2] * x * x * x));
   }
-  s += fmt::format(R"(<polyline points="{}" fill="none" stroke="#1f5fbf"/>)", pts);
-  s += fmt::format(R"(<polyline points="{}" fill="none" stroke="#e09020" stroke-dasharray="4 3"/>)", poly);
-  s += fmt::format(R"(<text x="4" y="14" font-size="11">{} ({} of {}), {} over {} … {} mm</text>)", f.name(), escape(f.kind()),
-                   f.axis, unit(f), x0, x1);
-  s += fmt::format(R"(<text x="4" y="{}" font-size="10">{:.2f}</text><text x="4" y="{}" font-size="10">{:.2f}</text>)",
-                   pad, hi, h - pad + 10, lo);
-  return s + "</svg>";
+  std::vector<report::XySeries> series{table, poly};
+  report::XySeries unseen{"not seen", "#d0402b", {}, {}, {}, {}, false, true};
+  for (std::size_t i = 0; i < f.nodes_mm.size(); ++i)
+    if (!f.seen[i]) unseen.x.push_back(f.nodes_mm[i]), unseen.y.push_back(shown(f, f.values[i]));
+  if (!unseen.x.empty()) series.push_back(unseen);
+  report::XyFrame fr;
+  fr.title = fmt::format("{} ({} of {})", f.name(), f.kind(), f.axis);
+  fr.x_label = fmt::format("{} (mm)", f.axis);
+  fr.y_label = unit(f);
+  fr.width = 420;
+  fr.height = 240;
+  return report::xy_chart(fr, series);
+}
+
+/// ISO 230-2 bidirectional plot of one positioning line: x̄↑ and x̄↓ with ± 2s, and B_i.
+std::string iso230_plot(const Iso230Figures& g) {
+  report::XySeries up{"x̄↑ ± 2s", "#1f5fbf", {}, {}, {}, {}, false, true};
+  report::XySeries down{"x̄↓ ± 2s", "#d0402b", {}, {}, {}, {}, false, true};
+  report::XySeries reversal{"reversal B_i", "#2a8a3a", {}, {}, {}, {}, true, true};
+  for (const auto& t : g.targets) {
+    up.x.push_back(t.target_mm), up.y.push_back(t.mean_up_um);
+    up.lo.push_back(t.mean_up_um - 2 * t.s_up_um), up.hi.push_back(t.mean_up_um + 2 * t.s_up_um);
+    down.x.push_back(t.target_mm), down.y.push_back(t.mean_down_um);
+    down.lo.push_back(t.mean_down_um - 2 * t.s_down_um), down.hi.push_back(t.mean_down_um + 2 * t.s_down_um);
+    reversal.x.push_back(t.target_mm), reversal.y.push_back(t.mean_up_um - t.mean_down_um);
+  }
+  report::XyFrame fr;
+  fr.title = fmt::format("{}: axis {}, A {:.2f} R {:.2f} B {:.2f} E {:.2f} M {:.2f} µm", report::base_name(g.file), g.axis,
+                         g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.systematic_E_um, g.mean_bidirectional_M_um);
+  fr.x_label = fmt::format("target position {} (mm)", g.axis);
+  fr.y_label = "positional deviation (µm)";
+  fr.width = 560;
+  fr.height = 300;
+  return report::xy_chart(fr, {up, down, reversal});
 }
 
 }  // namespace
@@ -94,16 +109,39 @@ std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
   return o;
 }
 
-std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r) {
-  std::string h = "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>ncpost laser identification</title>"
-                  "<style>body{font-family:sans-serif;margin:1em}pre{background:#f6f6f6;padding:.5em}"
-                  "svg{margin:4px}</style></head><body>";
-  h += fmt::format("<h1>Laser identification of {}</h1>", escape(m.name));
-  h += "<pre>" + escape(laser_text_report(m, r)) + "</pre>";
-  h += "<h2>Error functions</h2><p>blue: identified table (red dots: nodes not seen), orange dashed: fitted "
-       "polynomial p1..p3</p>";
-  for (const auto& f : r.functions) h += svg_plot(f);
-  return h + "</body></html>\n";
+std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, const std::vector<MeasurementSet>& sets,
+                              const IdentifyReportInputs& in) {
+  report::Provenance p;
+  p.title = "Laser identification of " + m.name;
+  p.machine = m.name + (in.machine_file.empty() ? std::string() : " (" + in.machine_file + ")");
+  p.model = "identified here" + (in.model_file.empty() ? std::string() : ", written to " + in.model_file);
+  if (!in.machine_file.empty()) p.inputs.push_back({"machine file", in.machine_file});
+  for (const auto& s : sets) p.inputs.push_back({"laser data", s.file});
+  if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
+  std::string h = report::page_start(p);
+  if (!r.iso230.empty()) {
+    h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
+         "approached from below (x̄↑) and from above (x̄↓) with ± 2s over the runs, and the reversal value "
+         "B_i = x̄↑ − x̄↓; A accuracy, R repeatability, B reversal, E systematic deviation, M mean bidirectional "
+         "deviation (µm).</p>";
+    if (in.pass_tolerance_um) {
+      h += fmt::format("<table><tr><th class=n>line</th><th>axis</th><th>A µm</th><th>A ≤ {:g} µm</th></tr>", *in.pass_tolerance_um);
+      for (const auto& g : r.iso230)
+        h += fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{:.2f}</td>{}</tr>", escape(report::base_name(g.file)), g.axis,
+                         g.accuracy_A_um,
+                         g.accuracy_A_um <= *in.pass_tolerance_um ? "<td class=\"pass\">PASS</td>" : "<td class=\"fail\">FAIL</td>");
+      h += "</table>";
+    }
+    h += "<div class=\"plots\">";
+    for (const auto& g : r.iso230) h += "<div class=\"plot\">" + iso230_plot(g) + "</div>";
+    h += "</div>";
+  }
+  h += "<h2>Summary</h2><pre>" + escape(laser_text_report(m, r)) + "</pre>";
+  h += "<h2>Error functions</h2><p class=\"note\">Blue: identified table at every target (red: nodes the lines do not "
+       "see), orange dashed: fitted polynomial p1..p3; µm for positioning and straightness, µrad for roll, pitch, yaw.</p>"
+       "<div class=\"plots\">";
+  for (const auto& f : r.functions) h += "<div class=\"plot\">" + svg_plot(f) + "</div>";
+  return h + "</div>" + report::page_end();
 }
 
 }  // namespace ncpost::comp

@@ -14,21 +14,13 @@ namespace ncpost::preview {
 namespace {
 
 
-std::string style() {
-  return "<style>body{font-family:sans-serif;margin:24px;color:#222;max-width:1060px}"
-         "h1{font-size:22px}h2{font-size:17px;margin-top:28px}"
-         "table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
-         "th{background:#f0f0f0}td.src{text-align:left;font-family:monospace;white-space:pre}"
-         ".note{color:#555;font-size:13px}</style>\n";
-}
+/// What the preview adds to the shared page style: source lines in monospace.
+std::string style() { return "<style>td.src{text-align:left;font-family:monospace;white-space:pre}</style>\n"; }
 
 std::string totals(const HtmlReport& r) {
   const PreviewSummary& s = *r.summary;
   std::string t = "<table>\n";
   auto row = [&](const std::string& k, const std::string& v) { t += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", k, v); };
-  row("input", svg::escape(r.input_name));
-  row("machine", svg::escape(r.machine_name));
-  row("error model", r.model_name.empty() ? "none (nominal machine)" : svg::escape(r.model_name));
   row("CL motions / previewed blocks", fmt::format("{} / {}", r.stats.motions, s.blocks()));
   row("largest nonlinear error", fmt::format("{:.4f} mm", s.max_error_mm()));
   row("mean nonlinear error", fmt::format("{:.4f} mm", s.mean_error_mm()));
@@ -132,10 +124,12 @@ std::string worst_curve_chart(const HtmlReport& r) {
 }  // namespace
 
 std::string render_html(const HtmlReport& r) {
-  std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n";
-  h += fmt::format("<title>ncpost preview: {}</title>\n", svg::escape(r.input_name));
-  h += style() + "</head><body>\n";
-  h += fmt::format("<h1>Nonlinear error preview: {}</h1>\n", svg::escape(r.input_name));
+  report::Provenance p;
+  p.title = "Nonlinear error preview: " + r.input_name;
+  p.machine = r.machine_name;
+  p.model = r.model_name;
+  p.inputs = r.inputs;
+  std::string h = report::page_start(p) + style();
   h += "<p class=\"note\">The control interpolates every axis linearly between block ends (no RTCP): the tool tip "
        "leaves the straight CL segment in between. For each block: the exact largest distance of the executed tip "
        "from the segment (bracketed maximisation), and the harmonic model of seed 001, L(t) = Emax&middot;sin(&pi;t), "
@@ -155,8 +149,7 @@ std::string render_html(const HtmlReport& r) {
     }
     h += "</ul>\n";
   }
-  h += "<p class=\"note\">ncpost " + ncpost::version() + "</p>\n</body></html>\n";
-  return h;
+  return h + report::page_end();
 }
 
 std::vector<std::string> source_lines(const std::string& path, const std::vector<int>& lines) {

@@ -2,10 +2,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "ncpost/postproc/preview_svg.hpp"
+#include "ncpost/report/colour_scale.hpp"
+#include "ncpost/report/html_page.hpp"
 
 namespace ncpost::preview::svg {
 namespace {
@@ -26,14 +27,7 @@ std::string open_svg(const ChartFrame& f) {
   return s;
 }
 
-std::string format_tick(double v) {
-  if (v == 0) return "0";
-  const double a = std::abs(v);
-  if (a >= 1e4 || a < 1e-3) return fmt::format("{:.1e}", v);
-  if (a >= 100) return fmt::format("{:.0f}", v);
-  if (a >= 1) return fmt::format("{:.3g}", v);
-  return fmt::format("{:.3g}", v);
-}
+std::string format_tick(double v) { return report::format_tick(v); }
 
 std::string axes(const ChartFrame& f, const Box& b, double x0, double x1, double y0, double y1, bool x_ticks = true) {
   std::string s;
@@ -63,44 +57,11 @@ std::string axes(const ChartFrame& f, const Box& b, double x0, double x1, double
 
 }  // namespace
 
-std::string escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& text) { return report::escape(text); }
 
-std::string colour(double fraction) {
-  static constexpr std::array<std::array<double, 3>, 5> stops{{
-      {30, 50, 140}, {20, 150, 160}, {150, 200, 60}, {245, 160, 30}, {200, 30, 30}}};
-  const double f = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0) * (stops.size() - 1);
-  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(f), stops.size() - 2);
-  const double w = f - static_cast<double>(i);
-  int rgb[3];
-  for (int k = 0; k < 3; ++k) rgb[k] = static_cast<int>(std::lround(stops[i][k] * (1 - w) + stops[i + 1][k] * w));
-  return fmt::format("#{:02x}{:02x}{:02x}", rgb[0], rgb[1], rgb[2]);
-}
+std::string colour(double fraction) { return report::colour(fraction); }
 
-std::vector<double> nice_ticks(double lo, double hi, int count) {
-  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};
-  const double raw = (hi - lo) / std::max(count, 1);
-  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = mag;
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if (m * mag >= raw) { step = m * mag; break; }
-  std::vector<double> ticks;
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + step * 1e-9; t += step) ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
-  return ticks;
-}
+std::vector<double> nice_ticks(double lo, double hi, int count) { return report::nice_ticks(lo, hi, count); }
 
 std::string line_chart(const ChartFrame& f, const std::vector<Series>& series) {
   const Box b = plot_box(f);

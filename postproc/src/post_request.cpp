@@ -48,6 +48,7 @@ void measure_before(std::istream& in, std::istream::pos_type start, const PostRe
         account.before_worst_line = row.line;
       }
       account.before_series.add(row.line, e);
+      account.path.add_before(row.line, row.cl.end.tip_mm, e);
     }, r.progress.measuring);
   } catch (const preview::PreviewInfeasible& e) {
     throw Infeasible(e.what());
@@ -118,6 +119,10 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
                   : r.model     ? "the machine of " + r.model_source + " (as compensated)"
                                 : "the nominal machine";
   acc.dialect_name = r.dialect.name;
+  acc.inputs.push_back({"CL input", r.input_file.empty() ? r.input_name : r.input_file, r.input_name});
+  if (!r.machine_source.empty()) acc.inputs.push_back({"machine file", r.machine_source});
+  if (r.model) acc.inputs.push_back({"error model", r.model_source});
+  if (r.verify_on) acc.inputs.push_back({"executed on (model)", r.verify_on_source});
   acc.method_name = method_word(r.nonlinear);
   acc.tolerance_mm = tolerance_mm.value_or(0.0);
 
@@ -133,7 +138,11 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   options.program_name = r.program_name;
   options.header_comments = header_comments(r, tolerance_mm);
   options.progress = r.progress.posting;
-  if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
+  if (account)
+    options.on_verified = [&acc](int line, double contour_mm) {
+      acc.after_series.add(line, contour_mm);
+      acc.path.add_after(line, contour_mm);
+    };
   nonlinear::CompensationOptions comp;
   if (tolerance_mm) {
     comp.method = r.nonlinear;

@@ -18,10 +18,13 @@ std::string preview_html(const PreviewReport& r) {
     sum += row.max_mm;
     if (row.max_mm > 0.005) ++over;
   }
-  std::string s = "<!DOCTYPE html><html><head><meta charset='utf-8'><title>ncpost preview (TRR-XY)</title><style>"
-                  "body{font-family:sans-serif;margin:20px}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
-                  "padding:2px 8px;text-align:right}</style></head><body>";
-  s += fmt::format("<h1>Nonlinear error preview — {}</h1><p>Machine {}, model {}. {} CL motions, {} feed blocks "
+  report::Provenance p;
+  p.title = "Nonlinear error preview (TRR-XY): " + r.input_name;
+  p.machine = r.machine_name;
+  p.model = r.model_name;
+  p.inputs = r.inputs;
+  std::string s = report::page_start(p);
+  s += fmt::format("<p>Input {}; machine {}, model {}. {} CL motions, {} feed blocks "
                    "(one per CL motion, X Y U V W interpolated linearly); largest error {:.4f} mm, mean {:.4f} mm, "
                    "{} blocks over 5 µm.</p>",
                    svg::escape(r.input_name), svg::escape(r.machine_name),
@@ -60,8 +63,7 @@ std::string preview_html(const PreviewReport& r) {
                        rad_to_deg(sorted[i].orientation_rad));
     s += "</table>";
   }
-  s += "</body></html>\n";
-  return s;
+  return s + report::page_end();
 }
 
 }  // namespace ncpost::trr

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "ncpost/postproc/preview_svg.hpp"
+#include "ncpost/report/colour_scale.hpp"
+#include "ncpost/report/html_page.hpp"
 
 namespace ncpost::trr {
 namespace {
@@ -18,15 +20,7 @@ double rounded(double v, int decimals) {
   return std::round(v * p) / p;
 }
 
-/// Diverging colour: blue (−1) → white (0) → red (+1).
-std::string diverging(double f) {
-  f = std::clamp(f, -1.0, 1.0);
-  const auto mix = [](double a, double b, double t) { return static_cast<int>(std::lround(a + (b - a) * t)); };
-  int r, g, b;
-  if (f < 0) { r = mix(255, 33, -f); g = mix(255, 102, -f); b = mix(255, 172, -f); }
-  else { r = mix(255, 178, f); g = mix(255, 24, f); b = mix(255, 43, f); }
-  return fmt::format("#{:02x}{:02x}{:02x}", r, g, b);
-}
+using report::diverging_colour;
 
 int point_index(const SensitivityOptions& o, int ring, int sector) {
   const int sectors = static_cast<int>(std::lround(360.0 / o.azimuth_step_deg));
@@ -40,7 +34,10 @@ std::string map_svg(const SensitivityResult& r, const SensitivityOptions& o, con
   // display cells of about 2° polar × 8° azimuth, each coloured by the sample at its centre
   const int ring_stride = std::max(1, static_cast<int>(std::lround(2.0 / o.polar_step_deg)));
   const int sector_stride = std::max(1, static_cast<int>(std::lround(8.0 / o.azimuth_step_deg)));
-  const double scale = std::max({std::abs(m.max_um), std::abs(m.min_um), 1e-12});
+  // each map on its own symmetric scale; a map without effect (rounding noise only) is drawn as zero
+  const double largest = std::max(std::abs(m.max_um), std::abs(m.min_um));
+  const bool no_effect = !(largest >= report::kNoEffectUm);
+  const double scale = no_effect ? 1.0 : largest;
   std::string s = fmt::format("<svg width='260' height='265' viewBox='0 0 260 265'>");
   const auto xy = [&](double polar_deg, double az) {
     const double rho = R * polar_deg / o.max_polar_deg;
@@ -52,7 +49,7 @@ std::string map_svg(const SensitivityResult& r, const SensitivityOptions& o, con
     if (i == 0) {
       const double v = r.maps.empty() ? 0 : m.deviation_um[0];
       s += fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='{:.1f}' fill='{}'/>", cx, cy, R * p1 / o.max_polar_deg,
-                       diverging(v / scale));
+                       diverging_colour(v / scale));
       continue;
     }
     for (int j = 0; j < sectors; j += sector_stride) {
@@ -64,7 +61,7 @@ std::string map_svg(const SensitivityResult& r, const SensitivityOptions& o, con
       const auto [x2, y2] = xy(p1, a1);
       const auto [x3, y3] = xy(p0, a1);
       s += fmt::format("<path d='M{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}Z' fill='{}'/>", x0, y0, x1, y1,
-                       x2, y2, x3, y3, diverging(v / scale));
+                       x2, y2, x3, y3, diverging_colour(v / scale));
     }
   }
   s += fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='{:.1f}' fill='none' stroke='#444'/>", cx, cy, R);
@@ -79,11 +76,13 @@ std::string map_svg(const SensitivityResult& r, const SensitivityOptions& o, con
     s += fmt::format("<text x='{:.1f}' y='{:.1f}' font-size='11' text-anchor='middle' dominant-baseline='middle'>{}</text>",
                      x, y, label);
   };
-  mark(m.max_at, "+");
-  mark(m.min_at, "&#8722;");
+  if (!no_effect) {
+    mark(m.max_at, "+");
+    mark(m.min_at, "&#8722;");
+  }
   s += fmt::format("<text x='130' y='258' font-size='11' text-anchor='middle'>max {:.3f} µm, min {:.3f} µm</text></svg>",
                    m.max_um, m.min_um);
-  return s;
+  return s + "<br>" + report::diverging_bar_svg(largest, "µm", 260, no_effect);
 }
 
 }  // namespace
@@ -128,17 +127,21 @@ std::string sensitivity_table(const SensitivityResult& r) {
   return s;
 }
 
-std::string sensitivity_html(const SensitivityResult& r, const SensitivityOptions& o, const std::string& machine_name) {
-  std::string s = "<!DOCTYPE html><html><head><meta charset='utf-8'><title>TRR-XY sensitivity maps</title><style>"
-                  "body{font-family:sans-serif;margin:20px}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
-                  "padding:2px 8px;text-align:right}.maps{display:flex;flex-wrap:wrap}.map{margin:4px;text-align:center}"
-                  "</style></head><body>";
-  s += fmt::format("<h1>Sensitivity maps — {}</h1>", preview::svg::escape(machine_name));
+std::string sensitivity_html(const SensitivityResult& r, const SensitivityOptions& o, const std::string& machine_name,
+                             const std::string& machine_file) {
+  report::Provenance p;
+  p.title = "Sensitivity maps — " + machine_name;
+  p.machine = machine_name;
+  p.model = "one error parameter at a time (no model file)";
+  if (!machine_file.empty()) p.inputs.push_back({"machine file", machine_file});
+  std::string s = report::page_start(p);
+  s += "<style>.maps{display:flex;flex-wrap:wrap}.map{margin:4px;text-align:center}</style>";
   s += fmt::format("<p>Hemisphere of radius {} mm (centre = workpiece origin at {:.1f}, {:.1f}, {:.1f} mm in M), tool "
                    "normal to the surface, polar angle 0–{}°; {} CL points. One error parameter at a time ({} mm, or {}° for "
                    "ar, at, gp); deviation of the executed tool tip from the CL point along the surface normal "
                    "(positive: material left). Maps seen from above (+X right, +Y up), colour scaled to each map's largest "
-                   "|deviation| (red positive, blue negative); a, b, c mark the screw lines, + and − the extremes.</p>",
+                   "|deviation| (red positive, blue negative; a map whose largest |deviation| is below 0.001 µm has no effect and is drawn white); "
+                   "a, b, c mark the screw lines, + and − the extremes.</p>",
                    o.sphere_radius_mm, o.workpiece_origin_mm.x(), o.workpiece_origin_mm.y(), o.workpiece_origin_mm.z(),
                    o.max_polar_deg, r.points.size(), o.length_step_mm, o.angle_step_deg);
   s += "<table><tr><th>parameter</th><th>step</th><th>max µm</th><th>min µm</th><th>range µm</th></tr>";
@@ -156,8 +159,7 @@ std::string sensitivity_html(const SensitivityResult& r, const SensitivityOption
     }
     s += "</div>";
   }
-  s += "</body></html>\n";
-  return s;
+  return s + report::page_end();
 }
 
 }  // namespace ncpost::trr

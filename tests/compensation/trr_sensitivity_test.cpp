@@ -141,7 +141,11 @@ TEST_CASE("ncpost sensitivity: JSON of the spec and a self-contained HTML page")
   const std::string html = s.str();
   std::size_t svgs = 0;
   for (auto p = html.find("<svg"); p != std::string::npos; p = html.find("<svg", p + 1)) ++svgs;
-  CHECK(svgs == 30);
+  CHECK(svgs == 60);  // a map and its colour bar per parameter
+  // dzs has no first-order effect: its three maps are drawn as zero (white), not saturated noise
+  std::size_t no_effect = 0;
+  for (auto p = html.find(">no effect</text>"); p != std::string::npos; p = html.find(">no effect</text>", p + 1)) ++no_effect;
+  CHECK(no_effect == 3);
   CHECK(html.find("<script") == std::string::npos);
   CHECK(html.find("http") == std::string::npos);  // nothing fetched
 }

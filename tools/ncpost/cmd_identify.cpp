@@ -31,6 +31,7 @@ namespace {
 struct IdentifyArgs {
   std::string machine, output, report, params, fixed, loss = "squared";
   double loss_scale_um = 3.0;
+  std::optional<double> pass_tolerance_um;
   bool no_diagnose = false, no_basic = false;
   std::vector<std::string> data;
 };
@@ -49,7 +50,8 @@ std::vector<std::string> split_list(const std::string& s) {
 
 /// Residual analysis (issue 6): basic fit, effects added by evidence, before/after report.
 int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets, const std::vector<std::string>& names,
-                 const comp::IdentifyOptions& o, const std::string& output, const std::string& report) {
+                 const comp::IdentifyOptions& o, const std::string& output, const std::string& report,
+                 const comp::IdentifyReportInputs& inputs) {
   comp::DiagnoseOptions d;
   d.identify = o;
   if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
@@ -60,7 +62,7 @@ int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets
   fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
   if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);
   write_file_atomically(output, comp::format_model_json(comp::to_model_file(m, r)));
-  if (!report.empty()) write_file_atomically(report, comp::html_diagnose_report(m, sets, r, tt));
+  if (!report.empty()) write_file_atomically(report, comp::html_diagnose_report(m, sets, r, tt, inputs));
   return 0;
 }
 
@@ -82,6 +84,9 @@ void add_identify(CLI::App& app, Action& action) {
       ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
   sub->add_flag("--no-diagnose", a->no_diagnose, "fit the basic model only (no residual analysis)");
   sub->add_option("--report", a->report, "self-contained HTML report");
+  sub->add_option("--pass-tolerance-um", a->pass_tolerance_um,
+                  "tolerance (µm) for the report's pass/fail verdicts: largest deviation per file, ISO 230-4 G")
+      ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
   sub->add_option("-o,--output", a->output, "model JSON to write")->required();
   sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
   sub->callback([&action, a] {
@@ -95,8 +100,10 @@ void add_identify(CLI::App& app, Action& action) {
         return *rc;
       const Machine m = load_machine(a->machine);
       const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a->data, m);
+      const comp::IdentifyReportInputs report_inputs{a->machine, a->output, a->pass_tolerance_um};
       if (comp::all_laser(sets))  // issue 7
-        return identify_laser(m, sets, a->output, a->report, !a->params.empty() || !a->fixed.empty() || a->loss != "squared");
+        return identify_laser(m, sets, a->output, a->report, !a->params.empty() || !a->fixed.empty() || a->loss != "squared",
+                              report_inputs);
       std::vector<std::string> names = a->no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);
       for (const auto& n : split_list(a->params)) {
         const comp::ParseResult r = comp::parse_parameter_name(n, m);
@@ -116,12 +123,12 @@ void add_identify(CLI::App& app, Action& action) {
         o.fixed.set(n, finite_number(item.substr(eq + 1), "--fixed " + n, -1000.0, 1000.0, "mm or rad"));
       }
       if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
-      if (!a->no_diagnose) return run_diagnose(m, sets, names, o, a->output, a->report);
+      if (!a->no_diagnose) return run_diagnose(m, sets, names, o, a->output, a->report, report_inputs);
       const comp::IdentifyResult r = comp::identify(m, sets, names, o);
       fmt::print("{}", comp::text_report(m, sets, r));
       if (!r.converged) throw Infeasible("the fit " + r.message);
       write_file_atomically(a->output, comp::format_model_json(comp::to_model_file(m, r)));
-      if (!a->report.empty()) write_file_atomically(a->report, comp::html_report(m, sets, r));
+      if (!a->report.empty()) write_file_atomically(a->report, comp::html_report(m, sets, r, report_inputs));
       return 0;
     };
   });

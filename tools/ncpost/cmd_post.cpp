@@ -82,6 +82,7 @@ int run_post(const PostArgs& given) {
     fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
   r.machine_source = a.job.machine;
   r.input_name = a.input;
+  r.input_file = a.input_path;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
   if (machine_file_kind(a.job.machine) == "trr-xy") {

@@ -87,6 +87,9 @@ int run_preview(const PreviewArgs& given) {
     report.input_name = a.input;
     report.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
     report.model_name = a.model;
+    report.inputs.push_back({"CL input", a.input_path, a.input});
+    report.inputs.push_back({"machine file", a.job.machine});
+    if (!a.model.empty()) report.inputs.push_back({"error model", a.model});
     report.summary = &summary;
     report.stats = stats;
     std::vector<int> lines;

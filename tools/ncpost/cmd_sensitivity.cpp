@@ -46,7 +46,7 @@ int run_sensitivity(const SensitivityArgs& a) {
     throw Infeasible(e.what());
   }
   if (!a.json.empty()) write_file_atomically(a.json, trr::sensitivity_json(r, o));
-  if (!a.html.empty()) write_file_atomically(a.html, trr::sensitivity_html(r, o, m.name));
+  if (!a.html.empty()) write_file_atomically(a.html, trr::sensitivity_html(r, o, m.name, a.machine));
   fmt::print("Tool-tip deviation along the surface normal, hemisphere R {} mm, polar 0-{} deg, {} CL points:\n{}",
              o.sphere_radius_mm, o.max_polar_deg, r.points.size(), trr::sensitivity_table(r));
   return 0;

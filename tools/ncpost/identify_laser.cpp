@@ -12,7 +12,7 @@
 namespace ncpost::cli {
 
 int identify_laser(const Machine& m, const std::vector<comp::MeasurementSet>& sets, const std::string& output,
-                   const std::string& report, bool options_ignored) {
+                   const std::string& report, bool options_ignored, const comp::IdentifyReportInputs& report_inputs) {
   if (options_ignored)
     fmt::print("notice: laser data: --params, --fixed and --loss do not apply (the model is the error tables of the measured "
                "axes, squareness and reversal)\n");
@@ -20,7 +20,7 @@ int identify_laser(const Machine& m, const std::vector<comp::MeasurementSet>& se
   fmt::print("{}", comp::laser_text_report(m, r));
   if (!r.ok) throw Infeasible("laser identification: " + r.message);
   write_file_atomically(output, comp::format_model_json(comp::laser_model_file(m, r)));
-  if (!report.empty()) write_file_atomically(report, comp::laser_html_report(m, r));
+  if (!report.empty()) write_file_atomically(report, comp::laser_html_report(m, r, sets, report_inputs));
   return 0;
 }
 

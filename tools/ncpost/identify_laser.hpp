@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/measurement.hpp"
 
 namespace ncpost::cli {
@@ -13,6 +14,7 @@ namespace ncpost::cli {
 /// a notice says that --params, --fixed and --loss do not apply (the laser model is the 18 tables, the
 /// squareness and the reversal).
 int identify_laser(const Machine& machine, const std::vector<comp::MeasurementSet>& sets, const std::string& output,
-                   const std::string& report, bool options_ignored = false);
+                   const std::string& report, bool options_ignored = false,
+                   const comp::IdentifyReportInputs& report_inputs = {});
 
 }  // namespace ncpost::cli

@@ -135,6 +135,9 @@ std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
     report.input_name = a.input;
     report.machine_name = fmt::format("{} ({})", job->machine.name, a.job.machine);
     report.model_name = a.model;
+    report.inputs.push_back({"CL input", a.input_path, a.input});
+    report.inputs.push_back({"machine file", a.job.machine});
+    if (!a.model.empty()) report.inputs.push_back({"error model", a.model});
     report.motions = s.motions_in;
     write_file_atomically(a.html, trr::preview_html(report));
   }

@@ -10,6 +10,7 @@
 
 #include "ncpost/compensation/diagnose.hpp"
 #include "ncpost/compensation/diagnose_tool_tip.hpp"
+#include "ncpost/compensation/identify_report.hpp"
 
 namespace ncpost::comp {
 
@@ -18,6 +19,7 @@ std::string text_diagnose_report(const Machine& machine, const std::vector<Measu
 
 /// The whole page: html_report of the final fit with the residual analysis inserted.
 std::string html_diagnose_report(const Machine& machine, const std::vector<MeasurementSet>& sets,
-                                 const DiagnoseResult& result, const ToolTipComparison& tool_tip);
+                                 const DiagnoseResult& result, const ToolTipComparison& tool_tip,
+                                 const IdentifyReportInputs& inputs = {});
 
 }  // namespace ncpost::comp

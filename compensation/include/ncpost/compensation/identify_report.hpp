@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Human reports of an identification: text for the terminal and a self-contained HTML page
-// (inline SVG, no external resources) with the ballbar trajectories as polar plots (measured,
-// fitted and nominal-model ΔL against the rotary angle), the parameters in µm / µrad with their
-// uncertainty, the identifiability findings and the residual before and after per file.
+// (inline SVG, no external resources; the shared pieces of ncpost::report) naming every input with
+// its SHA-256, the machine, the model, the date and the version; a pass/fail verdict against the
+// user's tolerance; the compensation values for the control (µm, µrad); the parameters with their
+// uncertainty, the identifiability findings and the residual before and after per file; the
+// ballbar tests as polar plots labelled with angles and the axes moved (measured, identified and
+// nominal-model ΔL, and the residual on its own scale) with ISO 230-4 figures, feed and direction;
+// the sphere-probing positions with their dispersion per axis before and after.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +24,14 @@ struct ReportValue {
 ReportValue report_value(const Machine& machine, const std::string& name, double value_si);
 
 std::string text_report(const Machine& machine, const std::vector<MeasurementSet>& sets, const IdentifyResult& result);
-std::string html_report(const Machine& machine, const std::vector<MeasurementSet>& sets, const IdentifyResult& result);
+/// What the HTML report names besides the data (each file with its SHA-256) and the verdict's tolerance.
+struct IdentifyReportInputs {
+  std::string machine_file;                  ///< hashed in the provenance table
+  std::string model_file;                    ///< the model written (-o)
+  std::optional<double> pass_tolerance_um;   ///< `identify --pass-tolerance-um`: pass/fail verdicts
+};
+
+std::string html_report(const Machine& machine, const std::vector<MeasurementSet>& sets, const IdentifyResult& result,
+                        const IdentifyReportInputs& inputs = {});
 
 }  // namespace ncpost::comp

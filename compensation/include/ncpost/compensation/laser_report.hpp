@@ -5,11 +5,16 @@
 // squareness from the straightness slopes (ISO 230-1); what the lines cannot see.
 #include <string>
 
+#include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/laser_identify.hpp"
 
 namespace ncpost::comp {
 
 std::string laser_text_report(const Machine& machine, const LaserIdentifyResult& result);
-std::string laser_html_report(const Machine& machine, const LaserIdentifyResult& result);
+/// With the provenance (the sets' files and the inputs' with SHA-256), the ISO 230-2
+/// bidirectional plot of every positioning line (x̄↑, x̄↓ ± 2s, reversal B_i, tick values in µm
+/// and mm), the error functions, and with a tolerance a pass/fail of each line's accuracy A.
+std::string laser_html_report(const Machine& machine, const LaserIdentifyResult& result,
+                              const std::vector<MeasurementSet>& sets = {}, const IdentifyReportInputs& inputs = {});
 
 }  // namespace ncpost::comp

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ncpost/postproc/verify.hpp"
+#include "ncpost/report/html_page.hpp"
 
 namespace ncpost {
 
@@ -34,6 +35,36 @@ class MaxSeries {
   std::vector<Bucket> buckets_;
 };
 
+/// The tool path for the 3D view of the report: the CL end point of every block of the "before"
+/// program with its contour error, and the "after" error of the same CL lines (the largest of the
+/// written blocks of a line). At most `max_points` points: beyond, neighbours merge (the later
+/// point stays, the larger errors are kept), so memory stays bounded on any path.
+class PathErrors {
+ public:
+  explicit PathErrors(std::size_t max_points = 20000) : max_points_(max_points) {}
+  /// The written program re-executed: called in program order (CL lines rising).
+  void add_after(int line, double contour_mm);
+  /// The "before" program: one call per CL motion, in program order.
+  void add_before(int line, const Vec3d& tip_mm, double contour_mm);
+
+  struct Point {
+    Vec3d tip_mm;
+    int line_first, line_last;
+    double before_mm, after_mm;  ///< after < 0: no written block re-executed for these lines
+  };
+  /// The points with their after errors.
+  std::vector<Point> points() const;
+
+ private:
+  struct Span {
+    int line_first, line_last;
+    double value_mm;
+  };
+  std::size_t max_points_;
+  std::vector<Point> before_;
+  std::vector<Span> after_;
+};
+
 struct PostAccount {
   std::string input_name, machine_name, model_name, dialect_name, method_name;
   std::string executed_on;  ///< the machine both programs are executed on, in words
@@ -48,13 +79,18 @@ struct PostAccount {
   // after: the written program re-executed
   VerifyReport after;
   MaxSeries before_series, after_series;
+  PathErrors path;
+  /// Files named in the report with their SHA-256 (CL input, machine, model, verify-on model).
+  std::vector<report::InputFile> inputs;
   std::vector<std::string> notices;
 };
 
 /// One line per figure, for the terminal.
 std::string account_text(const PostAccount& a);
 
-/// Self-contained HTML (inline SVG, no scripts, no network).
+/// Self-contained HTML (inline SVG and the inline WebGL view of the path, no network): provenance
+/// with the inputs' SHA-256, before/after figures in µm, the error along the program, and the
+/// tool path in 3D coloured by the contour error before and after on one colour bar (µm).
 std::string render_post_html(const PostAccount& a);
 
 }  // namespace ncpost

@@ -66,6 +66,7 @@ struct PostRequest {
   Setup setup;                  ///< workpiece origin and tool length
   // the input
   std::string input_name = "<input>";  ///< the name in messages (file:line:col) and the program header
+  std::string input_file;  ///< the file the input is read from, hashed in the report (empty: input_name)
   InputKind input_kind = InputKind::automatic;
   cl::ReaderOptions reader;     ///< units of a file that does not say, unterminated files, NX MSYS
   // the machine the program is for

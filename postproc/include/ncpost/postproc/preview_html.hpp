@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ncpost/postproc/preview_summary.hpp"
+#include "ncpost/report/html_page.hpp"
 
 namespace ncpost::preview {
 
@@ -15,6 +16,7 @@ struct HtmlReport {
   std::string input_name;
   std::string machine_name;
   std::string model_name;                       ///< empty: nominal machine
+  std::vector<report::InputFile> inputs;        ///< named with their SHA-256 (input, machine, model)
   const PreviewSummary* summary = nullptr;
   PreviewStats stats;
   std::vector<std::string> worst_source_lines;  ///< the source text of summary->worst(), same order

@@ -2,6 +2,8 @@
 #pragma once
 // Inline SVG charts for the self-contained HTML reports (no scripts, no network): a line chart,
 // a bar chart, an XY path coloured by a value, and the colour scale they share. Sizes in CSS px.
+// escape, colour and nice_ticks are those of the reports layer (ncpost/report/), named here for
+// the preview's charts.
 #include <string>
 #include <vector>
 

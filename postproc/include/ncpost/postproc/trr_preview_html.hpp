@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include "ncpost/report/html_page.hpp"
 // The HTML report of `ncpost preview --html` on the TRR-XY machine: self-contained (inline SVG,
 // no scripts): summary, the nonlinear error of every feed block (exact and the harmonic model's
 // midpoint estimate), the tool path seen from above coloured by that error, the worst blocks.
@@ -19,6 +20,7 @@ struct PreviewRow {
 
 struct PreviewReport {
   std::string input_name, machine_name, model_name;
+  std::vector<report::InputFile> inputs;  ///< named with their SHA-256
   std::size_t motions = 0;
   std::vector<PreviewRow> rows;
 };

@@ -19,6 +19,9 @@ std::string sensitivity_json(const SensitivityResult& r, const SensitivityOption
 /// Fixed-width table, one line per parameter, and a summary by kind of error.
 std::string sensitivity_table(const SensitivityResult& r);
 
-std::string sensitivity_html(const SensitivityResult& r, const SensitivityOptions& o, const std::string& machine_name);
+/// The maps with a diverging colour bar each (a map without effect drawn as zero), and the
+/// provenance (the machine file with its SHA-256, date, version).
+std::string sensitivity_html(const SensitivityResult& r, const SensitivityOptions& o, const std::string& machine_name,
+                             const std::string& machine_file = {});
 
 }  // namespace ncpost::trr

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Sections of the identification report (identify_report.cpp), internal to the compensation
+// library: the ballbar tests as a ballbar report draws them (polar plots labelled with angles and
+// the axes moved, the residual on its own magnified scale, ISO 230-4 figures, feed and
+// direction), the sphere-probing positions with their dispersion per axis before and after, the
+// pass/fail verdict against a tolerance, and the compensation values as entered in the control.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncpost/compensation/identify.hpp"
+
+namespace ncpost::comp::sections {
+
+std::string ballbar_section(const Machine& machine, const MeasurementSet& set, const std::vector<double>& fitted_mm,
+                            const std::vector<double>& nominal_mm, std::optional<double> tolerance_um);
+
+std::string sphere_section(const Machine& machine, const MeasurementSet& set, const std::vector<double>& fitted_mm,
+                           const std::vector<double>& nominal_mm);
+
+std::string control_values_section(const Machine& machine, const IdentifyResult& result);
+
+std::string verdict_section(const IdentifyResult& result, std::optional<double> tolerance_um);
+
+}  // namespace ncpost::comp::sections

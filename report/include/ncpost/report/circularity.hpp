@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// ISO 230-4 (2022) figures of a circular test from the radial deviation r(θ) (µm) of the path
+// at angles θ (rad), as a ballbar reads them (ΔL = L − nominal bar length):
+//   circular deviation G: the least separation of two concentric circles enclosing the path,
+//     about the least-squares circle (LSC) centre (r ≈ a + b cos θ + c sin θ, small deviations);
+//   radial deviation F: the largest and smallest r (about the instrument's centre);
+//   circular hysteresis H: the largest radial difference between the clockwise and the
+//     counter-clockwise paths at the same angle (only when both directions were run).
+#include <string>
+#include <vector>
+
+namespace ncpost::report {
+
+struct CircularityFigures {
+  bool ok = false;
+  std::string message;      ///< why not ok (too few points, arc too short)
+  double G_um = 0.0;        ///< circular deviation about the LSC centre
+  double F_max_um = 0.0, F_min_um = 0.0;
+  double H_um = -1.0;       ///< < 0: one direction only
+  double centre_x_um = 0.0, centre_y_um = 0.0;  ///< LSC centre offset (in the plane of θ)
+  double arc_deg = 0.0;     ///< angle covered (at most 360)
+  int direction = 0;        ///< +1 counter-clockwise (θ rising), −1 clockwise, 0 both
+};
+
+CircularityFigures iso230_4_circularity(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
+
+}  // namespace ncpost::report
