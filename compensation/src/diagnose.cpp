@@ -311,7 +311,12 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       e.max_before_um = model.fit.max_after_um;
       e.rms_after_um = trial.fit.rms_after_um;
       e.max_after_um = trial.fit.max_after_um;
-      if (!best || e.rms_after_um < best->rms_after_um) {
+      // among the accepted, the one the evidence prefers: the smallest Bayesian information
+      // criterion m·ln(S1/m) + p1·ln(m), so a table (tens of nodes) wins over a compact form only
+      // where the compact form leaves what the nodes explain (issue 17); for candidates with the
+      // same number of parameters this is the smallest S1, as before
+      e.bic = double(count) * std::log(std::max(s1, 1e-300) / double(count)) + double(p1) * std::log(double(count));
+      if (!best || e.bic < best->bic) {
         if (best) out.last_rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
         best = e;
         best_model = trial;
@@ -334,7 +339,15 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     model = best_model;
     retune_drift(m, sets, o, t_span, model, count);
     const std::string added = best->candidate.effect;
-    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
+    // a table holds every shape of its function: the harmonics of the same component and axis
+    // are then no longer separate candidates (E<c><axis>:t → E<c><axis>:h*)
+    const bool table = added.size() > 2 && added.substr(added.size() - 2) == ":t";
+    const std::string family = added.substr(0, 3);
+    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(),
+                                   [&](const Candidate& c) {
+                                     return c.effect == added ||
+                                            (table && c.effect.rfind(family + ":h", 0) == 0);
+                                   }),
                     catalogue.end());
     out.stop_reason = "max_effects reached";
   }

@@ -24,7 +24,9 @@
 //     accepted only if its p-value is below `significance` / (number of candidates tested)
 //     (Bonferroni: the family-wise false-positive rate of a step stays below `significance`), if
 //     the refit pins none of its parameters and none of the model's (rank check), and if its
-//     size is physically plausible (diagnose_effect_size.hpp). The best accepted one by S1 is added.
+//     size is physically plausible (diagnose_effect_size.hpp). The accepted one with the smallest
+//     Bayesian information criterion m·ln(S1/m) + p1·ln(m) is added (for equal parameter counts
+//     the smallest S1; it weighs a table's many nodes against a compact form's few).
 //  3. After each addition the time constant of every drift in the model is chosen again by
 //     refits (tau·2^(j/2), j = −2..2, moved on while the best is at an end, refined by a
 //     parabola): the effects added later change it.
@@ -68,6 +70,7 @@ struct AddedEffect {
   bool size_is_angle = false;
   double rms_before_um = 0.0, rms_after_um = 0.0, max_before_um = 0.0, max_after_um = 0.0;
   double f_statistic = 0.0;
+  double bic = 0.0;             ///< m·ln(S1/m) + p1·ln(m) of the model with it (the choice among accepted ones)
   double p_value = 1.0;
   int tested = 0;               ///< candidates screened in its step
 };
