@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
+#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -126,6 +128,72 @@ std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets
   e.size_sigma = size.sigma;
   e.size_is_angle = size.is_angle;
   return size.implausible;
+}
+
+/// Orthonormal basis of the (normalised) columns of J listed in `cols`.
+Eigen::MatrixXd basis_of(const Eigen::MatrixXd& J, const std::vector<int>& cols) {
+  Eigen::MatrixXd K(J.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    K.col(static_cast<Eigen::Index>(j)) = J.col(cols[j]);
+    if (K.col(static_cast<Eigen::Index>(j)).norm() > 0) K.col(static_cast<Eigen::Index>(j)).normalize();
+  }
+  if (K.cols() == 0) return K;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(J.rows(), K.cols());
+}
+
+/// Whether the data can tell each added effect from the rest of the final model (issue 17):
+/// the sine of its columns to the span of all other fitted columns, and the added effects its
+/// columns correlate with (largest canonical correlation above 0.9).
+void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                      const DiagnoseOptions& o, DiagnoseResult& out) {
+  if (out.added.empty() || !model.fit.converged) return;
+  std::vector<std::string> names = layout_names(model);
+  for (const auto& f : o.identify.fixed.names())
+    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+  std::vector<double> values;
+  for (const auto& n : names)
+    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+  std::vector<int> fitted;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  const Eigen::MatrixXd J = prob.jacobian(values, fitted);
+  auto columns_of = [&](const Candidate& c) {
+    std::vector<int> cols;
+    for (std::size_t j = 0; j < fitted.size(); ++j)
+      if (std::find(c.parameters.begin(), c.parameters.end(), names[static_cast<std::size_t>(fitted[j])]) != c.parameters.end())
+        cols.push_back(static_cast<int>(j));
+    return cols;
+  };
+  for (auto& e : out.added) {
+    const std::vector<int> own = columns_of(e.candidate);
+    if (own.empty()) continue;
+    std::vector<int> rest;
+    for (int j = 0; j < static_cast<int>(fitted.size()); ++j)
+      if (std::find(own.begin(), own.end(), j) == own.end()) rest.push_back(j);
+    const Eigen::MatrixXd Q = basis_of(J, rest), E = basis_of(J, own);
+    const Eigen::MatrixXd off = E - Q * (Q.transpose() * E);
+    e.separation_sine = Eigen::JacobiSVD<Eigen::MatrixXd>(off).singularValues().minCoeff();
+    e.correlated.clear();
+    for (const auto& other : out.added) {
+      if (&other == &e) continue;
+      const std::vector<int> theirs = columns_of(other.candidate);
+      if (theirs.empty()) continue;
+      const Eigen::MatrixXd F = basis_of(J, theirs);
+      const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
+      if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
+    }
+    std::string with;
+    for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
+    if (e.separation_sine < 0.05)
+      e.separation = fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
+                                 "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
+    else
+      e.separation = fmt::format("real: separable from the rest of the model (sine {:.3f}){}, significant on its own "
+                                 "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
+                                 e.f_statistic);
+  }
 }
 
 }  // namespace
@@ -302,6 +370,16 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       if (why.empty() && !(e.p_value < alpha))
         why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
       if (why.empty()) why = apply_size(m, sets, o, e);
+      // an instrument term needs its own signature: with it, the sets it acts on are at their
+      // noise (no structure left against any rotary axis); otherwise it is only the closest-
+      // looking term to an effect the catalogue does not hold (issue 17)
+      if (why.empty() && s.spec.kind == CandidateKind::instrument) {
+        const MeasurementType type = s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
+        const auto left = residual_structure(m, sets, residual_of(m, sets, trial, o.identify), o.significance, &type);
+        if (!left.empty())
+          why = fmt::format("its own signature is not shown: with it, {} {} against {} still has structure ({})",
+                            left.front().file, left.front().value, left.front().axis, left.front().shape);
+      }
       if (!why.empty()) {
         rej.reason = why;
         out.last_rejected.push_back(rej);
@@ -382,6 +460,8 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   out.held = model.held;
   out.residual_after_mm = residual_of(m, sets, model, o.identify);
   out.noise_um = noise_from_differences_um(sets, out.residual_after_mm);
+  out.unexplained = residual_structure(m, sets, out.residual_after_mm, o.significance);
+  separate_effects(m, sets, model, o, out);
   out.before = residual_signature(m, sets, out.residual_before_mm);
   out.after = residual_signature(m, sets, out.residual_after_mm);
   return out;
@@ -390,6 +470,26 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
 ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
   ModelFile f = to_model_file(m, r.final_fit);
   f.effects_added = r.effects_added();
+  nlohmann::ordered_json d;
+  d["effects"] = nlohmann::ordered_json::array();
+  for (const auto& e : r.added)
+    d["effects"].push_back({{"effect", e.candidate.effect},
+                            {"separation_sine", e.separation_sine},
+                            {"separation", e.separation}});
+  d["unexplained"] = nlohmann::ordered_json::array();
+  for (const auto& u : r.unexplained)
+    d["unexplained"].push_back({{"file", u.file},
+                                {"component", u.value},
+                                {"against", std::string(1, u.axis)},
+                                {"shape", u.shape},
+                                {"order", u.order},
+                                {"spread_um", u.spread_um},
+                                {"largest_um", u.largest_um},
+                                {"at_deg", u.at_deg},
+                                {"F", u.f_statistic},
+                                {"p", u.p_value},
+                                {"proposal", u.proposal}});
+  f.extra["diagnosis"] = d.dump(2);
   if (f.fit) {
     f.fit->rms_before_um = r.basic.rms_after_um;
     f.fit->max_before_um = r.basic.max_after_um;

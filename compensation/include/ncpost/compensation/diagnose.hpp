@@ -42,6 +42,7 @@
 #include "ncpost/compensation/diagnose_candidates.hpp"
 #include "ncpost/compensation/diagnose_effect_size.hpp"
 #include "ncpost/compensation/diagnose_signature.hpp"
+#include "ncpost/compensation/diagnose_structure.hpp"
 #include "ncpost/compensation/identify.hpp"
 
 namespace ncpost::comp {
@@ -73,6 +74,13 @@ struct AddedEffect {
   double bic = 0.0;             ///< m·ln(S1/m) + p1·ln(m) of the model with it (the choice among accepted ones)
   double p_value = 1.0;
   int tested = 0;               ///< candidates screened in its step
+  /// Can the data tell it from the other fitted parameters (issue 17, e.g. EXC:h2 beside
+  /// EAC:h2 / EBC:h2)? The sine of its columns to the span of all others in the final model
+  /// (identifiability.hpp's measure; 1 = independent, 0 = an alias), and the added effects
+  /// whose columns correlate with its own above 0.9 (largest canonical correlation).
+  double separation_sine = 1.0;
+  std::vector<std::pair<std::string, double>> correlated;
+  std::string separation;       ///< the verdict in words: "real: ..." or "an alias of ...: ..."
 };
 
 /// Why the best candidates of the last step were not added.
@@ -95,6 +103,9 @@ struct DiagnoseResult {
   ResidualSignature before, after;
   Eigen::VectorXd residual_before_mm, residual_after_mm;
   std::string stop_reason;
+  /// Structure the final model leaves (diagnose_structure.hpp): what is not at the noise and no
+  /// candidate explains, with its shape and the measurement that would resolve it.
+  std::vector<ResidualStructure> unexplained;
 
   std::vector<std::string> effects_added() const;
 };
@@ -104,8 +115,10 @@ struct DiagnoseResult {
 DiagnoseResult diagnose(const Machine& machine, const std::vector<MeasurementSet>& sets,
                         const std::vector<std::string>& basic_names, const DiagnoseOptions& options = {});
 
-/// The model file of the final model: parameters, uncertainty, identifiability, effects_added and
-/// fit (before = basic model, after = final model).
+/// The model file of the final model: parameters, uncertainty, identifiability, effects_added,
+/// fit (before = basic model, after = final model) and, when structure is left that nothing
+/// explains, `diagnosis.unexplained` (file, value, axis, shape, proposed measurement), with the
+/// separation verdict of every added effect (`diagnosis.effects`).
 ModelFile to_model_file(const Machine& machine, const DiagnoseResult& result);
 
 }  // namespace ncpost::comp
