@@ -20,7 +20,7 @@ using namespace ncpost::test;
 
 TEST_CASE("False-attribution rate over noise-only sets", "[diagnose][open][rate]") {
   const Machine m = public_machine();
-  const auto plans = open_plan(m, 20.0, 200, false);
+  const auto plans = open_plan(m, 30.0, 100, false);
   const comp::ErrorParameters truth = truth_with(m, {});
   int false_sets = 0, unexplained_sets = 0;
   const int seeds = 50;
