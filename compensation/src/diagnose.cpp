@@ -157,8 +157,36 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
   std::vector<int> fitted;
   for (std::size_t i = 0; i < names.size(); ++i)
     if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
+  // the alternatives of each added harmonic: the same order of the axis's other components that
+  // are not in the model (for a radial EXC:h2, the tilts EAC:h2 and EBC:h2 among them), at 0
+  std::vector<std::vector<int>> alternatives(out.added.size());
+  std::vector<std::vector<std::string>> alternative_names(out.added.size());
+  const std::size_t model_columns = fitted.size();
+  for (std::size_t a = 0; a < out.added.size(); ++a) {
+    const std::string& e = out.added[a].candidate.effect;
+    const ParseResult spec = parse_parameter_name(out.added[a].candidate.parameters.front(), m);
+    if (!spec.spec || spec.spec->kind != ParameterKind::harmonic) continue;
+    for (const char c : std::string("XYZABC")) {
+      if (c == e[1]) continue;
+      const std::string alt = fmt::format("E{}{}", c, e.substr(2));
+      bool usable = true;
+      for (const char* part : {":cos", ":sin"}) {
+        const std::string n = alt + part;
+        if (std::find(names.begin(), names.end(), n) != names.end() || !parse_parameter_name(n, m).spec) usable = false;
+      }
+      if (!usable) continue;
+      alternative_names[a].push_back(alt);
+      for (const char* part : {":cos", ":sin"}) {
+        names.push_back(alt + part);
+        values.push_back(0.0);
+        alternatives[a].push_back(static_cast<int>(fitted.size()));
+        fitted.push_back(static_cast<int>(names.size()) - 1);
+      }
+    }
+  }
   const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
   const Eigen::MatrixXd J = prob.jacobian(values, fitted);
+  fitted.resize(model_columns);
   auto columns_of = [&](const Candidate& c) {
     std::vector<int> cols;
     for (std::size_t j = 0; j < fitted.size(); ++j)
@@ -166,7 +194,8 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
         cols.push_back(static_cast<int>(j));
     return cols;
   };
-  for (auto& e : out.added) {
+  for (std::size_t a = 0; a < out.added.size(); ++a) {
+    AddedEffect& e = out.added[a];
     const std::vector<int> own = columns_of(e.candidate);
     if (own.empty()) continue;
     std::vector<int> rest;
@@ -184,14 +213,50 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
       const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
       if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
     }
+    // could the other components of the same order explain what it explains? Its columns and
+    // theirs, both off the rest of the model: the largest canonical correlation
+    e.alias_correlation = 0.0;
+    e.alias_of.clear();
+    if (!alternatives[a].empty()) {
+      const Eigen::MatrixXd own_off = off;
+      const Eigen::MatrixXd A = basis_of(J, alternatives[a]);
+      Eigen::MatrixXd alt_off = A - Q * (Q.transpose() * A);
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qa(alt_off);
+      const Eigen::MatrixXd QA = qa.householderQ() * Eigen::MatrixXd::Identity(J.rows(), alt_off.cols());
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qe(own_off);
+      const Eigen::MatrixXd QE = qe.householderQ() * Eigen::MatrixXd::Identity(J.rows(), own_off.cols());
+      const Eigen::VectorXd rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
+      e.alias_correlation = rho.size() ? rho.minCoeff() : 0.0;  // every direction of it, not just one
+      // the alternatives that carry it: those whose own columns correlate most with it
+      for (std::size_t k = 0; k < alternative_names[a].size(); ++k) {
+        const std::vector<int> pair{alternatives[a][2 * k], alternatives[a][2 * k + 1]};
+        const Eigen::MatrixXd P = basis_of(J, pair);
+        Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
+        const Eigen::HouseholderQR<Eigen::MatrixXd> qp(p_off);
+        const Eigen::MatrixXd QP = qp.householderQ() * Eigen::MatrixXd::Identity(J.rows(), p_off.cols());
+        const double r = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff();
+        if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", alternative_names[a][k], r));
+      }
+    }
     std::string with;
     for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
-    if (e.separation_sine < 0.05)
+    std::string alts;
+    for (const auto& n : e.alias_of) alts += (alts.empty() ? "" : ", ") + n;
+    if (e.alias_correlation > 0.99)
+      e.separation = fmt::format("an alias of {}: what it explains, the same order of the other components explains as "
+                                 "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
+                                 "them apart — measure from a second sphere position (another height and radius)",
+                                 alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
+    else if (e.separation_sine < 0.05)
       e.separation = fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
                                  "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
     else
-      e.separation = fmt::format("real: separable from the rest of the model (sine {:.3f}){}, significant on its own "
+      e.separation = fmt::format("real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
                                  "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
+                                 alternatives[a].empty() ? std::string()
+                                 : fmt::format("; the other components of its order reproduce it only to canonical "
+                                               "correlation {:.4f}{}", e.alias_correlation,
+                                               alts.empty() ? "" : " (" + alts + ")"),
                                  e.f_statistic);
   }
 }
@@ -475,6 +540,8 @@ ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
   for (const auto& e : r.added)
     d["effects"].push_back({{"effect", e.candidate.effect},
                             {"separation_sine", e.separation_sine},
+                            {"alias_correlation", e.alias_correlation},
+                            {"alias_of", e.alias_of},
                             {"separation", e.separation}});
   d["unexplained"] = nlohmann::ordered_json::array();
   for (const auto& u : r.unexplained)

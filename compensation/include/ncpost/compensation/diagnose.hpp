@@ -80,6 +80,12 @@ struct AddedEffect {
   /// whose columns correlate with its own above 0.9 (largest canonical correlation).
   double separation_sine = 1.0;
   std::vector<std::pair<std::string, double>> correlated;
+  /// For a harmonic: how well the same order of the axis's other components not in the model
+  /// (for EXC:h2 the tilts EAC:h2, EBC:h2, ...) reproduce its columns once the rest of the model is
+  /// accounted for (the smallest canonical correlation: every direction of it); above 0.99 it is
+  /// reported as an alias of them. `alias_of`: those that correlate with it above 0.5.
+  double alias_correlation = 0.0;
+  std::vector<std::string> alias_of;
   std::string separation;       ///< the verdict in words: "real: ..." or "an alias of ...: ..."
 };
 
