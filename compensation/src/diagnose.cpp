@@ -494,6 +494,27 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
                     catalogue.end());
     out.stop_reason = "max_effects reached";
   }
+  // No false attribution (issue 17): an effect is found only if, with it, what is left is at the
+  // noise or explained by the effects added after it. When the final model still leaves
+  // structure against a rotary axis, the effects fitted on the way only chased what the catalogue
+  // does not hold: none is attributed, the model stays the basic one and the structure is
+  // reported (diagnosis.unexplained, with the measurement that would resolve it).
+  if (!out.added.empty() && model.fit.converged) {
+    const auto left = residual_structure(m, sets, residual_of(m, sets, model, o.identify), o.significance);
+    if (!left.empty()) {
+      std::string list;
+      for (const auto& e : out.added) {
+        out.not_attributed.push_back(e.candidate.effect);
+        list += (list.empty() ? "" : ", ") + e.candidate.effect;
+      }
+      out.stop_reason += fmt::format("; with {} structure remains that no candidate explains ({} {} against {}: {}), so "
+                                     "none of them is attributed", list, left.front().file, left.front().value,
+                                     left.front().axis, left.front().shape);
+      say("not attributed: " + list);
+      out.added.clear();
+      model = Model{basic_names, {}, out.basic};
+    }
+  }
   // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
   // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
   if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
@@ -543,6 +564,7 @@ ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
                             {"alias_correlation", e.alias_correlation},
                             {"alias_of", e.alias_of},
                             {"separation", e.separation}});
+  d["not_attributed"] = r.not_attributed;
   d["unexplained"] = nlohmann::ordered_json::array();
   for (const auto& u : r.unexplained)
     d["unexplained"].push_back({{"file", u.file},

@@ -115,6 +115,11 @@ std::string signature_text(const Machine& m, const std::vector<MeasurementSet>& 
 std::string unexplained_text(const DiagnoseResult& d) {
   if (d.unexplained.empty()) return "  left: nothing against any rotary axis beyond the noise\n";
   std::string o = "  UNEXPLAINED (no candidate explains it; not attributed to any effect):\n";
+  if (!d.not_attributed.empty()) {
+    std::string l;
+    for (const auto& n : d.not_attributed) l += (l.empty() ? "" : ", ") + n;
+    o += "    fitted on the way but not attributed (structure remained with them): " + l + "\n";
+  }
   for (const auto& u : d.unexplained)
     o += fmt::format("    {} {} against {}: {} (F = {:.3g}, p = {:.2g}, {} groups)\n", base_name(u.file), u.value, u.axis,
                      u.shape, u.f_statistic, u.p_value, u.groups);

@@ -112,6 +112,9 @@ struct DiagnoseResult {
   /// Structure the final model leaves (diagnose_structure.hpp): what is not at the noise and no
   /// candidate explains, with its shape and the measurement that would resolve it.
   std::vector<ResidualStructure> unexplained;
+  /// Effects the forward selection fitted but that are not attributed: with all of them in, the
+  /// residual still had structure no candidate explains (the model is then the basic one).
+  std::vector<std::string> not_attributed;
 
   std::vector<std::string> effects_added() const;
 };
