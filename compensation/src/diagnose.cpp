@@ -162,6 +162,8 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
   std::vector<std::vector<int>> alternatives(out.added.size());
   std::vector<std::vector<std::string>> alternative_names(out.added.size());
   const std::size_t model_columns = fitted.size();
+  const std::size_t model_names = names.size();
+  std::map<std::string, int> alternative_column;  // shared by the effects: one column each
   for (std::size_t a = 0; a < out.added.size(); ++a) {
     const std::string& e = out.added[a].candidate.effect;
     const ParseResult spec = parse_parameter_name(out.added[a].candidate.parameters.front(), m);
@@ -172,15 +174,21 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
       bool usable = true;
       for (const char* part : {":cos", ":sin"}) {
         const std::string n = alt + part;
-        if (std::find(names.begin(), names.end(), n) != names.end() || !parse_parameter_name(n, m).spec) usable = false;
+        if (std::find(names.begin(), names.begin() + static_cast<long>(model_names), n) != names.begin() + static_cast<long>(model_names) ||
+            !parse_parameter_name(n, m).spec)
+          usable = false;
       }
       if (!usable) continue;
       alternative_names[a].push_back(alt);
       for (const char* part : {":cos", ":sin"}) {
-        names.push_back(alt + part);
-        values.push_back(0.0);
-        alternatives[a].push_back(static_cast<int>(fitted.size()));
-        fitted.push_back(static_cast<int>(names.size()) - 1);
+        const std::string n = alt + part;
+        if (!alternative_column.count(n)) {
+          names.push_back(n);
+          values.push_back(0.0);
+          alternative_column[n] = static_cast<int>(fitted.size());
+          fitted.push_back(static_cast<int>(names.size()) - 1);
+        }
+        alternatives[a].push_back(alternative_column[n]);
       }
     }
   }
