@@ -142,6 +142,17 @@ Eigen::MatrixXd basis_of(const Eigen::MatrixXd& J, const std::vector<int>& cols)
   return qr.householderQ() * Eigen::MatrixXd::Identity(J.rows(), K.cols());
 }
 
+/// Orthonormal basis of the column space of M (its numerical rank only: a rank-deficient M, e.g.
+/// two alternatives that act alike, must not bring arbitrary directions in).
+Eigen::MatrixXd range_of(const Eigen::MatrixXd& M) {
+  if (M.cols() == 0) return M;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(M, Eigen::ComputeThinU);
+  const Eigen::VectorXd sv = svd.singularValues();
+  Eigen::Index rank = 0;
+  while (rank < sv.size() && sv[rank] > 1e-6 * std::max(sv[0], 1e-300)) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
 /// Whether the data can tell each added effect from the rest of the final model (issue 17):
 /// the sine of its columns to the span of all other fitted columns, and the added effects its
 /// columns correlate with (largest canonical correlation above 0.9).
@@ -229,20 +240,18 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
       const Eigen::MatrixXd own_off = off;
       const Eigen::MatrixXd A = basis_of(J, alternatives[a]);
       Eigen::MatrixXd alt_off = A - Q * (Q.transpose() * A);
-      const Eigen::HouseholderQR<Eigen::MatrixXd> qa(alt_off);
-      const Eigen::MatrixXd QA = qa.householderQ() * Eigen::MatrixXd::Identity(J.rows(), alt_off.cols());
-      const Eigen::HouseholderQR<Eigen::MatrixXd> qe(own_off);
-      const Eigen::MatrixXd QE = qe.householderQ() * Eigen::MatrixXd::Identity(J.rows(), own_off.cols());
-      const Eigen::VectorXd rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
-      e.alias_correlation = rho.size() ? rho.minCoeff() : 0.0;  // every direction of it, not just one
+      const Eigen::MatrixXd QA = range_of(alt_off), QE = range_of(own_off);
+      Eigen::VectorXd rho;
+      if (QA.cols() > 0 && QE.cols() > 0) rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
+      // every direction of it, not just one: the smallest of its QE.cols() canonical correlations
+      e.alias_correlation = rho.size() >= QE.cols() && rho.size() ? rho.minCoeff() : 0.0;
       // the alternatives that carry it: those whose own columns correlate most with it
       for (std::size_t k = 0; k < alternative_names[a].size(); ++k) {
         const std::vector<int> pair{alternatives[a][2 * k], alternatives[a][2 * k + 1]};
         const Eigen::MatrixXd P = basis_of(J, pair);
         Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
-        const Eigen::HouseholderQR<Eigen::MatrixXd> qp(p_off);
-        const Eigen::MatrixXd QP = qp.householderQ() * Eigen::MatrixXd::Identity(J.rows(), p_off.cols());
-        const double r = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff();
+        const Eigen::MatrixXd QP = range_of(p_off);
+        const double r = QP.cols() && QE.cols() ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff() : 0.0;
         if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", alternative_names[a][k], r));
       }
     }
