@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
+#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -126,6 +128,154 @@ std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets
   e.size_sigma = size.sigma;
   e.size_is_angle = size.is_angle;
   return size.implausible;
+}
+
+/// Orthonormal basis of the (normalised) columns of J listed in `cols`.
+Eigen::MatrixXd basis_of(const Eigen::MatrixXd& J, const std::vector<int>& cols) {
+  Eigen::MatrixXd K(J.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    K.col(static_cast<Eigen::Index>(j)) = J.col(cols[j]);
+    if (K.col(static_cast<Eigen::Index>(j)).norm() > 0) K.col(static_cast<Eigen::Index>(j)).normalize();
+  }
+  if (K.cols() == 0) return K;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(J.rows(), K.cols());
+}
+
+/// Orthonormal basis of the column space of M (its numerical rank only: a rank-deficient M, e.g.
+/// two alternatives that act alike, must not bring arbitrary directions in).
+Eigen::MatrixXd range_of(const Eigen::MatrixXd& M) {
+  if (M.cols() == 0) return M;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(M, Eigen::ComputeThinU);
+  const Eigen::VectorXd sv = svd.singularValues();
+  Eigen::Index rank = 0;
+  while (rank < sv.size() && sv[rank] > 1e-6 * std::max(sv[0], 1e-300)) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
+/// Whether the data can tell each added effect from the rest of the final model (issue 17):
+/// the sine of its columns to the span of all other fitted columns, and the added effects its
+/// columns correlate with (largest canonical correlation above 0.9).
+void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                      const DiagnoseOptions& o, DiagnoseResult& out) {
+  if (out.added.empty() || !model.fit.converged) return;
+  std::vector<std::string> names = layout_names(model);
+  for (const auto& f : o.identify.fixed.names())
+    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+  std::vector<double> values;
+  for (const auto& n : names)
+    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+  std::vector<int> fitted;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
+  // the alternatives of each added harmonic: the same order of the axis's other components that
+  // are not in the model (for a radial EXC:h2, the tilts EAC:h2 and EBC:h2 among them), at 0
+  std::vector<std::vector<int>> alternatives(out.added.size());
+  std::vector<std::vector<std::string>> alternative_names(out.added.size());
+  const std::size_t model_columns = fitted.size();
+  const std::size_t model_names = names.size();
+  std::map<std::string, int> alternative_column;  // shared by the effects: one column each
+  for (std::size_t a = 0; a < out.added.size(); ++a) {
+    const std::string& e = out.added[a].candidate.effect;
+    const ParseResult spec = parse_parameter_name(out.added[a].candidate.parameters.front(), m);
+    if (!spec.spec || spec.spec->kind != ParameterKind::harmonic) continue;
+    for (const char c : std::string("XYZABC")) {
+      if (c == e[1]) continue;
+      const std::string alt = fmt::format("E{}{}", c, e.substr(2));
+      bool usable = true;
+      for (const char* part : {":cos", ":sin"}) {
+        const std::string n = alt + part;
+        if (std::find(names.begin(), names.begin() + static_cast<long>(model_names), n) != names.begin() + static_cast<long>(model_names) ||
+            !parse_parameter_name(n, m).spec)
+          usable = false;
+      }
+      if (!usable) continue;
+      alternative_names[a].push_back(alt);
+      for (const char* part : {":cos", ":sin"}) {
+        const std::string n = alt + part;
+        if (!alternative_column.count(n)) {
+          names.push_back(n);
+          values.push_back(0.0);
+          alternative_column[n] = static_cast<int>(fitted.size());
+          fitted.push_back(static_cast<int>(names.size()) - 1);
+        }
+        alternatives[a].push_back(alternative_column[n]);
+      }
+    }
+  }
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  const Eigen::MatrixXd J = prob.jacobian(values, fitted);
+  fitted.resize(model_columns);
+  auto columns_of = [&](const Candidate& c) {
+    std::vector<int> cols;
+    for (std::size_t j = 0; j < fitted.size(); ++j)
+      if (std::find(c.parameters.begin(), c.parameters.end(), names[static_cast<std::size_t>(fitted[j])]) != c.parameters.end())
+        cols.push_back(static_cast<int>(j));
+    return cols;
+  };
+  for (std::size_t a = 0; a < out.added.size(); ++a) {
+    AddedEffect& e = out.added[a];
+    const std::vector<int> own = columns_of(e.candidate);
+    if (own.empty()) continue;
+    std::vector<int> rest;
+    for (int j = 0; j < static_cast<int>(fitted.size()); ++j)
+      if (std::find(own.begin(), own.end(), j) == own.end()) rest.push_back(j);
+    const Eigen::MatrixXd Q = basis_of(J, rest), E = basis_of(J, own);
+    const Eigen::MatrixXd off = E - Q * (Q.transpose() * E);
+    e.separation_sine = Eigen::JacobiSVD<Eigen::MatrixXd>(off).singularValues().minCoeff();
+    e.correlated.clear();
+    for (const auto& other : out.added) {
+      if (&other == &e) continue;
+      const std::vector<int> theirs = columns_of(other.candidate);
+      if (theirs.empty()) continue;
+      const Eigen::MatrixXd F = basis_of(J, theirs);
+      const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
+      if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
+    }
+    // could the other components of the same order explain what it explains? Its columns and
+    // theirs, both off the rest of the model: the largest canonical correlation
+    e.alias_correlation = 0.0;
+    e.alias_of.clear();
+    if (!alternatives[a].empty()) {
+      const Eigen::MatrixXd own_off = off;
+      const Eigen::MatrixXd A = basis_of(J, alternatives[a]);
+      Eigen::MatrixXd alt_off = A - Q * (Q.transpose() * A);
+      const Eigen::MatrixXd QA = range_of(alt_off), QE = range_of(own_off);
+      Eigen::VectorXd rho;
+      if (QA.cols() > 0 && QE.cols() > 0) rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
+      // every direction of it, not just one: the smallest of its QE.cols() canonical correlations
+      e.alias_correlation = rho.size() >= QE.cols() && rho.size() ? rho.minCoeff() : 0.0;
+      // the alternatives that carry it: those whose own columns correlate most with it
+      for (std::size_t k = 0; k < alternative_names[a].size(); ++k) {
+        const std::vector<int> pair{alternatives[a][2 * k], alternatives[a][2 * k + 1]};
+        const Eigen::MatrixXd P = basis_of(J, pair);
+        Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
+        const Eigen::MatrixXd QP = range_of(p_off);
+        const double r = QP.cols() && QE.cols() ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff() : 0.0;
+        if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", alternative_names[a][k], r));
+      }
+    }
+    std::string with;
+    for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
+    std::string alts;
+    for (const auto& n : e.alias_of) alts += (alts.empty() ? "" : ", ") + n;
+    if (e.alias_correlation > 0.99)
+      e.separation = fmt::format("an alias of {}: what it explains, the same order of the other components explains as "
+                                 "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
+                                 "them apart — measure from a second sphere position (another height and radius)",
+                                 alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
+    else if (e.separation_sine < 0.05)
+      e.separation = fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
+                                 "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
+    else
+      e.separation = fmt::format("real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
+                                 "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
+                                 alternatives[a].empty() ? std::string()
+                                 : fmt::format("; the other components of its order reproduce it only to canonical "
+                                               "correlation {:.4f}{}", e.alias_correlation,
+                                               alts.empty() ? "" : " (" + alts + ")"),
+                                 e.f_statistic);
+  }
 }
 
 }  // namespace
@@ -302,6 +452,16 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       if (why.empty() && !(e.p_value < alpha))
         why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
       if (why.empty()) why = apply_size(m, sets, o, e);
+      // an instrument term needs its own signature: with it, the sets it acts on are at their
+      // noise (no structure left against any rotary axis); otherwise it is only the closest-
+      // looking term to an effect the catalogue does not hold (issue 17)
+      if (why.empty() && s.spec.kind == CandidateKind::instrument) {
+        const MeasurementType type = s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
+        const auto left = residual_structure(m, sets, residual_of(m, sets, trial, o.identify), o.significance, &type);
+        if (!left.empty())
+          why = fmt::format("its own signature is not shown: with it, {} {} against {} still has structure ({})",
+                            left.front().file, left.front().value, left.front().axis, left.front().shape);
+      }
       if (!why.empty()) {
         rej.reason = why;
         out.last_rejected.push_back(rej);
@@ -311,7 +471,12 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       e.max_before_um = model.fit.max_after_um;
       e.rms_after_um = trial.fit.rms_after_um;
       e.max_after_um = trial.fit.max_after_um;
-      if (!best || e.rms_after_um < best->rms_after_um) {
+      // among the accepted, the one the evidence prefers: the smallest Bayesian information
+      // criterion m·ln(S1/m) + p1·ln(m), so a table (tens of nodes) wins over a compact form only
+      // where the compact form leaves what the nodes explain (issue 17); for candidates with the
+      // same number of parameters this is the smallest S1, as before
+      e.bic = double(count) * std::log(std::max(s1, 1e-300) / double(count)) + double(p1) * std::log(double(count));
+      if (!best || e.bic < best->bic) {
         if (best) out.last_rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
         best = e;
         best_model = trial;
@@ -334,9 +499,38 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     model = best_model;
     retune_drift(m, sets, o, t_span, model, count);
     const std::string added = best->candidate.effect;
-    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const Candidate& c) { return c.effect == added; }),
+    // a table holds every shape of its function: the harmonics of the same component and axis
+    // are then no longer separate candidates (E<c><axis>:t → E<c><axis>:h*)
+    const bool table = added.size() > 2 && added.substr(added.size() - 2) == ":t";
+    const std::string family = added.substr(0, 3);
+    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(),
+                                   [&](const Candidate& c) {
+                                     return c.effect == added ||
+                                            (table && c.effect.rfind(family + ":h", 0) == 0);
+                                   }),
                     catalogue.end());
     out.stop_reason = "max_effects reached";
+  }
+  // No false attribution (issue 17): an effect is found only if, with it, what is left is at the
+  // noise or explained by the effects added after it. When the final model still leaves
+  // structure against a rotary axis, the effects fitted on the way only chased what the catalogue
+  // does not hold: none is attributed, the model stays the basic one and the structure is
+  // reported (diagnosis.unexplained, with the measurement that would resolve it).
+  if (!out.added.empty() && model.fit.converged) {
+    const auto left = residual_structure(m, sets, residual_of(m, sets, model, o.identify), o.significance);
+    if (!left.empty()) {
+      std::string list;
+      for (const auto& e : out.added) {
+        out.not_attributed.push_back(e.candidate.effect);
+        list += (list.empty() ? "" : ", ") + e.candidate.effect;
+      }
+      out.stop_reason += fmt::format("; with {} structure remains that no candidate explains ({} {} against {}: {}), so "
+                                     "none of them is attributed", list, left.front().file, left.front().value,
+                                     left.front().axis, left.front().shape);
+      say("not attributed: " + list);
+      out.added.clear();
+      model = Model{basic_names, {}, out.basic};
+    }
   }
   // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
   // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
@@ -369,6 +563,8 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   out.held = model.held;
   out.residual_after_mm = residual_of(m, sets, model, o.identify);
   out.noise_um = noise_from_differences_um(sets, out.residual_after_mm);
+  out.unexplained = residual_structure(m, sets, out.residual_after_mm, o.significance);
+  separate_effects(m, sets, model, o, out);
   out.before = residual_signature(m, sets, out.residual_before_mm);
   out.after = residual_signature(m, sets, out.residual_after_mm);
   return out;
@@ -377,6 +573,29 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
 ModelFile to_model_file(const Machine& m, const DiagnoseResult& r) {
   ModelFile f = to_model_file(m, r.final_fit);
   f.effects_added = r.effects_added();
+  nlohmann::ordered_json d;
+  d["effects"] = nlohmann::ordered_json::array();
+  for (const auto& e : r.added)
+    d["effects"].push_back({{"effect", e.candidate.effect},
+                            {"separation_sine", e.separation_sine},
+                            {"alias_correlation", e.alias_correlation},
+                            {"alias_of", e.alias_of},
+                            {"separation", e.separation}});
+  d["not_attributed"] = r.not_attributed;
+  d["unexplained"] = nlohmann::ordered_json::array();
+  for (const auto& u : r.unexplained)
+    d["unexplained"].push_back({{"file", u.file},
+                                {"component", u.value},
+                                {"against", std::string(1, u.axis)},
+                                {"shape", u.shape},
+                                {"order", u.order},
+                                {"spread_um", u.spread_um},
+                                {"largest_um", u.largest_um},
+                                {"at_deg", u.at_deg},
+                                {"F", u.f_statistic},
+                                {"p", u.p_value},
+                                {"proposal", u.proposal}});
+  f.extra["diagnosis"] = d.dump(2);
   if (f.fit) {
     f.fit->rms_before_um = r.basic.rms_after_um;
     f.fit->max_before_um = r.basic.max_after_um;

@@ -4,6 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "ncpost/compensation/parameter_name.hpp"
 
 namespace ncpost::comp {
 namespace {
@@ -25,6 +29,38 @@ bool axis_falls(const std::vector<MeasurementSet>& sets, int index) {
 
 }  // namespace
 
+AxisSampling axis_sampling(const std::vector<MeasurementSet>& sets, int index) {
+  AxisSampling out;
+  for (const auto& s : sets) {
+    std::set<long long> distinct;  // angles round the turn, in 1e-4 degrees
+    double lo = 1e300, hi = -1e300;
+    for (const auto& row : s.rows) {
+      const double q = row.command[index];
+      lo = std::min(lo, q);
+      hi = std::max(hi, q);
+      double deg = std::fmod(q * 180.0 / kPi, 360.0);
+      if (deg < 0) deg += 360.0;
+      distinct.insert(std::llround(deg * 1e4) % 3600000);
+    }
+    if (distinct.size() < 9 || hi - lo < 1.5 * kPi) continue;
+    double gap = 0.0;
+    long long previous = *distinct.rbegin() - 3600000;
+    for (long long d : distinct) gap = std::max(gap, double(d - previous) * 1e-4), previous = d;
+    const int order = static_cast<int>(std::floor((360.0 / gap - 1.0) / 2.0 + 1e-9));
+    out.max_order = std::max(out.max_order, std::min(order, kMaxHarmonicOrder));
+    out.coarsest_gap_deg = out.turns ? std::max(out.coarsest_gap_deg, gap) : gap;
+    out.finest_gap_deg = out.turns ? std::min(out.finest_gap_deg, gap) : gap;
+    out.turns = true;
+  }
+  return out;
+}
+
+double table_spacing_deg(const AxisSampling& sampling) {
+  for (int d = 1; d <= 120; ++d)
+    if (360 % d == 0 && double(d) >= sampling.coarsest_gap_deg - 1e-6) return double(d);
+  return 120.0;
+}
+
 std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<MeasurementSet>& sets,
                                            const std::vector<std::string>& present) {
   std::vector<Candidate> out;
@@ -34,9 +70,21 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
     });
     if (!all_in) out.push_back(std::move(c));
   };
+  std::vector<AxisSampling> sampling;
+  for (int k = 0; k < m.rotary_count(); ++k) sampling.push_back(axis_sampling(sets, 3 + k));
   for (int k = 0; k < m.rotary_count(); ++k) {
     const char a = m.rotary(k).letter;
     for (int order = 1; order <= 4; ++order)
+      for (int c = 0; c < 6; ++c) {
+        const std::string e = fmt::format("E{}{}:h{}", kComponents[c], a, order);
+        add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
+      }
+  }
+  // orders beyond 4 where the data resolve them (an axis they turn): the order the data show
+  for (int k = 0; k < m.rotary_count(); ++k) {
+    const char a = m.rotary(k).letter;
+    if (!sampling[static_cast<std::size_t>(k)].turns) continue;
+    for (int order = 5; order <= sampling[static_cast<std::size_t>(k)].max_order; ++order)
       for (int c = 0; c < 6; ++c) {
         const std::string e = fmt::format("E{}{}:h{}", kComponents[c], a, order);
         add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
@@ -69,6 +117,22 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
   if (has_type(sets, MeasurementType::sphere))
     add({"sphere:position", CandidateKind::instrument,
          {"sphere:position:x", "sphere:position:y", "sphere:position:z"}, {}, true});
+  // the non-parametric form last: a periodic table of every component of an axis the data turn,
+  // on the grid they resolve; the node at home is held at 0 (only differences from home act)
+  for (int k = 0; k < m.rotary_count(); ++k) {
+    const AxisSampling& sm = sampling[static_cast<std::size_t>(k)];
+    if (!sm.turns) continue;
+    const char a = m.rotary(k).letter;
+    const double d = table_spacing_deg(sm);
+    const int nodes = static_cast<int>(std::lround(360.0 / d));
+    if (nodes < 4) continue;
+    for (int c = 0; c < 6; ++c) {
+      Candidate t{fmt::format("E{}{}:t", kComponents[c], a), CandidateKind::component, {}, {}, false};
+      for (int i = 1; i < nodes; ++i) t.parameters.push_back(table_parameter_name(kComponents[c], a, i * d));
+      t.held.set(table_parameter_name(kComponents[c], a, 0.0), 0.0);
+      add(std::move(t));
+    }
+  }
   return out;
 }
 

@@ -33,6 +33,10 @@ EffectSize effect_size(const Machine& m, const std::vector<MeasurementSet>& sets
       if (spec.kind == ParameterKind::harmonic) {
         e.size = std::hypot(v(0), v(1));
         e.sigma = e.size > 0 ? std::hypot(v(0) * u(0), v(1) * u(1)) / e.size : std::hypot(u(0), u(1));
+      } else if (spec.kind == ParameterKind::table) {
+        // the largest node (the node at home is held at 0), with that node's uncertainty
+        for (std::size_t i = 0; i < c.parameters.size(); ++i)
+          if (std::abs(v(i)) >= e.size) e.size = std::abs(v(i)), e.sigma = u(i);
       } else {
         const double reach = std::pow(std::max(1.0, command_range(sets, spec.axis_index)), spec.order);
         e.size = std::abs(v(0)) * reach;

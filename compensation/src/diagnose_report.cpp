@@ -111,6 +111,22 @@ std::string signature_text(const Machine& m, const std::vector<MeasurementSet>& 
 
 }  // namespace
 
+/// What the final model leaves that nothing explains (diagnose_structure.hpp), with the proposed measurement.
+std::string unexplained_text(const DiagnoseResult& d) {
+  if (d.unexplained.empty()) return "  left: nothing against any rotary axis beyond the noise\n";
+  std::string o = "  UNEXPLAINED (no candidate explains it; not attributed to any effect):\n";
+  if (!d.not_attributed.empty()) {
+    std::string l;
+    for (const auto& n : d.not_attributed) l += (l.empty() ? "" : ", ") + n;
+    o += "    fitted on the way but not attributed (structure remained with them): " + l + "\n";
+  }
+  for (const auto& u : d.unexplained)
+    o += fmt::format("    {} {} against {}: {} (F = {:.3g}, p = {:.2g}, {} groups)\n", base_name(u.file), u.value, u.axis,
+                     u.shape, u.f_statistic, u.p_value, u.groups);
+  o += "    to resolve it: " + d.unexplained.front().proposal + "\n";
+  return o;
+}
+
 std::string text_diagnose_report(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d,
                                  const ToolTipComparison& tt) {
   std::string o = "residual analysis (issue 6; --no-diagnose skips it)\n";
@@ -127,6 +143,7 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
       for (const auto& q : e.equivalent) list += (list.empty() ? "" : ", ") + q;
       o += "       the data cannot tell it from " + list + " (same signature; named by catalogue order)\n";
     }
+    if (!e.correlated.empty() || e.separation_sine < 0.05) o += "       " + e.separation + "\n";
     for (std::size_t p = 0; p < e.values.size(); ++p) {
       const std::string& n = e.values.names()[p];
       const ReportValue v = report_value(m, n, e.values.values()[p]);
@@ -138,6 +155,7 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
   o += "  stopped: " + d.stop_reason + "\n";
   for (const auto& r : d.last_rejected)
     o += fmt::format("    {} not added: {} (rms would be {:.3f} µm)\n", r.effect, r.reason, r.rms_after_um);
+  o += unexplained_text(d);
   o += "  residual (µm):           basic rms / max         final rms / max\n";
   for (std::size_t i = 0; i < d.basic.files.size() && i < d.final_fit.files.size(); ++i) {
     const auto& b = d.basic.files[i];
@@ -180,6 +198,14 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
     h += "<p>Not added in the last step:</p><ul>";
     for (const auto& r : d.last_rejected) h += "<li>" + escape(r.effect + ": " + r.reason) + "</li>";
     h += "</ul>";
+  }
+  if (!d.unexplained.empty()) {
+    h += "<h2>Unexplained</h2><p>Structure the final model leaves that no candidate explains (not attributed to any "
+         "effect):</p><ul>";
+    for (const auto& u : d.unexplained)
+      h += "<li>" + escape(fmt::format("{} {} against {}: {} (F = {:.3g}, p = {:.2g})", base_name(u.file), u.value, u.axis,
+                                       u.shape, u.f_statistic, u.p_value)) + "</li>";
+    h += "</ul><p>To resolve it: " + escape(d.unexplained.front().proposal) + ".</p>";
   }
   h += "<h2>Residual per file</h2><table><tr><th class=n>file</th><th>basic rms µm</th><th>basic max µm</th><th>final rms µm</th><th>final max µm</th></tr>";
   for (std::size_t i = 0; i < d.basic.files.size() && i < d.final_fit.files.size(); ++i)

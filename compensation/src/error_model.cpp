@@ -8,7 +8,7 @@
 namespace ncpost::comp {
 
 ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names)
-    : axis_terms_(m.axes.size()), tables_(m.axes.size()) {
+    : axis_terms_(m.axes.size()), tables_(m.axes.size()), periodic_(m.axes.size(), false) {
   for (const std::string& n : names) {
     if (index_of(n) >= 0) throw std::invalid_argument(n + ": given twice");
     ParseResult r = parse_parameter_name(n, m);
@@ -26,10 +26,12 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
         break;
       case ParameterKind::table: {
         TableNodes& nodes = tables_[static_cast<std::size_t>(s.axis_index)][static_cast<std::size_t>(s.component)];
+        const double at = s.periodic ? s.at_rad : s.at_mm;  // rotary: rad, round the turn
         for (const auto& node : nodes)
-          if (std::abs(node.first - s.at_mm) < 1e-9)
+          if (std::abs(node.first - at) < 1e-9)
             throw std::invalid_argument(n + ": a node at this position is given twice (" + specs_[static_cast<std::size_t>(node.second)].name + ")");
-        nodes.emplace_back(s.at_mm, i);
+        nodes.emplace_back(at, i);
+        if (s.periodic) periodic_[static_cast<std::size_t>(s.axis_index)] = true;
         std::sort(nodes.begin(), nodes.end());
         command_dependent_ = true;
         break;

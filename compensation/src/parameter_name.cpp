@@ -40,9 +40,9 @@ bool ParameterSpec::is_angle() const {
 
 ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   static const std::regex location(R"(E([XYZABC])0([XYZABC]))");
-  static const std::regex harmonic(R"(E([XYZABC])([ABC]):h([1-4]):(cos|sin))");
+  static const std::regex harmonic(R"(E([XYZABC])([ABC]):h([1-9][0-9]?):(cos|sin))");
   static const std::regex polynomial(R"(E([XYZABC])([XYZ]):p([1-3]))");
-  static const std::regex table(R"(E([XYZABC])([XYZ]):t:([-+]?[0-9]+(\.[0-9]*)?))");
+  static const std::regex table(R"(E([XYZABC])([XYZABC]):t:([-+]?[0-9]+(\.[0-9]*)?))");
   static const std::regex reversal(R"(reversal:([XYZABC]))");
   static const std::regex drift(R"(drift:([XYZ]):t:(lin|quad|exp|tau))");
   static const std::regex sphere(R"(sphere:position:([xyz]))");
@@ -97,9 +97,16 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     s.kind = ParameterKind::table;
     s.axis_index = axis(g[2].str()[0]);
     if (s.axis_index < 0) return refuse("the machine has no axis " + g[2].str());
-    if (m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary()) return refuse("table terms belong to linear axes");
     s.component = component_of(g[1].str()[0]);
     s.at_mm = std::stod(g[3].str());
+    if (m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary()) {
+      // a rotary axis's table is periodic: its nodes are angles in degrees, one turn
+      if (s.at_mm < 0.0 || s.at_mm >= 360.0)
+        return refuse("the nodes of a rotary axis's table are angles from 0 (inclusive) to 360 degrees (exclusive)");
+      s.at_rad = s.at_mm * kPi / 180.0;
+      s.at_mm = 0.0;
+      s.periodic = true;
+    }
     return accept(s);
   }
   if (std::regex_match(name, g, reversal)) {
@@ -128,7 +135,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     return accept(s);
   }
   return refuse("not an error parameter name of docs/conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
-                "EXX:t:-250, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+                "EXX:t:-250, ECC:t:30, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
 }
 
 std::string table_parameter_name(char component, char axis, double at_mm) {
@@ -141,9 +148,9 @@ std::string table_parameter_name(char component, char axis, double at_mm) {
 }
 
 std::string effect_of(const std::string& name) {
-  static const std::regex harmonic(R"((E[XYZABC][ABC]:h[1-4]):(cos|sin))");
+  static const std::regex harmonic(R"((E[XYZABC][ABC]:h[1-9][0-9]?):(cos|sin))");
   static const std::regex drift(R"((drift:[XYZ]:t):.*)");
-  static const std::regex table(R"((E[XYZABC][XYZ]:t):.*)");
+  static const std::regex table(R"((E[XYZABC][XYZABC]:t):.*)");
   std::smatch g;
   if (std::regex_match(name, g, harmonic)) return g[1].str();
   if (std::regex_match(name, g, table)) return g[1].str();

@@ -24,7 +24,9 @@
 //     accepted only if its p-value is below `significance` / (number of candidates tested)
 //     (Bonferroni: the family-wise false-positive rate of a step stays below `significance`), if
 //     the refit pins none of its parameters and none of the model's (rank check), and if its
-//     size is physically plausible (diagnose_effect_size.hpp). The best accepted one by S1 is added.
+//     size is physically plausible (diagnose_effect_size.hpp). The accepted one with the smallest
+//     Bayesian information criterion m·ln(S1/m) + p1·ln(m) is added (for equal parameter counts
+//     the smallest S1; it weighs a table's many nodes against a compact form's few).
 //  3. After each addition the time constant of every drift in the model is chosen again by
 //     refits (tau·2^(j/2), j = −2..2, moved on while the best is at an end, refined by a
 //     parabola): the effects added later change it.
@@ -40,6 +42,7 @@
 #include "ncpost/compensation/diagnose_candidates.hpp"
 #include "ncpost/compensation/diagnose_effect_size.hpp"
 #include "ncpost/compensation/diagnose_signature.hpp"
+#include "ncpost/compensation/diagnose_structure.hpp"
 #include "ncpost/compensation/identify.hpp"
 
 namespace ncpost::comp {
@@ -68,8 +71,22 @@ struct AddedEffect {
   bool size_is_angle = false;
   double rms_before_um = 0.0, rms_after_um = 0.0, max_before_um = 0.0, max_after_um = 0.0;
   double f_statistic = 0.0;
+  double bic = 0.0;             ///< m·ln(S1/m) + p1·ln(m) of the model with it (the choice among accepted ones)
   double p_value = 1.0;
   int tested = 0;               ///< candidates screened in its step
+  /// Can the data tell it from the other fitted parameters (issue 17, e.g. EXC:h2 beside
+  /// EAC:h2 / EBC:h2)? The sine of its columns to the span of all others in the final model
+  /// (identifiability.hpp's measure; 1 = independent, 0 = an alias), and the added effects
+  /// whose columns correlate with its own above 0.9 (largest canonical correlation).
+  double separation_sine = 1.0;
+  std::vector<std::pair<std::string, double>> correlated;
+  /// For a harmonic: how well the same order of the axis's other components not in the model
+  /// (for EXC:h2 the tilts EAC:h2, EBC:h2, ...) reproduce its columns once the rest of the model is
+  /// accounted for (the smallest canonical correlation: every direction of it); above 0.99 it is
+  /// reported as an alias of them. `alias_of`: those that correlate with it above 0.5.
+  double alias_correlation = 0.0;
+  std::vector<std::string> alias_of;
+  std::string separation;       ///< the verdict in words: "real: ..." or "an alias of ...: ..."
 };
 
 /// Why the best candidates of the last step were not added.
@@ -92,6 +109,12 @@ struct DiagnoseResult {
   ResidualSignature before, after;
   Eigen::VectorXd residual_before_mm, residual_after_mm;
   std::string stop_reason;
+  /// Structure the final model leaves (diagnose_structure.hpp): what is not at the noise and no
+  /// candidate explains, with its shape and the measurement that would resolve it.
+  std::vector<ResidualStructure> unexplained;
+  /// Effects the forward selection fitted but that are not attributed: with all of them in, the
+  /// residual still had structure no candidate explains (the model is then the basic one).
+  std::vector<std::string> not_attributed;
 
   std::vector<std::string> effects_added() const;
 };
@@ -101,8 +124,10 @@ struct DiagnoseResult {
 DiagnoseResult diagnose(const Machine& machine, const std::vector<MeasurementSet>& sets,
                         const std::vector<std::string>& basic_names, const DiagnoseOptions& options = {});
 
-/// The model file of the final model: parameters, uncertainty, identifiability, effects_added and
-/// fit (before = basic model, after = final model).
+/// The model file of the final model: parameters, uncertainty, identifiability, effects_added,
+/// fit (before = basic model, after = final model) and, when structure is left that nothing
+/// explains, `diagnosis.unexplained` (file, value, axis, shape, proposed measurement), with the
+/// separation verdict of every added effect (`diagnosis.effects`).
 ModelFile to_model_file(const Machine& machine, const DiagnoseResult& result);
 
 }  // namespace ncpost::comp

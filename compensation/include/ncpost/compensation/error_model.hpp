@@ -15,7 +15,8 @@
 //   component errors  → motion_mm (EX, EY, EZ) / motion_rad (EA, EB, EC) of the axis:
 //                       rotary Σ value·cos(kq) or value·sin(kq), linear Σ value·q^k (q in mm);
 //                       table nodes (EXX:t:<pos>) of one function interpolated linearly in q,
-//                       held at the end values outside the nodes
+//                       held at the end values outside the nodes; a rotary axis's table
+//                       (ECC:t:<deg>) is periodic, interpolated round the turn
 //   reversal          → the row's dead-band offset (reversal.hpp), not at home
 //   drift             → a translation of the TCP relative to the table in M (added to the error
 //                       motion of the linear axis nearest the bed, which moves the whole side),
@@ -63,6 +64,10 @@ class ModelLayout {
     if (static_cast<std::size_t>(axis_index) >= tables_.size()) return none;
     return tables_[static_cast<std::size_t>(axis_index)][static_cast<std::size_t>(component)];
   }
+  /// True when the tables of this axis are periodic (a rotary axis: nodes in rad, round the turn).
+  bool table_periodic(int axis_index) const {
+    return static_cast<std::size_t>(axis_index) < periodic_.size() && periodic_[static_cast<std::size_t>(axis_index)];
+  }
   int reversal_of(int axis_index) const { return reversal_[static_cast<std::size_t>(axis_index)]; }
   /// True when some parameter changes with the command (component error functions, tables,
   /// reversal); false when every term is a constant of the machine (location errors, squareness).
@@ -81,6 +86,7 @@ class ModelLayout {
   std::vector<ParameterSpec> specs_;
   std::vector<std::vector<int>> axis_terms_;
   std::vector<std::array<TableNodes, 6>> tables_;
+  std::vector<bool> periodic_;  ///< per axis: its tables are periodic (rotary)
   std::array<int, 5> reversal_{-1, -1, -1, -1, -1};
   std::vector<int> drift_terms_;
   int drift_axis_ = -1;
@@ -170,7 +176,8 @@ template <class P> class ErrorFunctor {
     }
     for (int c = 0; c < 6; ++c) {
       const TableNodes& nodes = layout_->table_of(axis_index, c);
-      if (!nodes.empty()) add_motion<S>(e, c, interpolate<S>(nodes, q));
+      if (!nodes.empty())
+        add_motion<S>(e, c, layout_->table_periodic(axis_index) ? interpolate_periodic<S>(nodes, q) : interpolate<S>(nodes, q));
     }
     if (at_home) return e;
     if (const int r = layout_->reversal_of(axis_index); r >= 0) {
@@ -220,6 +227,24 @@ template <class P> class ErrorFunctor {
     const auto& [x0, i0] = nodes[i - 1];
     const auto& [x1, i1] = nodes[i];
     const S w = (q - S(x0)) / S(x1 - x0);
+    return S(values_[i0]) + w * (S(values_[i1]) - S(values_[i0]));
+  }
+
+  /// Linear interpolation of the nodes of a rotary axis's table (rad) at q, round the turn: the
+  /// last node joins the first one turn on.
+  template <class S> S interpolate_periodic(const TableNodes& nodes, const S& q) const {
+    constexpr double turn = 2.0 * kPi;
+    if (nodes.size() == 1) return S(values_[nodes.front().second]);
+    const double x = plain_value(q);
+    const double wraps = std::floor((x - nodes.front().first) / turn);
+    const S u = q - S(wraps * turn);  // first <= u < first + turn
+    const double ux = x - wraps * turn;
+    std::size_t i = 1;
+    while (i < nodes.size() && nodes[i].first <= ux) ++i;
+    const auto& [x0, i0] = nodes[i - 1];
+    const double x1 = i < nodes.size() ? nodes[i].first : nodes.front().first + turn;
+    const int i1 = i < nodes.size() ? nodes[i].second : nodes.front().second;
+    const S w = (u - S(x0)) / S(x1 - x0);
     return S(values_[i0]) + w * (S(values_[i1]) - S(values_[i0]));
   }
 

@@ -6,12 +6,20 @@
 //
 //   EX0C, EY0C, EA0C, EB0C, EC0C    location errors of a rotary axis (offset, tilt, zero)
 //   EC0Y, EB0Z, EA0Z                squareness of the linear axes
-//   ECC:h2:cos, EXC:h1:sin          component error functions of a rotary axis, harmonic k = 1..4
+//   ECC:h2:cos, EXC:h1:sin          component error functions of a rotary axis, harmonic k = 1..99
+//                                   (value · cos(k q) / sin(k q), q the command in rad)
 //   EXX:p1, EZX:p2, EAY:p3          component error functions of a linear axis, degree k = 1..3
 //   EXX:t:-275, ECY:t:50            component error function of a linear axis as a table: the
 //                                   value at that position of the axis (mm); all nodes of one
 //                                   function (e.g. every EXX:t:*) are interpolated linearly and
 //                                   held at the end values outside them (issue 7, LASER.md)
+//   ECC:t:30, EAC:t:0               component error function of a rotary axis as a periodic table:
+//                                   the value at that angle (degrees, 0 <= angle < 360; rad or mm);
+//                                   the nodes of one function are interpolated linearly in the
+//                                   angle, round the turn (the last node joins the first +360°)
+//                                   (issue 17). As every error acts relative to home, only the
+//                                   differences from the value at 0° matter: the diagnosis holds
+//                                   the node at 0° at 0.
 //   reversal:A                      dead-band width of axis A (rad or mm)
 //   drift:Z:t:lin | :quad | :exp | :tau
 //                                   drift of the TCP relative to the table along Z, in M axes:
@@ -31,7 +39,7 @@ enum class ParameterKind {
   squareness,      ///< linear axis: direction offset
   harmonic,        ///< rotary axis error motion, component 0..5, order k, cos or sin
   polynomial,      ///< linear axis error motion, component 0..5, degree k
-  table,           ///< linear axis error motion, component 0..5, value at node position at_mm
+  table,           ///< axis error motion, component 0..5, value at node at_mm (linear) or at_rad (rotary, periodic)
   reversal,        ///< dead band of an axis
   drift,           ///< TCP drift relative to the table, component 0..2 (X, Y, Z)
   ballbar_length,  ///< instrument: bar length offset
@@ -47,7 +55,9 @@ struct ParameterSpec {
   int component = 0;    ///< 0..2 = X, Y, Z (translation), 3..5 = A, B, C (rotation)
   int order = 0;        ///< harmonic order or polynomial degree
   bool sine = false;    ///< harmonic: sin term (else cos)
-  double at_mm = 0.0;   ///< table: node position on the axis (mm)
+  double at_mm = 0.0;   ///< table of a linear axis: node position on the axis (mm)
+  double at_rad = 0.0;  ///< table of a rotary axis: node angle (rad, 0 <= at_rad < 2π)
+  bool periodic = false;  ///< table of a rotary axis: interpolated round the turn
   DriftBasis drift = DriftBasis::linear;
 
   /// True for the effects that act only while measuring (drift, instrument terms): they are not
@@ -69,7 +79,8 @@ struct ParseResult {
 /// (e.g. EZ0C, the offset of C along its own line), is refused with a reason.
 ParseResult parse_parameter_name(const std::string& name, const Machine& machine);
 
-/// The name of the table node of E<component><axis> at `at_mm` (e.g. "EXX:t:-275", "ECY:t:12.5").
+/// The name of the table node of E<component><axis> at `at_mm` (e.g. "EXX:t:-275", "ECY:t:12.5");
+/// for a rotary axis the position is the angle in degrees ("ECC:t:30").
 std::string table_parameter_name(char component, char axis, double at_mm);
 
 /// The effect a parameter belongs to (docs/conventions.md "Effect names"): "ECC:h2" for "ECC:h2:cos",
