@@ -182,6 +182,26 @@ TEST_CASE("a CL point out of reach: exit 3 naming the line and the axis") {
   CHECK(err.find("trr_bad_model.json:3:") != std::string::npos);
 }
 
+TEST_CASE("a TRR-XY model for another machine, or with an implausible value, is refused (exit 2); --force applies it") {
+  std::string err;
+  const std::string post = "post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance none ";
+  std::ofstream("trr_other.json") << "{\n \"machine\": \"other\",\n \"parameters\": {\"dl_a\": 0.01}\n}\n";
+  CHECK(run(post + "--model trr_other.json -o trr_other.nc " + sample_path(), &err) == 2);
+  CHECK(err.find("trr_other.json:2:") != std::string::npos);
+  CHECK(err.find("machine 'other', this job's machine is 'trr-xy'") != std::string::npos);
+  CHECK_FALSE(std::ifstream("trr_other.nc").good());
+  std::ofstream("trr_huge.json") << "{\n \"machine\": \"trr-xy\",\n \"parameters\": {\n  \"dl_a\": 0.01,\n"
+                                    "  \"gp_b\": 2.5\n }\n}\n";
+  CHECK(run(post + "--verify-on trr_huge.json -o trr_huge.nc " + sample_path(), &err) == 2);
+  CHECK(err.find("trr_huge.json:5:") != std::string::npos);
+  CHECK(err.find("gp_b = 2.5 rad is not a plausible error") != std::string::npos);
+  CHECK_FALSE(std::ifstream("trr_huge.nc").good());
+  // --force: applied, with a warning naming the file and the value
+  CHECK(run(post + "--force --model trr_other.json -o trr_forced.nc " + sample_path(), &err) == 0);
+  CHECK(err.find("warning: trr_other.json:2: the model is for machine 'other'") != std::string::npos);
+  CHECK(std::ifstream("trr_forced.nc").good());
+}
+
 // (drilling cycles are drilled by explicit moves since the common post: trr_pipeline_test.cpp)
 TEST_CASE("CUTCOM on the TRR-XY machine: exit 2 naming the line, no program") {
   std::string err;

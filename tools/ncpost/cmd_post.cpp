@@ -86,7 +86,7 @@ int run_post(const PostArgs& given) {
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
   if (machine_file_kind(a.job.machine) == "trr-xy") {
-    r.trr = load_trr_post_job(a.job, a.model, a.verify_on, a.rtcp);
+    r.trr = load_trr_post_job(a.job, a.model, a.verify_on, a.rtcp, a.force_model);
     r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
     r.model_source = a.model;
     r.verify_on_source = a.verify_on;

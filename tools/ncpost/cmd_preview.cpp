@@ -39,7 +39,7 @@ int run_preview(const PreviewArgs& given) {
   PreviewArgs a = given;
   a.input = input.name();
   a.input_path = input.path();
-  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input, a.input_path})) return *rc;
+  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input, a.input_path, a.force_model})) return *rc;
   const LoadedJob job = load_job(a.job);
   std::unique_ptr<comp::MachineModel> model;
   std::unique_ptr<MotionSolver> solver;

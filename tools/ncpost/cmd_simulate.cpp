@@ -40,7 +40,8 @@ void add_simulate(CLI::App& app, Action& action) {
   sub->callback([&action, args] {
     action = [args] {
       check_files({{"-o", args->output}}, {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
-      if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed))
+      if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed,
+                                             args->force_model))
         return *rc;
       const Machine m = load_machine(args->machine);
       const comp::ModelFile model = read_model_for(args->model, m, args->force_model);

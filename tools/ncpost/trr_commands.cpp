@@ -22,6 +22,17 @@
 #include "ncpost/version.hpp"
 
 namespace ncpost::cli {
+trr::Errors read_trr_model(const std::string& path, const std::string& machine_name, bool force_model) {
+  std::vector<std::string> warnings;
+  trr::ModelChecks checks;
+  checks.machine_name = machine_name;
+  checks.force = force_model;
+  checks.warnings = &warnings;
+  const trr::Errors e = trr::read_errors_json(path, checks);
+  for (const auto& w : warnings) fmt::print(stderr, "ncpost: warning: {} (applied: --force)\n", w);
+  return e;
+}
+
 namespace {
 
 struct TrrPreviewJob {
@@ -52,9 +63,9 @@ std::unique_ptr<cl::Reader> open_input(std::ifstream& in, const std::string& pat
                         [&reading](const AxisPosition& q, std::string* why) { return reading.pose(q, why); });
 }
 
-trr::Kinematics kinematics_for(const TrrPreviewJob& job, const std::string& model) {
+trr::Kinematics kinematics_for(const TrrPreviewJob& job, const std::string& model, bool force_model) {
   trr::Errors e;
-  if (!model.empty()) e = trr::read_errors_json(model);
+  if (!model.empty()) e = read_trr_model(model, job.machine.name, force_model);
   try {
     return trr::Kinematics(job.machine, e);
   } catch (const std::runtime_error& ex) {
@@ -64,7 +75,8 @@ trr::Kinematics kinematics_for(const TrrPreviewJob& job, const std::string& mode
 
 }  // namespace
 
-TrrJob load_trr_post_job(const JobOptions& o, const std::string& model, const std::string& verify_on, bool rtcp) {
+TrrJob load_trr_post_job(const JobOptions& o, const std::string& model, const std::string& verify_on, bool rtcp,
+                         bool force_model) {
   if (rtcp) throw UsageError("--rtcp: the TRR-XY machine has no RTCP dialect; it is posted in X Y U V W");
   if (o.tool_length_mm != 0.0)
     throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
@@ -72,15 +84,15 @@ TrrJob load_trr_post_job(const JobOptions& o, const std::string& model, const st
     throw UsageError("--input-kind rtcp: the TRR-XY machine has no RTCP programs (its G-code input is X Y U V W)");
   TrrJob job;
   job.machine = load_trr_xy_machine(o.machine);
-  if (!model.empty()) job.model = trr::read_errors_json(model);
-  if (!verify_on.empty()) job.verify_on = trr::read_errors_json(verify_on);
+  if (!model.empty()) job.model = read_trr_model(model, job.machine.name, force_model);
+  if (!verify_on.empty()) job.verify_on = read_trr_model(verify_on, job.machine.name, force_model);
   return job;
 }
 
 std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
   const std::optional<TrrPreviewJob> job = load_trr_job(a.job);
   if (!job) return std::nullopt;
-  const trr::Kinematics k = kinematics_for(*job, a.model);
+  const trr::Kinematics k = kinematics_for(*job, a.model, a.force_model);
   const trr::Kinematics nominal(job->machine);
   const TrrSolver reading(nominal, nominal, job->workpiece_origin_mm);
   std::ifstream in;

@@ -8,14 +8,22 @@
 #include <string>
 
 #include "input_options.hpp"
+#include "ncpost/kinematics/trr_xy_geometry.hpp"
 #include "ncpost/postproc/post_request.hpp"
 
 namespace ncpost::cli {
 
+/// A TRR-XY model JSON for the machine `machine_name`, checked (trr::ModelChecks); with
+/// `force_model` the failed checks are printed as warnings and the model is applied.
+trr::Errors read_trr_model(const std::string& path, const std::string& machine_name, bool force_model);
+
 /// The TRR-XY job of `ncpost post` (the common post, post_request.hpp): the machine file and the
 /// models of --model and --verify-on ("": none). UsageError for the options this machine has not
 /// (--rtcp, --tool-length, G-code --input-kind).
-TrrJob load_trr_post_job(const JobOptions& job, const std::string& model, const std::string& verify_on, bool rtcp);
+/// The models must name this machine and hold plausible values (trr::ModelChecks), else exit 2;
+/// `force_model` (--force) turns these checks into warnings.
+TrrJob load_trr_post_job(const JobOptions& job, const std::string& model, const std::string& verify_on, bool rtcp,
+                         bool force_model);
 
 struct TrrPreviewRequest {
   const JobOptions& job;
@@ -24,6 +32,7 @@ struct TrrPreviewRequest {
   const std::string& html;
   const std::string& input;       ///< name in messages
   const std::string& input_path;  ///< the file read
+  bool force_model = false;       ///< --force: model checks as warnings
 };
 
 /// The exit code if the machine is a TRR-XY machine (then the preview has run), else nullopt.
@@ -40,7 +49,8 @@ std::optional<int> plan_if_trr_xy(const std::string& machine, const std::string&
 
 /// `simulate` on the TRR-XY machine: a probing plan on the machine of the model JSON.
 std::optional<int> simulate_if_trr_xy(const std::string& machine, const std::string& model, const std::string& plan,
-                                      const std::string& output, double noise_um, std::uint64_t seed);
+                                      const std::string& output, double noise_um, std::uint64_t seed,
+                                      bool force_model);
 
 /// `identify` on the TRR-XY machine: the 30 parameters from probing data, with the
 /// identifiability report; `other_options` names serial-only options that were given.

@@ -49,10 +49,11 @@ std::optional<int> plan_if_trr_xy(const std::string& machine, const std::string&
 }
 
 std::optional<int> simulate_if_trr_xy(const std::string& machine, const std::string& model, const std::string& plan_path,
-                                      const std::string& output, double noise_um, std::uint64_t seed) {
+                                      const std::string& output, double noise_um, std::uint64_t seed,
+                                      bool force_model) {
   if (machine_file_kind(machine) != "trr-xy") return std::nullopt;
   const trr::Machine m = load_trr_xy_machine(machine);
-  const trr::Errors e = trr::read_errors_json(model);
+  const trr::Errors e = read_trr_model(model, m.name, force_model);
   std::optional<trr::Kinematics> truth;
   try {
     truth.emplace(m, e);
