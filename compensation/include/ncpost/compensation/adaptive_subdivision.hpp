@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -122,7 +123,7 @@ template <class Errors, class Solver> class Subdivider {
       const NonlinearBound bound =
           nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block_, errors_), machine_, setup_);
       if (bound.error_mm <= options_.screen_fraction * options_.tolerance_mm &&
-          bow(block_.start, block_.from, block_.end, block_.to) <= options_.model_bow_mm) {
+          bow_within(bound.error_mm, block_.start, block_.from, block_.end, block_.to) <= options_.model_bow_mm) {
         out.nodes.push_back({1.0, block_.end, block_.to});
         out.input_error_mm = out.max_error_mm = bound.error_mm;
         out.max_orientation_rad = bound.orientation_rad;
@@ -166,6 +167,15 @@ template <class Errors, class Solver> class Subdivider {
     return bow_bounded_ ? model_bow_mm(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_) : 0.0;
   }
 
+  /// The same, given the piece's upper bound (nonlinear_bound.hpp; it covers the chord deviation
+  /// of the actual executed tip, hence the model's bow): that bound when it is already within the
+  /// model bow's bound (the sampling is skipped: dense paths), else the sampled bow.
+  double bow_within(double bound_mm, const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb,
+                    const AxisPosition& qb) const {
+    if (!bow_bounded_) return 0.0;
+    return bound_mm <= options_.model_bow_mm ? bound_mm : bow(ca, qa, cb, qb);
+  }
+
   /// How far a piece is beyond its bounds: the larger of error / tolerance and bow / model bound
   /// (<= 1: within both).
   double need(const Piece& p) const {
@@ -177,20 +187,24 @@ template <class Errors, class Solver> class Subdivider {
     return nonlinear_error(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_, options_.error);
   }
 
-  /// The piece's error: its upper bound when that is within `piece_screen_fraction` of the
-  /// tolerance, else the exact error.
-  NonlinearError piece_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
+  /// The piece: its error is its upper bound when that is within `piece_screen_fraction` of the
+  /// tolerance, else the exact error; its model bow as `bow_within`.
+  Piece piece(double ta, const ClPoint& ca, const AxisPosition& qa, double tb, const ClPoint& cb,
+              const AxisPosition& qb) const {
+    Piece p{ta, ca, qa, tb, cb, qb, {}, 0.0};
+    double bound_mm = std::numeric_limits<double>::infinity();
     if (options_.piece_screen_fraction > 0) {
-      const ClBlock piece{ca, cb, qa, qb};
-      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, piece, errors_), machine_, setup_);
+      const ClBlock block{ca, cb, qa, qb};
+      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block, errors_), machine_, setup_);
+      bound_mm = bound.error_mm;
       if (bound.error_mm <= options_.piece_screen_fraction * options_.tolerance_mm) {
-        NonlinearError e;
-        e.max_error_mm = bound.error_mm;
-        e.max_orientation_rad = bound.orientation_rad;
-        return e;
+        p.error.max_error_mm = bound.error_mm;
+        p.error.max_orientation_rad = bound.orientation_rad;
       }
     }
-    return exact_error(ca, qa, cb, qb);
+    if (!(bound_mm <= options_.piece_screen_fraction * options_.tolerance_mm)) p.error = exact_error(ca, qa, cb, qb);
+    p.bow_mm = bow_within(bound_mm, ca, qa, cb, qb);
+    return p;
   }
 
   void emit(const Piece& p, SplitBlock& out) const {
@@ -222,7 +236,7 @@ template <class Errors, class Solver> class Subdivider {
           qb = *kept;
         }
       }
-      pieces.push_back({ta, ca, qa, tb, cb, qb, piece_error(ca, qa, cb, qb), bow(ca, qa, cb, qb)});
+      pieces.push_back(piece(ta, ca, qa, tb, cb, qb));
       ta = tb;
       ca = cb;
       qa = qb;
