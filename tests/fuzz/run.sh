@@ -5,7 +5,7 @@
 # of tests/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
 #   tests/fuzz/run.sh [SECONDS]        (from the repository root)
-# Environment: TARGETS (default: all three), FUZZ_FLAGS (extra libFuzzer flags, e.g.
+# Environment: TARGETS (default: all four), FUZZ_FLAGS (extra libFuzzer flags, e.g.
 # "-fork=1 -ignore_crashes=1" to keep going after a finding).
 set -eu
 SECONDS_EACH=${1:-60}
@@ -15,7 +15,7 @@ SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuz
 
 CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$SAN" >/dev/null
-TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader}
+TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader fuzz_post_cli}
 FUZZ_FLAGS=${FUZZ_FLAGS:-}
 ninja -C "$BUILD" -j2 $TARGETS
 
@@ -24,12 +24,16 @@ status=0
 for target in $TARGETS; do
   case $target in
     fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
+    fuzz_post_cli) seeds="$ROOT/tests/fuzz/corpus/apt $ROOT/tests/fuzz/corpus/gcode"; pattern='*.apt* *.ncl *.nc' ;;
     *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc *.nc *.gcode' ;;
   esac
   corpus="$BUILD/fuzz/corpus/$target"
   findings="$BUILD/fuzz/findings/$target"
   mkdir -p "$corpus" "$findings"
-  cp "$seeds"/* "$corpus"/ 2>/dev/null || true
+  for s in $seeds; do cp "$s"/* "$corpus"/ 2>/dev/null || true; done
+  extra=""
+  # The command-line target's runs print the program's messages: keep them out of the log.
+  [ "$target" = fuzz_post_cli ] && extra="-close_fd_mask=3"
   if [ -d "$SHARED" ]; then
     for p in $pattern; do
       for f in "$SHARED"/$p; do
@@ -40,7 +44,7 @@ for target in $TARGETS; do
   echo "=== $target: $SECONDS_EACH s"
   log="$BUILD/fuzz/$target.log"
   if ! ( cd "$findings" && "$BUILD/fuzz/$target" -max_total_time="$SECONDS_EACH" -max_len=4096 -timeout=10 \
-         -rss_limit_mb=2048 -print_final_stats=1 $FUZZ_FLAGS "$corpus" >"$log" 2>&1 ); then
+         -rss_limit_mb=2048 -print_final_stats=1 $extra $FUZZ_FLAGS "$corpus" >"$log" 2>&1 ); then
     status=1
     tail -40 "$log"
   fi

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cl_records.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 
 using namespace ncpost;
@@ -15,17 +16,11 @@ namespace {
 std::vector<cl::Record> read_all(const std::string& text, cl::ReaderOptions o = {}) {
   std::istringstream in(text);
   cl::AptReader r(in, "t.cls", o);
-  std::vector<cl::Record> out;
-  while (auto x = r.next()) out.push_back(*x);
+  std::vector<cl::Record> out = test::all_records(r);
   return out;
 }
 
-template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
-  std::vector<T> out;
-  for (const auto& r : rs)
-    if (auto* p = std::get_if<T>(&r)) out.push_back(*p);
-  return out;
-}
+using test::only;
 
 /// The InputError of reading `text` (its message and echoed source line), or empty strings.
 std::pair<std::string, std::string> error_of(const std::string& text, cl::ReaderOptions o = {}) {

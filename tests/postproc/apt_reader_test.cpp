@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cl_records.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "test_paths.hpp"
 
@@ -17,17 +18,11 @@ std::vector<cl::Record> read_all(const std::string& text, cl::ReaderOptions o = 
   o.allow_unterminated = true;
   std::istringstream in(text);
   cl::AptReader r(in, "t.cls", o);
-  std::vector<cl::Record> out;
-  while (auto x = r.next()) out.push_back(*x);
+  std::vector<cl::Record> out = test::all_records(r);
   return out;
 }
 
-template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
-  std::vector<T> out;
-  for (const auto& r : rs)
-    if (auto* p = std::get_if<T>(&r)) out.push_back(*p);
-  return out;
-}
+using test::only;
 
 /// The InputError message of reading `text`, or "" if it reads.
 std::string error_of(const std::string& text) {

@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "cl_records.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
@@ -36,12 +37,7 @@ Read read_all(const std::string& text, GcodeReaderOptions o = {}, Setup s = {}) 
   return out;
 }
 
-template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
-  std::vector<T> out;
-  for (const auto& r : rs)
-    if (const T* x = std::get_if<T>(&r)) out.push_back(*x);
-  return out;
-}
+using test::only;
 
 InputError input_error(const std::string& text) {
   try {
@@ -225,8 +221,7 @@ std::vector<cl::Record> read_vmc(const std::string& text) {
   o.kind = InputKind::rtcp;  // tips in W as written
   std::istringstream in(text);
   GcodeClReader r(in, "t.ngc", vmc, Setup{}, o);
-  std::vector<cl::Record> out;
-  while (auto x = r.next()) out.push_back(std::move(*x));
+  std::vector<cl::Record> out = test::all_records(r);
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cl_records.hpp"
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -30,18 +31,12 @@ std::vector<cl::Record> read_all(const std::string& text, GcodeReaderOptions o =
                                  std::vector<std::string>* notices = nullptr) {
   std::istringstream in(text);
   GcodeClReader r(in, "t.ngc", ac_machine(), s, o);
-  std::vector<cl::Record> out;
-  while (auto x = r.next()) out.push_back(std::move(*x));
+  std::vector<cl::Record> out = test::all_records(r);
   if (notices) *notices = r.take_notices();
   return out;
 }
 
-template <class T> std::vector<T> only(const std::vector<cl::Record>& rs) {
-  std::vector<T> out;
-  for (const auto& r : rs)
-    if (const T* x = std::get_if<T>(&r)) out.push_back(*x);
-  return out;
-}
+using test::only;
 
 std::vector<cl::Motion> motions(const std::string& text, GcodeReaderOptions o = {}, Setup s = {}) {
   return only<cl::Motion>(read_all(text, o, s));

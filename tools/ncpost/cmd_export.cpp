@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: Apache-2.0
+// ncpost export: the model as compensation data for the control (issue 17; docs/cli.md "export"):
+// LinuxCNC's COMP_FILE, a SINUMERIK LEC table, or the machine file with the location errors of the
+// rotary axes applied (the control's kinematics calibration). What a format cannot hold is listed
+// on stderr and in the file.
+#include <fmt/format.h>
+
+#include <memory>
+#include <optional>
+
+#include "commands.hpp"
+#include "file_checks.hpp"
+#include "model_input.hpp"
+#include "ncpost/compensation/export_linuxcnc.hpp"
+#include "ncpost/compensation/export_machine.hpp"
+#include "ncpost/compensation/export_siemens.hpp"
+#include "ncpost/compensation/model_json.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/version.hpp"
+
+namespace ncpost::cli {
+
+namespace {
+
+struct ExportArgs {
+  std::string format, axis, machine, output, model;
+  bool force = false;
+};
+
+/// A three-axis machine X Y Z for a model given without --machine (its axes say XYZ).
+Machine three_axis_machine(const std::string& name) {
+  Machine m;
+  m.name = name;
+  m.chain = "w b X Y Z t";
+  for (char c : {'X', 'Y', 'Z'}) {
+    Axis a;
+    a.letter = c;
+    a.direction = Vec3d::Unit(c - 'X');
+    m.axes.push_back(a);
+  }
+  m.tool_side = {0, 1, 2};
+  return m;
+}
+
+/// The letter of `--axis`, or the one axis the model has a table for.
+char chosen_axis(const ExportArgs& args, const comp::MachineModel& model) {
+  if (!args.axis.empty()) {
+    const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(args.axis[0])));
+    if (args.axis.size() != 1 || std::string("XYZABC").find(letter) == std::string::npos)
+      throw UsageError(fmt::format("--axis: expected an axis letter X, Y, Z, A, B or C, got '{}'", args.axis));
+    return letter;  // an axis the model's machine lacks: refused naming the model (describe_axis_export)
+  }
+  std::string candidates;
+  for (const Axis& a : model.machine().axes) {
+    try {
+      (void)comp::describe_axis_export(model, a.letter);
+      candidates += a.letter;
+    } catch (const comp::ExportRefusal&) {
+    }
+  }
+  if (candidates.size() == 1) return candidates[0];
+  if (candidates.empty())
+    throw InputError({args.model, 0, 0}, "the model has no positioning error and no reversal of any axis: there is "
+                                         "nothing for a one-axis table to hold (--format machine writes location errors)");
+  throw UsageError(fmt::format("--axis is needed: the model has tables for the axes {} (one file per axis)", candidates));
+}
+
+void print_left_out(const std::vector<std::string>& left_out, const std::string& what) {
+  if (left_out.empty()) return;
+  fmt::print(stderr, "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
+                     "(also listed in the file):\n", what, left_out.size());
+  for (const std::string& s : left_out) fmt::print(stderr, "  {}\n", s);
+}
+
+int run_export(const ExportArgs& args) {
+  std::vector<NamedPath> inputs{{"MODEL", args.model}};
+  if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
+  check_files({{"-o", args.output}}, inputs);
+  if (args.format != "linuxcnc" && args.format != "siemens" && args.format != "machine")
+    throw UsageError(fmt::format("--format: expected linuxcnc, siemens or machine, got '{}'", args.format));
+  Machine machine;
+  comp::ModelFile file;
+  if (!args.machine.empty()) {
+    machine = load_machine(args.machine);
+    file = read_model_for(args.model, machine, args.force);
+  } else {
+    file = comp::read_model_json(args.model, nullptr);
+    if (args.format == "machine")
+      throw UsageError("--format machine needs --machine M.toml: the machine file to correct");
+    if (!file.axes.empty() && file.axes != "XYZ")
+      throw UsageError(fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
+                                   "need their directions)", file.axes));
+    machine = three_axis_machine(file.machine.empty() ? "three-axis" : file.machine);
+    file = read_model_for(args.model, machine, args.force);  // every name checked against X Y Z
+  }
+  const comp::MachineModel model(machine, file.parameters);
+  const comp::ExportSource source{args.model, args.machine, ncpost::version()};
+  const auto refused = [&](const comp::ExportRefusal& e) {
+    const bool machine_at_fault = e.source == comp::ExportRefusal::Source::machine && !args.machine.empty();
+    return InputError({machine_at_fault ? args.machine : args.model, 0, 0}, e.what());
+  };
+  try {
+    if (args.format == "machine") {
+      const comp::MachineExport out = comp::corrected_machine(model);
+      std::vector<std::string> notes{
+          fmt::format("ncpost {} export --format machine: '{}' with the location errors of model '{}' applied",
+                      source.version, machine.name, args.model),
+          fmt::format("(from '{}'), as a control's kinematics calibration: read it NOMINALLY (post without --model);",
+                      args.machine),
+          "the name differs from the original's so that this model is not applied a second time.",
+          fmt::format("Applied: {}", fmt::join(out.applied, ", "))};
+      if (out.left_out.empty()) {
+        notes.push_back("Left out: nothing");
+      } else {
+        notes.push_back(fmt::format("Left out (NOT in this machine file, {} term(s)):", out.left_out.size()));
+        for (const std::string& s : out.left_out) notes.push_back("  " + s);
+      }
+      write_file_atomically(args.output, comp::format_machine_toml(out.corrected, notes));
+      print_left_out(out.left_out, "a machine file");
+      fmt::print("exported {} location error(s) of '{}' into the machine file '{}' ({})\n", out.applied.size(),
+                 machine.name, args.output, out.corrected.name);
+      return 0;
+    }
+    const char letter = chosen_axis(args, model);
+    if (args.format == "linuxcnc") {
+      const comp::LinuxcncCompTable table = comp::linuxcnc_comp_table(model, letter);
+      write_file_atomically(args.output, comp::format_linuxcnc_comp(table, model, source));
+      print_left_out(table.axis.left_out, fmt::format("a LinuxCNC compensation file of {}", letter));
+      fmt::print("exported {} rows for axis {} (COMP_FILE_TYPE = 1) -> {}\n", table.rows.size(), letter, args.output);
+      return 0;
+    }
+    const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
+    write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
+    print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
+    fmt::print("exported {} points for axis {} ($AA_ENC_COMP, step {:.6g}) -> {}\n", table.values.size(), letter,
+               table.step, args.output);
+    return 0;
+  } catch (const comp::ExportRefusal& e) {
+    throw refused(e);
+  }
+}
+
+}  // namespace
+
+void add_export(CLI::App& app, Action& action) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* sub = app.add_subcommand("export", "Export a model as compensation data for the control");
+  sub->add_option("--format", args->format,
+                  "linuxcnc: LinuxCNC COMP_FILE (type 1) of one axis; siemens: SINUMERIK LEC table ($AA_ENC_COMP) of "
+                  "one axis; machine: the machine file with the rotary axes' location errors applied")
+      ->required();
+  sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens); needed when the model has "
+                                        "tables for more than one");
+  sub->add_option("--machine", args->machine,
+                  "machine definition (TOML); needed for rotary axes and --format machine");
+  add_model_force_option(*sub, args->force);
+  sub->add_option("-o,--output", args->output, "the file to write")->required();
+  sub->add_option("model", args->model, "error model JSON (written by identify)")->required();
+  sub->footer(
+      "Every term of the model acting on the axis that the format cannot hold is listed on stderr and in the file.\n"
+      "Example: ncpost export --format linuxcnc --axis X --machine machines/vmcl600.toml -o x.comp model.json");
+  sub->callback([&action, args] { action = [args] { return run_export(*args); }; });
+}
+
+}  // namespace ncpost::cli
