@@ -7,11 +7,11 @@
 
 namespace ncpost::trr {
 
-std::optional<ExecutedPoint> BlockEvaluator::at(const Block& b, double t, std::string* why) const {
+std::optional<ExecutedPoint> BlockEvaluator::at(const Block& b, double t, EvaluatorWork& work, std::string* why) const {
   const Command c = Command::from_words((1.0 - t) * b.from.words() + t * b.to.words());
-  const std::optional<ToolPose> tp = k_.tool(c.slider_mm, warm_, why);
+  const std::optional<ToolPose> tp = k_.tool(c.slider_mm, work.warm_plate, why);
   if (!tp) return std::nullopt;
-  warm_ = tp->machine_T_plate;
+  work.warm_plate = tp->machine_T_plate;
   ExecutedPoint e;
   e.tip_mm = Kinematics::tip_in_workpiece(*tp, c, origin_);
   e.axis = tp->axis;
@@ -24,11 +24,11 @@ std::optional<ExecutedPoint> BlockEvaluator::at(const Block& b, double t, std::s
   return e;
 }
 
-BlockError BlockEvaluator::evaluate(const Block& b, int samples) const {
+BlockError BlockEvaluator::evaluate(const Block& b, EvaluatorWork& work, int samples) const {
   BlockError r;
   std::string why;
   auto eval = [&](double t) {
-    const std::optional<ExecutedPoint> e = at(b, t, &why);
+    const std::optional<ExecutedPoint> e = at(b, t, work, &why);
     if (!e) throw std::runtime_error(why);
     return *e;
   };

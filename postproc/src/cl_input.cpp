@@ -21,6 +21,15 @@ InputKind input_kind_named(const std::string& name) {
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
                                            const cl::ReaderOptions& options, const Machine& machine,
                                            const Setup& setup) {
+  return open_cl_reader(in, name, kind, options, machine, setup, {});
+}
+
+std::unique_ptr<cl::Reader> open_cl_reader(
+    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options,
+    const Machine& machine, const Setup& setup,
+    const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward) {
+  if (word_forward && kind == InputKind::rtcp)
+    throw std::invalid_argument("open_cl_reader: a word machine reads no RTCP programs");
   bool apt = kind == InputKind::cl;
   if (kind == InputKind::automatic) {
     const std::istream::pos_type start = in.tellg();
@@ -38,7 +47,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
   if (apt) return std::make_unique<cl::AptReader>(in, name, options);
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
-  go.circles = true;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
+  go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
+  go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine
           : kind == InputKind::rtcp    ? gcode::InputKind::rtcp
                                        : gcode::InputKind::automatic;

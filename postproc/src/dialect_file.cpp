@@ -264,6 +264,27 @@ void read_comments(const Section& s, Dialect& d) {
   r.max_name_chars = static_cast<std::size_t>(s.integer("program_name_chars", 1, 64));
 }
 
+/// [tilted_plane] (optional: a file without it has no tilted planes; `post --tilted-plane` says so).
+void read_tilted_plane(const Section& s, Dialect& d) {
+  s.known({"native", "angles", "on", "off"});
+  if (!s.boolean("native")) return;
+  auto w = std::make_shared<TiltedPlaneWords>();
+  const std::string angles = s.text("angles");
+  if (angles == "euler_zxz") w->angles = TiltedPlaneWords::Angles::euler_zxz;
+  else if (angles == "fixed_xyz") w->angles = TiltedPlaneWords::Angles::fixed_xyz;
+  else throw s.wrong(s.node("angles"), "angles", "\"euler_zxz\" or \"fixed_xyz\", got \"" + angles + "\"");
+  const std::set<std::string> placeholders{"{x}", "{y}", "{z}", "{a}", "{b}", "{c}", "{dir}", "{rotary}"};
+  w->on = s.blocks("on", placeholders);
+  w->off = s.blocks("off", {});
+  std::string all;
+  for (const auto& b : w->on) all += b;
+  for (const char* p : {"{x}", "{y}", "{z}", "{a}", "{b}", "{c}"})
+    if (all.find(p) == std::string::npos)
+      throw s.wrong(s.node("on"), "on", fmt::format("blocks that give the whole plane: {} is missing (origin {{x}} "
+                                                    "{{y}} {{z}}, angles {{a}} {{b}} {{c}})", p));
+  d.tilted_plane = std::move(w);
+}
+
 }  // namespace
 
 Dialect parse_dialect(const std::string& text, const std::string& file) {
@@ -274,7 +295,7 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
     throw InputError(at(file, e.source()), std::string(e.description()));
   }
   const std::vector<std::string> sections{"dialect", "program", "blocks",  "motion", "arcs",         "comments",
-                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation"};
+                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation", "tilted_plane"};
   for (const auto& [key, node] : root)
     if (std::find(sections.begin(), sections.end(), std::string(key.str())) == sections.end()) {
       std::string list;
@@ -319,6 +340,7 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   dwell.known({"blocks"});
   d.dwell = dwell.blocks("blocks", {"{ms}", "{s}"});
   read_compensation(Section(file, root, "compensation"), d);
+  if (root.contains("tilted_plane")) read_tilted_plane(Section(file, root, "tilted_plane"), d);
   return d;
 }
 

@@ -26,6 +26,15 @@ std::string axis_letters_of(const Machine& m) {
   return s;
 }
 
+/// The words the program may use: a serial machine's X Y Z and rotary letters, or every axis of a
+/// word machine (GcodeReaderOptions::word_forward).
+std::string program_letters(const Machine& m, const GcodeReaderOptions& o) {
+  if (!o.word_forward) return axis_letters_of(m);
+  std::string s;
+  for (const Axis& a : m.axes) s += a.letter;
+  return s;
+}
+
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -76,8 +85,8 @@ struct GcodeClReader::State {
   std::vector<std::string> notices;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, GcodeReaderOptions o)
-      : source(in, f), file(f), machine(m), setup(s), options(o), interpreter(f, axis_letters_of(m), o.default_inch) {
-    for (int k = 0; k < machine.rotary_count() && k < 2; ++k) {
+      : source(in, f), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch) {
+    for (int k = 0; k < rotaries() && k < 2; ++k) {
       const std::string letters = "XYZABC";
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(letters.find(machine.rotary(k).letter));
     }
@@ -120,17 +129,43 @@ struct GcodeClReader::State {
   /// The tip, tool axis and angles of the program point `p` (RTCP or machine reading), checked
   /// against the machine's limits.
   void locate(cl::Motion& m, const ProgramPoint& p, bool rtcp) const {
+    if (options.word_forward) {
+      locate_words(m, p, rtcp);
+      return;
+    }
     AxisPosition q;
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
-    for (int k = 0; k < machine.rotary_count(); ++k)
+    for (int k = 0; k < rotaries(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
-    if (machine.rotary_count() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
+    if (rotaries() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
     const Rigidd table_T_tool = nominal_table_T_tool(q);
     m.point.axis = table_T_tool.R.col(2);
     m.point.tip_mm = rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
     if (options.check_limits)
       check_limits(rtcp ? AxisPosition{linear_for(machine, q.rotary_rad, q.linear_mm, setup), q.rotary_rad} : q, rtcp,
                    m.where);
+  }
+
+  /// Rotary axes of a serial machine (none for a word machine).
+  int rotaries() const { return options.word_forward ? 0 : machine.rotary_count(); }
+
+  /// locate() on a word machine: the words through its forward kinematics, checked against its limits.
+  void locate_words(cl::Motion& m, const ProgramPoint& p, bool rtcp) const {
+    if (rtcp)
+      throw InputError({file, m.where.line, m.where.column},
+                       fmt::format("an RTCP (tool-tip) program on the machine {}, whose words {} are no Cartesian "
+                                   "frame: not supported (post a program of machine words)",
+                                   machine.name, program_letters(machine, options)));
+    AxisPosition q;
+    for (std::size_t i = 0; i < machine.axes.size() && i < 5; ++i) q[static_cast<int>(i)] = p[i];
+    if (options.check_limits) check_limits(q, false, m.where);
+    std::string why;
+    const std::optional<ToolPoseT<double>> pose = options.word_forward(q, &why);
+    if (!pose)
+      throw Infeasible(fmt::format("{}:{}:{}: the machine {} has no pose at these words: {}", file, m.where.line,
+                                   m.where.column, machine.name, why));
+    m.point.tip_mm = pose->tip_mm;
+    m.point.axis = pose->axis;
   }
 
   // ---- a program without G20/G21 (or G70/G71/G700/G710) that looks like inches: X Y Z words
@@ -183,7 +218,7 @@ struct GcodeClReader::State {
     if (rtcp) return Vec3d(p[0], p[1], p[2]);
     AxisPosition q;
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
-    for (int k = 0; k < machine.rotary_count(); ++k)
+    for (int k = 0; k < rotaries(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     return Vec3d(nominal_table_T_tool(q).t - setup.workpiece_origin_mm);
   }
@@ -247,7 +282,7 @@ struct GcodeClReader::State {
   std::array<std::optional<double>, 2> last_programmed_rad{};
 
   ProgramPoint unwrapped(ProgramPoint p) const {
-    for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
+    for (int k = 0; k < rotaries() && k < 2; ++k)
       p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])] += wrap_offset_rad[static_cast<std::size_t>(k)];
     return p;
   }
@@ -255,7 +290,7 @@ struct GcodeClReader::State {
   /// `may_unwrap`: false for arcs (their rotary words are followed, not unwrapped).
   void update_wrap(const BlockEffect& fx, int line, bool may_unwrap) {
     constexpr double kTurn = 2.0 * kPi;
-    for (int k = 0; k < machine.rotary_count() && k < 2; ++k) {
+    for (int k = 0; k < rotaries() && k < 2; ++k) {
       const auto ku = static_cast<std::size_t>(k);
       const double v = fx.end[static_cast<std::size_t>(rotary_axis[ku])];
       const auto previous = last_programmed_rad[ku];

@@ -14,7 +14,6 @@ namespace ncpost::gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr const char* kAxisLetters = "XYZABC";
 /// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
 constexpr double kMaxCoordinate = 1e9;
 
@@ -156,6 +155,13 @@ struct Interpreter::Words {
 Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch)
     : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)) {
   state_.inch = state_.feed_inch = default_inch;
+  if (axis_letters_.find_first_of("UVW") != std::string::npos) {
+    word_axes_ = true;
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      slots_[i] = i < axis_letters_.size() ? axis_letters_[i] : '\0';
+      slot_angle_[i] = false;
+    }
+  }
 }
 
 std::vector<std::string> Interpreter::take_notices() {
@@ -204,13 +210,20 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     }
     switch (L) {
       case 'E': fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
-      case 'U': case 'V': case 'W': fail(word.column, fmt::format("the {} axis is not supported", L));
+      case 'U': case 'V': case 'W':
+        if (!word_axes_ || axis_letters_.find(L) == std::string::npos)
+          fail(word.column, fmt::format("the {} axis is not supported", L));
+        break;
       case 'A': case 'B': case 'C':
         if (axis_letters_.find(L) == std::string::npos)
           fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
         break;
+      case 'X': case 'Y': case 'Z':
+        if (word_axes_ && axis_letters_.find(L) == std::string::npos)
+          fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
+        break;
       case 'D': case 'F': case 'H': case 'I': case 'J': case 'K': case 'L': case 'P': case 'Q': case 'R':
-      case 'S': case 'T': case 'X': case 'Y': case 'Z':
+      case 'S': case 'T':
         break;
       default: fail(word.column, fmt::format("unknown word '{}'", L));
     }
@@ -223,7 +236,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
 
   // ---- G codes by modal group (control-specific words apart: gcode_control_words.hpp)
   bool has_axis_words = false;
-  for (const char* p = kAxisLetters; *p; ++p) has_axis_words = has_axis_words || w.has(*p);
+  for (const char L : slots_) has_axis_words = has_axis_words || (L && w.has(L));
   Code control_units{-1, 0};
   bool control_inch = false, control_feeds_too = false;
   std::array<Code, g_group_count> group{};
@@ -432,10 +445,10 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
   // ---- motion
   int first_axis_column = 0;
   bool has_axis = false;
-  for (const char* p = kAxisLetters; *p; ++p)
-    if (w.has(*p)) {
+  for (const char L : slots_)
+    if (L && w.has(L)) {
       has_axis = true;
-      if (!first_axis_column || w.col(*p) < first_axis_column) first_axis_column = w.col(*p);
+      if (!first_axis_column || w.col(L) < first_axis_column) first_axis_column = w.col(L);
     }
   const bool home_return = g_is(g_non_modal, 280) || g_is(g_non_modal, 300);
   if (home_return) {
@@ -457,6 +470,10 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     if (st.motion == MotionMode::none)
       fail(first_axis_column ? first_axis_column : block.column,
            "axis words without a motion mode (expected G0, G1, G2 or G3)");
+    if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
+      fail(in_group[g_motion] ? group[g_motion].column : block.column,
+           fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
+                       "as G0/G1 blocks)", is_arc ? "an arc" : "a canned cycle", axis_letters_));
     if (g_is(g_non_modal, 530))
       notice_once("G53", line_number, group[g_non_modal].column,
                   "G53 machine coordinates are read as program coordinates");
@@ -467,10 +484,11 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
     const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
     for (std::size_t i = 0; i < 6; ++i) {
-      const char L = kAxisLetters[i];
+      const char L = slots_[i];
+      if (!L) continue;
       const bool used = axis_letters_.find(L) != std::string::npos;
       if (w.has(L)) {
-        const double v = i < 3 ? w.get(L) * length_scale : deg_to_rad(w.get(L));
+        const double v = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
         end[i] = st.incremental ? st.position[i] + v : v;
         if (!(std::abs(end[i]) <= kMaxCoordinate))
           fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));

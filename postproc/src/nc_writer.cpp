@@ -130,7 +130,7 @@ bool NcWriter::motion(const NcMotion& m) {
   if (active_cycle_) {
     // the cancel word first if this motion writes a block (a move to where the tool is writes none)
     bool moves = false;
-    for (std::size_t i = 0; i < letters_.size(); ++i)
+    for (std::size_t i = 0; i < word_count(); ++i)
       if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
     if (!moves) return false;
     end_cycle();
@@ -158,7 +158,7 @@ bool NcWriter::motion(const NcMotion& m) {
     buf_.append(m.rapid ? w.rapid : w.linear);
     last_motion_ = g;
   }
-  for (std::size_t i = 0; i < letters_.size(); ++i) {
+  for (std::size_t i = 0; i < word_count(); ++i) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
@@ -307,10 +307,46 @@ void NcWriter::cycle(const NcCycle& c) {
   last_[2] = cycle_return_z_;
 }
 
+void NcWriter::tilted_plane(const std::vector<std::string>& blocks, bool on) {
+  end_cycle();
+  for (const auto& words : blocks) block(words);
+  tilted_ = on;
+  // the plane's coordinates (or, after it, the program frame's) start afresh: every word is written
+  for (auto& v : last_) v.reset();
+  last_motion_.reset();
+}
+
+std::string NcWriter::word_value(int axis, double value) const {
+  fmt::memory_buffer b;
+  append_fixed(b, rounded(axis, value), axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals,
+               dialect_.motion.plus_sign);
+  return fmt::to_string(b);
+}
+
+namespace {
+
+/// True when `words` hold an axis word (a letter of X Y Z A B C U V W and a number) for an axis
+/// that is not one of `letters` (the end's `G91 G28 Z0` on a machine without Z).
+bool names_missing_axis(const std::string& words, const std::string& letters) {
+  std::size_t at = 0;
+  while (at < words.size()) {
+    const std::size_t end = std::min(words.find(' ', at), words.size());
+    const std::string word = words.substr(at, end - at);
+    at = end + 1;
+    if (word.size() < 2 || std::string("XYZABCUVW").find(word[0]) == std::string::npos) continue;
+    if (word.find_first_not_of("+-.0123456789", 1) != std::string::npos) continue;
+    if (letters.find(word[0]) == std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void NcWriter::end_program() {
   write_held("");
   end_cycle();
-  for (const auto& words : dialect_.program_end) write_block(with_value(words, "{program}", program_name_));
+  for (const auto& words : dialect_.program_end)
+    if (!names_missing_axis(words, letters_)) write_block(with_value(words, "{program}", program_name_));
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   flush();
 }

@@ -8,6 +8,7 @@
 #include "lookahead.hpp"
 #include "ncpost/postproc/unreachable.hpp"
 #include "ncpost/postproc/cycle_words.hpp"
+#include "ncpost/postproc/tilted_plane.hpp"
 #include "post_cycle.hpp"
 #include "record_blocks.hpp"
 
@@ -26,7 +27,8 @@ Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
 class Poster {
  public:
   Poster(const std::string& input, const MotionSolver& solver, NcWriter& writer, const PostOptions& options)
-      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()) {}
+      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()),
+        words_(solver.words()) {}
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
@@ -47,6 +49,7 @@ class Poster {
         for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
       }
     }
+    close_plane();
     if (options_.rtcp && rtcp_on_) writer_.rtcp(false, tool_);
     writer_.end_program();
     summary_.blocks_out = writer_.blocks_written();
@@ -59,6 +62,7 @@ class Poster {
     ++summary_.motions_in;
     if (options_.progress && summary_.motions_in % 4096 == 0) options_.progress(summary_.motions_in);
     const bool rapid = m.rapid || m.from;
+    update_plane(m, rapid);
     check_comp(m);
     if (pending_circle_) {
       const cl::Circle c = *pending_circle_;
@@ -72,7 +76,7 @@ class Poster {
       drill(m);
       return;
     }
-    move_to(m.point, m.where.line, rapid, m.rotary_rad);
+    move_to(m.point, m.where.line, rapid, words_.serial ? m.rotary_rad : std::nullopt);  // angles: serial chains
   }
 
   void on(const cl::Feed& f) {
@@ -85,6 +89,7 @@ class Poster {
   /// length (or RTCP with the length) of the new tool (the dialect's words).
   void on(const cl::ToolChange& t) {
     const Dialect& d = writer_.dialect();
+    close_plane();
     std::vector<std::string> blocks;
     auto add = [&](const std::vector<std::string>& list, int tool) {
       for (const auto& b : list) blocks.push_back(with_tool(b, tool));
@@ -92,7 +97,8 @@ class Poster {
     if (rtcp_on_) add(d.rtcp_off, tool_);
     tool_ = t.number;
     add(d.tool_call, tool_);
-    add(options_.rtcp ? d.rtcp_on : d.tool_length_on, tool_);
+    if (options_.rtcp) add(d.rtcp_on, tool_);
+    else if (options_.tool_length_on_change) add(d.tool_length_on, tool_);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
   }
@@ -111,7 +117,17 @@ class Poster {
     summary_.notices.push_back(fmt::format("{}:{}: {}", input_, where.line, what));
   }
 
-  void move_to(const ClPoint& cl, int line, bool rapid, const std::optional<Eigen::Vector2d>& rotary = std::nullopt) {
+  void move_to(const ClPoint& cl, int line, bool rapid, std::optional<Eigen::Vector2d> rotary = std::nullopt) {
+    if (plane_ && (cl.axis - plane_->axis_W).norm() > 1e-9) close_plane();  // (a motion of a cycle or arc)
+    if (plane_ && !rotary) {
+      // the rotary axes stand still in the plane, where the point is within the limits there;
+      // else the plane ends and the motion is posted as without it (limits, retract, message)
+      const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, nullptr);
+      if (ik.ok() && (ik.position->rotary_rad - plane_->rotary_rad).cwiseAbs().maxCoeff() < 1e-9)
+        rotary = plane_->rotary_rad;
+      else
+        close_plane();
+    }
     SolvedPoint next{cl, {}};
     if (rotary) {
       next.q = solver_.with_rotary(cl, *rotary);
@@ -146,7 +162,7 @@ class Poster {
         previous_ = still;
       }
     }
-    if (have_position_ && !rapid && !rotary && machine_.rotary_count() == 2 && branch_changed(cl, next.q)) {
+    if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
         throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
                                      "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
@@ -154,7 +170,8 @@ class Poster {
                                      rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1])));
       retract_and_reorient(next, line);
     }
-    if (have_position_ && !rapid && options_.subdivide && !options_.rtcp) {
+    // (in a tilted plane the tool axis and the rotary axes are still: a straight line, nothing to bound)
+    if (have_position_ && (!rapid || options_.subdivide_rapids) && options_.subdivide && !options_.rtcp && !plane_) {
       SolvedPoint from = previous_;
       std::vector<SolvedPoint> points;
       try {
@@ -209,17 +226,22 @@ class Poster {
   void emit(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid) {
     NcMotion m;
     m.rapid = rapid;
-    if (options_.rtcp) {
+    if (plane_) {
+      const Vec3d in_plane = plane_->words.to_plane(to.cl.tip_mm + home_offset_);
+      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = in_plane[i];
+    } else if (options_.rtcp) {
       const Vec3d tip_mm = solver_.programmed_tip(to.cl, to.q);
       for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = tip_mm[i];
-    } else {
-      for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = to.q.linear_mm[i];
     }
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      m.values[static_cast<std::size_t>(3 + k)] = rad_to_deg(to.q.rotary_rad[k]);
+    for (int i = (options_.rtcp || plane_) ? 3 : 0; i < words_.count; ++i) {  // the words of the solver (CommandWords)
+      const auto u = static_cast<std::size_t>(i);
+      m.values[u] = words_.angle[u] ? rad_to_deg(to.q[i]) : to.q[i];
+    }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
-    const double rotary_travel_deg = rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff());
-    const bool simultaneous = machine_.rotary_count() > 0 && rotary_travel_deg > 1e-9;
+    const double rotary_travel_deg =
+        words_.rotary_count > 0 ? rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff()) : 0.0;
+    // (in a tilted plane the control turned the rotary axes before: the block moves X Y Z only)
+    const bool simultaneous = !plane_ && words_.rotary_count > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
                          (options_.feed_mode == PostOptions::FeedMode::inverse_time || simultaneous);
     if (inverse && !rapid && writer_.dialect().motion.inverse_time.empty())
@@ -239,11 +261,15 @@ class Poster {
     } else {
       m.feed = feed;
     }
-    // the control executes the rounded values
+    // the control executes the rounded values (in a tilted plane: through the plane's words)
     AxisPosition executed = to.q;
-    for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, to.q.linear_mm[i]);
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      executed.rotary_rad[k] = deg_to_rad(writer_.rounded(3 + k, rad_to_deg(to.q.rotary_rad[k])));
+    if (plane_) {
+      executed = plane_executed(Vec3d(m.values[0], m.values[1], m.values[2]));
+    } else {
+      for (int i = 0; i < words_.count; ++i)
+        executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
+                                                                 : writer_.rounded(i, to.q[i]);
+    }
     bool split = false;
     if (rapid && options_.order_rapids && last_values_) {
       // retract first when going up, descend last when going down
@@ -265,6 +291,8 @@ class Poster {
       const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
     }
+    if (written && options_.on_block && have_position_)
+      options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
     solver_.advance(executed);
     last_executed_ = executed;
   }
@@ -312,6 +340,7 @@ class Poster {
     const Vec3d centre = c.center_mm + (start - c.center_mm).dot(n) * n;  // in the plane of the arc
     // the arc in the program's frame: W under RTCP, else the linear axes for the fixed rotary angles
     auto frame = [&](const Vec3d& p) -> Vec3d {
+      if (plane_) return plane_->words.to_plane(p + home_offset_);
       if (options_.rtcp) return p;
       return solver_.with_rotary(ClPoint{p, n}, previous_.q.rotary_rad).linear_mm;
     };
@@ -337,9 +366,11 @@ class Poster {
     writer_.arc(arc);
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
-    SolvedPoint next{end.point, *ik.position};
+    SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad) : *ik.position};
     AxisPosition executed = next.q;
-    for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
+    if (plane_) executed = plane_executed(xe);
+    else
+      for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
     solver_.advance(executed);
     last_executed_ = executed;
     previous_ = next;
@@ -388,11 +419,15 @@ class Poster {
     const IkOutcome ik = solver_.solve(p.retract, previous_.q);
     if (!ik.ok()) return false;  // the expansion names the failure
     const Eigen::Vector2d rotary = ik.position->rotary_rad;
-    auto frame = [&](const ClPoint& c) {
+    auto frame = [&](const ClPoint& c) -> Vec3d {
+      if (plane_) return plane_->words.to_plane(c.tip_mm + home_offset_);
       return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary).linear_mm;
     };
     const Vec3d xt = frame(p.retract), xr = frame(p.r_plane), xb = frame(p.bottom);
-    auto on_axis = [&](const Vec3d& a) { return std::abs(a.x() - xb.x()) < 1e-7 && std::abs(a.y() - xb.y()) < 1e-7; };
+    // in a tilted plane its Z (rounded angles) is within ~1e-6 rad of the hole: the hole is native
+    // where that leaves its top within half the words' resolution of the bottom's X Y
+    const double across = plane_ ? 0.5 * std::pow(10.0, -writer_.dialect().linear_decimals) : 1e-7;
+    auto on_axis = [&](const Vec3d& a) { return std::abs(a.x() - xb.x()) < across && std::abs(a.y() - xb.y()) < across; };
     if (!on_axis(xt) || !on_axis(xr) || !(xb.z() < xr.z()) || xt.z() < xr.z() - 1e-9) return false;
     std::string note;
     const auto nc = detail::native_hole(cycle_, *words, xr, xb, p.retract_to_r, feed, writer_.dialect().linear_decimals, note);
@@ -406,7 +441,9 @@ class Poster {
     if (have_position_ && same_rotary && writer_.continues(*nc, p.retract_to_r ? xr.z() : xt.z())) {
       // the modal cycle travels there itself: the tool stands at the return level over the hole
       AxisPosition executed = at_retract.q;
-      for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
+      if (plane_) executed = plane_executed(xt);
+      else
+        for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
       solver_.advance(executed);
       last_executed_ = executed;
       previous_ = at_retract;
@@ -421,6 +458,7 @@ class Poster {
     if (options_.verify && !options_.rtcp) {
       // the feed of the cycle block re-executed: R plane to the bottom (and back for taps and bores)
       auto executed = [&](const ClPoint& c) {
+        if (plane_) return plane_executed(frame(c));
         AxisPosition q = solver_.with_rotary(c, rotary);
         for (int i = 0; i < 3; ++i) q.linear_mm[i] = writer_.rounded(i, q.linear_mm[i]);
         return q;
@@ -435,6 +473,11 @@ class Poster {
   /// CUTCOM/LEFT|RIGHT|OFF as G41/G42 D<n> / G40 (cycle_words.hpp `comp_words`).
   void on(const cl::CutterComp& c) {
     const SourcePosition at{input_, c.where.line, c.where.column};
+    if (!words_.serial && c.side != cl::CutterComp::Side::off)
+      throw InputError(at, fmt::format("cutter radius compensation is not posted on the {} machine (its control "
+                                       "compensates in no plane of these axes): post the tool centre path without "
+                                       "CUTCOM", machine_.name), "CUTCOM/" + c.text);
+    if (!words_.serial) return;  // CUTCOM/OFF: nothing was on
     const auto words = comp_words(writer_.dialect());
     if (!words)
       throw InputError(at, fmt::format("CUTCOM: the {} dialect writes no radius compensation ([compensation] native "
@@ -462,6 +505,7 @@ class Poster {
                                        "turns): G41/G42 compensate in a plane normal to a fixed tool axis; post the "
                                        "path without CUTCOM (the CL data are then the tool centre path)",
                                        side, comp_->where.line));
+    if (plane_) return;  // the plane's Z is the tool axis: G41/G42 compensate in its XY
     const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad).linear_mm;
     const Vec3d up = options_.rtcp ? Vec3d(previous_.cl.tip_mm + previous_.cl.axis)
                                    : solver_.with_rotary(ClPoint{previous_.cl.tip_mm + previous_.cl.axis, previous_.cl.axis},
@@ -478,6 +522,7 @@ class Poster {
   NcWriter& writer_;
   const PostOptions& options_;
   const Machine& machine_;
+  const CommandWords words_;  ///< what each command slot is (read once: no virtual call per point)
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
@@ -491,6 +536,119 @@ class Poster {
   cl::Cycle cycle_;
   std::optional<cl::CutterComp> comp_;  ///< the last CUTCOM
   int noticed_cycle_line_ = 0;          ///< the cycle record whose native form was noticed
+
+  // ---- tilted work planes (PostOptions::tilted_plane, tilted_plane.hpp) ------------------------
+  /// The plane the program is in: its words (what the control reads) and where the control turns
+  /// the rotary axes (the tool along the plane's Z).
+  struct Plane {
+    TiltedPlane words;
+    Vec3d axis_W = Vec3d::UnitZ();        ///< the CL tool axis of the run
+    Eigen::Vector2d rotary_rad{0, 0};     ///< the post's solution (limits, continuity)
+    Eigen::Vector2d executed_rotary_rad{0, 0};  ///< the control's: the tool along the words' Z, nearest it
+  };
+
+  /// The program frame at home P = W + home_offset_ (W is parallel to M at home).
+  Vec3d home_offset() const {
+    return solver_.with_rotary(ClPoint{Vec3d::Zero(), Vec3d::UnitZ()}, Eigen::Vector2d::Zero()).linear_mm;
+  }
+
+  /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
+  /// first motion, to a tool axis other than +Z of W).
+  void update_plane(const cl::Motion& m, bool rapid) {
+    if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 || !words_.serial) return;
+    const Vec3d k = m.point.axis.normalized();
+    if (plane_ && (k - plane_->axis_W).norm() <= 1e-9) return;
+    close_plane();
+    if (k.z() > 1.0 - 1e-12 || m.rotary_rad || !(rapid || !have_position_)) return;
+    open_plane(m.point);
+  }
+
+  void open_plane(const ClPoint& cl) {
+    const TiltedPlaneWords& tw = *writer_.dialect().tilted_plane;
+    const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, nullptr);
+    if (!ik.ok()) return;  // the motion names the failure
+    const Eigen::Vector2d rotary = ik.position->rotary_rad;
+    // the program frame's axes seen from the tilted part (W) at this solution
+    const Vec3d o = solver_.with_rotary(ClPoint{Vec3d::Zero(), cl.axis}, rotary).linear_mm;
+    Mat3d P_from_W;
+    for (int i = 0; i < 3; ++i) P_from_W.col(i) = solver_.with_rotary(ClPoint{Vec3d::Unit(i), cl.axis}, rotary).linear_mm - o;
+    const Mat3d R = plane_frame(cl.axis, P_from_W.row(0).transpose(), P_from_W.row(1).transpose());
+    Plane p;
+    p.words.convention = tw.angles;
+    std::array<double, 3> angles = plane_angles(tw.angles, R, last_plane_angles_);
+    for (double& a : angles) a = writer_.rounded(3, a);
+    p.words.angles_deg = angles;
+    p.words.P_R_F = plane_rotation(tw.angles, angles);
+    const Vec3d origin_P = cl.tip_mm + home_offset_;
+    for (int i = 0; i < 3; ++i) p.words.origin_P_mm[i] = writer_.rounded(i, origin_P[i]);
+    p.axis_W = cl.axis.normalized();
+    p.rotary_rad = rotary;
+    const IkOutcome e = solver_.solve_quiet(ClPoint{cl.tip_mm, p.words.P_R_F.col(2)}, *ik.position, nullptr);
+    p.executed_rotary_rad = e.ok() ? e.position->rotary_rad : rotary;
+    // which of the two solutions: +1 the one with the larger first rotary angle
+    int dir = 1;
+    for (const RotarySolution& s : rotary_solutions(machine_, cl.axis)) {
+      const double d0 = std::remainder(s.rotary_rad[0] - rotary[0], 2.0 * kPi);
+      const double d1 = std::remainder(s.rotary_rad[1] - rotary[1], 2.0 * kPi);
+      if (std::abs(d0) + std::abs(d1) > 1e-6 && d0 > 0.0) dir = -1;  // the other solution is larger
+    }
+    std::string rotary_words;
+    for (int k = 0; k < machine_.rotary_count(); ++k)
+      rotary_words += (k ? " " : "") + std::string(1, writer_.letters()[static_cast<std::size_t>(3 + k)]) +
+                      writer_.word_value(3 + k, rad_to_deg(rotary[k]));
+    std::vector<std::string> blocks;
+    for (std::string b : tw.on) {
+      b = with_value(b, "{x}", writer_.word_value(0, p.words.origin_P_mm.x()));
+      b = with_value(b, "{y}", writer_.word_value(1, p.words.origin_P_mm.y()));
+      b = with_value(b, "{z}", writer_.word_value(2, p.words.origin_P_mm.z()));
+      b = with_value(b, "{a}", writer_.word_value(3, angles[0]));
+      b = with_value(b, "{b}", writer_.word_value(3, angles[1]));
+      b = with_value(b, "{c}", writer_.word_value(3, angles[2]));
+      b = with_value(b, "{dir}", dir > 0 ? "1" : "-1");
+      b = with_value(b, "{rotary}", rotary_words);
+      blocks.push_back(std::move(b));
+    }
+    writer_.tilted_plane(blocks, true);
+    ++summary_.tilted_planes;
+    last_plane_angles_ = angles;
+    // where the tool stands in the plane once the rotary axes have turned (linear axes still)
+    if (have_position_) {
+      AxisPosition q = last_executed_;
+      q.rotary_rad = p.executed_rotary_rad;
+      const Vec3d at = p.words.to_plane(solver_.execute(q).tip_mm + home_offset_);
+      last_values_ = std::array<double, 5>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z()),
+                                           0.0, 0.0};
+    } else {
+      last_values_.reset();
+    }
+    plane_ = p;
+  }
+
+  void close_plane() {
+    if (!plane_) return;
+    writer_.tilted_plane(writer_.dialect().tilted_plane->off, false);
+    // back in the program frame: the machine stands at the last executed commands
+    if (have_position_) {
+      std::array<double, 5> v{};
+      for (int i = 0; i < 3; ++i) v[static_cast<std::size_t>(i)] = writer_.rounded(i, last_executed_.linear_mm[i]);
+      for (int k = 0; k < machine_.rotary_count(); ++k)
+        v[static_cast<std::size_t>(3 + k)] = rad_to_deg(last_executed_.rotary_rad[k]);
+      last_values_ = v;
+    }
+    plane_.reset();
+  }
+
+  /// The commands the control executes for the plane's words X Y Z (`in_plane`, rounded here):
+  /// the plane's transform into W, then the machine at the rotary angles the control turned to.
+  AxisPosition plane_executed(const Vec3d& in_plane) const {
+    Vec3d r;
+    for (int i = 0; i < 3; ++i) r[i] = writer_.rounded(i, in_plane[i]);
+    return executed_in_plane(solver_, plane_->words, home_offset_, plane_->executed_rotary_rad, r);
+  }
+
+  std::optional<Plane> plane_;
+  std::optional<std::array<double, 3>> last_plane_angles_;  ///< of the last plane (continuity)
+  const Vec3d home_offset_ = home_offset();
 };
 
 }  // namespace

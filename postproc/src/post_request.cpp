@@ -15,6 +15,7 @@
 #include "ncpost/postproc/nc_writer.hpp"
 #include "ncpost/postproc/preview_blocks.hpp"
 #include "ncpost/version.hpp"
+#include "trr_post_request.hpp"
 
 namespace ncpost {
 namespace {
@@ -70,16 +71,22 @@ std::vector<std::string> header_comments(const PostRequest& r, const std::option
 }  // namespace
 
 std::string PostRequest::invalid() const {
-  if (machine.axes.empty()) return "no machine (load_machine)";
+  if (machine.axes.empty() && !trr) return "no machine (load_machine)";
+  if (trr && rtcp) return "rtcp: the TRR-XY machine has no RTCP dialect (it is posted in X Y U V W)";
   if (tolerance_mm && !(*tolerance_mm > 0 && std::isfinite(*tolerance_mm)))
     return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
   if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
   if (threads < 1 || threads > 2) return fmt::format("threads: expected 1 or 2, got {}", threads);
+  if (tilted_plane && rtcp) return "tilted_plane: not with rtcp (the tilted plane carries the tool tip itself)";
+  if (tilted_plane && model)
+    return "tilted_plane: not with a model (the control maps the plane's coordinates on its nominal kinematics, so "
+           "the compensation cannot be carried)";
   return {};
 }
 
 PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
   if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
+  if (r.trr) return detail::post_trr(input, program, r);
   // the control interpolates the tool tip under RTCP: no tolerance unless asked for
   std::optional<double> tolerance_mm = r.tolerance_mm;
   if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();
@@ -119,6 +126,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   options.retract_mm = r.retract_mm;
   options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
   options.native_cycles = !r.model;
+  options.tilted_plane = r.tilted_plane;
   options.verify = account;
   options.threads = r.threads;
   options.feed_mode = r.feed_mode;
@@ -149,6 +157,10 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   }
   out.commit();  // flushes `program`
   reader.reset();
+  if (r.tilted_plane && !r.dialect.tilted_plane)
+    result.summary.notices.push_back(fmt::format(
+        "--tilted-plane: the {} dialect ({}) has no tilted work plane ([tilted_plane] native = false or absent): the "
+        "3+2 runs are written with the machine's axes, as without the option", r.dialect.name, r.dialect.file));
   if (r.progress.posted) r.progress.posted(result.summary);
   acc.motions_in = result.summary.motions_in;
   acc.blocks_out = result.summary.blocks_out;

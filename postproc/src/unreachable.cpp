@@ -34,6 +34,7 @@ std::string out_of_limits(const Axis& axis, double value) {
 
 std::string axes_out_of_limits(const MotionSolver& solver, const ClPoint& cl, const AxisPosition& previous,
                                bool* linear_out) {
+  if (!solver.words().serial) return {};  // the solver's failure names the axis (e.g. the TRR-XY sliders)
   const Machine& m = solver.machine();
   std::vector<Eigen::Vector2d> rotaries;
   if (m.rotary_count() == 0) {

@@ -13,6 +13,12 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return (p - (a + t * ab)).norm();
 }
 
+AxisPosition executed_in_plane(const MotionSolver& solver, const TiltedPlane& plane, const Vec3d& home_offset_mm,
+                               const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F) {
+  const Vec3d tip_W = plane.to_program(xyz_F) - home_offset_mm;
+  return solver.with_rotary(ClPoint{tip_W, plane.P_R_F.col(2)}, rotary_rad);
+}
+
 double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples) {
   auto at = [&](double t) {

@@ -64,6 +64,7 @@ std::vector<AxisPosition> commands_of(const std::string& program, const Machine&
   std::string line;
   while (std::getline(in, line)) {
     if (line.find('(') != std::string::npos) line = line.substr(0, line.find('('));
+    if (line.find("G28") != std::string::npos) continue;  // the end's return to the reference point
     bool any = false;
     for (auto it = std::sregex_iterator(line.begin(), line.end(), word); it != std::sregex_iterator(); ++it) {
       const int i = m.index_of((*it)[1].str()[0]);

@@ -61,11 +61,12 @@ const std::vector<Option>& options() {
   return list;
 }
 
-/// A scratch folder per process (libFuzzer may fork), emptied after each run.
+/// A scratch folder per process (libFuzzer may fork), the working directory, emptied after each run.
 const fs::path& scratch() {
   static const fs::path dir = [] {
     fs::path d = fs::temp_directory_path() / ("ncpost-fuzz-cli-" + std::to_string(::getpid()));
     fs::create_directories(d);
+    fs::current_path(d);  // a fuzzed relative path (e.g. --report G90) lands here, and is removed
     return d;
   }();
   return dir;
@@ -144,7 +145,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   }
   std::error_code ec;
-  fs::remove(output, ec);
-  fs::remove(report, ec);
+  for (const auto& entry : fs::directory_iterator(dir, ec)) fs::remove_all(entry.path(), ec);
   return 0;
 }

@@ -19,6 +19,7 @@
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/post_report.hpp"
 #include "ncpost/postproc/post_request.hpp"
+#include "ncpost/machines/trr_xy_file.hpp"
 #include "trr_commands.hpp"
 
 namespace ncpost::cli {
@@ -35,6 +36,7 @@ struct PostArgs {
   bool force_model = false;  // --force: model checks as warnings
   std::string nonlinear = "adaptive";
   bool rtcp = false;
+  bool tilted_plane = false;
   std::string dialect = "fanuc";
   std::string feed_mode = "auto";
   bool verify = false;
@@ -59,15 +61,17 @@ int run_post(const PostArgs& given) {
   check_files({{"-o", given.output}, {"--report", given.report}},
               {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
                {"--verify-on", given.verify_on}});
+  if (given.tilted_plane && given.rtcp)
+    throw UsageError("--tilted-plane: not with --rtcp (in a tilted plane the control carries the tool tip itself)");
+  if (given.tilted_plane && !given.model.empty())
+    throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
+                     "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
   const InputFile input(given.input);
   PostArgs a = given;
   a.input = input.name();
   a.input_path = input.path();
   a.tolerance_mm = tolerance_of(a.tolerance);
   if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
-  if (auto rc = post_if_trr_xy({a.job, a.model, a.tolerance_mm, a.nonlinear, a.rtcp, a.dialect, a.verify, a.report,
-                                 a.verify_on, a.output, a.input, a.input_path}))
-    return *rc;
   PostRequest r;
   try {
     r.dialect = dialect_named(a.dialect);
@@ -76,25 +80,35 @@ int run_post(const PostArgs& given) {
   }
   if (a.tolerance_mm && a.rtcp)  // given explicitly
     fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
-  LoadedJob job = load_job(a.job);
-  r.machine = std::move(job.machine);
   r.machine_source = a.job.machine;
-  r.setup = job.setup;
   r.input_name = a.input;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
-  if (!a.model.empty()) {
-    r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+  if (machine_file_kind(a.job.machine) == "trr-xy") {
+    r.trr = load_trr_post_job(a.job, a.model, a.verify_on, a.rtcp);
+    r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
     r.model_source = a.model;
-  }
-  if (!a.verify_on.empty()) {
-    r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
     r.verify_on_source = a.verify_on;
+    if (a.tolerance_mm && a.nonlinear == "harmonic")
+      fmt::print(stderr, "notice: --nonlinear harmonic: the TRR-XY post meets the tolerance by adaptive insertion\n");
+  } else {
+    LoadedJob job = load_job(a.job);
+    r.machine = std::move(job.machine);
+    r.setup = job.setup;
+    if (!a.model.empty()) {
+      r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+      r.model_source = a.model;
+    }
+    if (!a.verify_on.empty()) {
+      r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
+      r.verify_on_source = a.verify_on;
+    }
   }
   r.tolerance_mm = tolerance_of(a.tolerance);
   r.tolerance_is_default = a.tolerance.empty();
   r.nonlinear = *nonlinear::method_named(a.nonlinear);
   r.rtcp = a.rtcp;
+  r.tilted_plane = a.tilted_plane;
   r.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
               : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
                                      : PostOptions::FeedMode::automatic;
@@ -131,7 +145,7 @@ int run_post(const PostArgs& given) {
   const PostSummary& summary = result.summary;
   if (a.output != "-")
     fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (r.verify || r.verify_on) {
+  if (r.verify || r.verify_on || (r.trr && r.trr->verify_on)) {
     if (a.rtcp)
       fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
     else
@@ -171,6 +185,11 @@ void add_post(CLI::App& app, Action& action) {
   sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
+  sub->add_flag("--tilted-plane", a->tilted_plane,
+                "3+2: write each run of motions with a constant tilted tool axis (opened by a rapid) in a tilted "
+                "work plane: Fanuc G68.2/G53.1 ... G69, Haas G268/G253 ... G269, Sinumerik CYCLE800, Heidenhain "
+                "PLANE SPATIAL ... STAY (the dialect's [tilted_plane]; LinuxCNC: machine axes as without it), X Y Z in "
+                "the plane, G2/G3 and drilling cycles in its XY. Not with --rtcp or --model");
   sub->add_option("--dialect", a->dialect,
                   "A built-in dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain; or the path of a "
                   "dialect file (a copy of postproc/dialects/fanuc.toml, edited; README \"Dialect files\")")

@@ -8,26 +8,14 @@
 #include <string>
 
 #include "input_options.hpp"
+#include "ncpost/postproc/post_request.hpp"
 
 namespace ncpost::cli {
 
-struct TrrPostRequest {
-  const JobOptions& job;
-  const std::string& model;
-  const std::optional<double>& tolerance_mm;
-  const std::string& nonlinear;  ///< "adaptive" or "harmonic"
-  bool rtcp;
-  const std::string& dialect;
-  bool verify;
-  const std::string& report;
-  const std::string& verify_on;
-  const std::string& output;
-  const std::string& input;       ///< name in messages
-  const std::string& input_path;  ///< the file read
-};
-
-/// The exit code if the machine is a TRR-XY machine (then the post has run), else nullopt.
-std::optional<int> post_if_trr_xy(const TrrPostRequest& r);
+/// The TRR-XY job of `ncpost post` (the common post, post_request.hpp): the machine file and the
+/// models of --model and --verify-on ("": none). UsageError for the options this machine has not
+/// (--rtcp, --tool-length, G-code --input-kind).
+TrrJob load_trr_post_job(const JobOptions& job, const std::string& model, const std::string& verify_on, bool rtcp);
 
 struct TrrPreviewRequest {
   const JobOptions& job;

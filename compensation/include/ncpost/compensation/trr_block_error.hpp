@@ -39,21 +39,26 @@ struct BlockError {
   double harmonic_residual_mm = 0.0;  ///< max over the samples of | |e(t)| − Emax·sin(πt) |
 };
 
-/// Evaluates blocks on one machine; keeps a warm start for the Newton forward solves.
+/// The working data of one thread's forward solves: the last plate pose, the warm start of the
+/// next Newton solve (blocks follow each other, so it is near). Owned by the caller, one per thread.
+struct EvaluatorWork {
+  std::optional<Rigidd> warm_plate;
+};
+
+/// Evaluates blocks on one machine (immutable: any number of threads, each with its own work).
 class BlockEvaluator {
  public:
   BlockEvaluator(const Kinematics& k, const Vec3d& workpiece_origin_mm) : k_(k), origin_(workpiece_origin_mm) {}
 
   /// The executed tool at t ∈ [0, 1]; nullopt (with `why`) if the forward kinematics fails.
-  std::optional<ExecutedPoint> at(const Block& b, double t, std::string* why = nullptr) const;
+  std::optional<ExecutedPoint> at(const Block& b, double t, EvaluatorWork& work, std::string* why = nullptr) const;
   /// Largest errors over the block: `samples` equal steps, then a golden-section refinement
   /// around the largest sample. Throws std::runtime_error if a pose cannot be solved.
-  BlockError evaluate(const Block& b, int samples = 24) const;
+  BlockError evaluate(const Block& b, EvaluatorWork& work, int samples = 24) const;
 
  private:
   const Kinematics& k_;
   Vec3d origin_;
-  mutable std::optional<Rigidd> warm_;
 };
 
 }  // namespace ncpost::trr

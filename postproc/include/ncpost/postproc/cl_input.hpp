@@ -7,6 +7,10 @@
 #include <memory>
 #include <string>
 
+#include <functional>
+#include <optional>
+
+#include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/postproc/cl_record.hpp"
 
@@ -27,6 +31,14 @@ InputKind input_kind_named(const std::string& name);
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
                                            const cl::ReaderOptions& options, const Machine& machine,
                                            const Setup& setup);
+
+/// The same for a machine whose words are not a serial chain's (the TRR-XY machine): G-code is read
+/// through `word_forward` (gcode_cl_reader.hpp GcodeReaderOptions::word_forward), `machine` lists
+/// its words. `InputKind::rtcp` is a usage error of the caller (std::invalid_argument).
+std::unique_ptr<cl::Reader> open_cl_reader(
+    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options,
+    const Machine& machine, const Setup& setup,
+    const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward);
 
 /// The NC axis words of the machine in chain order, e.g. "XYZAC".
 std::string axis_letters(const Machine& machine);

@@ -14,6 +14,7 @@
 // tool call names "{rpm}", the change waits for the next spindle record and takes its speed
 // (Klartext `TOOL CALL 6 Z S2000`), the spindle then writes `SpindleWords::after_call`.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -93,6 +94,7 @@ struct SpindleWords {
 struct CoolantWords {
   std::vector<std::string> flood{"M8"}, mist{"M7"}, off{"M9"};
 };
+struct TiltedPlaneWords;  // below: the words of `post --tilted-plane`
 
 struct Dialect {
   std::string name;
@@ -117,6 +119,7 @@ struct Dialect {
   std::optional<CompWords> compensation;    ///< none: CUTCOM is refused
   int linear_decimals = 4;         ///< mm
   int angle_decimals = 4;          ///< deg
+  std::shared_ptr<const TiltedPlaneWords> tilted_plane;  ///< none: `post --tilted-plane` writes today's blocks
 };
 
 /// The built-in dialect names, in the order of the help text.
@@ -142,5 +145,20 @@ std::string with_tool(const std::string& words, int tool);
 
 /// `words` with every `placeholder` replaced by `value`.
 std::string with_value(const std::string& words, const std::string& placeholder, const std::string& value);
+
+/// The words of a tilted work plane (3+2, `post --tilted-plane`, dialect file section
+/// [tilted_plane]). `on` defines the plane and turns the rotary axes so that the tool is along its
+/// Z; `off` cancels it. Placeholders: "{x}" "{y}" "{z}" the plane's origin in the program frame
+/// at home (mm), "{a}" "{b}" "{c}" its three angles (deg) in the convention `angles`, "{dir}" +1
+/// when the post's rotary solution has the larger first rotary angle of the two, else -1, and
+/// "{rotary}" the rotary words of that solution ("A30.0000 C45.0000"). docs/conventions.md
+/// "Tilted work planes" gives the frame and the conventions.
+struct TiltedPlaneWords {
+  /// euler_zxz: W_R_F = Rz(a) Rx(b) Rz(c) (Fanuc G68.2 I J K, Haas G268 Q313);
+  /// fixed_xyz: W_R_F = Rz(c) Ry(b) Rx(a), about the fixed X, then Y, then Z (Heidenhain PLANE SPATIAL SPA SPB SPC)
+  enum class Angles { euler_zxz, fixed_xyz } angles = Angles::euler_zxz;
+  std::vector<std::string> on;
+  std::vector<std::string> off;
+};
 
 }  // namespace ncpost

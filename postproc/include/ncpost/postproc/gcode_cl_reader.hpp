@@ -41,12 +41,14 @@
 // opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,
 // looked for in the first 64 KiB; notice). A UTF-8 byte order mark is skipped. Blocks starting with '/' are
 // skipped while `block_delete` is on.
+#include <functional>
 #include <istream>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/postproc/cl_record.hpp"
 
@@ -69,6 +71,11 @@ struct GcodeReaderOptions {
   /// Single-turn planar arcs with the rotary axes still (not under G93) become a cl::Circle and
   /// their end motion, which the post writes as G2/G3; otherwise every arc is expanded into points.
   bool circles = false;
+  /// A machine whose words are not a serial chain's (the TRR-XY machine: X Y U V W, all lengths):
+  /// `machine.axes` lists the words in program order (their letters and limits), and this maps the
+  /// words (AxisPosition slots, mm) to the tool tip and axis in W; nullopt, with `why`, where the
+  /// machine has no pose. Arcs, canned cycles and RTCP programs are then input errors.
+  std::function<std::optional<ToolPoseT<double>>(const AxisPosition& words, std::string* why)> word_forward;
 
   /// Empty when valid, else what is wrong.
   std::string validate() const;

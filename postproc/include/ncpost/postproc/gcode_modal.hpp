@@ -92,6 +92,9 @@ struct BlockEffect {
 class Interpreter {
  public:
   /// `axis_letters`: the axes the program may use (e.g. "XYZAC"); other rotary letters are errors.
+  /// Letters with U, V or W (the TRR-XY machine's "XYUVW") name a machine whose words are all
+  /// lengths and no Cartesian frame: ProgramPoint slot i is then axis_letters[i] (mm), other axis
+  /// letters are errors, and arcs and canned cycles (which need X Y Z) are not supported.
   Interpreter(std::string file_name, std::string axis_letters, bool default_inch = false);
 
   /// Applies one block. `line` is the source text (for error carets). Throws InputError.
@@ -106,6 +109,9 @@ class Interpreter {
 
   std::string file_;
   std::string axis_letters_;
+  std::array<char, 6> slots_{'X', 'Y', 'Z', 'A', 'B', 'C'};  ///< the letter of each ProgramPoint slot ('\0': none)
+  std::array<bool, 6> slot_angle_{false, false, false, true, true, true};  ///< degrees in the program, rad inside
+  bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
   ModalState state_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;

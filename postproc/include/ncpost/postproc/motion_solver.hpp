@@ -3,6 +3,7 @@
 // How the post turns a CL point into axis commands, and how it re-executes commands: the
 // nominal machine (closed-form inverse kinematics), or an actual machine with identified errors
 // (plugged in by `post --model`). Frames: CL in W (mm, unit axis), commands in mm and rad.
+#include <array>
 #include <optional>
 
 #include "ncpost/kinematics/forward.hpp"
@@ -15,6 +16,32 @@ namespace ncpost {
 struct SolveFigures {
   double uncompensated_tip_mm = -1.0;
   double residual_mm = -1.0;
+};
+
+/// The NC words of a solver's commands: AxisPosition slot i (operator[]) is the word `letters[i]`,
+/// an angle (rad inside, degrees in the program) where `angle[i]`, else a length (mm). Serial
+/// machines: X Y Z and their rotary axes; the TRR-XY machine: X Y U V W, all lengths. Read once
+/// per post (not per point).
+struct CommandWords {
+  int count = 5;
+  std::array<char, 5> letters{'X', 'Y', 'Z', 'A', 'B'};
+  std::array<bool, 5> angle{false, false, false, true, true};
+  int rotary_count = 2;  ///< how many words are angles (slots 3 and 4 on a serial machine)
+  /// True for a serial chain (Machine, closed-form inverse): with_rotary() and the rotary-axis
+  /// strategies of the post (branch changes, native arcs and cycles, cutter compensation) apply.
+  bool serial = true;
+
+  /// The words of a serial machine (X Y Z, then its rotary axes).
+  static CommandWords of(const Machine& m) {
+    CommandWords w;
+    w.count = static_cast<int>(m.axes.size());
+    for (int i = 0; i < w.count && i < 5; ++i) {
+      w.letters[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].letter;
+      w.angle[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].is_rotary();
+    }
+    w.rotary_count = m.rotary_count();
+    return w;
+  }
 };
 
 class MotionSolver {
@@ -40,6 +67,8 @@ class MotionSolver {
   /// Where the tool is at the commands q (tip and axis in W) on the machine the program is for.
   virtual ToolPoseT<double> execute(const AxisPosition& q) const = 0;
   virtual const Machine& machine() const = 0;
+  /// The NC words of the commands (default: those of machine(), a serial chain).
+  virtual CommandWords words() const { return CommandWords::of(machine()); }
   /// Called once a block to the commands q is written: machines with state (reversal) follow it.
   virtual void advance(const AxisPosition& /*q*/) const {}
   /// Before a feed block from `from` to `to`: commands that take up the reversal play of the axes

@@ -4,6 +4,7 @@
 // dialect (dialect.hpp: motion and feed words, modal or not, block numbers, arc, cycle, spindle
 // and coolant words). Values arrive in output units (mm, deg) and are rounded to the dialect's
 // decimals here; `rounded()` gives the values the control will see.
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -86,6 +87,14 @@ class NcWriter {
   void end_cycle();
   bool cycle_active() const { return active_cycle_.has_value(); }
   void end_program();
+  /// Writes the blocks that define a tilted work plane (`on`) or cancel it (tilted_plane.hpp). In
+  /// the plane, motion blocks carry X Y Z only, in the plane's coordinates (the first one all three);
+  /// after it, the next motion writes every axis word.
+  void tilted_plane(const std::vector<std::string>& blocks, bool on);
+  bool in_tilted_plane() const { return tilted_; }
+  /// `value` as a word value of `axis` (0-2 linear, else angle): rounded, with the dialect's
+  /// decimals (and '+' in Klartext).
+  std::string word_value(int axis, double value) const;
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).
   void flush();
 
@@ -93,6 +102,7 @@ class NcWriter {
   double rounded(int axis, double value) const;
   std::size_t blocks_written() const { return blocks_; }
   const Dialect& dialect() const { return dialect_; }
+  const std::string& letters() const { return letters_; }
 
  private:
   void start_line();
@@ -104,6 +114,8 @@ class NcWriter {
   std::string rpm_text(double rpm) const;
   /// The feed-per-minute word if another feed mode is in force.
   void per_minute_mode();
+  /// The axis words a motion block may carry: X Y Z only in a tilted plane.
+  std::size_t word_count() const { return tilted_ ? std::min<std::size_t>(3, letters_.size()) : letters_.size(); }
 
   AtomicFile& out_;
   Dialect dialect_;
@@ -121,6 +133,7 @@ class NcWriter {
   std::string program_name_;
   std::optional<NcCycle> active_cycle_;
   double cycle_return_z_ = 0.0;  ///< the level the active cycle returns to (rounded)
+  bool tilted_ = false;          ///< in a tilted work plane: X Y Z words only
 };
 
 }  // namespace ncpost

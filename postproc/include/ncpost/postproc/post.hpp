@@ -27,6 +27,15 @@ struct SolvedPoint {
   std::optional<ToolPoseT<double>> executed = std::nullopt;
 };
 
+/// A motion block as written: its CL segment and the commands the control reads at its ends
+/// (rounded to the dialect's decimals), for PostOptions::on_block.
+struct WrittenBlock {
+  int line = 0;  ///< the CL line it comes from
+  bool rapid = false;
+  ClPoint from_cl, to_cl;
+  AxisPosition from, to;
+};
+
 /// Splits the block (from, to) into points ending with `to`'s; given by `--tolerance`.
 using Subdivider = std::function<std::vector<SolvedPoint>(const SolvedPoint& from, const SolvedPoint& to)>;
 
@@ -45,6 +54,12 @@ struct PostOptions {
   /// when it is lower, everything else in the other block — the tool never descends while it
   /// travels or turns. Z is that of the program frame (M, or W under RTCP).
   bool order_rapids = true;
+  /// Cut rapid moves to the tolerance too (`subdivide`): machines whose control interpolates rapids
+  /// in axis space far from the straight line (the TRR-XY sliders), where the rapid would not clear.
+  bool subdivide_rapids = false;
+  /// After a tool call, the dialect's tool-length block (G43 H..): off for machines whose tool length
+  /// is part of the kinematics (the TRR-XY `tool_offset`), with no Z word to compensate.
+  bool tool_length_on_change = true;
   /// Machines with reversal (`--model` with `reversal:` terms): before a feed block that reverses
   /// an axis, a block that moves only the commands through the play (the tool stands still), so the
   /// block itself runs without lag. On with `--tolerance` (the lag would otherwise bow the tip by
@@ -63,9 +78,17 @@ struct PostOptions {
   /// 2: other threads read the CL records and solve their motions ahead (solving only for a
   /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
   int threads = 1;
+  /// `--tilted-plane`: a run of motions with a constant tool axis other than +Z of W, opened by a
+  /// rapid (or the first motion), is written in a tilted work plane (the dialect's [tilted_plane]
+  /// words, tilted_plane.hpp) with X Y Z in the plane's frame; simultaneous motions stay as they
+  /// are. Machine-axis programs on the nominal machine only (not with `rtcp`).
+  bool tilted_plane = false;
   bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
   /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
   std::function<void(int line, double contour_mm)> on_verified;
+  /// Called for every written motion block that starts from a known position (rapids included;
+  /// not arcs and cycle blocks, which the control interpolates itself): `preview` on the TRR-XY machine.
+  std::function<void(const WrittenBlock& block)> on_block;
 };
 
 struct PostSummary {
@@ -74,6 +97,7 @@ struct PostSummary {
   std::size_t rapid_splits = 0;  ///< rapid moves written in two blocks (order_rapids)
   std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
   std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
+  std::size_t tilted_planes = 0;  ///< tilted work planes written (`tilted_plane`)
   std::vector<std::string> notices;
   VerifyReport verify;
 };

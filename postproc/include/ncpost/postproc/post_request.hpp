@@ -29,6 +29,7 @@
 #include "ncpost/compensation/error_parameters.hpp"
 #include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/kinematics/machine.hpp"
+#include "ncpost/kinematics/trr_xy_geometry.hpp"
 #include "ncpost/postproc/cl_input.hpp"
 #include "ncpost/postproc/cl_record.hpp"
 #include "ncpost/postproc/dialect.hpp"
@@ -47,9 +48,20 @@ struct PostProgress {
   std::function<void()> measured;                      ///< the "before" is measured
 };
 
+/// A TRR-XY job (docs/trr-xy.md): the machine, and the errors of `--model` / `--verify-on`.
+struct TrrJob {
+  trr::Machine machine;
+  std::optional<trr::Errors> model;      ///< the program compensates these (the machine of `--model`)
+  std::optional<trr::Errors> verify_on;  ///< re-executed on this machine instead
+};
+
 struct PostRequest {
   // the job
-  Machine machine;              ///< a serial machine (load_machine); TRR-XY machines: trr_post.hpp
+  Machine machine;              ///< a serial machine (load_machine); unused with `trr`
+  /// A TRR-XY machine instead of the serial one: the same post (trr_solver.hpp), with the words
+  /// X Y U V W; `model`/`verify_on` are then unused (TrrJob has its own), as are the tool length,
+  /// RTCP and the nonlinear method (adaptive cutting on the TRR-XY kinematics).
+  std::optional<TrrJob> trr;
   std::string machine_source;   ///< where it came from (the machine file), named in the program header
   Setup setup;                  ///< workpiece origin and tool length
   // the input
@@ -69,6 +81,9 @@ struct PostRequest {
   // the program
   Dialect dialect = dialect_named("fanuc");
   bool rtcp = false;            ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
+  /// 3+2 runs in tilted work planes (PostOptions::tilted_plane; the dialect's [tilted_plane]);
+  /// not with `rtcp` nor `model` (the control maps the plane's coordinates on its nominal kinematics).
+  bool tilted_plane = false;
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
   double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
   int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "ncpost/postproc/motion_solver.hpp"
+#include "ncpost/postproc/tilted_plane.hpp"
 
 namespace ncpost {
 
@@ -24,6 +25,14 @@ struct VerifyReport {
 /// golden-section search.
 double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples = 24);
+
+/// The commands the control executes for the words X Y Z `xyz_F` (as written) of a block in the
+/// tilted plane `plane` (its words as written): the plane's transform into the program frame at
+/// home P, into W (W = P - `home_offset_mm`), then the machine with the rotary axes at
+/// `rotary_rad` (where the control turned them: the tool along the plane's Z). verify_block of two
+/// such commands measures the block as the control runs it.
+AxisPosition executed_in_plane(const MotionSolver& solver, const TiltedPlane& plane, const Vec3d& home_offset_mm,
+                               const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F);
 
 /// Distance of `p` from the segment a-b.
 double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b);
