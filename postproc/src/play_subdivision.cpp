@@ -16,12 +16,19 @@ constexpr int kMaxStretches = 64;
 /// Where an axis stands counts as moved beyond this (the IK's own tolerances: mm, rad).
 double still_within(int axis) { return axis < 3 ? ActualSolver::kPostTipToleranceMm : ActualSolver::kPostAxisToleranceRad; }
 
+/// A move of an axis shows which way it goes beyond this: one step of the NC words, at least the
+/// IK's tolerance (mm, rad).
+double direction_shown_beyond(int axis, const WordSteps& steps) {
+  return std::max(still_within(axis), axis < 3 ? steps.linear_mm : steps.rotary_rad);
+}
+
 /// The commands with every axis with reversal whose first move (standing at `stands`, going where
-/// the first node that moves it puts it) starts on the other side of its play than `command`
-/// stands: that axis's command moved to the edge of the band the move runs on. nullopt when no
-/// axis needs it.
+/// the first node that moves it beyond `direction_shown_beyond` puts it) starts on the other side
+/// of its play than `command` stands: that axis's command moved to the edge of the band the move
+/// runs on. nullopt when no axis needs it.
 std::optional<AxisPosition> take_up_before(const ActualSolver& actual, const AxisPosition& command,
-                                           const AxisPosition& stands, const std::vector<nonlinear::BlockNode>& nodes) {
+                                           const AxisPosition& stands, const std::vector<nonlinear::BlockNode>& nodes,
+                                           const WordSteps& steps) {
   const comp::MachineModel& model = actual.model();
   AxisPosition q = command;
   bool any = false;
@@ -29,12 +36,13 @@ std::optional<AxisPosition> take_up_before(const ActualSolver& actual, const Axi
   for (int a = 0; a < n; ++a) {
     const int p = model.layout().reversal_of(a);
     if (p < 0) continue;
+    const double shown = direction_shown_beyond(a, steps);
     double move = 0.0;
     for (const auto& node : nodes) {
       move = actual.stands_after(node.q, stands)[a] - stands[a];
-      if (std::abs(move) > still_within(a)) break;
+      if (std::abs(move) > shown) break;
     }
-    if (std::abs(move) <= still_within(a)) continue;
+    if (std::abs(move) <= shown) continue;
     const double band = model.values()[static_cast<std::size_t>(p)];
     const double lo = std::min(0.0, band), hi = std::max(0.0, band);
     const double edge = stands[a] - (move > 0.0 ? lo : hi);  // rising: actual = command + lo
@@ -65,7 +73,8 @@ bool same_commands(const AxisPosition& a, const AxisPosition& b) {
 
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
                                              const SolvedPoint& from, const SolvedPoint& to,
-                                             const nonlinear::CompensationOptions& options, std::string& failure) {
+                                             const nonlinear::CompensationOptions& options, const WordSteps& steps,
+                                             std::string& failure) {
   std::vector<SolvedPoint> out;
   std::optional<AxisPosition> stands = actual.stands();
   SolvedPoint cur{from.cl, from.q};
@@ -93,7 +102,7 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
       }
       probes.push_back({1.0, to.cl, end});
       taken_up = true;
-      if (auto q = take_up_before(actual, cur.q, *stands, probes)) {
+      if (auto q = take_up_before(actual, cur.q, *stands, probes, steps)) {
         cur = {cur.cl, *q};
         out.push_back(cur);
         continue;  // the stretch again from the taken-up commands

@@ -129,7 +129,8 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
     auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
     if (actual && actual->model().has_reversal() && c.method == nonlinear::Method::adaptive) {
       std::string failure;
-      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, failure);
+      const WordSteps steps{std::pow(10.0, -linear), deg_to_rad(std::pow(10.0, -angle))};
+      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, steps, failure);
       if (!failure.empty()) throw Infeasible(failure);
       return points;
     }

@@ -7,11 +7,21 @@
 // caller's solver (nominal IK, or the IK of the actual machine under a model), with continuity from
 // the previous node. Every output block is re-executed and measured, so the result is verified.
 //
+// The error model's own bow (`model_bow_mm`, on the machine of a model whose errors vary along
+// the axes: component error functions, tables, reversal): the actual minus the nominal executed
+// tip, d(t), is what compensating the block's end points corrects exactly at the ends only;
+// inside the block it leaves d(t) away from the chord of d(0), d(1). Across the CL segment
+// (along it the tip is only early or late) that is sampled at t = k/8 and bounded by its own
+// bound, tighter than the tolerance: a long move of a three-axis machine has no other bow, and
+// the straightness and angular errors of its axes bend it by µm over a few hundred mm. A piece
+// passes when both its error and its model bow are within their bounds; `need` below is the
+// larger ratio of the two.
+//
 // Number and placement of the nodes (the bow of a block falls about as 1/n² with n pieces):
-//   1. n = ceil(sqrt(E / tolerance)) pieces of equal parameter;
-//   2. if some piece fails, its measured errors e_k give the local density; n' =
-//      ceil(Σ sqrt(e_k / tolerance)) pieces placed at equal increments of the cumulative
-//      Σ sqrt(e_k) (equidistribution), tried once;
+//   1. n = ceil(sqrt(need)) pieces of equal parameter (need = E / tolerance without a model bow);
+//   2. if some piece fails, its measured needs give the local density; n' =
+//      ceil(Σ sqrt(need_k)) pieces placed at equal increments of the cumulative
+//      Σ sqrt(need_k) (equidistribution), tried once;
 //   3. pieces that still fail are cut again the same way (recursively, `max_depth`).
 // Cost: blocks whose cheap upper bound (nonlinear_bound.hpp) is within `screen_fraction` of the
 // tolerance are emitted as they are without the exact maximisation (`SplitBlock::screened`); a
@@ -32,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -52,11 +63,13 @@ struct AdaptiveOptions {
   double piece_screen_fraction = 0.9;   ///< the same for output pieces (0: always exact)
   double estimate_factor = 2.0;         ///< mid-point deviation above this × tolerance: no exact input
                                         ///< error (0: always exact); `input_error_mm` is then that estimate
+  double model_bow_mm = 0.0;            ///< bound on the error model's own bow across the segment (mm;
+                                        ///< 0: none, only the tolerance; rigid chains have none)
   NonlinearErrorOptions error = fast_error_options();
   bool valid() const {
     return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && screen_fraction >= 0 && screen_fraction <= 1 &&
            piece_screen_fraction >= 0 && piece_screen_fraction <= 1 && estimate_factor >= 0 &&
-           error.valid();
+           model_bow_mm >= 0 && error.valid();
   }
 };
 
@@ -70,6 +83,29 @@ struct NominalSolver {
   }
 };
 
+/// The error model's own bow of a block: the largest distance, across the CL segment, of the
+/// actual minus the nominal executed tip from the chord of its values at the block's ends, at
+/// t = k/8 (mm, W).
+template <class Errors>
+double model_bow_mm(const Machine& machine, const Setup& setup, const ClBlock& block, const Errors& errors) {
+  const ExecutedBlock<Errors> actual(machine, setup, block, errors);
+  const ExecutedBlock<NominalErrors> nominal(machine, setup, block);
+  auto d = [&](double t) {
+    const AxisPosition q = lerp(block.from, block.to, t);
+    return Vec3d(actual.pose_at(q).tip_mm - nominal.pose_at(q).tip_mm);
+  };
+  const Vec3d d0 = d(0.0), d1 = d(1.0);
+  const Vec3d along = block.end.tip_mm - block.start.tip_mm;
+  const Vec3d u = along.norm() > 0.0 ? Vec3d(along.normalized()) : Vec3d::Zero();
+  double bow = 0.0;
+  for (int k = 1; k < 8; ++k) {
+    const double t = k / 8.0;
+    const Vec3d off = d(t) - ((1.0 - t) * d0 + t * d1);
+    bow = std::max(bow, (off - off.dot(u) * u).norm());
+  }
+  return bow;
+}
+
 namespace detail {
 
 template <class Errors, class Solver> class Subdivider {
@@ -78,6 +114,7 @@ template <class Errors, class Solver> class Subdivider {
       : machine_(m), setup_(s), block_(b), errors_(e), solver_(solver), options_(o) {
     const double travel = (b.to.rotary_rad - b.from.rotary_rad).cwiseAbs().maxCoeff();
     max_step_ = travel + o.max_rotary_step_rad;
+    bow_bounded_ = o.model_bow_mm > 0.0 && !rigid_chain(e);
   }
 
   SplitBlock run() {
@@ -85,7 +122,8 @@ template <class Errors, class Solver> class Subdivider {
     if (options_.screen_fraction > 0) {
       const NonlinearBound bound =
           nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block_, errors_), machine_, setup_);
-      if (bound.error_mm <= options_.screen_fraction * options_.tolerance_mm) {
+      if (bound.error_mm <= options_.screen_fraction * options_.tolerance_mm &&
+          bow_within(bound.error_mm, block_.start, block_.from, block_.end, block_.to) <= options_.model_bow_mm) {
         out.nodes.push_back({1.0, block_.end, block_.to});
         out.input_error_mm = out.max_error_mm = bound.error_mm;
         out.max_orientation_rad = bound.orientation_rad;
@@ -104,8 +142,9 @@ template <class Errors, class Solver> class Subdivider {
     }
     if (e.max_error_mm == 0.0) e = exact_error(block_.start, block_.from, block_.end, block_.to);
     out.input_error_mm = e.max_error_mm;
-    if (e.max_error_mm > options_.tolerance_mm) keep_rotary_ = !branch_consistent();
-    Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e};
+    Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e,
+                bow(block_.start, block_.from, block_.end, block_.to)};
+    if (need(whole) > 1.0) keep_rotary_ = !branch_consistent();
     refine(whole, 0, out);
     out.rotary_kept_nodes = rotary_kept_;
     return out;
@@ -120,26 +159,52 @@ template <class Errors, class Solver> class Subdivider {
     ClPoint cb;
     AxisPosition qb;
     NonlinearError error;
+    double bow_mm = 0.0;  ///< the model's own bow (0 when not bounded)
   };
+
+  /// The model's own bow of a piece when it is bounded, else 0.
+  double bow(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
+    return bow_bounded_ ? model_bow_mm(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_) : 0.0;
+  }
+
+  /// The same, given the piece's upper bound (nonlinear_bound.hpp; it covers the chord deviation
+  /// of the actual executed tip, hence the model's bow): that bound when it is already within the
+  /// model bow's bound (the sampling is skipped: dense paths), else the sampled bow.
+  double bow_within(double bound_mm, const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb,
+                    const AxisPosition& qb) const {
+    if (!bow_bounded_) return 0.0;
+    return bound_mm <= options_.model_bow_mm ? bound_mm : bow(ca, qa, cb, qb);
+  }
+
+  /// How far a piece is beyond its bounds: the larger of error / tolerance and bow / model bound
+  /// (<= 1: within both).
+  double need(const Piece& p) const {
+    const double n = p.error.max_error_mm / options_.tolerance_mm;
+    return bow_bounded_ ? std::max(n, p.bow_mm / options_.model_bow_mm) : n;
+  }
 
   NonlinearError exact_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
     return nonlinear_error(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_, options_.error);
   }
 
-  /// The piece's error: its upper bound when that is within `piece_screen_fraction` of the
-  /// tolerance, else the exact error.
-  NonlinearError piece_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
+  /// The piece: its error is its upper bound when that is within `piece_screen_fraction` of the
+  /// tolerance, else the exact error; its model bow as `bow_within`.
+  Piece piece(double ta, const ClPoint& ca, const AxisPosition& qa, double tb, const ClPoint& cb,
+              const AxisPosition& qb) const {
+    Piece p{ta, ca, qa, tb, cb, qb, {}, 0.0};
+    double bound_mm = std::numeric_limits<double>::infinity();
     if (options_.piece_screen_fraction > 0) {
-      const ClBlock piece{ca, cb, qa, qb};
-      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, piece, errors_), machine_, setup_);
+      const ClBlock block{ca, cb, qa, qb};
+      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block, errors_), machine_, setup_);
+      bound_mm = bound.error_mm;
       if (bound.error_mm <= options_.piece_screen_fraction * options_.tolerance_mm) {
-        NonlinearError e;
-        e.max_error_mm = bound.error_mm;
-        e.max_orientation_rad = bound.orientation_rad;
-        return e;
+        p.error.max_error_mm = bound.error_mm;
+        p.error.max_orientation_rad = bound.orientation_rad;
       }
     }
-    return exact_error(ca, qa, cb, qb);
+    if (!(bound_mm <= options_.piece_screen_fraction * options_.tolerance_mm)) p.error = exact_error(ca, qa, cb, qb);
+    p.bow_mm = bow_within(bound_mm, ca, qa, cb, qb);
+    return p;
   }
 
   void emit(const Piece& p, SplitBlock& out) const {
@@ -171,7 +236,7 @@ template <class Errors, class Solver> class Subdivider {
           qb = *kept;
         }
       }
-      pieces.push_back({ta, ca, qa, tb, cb, qb, piece_error(ca, qa, cb, qb)});
+      pieces.push_back(piece(ta, ca, qa, tb, cb, qb));
       ta = tb;
       ca = cb;
       qa = qb;
@@ -208,36 +273,40 @@ template <class Errors, class Solver> class Subdivider {
     return q;
   }
 
-  static int failures(const std::vector<Piece>& pieces, double tolerance) {
-    return static_cast<int>(std::count_if(pieces.begin(), pieces.end(),
-                                           [&](const Piece& q) { return q.error.max_error_mm > tolerance; }));
+  int failures(const std::vector<Piece>& pieces) const {
+    return static_cast<int>(std::count_if(pieces.begin(), pieces.end(), [&](const Piece& q) { return need(q) > 1.0; }));
   }
 
   void refine(const Piece& p, int depth, SplitBlock& out) {
     const double tol = options_.tolerance_mm;
     if (!out.ok()) return;
-    if (p.error.max_error_mm <= tol) return emit(p, out);
+    if (need(p) <= 1.0) return emit(p, out);
     if (depth > options_.max_depth || out.output_blocks() >= options_.max_blocks) {
-      out.failure = fmt::format("tolerance {} mm not reached after {} levels of subdivision (error {:.4g} mm at t = {:.4f})",
-                                tol, depth, p.error.max_error_mm, p.ta + p.error.at_t * (p.tb - p.ta));
+      if (p.error.max_error_mm > tol)
+        out.failure = fmt::format("tolerance {} mm not reached after {} levels of subdivision (error {:.4g} mm at t = {:.4f})",
+                                  tol, depth, p.error.max_error_mm, p.ta + p.error.at_t * (p.tb - p.ta));
+      else
+        out.failure = fmt::format("the error model's own bow {:.4g} mm (bound {} mm) not reached after {} levels of "
+                                  "subdivision (t = {:.4f} to {:.4f})",
+                                  p.bow_mm, options_.model_bow_mm, depth, p.ta, p.tb);
       return;
     }
     // 1. equal parameter
-    const int n = std::max(2, static_cast<int>(std::ceil(std::sqrt(p.error.max_error_mm / tol))));
+    const int n = std::max(2, static_cast<int>(std::ceil(std::sqrt(need(p)))));
     std::vector<double> cuts;
     for (int k = 1; k < n; ++k) cuts.push_back(p.ta + (p.tb - p.ta) * k / n);
     auto pieces = cut(p, cuts, out.failure);
     if (!pieces) return;
     // 2. equidistribution from the measured errors of the pieces
-    if (failures(*pieces, tol) > 0) {
+    if (failures(*pieces) > 0) {
       std::vector<double> density;
       double total = 0;
       for (const Piece& q : *pieces) {
-        density.push_back(std::sqrt(q.error.max_error_mm / tol));
+        density.push_back(std::sqrt(need(q)));
         total += density.back();
       }
       const int n2 = std::max(n, static_cast<int>(std::ceil(total)));
-      if (n2 < n + failures(*pieces, tol)) {  // only when it can beat cutting the failed pieces
+      if (n2 < n + failures(*pieces)) {  // only when it can beat cutting the failed pieces
         std::vector<double> cuts2;
         double acc = 0;
         std::size_t k = 0;
@@ -249,7 +318,7 @@ template <class Errors, class Solver> class Subdivider {
         }
         std::string failure2;
         auto pieces2 = cut(p, cuts2, failure2);
-        if (pieces2 && n2 + failures(*pieces2, tol) < n + failures(*pieces, tol)) pieces = std::move(pieces2);
+        if (pieces2 && n2 + failures(*pieces2) < n + failures(*pieces)) pieces = std::move(pieces2);
       }
     }
     // 3. recurse on what still fails
@@ -265,6 +334,7 @@ template <class Errors, class Solver> class Subdivider {
   double max_step_ = 0.0;
   mutable int rotary_kept_ = 0;
   bool keep_rotary_ = false;
+  bool bow_bounded_ = false;
 };
 
 }  // namespace detail

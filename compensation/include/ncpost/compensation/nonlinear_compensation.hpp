@@ -33,10 +33,17 @@ struct CompensationOptions {
   /// Kept free for rounding the NC words: blocks are cut to tolerance_mm − this (see
   /// `rounding_allowance_mm`), so that the written program, re-executed, meets tolerance_mm.
   double rounding_allowance_mm = 0.0;
-  AdaptiveOptions adaptive;     ///< its tolerance_mm is replaced by the one above
+  /// The error model's own bow inside a block (adaptive_subdivision.hpp: what compensating the
+  /// block's end points leaves between them, on a model whose errors vary along the axes) is
+  /// bounded by this share of the tolerance: compensation is what `--model` asks for, and the
+  /// tolerance is the linearisation's. Cheap: only long moves bow (a few blocks more). 0: the
+  /// tolerance alone.
+  double model_bow_share = 0.2;
+  AdaptiveOptions adaptive;     ///< its tolerance_mm and model_bow_mm are replaced from the above
   HarmonicOptions harmonic;     ///< likewise
   bool valid() const {
-    return tolerance_mm > rounding_allowance_mm && rounding_allowance_mm >= 0 && adaptive.valid() && harmonic.valid();
+    return tolerance_mm > rounding_allowance_mm && rounding_allowance_mm >= 0 && model_bow_share >= 0 &&
+           model_bow_share <= 1 && adaptive.valid() && harmonic.valid();
   }
 };
 
@@ -58,6 +65,7 @@ SplitBlock compensate_block(const Machine& machine, const Setup& setup, const Cl
   }
   AdaptiveOptions o = options.adaptive;
   o.tolerance_mm = options.tolerance_mm - options.rounding_allowance_mm;
+  o.model_bow_mm = options.model_bow_share * o.tolerance_mm;
   return subdivide_adaptive(machine, setup, block, errors, solver, o);
 }
 

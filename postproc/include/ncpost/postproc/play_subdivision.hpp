@@ -13,7 +13,11 @@
 //   1. subdivide the rest of the block from where the axes stand (its end re-solved from there
 //      when the held end is not reached from there);
 //   2. before the first node, take up the play of every axis that must start the other way than
-//      its command stands in the band (a node with the tool still, only the command moves);
+//      its command stands in the band (a node with the tool still, only the command moves). The
+//      way an axis starts is that of its first move beyond one step of the NC words: the axes
+//      stand at the written (rounded) commands, so a target within a step of them lies on either
+//      side by rounding alone — taking up the play toward it would make an axis that barely moves
+//      over the block (a few µm of compensation) cross its whole play while the tool moves;
 //   3. replay the nodes through the dead band in sequence; at the first node whose actual position
 //      differs from the stretch's model (an axis turned back before it), keep the nodes before it,
 //      stand there, and go to 1 with the rest of the block;
@@ -30,10 +34,17 @@
 
 namespace ncpost {
 
+/// One unit of the last decimal of the NC words: linear axes (mm), rotary axes (rad).
+struct WordSteps {
+  double linear_mm = 1e-4;
+  double rotary_rad = 1e-4 * kPi / 180.0;
+};
+
 /// The nodes of the block (from, to) ending with `to`'s commands; empty with `failure` set when a
-/// stretch cannot be compensated.
+/// stretch cannot be compensated. `steps`: the resolution the commands are written with.
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
                                              const SolvedPoint& from, const SolvedPoint& to,
-                                             const nonlinear::CompensationOptions& options, std::string& failure);
+                                             const nonlinear::CompensationOptions& options, const WordSteps& steps,
+                                             std::string& failure);
 
 }  // namespace ncpost
