@@ -122,6 +122,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  if (std::getenv("NCPOST_FUZZ_PRINT_ARGS")) {  // to reproduce a finding with the ncpost binary
+    for (const std::string& a : args) std::fprintf(stderr, "'%s' ", a.c_str());
+    std::fprintf(stderr, "\n");
+    std::string keep = (dir / "..").string() + "/ncpost-fuzz-input";
+    fs::copy_file(input, keep, fs::copy_options::overwrite_existing);
+    fs::copy_file(second, keep + "-second", fs::copy_options::overwrite_existing);
+  }
   const int rc = ncpost::cli::run(static_cast<int>(args.size()), argv.data());
 
   if (rc < 0 || rc > 3) {
