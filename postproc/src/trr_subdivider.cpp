@@ -28,6 +28,10 @@ double rounded(const Dialect& d, int slot, double v) {
   return r == 0.0 ? 0.0 : r;
 }
 
+/// More blocks than this for one CL move: the tolerance is finer than the machine's words can
+/// follow (a tolerance of nanometres split the move 2^24 times); refused instead (exit 3).
+constexpr std::size_t kMaxBlocksPerMove = 4096;
+
 class Cutter {
  public:
   Cutter(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& o)
@@ -55,10 +59,15 @@ class Cutter {
       throw Infeasible(ex.what());
     }
     const double target = o_.split_fraction * o_.tolerance_mm;
-    if (!(e.max_mm > target) || depth >= o_.max_depth) {
+    if (!(e.max_mm > target) || (depth >= o_.max_depth && !(e.max_mm > o_.tolerance_mm))) {
       out.push_back(to);
       return;
     }
+    if (depth >= o_.max_depth || out.size() >= kMaxBlocksPerMove)
+      throw Infeasible(fmt::format(
+          "the move cannot be cut within the tolerance {:g} mm: after {} levels of subdivision ({} blocks so far) a "
+          "block still errs by {:.3g} mm (the words' resolution limits what the machine can follow): raise --tolerance",
+          o_.tolerance_mm, depth, out.size(), e.max_mm));
     const int pieces = std::clamp(static_cast<int>(std::ceil(std::sqrt(e.max_mm / target))), 2, 64);
     SolvedPoint start = from;
     for (int i = 1; i < pieces; ++i) {

@@ -202,6 +202,15 @@ TEST_CASE("a TRR-XY model for another machine, or with an implausible value, is 
   CHECK(std::ifstream("trr_forced.nc").good());
 }
 
+TEST_CASE("a tolerance finer than the words can follow: exit 3 naming the line, at once (fuzz finding: 2^24 blocks)") {
+  std::string err;
+  CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 1e-9 -o trr_nm.nc " +
+            sample_path(), &err) == 3);
+  CHECK(err.find("the move cannot be cut within the tolerance 1e-09 mm") != std::string::npos);
+  CHECK(err.find("raise --tolerance") != std::string::npos);
+  CHECK_FALSE(std::ifstream("trr_nm.nc").good());
+}
+
 // (drilling cycles are drilled by explicit moves since the common post: trr_pipeline_test.cpp)
 TEST_CASE("CUTCOM on the TRR-XY machine: exit 2 naming the line, no program") {
   std::string err;
