@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     with_model = with_model || std::string(argv[i]) == "model";
     write_only = write_only || std::string(argv[i]) == "write-only";
   }
-  const std::string scenario = std::string(NCPOST_BENCH_SOURCE_DIR) + "/../tests/data/scenarios/public-clean/";
+  const std::string scenario = std::string(NCPOST_BENCH_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
   const Machine m = load_machine(scenario + "machine.toml");
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);
