@@ -7,6 +7,7 @@
 #include <Eigen/SVD>
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -37,6 +38,19 @@ std::vector<std::string> layout_names(const Model& model) {
   for (const auto& h : model.held.names())
     if (std::find(n.begin(), n.end(), h) == n.end()) n.push_back(h);
   return n;
+}
+
+/// The layout with the user's fixed parameters after it, and the value of each: fitted, else
+/// held, else fixed, else 0 (the point the screening and the separation test linearize at).
+std::pair<std::vector<std::string>, std::vector<double>> layout_with_values(const Model& model,
+                                                                            const ErrorParameters& fixed) {
+  std::vector<std::string> names = layout_names(model);
+  for (const auto& f : fixed.names())
+    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
+  std::vector<double> values;
+  for (const auto& n : names)
+    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, fixed.value_or(n, 0.0))));
+  return {std::move(names), std::move(values)};
 }
 
 /// Residual (mm) of a fitted model: fitted values, held values, prior (0) for pinned ones.
@@ -159,12 +173,7 @@ Eigen::MatrixXd range_of(const Eigen::MatrixXd& M) {
 void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
                       const DiagnoseOptions& o, DiagnoseResult& out) {
   if (out.added.empty() || !model.fit.converged) return;
-  std::vector<std::string> names = layout_names(model);
-  for (const auto& f : o.identify.fixed.names())
-    if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
-  std::vector<double> values;
-  for (const auto& n : names)
-    values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+  auto [names, values] = layout_with_values(model, o.identify.fixed);
   std::vector<int> fitted;
   for (std::size_t i = 0; i < names.size(); ++i)
     if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
@@ -323,12 +332,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       break;
     }
     // ---- 1. screening at the current solution
-    std::vector<std::string> names = layout_names(model);
-    for (const auto& f : o.identify.fixed.names())
-      if (std::find(names.begin(), names.end(), f) == names.end()) names.push_back(f);
-    std::vector<double> values;
-    for (const auto& n : names)
-      values.push_back(model.fit.parameters.value_or(n, model.held.value_or(n, o.identify.fixed.value_or(n, 0.0))));
+    auto [names, values] = layout_with_values(model, o.identify.fixed);
     std::vector<int> kept;
     for (std::size_t i = 0; i < model.names.size(); ++i)
       if (model.fit.uncertainty.contains(model.names[i])) kept.push_back(static_cast<int>(i));
