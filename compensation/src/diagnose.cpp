@@ -7,6 +7,7 @@
 #include <Eigen/SVD>
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <tuple>
 #include <utility>
 #include <cmath>
 #include <map>
@@ -173,7 +174,11 @@ Eigen::MatrixXd range_of(const Eigen::MatrixXd& M) {
 void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
                       const DiagnoseOptions& o, DiagnoseResult& out) {
   if (out.added.empty() || !model.fit.converged) return;
-  auto [names, values] = layout_with_values(model, o.identify.fixed);
+  // two named variables, not a structured binding: the lambda below captures names, and
+  // clang 14 (the fuzz build) cannot capture a structured binding
+  std::vector<std::string> names;
+  std::vector<double> values;
+  std::tie(names, values) = layout_with_values(model, o.identify.fixed);
   std::vector<int> fitted;
   for (std::size_t i = 0; i < names.size(); ++i)
     if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
