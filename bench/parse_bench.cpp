@@ -31,7 +31,7 @@
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
-#include "ncpost/postproc/gcode_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/fixed_format.hpp"
 #include "ncpost/postproc/post.hpp"
 
@@ -108,7 +108,7 @@ double seconds_since(Clock::time_point start) {
 Figures lex(const std::string& path) {
   const auto start = Clock::now();
   std::ifstream in(path, std::ios::binary);
-  gcode::LineSource source(in, path);
+  LineSource source(in, path, "a line of G-code");
   gcode::Block block;
   std::string_view line;
   long blocks = 0, words = 0;
