@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -114,11 +115,8 @@ void write_outputs(const PlanArgs& a, const Machine& m, const std::vector<comp::
   fmt::print("NC program -> {}.nc\n", stem);
 }
 
-}  // namespace
-
-void add_plan(CLI::App& app, Action& action) {
-  auto a = std::make_shared<PlanArgs>();
-  CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
+/// The options of `plan` into `a`.
+void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
   sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
   sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head | laser")
       ->required()
@@ -169,6 +167,14 @@ void add_plan(CLI::App& app, Action& action) {
                   "dialect file (README \"Dialect files\"); the plan's commands are rounded to its decimals")
       ->type_name("NAME|PATH")
       ->check(dialect_name_or_path());
+}
+
+}  // namespace
+
+void add_plan(CLI::App& app, Action& action) {
+  auto a = std::make_shared<PlanArgs>();
+  CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
+  add_plan_options(sub, a);
   sub->callback([&action, a] {
     action = [a] {
       {  // before anything is computed; the per-set CSV names are checked again once known
