@@ -52,13 +52,134 @@ std::string known_kinds() {
   return s;
 }
 
+/// A tap's feed per revolution and its pitch differ by more than this fraction: refused.
+constexpr double kPitchFeedRelTol = 1e-3;
+
+/// Throws the InputError of the statement (column 0: the statement's).
+struct Fail {
+  const AptStatement& st;
+  const AptCycleContext& ctx;
+  const std::string& text;
+  [[noreturn]] void operator()(int column, const std::string& what) const {
+    throw InputError({ctx.file, st.where.line, column > 0 ? column : st.where.column}, what, text);
+  }
+};
+
+/// The parameter values of a CYCLE statement, in mm (feeds in mm/min or mm/rev), as given.
+struct CycleParams {
+  std::optional<double> fedto, depth, rapto, clear, feed, first_peck, sub_peck, step, tpi, pitch;
+};
+
+/// The parameters from args[i] on (word and value, or classic APT positional depth and clearance);
+/// RTRCTO, DWELL and the feed mode go straight into `c`.
+CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::size_t i, double u, const Fail& fail,
+                        Cycle& c) {
+  CycleParams p;
+  int positional = 0;
+  while (i < args.size()) {
+    const auto& a = args[i];
+    if (a.is_number) {
+      // classic APT / CATIA: CYCLE/DRILL,depth,clearance,MMPM,f — numbers without their word
+      if (positional == 0) p.depth = a.number * u;
+      else if (positional == 1) p.clear = a.number * u;
+      else fail(a.column, fmt::format("a third number without its word ({}) in CYCLE", a.number));
+      ++positional;
+      ++i;
+      continue;
+    }
+    const ParamEntry* e = param_of(a.word);
+    if (!e) fail(a.column, fmt::format("CYCLE word '{}' is not known (known after the kind: FEDTO, RAPTO, RTRCTO, DEPTH, "
+                                       "CLEAR, STEP, INCR, 1STPECK, SUBPECK, MMPM, IPM, MMPR, IPR, DWELL, TPI, PITCH)",
+                                       a.word));
+    if (e->param == Param::rtrcto && i + 1 < args.size() && !args[i + 1].is_number) {
+      // NX: RTRCTO,AUTO — back to the R plane
+      if (args[i + 1].word != "AUTO")
+        fail(args[i + 1].column, fmt::format("RTRCTO,{} is not known (expected a distance or AUTO)", args[i + 1].word));
+      c.retract_mm.reset();
+      i += 2;
+      continue;
+    }
+    if (i + 1 >= args.size() || !args[i + 1].is_number) fail(a.column, fmt::format("CYCLE word {} expects a number", a.word));
+    const double v = args[i + 1].number;
+    switch (e->param) {
+      case Param::fedto: p.fedto = v * u; break;
+      case Param::depth: p.depth = v * u; break;
+      case Param::rapto: p.rapto = v * u; break;
+      case Param::clear: p.clear = v * u; break;
+      case Param::rtrcto: c.retract_mm = v * u; break;
+      case Param::step: p.step = v * u; break;
+      case Param::first_peck: p.first_peck = v * u; break;
+      case Param::sub_peck: p.sub_peck = v * u; break;
+      case Param::mmpm: p.feed = v, c.feed_per_rev = false; break;
+      case Param::ipm: p.feed = v * kMmPerInch, c.feed_per_rev = false; break;
+      case Param::mmpr: p.feed = v, c.feed_per_rev = true; break;
+      case Param::ipr: p.feed = v * kMmPerInch, c.feed_per_rev = true; break;
+      case Param::dwell: c.dwell_s = v; break;
+      case Param::tpi: p.tpi = v; break;
+      case Param::pitch: p.pitch = v * u; break;
+    }
+    i += 2;
+  }
+  return p;
+}
+
+/// The depth below the GOTO point, the R plane above it, the retract plane, dwell and feed.
+void set_levels(const CycleParams& p, const AptCycleContext& ctx, int column, const Fail& fail, Cycle& c) {
+  if (p.fedto && p.depth) fail(column, "CYCLE gives both FEDTO and DEPTH");
+  if (p.fedto) c.depth_mm = ctx.signed_fedto ? -*p.fedto : std::abs(*p.fedto);
+  else if (p.depth) c.depth_mm = *p.depth;
+  else fail(column, "CYCLE without a depth (FEDTO or DEPTH)");
+  if (p.rapto && p.clear) fail(column, "CYCLE gives both RAPTO and CLEAR");
+  c.rapid_to_mm = p.rapto ? *p.rapto : p.clear ? *p.clear : 0.0;
+  if (!(c.rapid_to_mm + c.depth_mm > 0.0))
+    fail(column, fmt::format("CYCLE: the bottom ({:.4f} mm below the hole point) is not below the R plane "
+                             "({:.4f} mm above it)", c.depth_mm, c.rapid_to_mm));
+  if (c.retract_mm && *c.retract_mm < c.rapid_to_mm)
+    fail(column, fmt::format("CYCLE: the retract plane RTRCTO ({:.4f} mm) is below the R plane ({:.4f} mm)",
+                             *c.retract_mm, c.rapid_to_mm));
+  if (c.dwell_s < 0.0) fail(column, "CYCLE: negative DWELL");
+  c.feed = p.feed;
+  if (p.feed && !(*p.feed > 0.0)) fail(column, "CYCLE: the feed must be positive");
+}
+
+/// The peck depths of a pecking cycle (none on the others).
+void set_pecks(const CycleParams& p, const std::string& words, int column, const Fail& fail, Cycle& c) {
+  const bool pecking = c.kind == Cycle::Kind::deep || c.kind == Cycle::Kind::chip_break;
+  if (p.step && p.sub_peck) fail(column, "CYCLE gives both a peck (STEP/INCR) and SUBPECK");
+  c.peck_mm = p.step ? *p.step : p.sub_peck ? *p.sub_peck : p.first_peck ? *p.first_peck : 0.0;
+  c.first_peck_mm = p.first_peck ? *p.first_peck : c.peck_mm;
+  if (pecking && !(c.peck_mm > 0.0 && c.first_peck_mm > 0.0))
+    fail(column, fmt::format("CYCLE/{}: a peck cycle without a positive peck depth (STEP, INCR, 1STPECK, SUBPECK)", words));
+  if (!pecking && (p.step || p.sub_peck || p.first_peck))
+    fail(column, fmt::format("CYCLE/{}: a peck depth on a cycle that does not peck", words));
+}
+
+/// The thread pitch of a tapping cycle (none on the others).
+void set_thread(const CycleParams& p, const std::string& words, int column, const Fail& fail, Cycle& c) {
+  if (p.tpi && p.pitch) fail(column, "CYCLE gives both TPI and PITCH");
+  if (p.tpi) {
+    if (!(*p.tpi > 0.0)) fail(column, "CYCLE: TPI must be positive");
+    c.pitch_mm = kMmPerInch / *p.tpi;
+  } else if (p.pitch) {
+    c.pitch_mm = *p.pitch;
+  }
+  if (c.kind == Cycle::Kind::tap) {
+    if (c.pitch_mm <= 0.0 && !(p.feed && c.feed_per_rev))
+      fail(column, "CYCLE/TAP without the thread pitch (TPI, PITCH, or a feed per revolution MMPR/IPR)");
+    if (c.pitch_mm <= 0.0) c.pitch_mm = *p.feed;  // the feed per revolution is the pitch
+    else if (p.feed && c.feed_per_rev && std::abs(*p.feed - c.pitch_mm) > kPitchFeedRelTol * c.pitch_mm)
+      fail(column, fmt::format("CYCLE/TAP: the feed per revolution {:.4f} mm is not the pitch {:.4f} mm", *p.feed,
+                               c.pitch_mm));
+  } else if (c.pitch_mm > 0.0) {
+    fail(column, fmt::format("CYCLE/{}: a thread pitch on a cycle that does not tap", words));
+  }
+}
+
 }  // namespace
 
 std::optional<Cycle> read_apt_cycle(const AptStatement& st, const AptCycleContext& ctx) {
   const std::string text = "CYCLE/" + st.raw_arguments;
-  auto fail = [&](int column, const std::string& what) -> void {
-    throw InputError({ctx.file, st.where.line, column > 0 ? column : st.where.column}, what, text);
-  };
+  const Fail fail{st, ctx, text};
   const auto& args = st.arguments;
   if (args.empty() || args[0].is_number)
     fail(st.where.column, "CYCLE expects a cycle kind (DRILL, DEEP, TAP, BORE, ...) or OFF first");
@@ -74,17 +195,13 @@ std::optional<Cycle> read_apt_cycle(const AptStatement& st, const AptCycleContex
     words += (words.empty() ? "" : ",") + args[i].word;
     ++i;
   }
-  if (words == "OFF") {
-    Cycle c;
-    c.where = st.where;
-    c.kind = Cycle::Kind::off;
-    c.text = st.raw_arguments;
-    return c;
-  }
-
   Cycle c;
   c.where = st.where;
   c.text = st.raw_arguments;
+  if (words == "OFF") {
+    c.kind = Cycle::Kind::off;
+    return c;
+  }
   c.kind_word = words;
   bool known = false;
   for (const KindEntry& k : kKinds)
@@ -93,102 +210,10 @@ std::optional<Cycle> read_apt_cycle(const AptStatement& st, const AptCycleContex
     fail(args[0].column, fmt::format("cycle kind '{}' is not known (known: {}); its holes would be cut wrong, so "
                                      "the post stops: post the operation as explicit moves or as one of these kinds",
                                      words.empty() ? args[0].word : words, known_kinds()));
-
-  const double u = ctx.mm_per_unit;
-  std::optional<double> fedto, depth, rapto, clear, feed, first_peck, sub_peck, step, tpi, pitch;
-  int positional = 0;
-  while (i < args.size()) {
-    const auto& a = args[i];
-    if (a.is_number) {
-      // classic APT / CATIA: CYCLE/DRILL,depth,clearance,MMPM,f — numbers without their word
-      if (positional == 0) depth = a.number * u;
-      else if (positional == 1) clear = a.number * u;
-      else fail(a.column, fmt::format("a third number without its word ({}) in CYCLE", a.number));
-      ++positional;
-      ++i;
-      continue;
-    }
-    const ParamEntry* p = param_of(a.word);
-    if (!p) fail(a.column, fmt::format("CYCLE word '{}' is not known (known after the kind: FEDTO, RAPTO, RTRCTO, DEPTH, "
-                                       "CLEAR, STEP, INCR, 1STPECK, SUBPECK, MMPM, IPM, MMPR, IPR, DWELL, TPI, PITCH)",
-                                       a.word));
-    if (p->param == Param::rtrcto && i + 1 < args.size() && !args[i + 1].is_number) {
-      // NX: RTRCTO,AUTO — back to the R plane
-      if (args[i + 1].word != "AUTO")
-        fail(args[i + 1].column, fmt::format("RTRCTO,{} is not known (expected a distance or AUTO)", args[i + 1].word));
-      c.retract_mm.reset();
-      i += 2;
-      continue;
-    }
-    if (i + 1 >= args.size() || !args[i + 1].is_number) fail(a.column, fmt::format("CYCLE word {} expects a number", a.word));
-    const double v = args[i + 1].number;
-    switch (p->param) {
-      case Param::fedto: fedto = v * u; break;
-      case Param::depth: depth = v * u; break;
-      case Param::rapto: rapto = v * u; break;
-      case Param::clear: clear = v * u; break;
-      case Param::rtrcto: c.retract_mm = v * u; break;
-      case Param::step: step = v * u; break;
-      case Param::first_peck: first_peck = v * u; break;
-      case Param::sub_peck: sub_peck = v * u; break;
-      case Param::mmpm: feed = v, c.feed_per_rev = false; break;
-      case Param::ipm: feed = v * kMmPerInch, c.feed_per_rev = false; break;
-      case Param::mmpr: feed = v, c.feed_per_rev = true; break;
-      case Param::ipr: feed = v * kMmPerInch, c.feed_per_rev = true; break;
-      case Param::dwell: c.dwell_s = v; break;
-      case Param::tpi: tpi = v; break;
-      case Param::pitch: pitch = v * u; break;
-    }
-    i += 2;
-  }
-
-  // depth below the GOTO point
-  if (fedto && depth) fail(st.where.column, "CYCLE gives both FEDTO and DEPTH");
-  if (fedto) c.depth_mm = ctx.signed_fedto ? -*fedto : std::abs(*fedto);
-  else if (depth) c.depth_mm = *depth;
-  else fail(st.where.column, "CYCLE without a depth (FEDTO or DEPTH)");
-  // the R plane above it
-  if (rapto && clear) fail(st.where.column, "CYCLE gives both RAPTO and CLEAR");
-  c.rapid_to_mm = rapto ? *rapto : clear ? *clear : 0.0;
-  if (!(c.rapid_to_mm + c.depth_mm > 0.0))
-    fail(st.where.column, fmt::format("CYCLE: the bottom ({:.4f} mm below the hole point) is not below the R plane "
-                                      "({:.4f} mm above it)", c.depth_mm, c.rapid_to_mm));
-  if (c.retract_mm && *c.retract_mm < c.rapid_to_mm)
-    fail(st.where.column, fmt::format("CYCLE: the retract plane RTRCTO ({:.4f} mm) is below the R plane ({:.4f} mm)",
-                                      *c.retract_mm, c.rapid_to_mm));
-  if (c.dwell_s < 0.0) fail(st.where.column, "CYCLE: negative DWELL");
-  c.feed = feed;
-  if (feed && !(*feed > 0.0)) fail(st.where.column, "CYCLE: the feed must be positive");
-
-  // pecks
-  const bool pecking = c.kind == Cycle::Kind::deep || c.kind == Cycle::Kind::chip_break;
-  if (step && sub_peck) fail(st.where.column, "CYCLE gives both a peck (STEP/INCR) and SUBPECK");
-  c.peck_mm = step ? *step : sub_peck ? *sub_peck : first_peck ? *first_peck : 0.0;
-  c.first_peck_mm = first_peck ? *first_peck : c.peck_mm;
-  if (pecking && !(c.peck_mm > 0.0 && c.first_peck_mm > 0.0))
-    fail(st.where.column, fmt::format("CYCLE/{}: a peck cycle without a positive peck depth (STEP, INCR, 1STPECK, SUBPECK)",
-                                      words));
-  if (!pecking && (step || sub_peck || first_peck))
-    fail(st.where.column, fmt::format("CYCLE/{}: a peck depth on a cycle that does not peck", words));
-
-  // thread
-  if (tpi && pitch) fail(st.where.column, "CYCLE gives both TPI and PITCH");
-  if (tpi) {
-    if (!(*tpi > 0.0)) fail(st.where.column, "CYCLE: TPI must be positive");
-    c.pitch_mm = kMmPerInch / *tpi;
-  } else if (pitch) {
-    c.pitch_mm = *pitch;
-  }
-  if (c.kind == Cycle::Kind::tap) {
-    if (c.pitch_mm <= 0.0 && !(feed && c.feed_per_rev))
-      fail(st.where.column, "CYCLE/TAP without the thread pitch (TPI, PITCH, or a feed per revolution MMPR/IPR)");
-    if (c.pitch_mm <= 0.0) c.pitch_mm = *feed;  // the feed per revolution is the pitch
-    else if (feed && c.feed_per_rev && std::abs(*feed - c.pitch_mm) > 1e-3 * c.pitch_mm)
-      fail(st.where.column, fmt::format("CYCLE/TAP: the feed per revolution {:.4f} mm is not the pitch {:.4f} mm",
-                                        *feed, c.pitch_mm));
-  } else if (c.pitch_mm > 0.0) {
-    fail(st.where.column, fmt::format("CYCLE/{}: a thread pitch on a cycle that does not tap", words));
-  }
+  const CycleParams p = read_params(args, i, ctx.mm_per_unit, fail, c);
+  set_levels(p, ctx, st.where.column, fail, c);
+  set_pecks(p, words, st.where.column, fail, c);
+  set_thread(p, words, st.where.column, fail, c);
   return c;
 }
 

@@ -310,13 +310,14 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   if (d.name.empty()) throw head.wrong(head.node("name"), "name", "a name");
 
   const Section program(file, root, "program");
-  program.known({"percent_framing", "start", "end"});
+  program.known({"percent_framing", "start", "end", "stop"});
   d.percent_framing = program.boolean("percent_framing");
   d.program_start = program.blocks("start", {"{program}", "{comments}"});
   for (const auto& b : d.program_start)
     if (b != "{comments}" && b.find("{comments}") != std::string::npos)
       throw program.wrong(program.node("start"), "start", "\"{comments}\" as an entry of its own");
   d.program_end = program.blocks("end", {"{program}"});
+  if (program.has("stop")) d.program_stop = program.blocks("stop", {});  // optional: M0 when absent
 
   read_blocks(Section(file, root, "blocks"), d);
   read_motion(Section(file, root, "motion"), d);

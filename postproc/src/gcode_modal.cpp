@@ -16,6 +16,16 @@ namespace {
 constexpr double kMmPerInch = 25.4;
 /// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
 constexpr double kMaxCoordinate = 1e9;
+/// Largest feed, spindle speed and tool number accepted.
+constexpr double kMaxWordValue = 1e9;
+/// Largest offset register D accepted.
+constexpr double kMaxRegister = 1e6;
+/// Largest number of turns P of an arc accepted.
+constexpr double kMaxArcTurns = 1e4;
+/// A G or M number is one with at most one decimal (G43.4) within this slack ...
+constexpr double kCodeDecimalSlack = 1e-6;
+/// ... and at most this value times ten (G or M 9999.9).
+constexpr double kMaxCode10 = 1e5;
 
 /// Throws the InputError of a block.
 struct Fail {
@@ -176,19 +186,51 @@ void Interpreter::notice_once(const std::string& key, int line, int column, cons
   notices_.push_back(fmt::format("{}:{}:{}: {}", file_, line, column, text));
 }
 
+/// One block being applied: where it is (errors, notices) and how to fail on it.
+struct Interpreter::Context {
+  const Block& block;
+  int line_number;
+  Fail fail;
+  cl::Location at(int column) const { return cl::Location{line_number, column}; }
+};
+
+/// The G and M codes of a block by modal group, and a control's units word apart.
+struct Interpreter::Codes {
+  std::array<Code, g_group_count> group{};
+  std::array<bool, g_group_count> in_group{};
+  Code control_units{-1, 0};
+  bool control_inch = false, control_feeds_too = false;
+  Code m_stop{-1, 0}, m_spindle{-1, 0}, m_tool{-1, 0}, m_coolant{-1, 0}, m_rtcp{-1, 0};
+
+  bool in(int g) const { return in_group[static_cast<std::size_t>(g)]; }
+  const Code& of(int g) const { return group[static_cast<std::size_t>(g)]; }
+  bool is(int g, int code10) const { return in(g) && of(g).code10 == code10; }
+};
+
 void Interpreter::apply(const Block& block, int line_number, std::string_view line, BlockEffect& fx) {
   fx.clear();
-  const Fail fail{file_, line_number, line};
-  const auto at = [&](int column) { return cl::Location{line_number, column}; };
+  const Context cx{block, line_number, Fail{file_, line_number, line}};
+  const Words w = read_words(cx);
+  Codes codes;
+  group_g_codes(cx, w, codes);
+  group_m_codes(cx, w, codes, fx);
+  apply_units(cx, codes);
+  apply_feed_spindle_tool(cx, w, codes, fx);
+  apply_cutter_comp(cx, w, codes, fx);
+  apply_modal_settings(cx, w, codes, fx);
+  apply_motion(cx, w, codes, fx);
+  apply_stop(cx, codes, fx);
+}
 
-  // ---- collect the words
+Interpreter::Words Interpreter::read_words(const Context& cx) const {
+  const Fail& fail = cx.fail;
   Words w;
-  for (const Word& word : block.words) {
+  for (const Word& word : cx.block.words) {
     const char L = word.letter;
     if (L == 'G' || L == 'M') {
       const double scaled = word.value * 10.0;
       const double rounded = std::round(scaled);
-      if (word.value < 0.0 || std::abs(scaled - rounded) > 1e-6 || rounded > 1e5)
+      if (word.value < 0.0 || std::abs(scaled - rounded) > kCodeDecimalSlack || rounded > kMaxCode10)
         fail(word.column, fmt::format("expected a {}-code number such as {}, found {}{}", L, L == 'G' ? "1 or 43.4" : "3",
                                       L, word.value));
       const Code code{static_cast<int>(rounded), word.column};
@@ -204,43 +246,48 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     }
     if (L == 'N') continue;
     if (L == 'O') {
-      if (&word != &block.words.front())
+      if (&word != &cx.block.words.front())
         fail(word.column, "an O word (program number) must start its block; O-word control flow is not supported");
       continue;
     }
-    switch (L) {
-      case 'E': fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
-      case 'U': case 'V': case 'W':
-        if (!word_axes_ || axis_letters_.find(L) == std::string::npos)
-          fail(word.column, fmt::format("the {} axis is not supported", L));
-        break;
-      case 'A': case 'B': case 'C':
-        if (axis_letters_.find(L) == std::string::npos)
-          fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
-        break;
-      case 'X': case 'Y': case 'Z':
-        if (word_axes_ && axis_letters_.find(L) == std::string::npos)
-          fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
-        break;
-      case 'D': case 'F': case 'H': case 'I': case 'J': case 'K': case 'L': case 'P': case 'Q': case 'R':
-      case 'S': case 'T':
-        break;
-      default: fail(word.column, fmt::format("unknown word '{}'", L));
-    }
+    check_letter(cx, word);
     if (w.has(L)) fail(word.column, fmt::format("{} appears twice in the block", L));
     const auto i = static_cast<std::size_t>(L - 'A');
     w.present |= 1u << (L - 'A');
     w.value[i] = word.value;
     w.column[i] = word.column;
   }
+  return w;
+}
 
-  // ---- G codes by modal group (control-specific words apart: gcode_control_words.hpp)
+void Interpreter::check_letter(const Context& cx, const Word& word) const {
+  const char L = word.letter;
+  switch (L) {
+    case 'E': cx.fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
+    case 'U': case 'V': case 'W':
+      if (!word_axes_ || axis_letters_.find(L) == std::string::npos)
+        cx.fail(word.column, fmt::format("the {} axis is not supported", L));
+      break;
+    case 'A': case 'B': case 'C':
+      if (axis_letters_.find(L) == std::string::npos)
+        cx.fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
+      break;
+    case 'X': case 'Y': case 'Z':
+      if (word_axes_ && axis_letters_.find(L) == std::string::npos)
+        cx.fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
+      break;
+    case 'D': case 'F': case 'H': case 'I': case 'J': case 'K': case 'L': case 'P': case 'Q': case 'R':
+    case 'S': case 'T':
+      break;
+    default: cx.fail(word.column, fmt::format("unknown word '{}'", L));
+  }
+}
+
+// G codes by modal group (control-specific words apart: gcode_control_words.hpp)
+void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes) {
+  const Fail& fail = cx.fail;
   bool has_axis_words = false;
   for (const char L : slots_) has_axis_words = has_axis_words || (L && w.has(L));
-  Code control_units{-1, 0};
-  bool control_inch = false, control_feeds_too = false;
-  std::array<Code, g_group_count> group{};
-  std::array<bool, g_group_count> in_group{};
   for (int k = 0; k < w.g_count; ++k) {
     const Code c = w.g[static_cast<std::size_t>(k)];
     const auto word_of = [&](char L) { return w.has(L) ? std::optional<double>(w.get(L)) : std::nullopt; };
@@ -250,16 +297,16 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
     if (cw.action != ControlWordAction::none) {
       if (cw.action == ControlWordAction::refuse) fail(c.column, cw.text);
       if (cw.action == ControlWordAction::drop) {
-        notice_once(g_name(c.code10), line_number, c.column, cw.text);
+        notice_once(g_name(c.code10), cx.line_number, c.column, cw.text);
         continue;
       }
       const bool inch = cw.action == ControlWordAction::length_inch || cw.action == ControlWordAction::units_inch;
-      if (control_units.column)
-        fail(c.column, fmt::format("{} and {} both set the units", g_name(control_units.code10), g_name(c.code10)));
-      control_units = c;
-      control_inch = inch;
-      control_feeds_too = cw.action == ControlWordAction::units_inch || cw.action == ControlWordAction::units_mm;
-      if (!cw.text.empty()) notice_once(g_name(c.code10), line_number, c.column, cw.text);
+      if (codes.control_units.column)
+        fail(c.column, fmt::format("{} and {} both set the units", g_name(codes.control_units.code10), g_name(c.code10)));
+      codes.control_units = c;
+      codes.control_inch = inch;
+      codes.control_feeds_too = cw.action == ControlWordAction::units_inch || cw.action == ControlWordAction::units_mm;
+      if (!cw.text.empty()) notice_once(g_name(c.code10), cx.line_number, c.column, cw.text);
       continue;
     }
     const char* why = nullptr;
@@ -269,180 +316,203 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       fail(c.column, fmt::format("{} is not supported", g_name(c.code10)));
     }
     const auto gi = static_cast<std::size_t>(g);
-    if (in_group[gi])
-      fail(c.column, fmt::format("{} and {} are in the same modal group", g_name(group[gi].code10), g_name(c.code10)));
-    in_group[gi] = true;
-    group[gi] = c;
+    if (codes.in_group[gi])
+      fail(c.column, fmt::format("{} and {} are in the same modal group", g_name(codes.group[gi].code10), g_name(c.code10)));
+    codes.in_group[gi] = true;
+    codes.group[gi] = c;
   }
-  const auto g_is = [&](int g, int code10) {
-    return in_group[static_cast<std::size_t>(g)] && group[static_cast<std::size_t>(g)].code10 == code10;
-  };
+}
 
-  // ---- M codes by group
-  Code m_stop{-1, 0}, m_spindle{-1, 0}, m_tool{-1, 0}, m_coolant{-1, 0}, m_rtcp{-1, 0};
+// M codes by group; the ones not acted on are passed through
+void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx) {
   const auto take = [&](Code& slot, const Code& c) {
-    if (slot.code10 >= 0) fail(c.column, fmt::format("M{} and M{} are in the same modal group", slot.code10, c.code10));
+    if (slot.code10 >= 0) cx.fail(c.column, fmt::format("M{} and M{} are in the same modal group", slot.code10, c.code10));
     slot = c;
   };
   for (int k = 0; k < w.m_count; ++k) {
     const Code c = w.m[static_cast<std::size_t>(k)];
     switch (c.code10) {
-      case 0: case 1: case 2: case 30: case 60: take(m_stop, c); break;
-      case 3: case 4: case 5: take(m_spindle, c); break;
-      case 6: take(m_tool, c); break;
-      case 7: case 8: case 9: take(m_coolant, c); break;
-      case 128: case 129: case 428: case 429: take(m_rtcp, c); break;
-      case 97: case 98: case 99: fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
+      case 0: case 1: case 2: case 30: case 60: take(codes.m_stop, c); break;
+      case 3: case 4: case 5: take(codes.m_spindle, c); break;
+      case 6: take(codes.m_tool, c); break;
+      case 7: case 8: case 9: take(codes.m_coolant, c); break;
+      case 128: case 129: case 428: case 429: take(codes.m_rtcp, c); break;
+      case 97: case 98: case 99: cx.fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
       default:
-        fx.after_motion.push_back(cl::Unsupported{at(c.column), fmt::format("M{}", c.code10)});
-        notice_once(fmt::format("M{}", c.code10), line_number, c.column,
+        fx.after_motion.push_back(cl::Unsupported{cx.at(c.column), fmt::format("M{}", c.code10)});
+        notice_once(fmt::format("M{}", c.code10), cx.line_number, c.column,
                     fmt::format("M{} is not acted on; passed through as a comment", c.code10));
     }
   }
+}
 
+// units first, so that every length word of the block is read in them
+void Interpreter::apply_units(const Context& cx, const Codes& codes) {
   ModalState& st = state_;
-  // units first, so that every length word of the block is read in them
-  if (control_units.column && in_group[g_units])
-    fail(control_units.column, fmt::format("{} and {} both set the units", g_name(group[g_units].code10),
-                                           g_name(control_units.code10)));
-  if (g_is(g_units, 200)) st.inch = st.feed_inch = true;
-  if (g_is(g_units, 210)) st.inch = st.feed_inch = false;
-  if (control_units.column) {
-    st.inch = control_inch;
-    if (control_feeds_too) st.feed_inch = control_inch;
+  if (codes.control_units.column && codes.in(g_units))
+    cx.fail(codes.control_units.column, fmt::format("{} and {} both set the units", g_name(codes.of(g_units).code10),
+                                                    g_name(codes.control_units.code10)));
+  if (codes.is(g_units, 200)) st.inch = st.feed_inch = true;
+  if (codes.is(g_units, 210)) st.inch = st.feed_inch = false;
+  if (codes.control_units.column) {
+    st.inch = codes.control_inch;
+    if (codes.control_feeds_too) st.feed_inch = codes.control_inch;
   }
-  if (in_group[g_units] || control_units.column) st.units_programmed = true;
-  const double length_scale = st.inch ? kMmPerInch : 1.0;
-  const double feed_length_scale = st.feed_inch ? kMmPerInch : 1.0;
+  if (codes.in(g_units) || codes.control_units.column) st.units_programmed = true;
+}
 
-  // ---- feed mode and F
-  if (in_group[g_feed]) {
-    const int c = group[g_feed].code10;
+// feed mode and F; S, T, M6, M3-M5, M7-M9
+void Interpreter::apply_feed_spindle_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  const Fail& fail = cx.fail;
+  if (codes.in(g_feed)) {
+    const int c = codes.of(g_feed).code10;
     st.feed_mode = c == 930 ? FeedMode::inverse_time : c == 940 ? FeedMode::per_minute : FeedMode::per_revolution;
   }
   if (w.has('F')) {
     double f = w.get('F');
-    if (f < 0.0 || f > 1e9) fail(w.col('F'), "expected a feed within 0 .. 1e9");
+    if (f < 0.0 || f > kMaxWordValue) fail(w.col('F'), "expected a feed within 0 .. 1e9");
     if (st.feed_mode != FeedMode::inverse_time) {
-      f *= feed_length_scale;
-      fx.feed = cl::Feed{at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
+      f *= st.feed_inch ? kMmPerInch : 1.0;
+      fx.feed = cl::Feed{cx.at(w.col('F')), f, st.feed_mode == FeedMode::per_revolution};
     }
     st.feed = f;
     if (st.feed_mode != FeedMode::per_revolution) fx.motion_feed = f;  // per-rev feeds live in cl::Feed only
   }
-
-  // ---- S, T, M6, M3-M5, M7-M9
   if (w.has('S')) {
-    if (w.get('S') < 0.0 || w.get('S') > 1e9) fail(w.col('S'), "expected a spindle speed within 0 .. 1e9");
+    if (w.get('S') < 0.0 || w.get('S') > kMaxWordValue) fail(w.col('S'), "expected a spindle speed within 0 .. 1e9");
     st.spindle_rpm = w.get('S');
-    if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{at(w.col('S')), st.spindle, st.spindle_rpm};
+    if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{cx.at(w.col('S')), st.spindle, st.spindle_rpm};
   }
   if (w.has('T')) {
     const double t = w.get('T');
-    if (t < 0.0 || t != std::floor(t) || t > 1e9) fail(w.col('T'), "expected a tool number (an integer >= 0)");
+    if (t < 0.0 || t != std::floor(t) || t > kMaxWordValue) fail(w.col('T'), "expected a tool number (an integer >= 0)");
     st.tool = static_cast<int>(t);
   }
-  if (m_tool.code10 == 6) fx.tool_change = cl::ToolChange{at(m_tool.column), st.tool, std::nullopt};
-  if (m_spindle.code10 >= 0) {
+  if (codes.m_tool.code10 == 6) fx.tool_change = cl::ToolChange{cx.at(codes.m_tool.column), st.tool, std::nullopt};
+  if (codes.m_spindle.code10 >= 0) {
     using D = cl::Spindle::Direction;
-    st.spindle = m_spindle.code10 == 3 ? D::cw : m_spindle.code10 == 4 ? D::ccw : D::off;
-    fx.spindle = cl::Spindle{at(m_spindle.column), st.spindle, st.spindle_rpm};
+    st.spindle = codes.m_spindle.code10 == 3 ? D::cw : codes.m_spindle.code10 == 4 ? D::ccw : D::off;
+    fx.spindle = cl::Spindle{cx.at(codes.m_spindle.column), st.spindle, st.spindle_rpm};
   }
-  if (m_coolant.code10 >= 0) {
-    const int c = m_coolant.code10;
-    fx.coolant = cl::Coolant{at(m_coolant.column), c != 9, c == 7 ? "MIST" : c == 8 ? "FLOOD" : "OFF"};
+  if (codes.m_coolant.code10 >= 0) {
+    const int c = codes.m_coolant.code10;
+    fx.coolant = cl::Coolant{cx.at(codes.m_coolant.column), c != 9, c == 7 ? "MIST" : c == 8 ? "FLOOD" : "OFF"};
   }
+}
 
-  // ---- cutter radius compensation (G40, G41/G42 with D)
-  if (in_group[g_cutter]) {
-    const Code c = group[g_cutter];
-    cl::CutterComp comp;
-    comp.where = at(c.column);
-    comp.side = c.code10 == 410   ? cl::CutterComp::Side::left
-                : c.code10 == 420 ? cl::CutterComp::Side::right
-                                  : cl::CutterComp::Side::off;
-    comp.text = g_name(c.code10);
-    if (w.has('D') && c.code10 != 400) {
-      const double d = w.get('D');
-      if (d < 0.0 || d != std::floor(d) || d > 1e6) fail(w.col('D'), "expected an offset register D (an integer >= 0)");
-      comp.offset_register = static_cast<int>(d);
-      comp.text += fmt::format(" D{}", static_cast<int>(d));
-    }
-    st.cutter = comp.side;
-    fx.cutter_comp = std::move(comp);
+// cutter radius compensation (G40, G41/G42 with D)
+void Interpreter::apply_cutter_comp(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  if (!codes.in(g_cutter)) return;
+  const Code c = codes.of(g_cutter);
+  cl::CutterComp comp;
+  comp.where = cx.at(c.column);
+  comp.side = c.code10 == 410   ? cl::CutterComp::Side::left
+              : c.code10 == 420 ? cl::CutterComp::Side::right
+                                : cl::CutterComp::Side::off;
+  comp.text = g_name(c.code10);
+  if (w.has('D') && c.code10 != 400) {
+    const double d = w.get('D');
+    if (d < 0.0 || d != std::floor(d) || d > kMaxRegister)
+      cx.fail(w.col('D'), "expected an offset register D (an integer >= 0)");
+    comp.offset_register = static_cast<int>(d);
+    comp.text += fmt::format(" D{}", static_cast<int>(d));
   }
+  state_.cutter = comp.side;
+  fx.cutter_comp = std::move(comp);
+}
 
-  // ---- dwell, modal settings, RTCP
-  if (g_is(g_non_modal, 40)) {
-    fx.before_motion.push_back(
-        cl::Unsupported{at(group[g_non_modal].column), fmt::format("G4 P{} (dwell)", w.has('P') ? w.get('P') : 0.0)});
-    notice_once("G4", line_number, group[g_non_modal].column, "G4 (dwell) is passed through as a comment");
+// dwell, plane, tool length and RTCP, work offsets, distance modes, the motion mode and the cycle's words
+void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  const int line_number = cx.line_number;
+  if (codes.is(g_non_modal, 40)) {
+    fx.before_motion.push_back(cl::Unsupported{cx.at(codes.of(g_non_modal).column),
+                                               fmt::format("G4 P{} (dwell)", w.has('P') ? w.get('P') : 0.0)});
+    notice_once("G4", line_number, codes.of(g_non_modal).column, "G4 (dwell) is passed through as a comment");
   }
-  if (in_group[g_plane]) {
-    const int c = group[g_plane].code10;
+  if (codes.in(g_plane)) {
+    const int c = codes.of(g_plane).code10;
     st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
   }
-  if (in_group[g_length]) {
-    const int c = group[g_length].code10;
+  apply_rtcp(cx, codes);
+  if (codes.in(g_coordinates) && codes.of(g_coordinates).code10 != 540)
+    notice_once("work-offset", line_number, codes.of(g_coordinates).column,
+                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
+                            g_name(codes.of(g_coordinates).code10)));
+  if (codes.is(g_dynamic_offset, 2540))
+    notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
+                "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
+  if (codes.in(g_distance)) st.incremental = codes.of(g_distance).code10 == 910;
+  if (codes.in(g_arc_distance)) st.arc_centre_absolute = codes.of(g_arc_distance).code10 == 901;
+  if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
+  apply_motion_mode(codes, fx);
+  if (st.motion == MotionMode::cycle) read_cycle_words(cx, w, codes);
+}
+
+// tool length and RTCP/TCPM: G43.4/G43.5/G234 ... G43/G49, M128/M129, M428/M429, TRAORI/TRAFOOF
+void Interpreter::apply_rtcp(const Context& cx, const Codes& codes) {
+  ModalState& st = state_;
+  if (codes.in(g_length)) {
+    const int c = codes.of(g_length).code10;
     if (c == 434 || c == 435) st.rtcp = Rtcp::g43_4;
     else if (c == 2340) st.rtcp = Rtcp::g234;
     else if (st.rtcp == Rtcp::g43_4 || st.rtcp == Rtcp::g234) st.rtcp = Rtcp::off;  // G43, G43.1, G49
   }
-  if (m_rtcp.code10 == 428) st.rtcp = Rtcp::m428;
-  if (m_rtcp.code10 == 429 && st.rtcp == Rtcp::m428) st.rtcp = Rtcp::off;
-  if (m_rtcp.code10 == 128) st.rtcp = Rtcp::m128;
-  if (m_rtcp.code10 == 129 && st.rtcp == Rtcp::m128) st.rtcp = Rtcp::off;
-  for (const BlockKeyword& k : block.keywords) {
+  if (codes.m_rtcp.code10 == 428) st.rtcp = Rtcp::m428;
+  if (codes.m_rtcp.code10 == 429 && st.rtcp == Rtcp::m428) st.rtcp = Rtcp::off;
+  if (codes.m_rtcp.code10 == 128) st.rtcp = Rtcp::m128;
+  if (codes.m_rtcp.code10 == 129 && st.rtcp == Rtcp::m128) st.rtcp = Rtcp::off;
+  for (const BlockKeyword& k : cx.block.keywords) {
     if (k.keyword == Keyword::traori) st.rtcp = Rtcp::traori;
     if (k.keyword == Keyword::trafoof && st.rtcp == Rtcp::traori) st.rtcp = Rtcp::off;
   }
-  if (in_group[g_coordinates] && group[g_coordinates].code10 != 540)
-    notice_once("work-offset", line_number, group[g_coordinates].column,
-                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
-                            g_name(group[g_coordinates].code10)));
-  if (g_is(g_dynamic_offset, 2540))
-    notice_once("G254", line_number, group[g_dynamic_offset].column,
-                "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
-  if (in_group[g_distance]) st.incremental = group[g_distance].code10 == 910;
-  if (in_group[g_arc_distance]) st.arc_centre_absolute = group[g_arc_distance].code10 == 901;
-  if (in_group[g_return]) st.retract_to_r = group[g_return].code10 == 990;
-  if (in_group[g_motion] && st.motion == MotionMode::cycle &&
-      group[g_motion].code10 != st.cycle.code10)
-    fx.cycle_off = true;  // G80, another motion or another cycle ends this one
-  if (in_group[g_motion]) {
-    const int code = group[g_motion].code10;
-    if (code == 730 || code == 740 || (code >= 810 && code <= 890)) {
-      if (st.motion != MotionMode::cycle || st.cycle.code10 != code) {
-        st.cycle = CycleModal{};
-        st.cycle.code10 = code;
-        st.cycle.initial_z = st.position[2];
-      }
-    }
-    switch (code) {
-      case 0: st.motion = MotionMode::rapid; break;
-      case 10: st.motion = MotionMode::linear; break;
-      case 20: st.motion = MotionMode::arc_cw; break;
-      case 30: st.motion = MotionMode::arc_ccw; break;
-      case 800: st.motion = MotionMode::none; break;
-      default: st.motion = MotionMode::cycle; break;  // G73 G74 G81-G86 G89
-    }
-  }
-  if (st.motion == MotionMode::cycle) {
-    // the cycle's words are modal within it (Z bottom, R plane, Q peck, P dwell)
-    if (st.incremental) fail(group[g_motion].column ? group[g_motion].column : block.column,
-                             "canned cycles under G91 (incremental Z and R) are not supported");
-    if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale;
-    if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale;
-    if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
-    if (w.has('P')) {
-      st.cycle.p_s = w.get('P');
-      notice_once("cycle-P", line_number, w.col('P'), "the dwell P of a canned cycle is read in seconds (RS274NGC)");
-    }
-    if (w.has('L') || w.has('K'))
-      fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
-  }
+}
 
-  // ---- motion
+// the motion group: G0 G1 G2 G3 G80 and the canned cycles (a new cycle starts from where the tool stands)
+void Interpreter::apply_motion_mode(const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  if (!codes.in(g_motion)) return;
+  const int code = codes.of(g_motion).code10;
+  if (st.motion == MotionMode::cycle && code != st.cycle.code10) fx.cycle_off = true;  // G80, another motion or cycle
+  if (code == 730 || code == 740 || (code >= 810 && code <= 890)) {
+    if (st.motion != MotionMode::cycle || st.cycle.code10 != code) {
+      st.cycle = CycleModal{};
+      st.cycle.code10 = code;
+      st.cycle.initial_z = st.position[2];
+    }
+  }
+  switch (code) {
+    case 0: st.motion = MotionMode::rapid; break;
+    case 10: st.motion = MotionMode::linear; break;
+    case 20: st.motion = MotionMode::arc_cw; break;
+    case 30: st.motion = MotionMode::arc_ccw; break;
+    case 800: st.motion = MotionMode::none; break;
+    default: st.motion = MotionMode::cycle; break;  // G73 G74 G81-G86 G89
+  }
+}
+
+// the cycle's words are modal within it (Z bottom, R plane, Q peck, P dwell)
+void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Codes& codes) {
+  ModalState& st = state_;
+  const Fail& fail = cx.fail;
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+  if (st.incremental) fail(codes.of(g_motion).column ? codes.of(g_motion).column : cx.block.column,
+                           "canned cycles under G91 (incremental Z and R) are not supported");
+  if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale;
+  if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale;
+  if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
+  if (w.has('P')) {
+    st.cycle.p_s = w.get('P');
+    notice_once("cycle-P", cx.line_number, w.col('P'), "the dwell P of a canned cycle is read in seconds (RS274NGC)");
+  }
+  if (w.has('L') || w.has('K'))
+    fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
+}
+
+void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  const Fail& fail = cx.fail;
   int first_axis_column = 0;
   bool has_axis = false;
   for (const char L : slots_)
@@ -450,125 +520,140 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
       has_axis = true;
       if (!first_axis_column || w.col(L) < first_axis_column) first_axis_column = w.col(L);
     }
-  const bool home_return = g_is(g_non_modal, 280) || g_is(g_non_modal, 300);
+  const int axis_column = first_axis_column ? first_axis_column : cx.block.column;
+  const bool home_return = codes.is(g_non_modal, 280) || codes.is(g_non_modal, 300);
   if (home_return) {
-    const Code c = group[g_non_modal];
-    fx.before_motion.push_back(cl::Unsupported{at(c.column), g_name(c.code10) + " (return to the reference point)"});
-    notice_once(g_name(c.code10), line_number, c.column,
+    const Code c = codes.of(g_non_modal);
+    fx.before_motion.push_back(cl::Unsupported{cx.at(c.column), g_name(c.code10) + " (return to the reference point)"});
+    notice_once(g_name(c.code10), cx.line_number, c.column,
                 fmt::format("{} (return to the reference point) is passed through as a comment; the position "
                             "after it is taken as unchanged",
                             g_name(c.code10)));
   }
   const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
   const bool arc_words = !(st.motion == MotionMode::cycle) && (w.has('I') || w.has('J') || w.has('K') || w.has('R'));
-  if (arc_words && !(is_arc && (in_group[g_motion] || has_axis)) && !home_return) {
+  if (arc_words && !(is_arc && (codes.in(g_motion) || has_axis)) && !home_return) {
     const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
     fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));
   }
-  const bool moves = !home_return && (has_axis || (is_arc && in_group[g_motion] && arc_words));
-  if (moves) {
-    if (st.motion == MotionMode::none)
-      fail(first_axis_column ? first_axis_column : block.column,
-           "axis words without a motion mode (expected G0, G1, G2 or G3)");
-    if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
-      fail(in_group[g_motion] ? group[g_motion].column : block.column,
-           fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
-                       "as G0/G1 blocks)", is_arc ? "an arc" : "a canned cycle", axis_letters_));
-    if (g_is(g_non_modal, 530))
-      notice_once("G53", line_number, group[g_non_modal].column,
-                  "G53 machine coordinates are read as program coordinates");
-    fx.has_motion = true;
-    fx.motion = st.motion;
-    fx.start = st.position;
-    ProgramPoint end = st.position;
-    std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
-    const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
-    for (std::size_t i = 0; i < 6; ++i) {
-      const char L = slots_[i];
-      if (!L) continue;
-      const bool used = axis_letters_.find(L) != std::string::npos;
-      if (w.has(L)) {
-        const double v = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
-        end[i] = st.incremental ? st.position[i] + v : v;
-        if (!(std::abs(end[i]) <= kMaxCoordinate))
-          fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
-      }
-      if (!used || st.known[i]) continue;
-      if (!w.has(L)) {
-        fx.assumed[i] = true;
-        add(assumed, L);
-      } else {
-        if (st.incremental) add(incremental, L);
-        st.known[i] = true;
-      }
-    }
-    if (!assumed.empty())
-      notice_once("unknown-axes", line_number, first_axis_column ? first_axis_column : block.column,
-                  fmt::format("{} not programmed before the first motion: each is taken from its first programmed "
-                              "value (the program starts where it first says), or as 0 where a feed motion or the "
-                              "end comes first",
-                              assumed));
-    if (!incremental.empty())
-      notice_once("incremental-unknown", line_number, first_axis_column ? first_axis_column : block.column,
-                  fmt::format("{} moved incrementally (G91) before any absolute position: taken from 0", incremental));
-    if (is_arc) {
-      const PlaneAxes ax = axes_of(st.plane);
-      const char offset_letter[3] = {'I', 'J', 'K'};
-      const char normal_letter = offset_letter[ax.normal];
-      if (w.has(normal_letter))
-        fail(w.col(normal_letter), fmt::format("{} is not used by an arc in the {} plane", normal_letter,
-                                               st.plane == Plane::xy ? "G17" : st.plane == Plane::zx ? "G18" : "G19"));
-      int turns = 1;
-      if (w.has('P')) {
-        const double p = w.get('P');
-        if (p < 1.0 || p != std::floor(p) || p > 1e4) fail(w.col('P'), "expected a number of turns P (an integer >= 1)");
-        turns = static_cast<int>(p);
-      }
-      const bool clockwise = st.motion == MotionMode::arc_cw;
-      const int column = in_group[g_motion] ? group[g_motion].column : block.column;
-      ArcOutcome outcome;
-      if (w.has('R')) {
-        if (w.has(offset_letter[ax.a1]) || w.has(offset_letter[ax.a2]))
-          fail(w.col('R'), "an arc takes either R or I, J, K, not both");
-        const double r = w.get('R') * length_scale;
-        if (!(std::abs(r) <= kMaxCoordinate)) fail(w.col('R'), "R is out of range (expected a radius within 1e9 mm)");
-        outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
-      } else {
-        const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
-        if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
-        const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
-        const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
-        if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
-          fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
-        const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
-        const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
-        const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
-        outcome = arc_from_centre(fx.start, end, st.plane, clockwise, c1, c2, turns);
-      }
-      if (!outcome.arc) fail(column, outcome.error);
-      fx.arc = outcome.arc;
-    }
-    if (st.motion != MotionMode::rapid && st.feed_mode == FeedMode::inverse_time) {
-      if (!w.has('F'))
-        fail(first_axis_column ? first_axis_column : block.column,
-             "inverse-time feed (G93): every G1, G2, G3 block needs an F word");
-      fx.inverse_time = true;
-    }
-    if (st.motion == MotionMode::cycle) cycle_hole(st, line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
-    fx.end = end;
-    st.position = end;
-    if (st.motion == MotionMode::cycle)
-      st.position[2] = st.retract_to_r ? *st.cycle.r_z : std::max(st.cycle.initial_z, *st.cycle.r_z);
+  const bool moves = !home_return && (has_axis || (is_arc && codes.in(g_motion) && arc_words));
+  if (!moves) return;
+  if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");
+  if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
+    fail(codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column,
+         fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
+                     "as G0/G1 blocks)", is_arc ? "an arc" : "a canned cycle", axis_letters_));
+  if (codes.is(g_non_modal, 530))
+    notice_once("G53", cx.line_number, codes.of(g_non_modal).column,
+                "G53 machine coordinates are read as program coordinates");
+  fx.has_motion = true;
+  fx.motion = st.motion;
+  fx.start = st.position;
+  ProgramPoint end = motion_end(cx, w, axis_column, fx);
+  if (is_arc) read_arc(cx, w, codes, end, fx);
+  if (st.motion != MotionMode::rapid && st.feed_mode == FeedMode::inverse_time) {
+    if (!w.has('F')) fail(axis_column, "inverse-time feed (G93): every G1, G2, G3 block needs an F word");
+    fx.inverse_time = true;
   }
+  if (st.motion == MotionMode::cycle) cycle_hole(st, cx.line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
+  fx.end = end;
+  st.position = end;
+  if (st.motion == MotionMode::cycle)
+    st.position[2] = st.retract_to_r ? *st.cycle.r_z : std::max(st.cycle.initial_z, *st.cycle.r_z);
+}
 
-  // ---- stops
+// the end of the motion from the axis words (absolute or incremental), with the notices of axes
+// not programmed before the first motion
+ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx) {
+  ModalState& st = state_;
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+  ProgramPoint end = st.position;
+  std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
+  const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
+  for (std::size_t i = 0; i < 6; ++i) {
+    const char L = slots_[i];
+    if (!L) continue;
+    const bool used = axis_letters_.find(L) != std::string::npos;
+    if (w.has(L)) {
+      const double v = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
+      end[i] = st.incremental ? st.position[i] + v : v;
+      if (!(std::abs(end[i]) <= kMaxCoordinate))
+        cx.fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
+    }
+    if (!used || st.known[i]) continue;
+    if (!w.has(L)) {
+      fx.assumed[i] = true;
+      add(assumed, L);
+    } else {
+      if (st.incremental) add(incremental, L);
+      st.known[i] = true;
+    }
+  }
+  if (!assumed.empty())
+    notice_once("unknown-axes", cx.line_number, axis_column,
+                fmt::format("{} not programmed before the first motion: each is taken from its first programmed "
+                            "value (the program starts where it first says), or as 0 where a feed motion or the "
+                            "end comes first",
+                            assumed));
+  if (!incremental.empty())
+    notice_once("incremental-unknown", cx.line_number, axis_column,
+                fmt::format("{} moved incrementally (G91) before any absolute position: taken from 0", incremental));
+  return end;
+}
+
+// G2/G3: the arc from R or from its centre (I J K, incremental unless G90.1), P turns
+void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end,
+                           BlockEffect& fx) const {
+  const ModalState& st = state_;
+  const Fail& fail = cx.fail;
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+  const PlaneAxes ax = axes_of(st.plane);
+  const char offset_letter[3] = {'I', 'J', 'K'};
+  const char normal_letter = offset_letter[ax.normal];
+  if (w.has(normal_letter))
+    fail(w.col(normal_letter), fmt::format("{} is not used by an arc in the {} plane", normal_letter,
+                                           st.plane == Plane::xy ? "G17" : st.plane == Plane::zx ? "G18" : "G19"));
+  int turns = 1;
+  if (w.has('P')) {
+    const double p = w.get('P');
+    if (p < 1.0 || p != std::floor(p) || p > kMaxArcTurns) fail(w.col('P'), "expected a number of turns P (an integer >= 1)");
+    turns = static_cast<int>(p);
+  }
+  const bool clockwise = st.motion == MotionMode::arc_cw;
+  const int column = codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column;
+  ArcOutcome outcome;
+  if (w.has('R')) {
+    if (w.has(offset_letter[ax.a1]) || w.has(offset_letter[ax.a2]))
+      fail(w.col('R'), "an arc takes either R or I, J, K, not both");
+    const double r = w.get('R') * length_scale;
+    if (!(std::abs(r) <= kMaxCoordinate)) fail(w.col('R'), "R is out of range (expected a radius within 1e9 mm)");
+    outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
+  } else {
+    const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
+    if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
+    const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
+    const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
+    if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
+      fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
+    const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
+    const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
+    const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
+    outcome = arc_from_centre(fx.start, end, st.plane, clockwise, c1, c2, turns);
+  }
+  if (!outcome.arc) fail(column, outcome.error);
+  fx.arc = outcome.arc;
+}
+
+// M2/M30 end the program; M0, M1, M60 are passed through
+void Interpreter::apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx) {
+  const Code& m_stop = codes.m_stop;
   if (m_stop.code10 == 2 || m_stop.code10 == 30) {
     fx.program_end = true;
-    st.ended = true;
+    state_.ended = true;
   } else if (m_stop.code10 >= 0) {
     const int c = m_stop.code10;
-    fx.after_motion.push_back(cl::Unsupported{at(m_stop.column), fmt::format("M{} (program stop)", c)});
-    notice_once(fmt::format("M{}", c), line_number, m_stop.column,
+    fx.after_motion.push_back(cl::Unsupported{cx.at(m_stop.column), fmt::format("M{} (program stop)", c)});
+    notice_once(fmt::format("M{}", c), cx.line_number, m_stop.column,
                 fmt::format("M{} (program stop) is passed through as a comment", c));
   }
 }

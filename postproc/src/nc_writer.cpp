@@ -44,9 +44,25 @@ void NcWriter::comment(const std::string& text) {
   end_line();
 }
 
+void NcWriter::append_note(const std::string& note) {
+  if (note.empty()) return;
+  const std::string safe = nc_comment_text(note, dialect_);  // the sanitiser of comment()
+  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), " ; {}", safe);
+  else fmt::format_to(std::back_inserter(buf_), " ({})", safe);
+}
+
 void NcWriter::block(const std::string& words) {
   write_held("");
   write_block(words);
+}
+
+void NcWriter::block(const std::string& words, const std::string& note) {
+  write_held("");
+  if (active_cycle_ && words != dialect_.cycles->cancel) end_cycle();
+  start_line();
+  buf_.append(words);
+  append_note(note);
+  end_line();
 }
 
 void NcWriter::write_block(const std::string& words) {
@@ -125,7 +141,7 @@ void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
 
 void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
 
-bool NcWriter::motion(const NcMotion& m) {
+bool NcWriter::motion(const NcMotion& m, const std::string& note) {
   write_held("");
   if (active_cycle_) {
     // the cancel word first if this motion writes a block (a move to where the tool is writes none)
@@ -186,6 +202,7 @@ bool NcWriter::motion(const NcMotion& m) {
     append_fixed(buf_, m.feed, inverse ? w.inverse_time_decimals : w.feed_decimals);
     last_feed_ = m.feed;
   }
+  append_note(note);
   end_line();
   ++blocks_;
   return true;

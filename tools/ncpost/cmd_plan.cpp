@@ -2,10 +2,13 @@
 // ncpost plan: measurement plans and the NC programs that run them (README "Worked example").
 #include <fmt/format.h>
 
+#include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "dialect_option.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
 #include "trr_commands.hpp"
@@ -14,6 +17,7 @@
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/plan_nc.hpp"
 
 namespace ncpost::cli {
 
@@ -28,6 +32,7 @@ struct PlanArgs {
   std::string sphere;
   bool seed_directions = false;
   comp::LaserPlanOptions laser;
+  std::string dialect = "fanuc";
 };
 
 Vec3d parse_vec(const std::string& s, const char* option) {
@@ -40,11 +45,78 @@ Vec3d parse_vec(const std::string& s, const char* option) {
   return v;
 }
 
-}  // namespace
+/// The plan's commands rounded as the dialect writes them: the CSV holds what the control reads.
+comp::CommandRounding rounding_of(const Dialect& d) {
+  return {std::pow(10.0, -d.linear_decimals), std::pow(10.0, -d.angle_decimals)};
+}
 
-void add_plan(CLI::App& app, Action& action) {
-  auto a = std::make_shared<PlanArgs>();
-  CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
+/// The plan sets of the test (`program`: how its NC program runs them). Throws
+/// std::invalid_argument if the machine does not fit the test.
+std::vector<comp::NamedPlan> make_plans(PlanArgs& a, const Machine& m, const comp::CommandRounding& rounding,
+                                        comp::PlanProgramOptions& program) {
+  if (a.test == "ballbar-4axis") {
+    comp::BallbarPlanOptions o;
+    if (!a.heights.empty()) o.heights_mm = a.heights;
+    if (a.bar_length) o.bar_length_mm = *a.bar_length;
+    if (a.dt) o.dt_s = *a.dt;
+    if (a.t0) o.t0_s = *a.t0;
+    o.points = a.points;
+    o.rounding = rounding;
+    program.continuous = true;
+    return comp::plan_ballbar_4axis(m, o);
+  } else if (a.test == "sphere") {
+    comp::SpherePlanOptions o;
+    if (!a.sphere.empty()) o.sphere_mm = parse_vec(a.sphere, "--sphere");
+    if (!a.levels.empty()) o.levels_deg = a.levels;
+    if (a.step) o.step_deg = *a.step;
+    if (a.dt) o.dt_s = *a.dt;
+    if (a.t0) o.t0_s = *a.t0;
+    o.rounding = rounding;
+    program.clearance_mm = a.clearance_mm;
+    return comp::plan_sphere(m, o);
+  } else if (a.test == "laser") {
+    comp::LaserPlanOptions o = a.laser;
+    if (a.dt) o.dt_s = *a.dt;
+    if (a.t0) o.t0_s = *a.t0;
+    if (!a.tool_lengths.empty()) o.tool_length_mm = a.tool_lengths.front();
+    o.rounding = rounding;
+    a.laser = o;
+    if (const std::string why = o.validate(); !why.empty()) throw UsageError("plan laser: " + why);
+    return comp::plan_laser(m, o);
+  } else {
+    comp::BcHeadPlanOptions o;
+    if (!a.tool_lengths.empty()) o.tool_lengths_mm = a.tool_lengths;
+    if (a.bar_length) o.bar_length_mm = *a.bar_length;
+    if (a.dt) o.dt_s = *a.dt;
+    if (a.t0) o.t0_s = *a.t0;
+    o.b_test_along_y = !a.seed_directions;
+    o.rounding = rounding;
+    return comp::plan_bc_head(m, o);
+  }
+}
+
+/// Writes the plan CSVs (PLAN.csv, or PLAN_<set>.csv for several) and PLAN.nc.
+void write_outputs(const PlanArgs& a, const Machine& m, const std::vector<comp::NamedPlan>& plans,
+                   const std::string& program_text) {
+  std::string stem = a.output;
+  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
+  const auto csv_name = [&](const comp::NamedPlan& p) {
+    return plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+  };
+  std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
+  for (const auto& p : plans) outputs.push_back({"-o (plan)", csv_name(p)});
+  check_files(outputs, {{"--machine", a.machine}});
+  for (const auto& p : plans) {
+    const std::string file = csv_name(p);
+    write_file_atomically(file, comp::format_measurement_csv(p.set, m));
+    fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
+  }
+  write_file_atomically(stem + ".nc", program_text);
+  fmt::print("NC program -> {}.nc\n", stem);
+}
+
+/// The options of `plan` into `a`.
+void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
   sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
   sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head | laser")
       ->required()
@@ -90,6 +162,19 @@ void add_plan(CLI::App& app, Action& action) {
       ->check(finite_in(0.0, 5000.0, "mm"));
   sub->add_option("--overshoot", a->laser.overshoot_mm, "laser: overshoot before each pass (mm, default 5)")
       ->check(finite_in(0.0, 1000.0, "mm"));
+  sub->add_option("--dialect", a->dialect,
+                  "The NC program's dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain, or the path of a "
+                  "dialect file (README \"Dialect files\"); the plan's commands are rounded to its decimals")
+      ->type_name("NAME|PATH")
+      ->check(dialect_name_or_path());
+}
+
+}  // namespace
+
+void add_plan(CLI::App& app, Action& action) {
+  auto a = std::make_shared<PlanArgs>();
+  CLI::App* sub = app.add_subcommand("plan", "Write measurement plans and the NC programs that run them");
+  add_plan_options(sub, a);
   sub->callback([&action, a] {
     action = [a] {
       {  // before anything is computed; the per-set CSV names are checked again once known
@@ -101,67 +186,22 @@ void add_plan(CLI::App& app, Action& action) {
       const Machine m = load_machine(a->machine);
       std::vector<comp::NamedPlan> plans;
       comp::PlanProgramOptions program;
+      const Dialect dialect = dialect_named(a->dialect);
       try {
-        if (a->test == "ballbar-4axis") {
-          comp::BallbarPlanOptions o;
-          if (!a->heights.empty()) o.heights_mm = a->heights;
-          if (a->bar_length) o.bar_length_mm = *a->bar_length;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          o.points = a->points;
-          plans = comp::plan_ballbar_4axis(m, o);
-          program.continuous = true;
-        } else if (a->test == "sphere") {
-          comp::SpherePlanOptions o;
-          if (!a->sphere.empty()) o.sphere_mm = parse_vec(a->sphere, "--sphere");
-          if (!a->levels.empty()) o.levels_deg = a->levels;
-          if (a->step) o.step_deg = *a->step;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          plans = comp::plan_sphere(m, o);
-          program.clearance_mm = a->clearance_mm;
-        } else if (a->test == "laser") {
-          comp::LaserPlanOptions o = a->laser;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          if (!a->tool_lengths.empty()) o.tool_length_mm = a->tool_lengths.front();
-          a->laser = o;
-          if (const std::string why = o.validate(); !why.empty()) throw UsageError("plan laser: " + why);
-          plans = comp::plan_laser(m, o);
-        } else {
-          comp::BcHeadPlanOptions o;
-          if (!a->tool_lengths.empty()) o.tool_lengths_mm = a->tool_lengths;
-          if (a->bar_length) o.bar_length_mm = *a->bar_length;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          o.b_test_along_y = !a->seed_directions;
-          plans = comp::plan_bc_head(m, o);
-        }
+        plans = make_plans(*a, m, rounding_of(dialect), program);
       } catch (const std::invalid_argument& e) {
         throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
       }
       std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
       try {
-        program_text = a->test == "laser" ? comp::laser_program(m, plans, a->laser)
-                                          : comp::plan_program(m, plans, "ncpost plan " + a->test, program);
+        const comp::PlanProgram records = a->test == "laser"
+                                              ? comp::laser_program(m, plans, a->laser)
+                                              : comp::plan_program(m, plans, "ncpost plan " + a->test, program);
+        program_text = plan_program_text(m, records, dialect);
       } catch (const std::invalid_argument& e) {
         throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
       }
-      std::string stem = a->output;
-      if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
-      const auto csv_name = [&](const comp::NamedPlan& p) {
-        return plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
-      };
-      std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
-      for (const auto& p : plans) outputs.push_back({"-o (plan)", csv_name(p)});
-      check_files(outputs, {{"--machine", a->machine}});
-      for (const auto& p : plans) {
-        const std::string file = csv_name(p);
-        write_file_atomically(file, comp::format_measurement_csv(p.set, m));
-        fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
-      }
-      write_file_atomically(stem + ".nc", program_text);
-      fmt::print("NC program -> {}.nc\n", stem);
+      write_outputs(*a, m, plans, program_text);
       return 0;
     };
   });

@@ -24,6 +24,51 @@ ParseResult refuse(std::string why) { return {std::nullopt, std::move(why)}; }
 
 ParseResult accept(ParameterSpec s) { return {std::move(s), {}}; }
 
+/// |cos| between a unit offset direction and a rotary axis above which the offset lies along the
+/// axis's own line (no effect: refused).
+constexpr double kAlongOwnLine = 0.999;
+
+/// E<comp>0<axis>: the location of a rotary axis's line, or a squareness (EC0Y, EB0Z, EA0Z).
+ParseResult parse_location(ParameterSpec s, char comp, char letter, const Machine& m) {
+  s.axis_index = m.index_of(letter);
+  if (s.axis_index < 0) return refuse("the machine has no axis " + std::string(1, letter));
+  s.component = component_of(comp);
+  const Axis& a = m.axes[static_cast<std::size_t>(s.axis_index)];
+  if (a.is_rotary()) {
+    s.kind = ParameterKind::location;
+    if (s.component < 3) {
+      Vec3d e = Vec3d::Zero();
+      e[s.component] = 1.0;
+      if (std::abs(e.dot(a.direction)) > kAlongOwnLine)
+        return refuse("an offset of axis " + std::string(1, letter) + " along its own line has no effect");
+    }
+    return accept(s);
+  }
+  if (s.name == "EC0Y" || s.name == "EB0Z" || s.name == "EA0Z") {
+    s.kind = ParameterKind::squareness;
+    return accept(s);
+  }
+  return refuse("the squareness errors are EC0Y, EB0Z and EA0Z (docs/conventions.md)");
+}
+
+/// E<comp><axis>:t:<node>: a table node (mm; degrees in one turn for a rotary axis, periodic).
+ParseResult parse_table(ParameterSpec s, char comp, char letter, const std::string& node, const Machine& m) {
+  s.kind = ParameterKind::table;
+  s.axis_index = m.index_of(letter);
+  if (s.axis_index < 0) return refuse("the machine has no axis " + std::string(1, letter));
+  s.component = component_of(comp);
+  s.at_mm = std::stod(node);
+  if (m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary()) {
+    // a rotary axis's table is periodic: its nodes are angles in degrees, one turn
+    if (s.at_mm < 0.0 || s.at_mm >= 360.0)
+      return refuse("the nodes of a rotary axis's table are angles from 0 (inclusive) to 360 degrees (exclusive)");
+    s.at_rad = s.at_mm * kPi / 180.0;
+    s.at_mm = 0.0;
+    s.periodic = true;
+  }
+  return accept(s);
+}
+
 }  // namespace
 
 bool ParameterSpec::is_angle() const {
@@ -51,29 +96,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   s.name = name;
   auto axis = [&](char letter) { return m.index_of(letter); };
 
-  if (std::regex_match(name, g, location)) {
-    const char comp = g[1].str()[0];
-    const char letter = g[2].str()[0];
-    s.axis_index = axis(letter);
-    if (s.axis_index < 0) return refuse("the machine has no axis " + std::string(1, letter));
-    s.component = component_of(comp);
-    const Axis& a = m.axes[static_cast<std::size_t>(s.axis_index)];
-    if (a.is_rotary()) {
-      s.kind = ParameterKind::location;
-      if (s.component < 3) {
-        Vec3d e = Vec3d::Zero();
-        e[s.component] = 1.0;
-        if (std::abs(e.dot(a.direction)) > 0.999)
-          return refuse("an offset of axis " + std::string(1, letter) + " along its own line has no effect");
-      }
-      return accept(s);
-    }
-    if (name == "EC0Y" || name == "EB0Z" || name == "EA0Z") {
-      s.kind = ParameterKind::squareness;
-      return accept(s);
-    }
-    return refuse("the squareness errors are EC0Y, EB0Z and EA0Z (docs/conventions.md)");
-  }
+  if (std::regex_match(name, g, location)) return parse_location(s, g[1].str()[0], g[2].str()[0], m);
   if (std::regex_match(name, g, harmonic)) {
     s.kind = ParameterKind::harmonic;
     s.axis_index = axis(g[2].str()[0]);
@@ -93,22 +116,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     s.order = std::stoi(g[3].str());
     return accept(s);
   }
-  if (std::regex_match(name, g, table)) {
-    s.kind = ParameterKind::table;
-    s.axis_index = axis(g[2].str()[0]);
-    if (s.axis_index < 0) return refuse("the machine has no axis " + g[2].str());
-    s.component = component_of(g[1].str()[0]);
-    s.at_mm = std::stod(g[3].str());
-    if (m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary()) {
-      // a rotary axis's table is periodic: its nodes are angles in degrees, one turn
-      if (s.at_mm < 0.0 || s.at_mm >= 360.0)
-        return refuse("the nodes of a rotary axis's table are angles from 0 (inclusive) to 360 degrees (exclusive)");
-      s.at_rad = s.at_mm * kPi / 180.0;
-      s.at_mm = 0.0;
-      s.periodic = true;
-    }
-    return accept(s);
-  }
+  if (std::regex_match(name, g, table)) return parse_table(s, g[1].str()[0], g[2].str()[0], g[3].str(), m);
   if (std::regex_match(name, g, reversal)) {
     s.kind = ParameterKind::reversal;
     s.axis_index = axis(g[1].str()[0]);

@@ -14,6 +14,10 @@ namespace ncpost::comp {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
+/// A rotary axis's direction has a component along X, Y or Z when it is above this.
+constexpr double kDirectionComponent = 1e-9;
+/// A location component lies along the axis (its zero-position error) when |direction| is 1 within this.
+constexpr double kAlongAxis = 1e-12;
 
 const char* component_word(bool rotary, int component) {
   static const char* linear_words[6] = {"error motion in X", "error motion in Y", "error motion in Z",
@@ -34,7 +38,79 @@ std::string listed_effect(const ParameterSpec& s) {
 /// True when the parameter's component is the axis's own motion (positioning).
 bool own_component(const Axis& axis, int axis_index, const ParameterSpec& s) {
   if (!axis.is_rotary()) return s.component == axis_index;  // X=0, Y=1, Z=2
-  return s.component >= 3 && std::abs(axis.direction[s.component - 3]) > 1e-9;
+  return s.component >= 3 && std::abs(axis.direction[s.component - 3]) > kDirectionComponent;
+}
+
+/// Sorts the parameters of the axis: what the table holds (positioning, reversal), what it leaves
+/// out (with why); `other_effects`: the effects listed for the other axes.
+void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& out, std::set<std::string>& other_effects) {
+  const ModelLayout& layout = model.layout();
+  std::set<std::string> left_seen;
+  for (std::size_t i = 0; i < layout.size(); ++i) {
+    const ParameterSpec& s = layout.spec(static_cast<int>(i));
+    if (s.measurement_only()) continue;
+    if (s.axis_index != out.axis_index) {
+      other_effects.insert(listed_effect(s));
+      continue;
+    }
+    const double v = model.values()[i];
+    switch (s.kind) {
+      case ParameterKind::reversal:
+        out.reversal = v;
+        out.held.push_back(s.name);
+        break;
+      case ParameterKind::location:
+        // the zero-position error (the component along the axis) turns the axis at home as well:
+        // the set-up at home absorbs it, it has no effect to compensate
+        if (s.component >= 3 && std::abs(std::abs(axis.direction[s.component - 3]) - 1.0) < kAlongAxis) break;
+        if (left_seen.insert(s.name).second)
+          out.left_out.push_back(fmt::format("{} (location error of {}: a one-axis table cannot move an axis "
+                                             "line; --format machine does)",
+                                             s.name, out.letter));
+        break;
+      case ParameterKind::squareness:
+        if (left_seen.insert(s.name).second)
+          out.left_out.push_back(fmt::format("{} (squareness: a cross term, not a positioning error)", s.name));
+        break;
+      case ParameterKind::harmonic:
+      case ParameterKind::polynomial:
+      case ParameterKind::table:
+        if (own_component(axis, out.axis_index, s)) {
+          out.has_positioning = true;
+          out.held.push_back(s.name);
+          if (s.kind == ParameterKind::table) out.model_nodes.push_back(s.at_mm);
+          else out.piecewise_linear = false;
+        } else if (const std::string effect = listed_effect(s); left_seen.insert(effect).second) {
+          out.left_out.push_back(fmt::format("{} ({} of {}: acts across the axis or turns the tool)", effect,
+                                             component_word(out.rotary, s.component), out.letter));
+        }
+        break;
+      default: break;
+    }
+  }
+}
+
+/// The travel the table covers: the limits, one turn of a rotary axis without them, or the nodes
+/// of a table (held at its end values beyond); a polynomial without limits is refused.
+void set_travel(const Axis& axis, AxisExport& out) {
+  const char letter = out.letter;
+  if (axis.limits) {
+    out.travel_min = axis.limits->min;
+    out.travel_max = axis.limits->max;
+  } else if (out.rotary) {
+    out.continuous = true;
+    out.travel_min = 0.0;
+    out.travel_max = kTwoPi;
+  } else if (out.piecewise_linear) {
+    // tables are held at their end values outside their nodes, as the controls hold a table's ends
+    out.travel_min = out.model_nodes.empty() ? 0.0 : out.model_nodes.front();
+    out.travel_max = out.model_nodes.empty() ? 0.0 : out.model_nodes.back();
+  } else {
+    throw ExportRefusal(ExportRefusal::Source::machine, fmt::format(
+        "axis {} has no limits in the machine file and its error is a polynomial, which grows without "
+        "bound beyond any table: add `limits = [MIN, MAX]` (mm) to [axes.{}] so that the table covers the travel",
+        letter, letter));
+  }
 }
 
 }  // namespace
@@ -53,53 +129,9 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   const Axis& axis = m.axes[static_cast<std::size_t>(out.axis_index)];
   out.letter = letter;
   out.rotary = axis.is_rotary();
-  const ModelLayout& layout = model.layout();
-  std::set<std::string> left_seen, other_effects;
-  bool has_positioning = false;
-  for (std::size_t i = 0; i < layout.size(); ++i) {
-    const ParameterSpec& s = layout.spec(static_cast<int>(i));
-    if (s.measurement_only()) continue;
-    if (s.axis_index != out.axis_index) {
-      other_effects.insert(listed_effect(s));
-      continue;
-    }
-    const double v = model.values()[i];
-    switch (s.kind) {
-      case ParameterKind::reversal:
-        out.reversal = v;
-        out.held.push_back(s.name);
-        break;
-      case ParameterKind::location:
-        // the zero-position error (the component along the axis) turns the axis at home as well:
-        // the set-up at home absorbs it, it has no effect to compensate
-        if (s.component >= 3 && std::abs(std::abs(axis.direction[s.component - 3]) - 1.0) < 1e-12) break;
-        if (left_seen.insert(s.name).second)
-          out.left_out.push_back(fmt::format("{} (location error of {}: a one-axis table cannot move an axis "
-                                             "line; --format machine does)",
-                                             s.name, letter));
-        break;
-      case ParameterKind::squareness:
-        if (left_seen.insert(s.name).second)
-          out.left_out.push_back(fmt::format("{} (squareness: a cross term, not a positioning error)", s.name));
-        break;
-      case ParameterKind::harmonic:
-      case ParameterKind::polynomial:
-      case ParameterKind::table:
-        if (own_component(axis, out.axis_index, s)) {
-          has_positioning = true;
-          out.has_positioning = true;
-          out.held.push_back(s.name);
-          if (s.kind == ParameterKind::table) out.model_nodes.push_back(s.at_mm);
-          else out.piecewise_linear = false;
-        } else if (const std::string effect = listed_effect(s); left_seen.insert(effect).second) {
-          out.left_out.push_back(fmt::format("{} ({} of {}: acts across the axis or turns the tool)", effect,
-                                             component_word(out.rotary, s.component), letter));
-        }
-        break;
-      default: break;
-    }
-  }
-  if (!has_positioning && out.reversal == 0.0) {
+  std::set<std::string> other_effects;
+  sort_parameters(model, axis, out, other_effects);
+  if (!out.has_positioning && out.reversal == 0.0) {
     int dominant = 0;
     for (int c = 1; c < 3; ++c)
       if (std::abs(axis.direction[c]) > std::abs(axis.direction[dominant])) dominant = c;
@@ -111,24 +143,7 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   out.other_axis_terms = static_cast<int>(other_effects.size());
   std::sort(out.model_nodes.begin(), out.model_nodes.end());
   out.model_nodes.erase(std::unique(out.model_nodes.begin(), out.model_nodes.end()), out.model_nodes.end());
-
-  if (axis.limits) {
-    out.travel_min = axis.limits->min;
-    out.travel_max = axis.limits->max;
-  } else if (out.rotary) {
-    out.continuous = true;
-    out.travel_min = 0.0;
-    out.travel_max = kTwoPi;
-  } else if (out.piecewise_linear) {
-    // tables are held at their end values outside their nodes, as the controls hold a table's ends
-    out.travel_min = out.model_nodes.empty() ? 0.0 : out.model_nodes.front();
-    out.travel_max = out.model_nodes.empty() ? 0.0 : out.model_nodes.back();
-  } else {
-    throw ExportRefusal(ExportRefusal::Source::machine, fmt::format(
-        "axis {} has no limits in the machine file and its error is a polynomial, which grows without "
-        "bound beyond any table: add `limits = [MIN, MAX]` (mm) to [axes.{}] so that the table covers the travel",
-        letter, letter));
-  }
+  set_travel(axis, out);
   return out;
 }
 

@@ -67,6 +67,170 @@ double typical_size(const Machine& m, const ParameterSpec& s) {
   }
 }
 
+/// Levenberg–Marquardt: the damping starts at kInitialLambda, is divided by 10 after an accepted
+/// step (not below kMinLambda) and multiplied by 10 after a rejected one; at kMaxLambda no step
+/// decreases the cost.
+constexpr double kInitialLambda = 1e-3;
+constexpr double kMinLambda = 1e-12;
+constexpr double kMaxLambda = 1e16;
+/// Diagonal entries of JᵀWJ are floored at this fraction of the largest (a parameter without effect).
+constexpr double kDiagonalFloor = 1e-12;
+/// Converged when the cost decreases by at most this fraction ...
+constexpr double kCostTolerance = 1e-12;
+/// ... or the scaled step is at most this fraction of the residual norm ...
+constexpr double kStepTolerance = 1e-10;
+/// ... or, with no step accepted, the scaled gradient is at most this fraction of it.
+constexpr double kGradientTolerance = 1e-6;
+/// A null vector's component below this is left out of the null direction ...
+constexpr double kNullComponent = 1e-12;
+/// ... and below this out of the combinations reported for a pinned parameter.
+constexpr double kCombinationWeight = 0.05;
+
+/// Row weights of the fit (IdentifyOptions::set_weights), scaled to rms 1; ones without weights.
+Eigen::VectorXd row_weights(const std::vector<MeasurementSet>& sets, const IdentifyOptions& o, Eigen::Index m_count) {
+  Eigen::VectorXd row_weight = Eigen::VectorXd::Ones(m_count);
+  if (o.set_weights.empty()) return row_weight;
+  if (o.set_weights.size() != sets.size()) throw std::invalid_argument("set_weights: one weight per measurement set");
+  Eigen::Index at = 0;
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    const Eigen::Index len = static_cast<Eigen::Index>(sets[s].rows.size()) * sets[s].values_per_row();
+    row_weight.segment(at, len).setConstant(o.set_weights[s]);
+    at += len;
+  }
+  if (m_count > 0) row_weight /= std::sqrt(row_weight.squaredNorm() / double(m_count));
+  return row_weight;
+}
+
+/// The robust weights of the residuals.
+Eigen::VectorXd loss_weights(const Eigen::VectorXd& r, Loss loss, double k) {
+  Eigen::VectorXd w(r.size());
+  for (Eigen::Index i = 0; i < r.size(); ++i) w[i] = weight(loss, r[i], k);
+  return w;
+}
+
+/// The state of the fit: the values (layout order), the weighted residuals and their cost.
+struct Fit {
+  std::vector<double> values;
+  Eigen::VectorXd r;
+  double cost = 0.0;
+};
+
+/// Levenberg–Marquardt on the `kept` parameters from `fit`; the number of iterations in
+/// `iterations`; true if converged.
+bool levenberg_marquardt(const ResidualProblem& prob, const std::vector<int>& kept, const Eigen::VectorXd& row_weight,
+                         const IdentifyOptions& o, double k, Fit& fit, int& iterations) {
+  const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
+  double lambda = kInitialLambda;
+  bool converged = n == 0;
+  for (iterations = 0; !converged && iterations < o.max_iterations; ++iterations) {
+    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(fit.values, kept);
+    const Eigen::VectorXd w = loss_weights(fit.r, o.loss, k);
+    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
+    const Eigen::VectorXd g = J.transpose() * w.asDiagonal() * fit.r;
+    Eigen::VectorXd d = A.diagonal();
+    const double floor = kDiagonalFloor * std::max(1e-300, d.maxCoeff());
+    for (Eigen::Index i = 0; i < n; ++i) d[i] = std::max(d[i], floor);
+    bool accepted = false;
+    while (lambda < kMaxLambda) {
+      Eigen::MatrixXd M = A;
+      M.diagonal() += lambda * d;
+      const Eigen::VectorXd step = -M.ldlt().solve(g);
+      std::vector<double> trial = fit.values;
+      for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])] += step[i];
+      const Eigen::VectorXd rt = row_weight.cwiseProduct(prob.residuals(trial));
+      const double ct = cost_of(rt, o.loss, k);
+      if (std::isfinite(ct) && ct <= fit.cost) {
+        const double scaled_step = (step.array() * d.array().sqrt()).matrix().norm();
+        const double decrease = fit.cost - ct;
+        fit.values = trial;
+        fit.r = rt;
+        fit.cost = ct;
+        lambda = std::max(lambda / 10.0, kMinLambda);
+        accepted = true;
+        if (decrease <= kCostTolerance * fit.cost + 1e-30 ||
+            scaled_step <= kStepTolerance * std::sqrt(2.0 * fit.cost + 1e-30))
+          converged = true;
+        break;
+      }
+      lambda *= 10.0;
+    }
+    if (!accepted) {
+      // no decrease possible: at a minimum if the gradient is negligible
+      converged = (g.array() / d.array().sqrt()).matrix().norm() <= kGradientTolerance * std::sqrt(2.0 * fit.cost + 1e-30) + 1e-15;
+      break;
+    }
+  }
+  return converged;
+}
+
+/// The values and standard uncertainties of the kept parameters, and their covariance, into res.
+void kept_results(const ResidualProblem& prob, const std::vector<std::string>& names, const std::vector<int>& kept,
+                  const Eigen::VectorXd& row_weight, const IdentifyOptions& o, double k, const Fit& fit,
+                  IdentifyResult& res) {
+  const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
+  const Eigen::Index m_count = fit.r.size();
+  const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(fit.values, kept);
+  const Eigen::VectorXd w = loss_weights(fit.r, o.loss, k);
+  const double dof = std::max<double>(1.0, double(m_count - n));
+  const double s2 = (w.array() * fit.r.array().square()).sum() / dof;
+  const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
+  const Eigen::MatrixXd cov = s2 * A.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::string& name = names[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])];
+    res.parameters.set(name, fit.values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
+    res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
+  }
+  res.covariance = cov;
+}
+
+/// What the data cannot separate (at the prior): the pinned parameters, their null directions and
+/// the combinations the kept ones stand for.
+void describe_identifiability(const RankAnalysis& prior_rank, const std::vector<std::string>& names,
+                              const std::vector<int>& free, const std::vector<double>& values, IdentifyResult& res) {
+  Identifiability& id = res.identifiability;
+  id.rank = res.rank.rank;
+  id.parameters = static_cast<int>(free.size());
+  for (std::size_t p = 0; p < prior_rank.pinned.size(); ++p) {
+    const int col = prior_rank.pinned[p];
+    const std::string& pname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])];
+    id.pinned.push_back(pname);
+    const Eigen::VectorXd& v = prior_rank.null_vectors[p];
+    NullDirection dir;
+    for (Eigen::Index c = 0; c < v.size(); ++c)
+      if (std::abs(v[c]) > kNullComponent) dir.emplace_back(names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])], v[c]);
+    id.null_space.push_back(dir);
+    // fitted kept value = true value + coefficient · (true value of the pinned one − prior)
+    std::string text;
+    const double up = v[col] / prior_rank.column_norms[col];
+    for (Eigen::Index c = 0; c < v.size(); ++c) {
+      if (c == col || std::abs(v[c]) < kCombinationWeight || prior_rank.column_norms[c] <= 0.0) continue;
+      const double coef = -(v[c] / prior_rank.column_norms[c]) / up;
+      const std::string& kname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])];
+      text += fmt::format("{}{} stands for {} {} {:.6g}·{}", text.empty() ? "" : "; ", kname, kname,
+                          coef < 0 ? "-" : "+", std::abs(coef), pname);
+    }
+    if (text.empty()) text = pname + " has no effect on these data";
+    id.combinations.push_back(fmt::format("{} pinned at {:g} ({})", pname, values[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])], text));
+  }
+}
+
+/// The residual statistics per file, before (`r0`) and after (`r`), unweighted.
+void file_residuals(const std::vector<MeasurementSet>& sets, const Eigen::VectorXd& r0, const Eigen::VectorXd& r,
+                    IdentifyResult& res) {
+  Eigen::Index at = 0;
+  for (const auto& s : sets) {
+    FileResidual f;
+    f.file = s.file;
+    f.type = s.type;
+    const Eigen::Index len = static_cast<Eigen::Index>(s.rows.size()) * s.values_per_row();
+    f.values = static_cast<std::size_t>(len);
+    stats(r0.segment(at, len), f.rms_nominal_um, f.max_nominal_um);
+    stats(r.segment(at, len), f.rms_after_um, f.max_after_um);
+    res.files.push_back(f);
+    at += len;
+  }
+}
+
 }  // namespace
 
 std::string IdentifyOptions::validate() const {
@@ -114,19 +278,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   const Eigen::VectorXd r0 = prob.residuals(values);
   res.nominal = prob.predictions(values);
   stats(r0, res.rms_nominal_um, res.max_nominal_um);
-  const Eigen::Index m_count = r0.size();
-  // row weights of the fit (IdentifyOptions::set_weights), scaled to rms 1
-  Eigen::VectorXd row_weight = Eigen::VectorXd::Ones(m_count);
-  if (!o.set_weights.empty()) {
-    if (o.set_weights.size() != sets.size()) throw std::invalid_argument("set_weights: one weight per measurement set");
-    Eigen::Index at = 0;
-    for (std::size_t s = 0; s < sets.size(); ++s) {
-      const Eigen::Index len = static_cast<Eigen::Index>(sets[s].rows.size()) * sets[s].values_per_row();
-      row_weight.segment(at, len).setConstant(o.set_weights[s]);
-      at += len;
-    }
-    if (m_count > 0) row_weight /= std::sqrt(row_weight.squaredNorm() / double(m_count));
-  }
+  const Eigen::VectorXd row_weight = row_weights(sets, o, r0.size());
 
   // 1. identifiability at the prior
   Eigen::VectorXd typical(static_cast<Eigen::Index>(free.size()));
@@ -135,115 +287,26 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   std::vector<int> kept;
   for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
 
-  // 2. Levenberg–Marquardt on the kept parameters
+  // 2. Levenberg–Marquardt on the kept parameters (residuals weighted during the fit)
   const double k = o.loss_scale_um * 1e-3;
-  Eigen::VectorXd r = row_weight.cwiseProduct(r0);  // weighted during the fit
-  double cost = cost_of(r, o.loss, k);
-  double lambda = 1e-3;
-  const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
-  bool converged = n == 0;
-  for (res.iterations = 0; !converged && res.iterations < o.max_iterations; ++res.iterations) {
-    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(values, kept);
-    Eigen::VectorXd w(m_count);
-    for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
-    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
-    const Eigen::VectorXd g = J.transpose() * w.asDiagonal() * r;
-    Eigen::VectorXd d = A.diagonal();
-    const double floor = 1e-12 * std::max(1e-300, d.maxCoeff());
-    for (Eigen::Index i = 0; i < n; ++i) d[i] = std::max(d[i], floor);
-    bool accepted = false;
-    while (lambda < 1e16) {
-      Eigen::MatrixXd M = A;
-      M.diagonal() += lambda * d;
-      const Eigen::VectorXd step = -M.ldlt().solve(g);
-      std::vector<double> trial = values;
-      for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])] += step[i];
-      const Eigen::VectorXd rt = row_weight.cwiseProduct(prob.residuals(trial));
-      const double ct = cost_of(rt, o.loss, k);
-      if (std::isfinite(ct) && ct <= cost) {
-        const double scaled_step = (step.array() * d.array().sqrt()).matrix().norm();
-        const double decrease = cost - ct;
-        values = trial;
-        r = rt;
-        cost = ct;
-        lambda = std::max(lambda / 10.0, 1e-12);
-        accepted = true;
-        if (decrease <= 1e-12 * cost + 1e-30 || scaled_step <= 1e-10 * std::sqrt(2.0 * cost + 1e-30)) converged = true;
-        break;
-      }
-      lambda *= 10.0;
-    }
-    if (!accepted) {
-      // no decrease possible: at a minimum if the gradient is negligible
-      converged = (g.array() / d.array().sqrt()).matrix().norm() <= 1e-6 * std::sqrt(2.0 * cost + 1e-30) + 1e-15;
-      break;
-    }
-  }
+  Fit fit{values, row_weight.cwiseProduct(r0), 0.0};
+  fit.cost = cost_of(fit.r, o.loss, k);
+  const bool converged = levenberg_marquardt(prob, kept, row_weight, o, k, fit, res.iterations);
+  values = fit.values;
   res.converged = converged;
   res.message = converged ? fmt::format("converged in {} iterations", res.iterations)
                           : fmt::format("did not converge in {} iterations", res.iterations);
 
   // 3. results, uncertainty, identifiability at the solution
-  const Eigen::MatrixXd Jfree = prob.jacobian(values, free);
-  res.rank = analyse_rank(Jfree, o.rank_tolerance, typical);
-  {
-    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(values, kept);
-    Eigen::VectorXd w(m_count);
-    for (Eigen::Index i = 0; i < m_count; ++i) w[i] = weight(o.loss, r[i], k);
-    const double dof = std::max<double>(1.0, double(m_count - n));
-    const double s2 = (w.array() * r.array().square()).sum() / dof;
-    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
-    const Eigen::MatrixXd cov = s2 * A.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const std::string& name = names[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])];
-      res.parameters.set(name, values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
-      res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
-    }
-    res.covariance = cov;
-  }
+  res.rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance, typical);
+  kept_results(prob, names, kept, row_weight, o, k, fit, res);
   for (const auto& f : o.fixed.names()) res.parameters.set(f, o.fixed.value_or(f, 0.0));
-
-  Identifiability& id = res.identifiability;
-  id.rank = res.rank.rank;
-  id.parameters = static_cast<int>(free.size());
-  for (std::size_t p = 0; p < prior_rank.pinned.size(); ++p) {
-    const int col = prior_rank.pinned[p];
-    const std::string& pname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])];
-    id.pinned.push_back(pname);
-    const Eigen::VectorXd& v = prior_rank.null_vectors[p];
-    NullDirection dir;
-    for (Eigen::Index c = 0; c < v.size(); ++c)
-      if (std::abs(v[c]) > 1e-12) dir.emplace_back(names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])], v[c]);
-    id.null_space.push_back(dir);
-    // fitted kept value = true value + coefficient · (true value of the pinned one − prior)
-    std::string text;
-    const double up = v[col] / prior_rank.column_norms[col];
-    for (Eigen::Index c = 0; c < v.size(); ++c) {
-      if (c == col || std::abs(v[c]) < 0.05 || prior_rank.column_norms[c] <= 0.0) continue;
-      const double coef = -(v[c] / prior_rank.column_norms[c]) / up;
-      const std::string& kname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])];
-      text += fmt::format("{}{} stands for {} {} {:.6g}·{}", text.empty() ? "" : "; ", kname, kname,
-                          coef < 0 ? "-" : "+", std::abs(coef), pname);
-    }
-    if (text.empty()) text = pname + " has no effect on these data";
-    id.combinations.push_back(fmt::format("{} pinned at {:g} ({})", pname, values[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])], text));
-  }
+  describe_identifiability(prior_rank, names, free, values, res);
 
   res.fitted = prob.predictions(values);
-  r = prob.residuals(values);  // statistics unweighted, in mm
+  const Eigen::VectorXd r = prob.residuals(values);  // statistics unweighted, in mm
   stats(r, res.rms_after_um, res.max_after_um);
-  Eigen::Index at = 0;
-  for (const auto& s : sets) {
-    FileResidual f;
-    f.file = s.file;
-    f.type = s.type;
-    const Eigen::Index len = static_cast<Eigen::Index>(s.rows.size()) * s.values_per_row();
-    f.values = static_cast<std::size_t>(len);
-    stats(r0.segment(at, len), f.rms_nominal_um, f.max_nominal_um);
-    stats(r.segment(at, len), f.rms_after_um, f.max_after_um);
-    res.files.push_back(f);
-    at += len;
-  }
+  file_residuals(sets, r0, r, res);
   return res;
 }
 

@@ -10,6 +10,21 @@
 namespace ncpost::comp {
 namespace {
 
+/// The travel ends are targets too where they lie more than this fraction of a step beyond the grid.
+constexpr double kEndBeyondGridSteps = 0.25;
+/// The measuring lines of an axis that is commanded lie on this grid (mm), at 1/4 and 3/4 of its travel.
+constexpr double kLineGridMm = 5.0;
+/// Time to re-set the optics between two sets (s), in the rows' time stamps.
+constexpr double kOpticsSetupS = 60.0;
+/// Of each target's time (dt_s), the move there takes this long; the rest is the dwell (s) ...
+constexpr double kTargetMoveS = 2.0;
+/// ... but the dwell is at least this long (s).
+constexpr double kMinDwellS = 1.0;
+/// Slack of the count of steps in a travel (floating point).
+constexpr double kStepSlack = 1e-9;
+/// The rows' time stamps are written to 1/100 s.
+constexpr double kTimeStampsPerS = 100.0;
+
 int position_in(const std::vector<int>& side, int axis) {
   const auto it = std::find(side.begin(), side.end(), axis);
   return it == side.end() ? -1 : static_cast<int>(it - side.begin());
@@ -57,14 +72,15 @@ std::vector<double> laser_targets(const Machine& m, int j, const LaserPlanOption
   std::vector<double> t;
   if (lo <= 0.0 && hi >= 0.0) {
     // a grid through home, plus the travel ends where they are more than a quarter step away
-    for (double k = std::ceil(lo / o.step_mm - 1e-9); k * o.step_mm <= hi + 1e-9; k += 1.0)
-      t.push_back(round_to(k * o.step_mm, 1e-5));
-    if (t.empty() || t.front() - lo > 0.25 * o.step_mm) t.insert(t.begin(), round_to(lo, 1e-5));
-    if (t.back() < hi - 0.25 * o.step_mm) t.push_back(round_to(hi, 1e-5));
+    const double q = o.rounding.linear_mm;
+    for (double k = std::ceil(lo / o.step_mm - kStepSlack); k * o.step_mm <= hi + kStepSlack; k += 1.0)
+      t.push_back(round_to(k * o.step_mm, q));
+    if (t.empty() || t.front() - lo > kEndBeyondGridSteps * o.step_mm) t.insert(t.begin(), round_to(lo, q));
+    if (t.back() < hi - kEndBeyondGridSteps * o.step_mm) t.push_back(round_to(hi, q));
   } else {
-    const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + 1e-9)) + 1;
+    const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + kStepSlack)) + 1;
     const double start = lo + 0.5 * ((hi - lo) - (n - 1) * o.step_mm);
-    for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, 1e-5));
+    for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, o.rounding.linear_mm));
   }
   return t;
 }
@@ -86,7 +102,7 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
       commanded[n] = moves_abbe_offset(m, j, k);
       if (commanded[n]) {
         const auto [lo, hi] = travel(m, k, o.margin_mm);
-        at[n] = {round_to(lo + 0.25 * (hi - lo), 5.0), round_to(lo + 0.75 * (hi - lo), 5.0)};
+        at[n] = {round_to(lo + 0.25 * (hi - lo), kLineGridMm), round_to(lo + 0.75 * (hi - lo), kLineGridMm)};
       } else {
         at[n] = {-o.reflector_offset_mm, o.reflector_offset_mm};
       }
@@ -135,13 +151,13 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
               r.command[j] = x;
               r.run = run;
               r.approach = pass == 0 ? 1 : -1;
-              r.time_s = std::round(t * 100.0) / 100.0;
+              r.time_s = std::round(t * kTimeStampsPerS) / kTimeStampsPerS;
               t += o.dt_s;
               s.rows.push_back(r);
             }
           }
         }
-        t += 60.0;  // re-setting the optics
+        t += kOpticsSetupS;
         plans.push_back(std::move(p));
       }
     }
@@ -149,41 +165,36 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
   return plans;
 }
 
-std::string laser_program(const Machine& m, const std::vector<NamedPlan>& plans, const LaserPlanOptions& o) {
-  std::string out = "%\nO1007 (ncpost plan laser: ISO 230-2 test cycles)\nG90 G21 G17 G94\n";
-  auto words = [&](const AxisPosition& q) {
-    std::string w;
-    for (std::size_t a = 0; a < m.axes.size(); ++a) {
-      const double v = q[static_cast<int>(a)];
-      w += fmt::format(" {}{:.4f}", m.axes[a].letter, m.axes[a].is_rotary() ? rad_to_deg(v) : v);
-    }
-    return w;
-  };
-  const double dwell_s = std::max(1.0, o.dt_s - 2.0);
-  for (const auto& p : plans) {
-    const MeasurementSet& s = p.set;
+PlanProgram laser_program(const Machine& m, const std::vector<NamedPlan>& plans, const LaserPlanOptions& o) {
+  PlanProgram p;
+  p.name = "ncpost plan laser";
+  p.header = {"ncpost plan laser: ISO 230-2 test cycles", "machine " + m.name};
+  const double dwell_s = std::max(kMinDwellS, o.dt_s - kTargetMoveS);
+  for (const auto& named : plans) {
+    const MeasurementSet& s = named.set;
     if (s.rows.empty()) continue;
     const int j = s.meta("axis").empty() ? 0 : s.meta("axis")[0] - 'X';
-    out += fmt::format("(--- set {}: {} ---)\n", p.name, s.meta("test"));
-    out += fmt::format("(reflector at {:.1f}, {:.1f}, {:.1f} mm from the tool tip, tool length {:.1f} mm; reads {})\n",
-                       s.tool_point_mm.x(), s.tool_point_mm.y(), s.tool_point_mm.z(), s.tool_length_mm, s.component);
+    p.comment(fmt::format("--- set {}: {} ---", named.name, s.meta("test")));
+    p.comment(fmt::format("reflector at {:.1f}, {:.1f}, {:.1f} mm from the tool tip, tool length {:.1f} mm, reads {}",
+                          s.tool_point_mm.x(), s.tool_point_mm.y(), s.tool_point_mm.z(), s.tool_length_mm, s.component));
     AxisPosition start = s.rows.front().command;
     start[j] -= o.overshoot_mm;
-    out += "G0" + words(start) + "\nM0 (set up the optics on this line, zero the laser at the first target)\n";
+    p.rapid(start);
+    p.stop("set up the optics on this line, zero the laser at the first target");
     for (std::size_t k = 0; k < s.rows.size(); ++k) {
       const MeasurementRow& r = s.rows[k];
       const bool pass_start = k == 0 || r.approach != s.rows[k - 1].approach;
       if (pass_start) {  // ISO 230-2: overshoot, then approach the first target of the pass
         AxisPosition before = r.command;
         before[j] -= r.approach * o.overshoot_mm;
-        out += fmt::format("(run {} {} pass)\nG1{} F{:.0f}\n", r.run, r.approach > 0 ? "forward" : "backward",
-                           words(before), o.feed_mm_min);
+        p.comment(fmt::format("run {} {} pass", r.run, r.approach > 0 ? "forward" : "backward"));
+        p.feed(before, o.feed_mm_min);
       }
-      out += fmt::format("G1{} F{:.0f}\nG4 X{:.1f} (read {})\n", words(r.command), o.feed_mm_min, dwell_s, k + 1);
+      p.feed(r.command, o.feed_mm_min);
+      p.dwell(dwell_s, fmt::format("read {}", k + 1));
     }
   }
-  out += "M30\n%\n";
-  return out;
+  return p;
 }
 
 }  // namespace ncpost::comp

@@ -94,199 +94,251 @@ int column_of_field(const std::string& raw, std::size_t index) {
   return static_cast<int>(at) + 1;
 }
 
-}  // namespace
+/// A laser row's command off its file's '# line:' by more than this (mm) is refused.
+constexpr double kOffLineMm = 1e-4;
 
-MeasurementSet parse_measurement_csv(const std::string& text, const std::string& file_name, const Machine& m,
-                                     const CsvReadOptions& options) {
-  MeasurementSet set;
-  set.file = file_name;
-  std::istringstream in(text);
-  std::string raw;
-  int line_no = 0;
-  std::vector<int> meta_lines;
-  std::vector<std::string> header;
-  int header_line = 0;
-  std::vector<int> column_of_axis(m.axes.size(), -1);
-  int t_col = -1, run_col = -1, approach_col = -1;
-  char line_axis = 0;
-  double line_mm[2] = {0.0, 0.0};
-  std::vector<int> value_cols;
+/// The reading of one measurement CSV: metadata lines, the header (the type's keys and the
+/// columns), then the rows; InputError at file:line:column for anything wrong.
+class CsvParser {
+ public:
+  CsvParser(const std::string& file_name, const Machine& m, const CsvReadOptions& options)
+      : file_(file_name), m_(m), options_(options), column_of_axis_(m.axes.size(), -1) {
+    set_.file = file_name;
+  }
 
-  auto key_line = [&](const std::string& key) {
-    for (std::size_t i = 0; i < set.metadata.size(); ++i)
-      if (set.metadata[i].first == key) return meta_lines[i];
+  MeasurementSet parse(const std::string& text) {
+    std::istringstream in(text);
+    std::string raw;
+    while (std::getline(in, raw)) {
+      ++line_no_;
+      if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+      const std::string line = trim(raw);
+      const Context where{file_, line_no_, raw};
+      if (line.empty()) continue;
+      if (line[0] == '#') {
+        if (header_.empty()) metadata_line(line);  // else a comment among the rows
+      } else if (header_.empty()) {
+        read_header(line, raw, where);
+      } else {
+        read_row(raw, where);
+      }
+    }
+    if (header_.empty()) throw InputError({file_, line_no_, 0}, "no header line (expected e.g. 't,X,Y,Z,A,C,L')");
+    if (set_.rows.empty())
+      throw InputError({file_, header_line_, 0},
+                       "no rows after the header: the file holds no measurements (was the export cut short?)");
+    return std::move(set_);
+  }
+
+ private:
+  /// `# key: value` (a free comment without a colon is skipped).
+  void metadata_line(const std::string& line) {
+    const std::string body = trim(line.substr(1));
+    const auto colon = body.find(':');
+    if (colon == std::string::npos) return;
+    set_.metadata.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
+    meta_lines_.push_back(line_no_);
+  }
+
+  int key_line(const std::string& key) const {
+    for (std::size_t i = 0; i < set_.metadata.size(); ++i)
+      if (set_.metadata[i].first == key) return meta_lines_[i];
     return 0;
-  };
-  auto require = [&](const std::string& key) -> std::string {
-    const std::string v = set.meta(key);
+  }
+
+  std::string require(const std::string& key) const {
+    const std::string v = set_.meta(key);
     if (v.empty()) {
-      const int at = header_line > 0 ? header_line : line_no;
-      throw InputError({file_name, at, 0}, fmt::format("missing required key '# {}:' for a {} file", key, to_string(set.type)));
+      const int at = header_line_ > 0 ? header_line_ : line_no_;
+      throw InputError({file_, at, 0}, fmt::format("missing required key '# {}:' for a {} file", key, to_string(set_.type)));
     }
     return v;
-  };
+  }
 
-  while (std::getline(in, raw)) {
-    ++line_no;
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
-    const std::string line = trim(raw);
-    const Context where{file_name, line_no, raw};
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      if (!header.empty()) continue;  // a comment among the rows
-      const std::string body = trim(line.substr(1));
-      const auto colon = body.find(':');
-      if (colon == std::string::npos) continue;  // free comment
-      set.metadata.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
-      meta_lines.push_back(line_no);
-      continue;
+  void read_header(const std::string& line, const std::string& raw, const Context& where) {
+    header_line_ = line_no_;
+    header_ = split(line, ',');
+    read_type(where);
+    read_type_keys(raw);
+    read_columns(where);
+    if (set_.type == MeasurementType::laser && !set_.meta("line").empty()) {
+      line_axis_ = set_.meta("axis")[0];
+      const auto parts = split(set_.meta("line"), ',');
+      const Context at_line{file_, key_line("line"), raw};
+      for (int k = 0; k < 2; ++k) line_mm_[k] = number(parts[static_cast<std::size_t>(k)], at_line, "line");
     }
-    if (header.empty()) {
-      header_line = line_no;
-      header = split(line, ',');
-      const std::string type = set.meta("type");
-      if (type.empty()) where.fail("missing '# type:' line before the header (ballbar, sphere or laser)");
-      if (type == "ballbar") set.type = MeasurementType::ballbar;
-      else if (type == "sphere") set.type = MeasurementType::sphere;
-      else if (type == "laser") set.type = MeasurementType::laser;
-      else throw InputError({file_name, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
-      // Keys of the type.
-      const Context kw{file_name, 0, raw};
-      auto at_key = [&](const std::string& key) { return Context{file_name, key_line(key), raw}; };
-      (void)kw;
-      switch (set.type) {
-        case MeasurementType::ballbar:
-          set.table_ball_mm = vector3(require("table_ball"), at_key("table_ball"), "table_ball");
-          set.tool_ball_mm = vector3(require("tool_ball"), at_key("tool_ball"), "tool_ball");
-          set.bar_length_mm = number(require("bar_length"), at_key("bar_length"), "bar_length");
-          break;
-        case MeasurementType::sphere: set.sphere_mm = vector3(require("sphere"), at_key("sphere"), "sphere"); break;
-        case MeasurementType::laser: {
-          const std::string c = require("component");
-          if (c.size() != 1 || (c[0] != 'X' && c[0] != 'Y' && c[0] != 'Z'))
-            throw InputError({file_name, key_line("component"), 0}, fmt::format("component must be X, Y or Z, found '{}'", c));
-          set.component = c[0];
-          set.tool_point_mm = vector3(require("tool_point"), at_key("tool_point"), "tool_point");
-          const std::string moving = set.meta("axis");
-          if (!moving.empty() && (moving.size() != 1 || moving[0] < 'X' || moving[0] > 'Z'))
-            throw InputError({file_name, key_line("axis"), 0}, fmt::format("axis must be X, Y or Z, found '{}'", moving));
-          if (!set.meta("line").empty()) {
-            if (moving.empty()) throw InputError({file_name, key_line("line"), 0}, "'# line:' needs '# axis:' (the moving axis)");
-            const auto parts = split(set.meta("line"), ',');
-            if (parts.size() != 2)
-              throw InputError({file_name, key_line("line"), 0},
-                               "expected two comma-separated numbers (mm) for 'line': the other two axes, XYZ order");
-            for (const auto& p : parts) number(p, at_key("line"), "line");
-          }
-          bool head = false;
-          for (const auto& a : m.axes) head = head || (a.is_rotary() && a.side == Side::tool);
-          if (head) require("tool_length");
-          break;
-        }
-      }
-      if (!set.meta("tool_length").empty())
-        set.tool_length_mm = number(set.meta("tool_length"), at_key("tool_length"), "tool_length");
-      // Columns.
-      for (std::size_t c = 0; c < header.size(); ++c) {
-        const std::string& h = header[c];
-        if (h == "t") t_col = static_cast<int>(c);
-        else if (h == "run") run_col = static_cast<int>(c);
-        else if (h == "approach" && set.type == MeasurementType::laser) approach_col = static_cast<int>(c);
-        else if (h.size() == 1 && m.index_of(h[0]) >= 0) {
-          if (column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] >= 0) where.fail("column " + h + " given twice");
-          column_of_axis[static_cast<std::size_t>(m.index_of(h[0]))] = static_cast<int>(c);
-        }
-      }
-      if (t_col < 0) where.fail("missing column 't' (time, s)");
-      if (set.type == MeasurementType::laser && run_col < 0) where.fail("missing column 'run' of a laser file");
-      for (std::size_t a = 0; a < m.axes.size(); ++a) {
-        const bool optional = set.type == MeasurementType::laser && m.axes[a].is_rotary();
-        if (column_of_axis[a] < 0 && !optional)
-          where.fail(fmt::format("missing column {} (axis of machine '{}')", m.axes[a].letter, m.name));
-      }
-      int found = 0;
-      for (const std::string& v : set.value_columns()) {
-        int col = -1;
-        for (std::size_t c = 0; c < header.size(); ++c)
-          if (header[c] == v) col = static_cast<int>(c);
-        value_cols.push_back(col);
-        found += col >= 0;
-      }
-      if (found == 0 && options.allow_plan) {
-        set.has_values = false;
-      } else if (found != static_cast<int>(value_cols.size())) {
-        std::string names;
-        for (const auto& v : set.value_columns()) names += (names.empty() ? "" : ", ") + v;
-        where.fail(fmt::format("missing value column(s) of a {} file: expected {}", to_string(set.type), names));
-      }
-      if (set.type == MeasurementType::laser && !set.meta("line").empty()) {
-        line_axis = set.meta("axis")[0];
-        const auto parts = split(set.meta("line"), ',');
-        for (int k = 0; k < 2; ++k) line_mm[k] = number(parts[static_cast<std::size_t>(k)], at_key("line"), "line");
-      }
-      continue;
+  }
+
+  void read_type(const Context& where) {
+    const std::string type = set_.meta("type");
+    if (type.empty()) where.fail("missing '# type:' line before the header (ballbar, sphere or laser)");
+    if (type == "ballbar") set_.type = MeasurementType::ballbar;
+    else if (type == "sphere") set_.type = MeasurementType::sphere;
+    else if (type == "laser") set_.type = MeasurementType::laser;
+    else throw InputError({file_, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
+  }
+
+  /// The keys of the type (table_ball, sphere, component, ...) and the tool length.
+  void read_type_keys(const std::string& raw) {
+    auto at_key = [&](const std::string& key) { return Context{file_, key_line(key), raw}; };
+    switch (set_.type) {
+      case MeasurementType::ballbar:
+        set_.table_ball_mm = vector3(require("table_ball"), at_key("table_ball"), "table_ball");
+        set_.tool_ball_mm = vector3(require("tool_ball"), at_key("tool_ball"), "tool_ball");
+        set_.bar_length_mm = number(require("bar_length"), at_key("bar_length"), "bar_length");
+        break;
+      case MeasurementType::sphere: set_.sphere_mm = vector3(require("sphere"), at_key("sphere"), "sphere"); break;
+      case MeasurementType::laser: read_laser_keys(raw); break;
     }
+    if (!set_.meta("tool_length").empty())
+      set_.tool_length_mm = number(set_.meta("tool_length"), at_key("tool_length"), "tool_length");
+  }
+
+  void read_laser_keys(const std::string& raw) {
+    auto at_key = [&](const std::string& key) { return Context{file_, key_line(key), raw}; };
+    const std::string c = require("component");
+    if (c.size() != 1 || (c[0] != 'X' && c[0] != 'Y' && c[0] != 'Z'))
+      throw InputError({file_, key_line("component"), 0}, fmt::format("component must be X, Y or Z, found '{}'", c));
+    set_.component = c[0];
+    set_.tool_point_mm = vector3(require("tool_point"), at_key("tool_point"), "tool_point");
+    const std::string moving = set_.meta("axis");
+    if (!moving.empty() && (moving.size() != 1 || moving[0] < 'X' || moving[0] > 'Z'))
+      throw InputError({file_, key_line("axis"), 0}, fmt::format("axis must be X, Y or Z, found '{}'", moving));
+    if (!set_.meta("line").empty()) {
+      if (moving.empty()) throw InputError({file_, key_line("line"), 0}, "'# line:' needs '# axis:' (the moving axis)");
+      const auto parts = split(set_.meta("line"), ',');
+      if (parts.size() != 2)
+        throw InputError({file_, key_line("line"), 0},
+                         "expected two comma-separated numbers (mm) for 'line': the other two axes, XYZ order");
+      for (const auto& p : parts) number(p, at_key("line"), "line");
+    }
+    bool head = false;
+    for (const auto& a : m_.axes) head = head || (a.is_rotary() && a.side == Side::tool);
+    if (head) require("tool_length");
+  }
+
+  /// The columns of t, run, approach, every axis and the values (none in a plan, when allowed).
+  void read_columns(const Context& where) {
+    for (std::size_t c = 0; c < header_.size(); ++c) {
+      const std::string& h = header_[c];
+      if (h == "t") t_col_ = static_cast<int>(c);
+      else if (h == "run") run_col_ = static_cast<int>(c);
+      else if (h == "approach" && set_.type == MeasurementType::laser) approach_col_ = static_cast<int>(c);
+      else if (h.size() == 1 && m_.index_of(h[0]) >= 0) {
+        if (column_of_axis_[static_cast<std::size_t>(m_.index_of(h[0]))] >= 0) where.fail("column " + h + " given twice");
+        column_of_axis_[static_cast<std::size_t>(m_.index_of(h[0]))] = static_cast<int>(c);
+      }
+    }
+    if (t_col_ < 0) where.fail("missing column 't' (time, s)");
+    if (set_.type == MeasurementType::laser && run_col_ < 0) where.fail("missing column 'run' of a laser file");
+    for (std::size_t a = 0; a < m_.axes.size(); ++a) {
+      const bool optional = set_.type == MeasurementType::laser && m_.axes[a].is_rotary();
+      if (column_of_axis_[a] < 0 && !optional)
+        where.fail(fmt::format("missing column {} (axis of machine '{}')", m_.axes[a].letter, m_.name));
+    }
+    int found = 0;
+    for (const std::string& v : set_.value_columns()) {
+      int col = -1;
+      for (std::size_t c = 0; c < header_.size(); ++c)
+        if (header_[c] == v) col = static_cast<int>(c);
+      value_cols_.push_back(col);
+      found += col >= 0;
+    }
+    if (found == 0 && options_.allow_plan) {
+      set_.has_values = false;
+    } else if (found != static_cast<int>(value_cols_.size())) {
+      std::string names;
+      for (const auto& v : set_.value_columns()) names += (names.empty() ? "" : ", ") + v;
+      where.fail(fmt::format("missing value column(s) of a {} file: expected {}", to_string(set_.type), names));
+    }
+  }
+
+  void read_row(const std::string& raw, const Context& where) {
     const auto fields = split(raw, ',');
-    if (fields.size() != header.size())
-      where.fail(fmt::format("expected {} fields as in the header (line {}), found {}", header.size(), header_line,
+    if (fields.size() != header_.size())
+      where.fail(fmt::format("expected {} fields as in the header (line {}), found {}", header_.size(), header_line_,
                              fields.size()));
     MeasurementRow row;
-    row.line = line_no;
-    row.time_s = number(fields[static_cast<std::size_t>(t_col)], where, "t");
-    if (!set.rows.empty() && !(row.time_s > set.rows.back().time_s))
+    row.line = line_no_;
+    row.time_s = number(fields[static_cast<std::size_t>(t_col_)], where, "t");
+    if (!set_.rows.empty() && !(row.time_s > set_.rows.back().time_s))
       where.fail(fmt::format("time t = {} s is not after the previous row's t = {} s (line {}): rows must be in "
                              "recording order with increasing time stamps; sort the rows or correct the time column",
-                             fields[static_cast<std::size_t>(t_col)], set.rows.back().time_s, set.rows.back().line),
-                 column_of_field(raw, static_cast<std::size_t>(t_col)));
-    for (std::size_t a = 0; a < m.axes.size(); ++a) {
-      if (column_of_axis[a] < 0) continue;
-      const double v = number(fields[static_cast<std::size_t>(column_of_axis[a])], where, std::string(1, m.axes[a].letter));
-      row.command[static_cast<int>(a)] = m.axes[a].is_rotary() ? deg_to_rad(v) : v;
+                             fields[static_cast<std::size_t>(t_col_)], set_.rows.back().time_s, set_.rows.back().line),
+                 column_of_field(raw, static_cast<std::size_t>(t_col_)));
+    for (std::size_t a = 0; a < m_.axes.size(); ++a) {
+      if (column_of_axis_[a] < 0) continue;
+      const double v = number(fields[static_cast<std::size_t>(column_of_axis_[a])], where, std::string(1, m_.axes[a].letter));
+      row.command[static_cast<int>(a)] = m_.axes[a].is_rotary() ? deg_to_rad(v) : v;
     }
-    if (run_col >= 0) {
-      const double r = number(fields[static_cast<std::size_t>(run_col)], where, "run");
+    if (run_col_ >= 0) {
+      const double r = number(fields[static_cast<std::size_t>(run_col_)], where, "run");
       if (r != std::floor(r)) where.fail("run must be an integer");
       row.run = static_cast<int>(r);
     }
-    if (approach_col >= 0) {
-      const std::string& a = fields[static_cast<std::size_t>(approach_col)];
+    if (approach_col_ >= 0) {
+      const std::string& a = fields[static_cast<std::size_t>(approach_col_)];
       if (a == "1" || a == "+1") row.approach = 1;
       else if (a == "-1") row.approach = -1;
       else where.fail(fmt::format("approach must be +1 (from below) or -1 (from above), found '{}'", a));
     }
-    if (line_axis != 0) {
-      int k = 0;
-      for (char other : {'X', 'Y', 'Z'}) {
-        if (other == line_axis) continue;
-        const int ai = m.index_of(other);
-        if (ai >= 0 && std::abs(row.command[ai] - line_mm[k]) > 1e-4)
-          where.fail(fmt::format("{} = {} is off the line of the file header ('# line:' says {})", other,
-                                 row.command[ai], line_mm[k]));
-        ++k;
-      }
-    }
-    if (set.has_values)
-      for (std::size_t v = 0; v < value_cols.size(); ++v) {
-        const auto col = static_cast<std::size_t>(value_cols[v]);
-        const double value = number(fields[col], where, header[col]);
-        row.value[static_cast<Eigen::Index>(v)] = value;
-        const ReadingRange& range = reading_range(set.type);
-        const double deviation = set.type == MeasurementType::ballbar ? value - set.bar_length_mm : value;
-        if (!(std::abs(deviation) <= range.max_deviation))
-          where.fail(fmt::format("{} = {} is {:g} {} from {}, beyond what the instrument can read (at most {:g} {}): a "
-                                 "typing or export error; correct or delete the row",
-                                 header[col], fields[col], std::abs(deviation), range.unit,
-                                 set.type == MeasurementType::ballbar ? "the bar length" : "zero", range.max_deviation,
-                                 range.unit),
-                     column_of_field(raw, col));
-      }
-    set.rows.push_back(row);
+    if (line_axis_ != 0) check_on_line(row, where);
+    if (set_.has_values) read_values(row, fields, raw, where);
+    set_.rows.push_back(row);
   }
-  if (header.empty()) throw InputError({file_name, line_no, 0}, "no header line (expected e.g. 't,X,Y,Z,A,C,L')");
-  if (set.rows.empty())
-    throw InputError({file_name, header_line, 0},
-                     "no rows after the header: the file holds no measurements (was the export cut short?)");
-  return set;
+
+  /// A laser row's other two axes on the file's '# line:'.
+  void check_on_line(const MeasurementRow& row, const Context& where) const {
+    int k = 0;
+    for (char other : {'X', 'Y', 'Z'}) {
+      if (other == line_axis_) continue;
+      const int ai = m_.index_of(other);
+      if (ai >= 0 && std::abs(row.command[ai] - line_mm_[k]) > kOffLineMm)
+        where.fail(fmt::format("{} = {} is off the line of the file header ('# line:' says {})", other,
+                               row.command[ai], line_mm_[k]));
+      ++k;
+    }
+  }
+
+  /// The values of a row, each within what the instrument can read.
+  void read_values(MeasurementRow& row, const std::vector<std::string>& fields, const std::string& raw,
+                   const Context& where) const {
+    for (std::size_t v = 0; v < value_cols_.size(); ++v) {
+      const auto col = static_cast<std::size_t>(value_cols_[v]);
+      const double value = number(fields[col], where, header_[col]);
+      row.value[static_cast<Eigen::Index>(v)] = value;
+      const ReadingRange& range = reading_range(set_.type);
+      const double deviation = set_.type == MeasurementType::ballbar ? value - set_.bar_length_mm : value;
+      if (!(std::abs(deviation) <= range.max_deviation))
+        where.fail(fmt::format("{} = {} is {:g} {} from {}, beyond what the instrument can read (at most {:g} {}): a "
+                               "typing or export error; correct or delete the row",
+                               header_[col], fields[col], std::abs(deviation), range.unit,
+                               set_.type == MeasurementType::ballbar ? "the bar length" : "zero", range.max_deviation,
+                               range.unit),
+                   column_of_field(raw, col));
+    }
+  }
+
+  const std::string& file_;
+  const Machine& m_;
+  const CsvReadOptions& options_;
+  MeasurementSet set_;
+  int line_no_ = 0;
+  std::vector<int> meta_lines_;
+  std::vector<std::string> header_;
+  int header_line_ = 0;
+  std::vector<int> column_of_axis_;
+  int t_col_ = -1, run_col_ = -1, approach_col_ = -1;
+  char line_axis_ = 0;
+  double line_mm_[2] = {0.0, 0.0};
+  std::vector<int> value_cols_;
+};
+
+}  // namespace
+
+MeasurementSet parse_measurement_csv(const std::string& text, const std::string& file_name, const Machine& m,
+                                     const CsvReadOptions& options) {
+  return CsvParser(file_name, m, options).parse(text);
 }
 
 MeasurementSet read_measurement_csv(const std::string& path, const Machine& m, const CsvReadOptions& options) {

@@ -104,8 +104,26 @@ class Interpreter {
   std::vector<std::string> take_notices();
 
  private:
-  struct Words;
+  struct Words;    ///< the words of one block by letter
+  struct Context;  ///< the block being applied, its line, how to fail on it
+  struct Codes;    ///< its G and M codes by modal group
   void notice_once(const std::string& key, int line, int column, const std::string& text);
+  // the steps of apply(), in order
+  Words read_words(const Context& cx) const;
+  void check_letter(const Context& cx, const Word& word) const;
+  void group_g_codes(const Context& cx, const Words& w, Codes& codes);
+  void group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx);
+  void apply_units(const Context& cx, const Codes& codes);
+  void apply_feed_spindle_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void apply_cutter_comp(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void apply_rtcp(const Context& cx, const Codes& codes);
+  void apply_motion_mode(const Codes& codes, BlockEffect& fx);
+  void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
+  void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
+  void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx) const;
+  void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
 
   std::string file_;
   std::string axis_letters_;

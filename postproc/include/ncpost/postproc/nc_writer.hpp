@@ -58,8 +58,13 @@ class NcWriter {
   void comment(const std::string& text);
   /// A raw block (e.g. "M3 S12000"), numbered if the dialect numbers lines.
   void block(const std::string& words);
+  /// A raw block with `note` as a comment at its end ("M0 (mount the probe)", Klartext
+  /// "M0 ; mount the probe"), sanitised as every comment; no comment when `note` is empty.
+  void block(const std::string& words, const std::string& note);
   /// Writes a motion block; false (nothing written) if no axis word changes.
-  bool motion(const NcMotion& m);
+  bool motion(const NcMotion& m) { return motion(m, kNoNote); }
+  /// A motion block with `note` as a comment at its end (as `block`).
+  bool motion(const NcMotion& m, const std::string& note);
   /// Writes a circular block; the rotary words stay as they are.
   void arc(const NcArc& a);
   /// Writes one canned-cycle hole, continuing the modal cycle when `continues(c)`; the tool ends at
@@ -105,8 +110,11 @@ class NcWriter {
   const std::string& letters() const { return letters_; }
 
  private:
+  inline static const std::string kNoNote;
   void start_line();
   void end_line();
+  /// `note` as a comment at the end of the block being written (nothing when empty).
+  void append_note(const std::string& note);
   /// A block as is (no held tool change first).
   void write_block(const std::string& words);
   /// The held tool change, with `rpm` (empty: the speed in force, or none).

@@ -40,6 +40,7 @@ struct LaserPlanOptions {
   double feed_mm_min = 2000.0;         ///< NC program: feed between targets
   double dt_s = 6.0;                   ///< time per target (move + dwell + reading)
   double t0_s = 0.0;
+  CommandRounding rounding;            ///< the targets, as the NC program writes them
 
   /// Empty if valid, else what is wrong.
   std::string validate() const;
@@ -57,8 +58,9 @@ std::vector<double> laser_targets(const Machine& machine, int j, const LaserPlan
 /// Throws std::invalid_argument if the machine does not fit (no limits, bad options).
 std::vector<NamedPlan> plan_laser(const Machine& machine, const LaserPlanOptions& options);
 
-/// The NC program (G90 G21) running the sets in order, with the ISO 230-2 overshoot before each
-/// pass and a dwell at each target; M0 where the optics are to be set up.
-std::string laser_program(const Machine& machine, const std::vector<NamedPlan>& plans, const LaserPlanOptions& options);
+/// The NC program (records for the NC writer, plan_program.hpp) running the sets in order, with
+/// the ISO 230-2 overshoot before each pass and a dwell at each target; a program stop where the
+/// optics are to be set up.
+PlanProgram laser_program(const Machine& machine, const std::vector<NamedPlan>& plans, const LaserPlanOptions& options);
 
 }  // namespace ncpost::comp

@@ -22,10 +22,19 @@
 #include <vector>
 
 #include "ncpost/compensation/measurement.hpp"
+#include "ncpost/compensation/plan_program.hpp"
 
 namespace ncpost::comp {
 
+/// The quanta the commands of a plan are rounded to: those of the NC program's words (10^-decimals
+/// of its dialect), so that the CSV rows are the values the control reads.
+struct CommandRounding {
+  double linear_mm = 1e-5;
+  double angle_deg = 1e-5;
+};
+
 struct BallbarPlanOptions {
+  CommandRounding rounding;
   std::vector<double> heights_mm{250.0};
   double bar_length_mm = 100.0;
   int points = 500;     ///< rows per height (both halves)
@@ -35,6 +44,7 @@ struct BallbarPlanOptions {
 };
 
 struct SpherePlanOptions {
+  CommandRounding rounding;
   Vec3d sphere_mm{120.0, 40.0, 80.0};
   std::vector<double> levels_deg{0, 30, 60, 90, 75, 45, 15};
   double step_deg = 30.0;
@@ -43,6 +53,7 @@ struct SpherePlanOptions {
 };
 
 struct BcHeadPlanOptions {
+  CommandRounding rounding;
   std::vector<double> tool_lengths_mm{100.0, 250.0};
   double bar_length_mm = 100.0;
   Vec3d point_mm = Vec3d::Zero();  ///< where the tool ball is held (M)
@@ -70,18 +81,18 @@ struct PlanProgramOptions {
   double turn_tolerance_mm = 0.5;    ///< sphere: how far a turn at the clearance may leave its target
 };
 
-/// The NC program (ISO G-code, G90 G21) that runs the sets in order. Each set: set-up G0 to its
-/// start (instrument off), `M0` to mount the instrument, the measuring moves, `M0` to remove it;
-/// set-up moves only after that stop. With the instrument on every move is guided (plan_moves.hpp):
-///  - continuous sets (ballbar 4-axis): G93 inverse-time G1 through the rows;
+/// The NC program (records for the NC writer, plan_program.hpp) that runs the sets in order. Each
+/// set: a set-up rapid to its start (instrument off), a stop to mount the instrument, the
+/// measuring moves, a stop to remove it; set-up moves only after that stop. With the instrument on every move is guided (plan_moves.hpp):
+///  - continuous sets (ballbar 4-axis): inverse-time moves (G93 G1) through the rows, timed;
 ///  - static ballbar sets (bc-head): a dwell to read each row, guided turns holding the tool ball
 ///    (the bar keeps its length within guide_tolerance_mm);
 ///  - sphere sets: the stylus comes to each probing pose along the probe axis (G1 with the rotary
 ///    axes still), dwells, retracts along the probe axis to clearance_mm + turn_tolerance_mm from
 ///    the centre, then turns guided on that distance (never nearer than clearance_mm).
-std::string plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
+PlanProgram plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
                          const PlanProgramOptions& options);
-inline std::string plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
+inline PlanProgram plan_program(const Machine& machine, const std::vector<NamedPlan>& plans, const std::string& title,
                                 bool continuous) {
   PlanProgramOptions o;
   o.continuous = continuous;
