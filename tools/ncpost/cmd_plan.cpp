@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -19,17 +19,6 @@ namespace ncpost::cli {
 
 namespace {
 
-struct PlanArgs {
-  std::string machine, test, output;
-  std::vector<double> heights, tool_lengths, levels;
-  std::optional<double> bar_length, dt, t0, step;
-  int points = 500;
-  double clearance_mm = 30.0;
-  std::string sphere;
-  bool seed_directions = false;
-  comp::LaserPlanOptions laser;
-};
-
 Vec3d parse_vec(const std::string& s, const char* option) {
   std::stringstream in(s);
   Vec3d v;
@@ -39,6 +28,66 @@ Vec3d parse_vec(const std::string& s, const char* option) {
     throw UsageError(fmt::format("{}: expected X,Y,Z in mm, each finite and within +-100000, got '{}'", option, s));
   return v;
 }
+
+/// The serial machines' plans (plans.hpp, laser_plan.hpp).
+PlanOutput plan_serial(const PlanArgs& given) {
+  PlanArgs a = given;
+  const Machine m = load_machine(a.machine);
+  std::vector<comp::NamedPlan> plans;
+  comp::PlanProgramOptions program;
+  try {
+    if (a.test == "ballbar-4axis") {
+      comp::BallbarPlanOptions o;
+      if (!a.heights.empty()) o.heights_mm = a.heights;
+      if (a.bar_length) o.bar_length_mm = *a.bar_length;
+      if (a.dt) o.dt_s = *a.dt;
+      if (a.t0) o.t0_s = *a.t0;
+      o.points = a.points;
+      plans = comp::plan_ballbar_4axis(m, o);
+      program.continuous = true;
+    } else if (a.test == "sphere") {
+      comp::SpherePlanOptions o;
+      if (!a.sphere.empty()) o.sphere_mm = parse_vec(a.sphere, "--sphere");
+      if (!a.levels.empty()) o.levels_deg = a.levels;
+      if (a.step) o.step_deg = *a.step;
+      if (a.dt) o.dt_s = *a.dt;
+      if (a.t0) o.t0_s = *a.t0;
+      plans = comp::plan_sphere(m, o);
+      program.clearance_mm = a.clearance_mm;
+    } else if (a.test == "laser") {
+      comp::LaserPlanOptions o = a.laser;
+      if (a.dt) o.dt_s = *a.dt;
+      if (a.t0) o.t0_s = *a.t0;
+      if (!a.tool_lengths.empty()) o.tool_length_mm = a.tool_lengths.front();
+      a.laser = o;
+      if (const std::string why = o.validate(); !why.empty()) throw UsageError("plan laser: " + why);
+      plans = comp::plan_laser(m, o);
+    } else {
+      comp::BcHeadPlanOptions o;
+      if (!a.tool_lengths.empty()) o.tool_lengths_mm = a.tool_lengths;
+      if (a.bar_length) o.bar_length_mm = *a.bar_length;
+      if (a.dt) o.dt_s = *a.dt;
+      if (a.t0) o.t0_s = *a.t0;
+      o.b_test_along_y = !a.seed_directions;
+      plans = comp::plan_bc_head(m, o);
+    }
+  } catch (const std::invalid_argument& e) {
+    throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
+  }
+  std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
+  try {
+    program_text = a.test == "laser" ? comp::laser_program(m, plans, a.laser)
+                                      : comp::plan_program(m, plans, "ncpost plan " + a.test, program);
+  } catch (const std::invalid_argument& e) {
+    throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
+  }
+  PlanOutput out;
+  for (const auto& p : plans) out.sets.push_back({p.name, comp::format_measurement_csv(p.set, m), p.set.rows.size()});
+  out.program = std::move(program_text);
+  return out;
+}
+
+const ByKind<PlanSteps> kPlanSteps{{plan_serial}, {plan_trr_xy}};
 
 }  // namespace
 
@@ -97,70 +146,21 @@ void add_plan(CLI::App& app, Action& action) {
         if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
         check_files({{"-o (program)", stem + ".nc"}, {"-o (plan)", stem + ".csv"}}, {{"--machine", a->machine}});
       }
-      if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
-      const Machine m = load_machine(a->machine);
-      std::vector<comp::NamedPlan> plans;
-      comp::PlanProgramOptions program;
-      try {
-        if (a->test == "ballbar-4axis") {
-          comp::BallbarPlanOptions o;
-          if (!a->heights.empty()) o.heights_mm = a->heights;
-          if (a->bar_length) o.bar_length_mm = *a->bar_length;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          o.points = a->points;
-          plans = comp::plan_ballbar_4axis(m, o);
-          program.continuous = true;
-        } else if (a->test == "sphere") {
-          comp::SpherePlanOptions o;
-          if (!a->sphere.empty()) o.sphere_mm = parse_vec(a->sphere, "--sphere");
-          if (!a->levels.empty()) o.levels_deg = a->levels;
-          if (a->step) o.step_deg = *a->step;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          plans = comp::plan_sphere(m, o);
-          program.clearance_mm = a->clearance_mm;
-        } else if (a->test == "laser") {
-          comp::LaserPlanOptions o = a->laser;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          if (!a->tool_lengths.empty()) o.tool_length_mm = a->tool_lengths.front();
-          a->laser = o;
-          if (const std::string why = o.validate(); !why.empty()) throw UsageError("plan laser: " + why);
-          plans = comp::plan_laser(m, o);
-        } else {
-          comp::BcHeadPlanOptions o;
-          if (!a->tool_lengths.empty()) o.tool_lengths_mm = a->tool_lengths;
-          if (a->bar_length) o.bar_length_mm = *a->bar_length;
-          if (a->dt) o.dt_s = *a->dt;
-          if (a->t0) o.t0_s = *a->t0;
-          o.b_test_along_y = !a->seed_directions;
-          plans = comp::plan_bc_head(m, o);
-        }
-      } catch (const std::invalid_argument& e) {
-        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
-      }
-      std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
-      try {
-        program_text = a->test == "laser" ? comp::laser_program(m, plans, a->laser)
-                                          : comp::plan_program(m, plans, "ncpost plan " + a->test, program);
-      } catch (const std::invalid_argument& e) {
-        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
-      }
+      const PlanOutput plan = kPlanSteps[machine_kind(a->machine)].make(*a);
       std::string stem = a->output;
       if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
-      const auto csv_name = [&](const comp::NamedPlan& p) {
-        return plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+      const auto csv_name = [&](const PlanOutput::Set& p) {
+        return plan.sets.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
       };
       std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
-      for (const auto& p : plans) outputs.push_back({"-o (plan)", csv_name(p)});
+      for (const auto& p : plan.sets) outputs.push_back({"-o (plan)", csv_name(p)});
       check_files(outputs, {{"--machine", a->machine}});
-      for (const auto& p : plans) {
+      for (const auto& p : plan.sets) {
         const std::string file = csv_name(p);
-        write_file_atomically(file, comp::format_measurement_csv(p.set, m));
-        fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
+        write_file_atomically(file, p.csv);
+        fmt::print("plan {}: {} rows -> {}\n", p.name, p.rows, file);
       }
-      write_file_atomically(stem + ".nc", program_text);
+      write_file_atomically(stem + ".nc", plan.program);
       fmt::print("NC program -> {}.nc\n", stem);
       return 0;
     };
