@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "ncpost/kinematics/trr_xy_inverse.hpp"
 #include "ncpost/postproc/trr_solver.hpp"
 
 namespace ncpost::preview {
@@ -14,8 +15,15 @@ trr::Block trr_block(const nonlinear::ClBlock& b) {
 
 }  // namespace
 
-void TrrEvaluator::evaluate(BlockRow& row) const {
+trr::EvaluatorWork TrrEvaluator::work_at(const ClPoint& start) const {
   trr::EvaluatorWork work;
+  const trr::InverseOutcome at_start = trr::inverse(k_, start, origin_mm_, false);
+  if (at_start.ok()) work.warm_plate = at_start.machine_T_plate;
+  return work;
+}
+
+void TrrEvaluator::evaluate(BlockRow& row) const {
+  trr::EvaluatorWork work = work_at(row.cl.start);
   trr::BlockError e;
   try {
     e = evaluator_.evaluate(trr_block(row.cl), work);
@@ -33,7 +41,7 @@ void TrrEvaluator::evaluate(BlockRow& row) const {
 
 std::vector<double> TrrEvaluator::error_curve(const nonlinear::ClBlock& block, int samples) const {
   const trr::Block b = trr_block(block);
-  trr::EvaluatorWork work;
+  trr::EvaluatorWork work = work_at(block.start);
   std::vector<double> out;
   for (int k = 0; k <= samples; ++k) {
     const auto e = evaluator_.at(b, static_cast<double>(k) / samples, work);
