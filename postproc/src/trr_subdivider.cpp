@@ -98,7 +98,7 @@ class Cutter {
 class HarmonicCutter {
  public:
   HarmonicCutter(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& o)
-      : solver_(solver), dialect_(dialect), o_(o), evaluator_(solver.commanded(), solver.workpiece_origin_mm()) {
+      : solver_(solver), dialect_(dialect), evaluator_(solver.commanded(), solver.workpiece_origin_mm()) {
     options_.tolerance_mm = o.tolerance_mm;
   }
 
@@ -134,7 +134,6 @@ class HarmonicCutter {
  private:
   const TrrSolver& solver_;
   const Dialect& dialect_;
-  TrrSubdivision o_;
   nonlinear::HarmonicOptions options_;
   const trr::BlockEvaluator evaluator_;
   trr::EvaluatorWork work_;  ///< the post thread's forward solves (the cutter runs on it alone)

@@ -113,8 +113,8 @@ TEST_CASE("TRR-XY preview: --model of this machine previews its actual machine; 
 }
 
 TEST_CASE("TRR-XY preview of a path out of reach: exit 3 naming the line and the axis, as post") {
-  // the blocks before it lean far from home (line 614: 40-odd degrees): each is evaluated from its own
-  // start pose, not from home, where the forward solve would end beyond the links' reach
+  // the blocks before it lean far from home: each is evaluated from its own start pose; solved from
+  // home, the forward kinematics of the block at line 614 ended beyond the links' reach (exit 3 there)
   std::string out;
   CHECK(run("preview " + job() + "--csv tc_far.csv " + test::data("scenarios/public-clean/path.cls"), &out) == 3);
   CHECK(out.find("path.cls:729: V623.8594 is outside the limits [0, 600]") != std::string::npos);
