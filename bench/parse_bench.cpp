@@ -31,35 +31,17 @@
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
-#include "ncpost/postproc/gcode_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/fixed_format.hpp"
 #include "ncpost/postproc/post.hpp"
+#include "ac_trunnion_text.hpp"
 
 using namespace ncpost;
 using Clock = std::chrono::steady_clock;
 
 namespace {
 
-constexpr const char* kMachine = R"(
-[machine]
-name = "bench-ac-trunnion"
-chain = "w C' A' Y' b X Z t"
-[axes.X]
-type = "linear"
-[axes.Y]
-type = "linear"
-[axes.Z]
-type = "linear"
-[axes.A]
-type = "rotary"
-direction = [1, 0, 0]
-pivot = [0, 0, 0]
-limits = [-120, 120]
-[axes.C]
-type = "rotary"
-direction = [0, 0, 1]
-pivot = [0, 0, 0]
-)";
+const std::string kMachine = ncpost::testing::ac_trunnion_toml("bench-ac-trunnion");
 
 /// A five-axis machine-axis program: a swept surface, feeds changing now and then, comments.
 void generate(const std::string& path, long blocks) {
@@ -108,7 +90,7 @@ double seconds_since(Clock::time_point start) {
 Figures lex(const std::string& path) {
   const auto start = Clock::now();
   std::ifstream in(path, std::ios::binary);
-  gcode::LineSource source(in, path);
+  LineSource source(in, path, "a line of G-code");
   gcode::Block block;
   std::string_view line;
   long blocks = 0, words = 0;

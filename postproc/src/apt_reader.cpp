@@ -6,7 +6,7 @@
 #include <cmath>
 #include <deque>
 
-#include "ncpost/postproc/apt_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/apt_nurbs.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 #include "ncpost/postproc/apt_cycle.hpp"
@@ -71,7 +71,7 @@ std::size_t knot_with_control_point(const std::string& statement) {
 }
 
 struct AptReader::State {
-  AptLineSource lines;
+  LineSource lines;
   std::string file;
   ReaderOptions options;
   double scale = 1.0;  // mm per file unit
@@ -109,7 +109,7 @@ struct AptReader::State {
   };
   std::optional<NurbsBlock> nurbs;
 
-  State(std::istream& i, std::string f, ReaderOptions o) : lines(i, f), file(std::move(f)), options(o) {
+  State(std::istream& i, std::string f, ReaderOptions o) : lines(i, f, "APT CL statements, one per line"), file(std::move(f)), options(o) {
     if (o.default_inch) scale = kMmPerInch;
     if (!(options.curve_tolerance_mm > 0.0) || !std::isfinite(options.curve_tolerance_mm))
       throw InputError({file, 0, 0}, "the curve tolerance must be a positive number of mm");

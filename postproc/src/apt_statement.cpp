@@ -18,7 +18,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "ncpost/postproc/apt_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
 
 namespace ncpost::cl {

@@ -14,11 +14,13 @@
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
-#include "ncpost/postproc/gcode_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/gcode_modal.hpp"
 
 namespace ncpost::gcode {
 namespace {
+
+constexpr const char* kWhatALineIs = "a line of G-code";
 
 std::string axis_letters_of(const Machine& m) {
   std::string s = "XYZ";
@@ -85,7 +87,7 @@ struct GcodeClReader::State {
   std::vector<std::string> notices;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, GcodeReaderOptions o)
-      : source(in, f), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch) {
+      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch) {
     for (int k = 0; k < rotaries() && k < 2; ++k) {
       const std::string letters = "XYZABC";
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(letters.find(machine.rotary(k).letter));

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "ncpost/postproc/gcode_block.hpp"
-#include "ncpost/postproc/gcode_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -26,7 +26,7 @@ bool switches_rtcp_on(const Block& b) {
 
 bool looks_like_gcode(std::string_view head) {
   std::istringstream in{std::string(head)};
-  LineSource source(in, "<head>");
+  LineSource source(in, "<head>", "a line of G-code");
   Block block;
   std::string_view line;
   int meaningful = 0;
@@ -44,7 +44,7 @@ bool looks_like_gcode(std::string_view head) {
 }
 
 InputKind scan_input_kind(std::istream& in, const std::string& file_name) {
-  LineSource source(in, file_name);
+  LineSource source(in, file_name, "a line of G-code");
   Block block;
   std::string_view line;
   while (source.next(line)) {

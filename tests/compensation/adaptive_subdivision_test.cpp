@@ -43,11 +43,7 @@ double reexecute(const Machine& m, const Setup& s, const ClBlock& b, const Split
 TEST_CASE("adaptive subdivision of the seed 001 segment", "[adaptive][seed001]") {
   const Machine m = test::machine_file("bv100.toml");
   const Setup s;
-  AxisPosition previous;
-  previous.rotary_rad = Eigen::Vector2d(0.0, kPi);
-  const AxisPosition q0 = *solve(m, test::seed001_start(), s, previous).position;
-  const AxisPosition q1 = *solve(m, test::seed001_end(), s, q0).position;
-  const ClBlock b{test::seed001_start(), test::seed001_end(), q0, q1};
+  const ClBlock b = test::seed001_block(m, s);
   for (double tolerance : {0.1, 0.005}) {
     AdaptiveOptions o;
     o.tolerance_mm = tolerance;
@@ -62,7 +58,7 @@ TEST_CASE("adaptive subdivision of the seed 001 segment", "[adaptive][seed001]")
     CHECK(split.max_error_mm <= tolerance);
     CHECK(check <= tolerance * 1.001);
     CHECK(split.output_blocks() <= 1.25 * ideal);
-    CHECK(split.nodes.back().q.rotary_rad == q1.rotary_rad);
+    CHECK(split.nodes.back().q.rotary_rad == b.to.rotary_rad);
   }
 }
 

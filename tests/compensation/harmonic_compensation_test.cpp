@@ -14,11 +14,7 @@ using namespace ncpost::nonlinear;
 TEST_CASE("harmonic compensation of the seed 001 segment", "[harmonic][seed001]") {
   const Machine m = test::machine_file("bv100.toml");
   const Setup s;
-  AxisPosition previous;
-  previous.rotary_rad = Eigen::Vector2d(0.0, kPi);
-  const AxisPosition q0 = *solve(m, test::seed001_start(), s, previous).position;
-  const AxisPosition q1 = *solve(m, test::seed001_end(), s, q0).position;
-  const ClBlock b{test::seed001_start(), test::seed001_end(), q0, q1};
+  const ClBlock b = test::seed001_block(m, s);
   for (double tolerance : {0.1, 0.005}) {
     HarmonicOptions o;
     o.tolerance_mm = tolerance;
@@ -29,7 +25,7 @@ TEST_CASE("harmonic compensation of the seed 001 segment", "[harmonic][seed001]"
                tolerance, split.output_blocks(), split.inserted_blocks(), split.max_error_mm,
                rad_to_deg(split.max_orientation_rad));
     CHECK(split.max_error_mm < 0.15);
-    CHECK(split.nodes.back().q.rotary_rad == q1.rotary_rad);
+    CHECK(split.nodes.back().q.rotary_rad == b.to.rotary_rad);
   }
   // the paper's own setting: shifted points at its 22 interpolation intervals
   HarmonicOptions dense;

@@ -26,6 +26,7 @@
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/preview_model_solver.hpp"
+#include "text_file.hpp"
 
 using namespace ncpost;
 
@@ -90,13 +91,6 @@ Setup job_setup() {
   setup.workpiece_origin_mm = Vec3d(0.0, 0.0, -450.0);  // table top 450 mm below the tool tip at home
   setup.tool_length_mm = 150.0;                         // not the laser's 100 mm: Abbe offsets differ
   return setup;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream f(path);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
 }
 
 /// Posts the test path (APT CL, or the G-code program `gcode_in` when given) with `solver` and
@@ -261,7 +255,7 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
   CHECK(after.rms_um * 10.0 <= before.rms_um);
   // G-code in, G-code out: the uncompensated program re-posted with the model
   const Volumetric regcode = execute_on(
-      truth, post_and_read(compensated, setup, "laser_volume_regcode.nc", read_text("laser_volume_nominal.nc")), cl, setup);
+      truth, post_and_read(compensated, setup, "laser_volume_regcode.nc", test::read_text_file("laser_volume_nominal.nc")), cl, setup);
   fmt::print("G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm; first block {:.2f} µm\n",
              regcode.max_um, regcode.rms_um, regcode.first_um);
   CHECK(regcode.max_um * 10.0 <= before.max_um);

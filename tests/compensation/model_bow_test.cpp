@@ -12,18 +12,12 @@
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "test_paths.hpp"
+#include "vmcl600_setup.hpp"
 
 using namespace ncpost;
 using namespace ncpost::nonlinear;
 
 namespace {
-
-Setup vmc_setup() {
-  Setup s;
-  s.workpiece_origin_mm = Vec3d(0, 0, -450);
-  s.tool_length_mm = 150;
-  return s;
-}
 
 ClPoint at(double x, double y, double z) {
   ClPoint p;
@@ -41,7 +35,7 @@ comp::MachineModel model_with(const Machine& m, const std::string& name, double 
 
 TEST_CASE("the error model's own bow: across the segment, c·(L/2)² for a quadratic straightness", "[adaptive][model]") {
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  const Setup s = vmc_setup();
+  const Setup s = test::vmcl600_setup();
   const double c = 4e-8;  // 1/mm: EY(x) = c·x²
   const ClBlock block{at(-150, 20, 10), at(150, 20, 10), *solve(m, at(-150, 20, 10), s, {}).position,
                       *solve(m, at(150, 20, 10), s, {}).position};
@@ -57,7 +51,7 @@ TEST_CASE("the error model's own bow: across the segment, c·(L/2)² for a quadr
 
 TEST_CASE("adaptive subdivision cuts a block to the model bow's bound below the tolerance", "[adaptive][model]") {
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  const Setup s = vmc_setup();
+  const Setup s = test::vmcl600_setup();
   const double c = 4e-8;
   const comp::MachineModel model = model_with(m, "EYX:p2", c);
   auto solver = [&](const ClPoint& cl, const AxisPosition& previous) {

@@ -18,21 +18,12 @@ const double kPaperError[23] = {0,      0.2971, 0.5663, 0.8076, 1.0209, -1,     
                                 1.5916, 1.6634, 1.7066, 1.7214, 1.7076, 1.6652, 1.5942, 1.4947,
                                 1.3666, 1.2099, 1.0248, 0.8111, 0.5691, 0.2987, 0};
 
-ClBlock seed_block(const Machine& m, const Setup& s) {
-  // the paper's branch: A = arccos(k) >= 0, C = atan2(i, j)
-  AxisPosition previous;
-  previous.rotary_rad = Eigen::Vector2d(0.0, kPi);
-  const AxisPosition q0 = *solve(m, test::seed001_start(), s, previous).position;
-  const AxisPosition q1 = *solve(m, test::seed001_end(), s, q0).position;
-  return {test::seed001_start(), test::seed001_end(), q0, q1};
-}
-
 }  // namespace
 
 TEST_CASE("seed 001 sample segment on the BV100: largest nonlinear error 1.7214 mm", "[nonlinear][seed001]") {
   const Machine m = test::machine_file("bv100.toml");
   const Setup s;
-  const ClBlock b = seed_block(m, s);
+  const ClBlock b = test::seed001_block(m, s);
   CHECK(rad_to_deg(b.from.rotary_rad[0]) == Approx(2.2087).margin(1e-3));
   CHECK(rad_to_deg(b.from.rotary_rad[1]) == Approx(162.2577).margin(1e-3));
   const NonlinearError e = nonlinear_error(m, s, b);
@@ -54,7 +45,7 @@ TEST_CASE("seed 001 sample segment on the BV100: largest nonlinear error 1.7214 
 TEST_CASE("seed 001 harmonic model: Emax·sin(πt) within about 0.1 mm of the exact curve", "[nonlinear][seed001]") {
   const Machine m = test::machine_file("bv100.toml");
   const Setup s;
-  const ClBlock b = seed_block(m, s);
+  const ClBlock b = test::seed001_block(m, s);
   const ExecutedBlock<> executed(m, s, b);
   const HarmonicModel midpoint = fit_harmonic(executed, HarmonicFit::midpoint);
   const HarmonicModel peak = fit_harmonic(executed, HarmonicFit::peak);

@@ -44,6 +44,15 @@ inline ClPoint seed001_start() {
 inline ClPoint seed001_end() {
   return {Vec3d(-192.4057, 14.5159, 8.9093), Vec3d(0.005393, -0.068922, 0.99960).normalized()};
 }
+/// The seed 001 segment as a block on `m`, on the paper's branch: A = arccos(k) >= 0,
+/// C = atan2(i, j) (the solution nearest A = 0, C = 180 deg).
+inline nonlinear::ClBlock seed001_block(const Machine& m, const Setup& s) {
+  AxisPosition previous;
+  previous.rotary_rad = Eigen::Vector2d(0.0, 3.14159265358979323846);
+  const AxisPosition q0 = *solve(m, seed001_start(), s, previous).position;
+  const AxisPosition q1 = *solve(m, seed001_end(), s, q0).position;
+  return {seed001_start(), seed001_end(), q0, q1};
+}
 
 /// One GOTO of a CL file with its source line.
 struct ClLine {

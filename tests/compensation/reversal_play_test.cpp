@@ -22,6 +22,7 @@
 #include "ncpost/postproc/executed_on.hpp"
 #include "ncpost/postproc/tolerance_subdivider.hpp"
 #include "test_paths.hpp"
+#include "vmcl600_setup.hpp"
 
 using namespace ncpost;
 
@@ -176,9 +177,7 @@ TEST_CASE("three-axis VMC with reversal of X, Y, Z: a dome posted with --toleran
   // 3 to 5 µm); a hemisphere of radius 120 mm in rings every 10 deg, points every 10 deg
   const std::string dir = test::source("samples/measurements/vmcl600/");
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  Setup setup;
-  setup.workpiece_origin_mm = Vec3d(0, 0, -450);
-  setup.tool_length_mm = 150;
+  const Setup setup = test::vmcl600_setup();
   const comp::MachineModel model(m, comp::read_model_json(dir + "model.json", &m).parameters);
   const comp::MachineModel truth(m, comp::read_model_json(dir + "truth.json", &m).parameters);
   REQUIRE(model.has_reversal());

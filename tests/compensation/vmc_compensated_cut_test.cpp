@@ -26,17 +26,11 @@
 #include "ncpost/postproc/executed_on.hpp"
 #include "ncpost/postproc/tolerance_subdivider.hpp"
 #include "test_paths.hpp"
+#include "vmcl600_setup.hpp"
 
 using namespace ncpost;
 
 namespace {
-
-Setup vmc_setup() {
-  Setup s;
-  s.workpiece_origin_mm = Vec3d(0, 0, -450);
-  s.tool_length_mm = 150;
-  return s;
-}
 
 /// A hemisphere of radius 120 mm around W's origin: rings every `step` deg of latitude, points
 /// every `step` deg of longitude.
@@ -68,7 +62,7 @@ struct Cut {
 /// (<= 0: none, one block per CL motion) and executes it on `truth`.
 Cut cut_on(const Machine& m, const comp::MachineModel* model, const comp::MachineModel& truth, const std::string& cl,
            double tolerance_mm) {
-  const Setup setup = vmc_setup();
+  const Setup setup = test::vmcl600_setup();
   std::istringstream in(cl);
   cl::AptReader reader(in, "cut.cls");
   const comp::MachineModel nominal(m, comp::ErrorParameters{});

@@ -11,30 +11,12 @@
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ac_trunnion_text.hpp"
 
 namespace {
 
 const ncpost::Machine& machine() {
-  static const ncpost::Machine m = ncpost::parse_machine(R"(
-[machine]
-name = "fuzz-ac"
-chain = "w C' A' Y' b X Z t"
-[axes.X]
-type = "linear"
-[axes.Y]
-type = "linear"
-[axes.Z]
-type = "linear"
-[axes.A]
-type = "rotary"
-direction = [1, 0, 0]
-pivot = [10, 25, 45]
-limits = [-120, 120]
-[axes.C]
-type = "rotary"
-direction = [0, 0, 1]
-pivot = [10, 20, 30]
-)", "fuzz-ac.toml");
+  static const ncpost::Machine m = ncpost::parse_machine(ncpost::testing::ac_trunnion_toml("fuzz-ac", "[10, 25, 45]", "[10, 20, 30]"), "fuzz-ac.toml");
   return m;
 }
 

@@ -4,8 +4,12 @@
 
 #include "ncpost/machines/machine_file.hpp"
 #include "test_paths.hpp"
+#include "text_edit.hpp"
+#include "ac_trunnion_text.hpp"
 
 using namespace ncpost;
+
+using ncpost::test::replaced;
 
 namespace {
 
@@ -18,31 +22,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-const char* const kGood = R"([machine]
-name = "t"
-chain = "w C' A' Y' b X Z t"
-[axes.X]
-type = "linear"
-[axes.Y]
-type = "linear"
-[axes.Z]
-type = "linear"
-[axes.A]
-type = "rotary"
-direction = [1, 0, 0]
-pivot = [0, 0, 0]
-limits = [-120, 120]
-[axes.C]
-type = "rotary"
-direction = [0, 0, 1]
-pivot = [0, 0, 0]
-)";
-
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const auto p = s.find(from);
-  REQUIRE(p != std::string::npos);
-  return s.replace(p, from.size(), to);
-}
+const std::string kGood = ncpost::testing::ac_trunnion_toml("t");
 
 }  // namespace
 

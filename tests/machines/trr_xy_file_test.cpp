@@ -9,8 +9,11 @@
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "test_paths.hpp"
+#include "text_edit.hpp"
 
 using namespace ncpost;
+
+using ncpost::test::replaced;
 
 namespace {
 
@@ -28,12 +31,6 @@ std::string error_of(const std::string& text) {
     return e.what();
   }
   return "";
-}
-
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const auto pos = s.find(from);
-  REQUIRE(pos != std::string::npos);
-  return s.replace(pos, from.size(), to);
 }
 
 }  // namespace

@@ -15,19 +15,15 @@
 #include "ncpost/postproc/dialect.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
+#include "text_edit.hpp"
 
 using namespace ncpost;
+
+using ncpost::test::replaced;
 
 namespace {
 
 const std::string kFanuc = test::read_text_file(test::source("postproc/dialects/fanuc.toml"));
-
-/// `text` with its first `from` replaced by `to` (REQUIREs that it occurs).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
 
 const std::string kCl = "UNITS/MM\nLOADTL/3\nRAPID\nGOTO/0,0,50\nFEDRAT/MMPM,400\nGOTO/10,0,50\nFINI\n";
 

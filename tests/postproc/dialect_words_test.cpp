@@ -18,18 +18,15 @@
 #include "ncpost/postproc/unreachable.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
+#include "text_edit.hpp"
 
 using namespace ncpost;
+
+using ncpost::test::replaced;
 
 namespace {
 
 const std::string kFanuc = test::read_text_file(test::source("postproc/dialects/fanuc.toml"));
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
 
 /// `cl` (APT) posted in `dialect` on `machine` (no header comments, program name T).
 std::string post_apt(const std::string& cl, const Dialect& dialect, const std::string& machine = "vmcl600",

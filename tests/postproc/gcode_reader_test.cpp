@@ -344,6 +344,10 @@ TEST_CASE("gcode reader: block delete and percent framing") {
   const auto crlf = motions("G0 X1\r\nG0 X2 (c)\r\nM30\r\n");
   REQUIRE(crlf.size() == 2);
   check_tip(crlf[1], 2, 0, 0);
+  // CR-only line ends (classic Mac OS files) end lines like LF: three motions, not one bad line
+  const auto cr_only = motions("G0 X1\rG0 X2 (c)\rG1 X5 F100\rM30\r");
+  REQUIRE(cr_only.size() == 3);
+  check_tip(cr_only[2], 5, 0, 0);
 }
 
 TEST_CASE("gcode reader: semantic errors with their positions") {

@@ -13,17 +13,11 @@
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "test_paths.hpp"
+#include "text_file.hpp"
 
 using namespace ncpost;
 
 namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// Posts a real APT file on `machine` and returns the program text.
 std::string post(const std::string& file, const Machine& m, bool native_arcs, PostSummary* summary = nullptr) {
@@ -41,7 +35,7 @@ std::string post(const std::string& file, const Machine& m, bool native_arcs, Po
     if (summary) *summary = s;
     out.commit();
   }
-  return read_text(out_path);
+  return test::read_text_file(out_path);
 }
 
 /// The arc words (2 or 3) of a program, in order; with `min_chord_mm`, arcs shorter than that
@@ -82,14 +76,14 @@ double path_length_mm(const std::string& program, const Machine& m, std::size_t*
 TEST_CASE("G2/G3 from NX CIRCLE records: NX's own post's directions") {
   const Machine m = load_machine(test::source("machines/haas-umc750.toml"));
   const std::string ours = post("nx_APT_SimpleMillPlane.txt", m, true);
-  const std::string theirs = read_text(test::data("real/nx_PostProcessed_SimpleMillPlane.txt"));
+  const std::string theirs = test::read_text_file(test::data("real/nx_PostProcessed_SimpleMillPlane.txt"));
   CHECK(arc_directions(ours) == arc_directions(theirs));
   CHECK(arc_directions(ours) == std::vector<int>{3, 3});
   CHECK_THAT(ours, Catch::Contains("G3 X-265.0000 Y164.9997 Z100.0000 I7.5000 J0.0000"));  // NX: G03 X-10.4331 Y6.4961 I.2953
 
   // Zig-zag: 35 CIRCLE records; NX writes the 0.85-degree one (chord 0.036 mm) as a line, we as an arc
   std::vector<int> zz = arc_directions(post("nx_APT_Zig_Zag_Smoothed.txt", m, true));
-  const std::vector<int> nx = arc_directions(read_text(test::data("real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
+  const std::vector<int> nx = arc_directions(test::read_text_file(test::data("real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
   REQUIRE(zz.size() == 35);
   REQUIRE(nx.size() == 34);
   zz.erase(zz.begin() + 2);  // the tiny arc, third in the file
@@ -132,7 +126,7 @@ TEST_CASE("CYCLE/DEEP as G83 where the hole runs down Z, explicit pecks otherwis
     CHECK(e.cycles_out == 0);
     out.commit();
   }
-  const std::string expanded = read_text("native_cycles_sinumerik.nc");
+  const std::string expanded = test::read_text_file("native_cycles_sinumerik.nc");
   CHECK_THAT(expanded, !Catch::Contains("G83") && Catch::Contains("Z-3.0000"));
 }
 
@@ -150,7 +144,7 @@ TEST_CASE("rapid moves: up first when the target is higher, down last when it is
     CHECK(s.rapid_splits >= 1);
     out.commit();
   }
-  const std::string p = read_text("native_rapids.nc");
+  const std::string p = test::read_text_file("native_rapids.nc");
   // from the bottom of the cut (Z0) to a tilted point 5 mm up: Z rises first, alone
   const auto cut = p.find("X10.0000");
   REQUIRE(cut != std::string::npos);

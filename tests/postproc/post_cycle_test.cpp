@@ -14,17 +14,11 @@
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "test_paths.hpp"
+#include "text_file.hpp"
 
 using namespace ncpost;
 
 namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// The program of `cl` (APT text) posted on the machine file in `dialect`, header lines dropped
 /// (from the first block after the G90 line on).
@@ -45,7 +39,7 @@ std::string post_apt(const std::string& cl, const std::string& dialect, const st
     if (summary) *summary = s;
     out.commit();
   }
-  const std::string text = read_text(path);
+  const std::string text = test::read_text_file(path);
   const auto start = text.find("T1 M6");
   return start == std::string::npos ? text : text.substr(start);
 }
@@ -139,7 +133,7 @@ TEST_CASE("G-code input canned cycles re-posted as cycles") {
     CHECK(s.cycles_out == 2);
     out.commit();
   }
-  CHECK_THAT(read_text("post_cycle_gcode.nc"),
+  CHECK_THAT(test::read_text_file("post_cycle_gcode.nc"),
              Catch::Contains("G98 G83 X10.0000 Y20.0000 Z-20.0000 R3.0000 Q4.0000 F100.0\nX30.0000\nG80\nG0 Z50.0000\n"));
 }
 

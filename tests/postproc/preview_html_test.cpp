@@ -10,15 +10,9 @@
 #include <unistd.h>
 
 #include "test_paths.hpp"
+#include "text_file.hpp"
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 bool have_chromium() { return std::system("command -v chromium > /dev/null 2>&1") == 0; }
 
@@ -30,7 +24,7 @@ TEST_CASE("ncpost preview --html renders in headless Chromium", "[preview][html]
                           "machine.toml --workpiece-origin 0,0,80 --html preview_html_test.html " + scenario +
                           "path.cls > preview_html_test.out 2>&1";
   REQUIRE(WEXITSTATUS(std::system(cmd.c_str())) == 0);
-  const std::string html = slurp("preview_html_test.html");
+  const std::string html = ncpost::test::read_text_file("preview_html_test.html");
   CHECK(html.find("<svg") != std::string::npos);
   CHECK(html.find("Worst blocks") != std::string::npos);
   CHECK(html.find("GOTO/") != std::string::npos);       // source lines of the worst blocks
@@ -50,7 +44,7 @@ TEST_CASE("ncpost preview --html renders in headless Chromium", "[preview][html]
       "--disable-component-update --no-first-run --screenshot=preview_html_test.png --window-size=1200,2000 file://" +
       std::string(cwd) + "/preview_html_test.html > preview_html_chromium.log 2>&1";
   std::system(shot.c_str());
-  const std::string png = slurp("preview_html_test.png");
+  const std::string png = ncpost::test::read_text_file("preview_html_test.png");
   REQUIRE(png.size() > 8);
   CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
   // a blank 1200x2000 page compresses to a few kB; the charts make it far larger

@@ -31,13 +31,6 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 const Vec3d kWorkpieceOrigin(0, 0, 80);  // P (M at home) = W + this on the AC trunnion (pivots at M's origin)
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 PostRequest request(const std::string& dialect, bool tilted) {
   PostRequest r;
   r.machine = load_machine(test::source("machines/ac-trunnion.toml"));
@@ -228,7 +221,7 @@ TEST_CASE("tilted planes: the angles give the rotation back, nearest the previou
 }
 
 TEST_CASE("tilted planes: two planes in every dialect land on the CL points") {
-  const std::string cl = read_text(test::data("tilted/two_planes.cls"));
+  const std::string cl = test::read_text_file(test::data("tilted/two_planes.cls"));
   const std::vector<ClPointRow> points = goto_points(cl);
   // the CL points of each tilted run, in order (the holes: their bottoms 5 mm down the axis, and
   // the hole axis from the retract plane 25 mm up)
@@ -292,9 +285,9 @@ TEST_CASE("tilted planes: two planes in every dialect land on the CL points") {
 }
 
 TEST_CASE("tilted planes: Fanuc G68.2 / G53.1 / G69, the reviewed program") {
-  const std::string cl = read_text(test::data("tilted/two_planes.cls"));
+  const std::string cl = test::read_text_file(test::data("tilted/two_planes.cls"));
   const std::string program = post_text(cl, request("fanuc", true));
-  const std::string expected = read_text(test::data("tilted/two_planes_fanuc.nc"));
+  const std::string expected = test::read_text_file(test::data("tilted/two_planes_fanuc.nc"));
   // from the first tool block on (the header names the version)
   const auto body = [](const std::string& t) { return t.substr(t.find("T1 M6")); };
   CHECK(body(program) == body(expected));
@@ -314,7 +307,7 @@ TEST_CASE("tilted planes: a vertical tool axis opens no plane; LinuxCNC writes m
   const std::string a = post_text(vertical, request("fanuc", true), &with);
   CHECK(with.summary.tilted_planes == 0);
   CHECK(a == post_text(vertical, request("fanuc", false)));
-  const std::string cl = read_text(test::data("tilted/two_planes.cls"));
+  const std::string cl = test::read_text_file(test::data("tilted/two_planes.cls"));
   PostResult lcnc;
   CHECK(post_text(cl, request("linuxcnc", true), &lcnc) == post_text(cl, request("linuxcnc", false)));
   CHECK(lcnc.summary.tilted_planes == 0);

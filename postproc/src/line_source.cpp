@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ncpost/postproc/apt_line_source.hpp"
+#include "ncpost/postproc/line_source.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "ncpost/machines/input_error.hpp"
 
-namespace ncpost::cl {
+namespace ncpost {
 
 std::string echo_of(std::string_view line, std::size_t max_bytes) {
   if (line.size() <= max_bytes) return std::string(line);
@@ -15,14 +15,14 @@ std::string echo_of(std::string_view line, std::size_t max_bytes) {
 }
 
 std::string echo_for(std::string_view line, int column) {
-  if (column > static_cast<int>(AptLineSource::kEchoBytes)) return {};
+  if (column > static_cast<int>(LineSource::kEchoBytes)) return {};
   return echo_of(line);
 }
 
-AptLineSource::AptLineSource(std::istream& in, std::string file_name)
-    : in_(in), file_(std::move(file_name)), buffer_(kChunkBytes) {}
+LineSource::LineSource(std::istream& in, std::string file_name, std::string expected)
+    : in_(in), file_(std::move(file_name)), expected_(std::move(expected)), buffer_(kChunkBytes) {}
 
-bool AptLineSource::refill() {
+bool LineSource::refill() {
   if (eof_) return false;
   if (begin_ > 0) {  // keep the unread tail at the front, then append a chunk
     std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
@@ -33,8 +33,8 @@ bool AptLineSource::refill() {
     const std::string_view head(buffer_.data(), kEchoBytes);
     throw InputError({file_, line_number_ + 1, 1},
                      fmt::format("line too long (more than {} MiB without a line break: binary data or a damaged file?); "
-                                 "expected APT CL statements, one per line",
-                                 kMaxLineBytes >> 20),
+                                 "expected {}",
+                                 kMaxLineBytes >> 20, expected_),
                      echo_of(head, kEchoBytes - 1));
   }
   if (buffer_.size() - end_ < kChunkBytes) buffer_.resize(end_ + kChunkBytes);
@@ -51,7 +51,14 @@ bool AptLineSource::refill() {
   return got > 0;
 }
 
-bool AptLineSource::next(std::string_view& line) {
+std::string_view LineSource::peek(std::size_t bytes) {
+  if (!bom_checked_) refill();
+  while (end_ - begin_ < bytes && refill()) {
+  }
+  return std::string_view(buffer_.data() + begin_, end_ - begin_);
+}
+
+bool LineSource::next(std::string_view& line) {
   if (!bom_checked_) refill();
   for (;;) {
     const char* data = buffer_.data();
@@ -65,6 +72,7 @@ bool AptLineSource::next(std::string_view& line) {
       if (pos == n && n == 0) return false;
       line = std::string_view(data + begin_, pos);
       std::size_t consumed = pos;
+      terminated_ = pos < n;
       if (pos < n) {
         consumed += (data[begin_ + pos] == '\r' && pos + 1 < n && data[begin_ + pos + 1] == '\n') ? 2 : 1;
       }
@@ -76,4 +84,4 @@ bool AptLineSource::next(std::string_view& line) {
   }
 }
 
-}  // namespace ncpost::cl
+}  // namespace ncpost
