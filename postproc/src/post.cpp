@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lookahead.hpp"
+#include "ncpost/compensation/nonlinear_block.hpp"
 #include "ncpost/postproc/unreachable.hpp"
 #include "ncpost/postproc/cycle_words.hpp"
 #include "ncpost/postproc/tilted_plane.hpp"
@@ -16,13 +17,6 @@ namespace ncpost {
 namespace {
 
 using detail::RecordBlocks;
-
-/// Unit vector interpolated on the great circle from a to b (t in [0, 1]).
-Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
-  const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
-  if (angle < 1e-12) return a;
-  return (std::sin((1.0 - t) * angle) / std::sin(angle) * a + std::sin(t * angle) / std::sin(angle) * b).normalized();
-}
 
 class Poster {
  public:
@@ -322,7 +316,7 @@ class Poster {
       ClPoint p;
       p.tip_mm = i == n_steps ? stop
                               : c.center_mm + rotation_about<double>(n, t * angle) * r0 + (along0 + t * (along1 - along0)) * n;
-      p.axis = slerp(axis0, end.point.axis, t);
+      p.axis = nonlinear::slerp(axis0, end.point.axis, t);  // a great circle also between opposite axes
       move_to(p, end.where.line, rapid);
     }
   }

@@ -15,6 +15,7 @@
 #include "ncpost/postproc/nc_writer.hpp"
 #include "ncpost/postproc/preview_blocks.hpp"
 #include "ncpost/version.hpp"
+#include "post_account_fill.hpp"
 #include "trr_post_request.hpp"
 
 namespace ncpost {
@@ -41,19 +42,14 @@ void measure_before(std::istream& in, std::istream::pos_type start, const PostRe
   try {
     preview::run_preview(*reader, r.input_name, nominal, *evaluator, [&](const preview::BlockRow& row) {
       const double e = row.exact.max_error_mm;
-      ++account.before_blocks;
       sum += e;
-      if (e > account.before_max_mm) {
-        account.before_max_mm = e;
-        account.before_worst_line = row.line;
-      }
-      account.before_series.add(row.line, e);
+      detail::add_before(account, row.line, e);
       account.path.add_before(row.line, row.cl.end.tip_mm, e);
     }, r.progress.measuring);
   } catch (const preview::PreviewInfeasible& e) {
     throw Infeasible(e.what());
   }
-  account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
+  detail::close_before(account, sum);
 }
 
 std::vector<std::string> header_comments(const PostRequest& r, const std::optional<double>& tolerance_mm) {
@@ -74,6 +70,7 @@ std::vector<std::string> header_comments(const PostRequest& r, const std::option
 std::string PostRequest::invalid() const {
   if (machine.axes.empty() && !trr) return "no machine (load_machine)";
   if (trr && rtcp) return "rtcp: the TRR-XY machine has no RTCP dialect (it is posted in X Y U V W)";
+  if (trr && tilted_plane) return "tilted_plane: the TRR-XY machine has no tilted work plane (no rotary axes)";
   if (tolerance_mm && !(*tolerance_mm > 0 && std::isfinite(*tolerance_mm)))
     return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
   if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
@@ -112,19 +109,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
 
   PostResult result;
   PostAccount& acc = result.account;
-  acc.input_name = r.input_name;
-  acc.machine_name = fmt::format("{} ({})", r.machine.name, r.machine_source);
-  acc.model_name = r.model ? r.model_source : std::string();
-  acc.executed_on = r.verify_on ? "the machine of " + r.verify_on_source
-                  : r.model     ? "the machine of " + r.model_source + " (as compensated)"
-                                : "the nominal machine";
-  acc.dialect_name = r.dialect.name;
-  acc.inputs.push_back({"CL input", r.input_file.empty() ? r.input_name : r.input_file, r.input_name});
-  if (!r.machine_source.empty()) acc.inputs.push_back({"machine file", r.machine_source});
-  if (r.model) acc.inputs.push_back({"error model", r.model_source});
-  if (r.verify_on) acc.inputs.push_back({"executed on (model)", r.verify_on_source});
-  acc.method_name = method_word(r.nonlinear);
-  acc.tolerance_mm = tolerance_mm.value_or(0.0);
+  acc = detail::account_of(r, r.machine.name, r.model.has_value(), r.verify_on.has_value(), tolerance_mm);
 
   PostOptions options;
   options.rtcp = r.rtcp;
@@ -171,10 +156,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
         "--tilted-plane: the {} dialect ({}) has no tilted work plane ([tilted_plane] native = false or absent): the "
         "3+2 runs are written with the machine's axes, as without the option", r.dialect.name, r.dialect.file));
   if (r.progress.posted) r.progress.posted(result.summary);
-  acc.motions_in = result.summary.motions_in;
-  acc.blocks_out = result.summary.blocks_out;
-  acc.after = result.summary.verify;
-  acc.notices = result.summary.notices;
+  detail::add_posted(acc, result.summary);
   if (actual) {
     acc.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
     acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "trr_post_request.hpp"
+#include "post_account_fill.hpp"
 
 #include <fmt/format.h>
 
@@ -46,7 +47,8 @@ std::vector<std::string> header_comments(const PostRequest& r, const TrrJob& job
                       r.machine_source),
           fmt::format("workpiece origin {:.4f} {:.4f} {:.4f} mm", o.x(), o.y(), o.z()),
           fmt::format("model {}, tolerance {}", job.model ? r.model_source : std::string("none (nominal machine)"),
-                      r.tolerance_mm ? fmt::format("{} mm (adaptive{})", *r.tolerance_mm,
+                      r.tolerance_mm ? fmt::format("{} mm ({}{})", *r.tolerance_mm,
+                                                   r.nonlinear == nonlinear::Method::harmonic ? "harmonic" : "adaptive",
                                                    r.tolerance_is_default ? ", the default" : "")
                                      : std::string("none"))};
 }
@@ -74,20 +76,15 @@ void measure_before(std::istream& in, std::istream::pos_type start, const PostRe
   o.progress = r.progress.measuring;
   double sum = 0.0;
   o.on_verified = [&](int line, double e) {
-    ++account.before_blocks;
     sum += e;
-    if (e > account.before_max_mm) {
-      account.before_max_mm = e;
-      account.before_worst_line = line;
-    }
-    account.before_series.add(line, e);
+    add_before(account, line, e);
   };
   NullBuffer null;
   std::ostream sink(&null);
   AtomicFile out(sink);
   NcWriter writer(out, r.dialect, "XYUVW");
   post_program(*reader, r.input_name, solver, writer, o);
-  account.before_mean_mm = account.before_blocks ? sum / static_cast<double>(account.before_blocks) : 0.0;
+  close_before(account, sum);
 }
 
 }  // namespace
@@ -105,22 +102,14 @@ PostResult post_trr(std::istream& input, std::ostream& program, const PostReques
 
   PostResult result;
   PostAccount& acc = result.account;
-  acc.input_name = r.input_name;
-  acc.machine_name = fmt::format("{} ({})", job.machine.name, r.machine_source);
-  acc.model_name = job.model ? r.model_source : std::string();
-  acc.executed_on = job.verify_on ? "the machine of " + r.verify_on_source
-                  : job.model     ? "the machine of " + r.model_source + " (as compensated)"
-                                  : "the nominal machine";
-  acc.dialect_name = r.dialect.name;
-  acc.method_name = "adaptive";
-  acc.tolerance_mm = r.tolerance_mm.value_or(0.0);
+  acc = account_of(r, job.machine.name, job.model.has_value(), job.verify_on.has_value(), r.tolerance_mm);
 
   PostOptions options = trr_options(r);
   options.verify = account;
   options.header_comments = header_comments(r, job);
   options.progress = r.progress.posting;
   if (account) options.on_verified = [&acc](int line, double contour_mm) { acc.after_series.add(line, contour_mm); };
-  if (r.tolerance_mm) options.subdivide = make_trr_subdivider(solver, r.dialect, TrrSubdivision{*r.tolerance_mm});
+  if (r.tolerance_mm) options.subdivide = make_trr_subdivider(solver, r.dialect, TrrSubdivision{*r.tolerance_mm, r.nonlinear});
 
   AtomicFile out(program);
   NcWriter writer(out, r.dialect, "XYUVW");
@@ -128,10 +117,7 @@ PostResult post_trr(std::istream& input, std::ostream& program, const PostReques
   out.commit();
   reader.reset();
   if (r.progress.posted) r.progress.posted(result.summary);
-  acc.motions_in = result.summary.motions_in;
-  acc.blocks_out = result.summary.blocks_out;
-  acc.after = result.summary.verify;
-  acc.notices = result.summary.notices;
+  add_posted(acc, result.summary);
   if (account) {
     measure_before(input, start, r, nominal, executing, acc);
     if (r.progress.measured) r.progress.measured();

@@ -7,17 +7,13 @@
 #include <cmath>
 #include <memory>
 
+#include "ncpost/compensation/harmonic_compensation.hpp"
+#include "ncpost/compensation/nonlinear_block.hpp"
 #include "ncpost/compensation/trr_block_error.hpp"
 #include "ncpost/machines/input_error.hpp"
 
 namespace ncpost {
 namespace {
-
-Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
-  const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
-  if (angle < 1e-12) return ((1.0 - t) * a + t * b).normalized();
-  return (std::sin((1.0 - t) * angle) / std::sin(angle) * a + std::sin(t * angle) / std::sin(angle) * b).normalized();
-}
 
 /// The value the control reads for word `slot` (NcWriter::rounded: slots 0-2 with the linear
 /// decimals, the others with the angle decimals).
@@ -32,6 +28,13 @@ double rounded(const Dialect& d, int slot, double v) {
 /// follow (a tolerance of nanometres split the move 2^24 times); refused instead (exit 3).
 constexpr std::size_t kMaxBlocksPerMove = 4096;
 
+/// The commands the control reads: each word rounded to the dialect's decimals.
+trr::Command executed_command(const Dialect& d, const AxisPosition& q) {
+  AxisPosition r;
+  for (int i = 0; i < 5; ++i) r[i] = rounded(d, i, q[i]);
+  return trr_command(r);
+}
+
 class Cutter {
  public:
   Cutter(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& o)
@@ -44,11 +47,7 @@ class Cutter {
   }
 
  private:
-  trr::Command executed(const AxisPosition& q) const {
-    AxisPosition r;
-    for (int i = 0; i < 5; ++i) r[i] = rounded(dialect_, i, q[i]);
-    return trr_command(r);
-  }
+  trr::Command executed(const AxisPosition& q) const { return executed_command(dialect_, q); }
 
   void split(const SolvedPoint& from, const SolvedPoint& to, int depth, std::vector<SolvedPoint>& out) {
     const trr::Block b{from.cl, to.cl, executed(from.q), executed(to.q)};
@@ -74,7 +73,7 @@ class Cutter {
       const double t = static_cast<double>(i) / pieces;
       ClPoint p;
       p.tip_mm = (1.0 - t) * from.cl.tip_mm + t * to.cl.tip_mm;
-      p.axis = slerp(from.cl.axis, to.cl.axis, t);
+      p.axis = nonlinear::slerp(from.cl.axis, to.cl.axis, t);  // a great circle also between opposite axes
       const IkOutcome ik = solver_.solve_quiet(p, start.q, nullptr);
       if (!ik.ok()) throw Infeasible(fmt::format("a point inserted for the tolerance is out of reach: {}", ik.failure.message));
       const SolvedPoint mid{p, *ik.position};
@@ -87,6 +86,55 @@ class Cutter {
   const TrrSolver& solver_;
   const Dialect& dialect_;
   TrrSubdivision o_;
+  const trr::BlockEvaluator evaluator_;
+  trr::EvaluatorWork work_;  ///< the post thread's forward solves (the cutter runs on it alone)
+};
+
+/// `--nonlinear harmonic`: the paper's shift (harmonic_compensation.hpp, the same nodes as on the
+/// serial machines): the block's error at t = ½ is the model's Emax·n; the block is cut into
+/// ceil(sqrt(Emax / tolerance)) blocks whose ends are the commands putting the tool tip at
+/// E(t_k) − L(t_k) with the tool axis the control has there (TRR-XY inverse kinematics: the
+/// sliders and the table both move, where a serial machine moves its linear axes only).
+class HarmonicCutter {
+ public:
+  HarmonicCutter(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& o)
+      : solver_(solver), dialect_(dialect), evaluator_(solver.commanded(), solver.workpiece_origin_mm()) {
+    options_.tolerance_mm = o.tolerance_mm;
+  }
+
+  std::vector<SolvedPoint> cut(const SolvedPoint& from, const SolvedPoint& to) {
+    const trr::Block b{from.cl, to.cl, executed_command(dialect_, from.q), executed_command(dialect_, to.q)};
+    const auto executed_at = [&](double t) {
+      std::string why;
+      const std::optional<trr::ExecutedPoint> e = evaluator_.at(b, t, work_, &why);
+      if (!e) throw Infeasible(why);
+      return *e;
+    };
+    const nonlinear::HarmonicModel model = nonlinear::harmonic_from_offset(executed_at(0.5).offset_mm);
+    const int n = nonlinear::harmonic_block_count(model.amplitude_mm, options_);
+    if (n == 1) return {to};
+    const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q};
+    const nonlinear::SplitBlock split = nonlinear::harmonic_shift(
+        block, model, n, executed_at,
+        [&](double t, const trr::ExecutedPoint& e, const Vec3d& tip_W, std::string& failure) -> std::optional<AxisPosition> {
+          ClPoint p;
+          p.tip_mm = tip_W;
+          p.axis = e.axis;
+          const IkOutcome ik = solver_.solve_quiet(p, nonlinear::lerp(from.q, to.q, t), nullptr);
+          if (ik.ok()) return *ik.position;
+          failure = fmt::format("a point shifted by the harmonic model is out of reach: {}", ik.failure.message);
+          return std::nullopt;
+        });
+    if (!split.ok()) throw Infeasible(split.failure);
+    std::vector<SolvedPoint> out;
+    for (const nonlinear::BlockNode& node : split.nodes) out.push_back({node.cl, node.q});
+    return out;
+  }
+
+ private:
+  const TrrSolver& solver_;
+  const Dialect& dialect_;
+  nonlinear::HarmonicOptions options_;
   const trr::BlockEvaluator evaluator_;
   trr::EvaluatorWork work_;  ///< the post thread's forward solves (the cutter runs on it alone)
 };
@@ -104,6 +152,10 @@ PostOptions trr_post_options() {
 }
 
 Subdivider make_trr_subdivider(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& options) {
+  if (options.method == nonlinear::Method::harmonic) {
+    auto cutter = std::make_shared<HarmonicCutter>(solver, dialect, options);
+    return [cutter](const SolvedPoint& from, const SolvedPoint& to) { return cutter->cut(from, to); };
+  }
   auto cutter = std::make_shared<Cutter>(solver, dialect, options);
   return [cutter](const SolvedPoint& from, const SolvedPoint& to) { return cutter->cut(from, to); };
 }

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading back a TRR-XY NC program in tests (trr_post_test, trr_identify_test): the motion blocks
-// as modal X Y U V W values after each block that moves.
+// as modal X Y U V W values after each block that moves; how far the program, executed (every block
+// interpolated linearly in X Y U V W, forward kinematics), strays from a CL path.
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -29,6 +32,38 @@ inline std::vector<trr::Command> read_trr_program(const std::string& path) {
     if (moved && w.allFinite()) out.push_back(trr::Command::from_words(w));
   }
   return out;
+}
+
+/// Distance (mm) from `p` to the polyline `path`.
+inline double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
+  double best = 1e300;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Vec3d d = path[i + 1] - path[i];
+    const double len2 = d.squaredNorm();
+    const double u = len2 > 0 ? std::clamp((p - path[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - (path[i] + u * d)).norm());
+  }
+  return best;
+}
+
+/// Largest distance (mm) of the executed tool tip from `path` (W) over every block of `program`,
+/// `samples` points per block, on the machine `k` with the workpiece origin `origin_mm`; nullopt
+/// if the forward kinematics fails somewhere.
+inline std::optional<double> trr_executed_deviation(const trr::Kinematics& k, const std::vector<trr::Command>& program,
+                                                    const std::vector<Vec3d>& path, const Vec3d& origin_mm,
+                                                    int samples = 100) {
+  double worst = 0.0;
+  std::optional<Rigidd> warm;
+  for (std::size_t b = 0; b + 1 < program.size(); ++b)
+    for (int j = (b == 0 ? 0 : 1); j <= samples; ++j) {
+      const double t = static_cast<double>(j) / samples;
+      const trr::Command c = trr::Command::from_words((1 - t) * program[b].words() + t * program[b + 1].words());
+      const auto tp = k.tool(c.slider_mm, warm);
+      if (!tp) return std::nullopt;
+      warm = tp->machine_T_plate;
+      worst = std::max(worst, distance_to_path(trr::Kinematics::tip_in_workpiece(*tp, c, origin_mm), path));
+    }
+  return worst;
 }
 
 }  // namespace ncpost::test

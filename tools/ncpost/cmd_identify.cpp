@@ -13,7 +13,7 @@
 #include "file_checks.hpp"
 #include "number_checks.hpp"
 #include "identify_laser.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
@@ -28,14 +28,6 @@ namespace ncpost::cli {
 
 namespace {
 
-struct IdentifyArgs {
-  std::string machine, output, report, params, fixed, loss = "squared";
-  double loss_scale_um = 3.0;
-  std::optional<double> pass_tolerance_um;
-  bool no_diagnose = false, no_basic = false;
-  std::vector<std::string> data;
-};
-
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
@@ -49,9 +41,9 @@ std::vector<std::string> split_list(const std::string& s) {
 }
 
 /// Residual analysis (issue 6): basic fit, effects added by evidence, before/after report.
-int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets, const std::vector<std::string>& names,
-                 const comp::IdentifyOptions& o, const std::string& output, const std::string& report,
-                 const comp::IdentifyReportInputs& inputs) {
+IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets,
+                            const std::vector<std::string>& names, const comp::IdentifyOptions& o,
+                            const std::string& report, const comp::IdentifyReportInputs& inputs) {
   comp::DiagnoseOptions d;
   d.identify = o;
   if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
@@ -61,10 +53,51 @@ int run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets
   fmt::print("{}", comp::text_report(m, sets, r.final_fit));
   fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
   if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);
-  write_file_atomically(output, comp::format_model_json(comp::to_model_file(m, r)));
-  if (!report.empty()) write_file_atomically(report, comp::html_diagnose_report(m, sets, r, tt, inputs));
-  return 0;
+  IdentifyOutput out;
+  out.model_json = comp::format_model_json(comp::to_model_file(m, r));
+  if (!report.empty()) out.report_html = comp::html_diagnose_report(m, sets, r, tt, inputs);
+  return out;
 }
+
+/// The serial machines: the basic model and --params fitted to ballbar, sphere or laser data, with
+/// the residual analysis unless --no-diagnose.
+IdentifyOutput identify_serial(const IdentifyArgs& a) {
+  const Machine m = load_machine(a.machine);
+  const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a.data, m);
+  const comp::IdentifyReportInputs report_inputs{a.machine, a.output, a.pass_tolerance_um};
+  if (comp::all_laser(sets))  // issue 7
+    return identify_laser(m, sets, a.report, !a.params.empty() || !a.fixed.empty() || a.loss != "squared",
+                          report_inputs);
+  std::vector<std::string> names = a.no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);
+  for (const auto& n : split_list(a.params)) {
+    const comp::ParseResult r = comp::parse_parameter_name(n, m);
+    if (!r.spec) throw UsageError(fmt::format("--params: '{}': {}", n, r.error));
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  }
+  comp::IdentifyOptions o;
+  o.loss = a.loss == "huber" ? comp::Loss::huber : a.loss == "cauchy" ? comp::Loss::cauchy : comp::Loss::squared;
+  o.loss_scale_um = a.loss_scale_um;
+  for (const auto& item : split_list(a.fixed)) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw UsageError(fmt::format("--fixed expects NAME=VALUE, found '{}'", item));
+    const std::string n = item.substr(0, eq);
+    const comp::ParseResult r = comp::parse_parameter_name(n, m);
+    if (!r.spec) throw UsageError(fmt::format("--fixed: '{}': {}", n, r.error));
+    // mm or rad: no location or scale error of a real machine comes near a metre or a radian
+    o.fixed.set(n, finite_number(item.substr(eq + 1), "--fixed " + n, -1000.0, 1000.0, "mm or rad"));
+  }
+  if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
+  if (!a.no_diagnose) return run_diagnose(m, sets, names, o, a.report, report_inputs);
+  const comp::IdentifyResult r = comp::identify(m, sets, names, o);
+  fmt::print("{}", comp::text_report(m, sets, r));
+  if (!r.converged) throw Infeasible("the fit " + r.message);
+  IdentifyOutput out;
+  out.model_json = comp::format_model_json(comp::to_model_file(m, r));
+  if (!a.report.empty()) out.report_html = comp::html_report(m, sets, r, report_inputs);
+  return out;
+}
+
+const ByKind<IdentifySteps> kIdentifySteps{{identify_serial}, {identify_trr_xy}};
 
 }  // namespace
 
@@ -94,41 +127,10 @@ void add_identify(CLI::App& app, Action& action) {
       std::vector<NamedPath> inputs{{"--machine", a->machine}};
       for (const auto& f : a->data) inputs.push_back({"data", f});
       check_files({{"-o", a->output}, {"--report", a->report}}, inputs);
-      if (auto rc = identify_if_trr_xy(a->machine, a->data, a->output,
-                                       !a->params.empty() ? "--params" : !a->fixed.empty() ? "--fixed"
-                                                                       : !a->report.empty() ? "--report" : ""))
-        return *rc;
-      const Machine m = load_machine(a->machine);
-      const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a->data, m);
-      const comp::IdentifyReportInputs report_inputs{a->machine, a->output, a->pass_tolerance_um};
-      if (comp::all_laser(sets))  // issue 7
-        return identify_laser(m, sets, a->output, a->report, !a->params.empty() || !a->fixed.empty() || a->loss != "squared",
-                              report_inputs);
-      std::vector<std::string> names = a->no_basic ? std::vector<std::string>{} : comp::basic_parameters(m);
-      for (const auto& n : split_list(a->params)) {
-        const comp::ParseResult r = comp::parse_parameter_name(n, m);
-        if (!r.spec) throw UsageError(fmt::format("--params: '{}': {}", n, r.error));
-        if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-      }
-      comp::IdentifyOptions o;
-      o.loss = a->loss == "huber" ? comp::Loss::huber : a->loss == "cauchy" ? comp::Loss::cauchy : comp::Loss::squared;
-      o.loss_scale_um = a->loss_scale_um;
-      for (const auto& item : split_list(a->fixed)) {
-        const auto eq = item.find('=');
-        if (eq == std::string::npos) throw UsageError(fmt::format("--fixed expects NAME=VALUE, found '{}'", item));
-        const std::string n = item.substr(0, eq);
-        const comp::ParseResult r = comp::parse_parameter_name(n, m);
-        if (!r.spec) throw UsageError(fmt::format("--fixed: '{}': {}", n, r.error));
-        // mm or rad: no location or scale error of a real machine comes near a metre or a radian
-        o.fixed.set(n, finite_number(item.substr(eq + 1), "--fixed " + n, -1000.0, 1000.0, "mm or rad"));
-      }
-      if (names.empty()) throw UsageError("nothing to identify: give --params or drop --no-basic");
-      if (!a->no_diagnose) return run_diagnose(m, sets, names, o, a->output, a->report, report_inputs);
-      const comp::IdentifyResult r = comp::identify(m, sets, names, o);
-      fmt::print("{}", comp::text_report(m, sets, r));
-      if (!r.converged) throw Infeasible("the fit " + r.message);
-      write_file_atomically(a->output, comp::format_model_json(comp::to_model_file(m, r)));
-      if (!a->report.empty()) write_file_atomically(a->report, comp::html_report(m, sets, r, report_inputs));
+      const IdentifyOutput out = kIdentifySteps[machine_kind(a->machine)].fit(*a);
+      write_file_atomically(a->output, out.model_json);
+      if (!a->report.empty()) write_file_atomically(a->report, out.report_html);
+      fmt::print("{}", out.closing);
       return 0;
     };
   });

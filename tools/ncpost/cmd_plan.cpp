@@ -11,7 +11,7 @@
 #include "dialect_option.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -22,18 +22,6 @@
 namespace ncpost::cli {
 
 namespace {
-
-struct PlanArgs {
-  std::string machine, test, output;
-  std::vector<double> heights, tool_lengths, levels;
-  std::optional<double> bar_length, dt, t0, step;
-  int points = 500;
-  double clearance_mm = 30.0;
-  std::string sphere;
-  bool seed_directions = false;
-  comp::LaserPlanOptions laser;
-  std::string dialect = "fanuc";
-};
 
 Vec3d parse_vec(const std::string& s, const char* option) {
   std::stringstream in(s);
@@ -95,25 +83,33 @@ std::vector<comp::NamedPlan> make_plans(PlanArgs& a, const Machine& m, const com
   }
 }
 
-/// Writes the plan CSVs (PLAN.csv, or PLAN_<set>.csv for several) and PLAN.nc.
-void write_outputs(const PlanArgs& a, const Machine& m, const std::vector<comp::NamedPlan>& plans,
-                   const std::string& program_text) {
-  std::string stem = a.output;
-  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
-  const auto csv_name = [&](const comp::NamedPlan& p) {
-    return plans.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
-  };
-  std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
-  for (const auto& p : plans) outputs.push_back({"-o (plan)", csv_name(p)});
-  check_files(outputs, {{"--machine", a.machine}});
-  for (const auto& p : plans) {
-    const std::string file = csv_name(p);
-    write_file_atomically(file, comp::format_measurement_csv(p.set, m));
-    fmt::print("plan {}: {} rows -> {}\n", p.name, p.set.rows.size(), file);
+/// The serial machines' plans (plans.hpp, laser_plan.hpp), the program in the chosen dialect.
+PlanOutput plan_serial(const PlanArgs& given) {
+  PlanArgs a = given;
+  const Machine m = load_machine(a.machine);
+  std::vector<comp::NamedPlan> plans;
+  comp::PlanProgramOptions program;
+  const Dialect dialect = dialect_named(a.dialect);
+  try {
+    plans = make_plans(a, m, rounding_of(dialect), program);
+  } catch (const std::invalid_argument& e) {
+    throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
   }
-  write_file_atomically(stem + ".nc", program_text);
-  fmt::print("NC program -> {}.nc\n", stem);
+  std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
+  try {
+    const comp::PlanProgram records = a.test == "laser" ? comp::laser_program(m, plans, a.laser)
+                                                         : comp::plan_program(m, plans, "ncpost plan " + a.test, program);
+    program_text = plan_program_text(m, records, dialect);
+  } catch (const std::invalid_argument& e) {
+    throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
+  }
+  PlanOutput out;
+  for (const auto& p : plans) out.sets.push_back({p.name, comp::format_measurement_csv(p.set, m), p.set.rows.size()});
+  out.program = std::move(program_text);
+  return out;
 }
+
+const ByKind<PlanSteps> kPlanSteps{{plan_serial}, {plan_trr_xy}};
 
 /// The options of `plan` into `a`.
 void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
@@ -182,26 +178,22 @@ void add_plan(CLI::App& app, Action& action) {
         if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
         check_files({{"-o (program)", stem + ".nc"}, {"-o (plan)", stem + ".csv"}}, {{"--machine", a->machine}});
       }
-      if (auto rc = plan_if_trr_xy(a->machine, a->test, a->output)) return *rc;
-      const Machine m = load_machine(a->machine);
-      std::vector<comp::NamedPlan> plans;
-      comp::PlanProgramOptions program;
-      const Dialect dialect = dialect_named(a->dialect);
-      try {
-        plans = make_plans(*a, m, rounding_of(dialect), program);
-      } catch (const std::invalid_argument& e) {
-        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
+      const PlanOutput plan = kPlanSteps[machine_kind(a->machine)].make(*a);
+      std::string stem = a->output;
+      if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
+      const auto csv_name = [&](const PlanOutput::Set& p) {
+        return plan.sets.size() == 1 ? stem + ".csv" : fmt::format("{}_{}.csv", stem, p.name);
+      };
+      std::vector<NamedPath> outputs{{"-o (program)", stem + ".nc"}};
+      for (const auto& p : plan.sets) outputs.push_back({"-o (plan)", csv_name(p)});
+      check_files(outputs, {{"--machine", a->machine}});
+      for (const auto& p : plan.sets) {
+        const std::string file = csv_name(p);
+        write_file_atomically(file, p.csv);
+        fmt::print("plan {}: {} rows -> {}\n", p.name, p.rows, file);
       }
-      std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
-      try {
-        const comp::PlanProgram records = a->test == "laser"
-                                              ? comp::laser_program(m, plans, a->laser)
-                                              : comp::plan_program(m, plans, "ncpost plan " + a->test, program);
-        program_text = plan_program_text(m, records, dialect);
-      } catch (const std::invalid_argument& e) {
-        throw Infeasible(fmt::format("plan {} on machine '{}': {}", a->test, m.name, e.what()));
-      }
-      write_outputs(*a, m, plans, program_text);
+      write_file_atomically(stem + ".nc", plan.program);
+      fmt::print("NC program -> {}.nc\n", stem);
       return 0;
     };
   });

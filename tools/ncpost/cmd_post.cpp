@@ -19,8 +19,7 @@
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/post_report.hpp"
 #include "ncpost/postproc/post_request.hpp"
-#include "ncpost/machines/trr_xy_file.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -56,6 +55,23 @@ std::optional<double> tolerance_of(const std::string& text) {
   return std::stod(text);  // checked by the option's validator
 }
 
+/// The serial machine of the job, and the models of --model and --verify-on checked against it.
+void load_serial_post(const PostJobArgs& a, PostRequest& r) {
+  LoadedJob job = load_job(a.job);
+  r.machine = std::move(job.machine);
+  r.setup = job.setup;
+  if (!a.model.empty()) {
+    r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
+    r.model_source = a.model;
+  }
+  if (!a.verify_on.empty()) {
+    r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
+    r.verify_on_source = a.verify_on;
+  }
+}
+
+const ByKind<PostSteps> kPostSteps{{load_serial_post}, {load_trr_xy_post}};
+
 int run_post(const PostArgs& given) {
   // every file checked before anything is computed: no output over an input, only writable places
   check_files({{"-o", given.output}, {"--report", given.report}},
@@ -85,26 +101,6 @@ int run_post(const PostArgs& given) {
   r.input_file = a.input_path;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
-  if (machine_file_kind(a.job.machine) == "trr-xy") {
-    r.trr = load_trr_post_job(a.job, a.model, a.verify_on, a.rtcp, a.force_model);
-    r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
-    r.model_source = a.model;
-    r.verify_on_source = a.verify_on;
-    if (a.tolerance_mm && a.nonlinear == "harmonic")
-      fmt::print(stderr, "notice: --nonlinear harmonic: the TRR-XY post meets the tolerance by adaptive insertion\n");
-  } else {
-    LoadedJob job = load_job(a.job);
-    r.machine = std::move(job.machine);
-    r.setup = job.setup;
-    if (!a.model.empty()) {
-      r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
-      r.model_source = a.model;
-    }
-    if (!a.verify_on.empty()) {
-      r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
-      r.verify_on_source = a.verify_on;
-    }
-  }
   r.tolerance_mm = tolerance_of(a.tolerance);
   r.tolerance_is_default = a.tolerance.empty();
   r.nonlinear = *nonlinear::method_named(a.nonlinear);
@@ -116,6 +112,7 @@ int run_post(const PostArgs& given) {
   r.retract_mm = a.retract_mm;
   r.threads = a.threads;
   r.verify = a.verify || !a.report.empty();
+  kPostSteps[machine_kind(a.job.machine)].load({a.job, a.model, a.verify_on, a.force_model}, r);
   // progress only where someone watches: stderr on a terminal (and the program not on that terminal)
   const bool tty = ::isatty(STDERR_FILENO) && !(a.output == "-" && ::isatty(STDOUT_FILENO));
   if (tty) r.progress.posting = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };

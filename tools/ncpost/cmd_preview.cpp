@@ -12,7 +12,8 @@
 #include "input_file.hpp"
 #include "model_input.hpp"
 #include "input_options.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
+#include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/preview_csv.hpp"
@@ -22,15 +23,42 @@
 namespace ncpost::cli {
 namespace {
 
-struct PreviewArgs {
-  JobOptions job;
-  std::string model;
-  bool force_model = false;  // --force: model checks as warnings
-  std::string csv;
-  std::string html;
-  std::string input;       ///< the INPUT argument; in a run, the name in messages
-  std::string input_path;  ///< in a run: the file read (the spool of standard input or a pipe)
+/// The serial machine (nominal, or that of --model) with its solver and block evaluator.
+class SerialPreviewMachine final : public PreviewMachine {
+ public:
+  explicit SerialPreviewMachine(const PreviewArgs& a) : options_(a.job), job_(load_job(a.job)) {
+    if (!a.model.empty()) {
+      const comp::ModelFile file = read_model_for(a.model, job_.machine, a.force_model);
+      model_ = std::make_unique<comp::MachineModel>(job_.machine, file.parameters);
+      solver_ = std::make_unique<preview::ModelMotionSolver>(*model_, job_.setup);
+      evaluator_ = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model_->machine(), job_.setup,
+                                                                                          model_->errors());
+    } else {
+      solver_ = std::make_unique<NominalSolver>(job_.machine, job_.setup);
+      evaluator_ = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job_.machine, job_.setup);
+    }
+  }
+
+  const std::string& name() const override { return job_.machine.name; }
+  const MotionSolver& solver() const override { return *solver_; }
+  const preview::BlockEvaluator& evaluator() const override { return *evaluator_; }
+  std::unique_ptr<cl::Reader> open_reader(std::istream& in, const std::string& name) const override {
+    return open_cl_reader(in, name, options_, job_);
+  }
+
+ private:
+  JobOptions options_;
+  LoadedJob job_;
+  std::unique_ptr<comp::MachineModel> model_;
+  std::unique_ptr<MotionSolver> solver_;
+  std::unique_ptr<preview::BlockEvaluator> evaluator_;
 };
+
+std::unique_ptr<PreviewMachine> load_serial_preview(const PreviewArgs& a) {
+  return std::make_unique<SerialPreviewMachine>(a);
+}
+
+const ByKind<PreviewSteps> kPreviewSteps{{load_serial_preview}, {load_trr_xy_preview}};
 
 int run_preview(const PreviewArgs& given) {
   check_files({{"--csv", given.csv}, {"--html", given.html}},
@@ -39,24 +67,12 @@ int run_preview(const PreviewArgs& given) {
   PreviewArgs a = given;
   a.input = input.name();
   a.input_path = input.path();
-  if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input, a.input_path, a.force_model})) return *rc;
-  const LoadedJob job = load_job(a.job);
-  std::unique_ptr<comp::MachineModel> model;
-  std::unique_ptr<MotionSolver> solver;
-  std::unique_ptr<preview::BlockEvaluator> evaluator;
-  if (!a.model.empty()) {
-    const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
-    model = std::make_unique<comp::MachineModel>(job.machine, file.parameters);
-    solver = std::make_unique<preview::ModelMotionSolver>(*model, job.setup);
-    evaluator = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model->machine(), job.setup,
-                                                                                       model->errors());
-  } else {
-    solver = std::make_unique<NominalSolver>(job.machine, job.setup);
-    evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job.machine, job.setup);
-  }
+  const std::unique_ptr<PreviewMachine> machine = kPreviewSteps[machine_kind(a.job.machine)].load(a);
+  const MotionSolver& solver = machine->solver();
+  const preview::BlockEvaluator& evaluator = machine->evaluator();
   std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
-  auto reader = open_cl_reader(in, a.input, a.job, job);
+  auto reader = machine->open_reader(in, a.input);
 
   std::optional<AtomicFile> csv_file;
   std::optional<preview::CsvWriter> csv;
@@ -71,7 +87,7 @@ int run_preview(const PreviewArgs& given) {
   preview::PreviewStats stats;
   try {
     stats = preview::run_preview(
-        *reader, a.input, *solver, *evaluator,
+        *reader, a.input, solver, evaluator,
         [&](const preview::BlockRow& row) {
           if (csv) csv->add(row);
           summary.add(row);
@@ -85,7 +101,7 @@ int run_preview(const PreviewArgs& given) {
   if (!a.html.empty()) {
     preview::HtmlReport report;
     report.input_name = a.input;
-    report.machine_name = fmt::format("{} ({})", job.machine.name, a.job.machine);
+    report.machine_name = fmt::format("{} ({})", machine->name(), a.job.machine);
     report.model_name = a.model;
     report.inputs.push_back({"CL input", a.input_path, a.input});
     report.inputs.push_back({"machine file", a.job.machine});
@@ -95,7 +111,7 @@ int run_preview(const PreviewArgs& given) {
     std::vector<int> lines;
     for (const auto& w : summary.worst()) lines.push_back(w.line);
     report.worst_source_lines = preview::source_lines(a.input_path, lines);
-    if (!summary.worst().empty()) report.worst_curve_mm = evaluator->error_curve(summary.worst().front().cl, 200);
+    if (!summary.worst().empty()) report.worst_curve_mm = evaluator.error_curve(summary.worst().front().cl, 200);
     write_file_atomically(a.html, preview::render_html(report));
   }
   if (csv_file) csv_file->commit();

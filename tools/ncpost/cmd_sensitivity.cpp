@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "file_checks.hpp"
+#include "machine_kind.hpp"
 #include "number_checks.hpp"
 #include "ncpost/compensation/trr_sensitivity.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
@@ -25,10 +26,9 @@ struct SensitivityArgs {
 
 int run_sensitivity(const SensitivityArgs& a) {
   check_files({{"--json", a.json}, {"--html", a.html}}, {{"--machine", a.machine}});
-  const std::string kind = machine_file_kind(a.machine);
-  if (kind != "trr-xy")
+  if (const MachineKind kind = machine_kind(a.machine); kind != MachineKind::trr_xy)
     throw UsageError(fmt::format("--machine {}: sensitivity maps are defined for the TRR-XY machine (kind \"trr-xy\"), "
-                                 "this file's kind is \"{}\"", a.machine, kind));
+                                 "this file's kind is \"{}\"", a.machine, kind_name(kind)));
   const trr::Machine m = load_trr_xy_machine(a.machine);
   trr::SensitivityOptions o;
   const auto divides = [](double step, double whole) {

@@ -8,7 +8,7 @@
 #include "file_checks.hpp"
 #include "number_checks.hpp"
 #include "model_input.hpp"
-#include "trr_commands.hpp"
+#include "kind_steps.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -18,12 +18,20 @@
 namespace ncpost::cli {
 
 namespace {
-struct SimulateArgs {
-  std::string machine, model, output, plan;
-  bool force_model = false;  // --force: model checks as warnings
-  double noise_um = 0.0;
-  std::uint64_t seed = 1;
-};
+
+/// A measurement plan on the serial machine of the model JSON (simulate.hpp).
+SimulateOutput simulate_serial(const SimulateArgs& a) {
+  const Machine m = load_machine(a.machine);
+  const comp::ModelFile model = read_model_for(a.model, m, a.force_model);
+  const comp::MeasurementSet plan = comp::read_measurement_csv(a.plan, m, {true});
+  const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {a.noise_um, a.seed});
+  return {comp::format_measurement_csv(data, m),
+          fmt::format("simulated {} rows of {} on '{}' ({} parameters, noise {} µm)", data.rows.size(),
+                      comp::to_string(data.type), m.name, model.parameters.size(), a.noise_um)};
+}
+
+const ByKind<SimulateSteps> kSimulateSteps{{simulate_serial}, {simulate_trr_xy}};
+
 }  // namespace
 
 void add_simulate(CLI::App& app, Action& action) {
@@ -40,16 +48,9 @@ void add_simulate(CLI::App& app, Action& action) {
   sub->callback([&action, args] {
     action = [args] {
       check_files({{"-o", args->output}}, {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
-      if (auto rc = simulate_if_trr_xy(args->machine, args->model, args->plan, args->output, args->noise_um, args->seed,
-                                             args->force_model))
-        return *rc;
-      const Machine m = load_machine(args->machine);
-      const comp::ModelFile model = read_model_for(args->model, m, args->force_model);
-      const comp::MeasurementSet plan = comp::read_measurement_csv(args->plan, m, {true});
-      const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {args->noise_um, args->seed});
-      write_file_atomically(args->output, comp::format_measurement_csv(data, m));
-      fmt::print("simulated {} rows of {} on '{}' ({} parameters, noise {} µm) -> {}\n", data.rows.size(),
-                 comp::to_string(data.type), m.name, model.parameters.size(), args->noise_um, args->output);
+      const SimulateOutput out = kSimulateSteps[machine_kind(args->machine)].run(*args);
+      write_file_atomically(args->output, out.csv);
+      fmt::print("{} -> {}\n", out.summary, args->output);
       return 0;
     };
   });

@@ -7,21 +7,22 @@
 #include "ncpost/compensation/laser_identify.hpp"
 #include "ncpost/compensation/laser_report.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
 
 namespace ncpost::cli {
 
-int identify_laser(const Machine& m, const std::vector<comp::MeasurementSet>& sets, const std::string& output,
-                   const std::string& report, bool options_ignored, const comp::IdentifyReportInputs& report_inputs) {
+IdentifyOutput identify_laser(const Machine& m, const std::vector<comp::MeasurementSet>& sets,
+                              const std::string& report, bool options_ignored,
+                              const comp::IdentifyReportInputs& report_inputs) {
   if (options_ignored)
     fmt::print("notice: laser data: --params, --fixed and --loss do not apply (the model is the error tables of the measured "
                "axes, squareness and reversal)\n");
   const comp::LaserIdentifyResult r = comp::identify_laser(m, sets);
   fmt::print("{}", comp::laser_text_report(m, r));
   if (!r.ok) throw Infeasible("laser identification: " + r.message);
-  write_file_atomically(output, comp::format_model_json(comp::laser_model_file(m, r)));
-  if (!report.empty()) write_file_atomically(report, comp::laser_html_report(m, r, sets, report_inputs));
-  return 0;
+  IdentifyOutput out;
+  out.model_json = comp::format_model_json(comp::laser_model_file(m, r));
+  if (!report.empty()) out.report_html = comp::laser_html_report(m, r, sets, report_inputs);
+  return out;
 }
 
 }  // namespace ncpost::cli

@@ -1,27 +1,61 @@
 // SPDX-License-Identifier: Apache-2.0
-// The TRR-XY paths of `ncpost post` and `ncpost preview`.
-#include "trr_commands.hpp"
-
+// The TRR-XY steps of `ncpost post` and `ncpost preview` (kind_steps.hpp).
 #include <fmt/format.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
+#include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/preview_csv.hpp"
-#include "ncpost/compensation/trr_block_error.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
-#include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/trr_preview_evaluator.hpp"
 #include "ncpost/postproc/trr_solver.hpp"
-#include "ncpost/postproc/trr_subdivider.hpp"
-#include "ncpost/postproc/trr_preview_html.hpp"
-#include "ncpost/version.hpp"
+#include "trr_model_input.hpp"
 
 namespace ncpost::cli {
+namespace {
+
+/// The options the TRR-XY machine has not (UsageError naming why).
+void refuse_serial_options(const JobOptions& o) {
+  if (o.tool_length_mm != 0.0)
+    throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
+  if (o.input_kind == "rtcp")
+    throw UsageError("--input-kind rtcp: the TRR-XY machine has no RTCP programs (its G-code input is X Y U V W)");
+}
+
+trr::Kinematics kinematics_of(const trr::Machine& m, const trr::Errors& e) {
+  try {
+    return trr::Kinematics(m, e);
+  } catch (const std::runtime_error& ex) {
+    throw Infeasible(ex.what());
+  }
+}
+
+class TrrPreviewMachine final : public PreviewMachine {
+ public:
+  TrrPreviewMachine(trr::Machine machine, const trr::Errors& errors, const Vec3d& origin_mm, const JobOptions& job)
+      : machine_(std::move(machine)), nominal_(kinematics_of(machine_, {})), actual_(kinematics_of(machine_, errors)),
+        reading_(nominal_, nominal_, origin_mm), solver_(actual_, actual_, origin_mm), evaluator_(actual_, origin_mm),
+        kind_(input_kind_named(job.input_kind)), reader_(reader_options(job)) {}
+
+  const std::string& name() const override { return machine_.name; }
+  const MotionSolver& solver() const override { return solver_; }
+  const preview::BlockEvaluator& evaluator() const override { return evaluator_; }
+  /// APT CL data, or a program of the words X Y U V W read back through the nominal machine.
+  std::unique_ptr<cl::Reader> open_reader(std::istream& in, const std::string& name) const override {
+    const TrrSolver& reading = reading_;
+    return open_cl_reader(in, name, kind_, reader_, reading.machine(), Setup{},
+                          [&reading](const AxisPosition& q, std::string* why) { return reading.pose(q, why); });
+  }
+
+ private:
+  trr::Machine machine_;
+  trr::Kinematics nominal_, actual_;
+  TrrSolver reading_, solver_;
+  preview::TrrEvaluator evaluator_;
+  InputKind kind_;
+  cl::ReaderOptions reader_;
+};
+
+}  // namespace
+
 trr::Errors read_trr_model(const std::string& path, const std::string& machine_name, bool force_model) {
   std::vector<std::string> warnings;
   trr::ModelChecks checks;
@@ -33,133 +67,29 @@ trr::Errors read_trr_model(const std::string& path, const std::string& machine_n
   return e;
 }
 
-namespace {
-
-struct TrrPreviewJob {
-  trr::Machine machine;
-  Vec3d workpiece_origin_mm = Vec3d::Zero();
-};
-
-std::optional<TrrPreviewJob> load_trr_job(const JobOptions& o) {
-  if (machine_file_kind(o.machine) != "trr-xy") return std::nullopt;
-  TrrPreviewJob job;
-  job.machine = load_trr_xy_machine(o.machine);
-  job.workpiece_origin_mm = workpiece_origin_mm(o);
-  if (o.tool_length_mm != 0.0)
-    throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
-  if (o.input_kind == "rtcp")
-    throw UsageError("--input-kind rtcp: the TRR-XY machine has no RTCP programs (its G-code input is X Y U V W)");
-  return job;
-}
-
-/// Opens the input file `path` into `in` and its reader, named `name` in messages (InputError when
-/// it cannot be opened): APT CL data, or a program of the words X Y U V W read back through the
-/// nominal machine `reading` (which must outlive the reader).
-std::unique_ptr<cl::Reader> open_input(std::ifstream& in, const std::string& path, const std::string& name,
-                                       const JobOptions& o, const TrrSolver& reading) {
-  in.open(path, std::ios::binary);
-  if (!in) throw InputError({name, 0, 0}, "cannot open the input file");
-  return open_cl_reader(in, name, input_kind_named(o.input_kind), reader_options(o), reading.machine(), Setup{},
-                        [&reading](const AxisPosition& q, std::string* why) { return reading.pose(q, why); });
-}
-
-trr::Kinematics kinematics_for(const TrrPreviewJob& job, const std::string& model, bool force_model) {
+std::unique_ptr<PreviewMachine> load_trr_xy_preview(const PreviewArgs& a) {
+  trr::Machine m = load_trr_xy_machine(a.job.machine);
+  const Vec3d origin_mm = workpiece_origin_mm(a.job);
+  refuse_serial_options(a.job);
   trr::Errors e;
-  if (!model.empty()) e = read_trr_model(model, job.machine.name, force_model);
-  try {
-    return trr::Kinematics(job.machine, e);
-  } catch (const std::runtime_error& ex) {
-    throw Infeasible(ex.what());
-  }
+  if (!a.model.empty()) e = read_trr_model(a.model, m.name, a.force_model);
+  return std::make_unique<TrrPreviewMachine>(std::move(m), e, origin_mm, a.job);
 }
 
-}  // namespace
-
-TrrJob load_trr_post_job(const JobOptions& o, const std::string& model, const std::string& verify_on, bool rtcp,
-                         bool force_model) {
-  if (rtcp) throw UsageError("--rtcp: the TRR-XY machine has no RTCP dialect; it is posted in X Y U V W");
-  if (o.tool_length_mm != 0.0)
-    throw UsageError("--tool-length: the TRR-XY machine takes its tool offset from the machine file (tool_offset)");
-  if (o.input_kind == "rtcp")
-    throw UsageError("--input-kind rtcp: the TRR-XY machine has no RTCP programs (its G-code input is X Y U V W)");
+void load_trr_xy_post(const PostJobArgs& a, PostRequest& r) {
+  if (r.rtcp) throw UsageError("--rtcp: the TRR-XY machine has no RTCP dialect; it is posted in X Y U V W");
+  if (r.tilted_plane)
+    throw UsageError("--tilted-plane: the TRR-XY machine has no tilted work plane (its control has no rotary axes to "
+                     "turn a plane with, only the table X Y and the sliders U V W); post without --tilted-plane");
+  refuse_serial_options(a.job);
   TrrJob job;
-  job.machine = load_trr_xy_machine(o.machine);
-  if (!model.empty()) job.model = read_trr_model(model, job.machine.name, force_model);
-  if (!verify_on.empty()) job.verify_on = read_trr_model(verify_on, job.machine.name, force_model);
-  return job;
-}
-
-std::optional<int> preview_if_trr_xy(const TrrPreviewRequest& a) {
-  const std::optional<TrrPreviewJob> job = load_trr_job(a.job);
-  if (!job) return std::nullopt;
-  const trr::Kinematics k = kinematics_for(*job, a.model, a.force_model);
-  const trr::Kinematics nominal(job->machine);
-  const TrrSolver reading(nominal, nominal, job->workpiece_origin_mm);
-  std::ifstream in;
-  auto reader = open_input(in, a.input_path, a.input, a.job, reading);
-
-  // the program as posted without a tolerance (one block per CL motion), written nowhere
-  const TrrSolver solver(k, k, job->workpiece_origin_mm);
-  PostOptions o = trr_post_options();
-  AtomicFile sink((std::filesystem::temp_directory_path() / "ncpost-trr-preview.nc").string());  // never committed
-  NcWriter writer(sink, dialect_named("fanuc"), "XYUVW");
-  std::optional<AtomicFile> csv_file;
-  if (!a.csv.empty()) {
-    csv_file.emplace(a.csv);
-    csv_file->write(preview::kCsvHeader);
-  }
-  const trr::BlockEvaluator evaluator(k, job->workpiece_origin_mm);
-  trr::EvaluatorWork work;
-  std::size_t blocks = 0, over = 0;
-  double worst = 0.0, sum = 0.0, worst_orientation = 0.0;
-  int worst_line = 0;
-  std::size_t worst_block = 0;
-  PostSummary s;
-  trr::PreviewReport report;
-  o.on_block = [&](const WrittenBlock& wb) {
-    if (wb.rapid) return;
-    const trr::Block block{wb.from_cl, wb.to_cl, trr_command(wb.from), trr_command(wb.to)};
-    const trr::BlockError e = evaluator.evaluate(block, work);
-    ++blocks;
-    if (!a.html.empty())
-      report.rows.push_back({blocks, wb.line, e.max_mm, e.at_t, e.midpoint_mm, e.orientation_rad, wb.from_cl.tip_mm,
-                             wb.to_cl.tip_mm});
-    sum += e.max_mm;
-    if (e.max_mm > 0.005) ++over;
-    if (e.max_mm > worst) {
-      worst = e.max_mm;
-      worst_line = wb.line;
-      worst_block = blocks;
-    }
-    worst_orientation = std::max(worst_orientation, e.orientation_rad);
-    if (csv_file)
-      csv_file->write(fmt::format("{},{},{:.6f},{:.4f},{:.6f},{:.6f},{:.4f},{:.6f}\n", blocks, wb.line, e.max_mm, e.at_t,
-                                  e.midpoint_mm, rad_to_deg(e.orientation_rad), e.orientation_at_t,
-                                  e.harmonic_residual_mm));
-  };
-  try {
-    s = post_program(*reader, a.input, solver, writer, o);
-  } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const Infeasible*>(&e)) throw;
-    throw Infeasible(e.what());
-  }
-  if (!a.html.empty()) {
-    report.input_name = a.input;
-    report.machine_name = fmt::format("{} ({})", job->machine.name, a.job.machine);
-    report.model_name = a.model;
-    report.inputs.push_back({"CL input", a.input_path, a.input});
-    report.inputs.push_back({"machine file", a.job.machine});
-    if (!a.model.empty()) report.inputs.push_back({"error model", a.model});
-    report.motions = s.motions_in;
-    write_file_atomically(a.html, trr::preview_html(report));
-  }
-  if (csv_file) csv_file->commit();
-  for (const auto& n : s.notices) fmt::print(stderr, "notice: {}\n", n);
-  fmt::print("{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm (block {}, CL line {}), mean {:.4f} mm, "
-             "largest orientation error {:.4f} deg; blocks over 5 µm: {}\n",
-             s.motions_in, blocks, worst, worst_block, worst_line, blocks ? sum / static_cast<double>(blocks) : 0.0,
-             rad_to_deg(worst_orientation), over);
-  return 0;
+  job.machine = load_trr_xy_machine(a.job.machine);
+  if (!a.model.empty()) job.model = read_trr_model(a.model, job.machine.name, a.force_model);
+  if (!a.verify_on.empty()) job.verify_on = read_trr_model(a.verify_on, job.machine.name, a.force_model);
+  r.trr = std::move(job);
+  r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
+  r.model_source = a.model;
+  r.verify_on_source = a.verify_on;
 }
 
 }  // namespace ncpost::cli

@@ -1,22 +1,25 @@
 // SPDX-License-Identifier: Apache-2.0
-// `plan`, `simulate` and `identify` on the TRR-XY machine (sphere probing, trr_identify.hpp).
+// The TRR-XY steps of `plan`, `simulate` and `identify` (sphere probing, trr_identify.hpp;
+// kind_steps.hpp).
 #include <fmt/format.h>
 
 #include <random>
+#include <sstream>
 
+#include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/compensation/trr_probing_csv.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/nc_writer.hpp"
-#include "trr_commands.hpp"
+#include "trr_model_input.hpp"
 
 namespace ncpost::cli {
 
-std::optional<int> plan_if_trr_xy(const std::string& machine, const std::string& test, const std::string& output) {
-  if (machine_file_kind(machine) != "trr-xy") return std::nullopt;
-  if (test != "sphere") throw UsageError(fmt::format("plan {}: the TRR-XY machine has the sphere-probing plan only", test));
-  const trr::Machine m = load_trr_xy_machine(machine);
+PlanOutput plan_trr_xy(const PlanArgs& a) {
+  if (a.test != "sphere")
+    throw UsageError(fmt::format("plan {}: the TRR-XY machine has the sphere-probing plan only", a.test));
+  const trr::Machine m = load_trr_xy_machine(a.machine);
   trr::ProbingData plan;
   plan.metadata["machine"] = m.name;
   plan.metadata["probe"] = "sphere centre deviation; stylus = extra length beyond the tool (mm)";
@@ -27,33 +30,30 @@ std::optional<int> plan_if_trr_xy(const std::string& machine, const std::string&
       plan.rows.push_back({t, c, stylus, Vec3d::Zero()});
       t += 10.0;
     }
-  std::string stem = output;
-  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
-  write_file_atomically(stem + ".csv", trr::format_probing_csv(plan, true));
-  AtomicFile nc(stem + ".nc");
-  NcWriter w(nc, dialect_named("fanuc"), "XYUVW");
-  w.begin_program("TRRPROBE", {"ncpost plan sphere on " + m.name + ": probe the sphere at each pose (stylus 0, then 100 mm)"});
-  for (std::size_t i = 0; i < plan.rows.size(); ++i) {
-    if (i == poses.size()) w.comment("change the stylus: 100 mm");
-    NcMotion mo;
-    mo.rapid = true;
-    const auto v = plan.rows[i].command.words();
-    for (int k = 0; k < 5; ++k) mo.values[static_cast<std::size_t>(k)] = v[k];
-    w.motion(mo);
-    w.block("M0");
+  std::ostringstream program;
+  {
+    AtomicFile nc(program);
+    NcWriter w(nc, dialect_named("fanuc"), "XYUVW");
+    w.begin_program("TRRPROBE",
+                    {"ncpost plan sphere on " + m.name + ": probe the sphere at each pose (stylus 0, then 100 mm)"});
+    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
+      if (i == poses.size()) w.comment("change the stylus: 100 mm");
+      NcMotion mo;
+      mo.rapid = true;
+      const auto v = plan.rows[i].command.words();
+      for (int k = 0; k < 5; ++k) mo.values[static_cast<std::size_t>(k)] = v[k];
+      w.motion(mo);
+      w.block("M0");
+    }
+    w.end_program();
+    nc.commit();
   }
-  w.end_program();
-  nc.commit();
-  fmt::print("plan sphere: {} rows -> {}.csv\nNC program -> {}.nc\n", plan.rows.size(), stem, stem);
-  return 0;
+  return {{{"sphere", trr::format_probing_csv(plan, true), plan.rows.size()}}, program.str()};
 }
 
-std::optional<int> simulate_if_trr_xy(const std::string& machine, const std::string& model, const std::string& plan_path,
-                                      const std::string& output, double noise_um, std::uint64_t seed,
-                                      bool force_model) {
-  if (machine_file_kind(machine) != "trr-xy") return std::nullopt;
-  const trr::Machine m = load_trr_xy_machine(machine);
-  const trr::Errors e = read_trr_model(model, m.name, force_model);
+SimulateOutput simulate_trr_xy(const SimulateArgs& a) {
+  const trr::Machine m = load_trr_xy_machine(a.machine);
+  const trr::Errors e = read_trr_model(a.model, m.name, a.force_model);
   std::optional<trr::Kinematics> truth;
   try {
     truth.emplace(m, e);
@@ -61,31 +61,29 @@ std::optional<int> simulate_if_trr_xy(const std::string& machine, const std::str
     throw Infeasible(ex.what());
   }
   const trr::Kinematics nominal(m);
-  trr::ProbingData data = trr::read_probing_csv(plan_path, true);
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, noise_um / 1000.0);
+  trr::ProbingData data = trr::read_probing_csv(a.plan, true);
+  std::mt19937_64 rng(a.seed);
+  std::normal_distribution<double> noise(0.0, a.noise_um / 1000.0);
   for (trr::ProbingRow& r : data.rows) {
     const auto d = trr::predicted_deviation(*truth, nominal, r.command.slider_mm, r.stylus_mm);
-    if (!d) throw Infeasible(fmt::format("{}: a pose cannot be solved on the simulated machine", plan_path));
+    if (!d) throw Infeasible(fmt::format("{}: a pose cannot be solved on the simulated machine", a.plan));
     r.deviation_mm = *d;
-    if (noise_um > 0)
+    if (a.noise_um > 0)
       for (int c = 0; c < 3; ++c) r.deviation_mm[c] += noise(rng);
   }
-  write_file_atomically(output, trr::format_probing_csv(data, false));
-  fmt::print("simulated {} rows of sphere probing on '{}' (noise {} µm) -> {}\n", data.rows.size(), m.name, noise_um,
-             output);
-  return 0;
+  return {trr::format_probing_csv(data, false),
+          fmt::format("simulated {} rows of sphere probing on '{}' (noise {} µm)", data.rows.size(), m.name, a.noise_um)};
 }
 
-std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vector<std::string>& data_files,
-                                      const std::string& output, const std::string& other_options) {
-  if (machine_file_kind(machine) != "trr-xy") return std::nullopt;
-  if (!other_options.empty())
-    throw UsageError(fmt::format("{}: not available for the TRR-XY machine (its 30 parameters are always fitted)",
-                                 other_options));
-  const trr::Machine m = load_trr_xy_machine(machine);
+IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
+  const std::string serial_only = !a.params.empty() ? "--params" : !a.fixed.empty() ? "--fixed"
+                                : !a.report.empty() ? "--report" : "";
+  if (!serial_only.empty())
+    throw UsageError(
+        fmt::format("{}: not available for the TRR-XY machine (its 30 parameters are always fitted)", serial_only));
+  const trr::Machine m = load_trr_xy_machine(a.machine);
   std::vector<trr::ProbeMeasurement> data;
-  for (const auto& f : data_files)
+  for (const auto& f : a.data)
     for (const auto& pm : trr::measurements(trr::read_probing_csv(f, false))) data.push_back(pm);
   trr::IdentifyResult id;
   try {
@@ -104,7 +102,6 @@ std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vec
   fit.rms_after_um = id.rms_after_um;
   fit.max_after_um = id.max_after_um;
   file.fit = fit;
-  write_file_atomically(output, comp::format_model_json(file));
 
   fmt::print("TRR-XY identification from {} probed points: rank {} of {} ({} iterations)\n", data.size(),
              id.identifiability.rank, id.identifiability.parameters, id.iterations);
@@ -126,8 +123,7 @@ std::optional<int> identify_if_trr_xy(const std::string& machine, const std::vec
     for (const auto& [name, w] : dir) s += fmt::format(" {}{:+.3f}", name, w);
     fmt::print("  {}\n", s);
   }
-  fmt::print("model -> {}\n", output);
-  return 0;
+  return {comp::format_model_json(file), {}, fmt::format("model -> {}\n", a.output)};
 }
 
 }  // namespace ncpost::cli

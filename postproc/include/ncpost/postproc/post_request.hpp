@@ -59,8 +59,8 @@ struct PostRequest {
   // the job
   Machine machine;              ///< a serial machine (load_machine); unused with `trr`
   /// A TRR-XY machine instead of the serial one: the same post (trr_solver.hpp), with the words
-  /// X Y U V W; `model`/`verify_on` are then unused (TrrJob has its own), as are the tool length,
-  /// RTCP and the nonlinear method (adaptive cutting on the TRR-XY kinematics).
+  /// X Y U V W; `model`/`verify_on` are then unused (TrrJob has its own), as is the tool length
+  /// (the machine file's tool offset); no RTCP and no tilted plane (invalid()).
   std::optional<TrrJob> trr;
   std::string machine_source;   ///< where it came from (the machine file), named in the program header
   Setup setup;                  ///< workpiece origin and tool length

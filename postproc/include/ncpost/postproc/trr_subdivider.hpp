@@ -6,7 +6,10 @@
 // trr_block_error.hpp) leaves the straight CL segment. A block whose error exceeds
 // `split_fraction` of the tolerance is cut into ceil(sqrt(error / target)) (2 to 64) equal CL
 // pieces — tip interpolated linearly, axis on the great circle; the error of a short block grows
-// with its length squared — each checked again, at most `max_depth` times. mm, rad, CL in W.
+// with its length squared — each checked again, at most `max_depth` times. The interpolated axis
+// is nonlinear::slerp (nonlinear_block.hpp), as everywhere in the post. With `--nonlinear harmonic`
+// the block is cut by the paper's shift instead (make_trr_subdivider). mm, rad, CL in W.
+#include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/postproc/dialect.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/trr_solver.hpp"
@@ -15,6 +18,9 @@ namespace ncpost {
 
 struct TrrSubdivision {
   double tolerance_mm = 0.01;
+  /// adaptive: the cutting above; harmonic: the paper's shift (harmonic_compensation.hpp), the
+  /// tolerance choosing the number of blocks but not bounding what the model leaves.
+  nonlinear::Method method = nonlinear::Method::adaptive;
   /// Blocks are cut while their error exceeds this fraction of the tolerance: a margin for a
   /// checker that samples the block differently.
   double split_fraction = 0.95;

@@ -20,6 +20,8 @@
 // Units: mm, rad; CL in W.
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <fmt/format.h>
 
 #include "ncpost/compensation/harmonic_model.hpp"
@@ -39,6 +41,46 @@ struct HarmonicOptions {
   bool valid() const { return tolerance_mm > 0 && fixed_blocks >= 0 && max_blocks >= 1 && error.valid(); }
 };
 
+/// Output blocks for a block whose model amplitude is `amplitude_mm`: ceil(sqrt(Emax / tolerance))
+/// (the bow of an output block falls as 1/n²), or `fixed_blocks`; 1 to `max_blocks`.
+inline int harmonic_block_count(double amplitude_mm, const HarmonicOptions& options) {
+  int n = options.fixed_blocks;
+  if (n == 0 && amplitude_mm > options.tolerance_mm)
+    n = static_cast<int>(std::ceil(std::sqrt(amplitude_mm / options.tolerance_mm)));
+  return std::clamp(n, 1, options.max_blocks);
+}
+
+/// The paper's shift (eq. 4) on any machine, serial or parallel: the nodes of `block` cut into `n`
+/// output blocks at t_k = k/n, each node the commands that put the executed tool tip at
+/// E(t_k) − L(t_k). `executed_at(t)` is the executed tool (`.tip_mm`, `.axis` in W) at fraction t of
+/// the block, its commands interpolated linearly as the control does; `shifted(t, executed, tip_W,
+/// failure)` the commands near those at t that put the tip at `tip_W` with the tool axis the
+/// control has there (`executed.axis`), or nullopt with `failure` set. Each node stands for the
+/// point of the CL segment nearest its executed tip. The last node is the block's end.
+template <class ExecutedAt, class Shifted>
+SplitBlock harmonic_shift(const ClBlock& block, const HarmonicModel& model, int n, ExecutedAt&& executed_at,
+                          Shifted&& shifted) {
+  SplitBlock out;
+  const Vec3d p0 = block.start.tip_mm, d = block.end.tip_mm - block.start.tip_mm;
+  for (int k = 1; k < n; ++k) {
+    const double t = static_cast<double>(k) / n;
+    const auto executed = executed_at(t);
+    const Vec3d executed_tip = executed.tip_mm;
+    std::optional<AxisPosition> q = shifted(t, executed, Vec3d(executed_tip - model.offset_at(t)), out.failure);
+    if (!q) return out;
+    BlockNode node;
+    node.q = *q;
+    // the CL point this node stands for: where the executed point belongs on the segment
+    const double s = d.squaredNorm() > 0 ? std::clamp((executed_tip - p0).dot(d) / d.squaredNorm(), 0.0, 1.0) : t;
+    node.t = s;
+    node.cl.tip_mm = p0 + s * d;
+    node.cl.axis = lerp_axis(block.start.axis, block.end.axis, t);
+    out.nodes.push_back(node);
+  }
+  out.nodes.push_back({1.0, block.end, block.to});
+  return out;
+}
+
 template <class Errors = NominalErrors>
 SplitBlock harmonic_compensate(const Machine& machine, const Setup& setup, const ClBlock& block,
                                const Errors& errors = {}, const HarmonicOptions& options = {}) {
@@ -55,34 +97,23 @@ SplitBlock harmonic_compensate(const Machine& machine, const Setup& setup, const
     }
   }
   const HarmonicModel model = fit_harmonic(executed, options.fit, options.error);
-  SplitBlock out;
+  const int n = harmonic_block_count(model.amplitude_mm, options);
+  // the rotary axes keep their interpolated angles; the linear axes carry the shift
+  SplitBlock out = harmonic_shift(
+      block, model, n, [&](double t) { return executed.pose_at(lerp(block.from, block.to, t)); },
+      [&](double t, const auto&, const Vec3d& tip_W, std::string& failure) -> std::optional<AxisPosition> {
+        const AxisPosition q = shift_linear_axes(executed, lerp(block.from, block.to, t), tip_W);
+        for (int i = 0; i < 3; ++i) {
+          const Axis& axis = machine.axes[static_cast<std::size_t>(i)];
+          if (axis.limits && !axis.limits->contains(q.linear_mm[i], 1e-6)) {
+            failure = fmt::format("harmonic compensation: axis {} out of its limits at t = {:.3f}", axis.letter, t);
+            return std::nullopt;
+          }
+        }
+        return q;
+      });
   out.input_error_mm = model.amplitude_mm;  // the model's estimate; verify_split measures
-  int n = options.fixed_blocks;
-  if (n == 0 && model.amplitude_mm > options.tolerance_mm)
-    n = static_cast<int>(std::ceil(std::sqrt(model.amplitude_mm / options.tolerance_mm)));
-  n = std::clamp(n, 1, options.max_blocks);
-  const Vec3d p0 = block.start.tip_mm, d = block.end.tip_mm - block.start.tip_mm;
-  for (int k = 1; k < n; ++k) {
-    const double t = static_cast<double>(k) / n;
-    const AxisPosition interpolated = lerp(block.from, block.to, t);
-    const Vec3d executed_tip = executed.pose_at(interpolated).tip_mm;
-    BlockNode node;
-    node.q = shift_linear_axes(executed, interpolated, executed_tip - model.offset_at(t));
-    for (int i = 0; i < 3; ++i) {
-      const Axis& axis = machine.axes[static_cast<std::size_t>(i)];
-      if (axis.limits && !axis.limits->contains(node.q.linear_mm[i], 1e-6)) {
-        out.failure = fmt::format("harmonic compensation: axis {} out of its limits at t = {:.3f}", axis.letter, t);
-        return out;
-      }
-    }
-    // the CL point this node stands for: where the executed point belongs on the segment
-    const double s = d.squaredNorm() > 0 ? std::clamp((executed_tip - p0).dot(d) / d.squaredNorm(), 0.0, 1.0) : t;
-    node.t = s;
-    node.cl.tip_mm = p0 + s * d;
-    node.cl.axis = lerp_axis(block.start.axis, block.end.axis, t);
-    out.nodes.push_back(node);
-  }
-  out.nodes.push_back({1.0, block.end, block.to});
+  if (!out.ok()) return out;
   if (options.verify) verify_split(machine, setup, block, out, errors, options.error);
   if (n == 1) out.input_error_mm = out.max_error_mm;
   return out;
