@@ -42,7 +42,7 @@ int run_preview(const PreviewArgs& given) {
   if (auto rc = preview_if_trr_xy({a.job, a.model, a.csv, a.html, a.input, a.input_path, a.force_model})) return *rc;
   const LoadedJob job = load_job(a.job);
   std::unique_ptr<comp::MachineModel> model;
-  std::unique_ptr<MotionSolver> solver;
+  std::unique_ptr<KinematicModel> solver;
   std::unique_ptr<preview::BlockEvaluator> evaluator;
   if (!a.model.empty()) {
     const comp::ModelFile file = read_model_for(a.model, job.machine, a.force_model);
