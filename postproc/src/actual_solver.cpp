@@ -1,19 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/actual_solver.hpp"
 
-#include <atomic>
-
 namespace ncpost {
 
 namespace {
-
-/// The last solution's machine error on this thread (ActualSolver::error_at).
-struct KeptError {
-  std::uint64_t owner = 0;
-  AxisPosition q;
-  ToolPoseT<double> error;
-};
-thread_local KeptError kept;
 
 bool same(const AxisPosition& a, const AxisPosition& b) {
   return a.linear_mm == b.linear_mm && a.rotary_rad == b.rotary_rad;
@@ -21,25 +11,22 @@ bool same(const AxisPosition& a, const AxisPosition& b) {
 
 }  // namespace
 
-std::uint64_t ActualSolver::next_id() {
-  static std::atomic<std::uint64_t> counter{0};
-  return ++counter;
-}
-
-ToolPoseT<double> ActualSolver::error_at(const AxisPosition& q) const {
-  if (kept.owner == id_ && same(kept.q, q)) return kept.error;
+ToolPoseT<double> ActualSolver::error_at(const AxisPosition& q, SolverData& data) const {
+  const SolverData::LastError& kept = data.last_error;
+  if (kept.owner == this && same(kept.q, q)) return kept.error;
   const ToolPoseT<double> actual = model_.tool_pose(q, setup_, {}, &home_);
-  keep_error(q, actual);
+  keep_error(q, actual, data);
   return kept.error;
 }
 
-void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& actual) const {
+void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& actual, SolverData& data) const {
   const ToolPoseT<double> nominal = nominal_.execute(q);
-  kept = {id_, q, {actual.tip_mm - nominal.tip_mm, actual.axis - nominal.axis}};
+  data.last_error = {this, q, {actual.tip_mm - nominal.tip_mm, actual.axis - nominal.axis}};
 }
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
-                                      const std::optional<ClPoint>& guess_solves, SolveFigures* figures,
+                                      const std::optional<ClPoint>& guess_solves, SolverData& data,
+                                      SolveFigures* figures,
                                       std::string& failure, std::optional<ToolPoseT<double>>* executed,
                                       const std::optional<AxisPosition>& previous,
                                       const std::optional<AxisPosition>& stands) const {
@@ -59,22 +46,19 @@ AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& gue
   }
   if (figures) figures->residual_mm = r.tip_error_mm;
   if (r.actual_pose && !model_.has_reversal()) {
-    keep_error(*r.position, *r.actual_pose);
+    keep_error(*r.position, *r.actual_pose, data);
     if (executed) *executed = r.actual_pose;  // without reversal: the pose of every later execution
   }
   return *r.position;
 }
 
-void ActualSolver::record(const SolveFigures& figures) const {
-  if (figures.uncompensated_tip_mm >= 0.0) uncompensated_.add(figures.uncompensated_tip_mm);
-  if (figures.residual_mm >= 0.0) max_residual_mm_ = std::max(max_residual_mm_, figures.residual_mm);
+IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
+                                    SolveFigures* figures) const {
+  return solve_standing(cl, previous, data, figures, data.stands);
 }
 
-IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const {
-  return solve_standing(cl, previous, figures, actual_);
-}
-
-IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures,
+IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
+                                       SolveFigures* figures,
                                        const std::optional<AxisPosition>& stands) const {
   // The start: the nominal solution of the CL point less the machine's error at the previous
   // commands (its error changes little from one point to the next), on the post's choice of
@@ -82,7 +66,7 @@ IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& pr
   // on the direction of the move: start from the nominal solution of the CL point itself.
   ClPoint start = cl;
   if (!model_.has_reversal()) {
-    const ToolPoseT<double> e = error_at(previous);
+    const ToolPoseT<double> e = error_at(previous, data);
     start.tip_mm = cl.tip_mm - e.tip_mm;
     start.axis = (cl.axis.normalized() - e.axis).normalized();
   }
@@ -103,7 +87,7 @@ IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& pr
   }
   std::string failure;
   std::optional<ToolPoseT<double>> executed;
-  const AxisPosition q = compensate(cl, *o.position, start, figures, failure, &executed, previous, stands);
+  const AxisPosition q = compensate(cl, *o.position, start, data, figures, failure, &executed, previous, stands);
   if (!failure.empty()) {
     o.position.reset();
     o.failure.message = failure;
@@ -114,29 +98,51 @@ IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& pr
   return o;
 }
 
-AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const {
+AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const {
   // programmed angles (G-code input) are the start; the model then moves them as little as it must
   const AxisPosition nominal = nominal_.with_rotary(cl, rotary_rad);
   std::string failure;
   SolveFigures figures;
   if (measure_uncompensated_)
     figures.uncompensated_tip_mm =
-        (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, actual_), &home_).tip_mm - cl.tip_mm).norm();
-  const AxisPosition q = compensate(cl, nominal, std::nullopt, &figures, failure, nullptr, std::nullopt, actual_);
-  record(figures);
+        (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, data.stands), &home_).tip_mm - cl.tip_mm).norm();
+  const AxisPosition q = compensate(cl, nominal, std::nullopt, data, &figures, failure, nullptr, std::nullopt, data.stands);
+  data.record(figures);
   return failure.empty() ? q : nominal;
 }
 
-ToolPoseT<double> ActualSolver::execute(const AxisPosition& q) const {
-  return model_.tool_pose(q, setup_, comp::reversal_state(model_, q, actual_));
+std::vector<AxisPosition> ActualSolver::branches(const ClPoint& cl, const AxisPosition& previous,
+                                                SolverData& data) const {
+  std::vector<AxisPosition> out;
+  const std::optional<AxisPosition> previous_command =
+      model_.has_reversal() ? std::optional<AxisPosition>(previous) : std::nullopt;
+  for (const AxisPosition& nominal : admissible_solutions(model_.machine(), cl, setup_, previous)) {
+    std::string failure;
+    const AxisPosition q =
+        compensate(cl, nominal, cl, data, nullptr, failure, nullptr, previous_command, data.stands);
+    if (failure.empty()) out.push_back(q);
+  }
+  return out;
 }
 
-void ActualSolver::advance(const AxisPosition& command) const {
-  if (model_.has_reversal()) actual_ = comp::actual_after(model_, command, actual_);
+ToolPoseT<double> ActualSolver::deviation(const AxisPosition& q, const SolverData& data) const {
+  const ToolPoseT<double> actual = execute(q, data);
+  const ToolPoseT<double> nominal = nominal_.execute(q);
+  return {actual.tip_mm - nominal.tip_mm, actual.axis - nominal.axis};
 }
 
-std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, const AxisPosition& to) const {
-  if (!model_.has_reversal() || !actual_ || take_up_in_blocks_) return std::nullopt;
+ToolPoseT<double> ActualSolver::execute(const AxisPosition& q, const SolverData& data) const {
+  return model_.tool_pose(q, setup_, comp::reversal_state(model_, q, data.stands));
+}
+
+void ActualSolver::advance(const AxisPosition& command, SolverData& data) const {
+  if (model_.has_reversal()) data.stands = comp::actual_after(model_, command, data.stands);
+}
+
+std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, const AxisPosition& to,
+                                                  const SolverData& data) const {
+  const std::optional<AxisPosition>& actual = data.stands;
+  if (!model_.has_reversal() || !actual) return std::nullopt;
   AxisPosition q = from;
   bool any = false;
   const int n = static_cast<int>(model_.machine().axes.size());
@@ -147,7 +153,7 @@ std::optional<AxisPosition> ActualSolver::take_up(const AxisPosition& from, cons
     const double band = model_.values()[static_cast<std::size_t>(p)];
     const double lo = std::min(0.0, band), hi = std::max(0.0, band);
     // the edge of the band the new direction runs on: rising actual = command + lo, falling + hi
-    const double edge = (*actual_)[a] - (move > 0.0 ? lo : hi);
+    const double edge = (*actual)[a] - (move > 0.0 ? lo : hi);
     if (std::abs(edge - from[a]) > 1e-9) {
       q[a] = edge;
       any = true;

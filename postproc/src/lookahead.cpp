@@ -34,7 +34,7 @@ void BatchQueue::stop() {
   changed_.notify_all();
 }
 
-Lookahead::Lookahead(cl::Reader& reader, const MotionSolver& solver)
+Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver)
     : reader_(reader), solver_(solver), reading_([this] { read(); }), solving_([this] { solve(); }) {}
 
 Lookahead::~Lookahead() {
@@ -82,7 +82,7 @@ void Lookahead::solve() {
       if (!m || m->rotary_rad) continue;
       AheadSolve s{m->point, previous, {}, {}};
       try {
-        s.ik = solver_.solve_quiet(m->point, previous, &s.figures);
+        s.ik = solver_.solve_quiet(m->point, previous, solving_data_, &s.figures);
         if (s.ik.ok()) previous = *s.ik.position;
         item.solved = std::move(s);
       } catch (...) {

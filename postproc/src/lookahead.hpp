@@ -2,14 +2,15 @@
 #pragma once
 // The post's read-ahead (PostOptions::threads = 2): while the post writes one part of the program,
 // a reading thread parses the next CL records and a solving thread solves their motions
-// (MotionSolver::solve_quiet, the expensive part under `--model`), each from the commands of the
-// motion before it. Three stages on two cores: reading is light, so it shares a core with the post.
+// (KinematicModel::solve_quiet, the expensive part under `--model`), each from the commands of the
+// motion before it, with working data of its own (SolverData; the post records the figures of the
+// motions it uses in its own). Three stages on two cores: reading is light, so it shares a core with the post.
 //
 // The post uses a motion solved ahead only when it reaches that motion with the same CL point and
 // the same previous commands, bit for bit (`AheadSolve::fits`): anything that made the post's
 // sequence differ (arcs, cycles, retracts) just means it solves the motion itself. The program
 // is therefore the same as with one thread. Only solvers whose commands depend on nothing the
-// post's progress changes (`MotionSolver::concurrent`, i.e. no reversal state) solve ahead; for
+// post's progress changes (`KinematicModel::concurrent`, i.e. no reversal state) solve ahead; for
 // the others the records are only read ahead.
 //
 // Input errors thrown by the reader surface at the record where they occurred, after everything
@@ -72,7 +73,7 @@ class Lookahead {
 
   /// Starts reading. `reader` and `solver` must outlive the object. Motions are solved ahead only
   /// for a solver that is concurrent(); otherwise the records are only read ahead.
-  Lookahead(cl::Reader& reader, const MotionSolver& solver);
+  Lookahead(cl::Reader& reader, const KinematicModel& solver);
   ~Lookahead();  ///< stops the threads (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
@@ -85,7 +86,8 @@ class Lookahead {
   void solve();
 
   cl::Reader& reader_;
-  const MotionSolver& solver_;
+  const KinematicModel& solver_;
+  SolverData solving_data_;  ///< the solver's working data on the solving thread (that thread's only)
   BatchQueue parsed_{kMaxBatches};
   BatchQueue solved_{kMaxBatches};
   alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)

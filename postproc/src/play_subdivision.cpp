@@ -72,17 +72,18 @@ bool same_commands(const AxisPosition& a, const AxisPosition& b) {
 }  // namespace
 
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
+                                             SolverData& data,
                                              const SolvedPoint& from, const SolvedPoint& to,
                                              const nonlinear::CompensationOptions& options, const WordSteps& steps,
                                              std::string& failure) {
   std::vector<SolvedPoint> out;
-  std::optional<AxisPosition> stands = actual.stands();
+  std::optional<AxisPosition> stands = data.stands;
   SolvedPoint cur{from.cl, from.q};
   bool taken_up = false;  // at most one take-up per stretch start
   for (int stretch = 0; stretch < kMaxStretches; ++stretch) {
     AxisPosition end = to.q;
     if (!actual.reaches(to.cl, to.q, stands)) {
-      const IkOutcome o = actual.solve_standing(to.cl, cur.q, nullptr, stands);
+      const IkOutcome o = actual.solve_standing(to.cl, cur.q, data, nullptr, stands);
       if (!o.ok()) {
         failure = o.failure.message;
         return {};
@@ -90,7 +91,7 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
       end = *o.position;
     }
     auto ik = [&](const ClPoint& cl, const AxisPosition& previous) {
-      return actual.solve_standing(cl, previous, nullptr, stands);
+      return actual.solve_standing(cl, previous, data, nullptr, stands);
     };
     if (stands && !taken_up) {
       // the way each axis starts, from points along the stretch: take up the play before it

@@ -20,8 +20,9 @@ using detail::RecordBlocks;
 
 class Poster {
  public:
-  Poster(const std::string& input, const MotionSolver& solver, NcWriter& writer, const PostOptions& options)
-      : input_(input), solver_(solver), writer_(writer), options_(options), machine_(solver.machine()),
+  Poster(const std::string& input, const KinematicModel& solver, SolverData& data, NcWriter& writer,
+         const PostOptions& options)
+      : input_(input), solver_(solver), data_(data), writer_(writer), options_(options), machine_(solver.machine()),
         words_(solver.words()) {}
 
   PostSummary run(cl::Reader& reader) {
@@ -116,7 +117,7 @@ class Poster {
     if (plane_ && !rotary) {
       // the rotary axes stand still in the plane, where the point is within the limits there;
       // else the plane ends and the motion is posted as without it (limits, retract, message)
-      const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, nullptr);
+      const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, data_, nullptr);
       if (ik.ok() && (ik.position->rotary_rad - plane_->rotary_rad).cwiseAbs().maxCoeff() < 1e-9)
         rotary = plane_->rotary_rad;
       else
@@ -124,18 +125,18 @@ class Poster {
     }
     SolvedPoint next{cl, {}};
     if (rotary) {
-      next.q = solver_.with_rotary(cl, *rotary);
+      next.q = solver_.with_rotary(cl, *rotary, data_);
     } else {
       IkOutcome ik;
       if (ahead_ && ahead_->fits(cl, previous_.q)) {  // solved on the read-ahead thread
         ik = ahead_->ik;
-        solver_.record(ahead_->figures);
+        data_.record(ahead_->figures);
         ahead_ = nullptr;
       } else {
-        ik = solver_.solve(cl, previous_.q);
+        ik = solver_.solve(cl, previous_.q, data_);
       }
       if (!ik.ok())
-        throw Infeasible(unreachable_message(input_, line, solver_, cl, previous_.q, ik.failure.message));
+        throw Infeasible(unreachable_message(input_, line, solver_, data_, cl, previous_.q, ik.failure.message));
       next.q = *ik.position;
       next.executed = ik.executed;
     }
@@ -148,9 +149,9 @@ class Poster {
                                              options_.default_feed_mm_min));
       default_feed_noticed_ = true;
     }
-    if (have_position_ && !rapid && options_.take_up_reversal) {
+    if (have_position_ && !rapid && options_.take_up_reversal && !options_.subdivide.takes_up_play()) {
       // an actual machine with reversal: take up the play of reversing axes first (tool still)
-      if (auto q = solver_.take_up(previous_.q, next.q)) {
+      if (auto q = solver_.take_up(previous_.q, next.q, data_)) {
         const SolvedPoint still{previous_.cl, *q};
         emit(previous_, still, line, false);
         previous_ = still;
@@ -169,7 +170,7 @@ class Poster {
       SolvedPoint from = previous_;
       std::vector<SolvedPoint> points;
       try {
-        points = options_.subdivide(previous_, next);
+        points = options_.subdivide(previous_, next, data_);
       } catch (const Infeasible& e) {
         throw Infeasible(fmt::format("{}:{}: {}", input_, line, e.what()));
       }
@@ -199,11 +200,11 @@ class Poster {
     const double d = options_.retract_mm;
     const ClPoint up_here{previous_.cl.tip_mm + d * previous_.cl.axis, previous_.cl.axis};
     const ClPoint up_there{next.cl.tip_mm + d * next.cl.axis, next.cl.axis};
-    const IkOutcome a = solver_.solve(up_here, previous_.q);
-    const IkOutcome b = solver_.solve(up_there, next.q);
+    const IkOutcome a = solver_.solve(up_here, previous_.q, data_);
+    const IkOutcome b = solver_.solve(up_there, next.q, data_);
     if (!a.ok() || !b.ok())
       throw Infeasible(unreachable_message(
-          input_, line, solver_, !a.ok() ? up_here : up_there, !a.ok() ? previous_.q : next.q,
+          input_, line, solver_, data_, !a.ok() ? up_here : up_there, !a.ok() ? previous_.q : next.q,
           fmt::format("the axis limits force a change of solution, and the retract point {} mm along the tool axis "
                       "is out of reach: {}", d, !a.ok() ? a.failure.message : b.failure.message)));
     summary_.notices.push_back(fmt::format(
@@ -282,12 +283,12 @@ class Poster {
     if (!written && !split) return;  // the control is already there
     // (a split rapid that keeps Z is written whole by its first block: the machine is at `to` all the same)
     if (written && options_.verify && have_position_ && !rapid && !options_.rtcp) {
-      const double contour_mm = verify_block(solver_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
+      const double contour_mm = verify_block(solver_, data_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
       if (options_.on_verified) options_.on_verified(line, contour_mm);
     }
     if (written && options_.on_block && have_position_)
       options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
-    solver_.advance(executed);
+    solver_.advance(executed, data_);
     last_executed_ = executed;
   }
 
@@ -329,14 +330,14 @@ class Poster {
     const Vec3d n = c.axis.normalized();
     const Vec3d start = previous_.cl.tip_mm, stop = end.point.tip_mm;
     if (previous_.cl.axis.cross(n).norm() > 1e-9 || end.point.axis.cross(n).norm() > 1e-9) return false;
-    const IkOutcome ik = solver_.solve(end.point, previous_.q);
+    const IkOutcome ik = solver_.solve(end.point, previous_.q, data_);
     if (!ik.ok() || (ik.position->rotary_rad - previous_.q.rotary_rad).cwiseAbs().maxCoeff() > 1e-12) return false;
     const Vec3d centre = c.center_mm + (start - c.center_mm).dot(n) * n;  // in the plane of the arc
     // the arc in the program's frame: W under RTCP, else the linear axes for the fixed rotary angles
     auto frame = [&](const Vec3d& p) -> Vec3d {
       if (plane_) return plane_->words.to_plane(p + home_offset_);
       if (options_.rtcp) return p;
-      return solver_.with_rotary(ClPoint{p, n}, previous_.q.rotary_rad).linear_mm;
+      return solver_.with_rotary(ClPoint{p, n}, previous_.q.rotary_rad, data_).linear_mm;
     };
     const Vec3d xs = frame(start), xe = frame(stop), xc = frame(centre);
     const Vec3d normal = frame(centre + n) - xc;  // the circle axis in the frame (unit: a rigid map)
@@ -360,12 +361,12 @@ class Poster {
     writer_.arc(arc);
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
-    SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad) : *ik.position};
+    SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad, data_) : *ik.position};
     AxisPosition executed = next.q;
     if (plane_) executed = plane_executed(xe);
     else
       for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
-    solver_.advance(executed);
+    solver_.advance(executed, data_);
     last_executed_ = executed;
     previous_ = next;
     ++summary_.arcs_out;
@@ -410,12 +411,12 @@ class Poster {
   bool native_hole(const detail::HolePlanes& p, double feed, int line) {
     const auto words = cycle_words(writer_.dialect());
     if (!options_.native_cycles || !words) return false;
-    const IkOutcome ik = solver_.solve(p.retract, previous_.q);
+    const IkOutcome ik = solver_.solve(p.retract, previous_.q, data_);
     if (!ik.ok()) return false;  // the expansion names the failure
     const Eigen::Vector2d rotary = ik.position->rotary_rad;
     auto frame = [&](const ClPoint& c) -> Vec3d {
       if (plane_) return plane_->words.to_plane(c.tip_mm + home_offset_);
-      return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary).linear_mm;
+      return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary, data_).linear_mm;
     };
     const Vec3d xt = frame(p.retract), xr = frame(p.r_plane), xb = frame(p.bottom);
     // in a tilted plane its Z (rounded angles) is within ~1e-6 rad of the hole: the hole is native
@@ -438,7 +439,7 @@ class Poster {
       if (plane_) executed = plane_executed(xt);
       else
         for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
-      solver_.advance(executed);
+      solver_.advance(executed, data_);
       last_executed_ = executed;
       previous_ = at_retract;
       if (last_values_)
@@ -453,11 +454,11 @@ class Poster {
       // the feed of the cycle block re-executed: R plane to the bottom (and back for taps and bores)
       auto executed = [&](const ClPoint& c) {
         if (plane_) return plane_executed(frame(c));
-        AxisPosition q = solver_.with_rotary(c, rotary);
+        AxisPosition q = solver_.with_rotary(c, rotary, data_);
         for (int i = 0; i < 3; ++i) q.linear_mm[i] = writer_.rounded(i, q.linear_mm[i]);
         return q;
       };
-      const double e = verify_block(solver_, p.r_plane, executed(p.r_plane), p.bottom, executed(p.bottom), line,
+      const double e = verify_block(solver_, data_, p.r_plane, executed(p.r_plane), p.bottom, executed(p.bottom), line,
                                     summary_.verify);
       if (options_.on_verified) options_.on_verified(line, e);
     }
@@ -500,10 +501,10 @@ class Poster {
                                        "path without CUTCOM (the CL data are then the tool centre path)",
                                        side, comp_->where.line));
     if (plane_) return;  // the plane's Z is the tool axis: G41/G42 compensate in its XY
-    const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad).linear_mm;
+    const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad, data_).linear_mm;
     const Vec3d up = options_.rtcp ? Vec3d(previous_.cl.tip_mm + previous_.cl.axis)
                                    : solver_.with_rotary(ClPoint{previous_.cl.tip_mm + previous_.cl.axis, previous_.cl.axis},
-                                                         previous_.q.rotary_rad).linear_mm;
+                                                         previous_.q.rotary_rad, data_).linear_mm;
     if ((up - tip - Vec3d::UnitZ()).norm() > 1e-6)
       throw InputError(at, fmt::format("CUTCOM/{} (line {}): the tool axis is not along Z of the program frame here, "
                                        "and G41/G42 compensate in the XY plane; post the path without CUTCOM",
@@ -512,7 +513,8 @@ class Poster {
 
   const std::string& input_;
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
-  const MotionSolver& solver_;
+  const KinematicModel& solver_;
+  SolverData& data_;  ///< the solver's working data on the post's thread
   NcWriter& writer_;
   const PostOptions& options_;
   const Machine& machine_;
@@ -543,7 +545,7 @@ class Poster {
 
   /// The program frame at home P = W + home_offset_ (W is parallel to M at home).
   Vec3d home_offset() const {
-    return solver_.with_rotary(ClPoint{Vec3d::Zero(), Vec3d::UnitZ()}, Eigen::Vector2d::Zero()).linear_mm;
+    return solver_.with_rotary(ClPoint{Vec3d::Zero(), Vec3d::UnitZ()}, Eigen::Vector2d::Zero(), data_).linear_mm;
   }
 
   /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
@@ -559,13 +561,13 @@ class Poster {
 
   void open_plane(const ClPoint& cl) {
     const TiltedPlaneWords& tw = *writer_.dialect().tilted_plane;
-    const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, nullptr);
+    const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, data_, nullptr);
     if (!ik.ok()) return;  // the motion names the failure
     const Eigen::Vector2d rotary = ik.position->rotary_rad;
     // the program frame's axes seen from the tilted part (W) at this solution
-    const Vec3d o = solver_.with_rotary(ClPoint{Vec3d::Zero(), cl.axis}, rotary).linear_mm;
+    const Vec3d o = solver_.with_rotary(ClPoint{Vec3d::Zero(), cl.axis}, rotary, data_).linear_mm;
     Mat3d P_from_W;
-    for (int i = 0; i < 3; ++i) P_from_W.col(i) = solver_.with_rotary(ClPoint{Vec3d::Unit(i), cl.axis}, rotary).linear_mm - o;
+    for (int i = 0; i < 3; ++i) P_from_W.col(i) = solver_.with_rotary(ClPoint{Vec3d::Unit(i), cl.axis}, rotary, data_).linear_mm - o;
     const Mat3d R = plane_frame(cl.axis, P_from_W.row(0).transpose(), P_from_W.row(1).transpose());
     Plane p;
     p.words.convention = tw.angles;
@@ -577,7 +579,7 @@ class Poster {
     for (int i = 0; i < 3; ++i) p.words.origin_P_mm[i] = writer_.rounded(i, origin_P[i]);
     p.axis_W = cl.axis.normalized();
     p.rotary_rad = rotary;
-    const IkOutcome e = solver_.solve_quiet(ClPoint{cl.tip_mm, p.words.P_R_F.col(2)}, *ik.position, nullptr);
+    const IkOutcome e = solver_.solve_quiet(ClPoint{cl.tip_mm, p.words.P_R_F.col(2)}, *ik.position, data_, nullptr);
     p.executed_rotary_rad = e.ok() ? e.position->rotary_rad : rotary;
     // which of the two solutions: +1 the one with the larger first rotary angle
     int dir = 1;
@@ -609,7 +611,7 @@ class Poster {
     if (have_position_) {
       AxisPosition q = last_executed_;
       q.rotary_rad = p.executed_rotary_rad;
-      const Vec3d at = p.words.to_plane(solver_.execute(q).tip_mm + home_offset_);
+      const Vec3d at = p.words.to_plane(solver_.execute(q, data_).tip_mm + home_offset_);
       last_values_ = std::array<double, 5>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z()),
                                            0.0, 0.0};
     } else {
@@ -637,7 +639,7 @@ class Poster {
   AxisPosition plane_executed(const Vec3d& in_plane) const {
     Vec3d r;
     for (int i = 0; i < 3; ++i) r[i] = writer_.rounded(i, in_plane[i]);
-    return executed_in_plane(solver_, plane_->words, home_offset_, plane_->executed_rotary_rad, r);
+    return executed_in_plane(solver_, data_, plane_->words, home_offset_, plane_->executed_rotary_rad, r);
   }
 
   std::optional<Plane> plane_;
@@ -647,10 +649,16 @@ class Poster {
 
 }  // namespace
 
-PostSummary post_program(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
-                         NcWriter& writer, const PostOptions& options) {
-  Poster poster(input_name, solver, writer, options);
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
+                         NcWriter& writer, const PostOptions& options, SolverData& data) {
+  Poster poster(input_name, solver, data, writer, options);
   return poster.run(reader);
+}
+
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
+                         NcWriter& writer, const PostOptions& options) {
+  SolverData data;
+  return post_program(reader, input_name, solver, writer, options, data);
 }
 
 }  // namespace ncpost

@@ -91,7 +91,7 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   const bool account = r.verify || r.verify_on.has_value();
 
   std::unique_ptr<comp::MachineModel> model;
-  std::unique_ptr<MotionSolver> solver;
+  std::unique_ptr<KinematicModel> solver;
   const ActualSolver* actual = nullptr;
   if (r.model) {
     model = std::make_unique<comp::MachineModel>(r.machine, *r.model);
@@ -140,10 +140,11 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   NcWriter writer(out, r.dialect, axis_letters(r.machine));
   std::optional<ExecutedOn> verify_solver;
   if (executing) verify_solver.emplace(*solver, *executing, r.setup);
+  SolverData data;  // the solver's working data on this thread (reversal state, figures)
   try {
     result.summary = post_program(*reader, r.input_name,
-                                  verify_solver ? static_cast<const MotionSolver&>(*verify_solver) : *solver, writer,
-                                  options);
+                                  verify_solver ? static_cast<const KinematicModel&>(*verify_solver) : *solver, writer,
+                                  options, data);
   } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
     const std::string hint = reader->failure_hint();
     if (hint.empty()) throw;
@@ -158,8 +159,8 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   if (r.progress.posted) r.progress.posted(result.summary);
   detail::add_posted(acc, result.summary);
   if (actual) {
-    acc.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
-    acc.uncompensated_tip_rms_mm = actual->uncompensated().rms_mm();
+    acc.uncompensated_tip_max_mm = data.uncompensated.max_mm;
+    acc.uncompensated_tip_rms_mm = data.uncompensated.rms_mm();
   }
   if (account && !r.rtcp) {
     measure_before(input, start, r, executing ? executing.get() : model.get(), acc);

@@ -13,7 +13,7 @@ namespace {
 
 class Previewer {
  public:
-  Previewer(const std::string& input, const MotionSolver& solver, const BlockEvaluator& evaluator,
+  Previewer(const std::string& input, const KinematicModel& solver, const BlockEvaluator& evaluator,
             const std::function<void(const BlockRow&)>& sink, const std::function<void(std::size_t)>& progress)
       : input_(input), solver_(solver), evaluator_(evaluator), sink_(sink), progress_(progress) {}
 
@@ -31,11 +31,11 @@ class Previewer {
     if (progress_ && stats_.motions % 4096 == 0) progress_(stats_.motions);
     AxisPosition q;
     if (m.rotary_rad) {
-      q = solver_.with_rotary(m.point, *m.rotary_rad);
+      q = solver_.with_rotary(m.point, *m.rotary_rad, data_);
     } else {
-      const IkOutcome ik = solver_.solve(m.point, previous_q_);
+      const IkOutcome ik = solver_.solve(m.point, previous_q_, data_);
       if (!ik.ok())
-        throw PreviewInfeasible(unreachable_message(input_, m.where.line, solver_, m.point, previous_q_, ik.failure.message));
+        throw PreviewInfeasible(unreachable_message(input_, m.where.line, solver_, data_, m.point, previous_q_, ik.failure.message));
       q = *ik.position;
     }
     const bool cutting = !(m.rapid || m.from) && cycle_ == cl::Cycle::Kind::off;
@@ -65,7 +65,8 @@ class Previewer {
   template <class Other> void on(const Other&) {}
 
   const std::string& input_;
-  const MotionSolver& solver_;
+  const KinematicModel& solver_;
+  SolverData data_;  ///< the solver's working data (this thread's)
   const BlockEvaluator& evaluator_;
   const std::function<void(const BlockRow&)>& sink_;
   const std::function<void(std::size_t)>& progress_;
@@ -79,7 +80,7 @@ class Previewer {
 
 }  // namespace
 
-PreviewStats run_preview(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
+PreviewStats run_preview(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
                          const BlockEvaluator& evaluator, const std::function<void(const BlockRow&)>& sink,
                          const std::function<void(std::size_t)>& progress) {
   Previewer p(input_name, solver, evaluator, sink, progress);

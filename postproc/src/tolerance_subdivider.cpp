@@ -38,8 +38,8 @@ std::string rounded_in(std::string words, double value) {
 /// `tolerance_mm` of that point on the machine of `errors`. Empty when the start is not singular
 /// or the swing cannot be done in place (it would tilt the tool axis).
 template <class Errors>
-std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const MotionSolver& solver,
-                                                const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
+std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const KinematicModel& solver,
+                                                SolverData& data, const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
                                                 double tolerance_mm) {
   if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
   const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT[0]);
@@ -58,7 +58,7 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
   const double pace_rad = (to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff();
   std::optional<Eigen::Vector2d> swing;
   for (double t : kSingularProbeT) {
-    const IkOutcome o = solver.solve_quiet(nonlinear::cl_at(from.cl, to.cl, t), from.q, nullptr);
+    const IkOutcome o = solver.solve_quiet(nonlinear::cl_at(from.cl, to.cl, t), from.q, data, nullptr);
     if (!o.ok()) break;
     const Eigen::Vector2d d = o.position->rotary_rad - from.q.rotary_rad;
     if (d.cwiseAbs().maxCoeff() <= std::max(kSingularJumpRad, kSingularPaceFactor * t * pace_rad)) break;
@@ -70,10 +70,10 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
   if (std::abs((*swing)[1]) > std::abs((*swing)[0])) free = 1;
   (*swing)[1 - free] = 0.0;
   auto node = [&](double s) {
-    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * *swing)};
+    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * *swing, data)};
   };
   auto tilt_ok = [&](const SolvedPoint& p) {
-    return nonlinear::angle_between(solver.execute(p.q).axis, from.cl.axis) <= kTurnAxisDriftRad;
+    return nonlinear::angle_between(solver.execute(p.q, data).axis, from.cl.axis) <= kTurnAxisDriftRad;
   };
   // the linear axes follow the tip round the turning axis on a circle of radius r: start from the
   // chord count for r, then double until every turn block is within
@@ -112,31 +112,33 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
   return reach;
 }
 
-Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
+Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const KinematicModel& solver,
                                      const ActualSolver* actual, const nonlinear::CompensationOptions& options,
                                      const Dialect& dialect, const std::string& /*input_name*/) {
   // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
-  if (actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive)
-    actual->take_up_in_blocks();
-  return [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
-          angle = dialect.angle_decimals](const SolvedPoint& from, const SolvedPoint& to) {
+  const bool with_play =
+      actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive;
+  auto cut_block = [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
+                    angle = dialect.angle_decimals](const SolvedPoint& from, const SolvedPoint& to, SolverData& data) {
     nonlinear::CompensationOptions c = options;
     c.rounding_allowance_mm = std::min(
         0.5 * c.tolerance_mm,
         nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
     const double inner_tolerance_mm = c.tolerance_mm - c.rounding_allowance_mm;
     // inserted points are not CL points of the input: the solver's figures are left as they are
-    auto ik = [&solver](const ClPoint& cl, const AxisPosition& previous) { return solver.solve_quiet(cl, previous, nullptr); };
+    auto ik = [&solver, &data](const ClPoint& cl, const AxisPosition& previous) {
+      return solver.solve_quiet(cl, previous, data, nullptr);
+    };
     if (actual && actual->model().has_reversal() && c.method == nonlinear::Method::adaptive) {
       std::string failure;
       const WordSteps steps{std::pow(10.0, -linear), deg_to_rad(std::pow(10.0, -angle))};
-      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, from, to, c, steps, failure);
+      std::vector<SolvedPoint> points = subdivide_with_play(machine, setup, *actual, data, from, to, c, steps, failure);
       if (!failure.empty()) throw Infeasible(failure);
       return points;
     }
     auto cut = [&](const auto& errors) {
       std::vector<SolvedPoint> points =
-          turn_at_singular_start(machine, setup, solver, from, to, errors, inner_tolerance_mm);
+          turn_at_singular_start(machine, setup, solver, data, from, to, errors, inner_tolerance_mm);
       const SolvedPoint start = points.empty() ? from : SolvedPoint{from.cl, points.back().q};
       const nonlinear::ClBlock block{start.cl, to.cl, start.q, to.q, points.empty() ? from.executed : std::nullopt,
                                      to.executed};
@@ -148,8 +150,9 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
       for (const auto& node : split.nodes) points.push_back({node.cl, node.q});
       return points;
     };
-    return actual ? cut(actual->errors_from_here()) : cut(NominalErrors{});
+    return actual ? cut(actual->errors_from(data.stands)) : cut(NominalErrors{});
   };
+  return Subdivider(cut_block, with_play);
 }
 
 }  // namespace ncpost

@@ -47,7 +47,12 @@ CommandWords TrrSolver::words() const {
   return w;
 }
 
-IkOutcome TrrSolver::solve_quiet(const ClPoint& cl, const AxisPosition& /*previous*/, SolveFigures* /*figures*/) const {
+IkOutcome TrrSolver::solve_quiet(const ClPoint& cl, const AxisPosition& /*previous*/, SolverData& /*data*/,
+                                 SolveFigures* /*figures*/) const {
+  return inverse(cl);
+}
+
+IkOutcome TrrSolver::inverse(const ClPoint& cl) const {
   ClPoint unit = cl;
   unit.axis.normalize();
   const trr::InverseOutcome ik = trr::inverse(commanded_, unit, origin_);
@@ -61,9 +66,21 @@ IkOutcome TrrSolver::solve_quiet(const ClPoint& cl, const AxisPosition& /*previo
   return out;
 }
 
-AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& /*rotary_rad*/) const {
-  const IkOutcome o = solve_quiet(cl, AxisPosition{}, nullptr);
+AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& /*rotary_rad*/,
+                                    SolverData& /*data*/) const {
+  const IkOutcome o = inverse(cl);
   return o.position.value_or(AxisPosition{});
+}
+
+ToolPoseT<double> TrrSolver::deviation(const AxisPosition& q, const SolverData& /*data*/) const {
+  if (&commanded_ == &executing_) return {Vec3d::Zero(), Vec3d::Zero()};
+  const trr::Command c = trr_command(q);
+  std::string why;
+  const std::optional<trr::ToolPose> nominal = commanded_.tool(c.slider_mm, std::nullopt, &why);
+  if (!nominal)
+    throw Infeasible(fmt::format("the TRR-XY head cannot be solved at U{:.4f} V{:.4f} W{:.4f}: {}", q[2], q[3], q[4], why));
+  const ToolPoseT<double> actual = execute(q);
+  return {actual.tip_mm - trr::Kinematics::tip_in_workpiece(*nominal, c, origin_), actual.axis - nominal->axis};
 }
 
 std::optional<ToolPoseT<double>> TrrSolver::pose(const AxisPosition& q, std::string* why) const {

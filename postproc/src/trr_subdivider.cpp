@@ -74,7 +74,7 @@ class Cutter {
       ClPoint p;
       p.tip_mm = (1.0 - t) * from.cl.tip_mm + t * to.cl.tip_mm;
       p.axis = nonlinear::slerp(from.cl.axis, to.cl.axis, t);  // a great circle also between opposite axes
-      const IkOutcome ik = solver_.solve_quiet(p, start.q, nullptr);
+      const IkOutcome ik = solver_.inverse(p);
       if (!ik.ok()) throw Infeasible(fmt::format("a point inserted for the tolerance is out of reach: {}", ik.failure.message));
       const SolvedPoint mid{p, *ik.position};
       split(start, mid, depth + 1, out);

@@ -13,19 +13,19 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return (p - (a + t * ab)).norm();
 }
 
-AxisPosition executed_in_plane(const MotionSolver& solver, const TiltedPlane& plane, const Vec3d& home_offset_mm,
+AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
                                const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F) {
   const Vec3d tip_W = plane.to_program(xyz_F) - home_offset_mm;
-  return solver.with_rotary(ClPoint{tip_W, plane.P_R_F.col(2)}, rotary_rad);
+  return solver.with_rotary(ClPoint{tip_W, plane.P_R_F.col(2)}, rotary_rad, data);
 }
 
-double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
+double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples) {
   auto at = [&](double t) {
     AxisPosition q;
     q.linear_mm = q0.linear_mm + t * (q1.linear_mm - q0.linear_mm);
     q.rotary_rad = q0.rotary_rad + t * (q1.rotary_rad - q0.rotary_rad);
-    return solver.execute(q);
+    return solver.execute(q, data);
   };
   auto contour = [&](double t) { return distance_to_segment(at(t).tip_mm, cl0.tip_mm, cl1.tip_mm); };
   auto orientation = [&](double t) {

@@ -136,15 +136,18 @@ inline double worst_prediction_on_path_um(const Machine& m, const comp::ErrorPar
 
 /// Commands from the compensated IK of the identified model, execution on the truth: the post's
 /// verification then measures the cut the truth machine makes.
-class CompensatedOnTruth final : public MotionSolver {
+class CompensatedOnTruth final : public KinematicModel {
  public:
   CompensatedOnTruth(const comp::MachineModel& identified, const comp::MachineModel& truth, const Setup& setup)
       : compensated_(identified, setup), truth_(truth), setup_(setup) {}
-  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override {
-    return compensated_.solve_quiet(cl, previous, figures);
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
+                        SolveFigures* figures) const override {
+    return compensated_.solve_quiet(cl, previous, data, figures);
   }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& r) const override { return compensated_.with_rotary(cl, r); }
-  ToolPoseT<double> execute(const AxisPosition& q) const override { return truth_.tool_pose(q, setup_); }
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& r, SolverData& data) const override {
+    return compensated_.with_rotary(cl, r, data);
+  }
+  ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override { return truth_.tool_pose(q, setup_); }
   const Machine& machine() const override { return truth_.machine(); }
 
  private:
@@ -171,8 +174,8 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
   comp.rounding_allowance_mm = nonlinear::rounding_allowance_mm(4, 4, 200.0);
   PostOptions options;
   options.verify = true;
-  options.subdivide = [&](const SolvedPoint& a, const SolvedPoint& b) {
-    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) { return on_model.solve(cl, previous); };
+  options.subdivide = [&](const SolvedPoint& a, const SolvedPoint& b, SolverData& data) {
+    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) { return on_model.solve_quiet(cl, previous, data, nullptr); };
     const nonlinear::SplitBlock split = nonlinear::compensate_block(m, setup, {a.cl, b.cl, a.q, b.q}, errors, ik, comp);
     if (!split.ok()) throw std::runtime_error(split.failure);
     std::vector<SolvedPoint> points;

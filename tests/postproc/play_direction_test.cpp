@@ -23,21 +23,21 @@ TEST_CASE("play take-up: a move within one word step of where the axis stands sh
   setup.workpiece_origin_mm = Vec3d(0, 0, -450);
   setup.tool_length_mm = 150;
   const ActualSolver actual(model, setup);
-  actual.take_up_in_blocks();
+  SolverData data;  // where the axes stand, as the post follows them
   ClPoint a, b;
   a.tip_mm = Vec3d(150, 175, 0);
   b.tip_mm = Vec3d(100, 175, 0);
   // X and Y came rising to the start (actual = command); the program wrote Y rounded up by 0.04 µm
-  const IkOutcome start = actual.solve_quiet(a, AxisPosition{}, nullptr);
+  const IkOutcome start = actual.solve_quiet(a, AxisPosition{}, data, nullptr);
   REQUIRE(start.ok());
   const AxisPosition q0 = *start.position;
   AxisPosition below = q0;
   below.linear_mm -= Vec3d(1, 1, 1);
-  actual.advance(below);
+  actual.advance(below, data);
   AxisPosition written = q0;
   written.linear_mm.y() += 4e-5;
-  actual.advance(written);
-  const IkOutcome end = actual.solve_quiet(b, q0, nullptr);
+  actual.advance(written, data);
+  const IkOutcome end = actual.solve_quiet(b, q0, data, nullptr);
   REQUIRE(end.ok());
   const double rise_mm = end.position->linear_mm.y() - q0.linear_mm.y();
   REQUIRE(rise_mm > 1e-3);  // Y rises by a few µm over the block (the compensation)
@@ -45,7 +45,7 @@ TEST_CASE("play take-up: a move within one word step of where the axis stands sh
   options.tolerance_mm = 0.002;
   std::string failure;
   const std::vector<SolvedPoint> points =
-      subdivide_with_play(m, setup, actual, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, WordSteps{},
+      subdivide_with_play(m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, WordSteps{},
                           failure);
   INFO(failure);
   REQUIRE(!points.empty());
@@ -63,7 +63,7 @@ TEST_CASE("play take-up: a move within one word step of where the axis stands sh
   WordSteps fine;
   fine.linear_mm = 1e-6;
   const std::vector<SolvedPoint> fine_points =
-      subdivide_with_play(m, setup, actual, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, fine, failure);
+      subdivide_with_play(m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, fine, failure);
   REQUIRE(!fine_points.empty());
   CHECK(fine_points.front().q.linear_mm.y() < q0.linear_mm.y() - 2e-3);
 }

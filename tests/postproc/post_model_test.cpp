@@ -40,7 +40,7 @@ Outcome post_on_truth(const Machine& m, const Setup& setup, const std::string& c
   NominalSolver nominal(m, setup);
   std::unique_ptr<ActualSolver> actual;
   if (model) actual = std::make_unique<ActualSolver>(*model, setup);
-  const MotionSolver& commands = actual ? static_cast<const MotionSolver&>(*actual) : nominal;
+  const KinematicModel& commands = actual ? static_cast<const KinematicModel&>(*actual) : nominal;
   const ExecutedOn solver(commands, truth, setup);
   nonlinear::CompensationOptions comp;
   comp.tolerance_mm = tolerance_mm;
@@ -51,9 +51,10 @@ Outcome post_on_truth(const Machine& m, const Setup& setup, const std::string& c
   AtomicFile out("post_model_test_out.nc");
   NcWriter writer(out, dialect, "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
   Outcome o;
-  o.summary = post_program(reader, cl_path, solver, writer, options);
+  SolverData data;
+  o.summary = post_program(reader, cl_path, solver, writer, options, data);
   out.commit();
-  if (actual) o.uncompensated_tip_max_mm = actual->uncompensated().max_mm;
+  if (actual) o.uncompensated_tip_max_mm = data.uncompensated.max_mm;
   return o;
 }
 

@@ -48,7 +48,7 @@ Posted post_text(const Machine& m, const Setup& setup, const std::string& cl, co
   const NominalSolver nominal(m, setup);
   std::unique_ptr<ActualSolver> actual;
   if (model) actual = std::make_unique<ActualSolver>(*model, setup);
-  const MotionSolver& solver = actual ? static_cast<const MotionSolver&>(*actual) : nominal;
+  const KinematicModel& solver = actual ? static_cast<const KinematicModel&>(*actual) : nominal;
   const Dialect dialect = dialect_named("fanuc");
   nonlinear::CompensationOptions comp;
   PostOptions options;
@@ -59,14 +59,15 @@ Posted post_text(const Machine& m, const Setup& setup, const std::string& cl, co
   }
   const std::string path = "post_threads_test_" + std::to_string(threads) + ".nc";
   Posted p;
+  SolverData data;  // the post's working data: its figures are those of the CL points used
   {
     AtomicFile out(path);
     NcWriter writer(out, dialect, "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
-    p.summary = post_program(reader, name, solver, writer, options);
+    p.summary = post_program(reader, name, solver, writer, options, data);
     out.commit();
   }
   p.program = slurp(path);
-  if (actual) p.uncompensated = actual->uncompensated();
+  if (actual) p.uncompensated = data.uncompensated;
   return p;
 }
 

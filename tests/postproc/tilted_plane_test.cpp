@@ -350,16 +350,17 @@ TEST_CASE("tilted planes: verify measures where the plane's words put the tool")
   plane.P_R_F = plane_frame(k, Vec3d::UnitX(), Vec3d::UnitY());
   plane.origin_P_mm = a.tip_mm + kWorkpieceOrigin;
   const Eigen::Vector2d rotary = ik.position->rotary_rad;
-  const AxisPosition qa = executed_in_plane(solver, plane, kWorkpieceOrigin, rotary, plane.to_plane(a.tip_mm + kWorkpieceOrigin));
-  const AxisPosition qb = executed_in_plane(solver, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin));
+  SolverData data;
+  const AxisPosition qa = executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(a.tip_mm + kWorkpieceOrigin));
+  const AxisPosition qb = executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin));
   VerifyReport good;
-  CHECK(verify_block(solver, a, qa, b, qb, 1, good) < 1e-9);
+  CHECK(verify_block(solver, data, a, qa, b, qb, 1, good) < 1e-9);
   CHECK(good.max_endpoint_mm < 1e-9);
   // words that would not land on the CL point: 0.05 mm off in the plane's Y
   const AxisPosition wrong =
-      executed_in_plane(solver, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin) + Vec3d(0, 0.05, 0));
+      executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin) + Vec3d(0, 0.05, 0));
   VerifyReport bad;
-  CHECK(verify_block(solver, a, qa, b, wrong, 1, bad) == Approx(0.05).margin(1e-6));
+  CHECK(verify_block(solver, data, a, qa, b, wrong, 1, bad) == Approx(0.05).margin(1e-6));
   CHECK(bad.max_endpoint_mm == Approx(0.05).margin(1e-6));
 }
 

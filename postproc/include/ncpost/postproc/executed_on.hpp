@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// A MotionSolver whose commands come from one solver and whose execution is another machine's:
+// A KinematicModel whose commands come from one solver and whose execution is another machine's:
 // `post --verify-on TRUTH.json` re-executes the written program on a machine other than the one
 // it was compensated for (a simulated true machine, or a newer model), the way a test cuts a part.
 // Frames and units as motion_solver.hpp. Reversal offsets of the executing machine are followed
-// block by block, as ActualSolver does.
+// block by block in SolverData::executing_stands, as ActualSolver does in SolverData::stands.
 #include <optional>
 
 #include "ncpost/compensation/actual_ik.hpp"
@@ -13,36 +13,37 @@
 
 namespace ncpost {
 
-class ExecutedOn final : public MotionSolver {
+class ExecutedOn final : public KinematicModel {
  public:
-  ExecutedOn(const MotionSolver& commands, const comp::MachineModel& executing, const Setup& setup)
+  ExecutedOn(const KinematicModel& commands, const comp::MachineModel& executing, const Setup& setup)
       : commands_(commands), executing_(executing), setup_(setup) {}
-  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override {
-    return commands_.solve_quiet(cl, previous, figures);
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
+                        SolveFigures* figures) const override {
+    return commands_.solve_quiet(cl, previous, data, figures);
   }
-  void record(const SolveFigures& figures) const override { commands_.record(figures); }
   bool concurrent() const override { return commands_.concurrent(); }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override {
-    return commands_.with_rotary(cl, rotary_rad);
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const override {
+    return commands_.with_rotary(cl, rotary_rad, data);
   }
-  ToolPoseT<double> execute(const AxisPosition& q) const override {
-    return executing_.tool_pose(q, setup_, comp::reversal_state(executing_, q, actual_));
+  /// On the executing machine, its axes standing at data.executing_stands.
+  ToolPoseT<double> execute(const AxisPosition& q, const SolverData& data) const override {
+    return executing_.tool_pose(q, setup_, comp::reversal_state(executing_, q, data.executing_stands));
   }
-  void advance(const AxisPosition& q) const override {
-    commands_.advance(q);
-    if (executing_.has_reversal()) actual_ = comp::actual_after(executing_, q, actual_);
+  void advance(const AxisPosition& q, SolverData& data) const override {
+    commands_.advance(q, data);
+    if (executing_.has_reversal()) data.executing_stands = comp::actual_after(executing_, q, data.executing_stands);
   }
   Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override { return commands_.programmed_tip(cl, q); }
-  std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to) const override {
-    return commands_.take_up(from, to);
+  std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to,
+                                      const SolverData& data) const override {
+    return commands_.take_up(from, to, data);
   }
   const Machine& machine() const override { return commands_.machine(); }
 
  private:
-  const MotionSolver& commands_;
+  const KinematicModel& commands_;
   const comp::MachineModel& executing_;
   Setup setup_;
-  mutable std::optional<AxisPosition> actual_;
 };
 
 }  // namespace ncpost

@@ -41,9 +41,10 @@ struct WordSteps {
 };
 
 /// The nodes of the block (from, to) ending with `to`'s commands; empty with `failure` set when a
-/// stretch cannot be compensated. `steps`: the resolution the commands are written with.
+/// stretch cannot be compensated. `steps`: the resolution the commands are written with. `data`:
+/// the post's (the axes stand at data.stands; the solver's caches).
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
-                                             const SolvedPoint& from, const SolvedPoint& to,
+                                             SolverData& data, const SolvedPoint& from, const SolvedPoint& to,
                                              const nonlinear::CompensationOptions& options, const WordSteps& steps,
                                              std::string& failure);
 

@@ -4,12 +4,13 @@
 //
 // Every CL motion becomes one block (circles and cycles are expanded into motions first), unless
 // a subdivider is given (`--tolerance`: the nonlinear error of each block is bounded). Commands
-// come from a MotionSolver (nominal or actual machine); without RTCP the program holds machine
+// come from a KinematicModel (nominal or actual machine); without RTCP the program holds machine
 // axis positions (X Y Z of the TCP in M, rotary angles in degrees); with RTCP it holds the tool
 // tip in W and the rotary angles, and the control does the kinematics.
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ncpost/postproc/cl_record.hpp"
@@ -36,8 +37,36 @@ struct WrittenBlock {
   AxisPosition from, to;
 };
 
-/// Splits the block (from, to) into points ending with `to`'s; given by `--tolerance`.
-using Subdivider = std::function<std::vector<SolvedPoint>(const SolvedPoint& from, const SolvedPoint& to)>;
+/// Splits the block (from, to) into points ending with `to`'s; given by `--tolerance`. It solves
+/// with the post's SolverData (where the axes stand, the solver's caches), passed on each call.
+class Subdivider {
+ public:
+  using Cut = std::function<std::vector<SolvedPoint>(const SolvedPoint& from, const SolvedPoint& to, SolverData& data)>;
+  Subdivider() = default;
+  /// `cut(from, to, data)`. `takes_up_play`: the subdivision takes up the reversal play inside
+  /// blocks (play_subdivision.hpp), so the post writes no take-up blocks at the CL points
+  /// (KinematicModel::take_up).
+  template <class F>
+    requires std::is_invocable_r_v<std::vector<SolvedPoint>, const F&, const SolvedPoint&, const SolvedPoint&,
+                                   SolverData&>
+  Subdivider(F cut, bool takes_up_play = false)  // NOLINT(google-explicit-constructor): as a std::function
+      : cut_(std::move(cut)), takes_up_play_(takes_up_play) {}
+  /// A subdivision that needs no solver data: `f(from, to)`.
+  template <class F>
+    requires std::is_invocable_r_v<std::vector<SolvedPoint>, const F&, const SolvedPoint&, const SolvedPoint&>
+  Subdivider(F f)  // NOLINT(google-explicit-constructor): assigned from a lambda like a std::function
+      : cut_([f = std::move(f)](const SolvedPoint& from, const SolvedPoint& to, SolverData&) { return f(from, to); }) {}
+
+  explicit operator bool() const { return static_cast<bool>(cut_); }
+  std::vector<SolvedPoint> operator()(const SolvedPoint& from, const SolvedPoint& to, SolverData& data) const {
+    return cut_(from, to, data);
+  }
+  bool takes_up_play() const { return takes_up_play_; }
+
+ private:
+  Cut cut_;
+  bool takes_up_play_ = false;
+};
 
 struct PostOptions {
   bool rtcp = false;
@@ -103,8 +132,13 @@ struct PostSummary {
 };
 
 /// Posts the whole input. Throws InputError (bad input) or Infeasible (a CL point with no
-/// admissible solution; the message names the file and line).
-PostSummary post_program(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
+/// admissible solution; the message names the file and line). `data` is the solver's working data
+/// on the post's thread: its figures (SolverData::uncompensated, max_residual_mm) are those of the
+/// points the program uses (read-ahead threads solve with data of their own).
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
+                         NcWriter& writer, const PostOptions& options, SolverData& data);
+/// The same with fresh working data, dropped at the end (no figures wanted).
+PostSummary post_program(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
                          NcWriter& writer, const PostOptions& options);
 
 }  // namespace ncpost

@@ -84,7 +84,7 @@ struct PreviewStats {
 /// motion; programmed rotary angles of G-code input are kept), evaluates every feed block with
 /// `evaluator` and hands it to `sink`. Throws InputError (bad input) or std::runtime_error naming
 /// the CL line when a motion has no admissible solution.
-PreviewStats run_preview(cl::Reader& reader, const std::string& input_name, const MotionSolver& solver,
+PreviewStats run_preview(cl::Reader& reader, const std::string& input_name, const KinematicModel& solver,
                          const BlockEvaluator& evaluator, const std::function<void(const BlockRow&)>& sink,
                          const std::function<void(std::size_t)>& progress = {});
 

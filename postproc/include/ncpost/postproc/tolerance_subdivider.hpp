@@ -29,7 +29,7 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
 /// machine of a model (else nullptr). A block that cannot be compensated throws Infeasible saying
 /// why (the post adds the file and CL line; `input_name` is not used). All references must outlive
 /// the returned function.
-Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const MotionSolver& solver,
+Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const KinematicModel& solver,
                                      const ActualSolver* actual, const nonlinear::CompensationOptions& options,
                                      const Dialect& dialect, const std::string& input_name);
 

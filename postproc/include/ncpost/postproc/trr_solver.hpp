@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The TRR-XY machine (docs/trr-xy.md) as the post's MotionSolver: the common post (post.hpp) writes
+// The TRR-XY machine (docs/trr-xy.md) as the post's KinematicModel: the common post (post.hpp) writes
 // its programs, with --tolerance (trr_subdivider.hpp), --verify, --verify-on and --report.
 //
 // Commands: AxisPosition slots 0..4 (operator[]) are the words X Y (table) U V W (sliders of chains
@@ -20,17 +20,23 @@ namespace ncpost {
 AxisPosition trr_slots(const trr::Command& c);
 trr::Command trr_command(const AxisPosition& q);
 
-class TrrSolver final : public MotionSolver {
+class TrrSolver final : public KinematicModel {
  public:
   /// `commanded` and `executing` must outlive the solver (they may be the same object).
   TrrSolver(const trr::Kinematics& commanded, const trr::Kinematics& executing, const Vec3d& workpiece_origin_mm);
 
-  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolveFigures* figures) const override;
+  IkOutcome solve_quiet(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
+                        SolveFigures* figures) const override;
+  /// The commands of `cl` (the machine keeps no state: no data, no previous commands needed).
+  IkOutcome inverse(const ClPoint& cl) const;
   bool concurrent() const override { return true; }
   /// The TRR-XY machine has no rotary words: the angles are ignored (the post never asks: words().serial is false).
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const override;
+  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const override;
   /// Tool tip and axis in W at the commands; throws Infeasible when the plate pose cannot be solved.
-  ToolPoseT<double> execute(const AxisPosition& q) const override;
+  ToolPoseT<double> execute(const AxisPosition& q, const SolverData& /*data*/) const override { return execute(q); }
+  ToolPoseT<double> execute(const AxisPosition& q) const;
+  /// The executing machine's pose less the commanded machine's at q (zero when they are the same).
+  ToolPoseT<double> deviation(const AxisPosition& q, const SolverData& data) const override;
   /// execute() without throwing: nullopt, with `why`, where the plate pose cannot be solved.
   std::optional<ToolPoseT<double>> pose(const AxisPosition& q, std::string* why) const;
   /// The axes X Y U V W with their limits (all linear: not a serial chain, see words()).

@@ -23,7 +23,7 @@ struct VerifyReport {
 /// Adds one block from (cl0, q0) to (cl1, q1), executed on `solver`'s machine, to the report and
 /// returns its contour error (mm). `samples` points per block, refined around the largest by
 /// golden-section search.
-double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
+double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
                   const AxisPosition& q1, int line, VerifyReport& report, int samples = 24);
 
 /// The commands the control executes for the words X Y Z `xyz_F` (as written) of a block in the
@@ -31,7 +31,7 @@ double verify_block(const MotionSolver& solver, const ClPoint& cl0, const AxisPo
 /// home P, into W (W = P - `home_offset_mm`), then the machine with the rotary axes at
 /// `rotary_rad` (where the control turned them: the tool along the plane's Z). verify_block of two
 /// such commands measures the block as the control runs it.
-AxisPosition executed_in_plane(const MotionSolver& solver, const TiltedPlane& plane, const Vec3d& home_offset_mm,
+AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
                                const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F);
 
 /// Distance of `p` from the segment a-b.

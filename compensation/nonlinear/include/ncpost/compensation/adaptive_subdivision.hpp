@@ -215,7 +215,7 @@ template <class Errors, class Solver> class Subdivider {
 
   /// Cuts `p` at the parameters `cuts` (strictly inside (p.ta, p.tb), ascending); nullopt with
   /// `failure` set when a node cannot be solved or jumps.
-  std::optional<std::vector<Piece>> cut(const Piece& p, const std::vector<double>& cuts, std::string& failure) const {
+  std::optional<std::vector<Piece>> cut(const Piece& p, const std::vector<double>& cuts, std::string& failure) {
     std::vector<Piece> pieces;
     double ta = p.ta;
     ClPoint ca = p.ca;
@@ -258,7 +258,7 @@ template <class Errors, class Solver> class Subdivider {
   }
 
   /// The node at tb with the block's interpolated rotary angles and the tip on cb.
-  std::optional<AxisPosition> rotary_kept_node(double tb, const ClPoint& cb, std::string& failure) const {
+  std::optional<AxisPosition> rotary_kept_node(double tb, const ClPoint& cb, std::string& failure) {
     const ExecutedBlock<Errors> executed(machine_, setup_, block_, errors_);
     const AxisPosition q = shift_linear_axes(executed, lerp(block_.from, block_.to, tb), cb.tip_mm);
     for (int i = 0; i < 3; ++i) {
@@ -332,7 +332,7 @@ template <class Errors, class Solver> class Subdivider {
   Solver& solver_;
   const AdaptiveOptions& options_;
   double max_step_ = 0.0;
-  mutable int rotary_kept_ = 0;
+  int rotary_kept_ = 0;  ///< nodes placed by rotary_kept_node (counted as the block is cut)
   bool keep_rotary_ = false;
   bool bow_bounded_ = false;
 };
