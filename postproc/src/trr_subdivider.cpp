@@ -120,7 +120,7 @@ class HarmonicCutter {
           ClPoint p;
           p.tip_mm = tip_W;
           p.axis = e.axis;
-          const IkOutcome ik = solver_.solve_quiet(p, nonlinear::lerp(from.q, to.q, t), nullptr);
+          const IkOutcome ik = solver_.inverse(p);
           if (ik.ok()) return *ik.position;
           failure = fmt::format("a point shifted by the harmonic model is out of reach: {}", ik.failure.message);
           return std::nullopt;
