@@ -96,6 +96,12 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
                                              component_word(out.rotary, s.component), letter));
         }
         break;
+      case ParameterKind::coupled:
+        if (left_seen.insert(s.name).second)
+          out.left_out.push_back(fmt::format("{} (location error of {} that changes with {}: a one-axis table cannot move "
+                                             "an axis line)", s.name, letter,
+                                             model.machine().axes[static_cast<std::size_t>(s.coupled_axis_index)].letter));
+        break;
       default: break;
     }
   }
