@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "ncpost/compensation/diagnose_attribution.hpp"
 #include "ncpost/compensation/diagnose_effect_size.hpp"
 #include "ncpost/compensation/diagnose_screening.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
@@ -292,6 +293,66 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
   }
 }
 
+
+/// Keeps the added effects that stand on their own evidence beside the structure the final model
+/// leaves (diagnose_attribution.hpp); the others go to `not_attributed` and out of the model.
+void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet>& sets,
+                              const std::vector<std::string>& basic_names, const DiagnoseOptions& o, Model& model,
+                              DiagnoseResult& out, const std::function<void(const std::string&)>& say) {
+  const Eigen::VectorXd r = residual_of(m, sets, model, o.identify);
+  const auto left = residual_structure(m, sets, r, o.significance);
+  if (left.empty()) return;
+  auto [names, values] = layout_with_values(model, o.identify.fixed);
+  std::vector<int> columns;
+  std::vector<std::string> fitted;
+  for (const auto& n : model.names)
+    if (model.fit.uncertainty.contains(n)) {
+      columns.push_back(static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin()));
+      fitted.push_back(n);
+    }
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  const Eigen::MatrixXd J = prob.jacobian(values, columns);
+  const Eigen::MatrixXd nuisance = structure_nuisance(sets, residual_columns(m, sets, r), left, r.size());
+  std::vector<AddedEffect> kept;
+  std::string dropped;
+  for (AddedEffect& e : out.added) {
+    std::vector<int> cols;
+    Eigen::VectorXd beta(static_cast<Eigen::Index>(e.candidate.parameters.size()));
+    for (std::size_t j = 0; j < e.candidate.parameters.size(); ++j) {
+      const std::string& p = e.candidate.parameters[j];
+      cols.push_back(static_cast<int>(std::find(fitted.begin(), fitted.end(), p) - fitted.begin()));
+      beta[static_cast<Eigen::Index>(j)] = model.fit.parameters.value_or(p, 0.0);
+    }
+    const bool all_fitted = std::all_of(cols.begin(), cols.end(), [&](int c) { return c < static_cast<int>(fitted.size()); });
+    const OwnEvidence ev = all_fitted ? own_evidence(J, r, cols, beta, nuisance) : OwnEvidence{};
+    const double alpha = o.significance / std::max(1, e.tested);
+    const bool own = ev.separation > o.alias_tolerance && ev.p_value < alpha;
+    say(fmt::format("{} beside the unexplained structure: separation {:.3g}, F = {:.4g}, p = {:.3g} (needs < {:.3g}): {}",
+                    e.candidate.effect, ev.separation, ev.f_statistic, ev.p_value, alpha, own ? "kept" : "not attributed"));
+    if (own) {
+      kept.push_back(e);
+    } else {
+      out.not_attributed.push_back(e.candidate.effect);
+      dropped += (dropped.empty() ? "" : ", ") + e.candidate.effect;
+    }
+  }
+  if (dropped.empty()) return;
+  out.stop_reason += fmt::format("; structure remains that no candidate explains ({} {} against {}: {}); {} not attributed "
+                                 "(no evidence of {} own once that structure is absorbed)",
+                                 left.front().file, left.front().value, left.front().axis, left.front().shape, dropped,
+                                 out.not_attributed.size() == 1 ? "its" : "their");
+  say("not attributed: " + dropped);
+  out.added = std::move(kept);
+  Model refit{basic_names, {}, out.basic};
+  for (const auto& e : out.added) {
+    for (const auto& p : e.candidate.parameters) refit.names.push_back(p);
+    for (std::size_t h = 0; h < e.candidate.held.size(); ++h)
+      refit.held.set(e.candidate.held.names()[h], model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
+  }
+  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify);
+  if (!refit.fit.converged) refit = Model{basic_names, {}, out.basic}, out.added.clear();
+  model = std::move(refit);
+}
 }  // namespace
 
 std::string DiagnoseOptions::validate() const {
@@ -522,25 +583,11 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   }
   // No false attribution (issue 17): an effect is found only if, with it, what is left is at the
   // noise or explained by the effects added after it. When the final model still leaves
-  // structure against a rotary axis, the effects fitted on the way only chased what the catalogue
-  // does not hold: none is attributed, the model stays the basic one and the structure is
-  // reported (diagnosis.unexplained, with the measurement that would resolve it).
-  if (!out.added.empty() && model.fit.converged) {
-    const auto left = residual_structure(m, sets, residual_of(m, sets, model, o.identify), o.significance);
-    if (!left.empty()) {
-      std::string list;
-      for (const auto& e : out.added) {
-        out.not_attributed.push_back(e.candidate.effect);
-        list += (list.empty() ? "" : ", ") + e.candidate.effect;
-      }
-      out.stop_reason += fmt::format("; with {} structure remains that no candidate explains ({} {} against {}: {}), so "
-                                     "none of them is attributed", list, left.front().file, left.front().value,
-                                     left.front().axis, left.front().shape);
-      say("not attributed: " + list);
-      out.added.clear();
-      model = Model{basic_names, {}, out.basic};
-    }
-  }
+  // structure, each added effect must stand on its own evidence with every one-axis shape of that
+  // structure absorbed (diagnose_attribution.hpp): the ones that only chased it are not
+  // attributed, the others are kept and the model refitted with them; the structure is reported
+  // (diagnosis.unexplained, with the measurement that would resolve it).
+  if (!out.added.empty() && model.fit.converged) attribute_with_structure(m, sets, basic_names, o, model, out, say);
   // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
   // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
   if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
