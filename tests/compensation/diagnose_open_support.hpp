@@ -50,20 +50,22 @@ inline comp::ErrorParameters ecc_bump(double amplitude_rad, double at_deg, doubl
   return p;
 }
 
-/// The plan simulated on a truth whose tilt of C about X grows with A (EA0C = base + per_rad · A,
-/// an effect coupling two axes that no candidate holds): row by row, each with its own truth.
-inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
-                                                               const comp::ErrorParameters& truth, double per_rad,
-                                                               double noise_um, std::uint64_t seed) {
+/// The plan simulated row by row, each row with its own truth: `vary(truth, row)` changes a copy
+/// of `truth` for that row (effects that depend on more than one axis, outside the model's
+/// families: an independent simulation of them).
+template <class Vary>
+inline std::vector<comp::MeasurementSet> simulate_row_by_row(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+                                                             const comp::ErrorParameters& truth, const Vary& vary,
+                                                             double noise_um, std::uint64_t seed) {
+  (void)m;
   std::vector<comp::MeasurementSet> sets;
-  const int a = m.index_of('A');
   for (std::size_t i = 0; i < plans.size(); ++i) {
     comp::MeasurementSet out = plans[i];
     for (std::size_t r = 0; r < plans[i].rows.size(); ++r) {
       comp::MeasurementSet one = plans[i];
       one.rows = {plans[i].rows[r]};
       comp::ErrorParameters t = truth;
-      t.set("EA0C", truth.value_or("EA0C", 0.0) + per_rad * plans[i].rows[r].command[a]);
+      vary(t, plans[i].rows[r]);
       comp::SimulationOptions o;
       o.noise_um = noise_um;
       o.seed = seed + 7919 * i + 104729 * r;
@@ -73,6 +75,33 @@ inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m,
     sets.push_back(std::move(out));
   }
   return sets;
+}
+
+/// The plan simulated on a truth whose tilt of C about X grows with A (EA0C = base + per_rad · A,
+/// an effect coupling two axes): row by row, each with its own truth.
+inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+                                                               const comp::ErrorParameters& truth, double per_rad,
+                                                               double noise_um, std::uint64_t seed) {
+  const int a = m.index_of('A');
+  return simulate_row_by_row(
+      m, plans, truth,
+      [&](comp::ErrorParameters& t, const comp::MeasurementRow& row) {
+        t.set("EA0C", truth.value_or("EA0C", 0.0) + per_rad * row.command[a]);
+      },
+      noise_um, seed);
+}
+
+/// The plan simulated on a truth with an effect outside every family of the model: a
+/// three-per-revolution angular error of C whose amplitude grows with A (ECC:h3:sin = per_rad ·
+/// A, rad per rad of A): wrong-model data for the false-attribution rate.
+inline std::vector<comp::MeasurementSet> simulate_h3_growing_with_a(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+                                                                    const comp::ErrorParameters& truth, double per_rad,
+                                                                    double noise_um, std::uint64_t seed) {
+  const int a = m.index_of('A');
+  return simulate_row_by_row(
+      m, plans, truth,
+      [&](comp::ErrorParameters& t, const comp::MeasurementRow& row) { t.set("ECC:h3:sin", per_rad * row.command[a]); },
+      noise_um, seed);
 }
 
 inline bool has_effect(const comp::DiagnoseResult& d, const std::string& e) {

@@ -157,12 +157,13 @@ class CompensatedOnTruth final : public KinematicModel {
 };
 
 /// `post` of the dome path (public-clean path.cls, job.json set-up) with the identified model:
-/// compensated IK and adaptive subdivision to 5 um on the identified machine, 4-decimal words;
+/// compensated IK and adaptive subdivision to `tolerance_mm` (5 µm unless given) on the identified
+/// machine, 4-decimal words;
 /// returns the largest contour error of the written program executed on the truth (mm);
 /// `endpoint_mm` gets the largest error at block ends (model mismatch and 4-decimal rounding).
 inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& identified_parameters,
                                  const comp::ErrorParameters& truth_parameters, const std::string& out_path,
-                                 double* endpoint_mm = nullptr) {
+                                 double* endpoint_mm = nullptr, double tolerance_mm = 0.005) {
   const comp::MachineModel identified(m, identified_parameters), truth(m, truth_parameters);
   const Setup setup = dome_setup();
   const CompensatedOnTruth solver(identified, truth, setup);
@@ -170,7 +171,7 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
   const auto errors = identified.errors();
   nonlinear::CompensationOptions comp;
   comp.method = nonlinear::Method::adaptive;
-  comp.tolerance_mm = 0.005;
+  comp.tolerance_mm = tolerance_mm;
   comp.rounding_allowance_mm = nonlinear::rounding_allowance_mm(4, 4, 200.0);
   PostOptions options;
   options.verify = true;

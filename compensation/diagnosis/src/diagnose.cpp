@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "ncpost/compensation/diagnose_attribution.hpp"
 #include "ncpost/compensation/diagnose_effect_size.hpp"
 #include "ncpost/compensation/diagnose_screening.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
@@ -292,6 +293,248 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
   }
 }
 
+
+/// Step 1 of diagnose(): the candidates screened at the current solution (linearised), sorted by
+/// the drop in Σr² they buy, those that act alike on the data merged into one class.
+struct ScreenStep {
+  std::vector<Screened> screened;
+  int tested = 0;   ///< candidates not aliased with the model
+  double s0 = 0.0;  ///< Σr² of the current model (mm²)
+};
+
+ScreenStep screen_step(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                       const std::vector<Candidate>& catalogue, const DiagnoseOptions& o, const Eigen::VectorXd& times,
+                       double t_span, Eigen::Index count) {
+  auto [names, values] = layout_with_values(model, o.identify.fixed);
+  std::vector<int> kept;
+  for (std::size_t i = 0; i < model.names.size(); ++i)
+    if (model.fit.uncertainty.contains(model.names[i])) kept.push_back(static_cast<int>(i));
+  std::vector<std::vector<int>> cand_columns(catalogue.size());
+  std::vector<int> columns = kept;
+  for (std::size_t c = 0; c < catalogue.size(); ++c) {
+    for (const auto& p : catalogue[c].parameters) {
+      names.push_back(p);
+      values.push_back(0.0);
+      cand_columns[c].push_back(static_cast<int>(columns.size()));
+      columns.push_back(static_cast<int>(names.size()) - 1);
+    }
+    for (std::size_t h = 0; h < catalogue[c].held.size(); ++h) {
+      names.push_back(catalogue[c].held.names()[h]);
+      values.push_back(catalogue[c].held.values()[h]);
+    }
+  }
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  const Eigen::VectorXd r = prob.residuals(values);
+  const Eigen::MatrixXd J = prob.jacobian(values, columns);
+  const Eigen::Index p0 = static_cast<Eigen::Index>(kept.size());
+  Eigen::MatrixXd Q(count, 0);
+  if (p0 > 0) {
+    Eigen::MatrixXd K = J.leftCols(p0);
+    for (Eigen::Index c = 0; c < p0; ++c)
+      if (K.col(c).norm() > 0) K.col(c).normalize();
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
+    Q = qr.householderQ() * Eigen::MatrixXd::Identity(count, p0);
+  }
+  const double s0 = r.squaredNorm();
+  std::vector<Screened> screened;
+  int tested = 0;
+  for (std::size_t c = 0; c < catalogue.size(); ++c) {
+    Screened s;
+    s.candidate = static_cast<int>(c);
+    s.spec = catalogue[c];
+    Eigen::MatrixXd C(count, static_cast<Eigen::Index>(cand_columns[c].size()));
+    for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
+    int aliased = -1;
+    if (s.spec.kind == CandidateKind::drift) {
+      const DriftScreen drift = screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
+      aliased = drift.aliased ? 0 : -1;
+      s.spec.parameters = drift.parameters;
+      s.spec.held = drift.held;
+      s.drop = drift.drop;
+      s.basis = drift.basis;
+    } else {
+      s.basis = added_basis(Q, C, o.alias_tolerance, aliased);
+      s.drop = (s.basis.transpose() * r).squaredNorm();
+    }
+    if (aliased >= 0) continue;
+    ++tested;
+    const double k = double(s.spec.parameters.size());
+    const double dof = double(count - p0) - k;
+    s.p_linear = f_upper_tail((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
+    screened.push_back(s);
+  }
+  std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
+  // candidates that act alike on these data form one class, represented by the first in
+  // catalogue order (e.g. EXC:h1 and EYC:h1 once the location offsets of C are in)
+  {
+    std::vector<Screened> classes;
+    const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
+    std::vector<bool> merged(screened.size(), false);
+    for (std::size_t i = 0; i < screened.size(); ++i) {
+      if (merged[i]) continue;
+      std::vector<std::size_t> members{i};
+      if (i < compare)
+        for (std::size_t j = i + 1; j < compare; ++j)
+          if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, 10.0 * o.alias_tolerance)) {
+            members.push_back(j);
+            merged[j] = true;
+          }
+      std::size_t lead = members.front();
+      for (std::size_t k : members)
+        if (screened[k].candidate < screened[lead].candidate) lead = k;
+      Screened c = screened[lead];
+      for (std::size_t k : members)
+        if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
+      classes.push_back(std::move(c));
+    }
+    screened = std::move(classes);
+  }
+  return {std::move(screened), tested, s0};
+}
+
+/// Step 2 of diagnose(): the best few screened candidates refitted and weighed (partial F test,
+/// identifiability, size, an instrument's own signature); the accepted one with the smallest BIC
+/// and the model with it, or none. Why the others were not taken goes to `rejected`.
+struct WeighStep {
+  std::optional<AddedEffect> best;
+  Model model;
+};
+
+WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model, const ScreenStep& step,
+                     const DiagnoseOptions& o, double alpha, Eigen::Index count, std::vector<RejectedEffect>& rejected) {
+  const std::vector<Screened>& screened = step.screened;
+  const int tested = step.tested;
+  const double s0 = step.s0;
+  std::optional<AddedEffect> best;
+  Model best_model;
+  int refits = 0;
+  for (const Screened& s : screened) {
+    if (refits >= o.refit_top || s.p_linear >= alpha) break;
+    ++refits;
+    Model trial = model;
+    for (const auto& p : s.spec.parameters) trial.names.push_back(p);
+    for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+    trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+    RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
+    const double s1 = sum_of_squares(trial.fit, count);
+    const int p1 = static_cast<int>(trial.fit.uncertainty.size());
+    const double k = double(s.spec.parameters.size());
+    const double dof = double(count - p1);
+    AddedEffect e;
+    e.candidate = s.spec;
+    e.equivalent = s.equivalent;
+    e.tested = tested;
+    e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
+    e.p_value = f_upper_tail(e.f_statistic, k, dof);
+    rej.p_value = e.p_value;
+    for (const auto& p : s.spec.parameters) {
+      e.values.set(p, trial.fit.parameters.value_or(p, 0.0));
+      e.uncertainty.set(p, trial.fit.uncertainty.value_or(p, 0.0));
+    }
+    for (std::size_t h = 0; h < s.spec.held.size(); ++h) e.values.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+    std::string why;
+    if (!trial.fit.converged) why = "the fit did not converge";
+    for (const auto& p : s.spec.parameters)
+      if (why.empty() && !trial.fit.uncertainty.contains(p)) why = p + " is pinned: not identifiable with the model";
+    if (why.empty() && trial.fit.identifiability.pinned != model.fit.identifiability.pinned)
+      why = "it makes a parameter of the model unidentifiable";
+    if (why.empty() && !(e.p_value < alpha))
+      why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
+    if (why.empty()) why = apply_size(m, sets, o, e);
+    // an instrument term needs its own signature: with it, the sets it acts on are at their
+    // noise (no structure left against any rotary axis); otherwise it is only the closest-
+    // looking term to an effect the catalogue does not hold (issue 17)
+    if (why.empty() && s.spec.kind == CandidateKind::instrument) {
+      const MeasurementType type = s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
+      const auto left = residual_structure(m, sets, residual_of(m, sets, trial, o.identify), o.significance, &type);
+      if (!left.empty())
+        why = fmt::format("its own signature is not shown: with it, {} {} against {} still has structure ({})",
+                          left.front().file, left.front().value, left.front().axis, left.front().shape);
+    }
+    if (!why.empty()) {
+      rej.reason = why;
+      rejected.push_back(rej);
+      continue;
+    }
+    e.rms_before_um = model.fit.rms_after_um;
+    e.max_before_um = model.fit.max_after_um;
+    e.rms_after_um = trial.fit.rms_after_um;
+    e.max_after_um = trial.fit.max_after_um;
+    // among the accepted, the one the evidence prefers: the smallest Bayesian information
+    // criterion m·ln(S1/m) + p1·ln(m), so a table (tens of nodes) wins over a compact form only
+    // where the compact form leaves what the nodes explain (issue 17); for candidates with the
+    // same number of parameters this is the smallest S1, as before
+    e.bic = double(count) * std::log(std::max(s1, 1e-300) / double(count)) + double(p1) * std::log(double(count));
+    if (!best || e.bic < best->bic) {
+      if (best) rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
+      best = e;
+      best_model = trial;
+    } else {
+      rejected.push_back({e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
+    }
+  }
+  return {std::move(best), std::move(best_model)};
+}
+
+/// Keeps the added effects that stand on their own evidence beside the structure the final model
+/// leaves (diagnose_attribution.hpp); the others go to `not_attributed` and out of the model.
+void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet>& sets,
+                              const std::vector<std::string>& basic_names, const DiagnoseOptions& o, Model& model,
+                              DiagnoseResult& out, const std::function<void(const std::string&)>& say) {
+  const Eigen::VectorXd r = residual_of(m, sets, model, o.identify);
+  const auto left = residual_structure(m, sets, r, o.significance);
+  if (left.empty()) return;
+  auto [names, values] = layout_with_values(model, o.identify.fixed);
+  std::vector<int> columns;
+  std::vector<std::string> fitted;
+  for (const auto& n : model.names)
+    if (model.fit.uncertainty.contains(n)) {
+      columns.push_back(static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin()));
+      fitted.push_back(n);
+    }
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
+  const Eigen::MatrixXd J = prob.jacobian(values, columns);
+  const Eigen::MatrixXd nuisance = structure_nuisance(sets, residual_columns(m, sets, r), left, r.size());
+  std::vector<AddedEffect> kept;
+  std::string dropped;
+  for (AddedEffect& e : out.added) {
+    std::vector<int> cols;
+    Eigen::VectorXd beta(static_cast<Eigen::Index>(e.candidate.parameters.size()));
+    for (std::size_t j = 0; j < e.candidate.parameters.size(); ++j) {
+      const std::string& p = e.candidate.parameters[j];
+      cols.push_back(static_cast<int>(std::find(fitted.begin(), fitted.end(), p) - fitted.begin()));
+      beta[static_cast<Eigen::Index>(j)] = model.fit.parameters.value_or(p, 0.0);
+    }
+    const bool all_fitted = std::all_of(cols.begin(), cols.end(), [&](int c) { return c < static_cast<int>(fitted.size()); });
+    const OwnEvidence ev = all_fitted ? own_evidence(J, r, cols, beta, nuisance) : OwnEvidence{};
+    const double alpha = o.significance / std::max(1, e.tested);
+    const bool own = ev.separation > o.alias_tolerance && ev.p_value < alpha;
+    say(fmt::format("{} beside the unexplained structure: separation {:.3g}, F = {:.4g}, p = {:.3g} (needs < {:.3g}): {}",
+                    e.candidate.effect, ev.separation, ev.f_statistic, ev.p_value, alpha, own ? "kept" : "not attributed"));
+    if (own) {
+      kept.push_back(e);
+    } else {
+      out.not_attributed.push_back(e.candidate.effect);
+      dropped += (dropped.empty() ? "" : ", ") + e.candidate.effect;
+    }
+  }
+  if (dropped.empty()) return;
+  out.stop_reason += fmt::format("; structure remains that no candidate explains ({} {} against {}: {}); {} not attributed "
+                                 "(no evidence of {} own once that structure is absorbed)",
+                                 left.front().file, left.front().value, left.front().axis, left.front().shape, dropped,
+                                 out.not_attributed.size() == 1 ? "its" : "their");
+  say("not attributed: " + dropped);
+  out.added = std::move(kept);
+  Model refit{basic_names, {}, out.basic};
+  for (const auto& e : out.added) {
+    for (const auto& p : e.candidate.parameters) refit.names.push_back(p);
+    for (std::size_t h = 0; h < e.candidate.held.size(); ++h)
+      refit.held.set(e.candidate.held.names()[h], model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
+  }
+  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify);
+  if (!refit.fit.converged) refit = Model{basic_names, {}, out.basic}, out.added.clear();
+  model = std::move(refit);
+}
 }  // namespace
 
 std::string DiagnoseOptions::validate() const {
@@ -337,162 +580,15 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
       break;
     }
     // ---- 1. screening at the current solution
-    auto [names, values] = layout_with_values(model, o.identify.fixed);
-    std::vector<int> kept;
-    for (std::size_t i = 0; i < model.names.size(); ++i)
-      if (model.fit.uncertainty.contains(model.names[i])) kept.push_back(static_cast<int>(i));
-    std::vector<std::vector<int>> cand_columns(catalogue.size());
-    std::vector<int> columns = kept;
-    for (std::size_t c = 0; c < catalogue.size(); ++c) {
-      for (const auto& p : catalogue[c].parameters) {
-        names.push_back(p);
-        values.push_back(0.0);
-        cand_columns[c].push_back(static_cast<int>(columns.size()));
-        columns.push_back(static_cast<int>(names.size()) - 1);
-      }
-      for (std::size_t h = 0; h < catalogue[c].held.size(); ++h) {
-        names.push_back(catalogue[c].held.names()[h]);
-        values.push_back(catalogue[c].held.values()[h]);
-      }
-    }
-    const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
-    const Eigen::VectorXd r = prob.residuals(values);
-    const Eigen::MatrixXd J = prob.jacobian(values, columns);
-    const Eigen::Index p0 = static_cast<Eigen::Index>(kept.size());
-    Eigen::MatrixXd Q(count, 0);
-    if (p0 > 0) {
-      Eigen::MatrixXd K = J.leftCols(p0);
-      for (Eigen::Index c = 0; c < p0; ++c)
-        if (K.col(c).norm() > 0) K.col(c).normalize();
-      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(K);
-      Q = qr.householderQ() * Eigen::MatrixXd::Identity(count, p0);
-    }
-    const double s0 = r.squaredNorm();
-    std::vector<Screened> screened;
-    int tested = 0;
-    for (std::size_t c = 0; c < catalogue.size(); ++c) {
-      Screened s;
-      s.candidate = static_cast<int>(c);
-      s.spec = catalogue[c];
-      Eigen::MatrixXd C(count, static_cast<Eigen::Index>(cand_columns[c].size()));
-      for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
-      int aliased = -1;
-      if (s.spec.kind == CandidateKind::drift) {
-        const DriftScreen drift = screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
-        aliased = drift.aliased ? 0 : -1;
-        s.spec.parameters = drift.parameters;
-        s.spec.held = drift.held;
-        s.drop = drift.drop;
-        s.basis = drift.basis;
-      } else {
-        s.basis = added_basis(Q, C, o.alias_tolerance, aliased);
-        s.drop = (s.basis.transpose() * r).squaredNorm();
-      }
-      if (aliased >= 0) continue;
-      ++tested;
-      const double k = double(s.spec.parameters.size());
-      const double dof = double(count - p0) - k;
-      s.p_linear = f_upper_tail((s.drop / k) / (std::max(s0 - s.drop, 1e-300) / dof), k, dof);
-      screened.push_back(s);
-    }
-    std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
-    // candidates that act alike on these data form one class, represented by the first in
-    // catalogue order (e.g. EXC:h1 and EYC:h1 once the location offsets of C are in)
-    {
-      std::vector<Screened> classes;
-      const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
-      std::vector<bool> merged(screened.size(), false);
-      for (std::size_t i = 0; i < screened.size(); ++i) {
-        if (merged[i]) continue;
-        std::vector<std::size_t> members{i};
-        if (i < compare)
-          for (std::size_t j = i + 1; j < compare; ++j)
-            if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, 10.0 * o.alias_tolerance)) {
-              members.push_back(j);
-              merged[j] = true;
-            }
-        std::size_t lead = members.front();
-        for (std::size_t k : members)
-          if (screened[k].candidate < screened[lead].candidate) lead = k;
-        Screened c = screened[lead];
-        for (std::size_t k : members)
-          if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
-        classes.push_back(std::move(c));
-      }
-      screened = std::move(classes);
-    }
-    const double alpha = o.significance / std::max(1, tested);
-
+    const ScreenStep step = screen_step(m, sets, model, catalogue, o, times, t_span, count);
+    const std::vector<Screened>& screened = step.screened;
+    const double alpha = o.significance / std::max(1, step.tested);
     // ---- 2. refit the best few and weigh the evidence
     out.last_rejected.clear();
-    std::optional<AddedEffect> best;
-    Model best_model;
-    int refits = 0;
-    for (const Screened& s : screened) {
-      if (refits >= o.refit_top || s.p_linear >= alpha) break;
-      ++refits;
-      Model trial = model;
-      for (const auto& p : s.spec.parameters) trial.names.push_back(p);
-      for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
-      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
-      RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
-      const double s1 = sum_of_squares(trial.fit, count);
-      const int p1 = static_cast<int>(trial.fit.uncertainty.size());
-      const double k = double(s.spec.parameters.size());
-      const double dof = double(count - p1);
-      AddedEffect e;
-      e.candidate = s.spec;
-      e.equivalent = s.equivalent;
-      e.tested = tested;
-      e.f_statistic = ((s0 - s1) / k) / (std::max(s1, 1e-300) / dof);
-      e.p_value = f_upper_tail(e.f_statistic, k, dof);
-      rej.p_value = e.p_value;
-      for (const auto& p : s.spec.parameters) {
-        e.values.set(p, trial.fit.parameters.value_or(p, 0.0));
-        e.uncertainty.set(p, trial.fit.uncertainty.value_or(p, 0.0));
-      }
-      for (std::size_t h = 0; h < s.spec.held.size(); ++h) e.values.set(s.spec.held.names()[h], s.spec.held.values()[h]);
-      std::string why;
-      if (!trial.fit.converged) why = "the fit did not converge";
-      for (const auto& p : s.spec.parameters)
-        if (why.empty() && !trial.fit.uncertainty.contains(p)) why = p + " is pinned: not identifiable with the model";
-      if (why.empty() && trial.fit.identifiability.pinned != model.fit.identifiability.pinned)
-        why = "it makes a parameter of the model unidentifiable";
-      if (why.empty() && !(e.p_value < alpha))
-        why = fmt::format("not significant (p = {:.3g}, needs < {:.3g})", e.p_value, alpha);
-      if (why.empty()) why = apply_size(m, sets, o, e);
-      // an instrument term needs its own signature: with it, the sets it acts on are at their
-      // noise (no structure left against any rotary axis); otherwise it is only the closest-
-      // looking term to an effect the catalogue does not hold (issue 17)
-      if (why.empty() && s.spec.kind == CandidateKind::instrument) {
-        const MeasurementType type = s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
-        const auto left = residual_structure(m, sets, residual_of(m, sets, trial, o.identify), o.significance, &type);
-        if (!left.empty())
-          why = fmt::format("its own signature is not shown: with it, {} {} against {} still has structure ({})",
-                            left.front().file, left.front().value, left.front().axis, left.front().shape);
-      }
-      if (!why.empty()) {
-        rej.reason = why;
-        out.last_rejected.push_back(rej);
-        continue;
-      }
-      e.rms_before_um = model.fit.rms_after_um;
-      e.max_before_um = model.fit.max_after_um;
-      e.rms_after_um = trial.fit.rms_after_um;
-      e.max_after_um = trial.fit.max_after_um;
-      // among the accepted, the one the evidence prefers: the smallest Bayesian information
-      // criterion m·ln(S1/m) + p1·ln(m), so a table (tens of nodes) wins over a compact form only
-      // where the compact form leaves what the nodes explain (issue 17); for candidates with the
-      // same number of parameters this is the smallest S1, as before
-      e.bic = double(count) * std::log(std::max(s1, 1e-300) / double(count)) + double(p1) * std::log(double(count));
-      if (!best || e.bic < best->bic) {
-        if (best) out.last_rejected.push_back({best->candidate.effect, best->rms_after_um, best->p_value, "explains less"});
-        best = e;
-        best_model = trial;
-      } else {
-        out.last_rejected.push_back({e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
-      }
-    }
+    WeighStep weighed = weigh_step(m, sets, model, step, o, alpha, count, out.last_rejected);
+    std::optional<AddedEffect>& best = weighed.best;
+    Model& best_model = weighed.model;
+    const int tested = step.tested;
     if (!best) {
       out.stop_reason = screened.empty() || screened.front().p_linear >= alpha
                             ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g}; "
@@ -522,25 +618,11 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   }
   // No false attribution (issue 17): an effect is found only if, with it, what is left is at the
   // noise or explained by the effects added after it. When the final model still leaves
-  // structure against a rotary axis, the effects fitted on the way only chased what the catalogue
-  // does not hold: none is attributed, the model stays the basic one and the structure is
-  // reported (diagnosis.unexplained, with the measurement that would resolve it).
-  if (!out.added.empty() && model.fit.converged) {
-    const auto left = residual_structure(m, sets, residual_of(m, sets, model, o.identify), o.significance);
-    if (!left.empty()) {
-      std::string list;
-      for (const auto& e : out.added) {
-        out.not_attributed.push_back(e.candidate.effect);
-        list += (list.empty() ? "" : ", ") + e.candidate.effect;
-      }
-      out.stop_reason += fmt::format("; with {} structure remains that no candidate explains ({} {} against {}: {}), so "
-                                     "none of them is attributed", list, left.front().file, left.front().value,
-                                     left.front().axis, left.front().shape);
-      say("not attributed: " + list);
-      out.added.clear();
-      model = Model{basic_names, {}, out.basic};
-    }
-  }
+  // structure, each added effect must stand on its own evidence with every one-axis shape of that
+  // structure absorbed (diagnose_attribution.hpp): the ones that only chased it are not
+  // attributed, the others are kept and the model refitted with them; the structure is reported
+  // (diagnosis.unexplained, with the measurement that would resolve it).
+  if (!out.added.empty() && model.fit.converged) attribute_with_structure(m, sets, basic_names, o, model, out, say);
   // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
   // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
   if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {

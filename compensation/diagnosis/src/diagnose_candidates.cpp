@@ -27,6 +27,14 @@ bool axis_falls(const std::vector<MeasurementSet>& sets, int index) {
   return false;
 }
 
+/// True if the command of axis `index` takes more than one value in the data.
+bool moves(const std::vector<MeasurementSet>& sets, int index) {
+  double lo = 1e300, hi = -1e300;
+  for (const auto& s : sets)
+    for (const auto& row : s.rows) lo = std::min(lo, row.command[index]), hi = std::max(hi, row.command[index]);
+  return hi - lo > 1e-6;
+}
+
 }  // namespace
 
 AxisSampling axis_sampling(const std::vector<MeasurementSet>& sets, int index) {
@@ -117,6 +125,20 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
   if (has_type(sets, MeasurementType::sphere))
     add({"sphere:position", CandidateKind::instrument,
          {"sphere:position:x", "sphere:position:y", "sphere:position:z"}, {}, true});
+  // location errors of a rotary axis that change with the rotary axis carrying it (a tilt of C on a
+  // cradle that sags with A, issue 17): degree 1 and 2 in the carrier's command, where the data
+  // move the carrier
+  for (int k = 0; k < m.rotary_count(); ++k)
+    for (int j = 0; j < m.rotary_count(); ++j) {
+      const char carrier = m.rotary(k).letter, carried = m.rotary(j).letter;
+      if (j == k || !moves(sets, m.index_of(carrier))) continue;
+      for (int order = 1; order <= 2; ++order)
+        for (int c = 0; c < 6; ++c) {
+          const std::string e = fmt::format("E{}0{}:{}:p{}", kComponents[c], carried, carrier, order);
+          if (!parse_parameter_name(e, m).spec) continue;  // not carried, or an offset along its own line
+          add({e, CandidateKind::component, {e}, {}, false});
+        }
+    }
   // the non-parametric form last: a periodic table of every component of an axis the data turn,
   // on the grid they resolve; the node at home is held at 0 (only differences from home act)
   for (int k = 0; k < m.rotary_count(); ++k) {

@@ -38,7 +38,9 @@ EffectSize effect_size(const Machine& m, const std::vector<MeasurementSet>& sets
         for (std::size_t i = 0; i < c.parameters.size(); ++i)
           if (std::abs(v(i)) >= e.size) e.size = std::abs(v(i)), e.sigma = u(i);
       } else {
-        const double reach = std::pow(std::max(1.0, command_range(sets, spec.axis_index)), spec.order);
+        // a polynomial over its axis's travel; a coupled location error over the carrier's range
+        const int by = spec.kind == ParameterKind::coupled ? spec.coupled_axis_index : spec.axis_index;
+        const double reach = std::pow(std::max(spec.kind == ParameterKind::coupled ? 0.0 : 1.0, command_range(sets, by)), spec.order);
         e.size = std::abs(v(0)) * reach;
         e.sigma = u(0) * reach;
       }

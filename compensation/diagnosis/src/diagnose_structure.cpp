@@ -132,11 +132,9 @@ void describe(ResidualStructure& s, const std::vector<double>& centres, const st
 
 }  // namespace
 
-std::vector<ResidualStructure> residual_structure(const Machine& m, const std::vector<MeasurementSet>& sets,
-                                                  const Eigen::VectorXd& r, double significance,
-                                                  const MeasurementType* only_type) {
+std::vector<ResidualStructure> residual_columns(const Machine& m, const std::vector<MeasurementSet>& sets,
+                                                const Eigen::VectorXd& r, const MeasurementType* only_type) {
   std::vector<ResidualStructure> found;
-  int tests = 0;
   Eigen::Index offset = 0;
   for (const auto& s : sets) {
     const int nv = s.values_per_row();
@@ -179,7 +177,6 @@ std::vector<ResidualStructure> residual_structure(const Machine& m, const std::v
         }
         const double df1 = used - 1, df2 = double(rows) - used;
         if (df1 < 1 || df2 < 1 || ssw <= 0) continue;
-        ++tests;
         ResidualStructure st;
         st.file = s.file;
         st.value = value_name(s, v);
@@ -188,11 +185,70 @@ std::vector<ResidualStructure> residual_structure(const Machine& m, const std::v
         st.f_statistic = (ssb / df1) / (ssw / df2);
         st.p_value = f_upper_tail(st.f_statistic, df1, df2);
         describe(st, centres, means, counts, sampling.turns, sampling);
+        st.set_index = static_cast<std::size_t>(&s - sets.data());
+        st.value_index = v;
+        st.group_of_row = key;
         found.push_back(std::move(st));
       }
     }
   }
-  const double alpha = significance / std::max(tests, 1);
+  // what no one axis shows: a residual that varies smoothly along a continuous path (a ballbar
+  // run) where noise alone would not (von Neumann's ratio of successive differences to the
+  // variance, 2 for noise, z-test one-sided): an effect of several axes together
+  offset = 0;
+  for (const auto& s : sets) {
+    const int nv = s.values_per_row();
+    const std::size_t rows = s.rows.size();
+    const Eigen::Index here = offset;
+    offset += static_cast<Eigen::Index>(rows) * nv;
+    if ((only_type && s.type != *only_type) || s.type != MeasurementType::ballbar || rows < 30) continue;
+    for (int v = 0; v < nv; ++v) {
+      auto y = [&](std::size_t i) { return 1e3 * r[here + static_cast<Eigen::Index>(i) * nv + v]; };
+      double mean = 0.0;
+      for (std::size_t i = 0; i < rows; ++i) mean += y(i);
+      mean /= double(rows);
+      double ss = 0.0, sd = 0.0;
+      for (std::size_t i = 0; i < rows; ++i) ss += (y(i) - mean) * (y(i) - mean);
+      for (std::size_t i = 1; i < rows; ++i) sd += (y(i) - y(i - 1)) * (y(i) - y(i - 1));
+      if (ss <= 0) continue;
+      const double n = double(rows), eta = sd / ss;
+      const double z = (2.0 - eta) / std::sqrt(4.0 * (n - 2.0) / (n * n - 1.0));
+      ResidualStructure st;
+      st.file = s.file;
+      st.value = value_name(s, v);
+      std::string moving;
+      double travel = -1.0;
+      for (int k = 0; k < m.rotary_count(); ++k) {
+        double lo = 1e300, hi = -1e300;
+        for (const auto& row : s.rows) lo = std::min(lo, row.command[3 + k]), hi = std::max(hi, row.command[3 + k]);
+        if (hi - lo < 1e-6) continue;
+        moving += (moving.empty() ? "" : " and ") + std::string(1, m.rotary(k).letter);
+        if (hi - lo > travel) travel = hi - lo, st.axis = m.rotary(k).letter;
+      }
+      st.groups = static_cast<int>((rows + 9) / 10);
+      st.f_statistic = 2.0 / std::max(eta, 1e-9);
+      st.p_value = 0.5 * std::erfc(z / std::sqrt(2.0));
+      st.spread_um = std::sqrt(ss / n);
+      st.shape = fmt::format("smooth along the path, with {} together and not with one alone (successive differences: "
+                             "von Neumann ratio {:.2f}, 2 for noise; rms {:.2f} µm)",
+                             moving.empty() ? std::string("the axes") : moving, eta, st.spread_um);
+      st.proposal = fmt::format("measure one axis at several fixed positions of the other ({} at each level): an error "
+                                "of one axis that changes with another is not in the catalogue beyond EA0C:A:p1-like "
+                                "location terms", moving.empty() ? std::string("the axes") : moving);
+      st.set_index = static_cast<std::size_t>(&s - sets.data());
+      st.value_index = v;
+      for (std::size_t i = 0; i < rows; ++i) st.group_of_row.push_back(static_cast<int>(i / 10));
+      found.push_back(std::move(st));
+    }
+  }
+  return found;
+}
+
+std::vector<ResidualStructure> residual_structure(const Machine& m, const std::vector<MeasurementSet>& sets,
+                                                  const Eigen::VectorXd& r, double significance,
+                                                  const MeasurementType* only_type) {
+  std::vector<ResidualStructure> found = residual_columns(m, sets, r, only_type);
+  const double alpha = significance / std::max<double>(double(found.size()), 1.0);
   found.erase(std::remove_if(found.begin(), found.end(), [&](const ResidualStructure& s) { return !(s.p_value < alpha); }),
               found.end());
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.f_statistic > b.f_statistic; });

@@ -21,8 +21,11 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
       case ParameterKind::squareness:
       case ParameterKind::harmonic:
       case ParameterKind::polynomial:
+      case ParameterKind::coupled:
         axis_terms_[static_cast<std::size_t>(s.axis_index)].push_back(i);
-        command_dependent_ = command_dependent_ || s.kind == ParameterKind::harmonic || s.kind == ParameterKind::polynomial;
+        command_dependent_ = command_dependent_ || s.kind == ParameterKind::harmonic || s.kind == ParameterKind::polynomial ||
+                             s.kind == ParameterKind::coupled;
+        coupled_ = coupled_ || s.kind == ParameterKind::coupled;
         break;
       case ParameterKind::table: {
         TableNodes& nodes = tables_[static_cast<std::size_t>(s.axis_index)][static_cast<std::size_t>(s.component)];

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/parameter_name.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <regex>
+
+#include <fmt/format.h>
 
 namespace ncpost::comp {
 namespace {
@@ -69,6 +72,15 @@ ParseResult parse_table(ParameterSpec s, char comp, char letter, const std::stri
   return accept(s);
 }
 
+/// True when axis `carrier` lies between the bed and axis `carried` on the same side of the chain.
+bool carries(const Machine& m, int carrier, int carried) {
+  for (const std::vector<int>* side : {&m.workpiece_side, &m.tool_side}) {
+    const auto a = std::find(side->begin(), side->end(), carrier), b = std::find(side->begin(), side->end(), carried);
+    if (a != side->end() && b != side->end()) return a < b;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool ParameterSpec::is_angle() const {
@@ -76,7 +88,8 @@ bool ParameterSpec::is_angle() const {
     case ParameterKind::location:
     case ParameterKind::harmonic:
     case ParameterKind::polynomial:
-    case ParameterKind::table: return component >= 3;
+    case ParameterKind::table:
+    case ParameterKind::coupled: return component >= 3;
     case ParameterKind::squareness: return true;
     case ParameterKind::reversal: return false;  // depends on the axis; see is_rotary of the axis
     default: return false;
@@ -88,6 +101,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   static const std::regex harmonic(R"(E([XYZABC])([ABC]):h([1-9][0-9]?):(cos|sin))");
   static const std::regex polynomial(R"(E([XYZABC])([XYZ]):p([1-3]))");
   static const std::regex table(R"(E([XYZABC])([XYZABC]):t:([-+]?[0-9]+(\.[0-9]*)?))");
+  static const std::regex coupled(R"(E([XYZABC])0([ABC]):([ABC]):p([12]))");
   static const std::regex reversal(R"(reversal:([XYZABC]))");
   static const std::regex drift(R"(drift:([XYZ]):t:(lin|quad|exp|tau))");
   static const std::regex sphere(R"(sphere:position:([xyz]))");
@@ -96,6 +110,24 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   s.name = name;
   auto axis = [&](char letter) { return m.index_of(letter); };
 
+  if (std::regex_match(name, g, coupled)) {
+    // the location error of the carried axis, as a location name, then the carrying axis
+    ParseResult base = parse_parameter_name(fmt::format("E{}0{}", g[1].str(), g[2].str()), m);
+    if (!base.spec) return base;
+    const char carried = g[2].str()[0], carrier = g[3].str()[0];
+    s = *base.spec;
+    s.name = name;
+    s.kind = ParameterKind::coupled;
+    s.order = std::stoi(g[4].str());
+    s.coupled_axis_index = axis(carrier);
+    if (s.coupled_axis_index < 0) return refuse("the machine has no axis " + std::string(1, carrier));
+    if (!m.axes[static_cast<std::size_t>(s.coupled_axis_index)].is_rotary())
+      return refuse("a location error changes with a rotary axis here (" + std::string(1, carrier) + " is linear)");
+    if (!carries(m, s.coupled_axis_index, s.axis_index))
+      return refuse(fmt::format("{0}'s location can change with {1} only where {1} carries {0} (between the bed and {0} on "
+                                "the same side of the chain)", carried, carrier));
+    return accept(s);
+  }
   if (std::regex_match(name, g, location)) return parse_location(s, g[1].str()[0], g[2].str()[0], m);
   if (std::regex_match(name, g, harmonic)) {
     s.kind = ParameterKind::harmonic;
@@ -143,7 +175,7 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     return accept(s);
   }
   return refuse("not an error parameter name of docs/conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
-                "EXX:t:-250, ECC:t:30, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+                "EXX:t:-250, ECC:t:30, EA0C:A:p1, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
 }
 
 std::string table_parameter_name(char component, char axis, double at_mm) {

@@ -85,6 +85,12 @@ void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& ou
                                              component_word(out.rotary, s.component), out.letter));
         }
         break;
+      case ParameterKind::coupled:
+        if (left_seen.insert(s.name).second)
+          out.left_out.push_back(fmt::format("{} (location error of {} that changes with {}: a one-axis table cannot move "
+                                             "an axis line)", s.name, out.letter,
+                                             model.machine().axes[static_cast<std::size_t>(s.coupled_axis_index)].letter));
+        break;
       default: break;
     }
   }

@@ -29,6 +29,9 @@ std::string meaning(const Machine& m, const ParameterSpec& s) {
     case ParameterKind::polynomial: return fmt::format("axis {} error motion, {} degree {}", axis(), c, s.order);
     case ParameterKind::table: return fmt::format("axis {} error motion, {} at {:g} mm", axis(), c, s.at_mm);
     case ParameterKind::reversal: return "axis " + axis() + " reversal (backlash)";
+    case ParameterKind::coupled:
+      return fmt::format("axis {} location: {}, per {} of {}", axis(), c, s.order == 1 ? "rad" : "rad²",
+                         m.axes[static_cast<std::size_t>(s.coupled_axis_index)].letter);
     default: return "";
   }
 }

@@ -113,7 +113,8 @@ struct DiagnoseResult {
   /// candidate explains, with its shape and the measurement that would resolve it.
   std::vector<ResidualStructure> unexplained;
   /// Effects the forward selection fitted but that are not attributed: with all of them in, the
-  /// residual still had structure no candidate explains (the model is then the basic one).
+  /// residual still had structure no candidate explains, and once that structure is absorbed they
+  /// have no evidence of their own (diagnose_attribution.hpp); the model keeps the others.
   std::vector<std::string> not_attributed;
 
   std::vector<std::string> effects_added() const;

@@ -17,6 +17,9 @@
 //   drift                     drift:<X|Y|Z>:t   {lin, exp}, the time constant tau held at the value
 //                                               that explains most (diagnose.cpp chooses it)
 //   instruments               ballbar:length (ballbar data), sphere:position (sphere data, x y z)
+//   coupled location          E<c>0<axis>:<carrier>:p<k>   k = 1, 2: a location error of a rotary
+//                                               axis growing with the rotary axis that carries it
+//                                               (EA0C:A:p1, a tilt of C that grows with A)
 //
 // Effects whose parameters are all already in the model are left out. `measurement_only` effects
 // (drift, instruments) are never part of the machine used for posting (machine_model.hpp).
@@ -58,7 +61,7 @@ struct Candidate {
 
 /// Every candidate the machine and the data allow, minus those whose parameters are all in
 /// `present`. Order: rotary component errors axis by axis, squareness, linear component errors,
-/// reversal, drift, instruments. The order names a class of candidates that act alike on the data
+/// reversal, drift, instruments, coupled location errors, rotary tables. The order names a class of candidates that act alike on the data
 /// (e.g. EC0Y and EXY:p1, the degree-1 straightness that is a squareness): the first is given.
 std::vector<Candidate> candidate_catalogue(const Machine& machine, const std::vector<MeasurementSet>& sets,
                                            const std::vector<std::string>& present);

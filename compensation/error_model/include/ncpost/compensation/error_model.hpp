@@ -17,6 +17,13 @@
 //                       table nodes (EXX:t:<pos>) of one function interpolated linearly in q,
 //                       held at the end values outside the nodes; a rotary axis's table
 //                       (ECC:t:<deg>) is periodic, interpolated round the turn
+//   coupled location  → location_offset_mm / location_tilt_rad of the carried rotary axis, value ·
+//                       q^k with q the command of the axis carrying it (EA0C:A:p1); that command is
+//                       the one the chain passed for the carrier just before (the carrier is
+//                       evaluated first: it lies between the bed and the carried axis, which the
+//                       parameter's name requires); at home q = 0. The carried axis's terms take
+//                       the carrier's command as a constant: their derivative with respect to it
+//                       (µm per rad for real sizes) is left out of the command derivatives
 //   reversal          → the row's dead-band offset (reversal.hpp), not at home
 //   drift             → a translation of the TCP relative to the table in M (added to the error
 //                       motion of the linear axis nearest the bed, which moves the whole side),
@@ -77,6 +84,8 @@ class ModelLayout {
     return static_cast<std::size_t>(axis_index) < acts_.size() && acts_[static_cast<std::size_t>(axis_index)];
   }
   bool has_reversal() const;
+  /// True when some location error changes with another axis (ParameterKind::coupled).
+  bool has_coupled() const { return coupled_; }
   const std::vector<int>& drift_terms() const { return drift_terms_; }
   int drift_axis() const { return drift_axis_; }
   int ballbar_length() const { return ballbar_length_; }
@@ -92,6 +101,7 @@ class ModelLayout {
   int drift_axis_ = -1;
   std::vector<bool> acts_;  ///< per axis: any parameter acts on it
   bool command_dependent_ = false;
+  bool coupled_ = false;
   int ballbar_length_ = -1;
   std::array<int, 3> sphere_position_{-1, -1, -1};
 };
@@ -144,6 +154,9 @@ template <class P> class ErrorFunctor {
         return home_->terms_at_home[static_cast<std::size_t>(axis_index)];
     }
     AxisErrorTerms<S> e;
+    // the command of every axis as the chain passes it (the carrier of a coupled term comes first)
+    if (layout_->has_coupled() && static_cast<std::size_t>(axis_index) < passed_commands().size())
+      passed_commands()[static_cast<std::size_t>(axis_index)] = at_home ? 0.0 : plain_value(q);
     if (!layout_->acts_on(axis_index)) return e;
     for (int i : layout_->terms_of_axis(axis_index)) {
       const ParameterSpec& s = layout_->spec(i);
@@ -169,6 +182,13 @@ template <class P> class ErrorFunctor {
           S power = q;
           for (int k = 1; k < s.order; ++k) power = power * q;
           add_motion<S>(e, c, S(v * power));
+          break;
+        }
+        case ParameterKind::coupled: {
+          const double by = at_home ? 0.0 : passed_commands()[static_cast<std::size_t>(s.coupled_axis_index)];
+          const S term = v * S(std::pow(by, s.order));
+          if (c < 3) e.location_offset_mm[c] += term;
+          else e.location_tilt_rad[c - 3] += term;
           break;
         }
         default: break;
@@ -259,6 +279,13 @@ template <class P> class ErrorFunctor {
   bool machine_only_;
   bool constant_;  ///< constant_in_command()
   const HomeInverse* home_ = nullptr;
+  /// The last command passed for each axis (rad / mm) on this thread, for the coupled terms
+  /// (has_coupled()): one chain is evaluated axis by axis on one thread, while the post evaluates
+  /// chains on several threads with one functor.
+  static std::array<double, 5>& passed_commands() {
+    thread_local std::array<double, 5> commands{0.0, 0.0, 0.0, 0.0, 0.0};
+    return commands;
+  }
 };
 
 }  // namespace ncpost::comp

@@ -35,8 +35,14 @@ class MachineModel {
   }
   /// The home inverse of this model for a tool length (pass it to the calls above and to
   /// ErrorFunctor::with_home so that they skip recomputing it).
+  /// The direction of a rotary axis whose location changes with another axis (EA0C:A:p1) is not
+  /// a constant: it is left out of the cache (the chain computes it at each command).
   HomeInverse home_inverse(double tool_length_mm) const {
-    return ncpost::home_inverse(machine_, tool_length_mm, errors());
+    HomeInverse h = ncpost::home_inverse(machine_, tool_length_mm, errors());
+    for (const ParameterSpec& s : layout_.specs())
+      if (s.kind == ParameterKind::coupled && static_cast<std::size_t>(s.axis_index) < h.rotary_direction.size())
+        h.rotary_direction[static_cast<std::size_t>(s.axis_index)].reset();
+    return h;
   }
 
  private:

@@ -20,6 +20,12 @@
 //                                   (issue 17). As every error acts relative to home, only the
 //                                   differences from the value at 0° matter: the diagnosis holds
 //                                   the node at 0° at 0.
+//   EA0C:A:p1, EX0C:A:p2            location error of a rotary axis that changes with the rotary
+//                                   axis carrying it (issue 17: a tilt of C on a cradle that sags
+//                                   with A): value · q^k added to the location error EA0C, q the
+//                                   command of A in rad, k = 1..2 (rad/rad^k or mm/rad^k). Only
+//                                   for an axis carried by the other (the other one between the
+//                                   bed and it on the same side of the chain).
 //   reversal:A                      dead-band width of axis A (rad or mm)
 //   drift:Z:t:lin | :quad | :exp | :tau
 //                                   drift of the TCP relative to the table along Z, in M axes:
@@ -40,6 +46,7 @@ enum class ParameterKind {
   harmonic,        ///< rotary axis error motion, component 0..5, order k, cos or sin
   polynomial,      ///< linear axis error motion, component 0..5, degree k
   table,           ///< axis error motion, component 0..5, value at node at_mm (linear) or at_rad (rotary, periodic)
+  coupled,         ///< rotary axis location error (component 0..5) · (command of coupled_axis_index)^order
   reversal,        ///< dead band of an axis
   drift,           ///< TCP drift relative to the table, component 0..2 (X, Y, Z)
   ballbar_length,  ///< instrument: bar length offset
@@ -58,6 +65,7 @@ struct ParameterSpec {
   double at_mm = 0.0;   ///< table of a linear axis: node position on the axis (mm)
   double at_rad = 0.0;  ///< table of a rotary axis: node angle (rad, 0 <= at_rad < 2π)
   bool periodic = false;  ///< table of a rotary axis: interpolated round the turn
+  int coupled_axis_index = -1;  ///< coupled: the axis whose command (rad) the location error grows with
   DriftBasis drift = DriftBasis::linear;
 
   /// True for the effects that act only while measuring (drift, instrument terms): they are not
