@@ -97,10 +97,21 @@ RotaryLine<S> rotary_line(const Axis& axis, int axis_index, const AxisErrorTerms
   return {pivot + offset_perp, rotation_vector<S>(tilt_perp) * d};
 }
 
-/// Transform of one axis (see header comment), without the set-up at home.
+/// The error terms of one axis from the hook: with the whole position `all` where the hook takes
+/// it (terms of one axis that depend on another axis's command), else with the axis's command only.
+template <class S, class Errors>
+AxisErrorTerms<S> error_terms(const Errors& errors, int axis_index, const S& q, bool at_home, const AxisPositionT<S>* all) {
+  if constexpr (requires { errors(axis_index, q, at_home, *all); }) {
+    if (all != nullptr) return errors(axis_index, q, at_home, *all);
+  }
+  return errors(axis_index, q, at_home);
+}
+
+/// Transform of one axis (see header comment), without the set-up at home; `all`: the whole
+/// position q is part of (for the error hook), if known.
 template <class S, class Errors>
 Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double tool_length_mm,
-                        const Errors& errors, bool at_home) {
+                        const Errors& errors, bool at_home, const AxisPositionT<S>* all = nullptr) {
   if constexpr (std::is_same_v<Errors, NominalErrors>) {
     // the same transforms with every error term zero, without the work of the zero terms
     if (axis.is_rotary()) {
@@ -111,7 +122,7 @@ Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double too
     const Vec3<S> d = axis.direction.template cast<S>();
     return Rigid<S>::translation(axis.side == Side::tool ? Vec3<S>(q * d) : Vec3<S>(-q * d));
   }
-  const AxisErrorTerms<S> e = errors(axis_index, q, at_home);
+  const AxisErrorTerms<S> e = error_terms<S>(errors, axis_index, q, at_home, all);
   if constexpr (std::is_same_v<S, double>) {
     // an axis without error terms here: the nominal transform
     if (e.location_offset_mm.isZero(0) && e.location_tilt_rad.isZero(0) && e.direction_offset.isZero(0) &&
@@ -161,9 +172,9 @@ ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double 
     pose_T = pose_T * axis_T;
   };
   for (int i : m.workpiece_side)
-    compose(pose.bed_T_table, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home));
+    compose(pose.bed_T_table, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home, &q));
   for (int i : m.tool_side)
-    compose(pose.bed_T_tool, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home));
+    compose(pose.bed_T_tool, axis_transform<S>(m.axes[i], i, q[i], tool_length_mm, errors, at_home, &q));
   return pose;
 }
 

@@ -18,10 +18,9 @@
 //                       held at the end values outside the nodes; a rotary axis's table
 //                       (ECC:t:<deg>) is periodic, interpolated round the turn
 //   coupled location  → location_offset_mm / location_tilt_rad of the carried rotary axis, value ·
-//                       q^k with q the command of the axis carrying it (EA0C:A:p1); that command is
-//                       the one the chain passed for the carrier just before (the carrier is
-//                       evaluated first: it lies between the bed and the carried axis, which the
-//                       parameter's name requires); at home q = 0. The carried axis's terms take
+//                       q^k with q the command of the axis carrying it (EA0C:A:p1), read from the
+//                       whole position the chain passes with each axis (the four-argument hook,
+//                       kinematics/forward.hpp error_terms); at home q = 0. The carried axis's terms take
 //                       the carrier's command as a constant: their derivative with respect to it
 //                       (µm per rad for real sizes) is left out of the command derivatives
 //   reversal          → the row's dead-band offset (reversal.hpp), not at home
@@ -35,6 +34,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <stdexcept>
 #include <vector>
 
 #include "ncpost/compensation/parameter_name.hpp"
@@ -145,7 +145,22 @@ template <class P> class ErrorFunctor {
   /// Value of parameter i, or 0 for i < 0.
   P value(int i) const { return i < 0 ? P(0) : values_[i]; }
 
+  /// The error terms of axis `axis_index` at its command q. A model with coupled terms
+  /// (has_coupled()) needs the other axes' commands: the chain passes them all (the four-argument
+  /// form, kinematics/forward.hpp); this form is for home and for models without coupled terms.
   template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home) const {
+    if (!at_home && layout_->has_coupled())
+      throw std::logic_error("error model: a coupled term needs every axis's command (call with the whole position)");
+    return terms(axis_index, q, at_home, static_cast<const AxisPositionT<S>*>(nullptr));
+  }
+  /// The error terms of axis `axis_index` at its command q, the whole position being `all`.
+  template <class S>
+  AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home, const AxisPositionT<S>& all) const {
+    return terms(axis_index, q, at_home, &all);
+  }
+
+ private:
+  template <class S> AxisErrorTerms<S> terms(int axis_index, const S& q, bool at_home, const AxisPositionT<S>* all) const {
     using std::cos;
     using std::sin;
     if constexpr (std::is_same_v<S, double> && std::is_same_v<P, double>) {
@@ -154,9 +169,6 @@ template <class P> class ErrorFunctor {
         return home_->terms_at_home[static_cast<std::size_t>(axis_index)];
     }
     AxisErrorTerms<S> e;
-    // the command of every axis as the chain passes it (the carrier of a coupled term comes first)
-    if (layout_->has_coupled() && static_cast<std::size_t>(axis_index) < passed_commands().size())
-      passed_commands()[static_cast<std::size_t>(axis_index)] = at_home ? 0.0 : plain_value(q);
     if (!layout_->acts_on(axis_index)) return e;
     for (int i : layout_->terms_of_axis(axis_index)) {
       const ParameterSpec& s = layout_->spec(i);
@@ -185,7 +197,8 @@ template <class P> class ErrorFunctor {
           break;
         }
         case ParameterKind::coupled: {
-          const double by = at_home ? 0.0 : passed_commands()[static_cast<std::size_t>(s.coupled_axis_index)];
+          // the carrier's command as a constant: its derivative is left out (µm per rad)
+          const double by = at_home || all == nullptr ? 0.0 : plain_value((*all)[s.coupled_axis_index]);
           const S term = v * S(std::pow(by, s.order));
           if (c < 3) e.location_offset_mm[c] += term;
           else e.location_tilt_rad[c - 3] += term;
@@ -215,6 +228,7 @@ template <class P> class ErrorFunctor {
     return e;
   }
 
+ public:
   /// Drift of the TCP relative to the table at the row's time (mm, M axes).
   template <class S> Vec3<S> drift() const {
     using std::exp;
@@ -279,13 +293,6 @@ template <class P> class ErrorFunctor {
   bool machine_only_;
   bool constant_;  ///< constant_in_command()
   const HomeInverse* home_ = nullptr;
-  /// The last command passed for each axis (rad / mm) on this thread, for the coupled terms
-  /// (has_coupled()): one chain is evaluated axis by axis on one thread, while the post evaluates
-  /// chains on several threads with one functor.
-  static std::array<double, 5>& passed_commands() {
-    thread_local std::array<double, 5> commands{0.0, 0.0, 0.0, 0.0, 0.0};
-    return commands;
-  }
 };
 
 }  // namespace ncpost::comp
