@@ -29,8 +29,8 @@ int run(const std::string& args, std::string* out = nullptr) {
   return rc;
 }
 
-std::string machine_path() { return test::source("machines/trr-xy.toml"); }
-std::string sample_path() { return test::source("samples/hemisphere_5axis.cls"); }
+std::string machine_path() { return test::trr_machine_path(); }
+std::string sample_path() { return test::hemisphere_sample_path(); }
 std::string job() { return "--machine " + machine_path() + " --workpiece-origin 0,0,-300 "; }
 
 std::vector<std::string> lines_of(const std::string& path) {
@@ -45,15 +45,6 @@ std::vector<std::string> fields(const std::string& line) {
   std::stringstream s(line);
   for (std::string f; std::getline(s, f, ',');) out.push_back(f);
   return out;
-}
-
-std::vector<Vec3d> read_cl_points(const std::string& path) {
-  std::ifstream in(path);
-  cl::AptReader reader(in, path);
-  std::vector<Vec3d> pts;
-  while (auto r = reader.next())
-    if (const auto* m = std::get_if<cl::Motion>(&*r)) pts.push_back(m->point.tip_mm);
-  return pts;
 }
 
 /// The figure `what` (mm) of the post's account line starting with `line_start`.
@@ -167,7 +158,7 @@ TEST_CASE("TRR-XY post --tilted-plane: exit 1 saying why, no program") {
 TEST_CASE("TRR-XY post --nonlinear harmonic: the paper's shift, error before and after by re-execution") {
   const trr::Machine m = load_trr_xy_machine(machine_path());
   const trr::Kinematics nominal(m);
-  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   std::string out;
   REQUIRE(run("post " + job() + "--tolerance none -o tc_h_plain.nc " + sample_path()) == 0);
   REQUIRE(run("post " + job() + "--tolerance 0.005 --nonlinear harmonic --verify -o tc_h.nc " + sample_path(), &out) == 0);

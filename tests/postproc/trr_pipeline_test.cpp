@@ -30,44 +30,15 @@ int run(const std::string& args, std::string* err = nullptr) {
   return rc;
 }
 
-std::string machine_path() { return test::source("machines/trr-xy.toml"); }
-std::string sample_path() { return test::source("samples/hemisphere_5axis.cls"); }
+std::string machine_path() { return test::trr_machine_path(); }
+std::string sample_path() { return test::hemisphere_sample_path(); }
 std::string post_args() { return "post --machine " + machine_path() + " --workpiece-origin 0,0,-300 "; }
-
-std::vector<Vec3d> read_cl_points(const std::string& path) {
-  std::ifstream in(path);
-  cl::AptReader reader(in, path);
-  std::vector<Vec3d> pts;
-  while (auto r = reader.next())
-    if (const auto* m = std::get_if<cl::Motion>(&*r)) pts.push_back(m->point.tip_mm);
-  return pts;
-}
-
-double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
-  double best = 1e300;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Vec3d d = path[i + 1] - path[i];
-    const double len2 = d.squaredNorm();
-    const double u = len2 > 0 ? std::clamp((p - path[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (path[i] + u * d)).norm());
-  }
-  return best;
-}
 
 /// Largest distance of the executed tip from the CL path over every block (100 points each).
 double executed_deviation(const Kinematics& k, const std::vector<Command>& program, const std::vector<Vec3d>& path) {
-  double worst = 0.0;
-  std::optional<Rigidd> warm;
-  for (std::size_t b = 0; b + 1 < program.size(); ++b)
-    for (int j = (b == 0 ? 0 : 1); j <= 100; ++j) {
-      const double t = j / 100.0;
-      const Command c = Command::from_words((1 - t) * program[b].words() + t * program[b + 1].words());
-      const auto tp = k.tool(c.slider_mm, warm);
-      REQUIRE(tp);
-      warm = tp->machine_T_plate;
-      worst = std::max(worst, distance_to_path(Kinematics::tip_in_workpiece(*tp, c, kOrigin), path));
-    }
-  return worst;
+  const std::optional<double> worst = test::trr_executed_deviation(k, program, path, kOrigin);
+  REQUIRE(worst);
+  return *worst;
 }
 
 /// The figure after `label` ("largest contour error") on the line that starts with `line_start`.
@@ -89,7 +60,7 @@ std::string text_of(const std::string& path) {
 
 TEST_CASE("TRR-XY through the common post: --tolerance 0.005 --verify --report") {
   const Kinematics nominal(load_trr_xy_machine(machine_path()));
-  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   std::string err;
   REQUIRE(run(post_args() + "--tolerance 0.005 --verify --report trr_pipe.html -o trr_pipe.nc " + sample_path(), &err) == 0);
   const std::vector<Command> program = test::read_trr_program("trr_pipe.nc");
@@ -129,7 +100,7 @@ TEST_CASE("TRR-XY: --verify-on a machine with errors, and --model of the same ma
   CHECK(compensated_on_truth <= 0.005);
   // the independent check agrees
   const Kinematics truth(load_trr_xy_machine(machine_path()), e);
-  CHECK(executed_deviation(truth, test::read_trr_program("trr_comp.nc"), read_cl_points(sample_path())) <= 0.005);
+  CHECK(executed_deviation(truth, test::read_trr_program("trr_comp.nc"), test::read_cl_tips(sample_path())) <= 0.005);
 }
 
 TEST_CASE("TRR-XY: the same program with one and two threads") {

@@ -38,29 +38,8 @@ std::vector<Command> read_program(const std::string& path) {
   return test::read_trr_program(path);
 }
 
-std::string machine_path() { return test::source("machines/trr-xy.toml"); }
-std::string sample_path() { return test::source("samples/hemisphere_5axis.cls"); }
-
-/// The CL points of the sample (the path the executed tip must follow).
-std::vector<Vec3d> read_cl_points(const std::string& path) {
-  std::ifstream in(path);
-  cl::AptReader reader(in, path);
-  std::vector<Vec3d> pts;
-  while (auto r = reader.next())
-    if (const auto* m = std::get_if<cl::Motion>(&*r)) pts.push_back(m->point.tip_mm);
-  return pts;
-}
-
-double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
-  double best = 1e300;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Vec3d d = path[i + 1] - path[i];
-    const double len2 = d.squaredNorm();
-    const double u = len2 > 0 ? std::clamp((p - path[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (path[i] + u * d)).norm());
-  }
-  return best;
-}
+std::string machine_path() { return test::trr_machine_path(); }
+std::string sample_path() { return test::hemisphere_sample_path(); }
 
 /// Largest distance of the executed tip from the CL path, over every block (200 points each).
 double executed_deviation(const Kinematics& k, const std::vector<Command>& program, const std::vector<Vec3d>& path,
@@ -74,7 +53,7 @@ double executed_deviation(const Kinematics& k, const std::vector<Command>& progr
       const auto tp = k.tool(c.slider_mm, warm);
       if (!tp) FAIL("forward kinematics failed in block " << b);
       warm = tp->machine_T_plate;
-      const double d = distance_to_path(Kinematics::tip_in_workpiece(*tp, c, kOrigin), path);
+      const double d = test::distance_to_path(Kinematics::tip_in_workpiece(*tp, c, kOrigin), path);
       worst = std::max(worst, d);
       if (j == 200) worst_end = std::max(worst_end, d);
     }
@@ -99,7 +78,7 @@ Errors some_errors() {
 TEST_CASE("--tolerance 0.005: the executed tip stays within 5 um of the CL path") {
   const trr::Machine m = load_trr_xy_machine(machine_path());
   const Kinematics nominal(m);
-  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   REQUIRE(path.size() == 435);
 
   REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance none -o trr_plain.nc " +
@@ -132,7 +111,7 @@ TEST_CASE("--model: the commands make the machine with errors follow the CL path
     std::ofstream f("trr_model.json");
     f << comp::format_model_json(model_from_errors(truth, "trr-xy"));
   }
-  const std::vector<Vec3d> path = read_cl_points(sample_path());
+  const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 -o trr_nom.nc " +
               sample_path()) == 0);
   REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --model trr_model.json "

@@ -12,8 +12,24 @@
 #include <vector>
 
 #include "ncpost/kinematics/trr_xy_forward.hpp"
+#include "ncpost/postproc/apt_reader.hpp"
+#include "test_paths.hpp"
 
 namespace ncpost::test {
+
+/// The TRR-XY machine file and the hemisphere sample the TRR-XY tests post on it.
+inline std::string trr_machine_path() { return source("machines/trr-xy.toml"); }
+inline std::string hemisphere_sample_path() { return source("samples/hemisphere_5axis.cls"); }
+
+/// The tool tips (W, mm) of the motions of the APT file at `path`: the path the executed tip must follow.
+inline std::vector<Vec3d> read_cl_tips(const std::string& path) {
+  std::ifstream in(path);
+  cl::AptReader reader(in, path);
+  std::vector<Vec3d> pts;
+  while (auto r = reader.next())
+    if (const auto* m = std::get_if<cl::Motion>(&*r)) pts.push_back(m->point.tip_mm);
+  return pts;
+}
 
 /// The commands of every motion block of the program at `path` (empty if it cannot be read).
 inline std::vector<trr::Command> read_trr_program(const std::string& path) {

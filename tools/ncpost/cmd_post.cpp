@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "dialect_option.hpp"
 #include "file_checks.hpp"
 #include "input_file.hpp"
 #include "model_input.hpp"
@@ -192,17 +193,7 @@ void add_post(CLI::App& app, Action& action) {
                   "A built-in dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain; or the path of a "
                   "dialect file (a copy of postproc/dialects/fanuc.toml, edited; README \"Dialect files\")")
       ->type_name("NAME|PATH")
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            if (v.find('/') != std::string::npos || (v.size() > 5 && v.ends_with(".toml"))) return {};
-            for (const auto& n : builtin_dialect_names())
-              if (v == n) return {};
-            std::string list;
-            for (const auto& n : builtin_dialect_names()) list += (list.empty() ? "" : ", ") + n;
-            return "'" + v + "': expected a built-in dialect (" + list + ") or the path of a dialect file (with a "
-                   "'/' or ending in .toml)";
-          },
-          ""));
+      ->check(dialect_name_or_path());
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")
       ->check(CLI::IsMember({"auto", "g93", "g94"}));
   sub->add_flag("--verify", a->verify,
