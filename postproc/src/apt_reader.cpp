@@ -16,6 +16,9 @@
 namespace ncpost::cl {
 namespace {
 
+/// The largest DEGREE or ORDER read from a NURBS record (the curve check then wants 1 to 30).
+constexpr double kMaxNurbsOrder = 1000.0;
+
 constexpr double kMmPerInch = 25.4;
 
 bool has_word(const AptStatement& st, const char* w) {
@@ -326,8 +329,14 @@ struct AptReader::State {
     if (w == "NURBS") {
       nurbs = NurbsBlock{st.where, std::nullopt, {}};
       const auto v = numbers_of(st);
-      if (auto d = number_after(st, "DEGREE")) nurbs->degree = static_cast<int>(*d);
-      else if (auto o = number_after(st, "ORDER")) nurbs->degree = static_cast<int>(*o) - 1;
+      // a whole number of a sensible size before it becomes an int (1.7e17 must not overflow the cast)
+      const auto whole = [&](double x, const char* word) {
+        if (!(x >= 0.0 && x <= kMaxNurbsOrder && x == std::floor(x)))
+          fail(st.where, fmt::format("NURBS: {} must be a whole number from 0 to {}", word, kMaxNurbsOrder), echo_of(text));
+        return static_cast<int>(x);
+      };
+      if (auto d = number_after(st, "DEGREE")) nurbs->degree = whole(*d, "DEGREE");
+      else if (auto o = number_after(st, "ORDER")) nurbs->degree = whole(*o, "ORDER") - 1;
       else if (!v.empty()) fail(st.where, "NURBS: a number without DEGREE or ORDER before it", echo_of(text));
       return;
     }

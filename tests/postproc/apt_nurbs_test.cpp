@@ -130,4 +130,9 @@ TEST_CASE("NURBS: bad curves are refused naming the line") {
              Catch::Contains("less than the one before"));
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,0\nCNTRL/10,0,0,1\nFINI\n"), Catch::Contains("weight"));
   CHECK_THAT(error_of("NURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"), Catch::Contains("before any motion"));
+  // a degree that is no whole number of a sensible size (found by fuzz_apt_reader: 1.7e17 overflowed the int cast)
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,170710678118654757\nKNOT/0,0,1,1\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("DEGREE must be a whole number from 0 to 1000"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/ORDER,2.5\nFINI\n"), Catch::Contains("ORDER must be a whole number"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,-3\nFINI\n"), Catch::Contains("DEGREE must be a whole number"));
 }
