@@ -2,6 +2,7 @@
 // Control-specific G codes (see gcode_control_words.hpp).
 #include "ncpost/postproc/gcode_control_words.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 
 namespace ncpost::gcode {
@@ -55,7 +56,8 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
     case 7000: return {ControlWordAction::units_inch, {}};
     case 7100: return {ControlWordAction::units_mm, {}};
     case 100: {
-      const int kind = l ? static_cast<int>(*l) : -1;
+      // an L beyond any G10 form is no kind (and must not overflow the int cast)
+      const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
       const std::string p_text = p ? fmt::format(" P{}", number(*p)) : std::string();
       if (kind == 2 || kind == 20)
         return {ControlWordAction::refuse,
