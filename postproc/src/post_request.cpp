@@ -82,35 +82,32 @@ std::string PostRequest::invalid() const {
   return {};
 }
 
-PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
-  if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
-  if (r.trr) return detail::post_trr(input, program, r);
-  // the control interpolates the tool tip under RTCP: no tolerance unless asked for
-  std::optional<double> tolerance_mm = r.tolerance_mm;
-  if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();
-  const bool account = r.verify || r.verify_on.has_value();
+namespace {
 
+/// The solver the program is posted with: the actual machine (error model) or the nominal one.
+struct PostSolver {
   std::unique_ptr<comp::MachineModel> model;
   std::unique_ptr<KinematicModel> solver;
-  const ActualSolver* actual = nullptr;
-  if (r.model) {
-    model = std::make_unique<comp::MachineModel>(r.machine, *r.model);
-    auto s = std::make_unique<ActualSolver>(*model, r.setup);
-    s->set_measure_uncompensated(account);  // the uncompensated error of each CL point, when reported
-    actual = s.get();
-    solver = std::move(s);
-  } else {
-    solver = std::make_unique<NominalSolver>(r.machine, r.setup);
+  const ActualSolver* actual = nullptr;  ///< the solver, when it carries an error model
+};
+
+PostSolver make_post_solver(const PostRequest& r, bool account) {
+  PostSolver p;
+  if (!r.model) {
+    p.solver = std::make_unique<NominalSolver>(r.machine, r.setup);
+    return p;
   }
-  std::unique_ptr<comp::MachineModel> executing;  // the machine the program is re-executed on
-  if (r.verify_on) executing = std::make_unique<comp::MachineModel>(r.machine, *r.verify_on);
-  const std::istream::pos_type start = input.tellg();
-  auto reader = open_cl_reader(input, r.input_name, r.input_kind, r.reader, r.machine, r.setup);
+  p.model = std::make_unique<comp::MachineModel>(r.machine, *r.model);
+  auto s = std::make_unique<ActualSolver>(*p.model, r.setup);
+  s->set_measure_uncompensated(account);  // the uncompensated error of each CL point, when reported
+  p.actual = s.get();
+  p.solver = std::move(s);
+  return p;
+}
 
-  PostResult result;
-  PostAccount& acc = result.account;
-  acc = detail::account_of(r, r.machine.name, r.model.has_value(), r.verify_on.has_value(), tolerance_mm);
-
+/// The post's options for the request; verified contour errors go into `acc`.
+PostOptions post_options(const PostRequest& r, const std::optional<double>& tolerance_mm, bool account,
+                         const PostSolver& p, PostAccount& acc) {
   PostOptions options;
   options.rtcp = r.rtcp;
   options.retract_mm = r.retract_mm;
@@ -128,29 +125,59 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
       acc.after_series.add(line, contour_mm);
       acc.path.add_after(line, contour_mm);
     };
-  nonlinear::CompensationOptions comp;
   if (tolerance_mm) {
+    nonlinear::CompensationOptions comp;
     comp.method = r.nonlinear;
     comp.tolerance_mm = *tolerance_mm;
     options.take_up_reversal = true;
-    options.subdivide = make_tolerance_subdivider(r.machine, r.setup, *solver, actual, comp, r.dialect, r.input_name);
+    options.subdivide = make_tolerance_subdivider(r.machine, r.setup, *p.solver, p.actual, comp, r.dialect, r.input_name);
   }
+  return options;
+}
 
+/// Posts the records of `reader` to `program` (committed only when the whole program is written).
+PostSummary write_program(cl::Reader& reader, std::ostream& program, const PostRequest& r, const PostSolver& p,
+                          const comp::MachineModel* executing, const PostOptions& options, SolverData& data) {
   AtomicFile out(program);
   NcWriter writer(out, r.dialect, axis_letters(r.machine));
   std::optional<ExecutedOn> verify_solver;
-  if (executing) verify_solver.emplace(*solver, *executing, r.setup);
-  SolverData data;  // the solver's working data on this thread (reversal state, figures)
+  if (executing) verify_solver.emplace(*p.solver, *executing, r.setup);
+  PostSummary summary;
   try {
-    result.summary = post_program(*reader, r.input_name,
-                                  verify_solver ? static_cast<const KinematicModel&>(*verify_solver) : *solver, writer,
-                                  options, data);
+    summary = post_program(reader, r.input_name,
+                           verify_solver ? static_cast<const KinematicModel&>(*verify_solver) : *p.solver, writer,
+                           options, data);
   } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
-    const std::string hint = reader->failure_hint();
+    const std::string hint = reader.failure_hint();
     if (hint.empty()) throw;
     throw Infeasible(std::string(e.what()) + "\n  " + hint);
   }
   out.commit();  // flushes `program`
+  return summary;
+}
+
+}  // namespace
+
+PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
+  if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
+  if (r.trr) return detail::post_trr(input, program, r);
+  // the control interpolates the tool tip under RTCP: no tolerance unless asked for
+  std::optional<double> tolerance_mm = r.tolerance_mm;
+  if (r.rtcp && r.tolerance_is_default) tolerance_mm.reset();
+  const bool account = r.verify || r.verify_on.has_value();
+
+  const PostSolver p = make_post_solver(r, account);
+  std::unique_ptr<comp::MachineModel> executing;  // the machine the program is re-executed on
+  if (r.verify_on) executing = std::make_unique<comp::MachineModel>(r.machine, *r.verify_on);
+  const std::istream::pos_type start = input.tellg();
+  auto reader = open_cl_reader(input, r.input_name, r.input_kind, r.reader, r.machine, r.setup);
+
+  PostResult result;
+  PostAccount& acc = result.account;
+  acc = detail::account_of(r, r.machine.name, r.model.has_value(), r.verify_on.has_value(), tolerance_mm);
+  const PostOptions options = post_options(r, tolerance_mm, account, p, acc);
+  SolverData data;  // the solver's working data on this thread (reversal state, figures)
+  result.summary = write_program(*reader, program, r, p, executing.get(), options, data);
   reader.reset();
   if (r.tilted_plane && !r.dialect.tilted_plane)
     result.summary.notices.push_back(fmt::format(
@@ -158,12 +185,12 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
         "3+2 runs are written with the machine's axes, as without the option", r.dialect.name, r.dialect.file));
   if (r.progress.posted) r.progress.posted(result.summary);
   detail::add_posted(acc, result.summary);
-  if (actual) {
+  if (p.actual) {
     acc.uncompensated_tip_max_mm = data.uncompensated.max_mm;
     acc.uncompensated_tip_rms_mm = data.uncompensated.rms_mm();
   }
   if (account && !r.rtcp) {
-    measure_before(input, start, r, executing ? executing.get() : model.get(), acc);
+    measure_before(input, start, r, executing ? executing.get() : p.model.get(), acc);
     if (r.progress.measured) r.progress.measured();
     result.verified = true;
   }

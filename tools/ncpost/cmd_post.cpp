@@ -73,7 +73,8 @@ void load_serial_post(const PostJobArgs& a, PostRequest& r) {
 
 const ByKind<PostSteps> kPostSteps{{load_serial_post}, {load_trr_xy_post}};
 
-int run_post(const PostArgs& given) {
+/// Refuses combinations of options that cannot make a program, before anything is read.
+void check_post_args(const PostArgs& given) {
   // every file checked before anything is computed: no output over an input, only writable places
   check_files({{"-o", given.output}, {"--report", given.report}},
               {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
@@ -83,20 +84,16 @@ int run_post(const PostArgs& given) {
   if (given.tilted_plane && !given.model.empty())
     throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
                      "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
-  const InputFile input(given.input);
-  PostArgs a = given;
-  a.input = input.name();
-  a.input_path = input.path();
-  a.tolerance_mm = tolerance_of(a.tolerance);
-  if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
+}
+
+/// The post request of the arguments: dialect, input, options, and the machine and models loaded.
+PostRequest post_request_of(const PostArgs& a) {
   PostRequest r;
   try {
     r.dialect = dialect_named(a.dialect);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--dialect: ") + e.what());
   }
-  if (a.tolerance_mm && a.rtcp)  // given explicitly
-    fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
   r.machine_source = a.job.machine;
   r.input_name = a.input;
   r.input_file = a.input_path;
@@ -114,8 +111,12 @@ int run_post(const PostArgs& given) {
   r.threads = a.threads;
   r.verify = a.verify || !a.report.empty();
   kPostSteps[machine_kind(a.job.machine)].load({a.job, a.model, a.verify_on, a.force_model}, r);
-  // progress only where someone watches: stderr on a terminal (and the program not on that terminal)
-  const bool tty = ::isatty(STDERR_FILENO) && !(a.output == "-" && ::isatty(STDOUT_FILENO));
+  return r;
+}
+
+/// Progress only where someone watches: stderr on a terminal (and the program not on that terminal).
+void watch_progress(PostRequest& r, const std::string& output) {
+  const bool tty = ::isatty(STDERR_FILENO) && !(output == "-" && ::isatty(STDOUT_FILENO));
   if (tty) r.progress.posting = [](std::size_t n) { fmt::print(stderr, "\rposting: {} motions", n); };
   r.progress.posted = [tty](const PostSummary& summary) {
     if (tty) fmt::print(stderr, "\r\033[K");
@@ -127,6 +128,34 @@ int run_post(const PostArgs& given) {
     };
     r.progress.measured = [] { fmt::print(stderr, "\r\033[K"); };
   }
+}
+
+/// What the run did: blocks written, the re-executed error, the report.
+void print_post_result(const PostArgs& a, const PostRequest& r, const PostResult& result) {
+  const PostSummary& summary = result.summary;
+  if (a.output != "-")
+    fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
+  if (r.verify || r.verify_on || (r.trr && r.trr->verify_on)) {
+    if (a.rtcp)
+      fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
+    else
+      fmt::print(stderr, "{}", account_text(result.account));
+  }
+  if (!a.report.empty()) fmt::print(stderr, "report written to {}\n", a.report);
+}
+
+int run_post(const PostArgs& given) {
+  check_post_args(given);
+  const InputFile input(given.input);
+  PostArgs a = given;
+  a.input = input.name();
+  a.input_path = input.path();
+  a.tolerance_mm = tolerance_of(a.tolerance);
+  if (a.rtcp && a.tolerance.empty()) a.tolerance_mm.reset();  // the control interpolates the tool tip
+  PostRequest r = post_request_of(a);
+  if (a.tolerance_mm && a.rtcp)  // given explicitly
+    fmt::print(stderr, "notice: --tolerance has no effect with --rtcp (the control interpolates the tool tip)\n");
+  watch_progress(r, a.output);
 
   std::ifstream in(a.input_path, std::ios::binary);
   if (!in) throw InputError({a.input, 0, 0}, "cannot open the input file");
@@ -141,16 +170,7 @@ int run_post(const PostArgs& given) {
   }
   out.commit();
   if (report) report->commit();
-  const PostSummary& summary = result.summary;
-  if (a.output != "-")
-    fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (r.verify || r.verify_on || (r.trr && r.trr->verify_on)) {
-    if (a.rtcp)
-      fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
-    else
-      fmt::print(stderr, "{}", account_text(result.account));
-  }
-  if (report) fmt::print(stderr, "report written to {}\n", a.report);
+  print_post_result(a, r, result);
   return 0;
 }
 
