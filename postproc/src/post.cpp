@@ -51,7 +51,8 @@ class Poster {
         item = std::move(pending_.front());
         pending_.pop_front();
       } else {
-        item = fetch();
+        item = carry_ ? std::move(*carry_) : fetch();
+        carry_.reset();
         if (starts_run(item)) {
           plan_run(std::move(item), fetch);
           continue;
@@ -80,6 +81,8 @@ class Poster {
 
   /// A feed motion whose solution the post chooses (not a rapid, no programmed angles).
   static bool plannable(const cl::Motion& m) { return !m.rapid && !m.from && !m.rotary_rad; }
+  /// A rapid (or FROM) whose solution the post chooses: it may open a run (any solution is free there).
+  static bool free_start(const cl::Motion& m) { return (m.rapid || m.from) && !m.rotary_rad; }
 
   /// Records that may stand between the feed motions of one run (they move nothing).
   static bool passes(const cl::Record& r) {
@@ -95,7 +98,7 @@ class Poster {
         words_.rotary_count != 2 || !solver_.concurrent() || item.error || !item.record)
       return false;
     const auto* m = std::get_if<cl::Motion>(&*item.record);
-    return m && plannable(*m) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;
+    return m && (plannable(*m) || free_start(*m)) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;
   }
 
   /// The continuity test of the post: moving the rotary axes from `from` to `to` for the tool axis
@@ -108,8 +111,9 @@ class Poster {
     return chosen > *free + options_.branch_change_rad;
   }
 
-  /// Reads the run that `first` opens (up to kPlanWindow feed motions, and the record that ends
-  /// it), chooses the solution of each motion, and queues the records with the choice.
+  /// Reads the run that `first` (a feed motion, or a rapid that leads to feed motions) opens: up to
+  /// kPlanWindow motions, and the record that ends it (a rapid that ends it opens the next run),
+  /// chooses the solution of each motion, and queues the records with the choice.
   template <class Fetch> void plan_run(detail::AheadItem first, Fetch& fetch) {
     std::vector<detail::AheadItem> items;
     std::vector<std::size_t> motions{0};
@@ -121,6 +125,10 @@ class Poster {
       if (!stop) {
         if (const auto* m = std::get_if<cl::Motion>(&*item.record)) (plannable(*m) ? motion : stop) = true;
         else stop = !passes(*item.record);
+      }
+      if (stop && !item.error && item.record && starts_run(item)) {
+        carry_ = std::move(item);  // a rapid: it opens the next run
+        break;
       }
       items.push_back(std::move(item));
       if (motion) motions.push_back(items.size() - 1);
@@ -134,6 +142,9 @@ class Poster {
   /// where the limits force changes of solution on that path, the plan with the fewest.
   void plan_motions(std::vector<detail::AheadItem>& items, std::vector<std::size_t> motions) {
     auto point = [&](std::size_t k) -> const ClPoint& { return std::get<cl::Motion>(*items[motions[k]].record).point; };
+    // a rapid first: any solution is free there (the post tests no change of solution on rapids)
+    const bool rapid_first = !plannable(std::get<cl::Motion>(*items[motions[0]].record));
+    auto tested = [&](std::size_t k) { return k > 0 ? true : !rapid_first && have_position_; };
     AxisPosition q = previous_.q;
     std::vector<AxisPosition> greedy;  // the commands each motion is solved from, then its own
     std::size_t greedy_changes = 0;
@@ -154,7 +165,7 @@ class Poster {
         break;
       }
       const AxisPosition& next = *item.solved->ik.position;
-      if ((k > 0 || have_position_) && forced_change(point(k).axis, q.rotary_rad, next.rotary_rad)) ++greedy_changes;
+      if (tested(k) && forced_change(point(k).axis, q.rotary_rad, next.rotary_rad)) ++greedy_changes;
       greedy.push_back(q);
       q = next;
     }
@@ -169,10 +180,11 @@ class Poster {
             list.push_back(turned);
     }
     const ForcedChange forced = [&](std::size_t k, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-      return (k > 0 || have_position_) && forced_change(point(k).axis, from, to);
+      return tested(k) && forced_change(point(k).axis, from, to);
     };
     const BranchPlan plan = plan_branches(previous_.q.rotary_rad, candidates, forced, kPlanWindow);
-    if (plan.changes >= greedy_changes) return;
+    // (no retract allowed: the post fails at the first change either way, the greedy one names it)
+    if (plan.changes >= greedy_changes || (plan.changes > 0 && options_.retract_mm <= 0.0)) return;
     for (std::size_t k = 0; k < motions.size(); ++k) items[motions[k]].planned_rotary_rad = candidates[k][plan.choice[k]];
     const int first_line = std::get<cl::Motion>(*items[motions.front()].record).where.line;
     const int last_line = std::get<cl::Motion>(*items[motions.back()].record).where.line;
@@ -675,6 +687,7 @@ class Poster {
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
   std::optional<Eigen::Vector2d> planned_rotary_;  ///< the current record's rotary angles chosen by the branch plan
   std::deque<detail::AheadItem> pending_;          ///< records read and planned, not posted yet
+  std::optional<detail::AheadItem> carry_;         ///< a rapid read by the last plan: it opens the next run
   SolverData plan_data_;                            ///< the solver's working data of the branch plan
   const KinematicModel& solver_;
   SolverData& data_;  ///< the solver's working data on the post's thread
