@@ -35,8 +35,9 @@ void plan_window(const Eigen::Vector2d& start, const BranchCandidates& candidate
     const auto& to = candidates[i];
     next.assign(to.size(), Cost{std::numeric_limits<std::size_t>::max(), 0.0});
     back[i - begin].assign(to.size(), 0);
-    for (std::size_t b = 0; b < to.size(); ++b) {
-      for (std::size_t a = 0; a < from.size(); ++a) {
+    // (from the outer loop: the caller's test sees the same `from` in a row; ties keep the earlier a)
+    for (std::size_t a = 0; a < from.size(); ++a) {
+      for (std::size_t b = 0; b < to.size(); ++b) {
         Cost k = cost[a];
         k.changes += forced(i, from[a], to[b]) ? 1 : 0;
         k.travel_rad += travel(from[a], to[b]);

@@ -174,13 +174,29 @@ class Poster {
     for (std::size_t k = 0; k < motions.size(); ++k) {
       std::vector<Eigen::Vector2d>& list = candidates[k];
       list.push_back(items[motions[k]].solved->ik.position->rotary_rad);  // the greedy choice first
-      for (const AxisPosition& b : solver_.branches(point(k), greedy[k], plan_data_))
+      std::vector<AxisPosition> branches;
+      try {
+        branches = solver_.branches(point(k), greedy[k], plan_data_);
+      } catch (...) {
+        return;  // (a solver that fails here fails the post at this motion, or solves it greedily)
+      }
+      for (const AxisPosition& b : branches)
         for (const Eigen::Vector2d& turned : turns(b.rotary_rad))
           if (std::none_of(list.begin(), list.end(), [&](const Eigen::Vector2d& c) { return (c - turned).cwiseAbs().maxCoeff() < 1e-9; }))
             list.push_back(turned);
     }
+    // the free travel from one candidate to the next point, computed once for all its candidates
+    struct {
+      std::size_t k = SIZE_MAX;
+      Eigen::Vector2d from;
+      std::optional<double> free;
+    } last;
     const ForcedChange forced = [&](std::size_t k, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-      return tested(k) && forced_change(point(k).axis, from, to);
+      if (!tested(k)) return false;
+      const double chosen = (to - from).cwiseAbs().sum();
+      if (chosen <= options_.branch_change_rad) return false;
+      if (last.k != k || last.from != from) last = {k, from, unlimited_rotary_travel(machine_, point(k).axis, from)};
+      return last.free && chosen > *last.free + options_.branch_change_rad;
     };
     const BranchPlan plan = plan_branches(previous_.q.rotary_rad, candidates, forced, kPlanWindow);
     // (no retract allowed: the post fails at the first change either way, the greedy one names it)
