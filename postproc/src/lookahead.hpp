@@ -47,6 +47,9 @@ struct AheadItem {
   std::optional<cl::Record> record;  ///< nullopt: the end of the input (or `error`)
   std::vector<std::string> notices;
   std::optional<AheadSolve> solved;
+  /// The rotary angles (rad) the branch plan chose for this motion (post.cpp, branch_plan.hpp);
+  /// nullopt: the solution nearest the previous commands.
+  std::optional<Eigen::Vector2d> planned_rotary_rad;
   std::exception_ptr error;  ///< the reader failed here
 };
 

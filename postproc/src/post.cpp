@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "lookahead.hpp"
+#include "ncpost/postproc/branch_plan.hpp"
 #include "ncpost/compensation/nonlinear_block.hpp"
 #include "ncpost/postproc/unreachable.hpp"
 #include "ncpost/postproc/cycle_words.hpp"
@@ -27,22 +30,42 @@ class Poster {
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
-    if (options_.threads > 1) {
-      detail::Lookahead ahead(reader, solver_);
-      for (;;) {
-        detail::AheadItem item = ahead.next();
-        if (item.error) std::rethrow_exception(item.error);
-        if (!item.record) break;
-        ahead_ = item.solved ? &*item.solved : nullptr;
-        std::visit([this](const auto& r) { on(r); }, *item.record);
-        ahead_ = nullptr;
-        for (auto& n : item.notices) summary_.notices.push_back(std::move(n));
+    std::optional<detail::Lookahead> ahead;
+    if (options_.threads > 1) ahead.emplace(reader, solver_);
+    // the next record from the input: read ahead (2 threads) or read here, errors kept in place
+    auto fetch = [&]() -> detail::AheadItem {
+      if (ahead) return ahead->next();
+      detail::AheadItem item;
+      try {
+        item.record = reader.next();
+        item.notices = reader.take_notices();
+      } catch (...) {
+        item.record.reset();
+        item.error = std::current_exception();
       }
-    } else {
-      while (auto record = reader.next()) {
-        std::visit([this](const auto& r) { on(r); }, *record);
-        for (auto& n : reader.take_notices()) summary_.notices.push_back(std::move(n));
+      return item;
+    };
+    for (;;) {
+      detail::AheadItem item;
+      if (!pending_.empty()) {
+        item = std::move(pending_.front());
+        pending_.pop_front();
+      } else {
+        item = carry_ ? std::move(*carry_) : fetch();
+        carry_.reset();
+        if (starts_run(item)) {
+          plan_run(std::move(item), fetch);
+          continue;
+        }
       }
+      if (item.error) std::rethrow_exception(item.error);
+      if (!item.record) break;
+      ahead_ = item.solved ? &*item.solved : nullptr;
+      planned_rotary_ = item.planned_rotary_rad;
+      std::visit([this](const auto& r) { on(r); }, *item.record);
+      ahead_ = nullptr;
+      planned_rotary_.reset();
+      for (auto& n : item.notices) summary_.notices.push_back(std::move(n));
     }
     close_plane();
     if (options_.rtcp && rtcp_on_) writer_.rtcp(false, tool_);
@@ -52,6 +75,159 @@ class Poster {
   }
 
  private:
+  // ---- branch planning (PostOptions::branch_choice, branch_plan.hpp) ------------------------
+  /// The most feed motions planned at once (memory: the records held, one back-pointer per candidate).
+  static constexpr std::size_t kPlanWindow = 8192;
+
+  /// A feed motion whose solution the post chooses (not a rapid, no programmed angles).
+  static bool plannable(const cl::Motion& m) { return !m.rapid && !m.from && !m.rotary_rad; }
+  /// A rapid (or FROM) whose solution the post chooses: it may open a run (any solution is free there).
+  static bool free_start(const cl::Motion& m) { return (m.rapid || m.from) && !m.rotary_rad; }
+
+  /// Records that may stand between the feed motions of one run (they move nothing).
+  static bool passes(const cl::Record& r) {
+    return std::holds_alternative<cl::Feed>(r) || std::holds_alternative<cl::Spindle>(r) ||
+           std::holds_alternative<cl::Coolant>(r) || std::holds_alternative<cl::Comment>(r) ||
+           std::holds_alternative<cl::Unsupported>(r);
+  }
+
+  /// True when `item` (read from the input, not planned yet) opens a run of feed motions to plan:
+  /// a two-rotary serial machine whose solver depends on nothing the post's progress changes.
+  bool starts_run(const detail::AheadItem& item) const {
+    if (options_.branch_choice != PostOptions::BranchChoice::lookahead || !words_.serial ||
+        words_.rotary_count != 2 || !solver_.concurrent() || item.error || !item.record)
+      return false;
+    const auto* m = std::get_if<cl::Motion>(&*item.record);
+    return m && (plannable(*m) || free_start(*m)) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;
+  }
+
+  /// The continuity test of the post: moving the rotary axes from `from` to `to` for the tool axis
+  /// `axis_W` travels clearly further than the machine without limits would (another branch).
+  bool forced_change(const Vec3d& axis_W, const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+    const double chosen = (to - from).cwiseAbs().sum();
+    if (chosen <= options_.branch_change_rad) return false;  // the free travel is >= 0
+    const auto free = unlimited_rotary_travel(machine_, axis_W, from);
+    if (!free) return false;
+    return chosen > *free + options_.branch_change_rad;
+  }
+
+  /// Reads the run that `first` (a feed motion, or a rapid that leads to feed motions) opens: up to
+  /// kPlanWindow motions, and the record that ends it (a rapid that ends it opens the next run),
+  /// chooses the solution of each motion, and queues the records with the choice.
+  template <class Fetch> void plan_run(detail::AheadItem first, Fetch& fetch) {
+    std::vector<detail::AheadItem> items;
+    std::vector<std::size_t> motions{0};
+    items.push_back(std::move(first));
+    while (motions.size() < kPlanWindow && items.size() < 4 * kPlanWindow) {
+      detail::AheadItem item = fetch();
+      bool stop = item.error || !item.record;
+      bool motion = false;
+      if (!stop) {
+        if (const auto* m = std::get_if<cl::Motion>(&*item.record)) (plannable(*m) ? motion : stop) = true;
+        else stop = !passes(*item.record);
+      }
+      if (stop && !item.error && item.record && starts_run(item)) {
+        carry_ = std::move(item);  // a rapid: it opens the next run
+        break;
+      }
+      items.push_back(std::move(item));
+      if (motion) motions.push_back(items.size() - 1);
+      if (stop) break;
+    }
+    plan_motions(items, motions);
+    for (auto& item : items) pending_.push_back(std::move(item));
+  }
+
+  /// The greedy solutions of the motions (kept as solved ahead: the post uses them as it goes);
+  /// where the limits force changes of solution on that path, the plan with the fewest.
+  void plan_motions(std::vector<detail::AheadItem>& items, std::vector<std::size_t> motions) {
+    auto point = [&](std::size_t k) -> const ClPoint& { return std::get<cl::Motion>(*items[motions[k]].record).point; };
+    // a rapid first: any solution is free there (the post tests no change of solution on rapids)
+    const bool rapid_first = !plannable(std::get<cl::Motion>(*items[motions[0]].record));
+    auto tested = [&](std::size_t k) { return k > 0 ? true : !rapid_first && have_position_; };
+    AxisPosition q = previous_.q;
+    std::vector<AxisPosition> greedy;  // the commands each motion is solved from, then its own
+    std::size_t greedy_changes = 0;
+    for (std::size_t k = 0; k < motions.size(); ++k) {
+      detail::AheadItem& item = items[motions[k]];
+      if (!(item.solved && item.solved->fits(point(k), q))) {
+        detail::AheadSolve s{point(k), q, {}, {}};
+        try {
+          s.ik = solver_.solve_quiet(point(k), q, plan_data_, &s.figures);
+        } catch (...) {
+          s.ik = {};  // the post solves this motion itself and meets the failure there
+        }
+        item.solved.reset();
+        if (s.ik.ok()) item.solved = std::move(s);
+      }
+      if (!item.solved || !item.solved->ik.ok()) {
+        motions.resize(k);  // the post names the failure; the plan ends before it
+        break;
+      }
+      const AxisPosition& next = *item.solved->ik.position;
+      if (tested(k) && forced_change(point(k).axis, q.rotary_rad, next.rotary_rad)) ++greedy_changes;
+      greedy.push_back(q);
+      q = next;
+    }
+    if (greedy_changes == 0) return;  // nothing to improve: the greedy program
+    BranchCandidates candidates(motions.size());
+    for (std::size_t k = 0; k < motions.size(); ++k) {
+      std::vector<Eigen::Vector2d>& list = candidates[k];
+      list.push_back(items[motions[k]].solved->ik.position->rotary_rad);  // the greedy choice first
+      std::vector<AxisPosition> branches;
+      try {
+        branches = solver_.branches(point(k), greedy[k], plan_data_);
+      } catch (...) {
+        return;  // (a solver that fails here fails the post at this motion, or solves it greedily)
+      }
+      for (const AxisPosition& b : branches)
+        for (const Eigen::Vector2d& turned : turns(b.rotary_rad))
+          if (std::none_of(list.begin(), list.end(), [&](const Eigen::Vector2d& c) { return (c - turned).cwiseAbs().maxCoeff() < 1e-9; }))
+            list.push_back(turned);
+    }
+    // the free travel from one candidate to the next point, computed once for all its candidates
+    struct {
+      std::size_t k = SIZE_MAX;
+      Eigen::Vector2d from;
+      std::optional<double> free;
+    } last;
+    const ForcedChange forced = [&](std::size_t k, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+      if (!tested(k)) return false;
+      const double chosen = (to - from).cwiseAbs().sum();
+      if (chosen <= options_.branch_change_rad) return false;
+      if (last.k != k || last.from != from) last = {k, from, unlimited_rotary_travel(machine_, point(k).axis, from)};
+      return last.free && chosen > *last.free + options_.branch_change_rad;
+    };
+    const BranchPlan plan = plan_branches(previous_.q.rotary_rad, candidates, forced, kPlanWindow);
+    // (no retract allowed: the post fails at the first change either way, the greedy one names it)
+    if (plan.changes >= greedy_changes || (plan.changes > 0 && options_.retract_mm <= 0.0)) return;
+    for (std::size_t k = 0; k < motions.size(); ++k) items[motions[k]].planned_rotary_rad = candidates[k][plan.choice[k]];
+    const int first_line = std::get<cl::Motion>(*items[motions.front()].record).where.line;
+    const int last_line = std::get<cl::Motion>(*items[motions.back()].record).where.line;
+    summary_.notices.push_back(fmt::format(
+        "{}:{}: the rotary solutions of lines {} to {} are planned ahead: the axis limits force {} change{} of "
+        "solution there instead of {} (--branch-plan greedy)",
+        input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes));
+    ++summary_.planned_runs;
+  }
+
+  /// The rotary angles `rotary_rad` and their whole turns within the limits (at most two turns
+  /// either way; an axis without limits: one turn either way).
+  std::vector<Eigen::Vector2d> turns(const Eigen::Vector2d& rotary_rad) const {
+    std::array<std::vector<double>, 2> each;
+    for (int k = 0; k < 2; ++k) {
+      const Axis& axis = machine_.rotary(k);
+      for (int t : {0, -1, 1, -2, 2}) {
+        const double v = rotary_rad[k] + 2.0 * kPi * t;
+        if (axis.limits ? axis.limits->contains(v) : std::abs(t) <= 1) each[static_cast<std::size_t>(k)].push_back(v);
+      }
+    }
+    std::vector<Eigen::Vector2d> out;
+    for (double a : each[0])
+      for (double b : each[1]) out.emplace_back(a, b);
+    return out;
+  }
+
   // ---- records ---------------------------------------------------------------------------
   void on(const cl::Motion& m) {
     ++summary_.motions_in;
@@ -128,7 +304,22 @@ class Poster {
       next.q = solver_.with_rotary(cl, *rotary, data_);
     } else {
       IkOutcome ik;
-      if (ahead_ && ahead_->fits(cl, previous_.q)) {  // solved on the read-ahead thread
+      const bool ahead_fits = ahead_ && ahead_->fits(cl, previous_.q);
+      if (planned_rotary_ && !(ahead_fits && ahead_->ik.ok() && ahead_->ik.position->rotary_rad == *planned_rotary_)) {
+        // the solution the branch plan chose: the one nearest its rotary angles (else the greedy one)
+        AxisPosition toward = previous_.q;
+        toward.rotary_rad = *planned_rotary_;
+        SolveFigures figures;
+        IkOutcome planned = solver_.solve_quiet(cl, toward, data_, &figures);
+        if (planned.ok() && (planned.position->rotary_rad - *planned_rotary_).cwiseAbs().maxCoeff() < 1e-9) {
+          ik = std::move(planned);
+          data_.record(figures);
+        }
+        ahead_ = nullptr;
+      }
+      planned_rotary_.reset();
+      if (ik.ok()) {
+      } else if (ahead_fits && ahead_) {  // solved on the read-ahead thread
         ik = ahead_->ik;
         data_.record(ahead_->figures);
         ahead_ = nullptr;
@@ -187,11 +378,7 @@ class Poster {
 
   /// True when `q` (solved for `cl`) is on another branch than the continuous one because of the limits.
   bool branch_changed(const ClPoint& cl, const AxisPosition& q) const {
-    const double chosen = (q.rotary_rad - previous_.q.rotary_rad).cwiseAbs().sum();
-    if (chosen <= options_.branch_change_rad) return false;  // the free travel is >= 0
-    const auto free = unlimited_rotary_travel(machine_, cl.axis, previous_.q.rotary_rad);
-    if (!free) return false;
-    return chosen > *free + options_.branch_change_rad;
+    return forced_change(cl.axis, previous_.q.rotary_rad, q.rotary_rad);
   }
 
   /// Retract along the tool axis from the previous point, reorient above `next` on its branch,
@@ -211,6 +398,7 @@ class Poster {
         "{}:{}: the axis limits force a change of solution (rotary {:.3f}, {:.3f} -> {:.3f}, {:.3f} deg): retract "
         "{} mm along the tool axis, reorient, re-engage", input_, line, rad_to_deg(previous_.q.rotary_rad[0]),
         rad_to_deg(previous_.q.rotary_rad[1]), rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1]), d));
+    ++summary_.retracts;
     writer_.comment("retract, reorient, re-engage (axis limits)");
     const SolvedPoint p1{up_here, *a.position}, p2{up_there, *b.position};
     emit(previous_, p1, line, false);
@@ -513,6 +701,10 @@ class Poster {
 
   const std::string& input_;
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
+  std::optional<Eigen::Vector2d> planned_rotary_;  ///< the current record's rotary angles chosen by the branch plan
+  std::deque<detail::AheadItem> pending_;          ///< records read and planned, not posted yet
+  std::optional<detail::AheadItem> carry_;         ///< a rapid read by the last plan: it opens the next run
+  SolverData plan_data_;                            ///< the solver's working data of the branch plan
   const KinematicModel& solver_;
   SolverData& data_;  ///< the solver's working data on the post's thread
   NcWriter& writer_;

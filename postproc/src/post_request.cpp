@@ -111,6 +111,7 @@ PostOptions post_options(const PostRequest& r, const std::optional<double>& tole
   PostOptions options;
   options.rtcp = r.rtcp;
   options.retract_mm = r.retract_mm;
+  options.branch_choice = r.branch_choice;
   options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
   options.native_cycles = !r.model;
   options.tilted_plane = r.tilted_plane;

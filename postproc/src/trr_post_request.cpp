@@ -58,6 +58,7 @@ PostOptions trr_options(const PostRequest& r) {
   o.feed_mode = r.feed_mode;
   o.threads = r.threads;
   o.retract_mm = r.retract_mm;
+  o.branch_choice = r.branch_choice;
   o.program_name = r.program_name;
   return o;
 }

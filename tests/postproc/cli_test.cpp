@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "test_paths.hpp"
 
@@ -119,26 +120,61 @@ TEST_CASE("post --model --tolerance --verify-on --report: before/after printed, 
   CHECK(first == "GOOD OLD PROGRAM");
 }
 
+namespace {
+
+/// The CL lines of the retract notices in `err`, in order.
+std::vector<int> retract_lines(const std::string& err) {
+  std::vector<int> lines;
+  const std::string tail = ": the axis limits force a change of solution";
+  for (auto at = err.find(tail); at != std::string::npos; at = err.find(tail, at + 1)) {
+    const auto colon = err.rfind(':', at - 1);
+    lines.push_back(std::stoi(err.substr(colon + 1, at - colon - 1)));
+  }
+  return lines;
+}
+
+double after_contour_mm(const std::string& err) {
+  const auto after = err.find("after");
+  REQUIRE(after != std::string::npos);
+  const auto mm = err.find("largest contour error ", after);
+  REQUIRE(mm != std::string::npos);
+  return std::stod(err.substr(mm + 22));
+}
+
+}  // namespace
+
 TEST_CASE("post: a limit-forced change of solution retracts, or fails with --retract 0") {
-  // the BC head's C is limited to +-360 deg: the spiral of the hemisphere sample runs into it
+  // the BC head's C is limited to +-360 deg: the spiral of the hemisphere sample (~6 turns of C)
+  // runs into it. Greedy (each motion nearest the previous): at +360 deg B flips its sign and C
+  // turns back 180 deg, 10 times (first at line 83). Planned ahead (the default), from the rapid
+  // at line 8 (C -360 there instead of 0): C turns back a whole turn, B keeps its sign: 2 changes,
+  // at lines 155 and 299.
   const std::string args = "post --machine " + source("machines/gantry-bc-head.toml") +
                            " --workpiece-origin 0,0,-300 --tool-length 120 --verify ";
   std::string err;
   std::remove("cli_bc.nc");
-  CHECK(run(args + "--retract 0 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 3);
-  CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:83") && Catch::Contains("no retract"));
-  CHECK_FALSE(exists("cli_bc.nc"));
+  // no retract allowed: no plan avoids every change, the post fails at the greedy path's first
+  for (const char* plan : {"lookahead", "greedy"}) {
+    INFO(plan);
+    CHECK(run(args + "--branch-plan " + plan + " --retract 0 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"),
+              &err) == 3);
+    CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:83") && Catch::Contains("no retract"));
+    CHECK_FALSE(exists("cli_bc.nc"));
+  }
+
+  CHECK(run(args + "--branch-plan greedy --retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 0);
+  CHECK(retract_lines(err) == std::vector<int>{83, 119, 155, 191, 227, 263, 299, 335, 371, 407});
+  CHECK(after_contour_mm(err) < 1.0);
   CHECK(run(args + "--retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 0);
-  CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:83: the axis limits force a change of solution"));
+  CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:155: the axis limits force a change of solution"));
+  CHECK_THAT(err, Catch::Contains("lines 8 to 442 are planned ahead") && Catch::Contains("2 changes of solution there instead of 10"));
+  CHECK(retract_lines(err) == std::vector<int>{155, 299});
   std::ifstream in("cli_bc.nc");
   std::stringstream s;
   s << in.rdbuf();
   CHECK_THAT(s.str(), Catch::Contains("retract, reorient, re-engage"));
   // re-executed: no block swings through the part (the retract is a feed move along the tool axis)
-  const auto after = err.find("after");
-  REQUIRE(after != std::string::npos);
-  const auto mm = err.find("largest contour error ", after);
-  CHECK(std::stod(err.substr(mm + 22)) < 1.0);
+  CHECK(after_contour_mm(err) < 1.0);
 }
 
 TEST_CASE("post --model re-posts a machine-axis G-code program the same way") {

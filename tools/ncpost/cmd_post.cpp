@@ -43,6 +43,7 @@ struct PostArgs {
   std::string report;
   std::string verify_on;
   double retract_mm = 50.0;
+  std::string branch_plan = "lookahead";
   int threads = 2;
   std::string output = "-";
   std::string input;       ///< the INPUT argument; in a run, the name in messages ("<stdin>" for "-")
@@ -108,6 +109,7 @@ PostRequest post_request_of(const PostArgs& a) {
               : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
                                      : PostOptions::FeedMode::automatic;
   r.retract_mm = a.retract_mm;
+  r.branch_choice = a.branch_plan == "greedy" ? PostOptions::BranchChoice::greedy : PostOptions::BranchChoice::lookahead;
   r.threads = a.threads;
   r.verify = a.verify || !a.report.empty();
   kPostSteps[machine_kind(a.job.machine)].load({a.job, a.model, a.verify_on, a.force_model}, r);
@@ -222,6 +224,12 @@ void add_post(CLI::App& app, Action& action) {
                   "When the axis limits force a change of solution mid-path: retract this far along the tool axis "
                   "(mm, default 50), reorient, re-engage; 0 refuses (exit 3)")
       ->check(finite_in(0.0, kMaxRetractMm, "mm"));
+  sub->add_option("--branch-plan", a->branch_plan,
+                  "How the rotary solution of each feed motion is chosen: lookahead (default) plans each run of feed "
+                  "motions (up to 8192; longer runs window by window) for the fewest limit-forced changes of solution "
+                  "(retracts), else keeps the nearest solution; greedy takes the solution nearest the previous "
+                  "commands, motion by motion")
+      ->check(CLI::IsMember({"lookahead", "greedy"}));
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");

@@ -104,6 +104,13 @@ struct PostOptions {
   /// 0: no retract strategy, the post fails (Infeasible) naming the CL line.
   double retract_mm = 50.0;
   double branch_change_rad = 0.2;       ///< extra rotary travel (sum over the axes) that counts as a change
+  /// How the post chooses among the inverse solutions (branches, turns of a rotary axis) of the
+  /// feed motions: `greedy`, each nearest the previous commands; `lookahead` (default), over each
+  /// run of feed motions (up to 8192, between rapids, tool changes, arcs and cycles; longer runs
+  /// window by window): where the greedy choice runs into limit-forced changes of solution
+  /// (retracts), the choice with the fewest (branch_plan.hpp), else the greedy one unchanged.
+  /// Two-rotary serial machines whose solver is concurrent() (not models with reversal).
+  enum class BranchChoice { greedy, lookahead } branch_choice = BranchChoice::lookahead;
   /// 2: other threads read the CL records and solve their motions ahead (solving only for a
   /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
   int threads = 1;
@@ -127,6 +134,8 @@ struct PostSummary {
   std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
   std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
   std::size_t tilted_planes = 0;  ///< tilted work planes written (`tilted_plane`)
+  std::size_t retracts = 0;  ///< limit-forced changes of solution (retract, reorient, re-engage)
+  std::size_t planned_runs = 0;  ///< runs of feed motions whose solutions the branch plan changed
   std::vector<std::string> notices;
   VerifyReport verify;
 };

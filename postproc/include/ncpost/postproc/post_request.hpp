@@ -87,6 +87,8 @@ struct PostRequest {
   bool tilted_plane = false;
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
   double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
+  /// greedy or planned over each run of feed motions (PostOptions::branch_choice)
+  PostOptions::BranchChoice branch_choice = PostOptions::BranchChoice::lookahead;
   int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same
   std::string program_name = "NCPOST";
   // verification
