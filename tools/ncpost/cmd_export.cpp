@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // ncpost export: the model as compensation data for the control (issue 17; docs/cli.md "export"):
-// LinuxCNC's COMP_FILE, a SINUMERIK LEC table, or the machine file with the location errors of the
-// rotary axes applied (the control's kinematics calibration). What a format cannot hold is listed
+// LinuxCNC's COMP_FILE, a SINUMERIK LEC table, an ISG-kernel / Beckhoff TwinCAT CNC leadscrew error
+// compensation list, or the machine file with the location errors of the rotary axes applied (the control's kinematics calibration). What a format cannot hold is listed
 // on stderr and in the file.
 #include <fmt/format.h>
 
@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "model_input.hpp"
+#include "ncpost/compensation/export_isg.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
 #include "ncpost/compensation/export_machine.hpp"
 #include "ncpost/compensation/export_siemens.hpp"
@@ -77,8 +78,8 @@ int run_export(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
   check_files({{"-o", args.output}}, inputs);
-  if (args.format != "linuxcnc" && args.format != "siemens" && args.format != "machine")
-    throw UsageError(fmt::format("--format: expected linuxcnc, siemens or machine, got '{}'", args.format));
+  if (args.format != "linuxcnc" && args.format != "siemens" && args.format != "isg" && args.format != "machine")
+    throw UsageError(fmt::format("--format: expected linuxcnc, siemens, isg or machine, got '{}'", args.format));
   Machine machine;
   comp::ModelFile file;
   if (!args.machine.empty()) {
@@ -130,6 +131,14 @@ int run_export(const ExportArgs& args) {
       fmt::print("exported {} rows for axis {} (COMP_FILE_TYPE = 1) -> {}\n", table.rows.size(), letter, args.output);
       return 0;
     }
+    if (args.format == "isg") {
+      const comp::IsgLsecTable table = comp::isg_lsec_table(model, letter);
+      write_file_atomically(args.output, comp::format_isg_lsec(table, model, source));
+      print_left_out(table.axis.left_out, fmt::format("an ISG leadscrew error compensation list of {}", letter));
+      fmt::print("exported {} points for axis {} (kw.ssfk, bilateral, 0.1 µm) -> {}\n", table.setpoints.size(), letter,
+                 args.output);
+      return 0;
+    }
     const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
     write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
     print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
@@ -148,9 +157,10 @@ void add_export(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("export", "Export a model as compensation data for the control");
   sub->add_option("--format", args->format,
                   "linuxcnc: LinuxCNC COMP_FILE (type 1) of one axis; siemens: SINUMERIK LEC table ($AA_ENC_COMP) of "
-                  "one axis; machine: the machine file with the rotary axes' location errors applied")
+                  "one axis; isg: ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, "
+                  "bilateral) of one axis; machine: the machine file with the rotary axes' location errors applied")
       ->required();
-  sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens); needed when the model has "
+  sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens, isg); needed when the model has "
                                         "tables for more than one");
   sub->add_option("--machine", args->machine,
                   "machine definition (TOML); needed for rotary axes and --format machine");

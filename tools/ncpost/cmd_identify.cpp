@@ -15,6 +15,7 @@
 #include "identify_laser.hpp"
 #include "kind_steps.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/compensation/control_entries.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
@@ -64,7 +65,8 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
 IdentifyOutput identify_serial(const IdentifyArgs& a) {
   const Machine m = load_machine(a.machine);
   const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a.data, m);
-  const comp::IdentifyReportInputs report_inputs{a.machine, a.output, a.pass_tolerance_um};
+  comp::IdentifyReportInputs report_inputs{a.machine, a.output, a.pass_tolerance_um, std::nullopt};
+  if (!a.control.empty()) report_inputs.control = comp::parse_control_format(a.control);
   if (comp::all_laser(sets))  // issue 7
     return identify_laser(m, sets, a.report, !a.params.empty() || !a.fixed.empty() || a.loss != "squared",
                           report_inputs);
@@ -120,6 +122,13 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("--pass-tolerance-um", a->pass_tolerance_um,
                   "tolerance (µm) for the report's pass/fail verdicts: largest deviation per file, ISO 230-4 G")
       ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
+  std::vector<std::string> control_names;
+  for (const comp::ControlFormatInfo& f : comp::control_formats()) control_names.push_back(f.name);
+  sub->add_option("--control", a->control,
+                  "the report's compensation values as this control's own entries, the lines `ncpost export --format` "
+                  "writes: machine (kinematics corrections; the default with a rotary axis), linuxcnc (the default "
+                  "without), siemens, isg")
+      ->check(CLI::IsMember(control_names));
   sub->add_option("-o,--output", a->output, "model JSON to write")->required();
   sub->add_option("data", a->data, "measurement CSV files (ballbar, sphere, laser)")->required();
   sub->callback([&action, a] {

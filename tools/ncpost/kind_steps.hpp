@@ -99,6 +99,7 @@ struct SimulateSteps {
 
 struct IdentifyArgs {
   std::string machine, output, report, params, fixed, loss = "squared";
+  std::string control;  ///< --control: the report's control entries ("" = the machine's default)
   double loss_scale_um = 3.0;
   std::optional<double> pass_tolerance_um;
   bool no_diagnose = false, no_basic = false;

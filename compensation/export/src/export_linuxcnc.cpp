@@ -50,13 +50,19 @@ std::vector<std::string> export_notes(const AxisExport& a, const std::string& ot
   return notes;
 }
 
+std::vector<std::string> linuxcnc_comp_lines(const LinuxcncCompTable& table) {
+  const int trim_decimals = table.axis.rotary ? 9 : 7;
+  std::vector<std::string> lines;
+  for (const auto& r : table.rows)
+    lines.push_back(fmt::format("{:.6f} {:.{}f} {:.{}f}", r[0], r[1], trim_decimals, r[2], trim_decimals));
+  return lines;
+}
+
 std::string format_linuxcnc_comp(const LinuxcncCompTable& table, const MachineModel& model, const ExportSource& source) {
   const AxisExport& a = table.axis;
   const char* unit = a.rotary ? "deg" : "mm";
-  const int trim_decimals = a.rotary ? 9 : 7;
   std::string out;
-  for (const auto& r : table.rows)
-    out += fmt::format("{:.6f} {:.{}f} {:.{}f}\n", r[0], r[1], trim_decimals, r[2], trim_decimals);
+  for (const std::string& line : linuxcnc_comp_lines(table)) out += line + "\n";
   auto note = [&out](const std::string& s) { out += "# " + s + "\n"; };
   out += "\n";
   note(fmt::format("ncpost {} export --format linuxcnc --axis {}: LinuxCNC compensation file of axis {}", source.version,

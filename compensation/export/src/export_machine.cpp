@@ -82,17 +82,24 @@ std::string format_machine_toml(const Machine& machine, const std::vector<std::s
   for (const std::string& n : notes) out += "# " + n + "\n";
   out += fmt::format("[machine]\nname = \"{}\"\nchain = \"{}\"\n", machine.name, machine.chain);
   for (const Axis& a : machine.axes) {
-    out += fmt::format("\n[axes.{}]\ntype = \"{}\"\n", a.letter, a.is_rotary() ? "rotary" : "linear");
-    if (a.is_rotary()) {
-      out += fmt::format("direction = {}\n", vector_text(a.direction));
-      out += fmt::format("pivot = {}\n", vector_text(a.pivot_mm));
-    }
-    if (a.limits) {
-      const double unit = a.is_rotary() ? kDegPerRad : 1.0;
-      out += fmt::format("limits = [{}, {}]\n", number_text(a.limits->min * unit), number_text(a.limits->max * unit));
-    }
+    out += "\n";
+    for (const std::string& line : machine_axis_lines(a)) out += line + "\n";
   }
   return out;
+}
+
+std::vector<std::string> machine_axis_lines(const Axis& a) {
+  std::vector<std::string> lines{fmt::format("[axes.{}]", a.letter),
+                                 fmt::format("type = \"{}\"", a.is_rotary() ? "rotary" : "linear")};
+  if (a.is_rotary()) {
+    lines.push_back(fmt::format("direction = {}", vector_text(a.direction)));
+    lines.push_back(fmt::format("pivot = {}", vector_text(a.pivot_mm)));
+  }
+  if (a.limits) {
+    const double unit = a.is_rotary() ? kDegPerRad : 1.0;
+    lines.push_back(fmt::format("limits = [{}, {}]", number_text(a.limits->min * unit), number_text(a.limits->max * unit)));
+  }
+  return lines;
 }
 
 }  // namespace ncpost::comp

@@ -92,16 +92,23 @@ std::string format_siemens_lec(const SiemensLecTable& table, const MachineModel&
   if (a.continuous) note("One turn, 0 to 360 deg, modulo: the first and last values are the same position.");
   for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors")) note(s);
   out += "CHANDATA(1)\n";
-  const int value_decimals = a.rotary ? 9 : 7;
-  for (std::size_t n = 0; n < table.values.size(); ++n)
-    out += fmt::format("$AA_ENC_COMP[0,{},{}]={:.{}f}\n", n, ax, table.values[n], value_decimals);
-  const double max = table.min + table.step * static_cast<double>(table.values.size() - 1);
-  out += fmt::format("$AA_ENC_COMP_STEP[0,{}]={:.6f}\n", ax, table.step);
-  out += fmt::format("$AA_ENC_COMP_MIN[0,{}]={:.6f}\n", ax, table.min);
-  out += fmt::format("$AA_ENC_COMP_MAX[0,{}]={:.6f}\n", ax, max);
-  out += fmt::format("$AA_ENC_COMP_IS_MODULO[0,{}]={}\n", ax, a.continuous ? 1 : 0);
+  for (const std::string& line : siemens_lec_lines(table)) out += line + "\n";
   out += "M17\n";
   return out;
+}
+
+std::vector<std::string> siemens_lec_lines(const SiemensLecTable& table) {
+  const std::string& ax = table.axis_name;
+  const int value_decimals = table.axis.rotary ? 9 : 7;
+  std::vector<std::string> lines;
+  for (std::size_t n = 0; n < table.values.size(); ++n)
+    lines.push_back(fmt::format("$AA_ENC_COMP[0,{},{}]={:.{}f}", n, ax, table.values[n], value_decimals));
+  const double max = table.min + table.step * static_cast<double>(table.values.size() - 1);
+  lines.push_back(fmt::format("$AA_ENC_COMP_STEP[0,{}]={:.6f}", ax, table.step));
+  lines.push_back(fmt::format("$AA_ENC_COMP_MIN[0,{}]={:.6f}", ax, table.min));
+  lines.push_back(fmt::format("$AA_ENC_COMP_MAX[0,{}]={:.6f}", ax, max));
+  lines.push_back(fmt::format("$AA_ENC_COMP_IS_MODULO[0,{}]={}", ax, table.axis.continuous ? 1 : 0));
+  return lines;
 }
 
 }  // namespace ncpost::comp

@@ -38,13 +38,13 @@ std::string meaning(const Machine& m, const ParameterSpec& s) {
 
 }  // namespace
 
-std::string control_values_section(const Machine& m, const IdentifyResult& r) {
+std::string control_values_section(const Machine& m, const IdentifyResult& r, ControlFormat format) {
   std::string h = "<h2>Compensation values for the control</h2><p class=\"note\">The identified errors of the machine "
                   "(ISO 230-1 location errors and the effects added), in µm and µrad, as they are entered in the "
                   "control's kinematic description or compensation tables, and as <code>ncpost post --model</code> "
                   "compensates them: the value is the error of the real machine against its nominal description "
-                  "(docs/conventions.md); check the sign convention of the control's table before entering them. "
-                  "Drift and instrument effects are measuring conditions and are not entered.</p>"
+                  "(docs/conventions.md); below the table, the same model in the control's own entries, with its sign "
+                  "convention. Drift and instrument effects are measuring conditions and are not entered.</p>"
                   "<table><tr><th class=n>parameter</th><th class=n>meaning</th><th>value</th><th>± u (1σ)</th>"
                   "<th class=n>unit</th></tr>";
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
@@ -59,7 +59,7 @@ std::string control_values_section(const Machine& m, const IdentifyResult& r) {
                      escape(n), escape(what), v.value, u ? fmt::format("{:.2f}", report_value(m, n, *u).value) : "given",
                      escape(v.unit));
   }
-  return h + "</table>";
+  return h + "</table>" + control_entries_html(m, r.parameters, format);
 }
 
 std::string verdict_section(const IdentifyResult& r, std::optional<double> tol) {

@@ -82,7 +82,7 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
   std::string h = report::page_start(p);
   h += "<p>" + escape(r.message) + "</p>";
   h += sections::verdict_section(r, in.pass_tolerance_um);
-  h += sections::control_values_section(m, r);
+  h += sections::control_values_section(m, r, in.control.value_or(default_control_format(m)));
   h += "<h2>Parameters</h2><table><tr><th class=n>name</th><th>value</th><th>± uncertainty</th><th class=n>unit</th></tr>";
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     const std::string& n = r.parameters.names()[i];

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ncpost/compensation/control_entries.hpp"
 #include "ncpost/compensation/identify.hpp"
 
 namespace ncpost::comp::sections {
@@ -19,7 +20,7 @@ std::string ballbar_section(const Machine& machine, const MeasurementSet& set, c
 std::string sphere_section(const Machine& machine, const MeasurementSet& set, const std::vector<double>& fitted_mm,
                            const std::vector<double>& nominal_mm);
 
-std::string control_values_section(const Machine& machine, const IdentifyResult& result);
+std::string control_values_section(const Machine& machine, const IdentifyResult& result, ControlFormat format);
 
 std::string verdict_section(const IdentifyResult& result, std::optional<double> tolerance_um);
 

@@ -137,6 +137,8 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
     h += "</div>";
   }
   h += "<h2>Summary</h2><pre>" + escape(laser_text_report(m, r)) + "</pre>";
+  h += "<h2>Compensation values for the control</h2>" +
+       control_entries_html(m, r.parameters, in.control.value_or(default_control_format(m)));
   h += "<h2>Error functions</h2><p class=\"note\">Blue: identified table at every target (red: nodes the lines do not "
        "see), orange dashed: fitted polynomial p1..p3; µm for positioning and straightness, µrad for roll, pitch, yaw.</p>"
        "<div class=\"plots\">";

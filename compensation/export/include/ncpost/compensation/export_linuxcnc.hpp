@@ -43,6 +43,9 @@ inline constexpr int kLinuxcncMaxRows = 256;
 /// The table of axis `letter`; std::invalid_argument as describe_axis_export.
 LinuxcncCompTable linuxcnc_comp_table(const MachineModel& model, char letter);
 
+/// The rows as LinuxCNC reads them: nominal, forward trim, reverse trim (no notes).
+std::vector<std::string> linuxcnc_comp_lines(const LinuxcncCompTable& table);
+
 /// The file: the rows, then `#` notes (type, sign convention, what is held and left out).
 std::string format_linuxcnc_comp(const LinuxcncCompTable& table, const MachineModel& model, const ExportSource& source);
 

@@ -29,6 +29,9 @@ struct MachineExport {
 /// The corrected machine. std::invalid_argument when the model has no location error to apply.
 MachineExport corrected_machine(const MachineModel& model);
 
+/// The section of one axis in the machine file ([axes.A], type, direction and pivot, limits).
+std::vector<std::string> machine_axis_lines(const Axis& axis);
+
 /// The machine file (docs/formats.md "Machine definition (TOML)") with `notes` as `#` lines on
 /// top; numbers with 17 significant digits, so that it reads back to the same machine.
 std::string format_machine_toml(const Machine& machine, const std::vector<std::string>& notes);

@@ -38,6 +38,9 @@ inline constexpr int kSiemensMaxPoints = 2000;
 /// only a reversal for the axis (nothing this table can hold).
 SiemensLecTable siemens_lec_table(const MachineModel& model, char letter);
 
+/// The assignments the control executes ($AA_ENC_COMP..., no comments).
+std::vector<std::string> siemens_lec_lines(const SiemensLecTable& table);
+
 std::string format_siemens_lec(const SiemensLecTable& table, const MachineModel& model, const ExportSource& source);
 
 }  // namespace ncpost::comp

@@ -3,7 +3,8 @@
 // Human reports of an identification: text for the terminal and a self-contained HTML page
 // (inline SVG, no external resources; the shared pieces of ncpost::report) naming every input with
 // its SHA-256, the machine, the model, the date and the version; a pass/fail verdict against the
-// user's tolerance; the compensation values for the control (µm, µrad); the parameters with their
+// user's tolerance; the compensation values for the control (µm, µrad, and as the chosen control's
+// own entries, control_entries.hpp); the parameters with their
 // uncertainty, the identifiability findings and the residual before and after per file; the
 // ballbar tests as polar plots labelled with angles and the axes moved (measured, identified and
 // nominal-model ΔL, and the residual on its own scale) with ISO 230-4 figures, feed and direction;
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ncpost/compensation/control_entries.hpp"
 #include "ncpost/compensation/identify.hpp"
 
 namespace ncpost::comp {
@@ -29,7 +31,13 @@ struct IdentifyReportInputs {
   std::string machine_file;                  ///< hashed in the provenance table
   std::string model_file;                    ///< the model written (-o)
   std::optional<double> pass_tolerance_um;   ///< `identify --pass-tolerance-um`: pass/fail verdicts
+  /// `identify --control`: the control's own entries; unset: default_control_format(machine)
+  std::optional<ControlFormat> control;
 };
+
+/// The model's values as `format`'s own entries (control_entries.hpp): the lines `ncpost export`
+/// writes, per file, and what the format cannot hold; an HTML section of the identification reports.
+std::string control_entries_html(const Machine& machine, const ErrorParameters& parameters, ControlFormat format);
 
 std::string html_report(const Machine& machine, const std::vector<MeasurementSet>& sets, const IdentifyResult& result,
                         const IdentifyReportInputs& inputs = {});
