@@ -81,12 +81,12 @@ Gap compare_forward(const Kinematics& a, const Kinematics& b) {
 }  // namespace
 
 TEST_CASE("TRR-XY machine export: the corrected machine moves as the original with the model", "[export][trr]") {
-  const Machine m = load_trr_xy_machine(test::trr_machine_path());
+  const trr::Machine m = load_trr_xy_machine(test::trr_machine_path());
   const Errors model = some_errors();
   const comp::TrrMachineExport out = comp::corrected_trr_machine(m, model);
   CHECK(out.corrected.name == "trr-xy-calibrated");
   CHECK(out.applied == std::vector<std::string>{"ds_a", "gp_a", "dl_a", "dr_b", "at_b", "drs_b", "ar_c", "dts_c"});
-  const Machine read_back = parse_trr_xy_machine(comp::format_trr_machine_toml(out.corrected, {"test"}), "calibrated.toml");
+  const trr::Machine read_back = parse_trr_xy_machine(comp::format_trr_machine_toml(out.corrected, {"test"}), "calibrated.toml");
   for (int k = 0; k < kParameterCount; ++k) CHECK(read_back.calibration[k] == model[k]);  // 17 digits: exact
   CHECK(read_back.slider_limits[2]->max == 600.0);
 
@@ -112,7 +112,7 @@ TEST_CASE("TRR-XY machine export on the command line: posted for it = posted wit
   std::string log;
   REQUIRE(run("export --format machine --machine " + machine + " -o trr_calibrated.toml trr_model.json", &log) == 0);
   CHECK(log.find("exported 8 parameter(s)") != std::string::npos);
-  const Machine corrected = load_trr_xy_machine("trr_calibrated.toml");
+  const trr::Machine corrected = load_trr_xy_machine("trr_calibrated.toml");
   CHECK(corrected.name == "trr-xy-calibrated");
 
   const std::string job = " --workpiece-origin 0,0,-300 --tolerance none ";
@@ -137,7 +137,7 @@ TEST_CASE("TRR-XY machine export on the command line: posted for it = posted wit
   CHECK(words <= 1.0001e-4);  // at most one unit of the 4th decimal, where a value sits on a rounding boundary
   CHECK(words_plain > 0.01);
   // run on the machine of the model, the calibrated program follows the path as the compensated one
-  const Machine m = load_trr_xy_machine(machine);
+  const trr::Machine m = load_trr_xy_machine(machine);
   const Kinematics truth(m, some_errors());
   const std::vector<Vec3d> path = test::read_cl_tips(sample);
   const auto dev_a = test::trr_executed_deviation(truth, a, path, kOrigin, 10);
@@ -179,7 +179,7 @@ TEST_CASE("TRR-XY machine file: [trr_xy.calibration] names and values checked wi
                            "\n[trr_xy.calibration]\n";
   const std::string axes = "\n[axes.X]\ntype = \"linear\"\n[axes.Y]\ntype = \"linear\"\n[axes.U]\ntype = \"linear\"\n"
                            "[axes.V]\ntype = \"linear\"\n[axes.W]\ntype = \"linear\"\n";
-  const Machine ok = parse_trr_xy_machine(head + "dl_b = 0.25\nat_c = -1e-4\n" + axes, "m.toml");
+  const trr::Machine ok = parse_trr_xy_machine(head + "dl_b = 0.25\nat_c = -1e-4\n" + axes, "m.toml");
   CHECK(ok.calibration.chain[1].dl == 0.25);
   CHECK(ok.calibration.chain[2].at == -1e-4);
   auto line_of = [&](const std::string& calibration) {

@@ -68,18 +68,18 @@ TEST_CASE("TRR-XY plan sphere --dialect: the dialect's words only, the same posi
   REQUIRE(run("plan sphere --machine " + machine + " --dialect linuxcnc -o trr_plan_linuxcnc") == 0);
 
   const std::vector<std::string> fanuc = lines_of("trr_plan_fanuc.nc"), shop = lines_of("trr_plan_shop.nc");
-  // fanuc: %, O0001 (TRRPROBE), header comment, G90 ... | body | M5 M9 G91 G28 Z0 G90 M30, %
+  // fanuc: %, O0001 (TRRPROBE), header comment, G90 ... | body | M5 M9 G90 M30, % (the writer leaves out
+  //        the end's "G91 G28 Z0": the machine has no Z)
   // shop:  %, O0002 (TRRPROBE), header comment, G90 ..., G54 | body | M5 M99, %
   REQUIRE(fanuc.size() > 100);
   CHECK(fanuc[0] == "%");
   CHECK(fanuc[1] == "O0001 (TRRPROBE)");
-  CHECK(shop[1] == "O0002 ; TRRPROBE");
+  CHECK(shop[1] == "O0002 (TRRPROBE)");  // the start sequence's own text
   CHECK(shop[4] == "G54");
-  CHECK(std::vector<std::string>(fanuc.end() - 6, fanuc.end()) ==
-        std::vector<std::string>{"M5", "M9", "G91 G28 Z0", "G90", "M30", "%"});
+  CHECK(std::vector<std::string>(fanuc.end() - 5, fanuc.end()) == std::vector<std::string>{"M5", "M9", "G90", "M30", "%"});
   CHECK(std::vector<std::string>(shop.end() - 3, shop.end()) == std::vector<std::string>{"M5", "M99", "%"});
   // between them, line for line: the same blocks, the comments in the other style
-  const std::size_t fanuc_start = 4, shop_start = 5, fanuc_end = 6, shop_end = 3;
+  const std::size_t fanuc_start = 4, shop_start = 5, fanuc_end = 5, shop_end = 3;
   bool header_a = false, header_b = false;
   CHECK(comment_text(fanuc[2], &header_a) == comment_text(shop[2], &header_b));  // the header comment
   CHECK((header_a && header_b));
@@ -124,7 +124,8 @@ TEST_CASE("TRR-XY post --report: the tool path coloured by the contour error bef
               "--report trr_report.html -o trr_report.nc " + test::hemisphere_sample_path()) == 0);
   const std::string html = test::read_text_file("trr_report.html");
   CHECK(html.find("No path to show") == std::string::npos);
-  // both maps, each with one point per CL motion of the hemisphere (435)
+  // both maps, each with one point per feed motion of the hemisphere (435 CL motions, 2 of them rapids:
+  // the 433 rows of its preview)
   for (const std::string id : {"path-before", "path-after"}) {
     CHECK(html.find("id=\"" + id + "\"") != std::string::npos);
     const std::regex data("\\{\"id\":\"" + id + "\",\"p\":\\[([^\\]]*)\\]");
@@ -132,7 +133,7 @@ TEST_CASE("TRR-XY post --report: the tool path coloured by the contour error bef
     REQUIRE(std::regex_search(html, m, data));
     const std::string p = m[1].str();
     const long coordinates = std::count(p.begin(), p.end(), ',') + 1;
-    CHECK(coordinates == 3 * 435);
+    CHECK(coordinates == 3 * 433);
   }
   CHECK(html.find("before: one block per CL motion, nominal commands") != std::string::npos);
   CHECK(html.find("after: the written program re-executed") != std::string::npos);
