@@ -16,6 +16,8 @@
 //   link length        l + dl
 //   ball joint (plate) a_i    = (rs + drs)·r_i + dts·t_i + dzs·e_z,  S_i = P_c + R_p·a_i
 // with H = sqrt(l² − (rb − rs)²) + hs + lt, and the TCP P_c − (hs + lt)·R_p·e_z.
+// A calibrated machine file's deviations (Machine::calibration) and a model's errors both enter as
+// these parameters: the chains are built with their sum (Kinematics::actual_errors).
 #include <array>
 #include <optional>
 #include <string>
