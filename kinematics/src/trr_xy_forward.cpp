@@ -90,7 +90,10 @@ PlateOutcome solve_plate(const Geometry& g, const std::array<ChainFrame, 3>& cha
 Rigidd nominal_home_plate(const Geometry& g) { return Rigidd::translation(Vec3d(0, 0, g.tip_offset_mm())); }
 
 Kinematics::Kinematics(Machine machine, Errors errors)
-    : machine_(std::move(machine)), errors_(errors), chains_(chain_frames(machine_.geometry, errors_)) {
+    : machine_(std::move(machine)),
+      errors_(errors),
+      actual_errors_(machine_.calibration + errors_),
+      chains_(chain_frames(machine_.geometry, actual_errors_)) {
   const PlateOutcome home = solve_plate(machine_.geometry, chains_, Vec3d::Zero(), nominal_home_plate(machine_.geometry));
   if (!home.ok()) throw std::runtime_error("TRR-XY: the home pose cannot be solved: " + home.failure);
   home_plate_ = *home.machine_T_plate;

@@ -57,6 +57,12 @@ bool Errors::all_zero() const {
   return true;
 }
 
+Errors operator+(const Errors& a, const Errors& b) {
+  Errors sum;
+  for (int k = 0; k < kParameterCount; ++k) sum[k] = a[k] + b[k];
+  return sum;
+}
+
 std::array<ChainFrame, 3> chain_frames(const Geometry& g, const Errors& e) {
   std::array<ChainFrame, 3> frames;
   const double H = g.pin_height_mm();

@@ -106,7 +106,7 @@ InverseOutcome inverse(const Kinematics& k, const ClPoint& cl, const Vec3d& work
   Vec3d s = *sliders;
   Vec3d tcp = plate->t - g.tip_offset_mm() * axis;
 
-  if (!k.errors().all_zero()) {
+  if (!k.actual_errors().all_zero()) {
     // Newton on the sliders: actual tool axis (x, y components) and actual TCP height.
     std::optional<Rigidd> warm = plate;
     bool converged = false;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "ncpost/kinematics/trr_xy_forward.hpp"
 #include "toml_reading.hpp"
 
 namespace ncpost {
@@ -26,6 +27,36 @@ double positive_length(const std::string& file, const toml::table& t, const char
   if (!v || !std::isfinite(*v) || *v <= 0.0)
     throw InputError(at(file, n->source()), fmt::format("[trr_xy] {}: expected a positive number (mm)", key));
   return *v;
+}
+
+/// [trr_xy.calibration]: the machine's measured deviations from the symmetric design, with the names
+/// and units of the model JSON (`<param>_<chain>`, mm and rad; docs/trr-xy.md "Error parameters").
+/// The home pose of the calibrated machine must solve.
+trr::Errors read_calibration(const std::string& file, const toml::table& t, const trr::Geometry& g) {
+  trr::Errors e;
+  for (const auto& [key, node] : t) {
+    const std::string name(key.str());
+    const int k = trr::Errors::index_of(name);
+    if (k < 0)
+      throw InputError(at(file, key.source()),
+                       fmt::format("[trr_xy.calibration] {}: not a TRR-XY parameter (expected <param>_<chain> with param "
+                                   "dr, dt, ar, at, ds, gp, dl, drs, dts or dzs and chain a, b or c)", name));
+    auto v = node.value<double>();
+    if (!v || !std::isfinite(*v))
+      throw InputError(at(file, node.source()), fmt::format("[trr_xy.calibration] {}: expected a finite number ({})",
+                                                            name, trr::Errors::is_angle(k) ? "rad" : "mm"));
+    e[k] = *v;
+  }
+  trr::Machine probe;
+  probe.geometry = g;
+  probe.calibration = e;
+  try {
+    (void)trr::Kinematics(probe);
+  } catch (const std::runtime_error& ex) {
+    throw InputError(at(file, t.source()), fmt::format("[trr_xy.calibration]: {}; the calibration is far too large "
+                                                       "for this machine's dimensions", ex.what()));
+  }
+  return e;
 }
 
 }  // namespace
@@ -57,7 +88,8 @@ trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& fi
   if (!g) throw InputError(at(file, root.source()), "missing table [trr_xy] (base_radius, platform_radius, link_length, "
                                                     "ball_joint_height, tool_offset)");
   reject_unknown_keys(file, *g,
-                      {"base_radius", "platform_radius", "link_length", "ball_joint_height", "tool_offset", "max_link_angle"},
+                      {"base_radius", "platform_radius", "link_length", "ball_joint_height", "tool_offset", "max_link_angle",
+                       "calibration"},
                       "trr_xy");
   trr::Geometry& geo = m.geometry;
   geo.base_radius_mm = positive_length(file, *g, "base_radius");
@@ -76,6 +108,11 @@ trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& fi
     throw InputError(at(file, g->source()),
                      "[trr_xy]: expected platform_radius < base_radius < platform_radius + link_length "
                      "(the links must reach inward from the screw lines)");
+  if (const toml::node* n = g->get("calibration")) {
+    const toml::table* t = n->as_table();
+    if (!t) throw InputError(at(file, n->source()), "[trr_xy] calibration: expected a table [trr_xy.calibration]");
+    m.calibration = read_calibration(file, *t, geo);
+  }
 
   const toml::table* axes = root["axes"].as_table();
   if (!axes) throw InputError(at(file, root.source()), "missing [axes.X], [axes.Y], [axes.U], [axes.V], [axes.W]");

@@ -44,4 +44,20 @@ void close_before(PostAccount& acc, double sum_mm) {
   acc.before_mean_mm = acc.before_blocks ? sum_mm / static_cast<double>(acc.before_blocks) : 0.0;
 }
 
+void measure_before(cl::Reader& reader, const KinematicModel& nominal, const preview::BlockEvaluator& executed,
+                    const PostRequest& r, PostAccount& account) {
+  double sum = 0.0;
+  try {
+    preview::run_preview(reader, r.input_name, nominal, executed, [&](const preview::BlockRow& row) {
+      const double e = row.exact.max_error_mm;
+      sum += e;
+      add_before(account, row.line, e);
+      account.path.add_before(row.line, row.cl.end.tip_mm, e);
+    }, r.progress.measuring);
+  } catch (const preview::PreviewInfeasible& e) {
+    throw Infeasible(e.what());
+  }
+  close_before(account, sum);
+}
+
 }  // namespace ncpost::detail

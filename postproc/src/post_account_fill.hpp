@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ncpost/postproc/post_request.hpp"
+#include "ncpost/postproc/preview_blocks.hpp"
 
 namespace ncpost::detail {
 
@@ -23,5 +24,12 @@ void add_posted(PostAccount& account, const PostSummary& summary);
 void add_before(PostAccount& account, int line, double error_mm);
 /// Once every block of the "before" is added: the mean from the sum of their errors.
 void close_before(PostAccount& account, double sum_mm);
+
+/// The whole "before": the motions of `reader` with the commands of `nominal`, one block per CL
+/// motion, executed by `executed` (the job's machine: the model's, or the nominal one); each block's
+/// error goes into the figures and, at its CL end point, into the path map of the report.
+/// Infeasible where a CL point has no admissible solution.
+void measure_before(cl::Reader& reader, const KinematicModel& nominal, const preview::BlockEvaluator& executed,
+                    const PostRequest& r, PostAccount& account);
 
 }  // namespace ncpost::detail

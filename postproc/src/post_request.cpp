@@ -38,18 +38,7 @@ void measure_before(std::istream& in, std::istream::pos_type start, const PostRe
                                                                                        model->errors());
   else
     evaluator = std::make_unique<preview::ModelEvaluator<NominalErrors>>(r.machine, r.setup);
-  double sum = 0.0;
-  try {
-    preview::run_preview(*reader, r.input_name, nominal, *evaluator, [&](const preview::BlockRow& row) {
-      const double e = row.exact.max_error_mm;
-      sum += e;
-      detail::add_before(account, row.line, e);
-      account.path.add_before(row.line, row.cl.end.tip_mm, e);
-    }, r.progress.measuring);
-  } catch (const preview::PreviewInfeasible& e) {
-    throw Infeasible(e.what());
-  }
-  detail::close_before(account, sum);
+  detail::measure_before(*reader, nominal, *evaluator, r, account);
 }
 
 std::vector<std::string> header_comments(const PostRequest& r, const std::optional<double>& tolerance_mm) {

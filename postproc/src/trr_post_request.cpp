@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <streambuf>
 
 #include "ncpost/kinematics/trr_xy_forward.hpp"
 #include "ncpost/machines/input_error.hpp"
@@ -12,18 +11,12 @@
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/nc_writer.hpp"
 #include "ncpost/postproc/trr_solver.hpp"
+#include "ncpost/postproc/trr_preview_evaluator.hpp"
 #include "ncpost/postproc/trr_subdivider.hpp"
 #include "ncpost/version.hpp"
 
 namespace ncpost::detail {
 namespace {
-
-/// Discards what is written (the program of the "before" pass).
-class NullBuffer final : public std::streambuf {
- protected:
-  int overflow(int c) override { return traits_type::not_eof(c); }
-  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
-};
 
 trr::Kinematics kinematics(const trr::Machine& m, const std::optional<trr::Errors>& e) {
   try {
@@ -63,29 +56,17 @@ PostOptions trr_options(const PostRequest& r) {
   return o;
 }
 
-/// The "before" of the account: nominal commands, one block per CL motion, executed on `executing`.
+/// The "before" of the account: nominal commands, one block per CL motion, executed on `executing`
+/// (the common measure, post_account_fill.hpp: its figures and the path map of the report).
 void measure_before(std::istream& in, std::istream::pos_type start, const PostRequest& r, const trr::Kinematics& nominal,
                     const trr::Kinematics& executing, PostAccount& account) {
   in.clear();
   in.seekg(start);
   if (!in) throw InputError({r.input_name, 0, 0}, "cannot read the input again (the stream is not seekable)");
-  const TrrSolver reading(nominal, nominal, r.setup.workpiece_origin_mm);
-  auto reader = open_input(in, r, reading);
-  const TrrSolver solver(nominal, executing, r.setup.workpiece_origin_mm);
-  PostOptions o = trr_options(r);
-  o.verify = true;
-  o.progress = r.progress.measuring;
-  double sum = 0.0;
-  o.on_verified = [&](int line, double e) {
-    sum += e;
-    add_before(account, line, e);
-  };
-  NullBuffer null;
-  std::ostream sink(&null);
-  AtomicFile out(sink);
-  NcWriter writer(out, r.dialect, "XYUVW");
-  post_program(*reader, r.input_name, solver, writer, o);
-  close_before(account, sum);
+  const TrrSolver commands(nominal, nominal, r.setup.workpiece_origin_mm);
+  auto reader = open_input(in, r, commands);
+  const preview::TrrEvaluator executed(executing, r.setup.workpiece_origin_mm);
+  detail::measure_before(*reader, commands, executed, r, account);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "file_checks.hpp"
+#include "kind_steps.hpp"
 #include "model_input.hpp"
 #include "ncpost/compensation/export_isg.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
@@ -23,11 +24,6 @@
 namespace ncpost::cli {
 
 namespace {
-
-struct ExportArgs {
-  std::string format, axis, machine, output, model;
-  bool force = false;
-};
 
 /// A three-axis machine X Y Z for a model given without --machine (its axes say XYZ).
 Machine three_axis_machine(const std::string& name) {
@@ -74,7 +70,7 @@ void print_left_out(const std::vector<std::string>& left_out, const std::string&
   for (const std::string& s : left_out) fmt::print(stderr, "  {}\n", s);
 }
 
-int run_export(const ExportArgs& args) {
+int export_serial(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
   check_files({{"-o", args.output}}, inputs);
@@ -150,6 +146,10 @@ int run_export(const ExportArgs& args) {
   }
 }
 
+const ByKind<ExportSteps> kExportSteps{{export_serial}, {export_trr_xy}};
+
+int run_export(const ExportArgs& args) { return kExportSteps[export_kind(args)].run(args); }
+
 }  // namespace
 
 void add_export(CLI::App& app, Action& action) {
@@ -158,7 +158,8 @@ void add_export(CLI::App& app, Action& action) {
   sub->add_option("--format", args->format,
                   "linuxcnc: LinuxCNC COMP_FILE (type 1) of one axis; siemens: SINUMERIK LEC table ($AA_ENC_COMP) of "
                   "one axis; isg: ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, "
-                  "bilateral) of one axis; machine: the machine file with the rotary axes' location errors applied")
+                  "bilateral) of one axis; machine: the machine file with the rotary axes' location errors applied "
+                  "(TRR-XY: the model's 30 parameters as the machine's calibration)")
       ->required();
   sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens, isg); needed when the model has "
                                         "tables for more than one");

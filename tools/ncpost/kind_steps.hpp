@@ -58,7 +58,7 @@ struct PlanArgs {
   std::string sphere;
   bool seed_directions = false;
   comp::LaserPlanOptions laser;
-  std::string dialect = "fanuc";  ///< the NC program's dialect (serial machines; TRR-XY writes its own words)
+  std::string dialect = "fanuc";  ///< the NC program's dialect (name or dialect file)
 };
 
 /// The files of a plan: its measurement sets and the NC program that runs them.
@@ -132,6 +132,22 @@ struct PostSteps {
   void (*load)(const PostJobArgs& args, PostRequest& r);
 };
 
+// ---- export -------------------------------------------------------------------------------
+
+struct ExportArgs {
+  std::string format, axis, machine, output, model;
+  bool force = false;
+};
+
+struct ExportSteps {
+  /// Writes the export; returns the exit code. UsageError for a format the model's kind cannot hold.
+  int (*run)(const ExportArgs& args);
+};
+
+/// The kind of an export: the machine file's (--machine), else the model's own (a model whose
+/// parameters are all TRR-XY names is a TRR-XY model; machine_kind.hpp).
+MachineKind export_kind(const ExportArgs& args);
+
 // ---- the TRR-XY steps (docs/trr-xy.md) -----------------------------------------------------
 
 std::unique_ptr<PreviewMachine> load_trr_xy_preview(const PreviewArgs& args);
@@ -142,5 +158,7 @@ SimulateOutput simulate_trr_xy(const SimulateArgs& args);
 /// The 30 parameters from probing data, with the identifiability report.
 IdentifyOutput identify_trr_xy(const IdentifyArgs& args);
 void load_trr_xy_post(const PostJobArgs& args, PostRequest& r);
+/// `export --format machine`: the model folded into the machine file ([trr_xy.calibration]).
+int export_trr_xy(const ExportArgs& args);
 
 }  // namespace ncpost::cli

@@ -3,52 +3,77 @@
 // kind_steps.hpp).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <random>
+#include <stdexcept>
 #include <sstream>
 
 #include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/compensation/trr_probing_csv.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
+#include "ncpost/postproc/plan_nc.hpp"
+#include "ncpost/postproc/trr_solver.hpp"
 #include "trr_model_input.hpp"
 
 namespace ncpost::cli {
+
+namespace {
+
+/// Stylus lengths of the sphere plan (mm beyond the tool): two, so that identify sees the tool axis.
+constexpr double kStylusLengthsMm[] = {0.0, 100.0};
+/// Time stamp step between the plan's rows (s).
+constexpr double kRowTimeStepS = 10.0;
+
+/// `c` as the control reads it: each word rounded to the dialect's decimals (the CSV holds what the
+/// program moves to).
+trr::Command as_written(const trr::Command& c, const Dialect& d) {
+  const double quantum_mm = std::pow(10.0, -d.linear_decimals);
+  Eigen::Matrix<double, 5, 1> w = c.words();
+  for (int k = 0; k < 5; ++k) w[k] = std::round(w[k] / quantum_mm) * quantum_mm;
+  return trr::Command::from_words(w);
+}
+
+/// The program of the sphere plan: per row a rapid to its pose and a program stop (probe the
+/// sphere, then resume), the stylus change between the two lengths as a comment.
+comp::PlanProgram sphere_program(const trr::Machine& m, const trr::ProbingData& plan, std::size_t poses) {
+  comp::PlanProgram p;
+  p.name = "TRRPROBE";
+  p.header = {"ncpost plan sphere on " + m.name + ": probe the sphere at each pose (stylus 0, then 100 mm)"};
+  for (std::size_t i = 0; i < plan.rows.size(); ++i) {
+    if (i == poses) p.comment(fmt::format("change the stylus: {:g} mm", plan.rows[i].stylus_mm));
+    p.rapid(trr_slots(plan.rows[i].command));
+    p.stop("probe the sphere");
+  }
+  return p;
+}
+
+}  // namespace
 
 PlanOutput plan_trr_xy(const PlanArgs& a) {
   if (a.test != "sphere")
     throw UsageError(fmt::format("plan {}: the TRR-XY machine has the sphere-probing plan only", a.test));
   const trr::Machine m = load_trr_xy_machine(a.machine);
+  const Dialect dialect = dialect_named(a.dialect);
   trr::ProbingData plan;
   plan.metadata["machine"] = m.name;
   plan.metadata["probe"] = "sphere centre deviation; stylus = extra length beyond the tool (mm)";
   const std::vector<trr::Command> poses = trr::probing_commands(m);
   double t = 0.0;
-  for (double stylus : {0.0, 100.0})
+  for (double stylus : kStylusLengthsMm)
     for (const trr::Command& c : poses) {
-      plan.rows.push_back({t, c, stylus, Vec3d::Zero()});
-      t += 10.0;
+      plan.rows.push_back({t, as_written(c, dialect), stylus, Vec3d::Zero()});
+      t += kRowTimeStepS;
     }
-  std::ostringstream program;
-  {
-    AtomicFile nc(program);
-    NcWriter w(nc, dialect_named("fanuc"), "XYUVW");
-    w.begin_program("TRRPROBE",
-                    {"ncpost plan sphere on " + m.name + ": probe the sphere at each pose (stylus 0, then 100 mm)"});
-    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
-      if (i == poses.size()) w.comment("change the stylus: 100 mm");
-      NcMotion mo;
-      mo.rapid = true;
-      const auto v = plan.rows[i].command.words();
-      for (int k = 0; k < 5; ++k) mo.values[static_cast<std::size_t>(k)] = v[k];
-      w.motion(mo);
-      w.block("M0");
-    }
-    w.end_program();
-    nc.commit();
+  const trr::Kinematics nominal(m);
+  const TrrSolver axes(nominal, nominal, Vec3d::Zero());  // the words X Y U V W, all linear
+  std::string program;
+  try {
+    program = plan_program_text(axes.machine(), sphere_program(m, plan, poses.size()), dialect);
+  } catch (const std::invalid_argument& e) {
+    throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
   }
-  return {{{"sphere", trr::format_probing_csv(plan, true), plan.rows.size()}}, program.str()};
+  return {{{"sphere", trr::format_probing_csv(plan, true), plan.rows.size()}}, std::move(program)};
 }
 
 SimulateOutput simulate_trr_xy(const SimulateArgs& a) {

@@ -2,15 +2,27 @@
 #include "ncpost/compensation/trr_identify.hpp"
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
 namespace ncpost::trr {
 namespace {
 
-struct Residual {
-  Eigen::VectorXd r;  ///< measured − predicted (mm)
-};
+/// Central-difference steps of the Jacobian (header comment): 0.01 mm, 1e-5 rad.
+constexpr double kDifferenceStepMm = 1e-2;
+constexpr double kDifferenceStepRad = 1e-5;
+/// A Jacobian column below this share of the largest is a parameter the data cannot see at all.
+constexpr double kUnseenColumnShare = 1e-7;
+/// Null-space weights below this are left out of the report.
+constexpr double kShownNullWeight = 0.05;
+/// A parameter with at least this share of its variance in the null space is not determined.
+constexpr double kUndeterminedNullShare = 1e-6;
+/// Halvings of a step that cannot be solved or makes the residual grow, before the fit stops.
+constexpr int kStepHalvings = 20;
+/// The fit has converged when no parameter moves by more than this (mm, rad).
+constexpr double kConvergedMm = 1e-8;
+constexpr double kConvergedRad = 1e-11;
 
 Eigen::VectorXd residuals(const Machine& m, const Errors& e, const Kinematics& nominal,
                           const std::vector<ProbeMeasurement>& data) {
@@ -27,6 +39,127 @@ Eigen::VectorXd residuals(const Machine& m, const Errors& e, const Kinematics& n
 void stats_um(const Eigen::VectorXd& r, double& rms, double& max) {
   rms = 1000.0 * std::sqrt(r.squaredNorm() / std::max<Eigen::Index>(1, r.size()));
   max = 1000.0 * (r.size() ? r.cwiseAbs().maxCoeff() : 0.0);
+}
+
+/// The fit's problem: the machine, the nominal machine the deviations are measured against, the data.
+struct Problem {
+  const Machine& machine;
+  const Kinematics& nominal;
+  const std::vector<ProbeMeasurement>& data;
+  Eigen::VectorXd residuals_at(const Errors& e) const { return residuals(machine, e, nominal, data); }
+};
+
+/// The Jacobian of the predicted deviations by central differences, its columns scaled to unit norm
+/// (`scale` holds the norms; an unseen column stays zero with scale 1: scaling it up would only
+/// magnify the differencing noise).
+struct ScaledJacobian {
+  Eigen::MatrixXd columns;
+  Eigen::VectorXd scale;
+};
+
+ScaledJacobian scaled_jacobian(const Problem& p, const Errors& e, Eigen::Index rows) {
+  Eigen::MatrixXd J(rows, kParameterCount);
+  Eigen::VectorXd scale(kParameterCount);
+  for (int k = 0; k < kParameterCount; ++k) {
+    const double h = Errors::is_angle(k) ? kDifferenceStepRad : kDifferenceStepMm;
+    Errors ep = e, em = e;
+    ep[k] += h;
+    em[k] -= h;
+    // d(predicted)/dp = −d(residual)/dp
+    J.col(k) = (p.residuals_at(em) - p.residuals_at(ep)) / (2.0 * h);
+    scale[k] = J.col(k).norm();
+  }
+  const double floor = kUnseenColumnShare * scale.maxCoeff();
+  for (int k = 0; k < kParameterCount; ++k) {
+    if (scale[k] > floor) {
+      J.col(k) /= scale[k];
+    } else {
+      J.col(k).setZero();
+      scale[k] = 1.0;
+    }
+  }
+  return {std::move(J), std::move(scale)};
+}
+
+using Svd = Eigen::JacobiSVD<Eigen::MatrixXd>;
+
+/// The minimum-norm Gauss–Newton step in the scaled parameters through the directions above `cut`,
+/// and how many there are (the rank).
+Eigen::VectorXd truncated_step(const Svd& svd, const Eigen::VectorXd& r, double cut, int& rank) {
+  const Eigen::VectorXd& sv = svd.singularValues();
+  Eigen::VectorXd step_scaled = Eigen::VectorXd::Zero(kParameterCount);
+  rank = 0;
+  for (Eigen::Index i = 0; i < sv.size(); ++i) {
+    if (sv[i] <= cut) continue;
+    ++rank;
+    step_scaled += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(r) / sv[i]);
+  }
+  return step_scaled;
+}
+
+/// The directions the data cannot see (singular values at or below `cut`), in the column-scaled
+/// parameters (each parameter in units of equal effect).
+comp::Identifiability identifiability_of(const Svd& svd, double cut, int rank) {
+  comp::Identifiability id;
+  id.rank = rank;
+  id.parameters = kParameterCount;
+  const Eigen::VectorXd& sv = svd.singularValues();
+  for (Eigen::Index i = 0; i < sv.size(); ++i) {
+    if (sv[i] > cut) continue;
+    const Eigen::VectorXd d = svd.matrixV().col(i);
+    comp::NullDirection dir;
+    for (int k = 0; k < kParameterCount; ++k)
+      if (std::abs(d[k]) >= kShownNullWeight) dir.emplace_back(Errors::name(k), d[k]);
+    id.null_space.push_back(dir);
+  }
+  return id;
+}
+
+/// Standard deviations (mm, rad) from the residual `r` (noise estimate) through the seen directions;
+/// −1 for a parameter with a share in the null space (it is not determined).
+std::vector<double> uncertainty_of(const Svd& svd, double cut, const Eigen::VectorXd& scale, const Eigen::VectorXd& r,
+                                   int rank) {
+  const Eigen::VectorXd& sv = svd.singularValues();
+  const double dof = std::max<double>(1.0, static_cast<double>(r.size() - rank));
+  const double sigma2 = r.squaredNorm() / dof;
+  std::vector<double> out(kParameterCount, -1.0);
+  for (int k = 0; k < kParameterCount; ++k) {
+    double var = 0.0, null_share = 0.0;
+    for (Eigen::Index i = 0; i < sv.size(); ++i) {
+      const double v = svd.matrixV()(k, i);
+      if (sv[i] > cut) var += v * v / (sv[i] * sv[i]);
+      else null_share += v * v;
+    }
+    if (null_share < kUndeterminedNullShare) out[static_cast<std::size_t>(k)] = std::sqrt(sigma2 * var) / scale[k];
+  }
+  return out;
+}
+
+/// Takes `step` from `e` (residual `r`), halved while the model cannot be solved or the residual
+/// grows: the factor taken (e and r updated), or nullopt when no halving helps.
+std::optional<double> take_step(const Problem& p, const Eigen::VectorXd& step, Errors& e, Eigen::VectorXd& r) {
+  double factor = 1.0;
+  for (int tries = 0; tries < kStepHalvings; ++tries, factor *= 0.5) {
+    Errors trial = e;
+    for (int k = 0; k < kParameterCount; ++k) trial[k] += factor * step[k];
+    try {
+      const Eigen::VectorXd rt = p.residuals_at(trial);
+      if (rt.squaredNorm() <= r.squaredNorm() * (1.0 + 1e-12)) {
+        e = trial;
+        r = rt;
+        return factor;
+      }
+    } catch (const std::runtime_error&) {
+    }
+  }
+  return std::nullopt;
+}
+
+/// True when the step taken (`factor` of `step`) moves no parameter by more than the convergence bounds.
+bool converged(const Eigen::VectorXd& step, double factor) {
+  for (int k = 0; k < kParameterCount; ++k)
+    if (std::abs(factor * step[k]) > (Errors::is_angle(k) ? kConvergedRad : kConvergedMm)) return false;
+  return true;
 }
 
 }  // namespace
@@ -81,92 +214,24 @@ std::vector<ProbeMeasurement> simulate_probing(const Kinematics& truth, const st
 IdentifyResult identify(const Machine& m, const std::vector<ProbeMeasurement>& data, const IdentifyOptions& o) {
   IdentifyResult res;
   const Kinematics nominal(m);
+  const Problem problem{m, nominal, data};
   Errors e;
-  Eigen::VectorXd r = residuals(m, e, nominal, data);
+  Eigen::VectorXd r = problem.residuals_at(e);
   stats_um(r, res.rms_before_um, res.max_before_um);
-  const Eigen::Index n = kParameterCount;
-  Eigen::MatrixXd J(r.size(), n);
-  Eigen::VectorXd scale(n);
   for (int it = 0; it < o.max_iterations; ++it) {
-    for (int k = 0; k < kParameterCount; ++k) {
-      const double h = Errors::is_angle(k) ? 1e-5 : 1e-2;
-      Errors ep = e, em = e;
-      ep[k] += h;
-      em[k] -= h;
-      // d(predicted)/dp = −d(residual)/dp
-      J.col(k) = (residuals(m, em, nominal, data) - residuals(m, ep, nominal, data)) / (2.0 * h);
-      scale[k] = J.col(k).norm();
-    }
-    // a column that is (nearly) zero is a parameter the data cannot see at all: scaling it to unit
-    // norm would only magnify the differencing noise, so it stays zero
-    const double floor = 1e-7 * scale.maxCoeff();
-    Eigen::MatrixXd Js = J;
-    for (int k = 0; k < kParameterCount; ++k) {
-      if (scale[k] > floor) Js.col(k) /= scale[k];
-      else { Js.col(k).setZero(); scale[k] = 1.0; }
-    }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Js, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const ScaledJacobian J = scaled_jacobian(problem, e, r.size());
+    const Svd svd(J.columns, Eigen::ComputeThinU | Eigen::ComputeThinV);
     const Eigen::VectorXd& sv = svd.singularValues();
     const double cut = o.rank_tolerance * sv[0];
-    Eigen::VectorXd step_scaled = Eigen::VectorXd::Zero(n);
     int rank = 0;
-    for (Eigen::Index i = 0; i < sv.size(); ++i) {
-      if (sv[i] <= cut) continue;
-      ++rank;
-      step_scaled += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(r) / sv[i]);
-    }
+    const Eigen::VectorXd step_scaled = truncated_step(svd, r, cut, rank);
     res.iterations = it + 1;
     res.singular_values.assign(sv.data(), sv.data() + sv.size());
-    res.identifiability.rank = rank;
-    res.identifiability.parameters = kParameterCount;
-    res.identifiability.null_space.clear();
-    for (Eigen::Index i = 0; i < sv.size(); ++i) {
-      if (sv[i] > cut) continue;
-      // the direction in the column-scaled parameters (each parameter in units of equal effect)
-      const Eigen::VectorXd d = svd.matrixV().col(i);
-      comp::NullDirection dir;
-      for (int k = 0; k < kParameterCount; ++k)
-        if (std::abs(d[k]) >= 0.05) dir.emplace_back(Errors::name(k), d[k]);
-      res.identifiability.null_space.push_back(dir);
-    }
-    // standard deviations from the residual at this iterate (noise estimate) through the seen
-    // directions; a parameter with a share in the null space gets none (it is not determined)
-    {
-      const double dof = std::max<double>(1.0, static_cast<double>(r.size() - rank));
-      const double sigma2 = r.squaredNorm() / dof;
-      res.uncertainty.assign(kParameterCount, -1.0);
-      for (int k = 0; k < kParameterCount; ++k) {
-        double var = 0.0, null_share = 0.0;
-        for (Eigen::Index i = 0; i < sv.size(); ++i) {
-          const double v = svd.matrixV()(k, i);
-          if (sv[i] > cut) var += v * v / (sv[i] * sv[i]);
-          else null_share += v * v;
-        }
-        if (null_share < 1e-6) res.uncertainty[static_cast<std::size_t>(k)] = std::sqrt(sigma2 * var) / scale[k];
-      }
-    }
-    const Eigen::VectorXd step = scale.cwiseInverse().asDiagonal() * step_scaled;
-    // take the step, halved while the model cannot be solved or the residual grows
-    double factor = 1.0;
-    bool taken = false;
-    for (int tries = 0; tries < 20 && !taken; ++tries, factor *= 0.5) {
-      Errors trial = e;
-      for (int k = 0; k < kParameterCount; ++k) trial[k] += factor * step[k];
-      try {
-        const Eigen::VectorXd rt = residuals(m, trial, nominal, data);
-        if (rt.squaredNorm() <= r.squaredNorm() * (1.0 + 1e-12)) {
-          e = trial;
-          r = rt;
-          taken = true;
-        }
-      } catch (const std::runtime_error&) {
-      }
-    }
-    if (!taken) break;
-    bool small = true;
-    for (int k = 0; k < kParameterCount; ++k)
-      if (std::abs(factor * 2.0 * step[k]) > (Errors::is_angle(k) ? 1e-11 : 1e-8)) small = false;
-    if (small) break;
+    res.identifiability = identifiability_of(svd, cut, rank);
+    res.uncertainty = uncertainty_of(svd, cut, J.scale, r, rank);  // at this iterate
+    const Eigen::VectorXd step = J.scale.cwiseInverse().asDiagonal() * step_scaled;
+    const std::optional<double> factor = take_step(problem, step, e, r);
+    if (!factor || converged(step, *factor)) break;
   }
   stats_um(r, res.rms_after_um, res.max_after_um);
   res.errors = e;

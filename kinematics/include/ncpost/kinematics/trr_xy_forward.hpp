@@ -75,11 +75,16 @@ struct ToolPose {
 class Kinematics {
  public:
   /// Throws std::runtime_error if the home pose cannot be solved (errors far too large).
+  /// `errors`: a model's errors, on top of the machine's calibration.
   explicit Kinematics(Machine machine, Errors errors = {});
 
   const Machine& machine() const { return machine_; }
   const Geometry& geometry() const { return machine_.geometry; }
+  /// The model's errors (without the machine's calibration).
   const Errors& errors() const { return errors_; }
+  /// The parameters the chains are built with: the machine's calibration plus the model's errors
+  /// (all zero: the symmetric design, whose inverse kinematics is closed).
+  const Errors& actual_errors() const { return actual_errors_; }
   const std::array<ChainFrame, 3>& chains() const { return chains_; }
   /// machine_T_plate of the actual machine at home (all sliders 0).
   const Rigidd& home_plate() const { return home_plate_; }
@@ -99,6 +104,7 @@ class Kinematics {
  private:
   Machine machine_;
   Errors errors_;
+  Errors actual_errors_;
   std::array<ChainFrame, 3> chains_;
   Rigidd home_plate_;
   Rigidd home_inverse_;  ///< plate_T_machine at home

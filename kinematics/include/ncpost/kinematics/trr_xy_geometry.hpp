@@ -16,6 +16,8 @@
 //   link length        l + dl
 //   ball joint (plate) a_i    = (rs + drs)·r_i + dts·t_i + dzs·e_z,  S_i = P_c + R_p·a_i
 // with H = sqrt(l² − (rb − rs)²) + hs + lt, and the TCP P_c − (hs + lt)·R_p·e_z.
+// A calibrated machine file's deviations (Machine::calibration) and a model's errors both enter as
+// these parameters: the chains are built with their sum (Kinematics::actual_errors).
 #include <array>
 #include <optional>
 #include <string>
@@ -40,14 +42,6 @@ struct Geometry {
   double tip_offset_mm() const { return ball_joint_height_mm + tool_offset_mm; }
   /// H: height of the pin joints above the TCP at home.
   double pin_height_mm() const;
-};
-
-/// The machine: geometry and the limits of the axes X, Y (table) and U, V, W (sliders a, b, c).
-struct Machine {
-  std::string name = "trr-xy";
-  Geometry geometry;
-  std::optional<AxisLimits> table_limits[2];   ///< X, Y (mm)
-  std::optional<AxisLimits> slider_limits[3];  ///< U, V, W (mm, positive moves the slider down)
 };
 
 /// The 10 error parameters of one chain (spec table; mm and rad).
@@ -76,6 +70,23 @@ struct Errors {
   /// True for the angles (ar, at, gp), in rad; the others are lengths in mm.
   static bool is_angle(int k);
   bool all_zero() const;
+};
+
+/// Parameter by parameter sum: the errors `b` on top of `a` (each parameter enters the formulas of
+/// the header comment once, so the sum is exactly the machine with both).
+Errors operator+(const Errors& a, const Errors& b);
+
+/// The machine: geometry, its calibration and the limits of the axes X, Y (table) and U, V, W
+/// (sliders a, b, c).
+struct Machine {
+  std::string name = "trr-xy";
+  Geometry geometry;
+  /// The measured deviations of this machine from the symmetric design, in the 30 parameters of
+  /// Errors (machine file [trr_xy.calibration], written by `export --format machine`): part of the
+  /// machine as the control knows it. A model's errors act on top of them (Kinematics).
+  Errors calibration{};
+  std::optional<AxisLimits> table_limits[2];   ///< X, Y (mm)
+  std::optional<AxisLimits> slider_limits[3];  ///< U, V, W (mm, positive moves the slider down)
 };
 
 /// Chain i's geometry with its errors, in M (see the header comment).
