@@ -84,6 +84,15 @@ int g_group(int code10, const char*& why) {
   }
 }
 
+/// G80 beside G0 G1 G2 or G3 in one block (Fanuc's safe-start line `G00 G17 G40 G49 G80 G90`): on
+/// Fanuc and Haas G80 is a group of its own (09), so the block cancels any canned cycle and sets the
+/// motion mode — the motion code alone says both, since a motion mode ends a modal cycle. A cycle
+/// beside G80 (or two motion codes) stays a contradiction.
+bool cancels_cycle_beside(int code10_a, int code10_b) {
+  const auto plain_motion = [](int c) { return c == 0 || c == 10 || c == 20 || c == 30; };
+  return (code10_a == 800 && plain_motion(code10_b)) || (code10_b == 800 && plain_motion(code10_a));
+}
+
 /// A hole of the modal canned cycle: the cl::Cycle of the hole (distances from its R plane point,
 /// where the motion ends) and the end of the motion at the R plane.
 void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, ProgramPoint& end, BlockEffect& fx) {
@@ -316,6 +325,10 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
       fail(c.column, fmt::format("{} is not supported", g_name(c.code10)));
     }
     const auto gi = static_cast<std::size_t>(g);
+    if (codes.in_group[gi] && g == g_motion && cancels_cycle_beside(codes.group[gi].code10, c.code10)) {
+      if (c.code10 != 800) codes.group[gi] = c;  // the motion code stays; it cancels the cycle itself
+      continue;
+    }
     if (codes.in_group[gi])
       fail(c.column, fmt::format("{} and {} are in the same modal group", g_name(codes.group[gi].code10), g_name(c.code10)));
     codes.in_group[gi] = true;

@@ -377,6 +377,33 @@ TEST_CASE("gcode reader: semantic errors with their positions") {
   check("G0 X1 T1.5\n", 1, 7, "tool number");
 }
 
+TEST_CASE("gcode reader: G80 beside G0/G1 in one block cancels the cycle and sets the motion (Fanuc group 09)") {
+  // the safe-start line of Fanuc-style posts: G80 is its own group there, G00 the motion mode
+  const auto start = motions("N1 G00 G17 G21 G40 G49 G80 G90\nN3 X-75. Y-93.703\nG1 Z-6. F300\nG80 G1 X75.\n", input_only());
+  REQUIRE(start.size() == 3);
+  CHECK(start[0].rapid);
+  check_tip(start[0], -75, -93.703, 0);
+  CHECK_FALSE(start[1].rapid);
+  CHECK_FALSE(start[2].rapid);
+  check_tip(start[2], 75, -93.703, -6);
+
+  // after a modal G81: "G80 G0 Z20" ends the cycle (a CYCLE/OFF record) and the rapid is a motion, not a hole
+  const auto rs = read_all("G90 G21 G94\nG0 X0 Y0 Z10\nG1 F100\nG81 X1 Y1 Z-5 R1\nX2\nG0 G80 Z20\n", input_only());
+  const auto cycles = only<cl::Cycle>(rs);
+  REQUIRE(cycles.size() >= 2);
+  CHECK(cycles.front().kind == cl::Cycle::Kind::drill);
+  CHECK(cycles.back().kind == cl::Cycle::Kind::off);
+  CHECK(cycles.back().where.line == 6);
+  const auto ms = only<cl::Motion>(rs);
+  REQUIRE(!ms.empty());
+  CHECK(ms.back().rapid);
+  check_tip(ms.back(), 2, 1, 20);
+
+  // still contradictions: a cycle beside G80, two motion codes
+  CHECK_THAT(error_of("G1 X0 F100\nG81 G80 X1 Y1 Z-5 R1\n").detail(), Catch::Contains("same modal group"));
+  CHECK_THAT(error_of("G80 G0 G1 X1\n").detail(), Catch::Contains("same modal group"));
+}
+
 TEST_CASE("gcode reader: unreadable files and invalid options") {
   CHECK_THROWS_AS(open_gcode("/nonexistent/file.ngc", ac_machine(), Setup{}), InputError);
   const std::string dir = std::filesystem::temp_directory_path().string();
