@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The TRR-XY step of `export` (kind_steps.hpp): the model's 30 parameters folded into the machine
 // file as its calibration (export_trr_machine.hpp). A TRR-XY model has no per-axis tables, so the
-// one-axis formats (linuxcnc, siemens) are refused naming what it supports.
+// one-axis formats (linuxcnc, siemens, isg) are refused naming what it supports.
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -24,7 +24,7 @@ int export_trr_xy(const ExportArgs& args) {
     throw UsageError(fmt::format(
         "--format {}: a TRR-XY model holds the 30 geometric parameters of the parallel head (docs/trr-xy.md), no "
         "per-axis error table for a {} file; it supports --format machine (with --machine, the TRR-XY machine file "
-        "to correct)", args.format, args.format == "linuxcnc" || args.format == "siemens" ? args.format : "one-axis"));
+        "to correct)", args.format, args.format == "linuxcnc" || args.format == "siemens" || args.format == "isg" ? args.format : "one-axis"));
   if (!args.axis.empty())
     throw UsageError("--axis: a TRR-XY machine file takes the whole model, not one axis (leave out --axis)");
   if (args.machine.empty())
