@@ -193,7 +193,9 @@ def count_gcode(path):
                 r["unsupported"].append((no, "parameters/subroutines"))
             continue
         words = GWORD.findall(line)
-        gs = [float(v) for k, v in words if k == "G"]
+        # G80 first: beside G0/G1/G2/G3 in one block (Fanuc's safe-start line) it cancels the
+        # cycle and the motion code sets the mode (Fanuc group 09)
+        gs = sorted((float(v) for k, v in words if k == "G"), key=lambda g: g != 80.0)
         ms = [float(v) for k, v in words if k == "M"]
         vals = {k: float(v) for k, v in words if k not in "GM"}
         for g in gs:

@@ -445,9 +445,17 @@ struct AptReader::State {
   }
 
   void apply_statement(const AptStatement& st, const std::string& text) {
+    if (apply_motion_word(st) || apply_modal_setting(st, text) || apply_machine_function(st, text) ||
+        apply_geometry_record(st, text) || apply_text_record(st, text))
+      return;
+    notices.push_back(fmt::format("{}:{}:{}: '{}' is not acted on; passed through as a comment", file, st.where.line,
+                                  st.where.column, st.major));
+    pending.push_back(Unsupported{st.where, text});
+  }
+
+  /// GOTO, FROM, GODLTA, RAPID.
+  bool apply_motion_word(const AptStatement& st) {
     const std::string& w = st.major;
-    const Location at = st.where;
-    auto comment = [&](std::string t) { pending.push_back(Comment{at, std::move(t)}); };
     if (w == "GOTO" || w == "FROM") {
       Motion m = motion(st, false);
       m.from = (w == "FROM");
@@ -456,7 +464,17 @@ struct AptReader::State {
       pending.push_back(motion(st, true));
     } else if (w == "RAPID") {
       rapid_pending = true;
-    } else if (w == "FEDRAT") {
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  /// FEDRAT, UNITS, MULTAX, TLAXIS: settings for the motions that follow.
+  bool apply_modal_setting(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    const Location at = st.where;
+    if (w == "FEDRAT") {
       pending.push_back(feed(st));
     } else if (w == "UNITS" || w == "UNIT") {
       if (has_word(st, "MM")) scale = 1.0;
@@ -468,44 +486,90 @@ struct AptReader::State {
       const auto v = numbers_of(st);
       if (v.size() >= 3 && Vec3d(v[0], v[1], v[2]).norm() > 1e-9) axis = dir_to_w(Vec3d(v[0], v[1], v[2]).normalized());
       else fail(at, "TLAXIS expects i, j, k of a non-zero vector", text);
-    } else if (w == "SPINDL") {
-      Spindle s;
-      s.where = at;
-      if (has_word(st, "OFF")) s.direction = Spindle::Direction::off;
-      else if (has_word(st, "CCLW")) s.direction = Spindle::Direction::ccw;
-      const auto v = numbers_of(st);
-      if (!v.empty()) s.rpm = v[0];
-      pending.push_back(s);
-    } else if (w == "COOLNT") {
-      Coolant c;
-      c.where = at;
-      c.on = !has_word(st, "OFF");
-      c.mode = st.arguments.empty() || st.arguments[0].is_number ? "ON" : st.arguments[0].word;
-      pending.push_back(c);
-    } else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) {
-      ToolChange t;
-      t.where = at;
-      const auto v = numbers_of(st);
-      if (v.empty()) fail(at, "LOADTL expects a tool number", text);
-      if (!(v[0] >= 0.0 && v[0] <= 1e6)) fail(at, "LOADTL: tool number out of range (expected 0 to 1000000)", text);
-      t.number = static_cast<int>(v[0]);
-      if (auto l = number_after(st, "LENGTH")) t.length_mm = *l * scale;
-      pending.push_back(t);
-    } else if (w == "CIRCLE") {
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  /// SPINDL, COOLNT, LOADTL / LOAD/TOOL, CUTCOM.
+  bool apply_machine_function(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    if (w == "SPINDL") pending.push_back(spindle(st));
+    else if (w == "COOLNT") pending.push_back(coolant(st));
+    else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) pending.push_back(tool_change(st, text));
+    else if (w == "CUTCOM") pending.push_back(cutter_comp(st, text));
+    else return false;
+    return true;
+  }
+
+  Spindle spindle(const AptStatement& st) const {
+    Spindle s;
+    s.where = st.where;
+    if (has_word(st, "OFF")) s.direction = Spindle::Direction::off;
+    else if (has_word(st, "CCLW")) s.direction = Spindle::Direction::ccw;
+    const auto v = numbers_of(st);
+    if (!v.empty()) s.rpm = v[0];
+    return s;
+  }
+
+  static Coolant coolant(const AptStatement& st) {
+    Coolant c;
+    c.where = st.where;
+    c.on = !has_word(st, "OFF");
+    c.mode = st.arguments.empty() || st.arguments[0].is_number ? "ON" : st.arguments[0].word;
+    return c;
+  }
+
+  ToolChange tool_change(const AptStatement& st, const std::string& text) const {
+    ToolChange t;
+    t.where = st.where;
+    const auto v = numbers_of(st);
+    if (v.empty()) fail(st.where, "LOADTL expects a tool number", text);
+    if (!(v[0] >= 0.0 && v[0] <= 1e6)) fail(st.where, "LOADTL: tool number out of range (expected 0 to 1000000)", text);
+    t.number = static_cast<int>(v[0]);
+    if (auto l = number_after(st, "LENGTH")) t.length_mm = *l * scale;
+    return t;
+  }
+
+  CutterComp cutter_comp(const AptStatement& st, const std::string& text) const {
+    CutterComp c;
+    c.where = st.where;
+    c.text = st.raw_arguments;
+    if (has_word(st, "LEFT")) c.side = CutterComp::Side::left;
+    else if (has_word(st, "RIGHT")) c.side = CutterComp::Side::right;
+    else if (!has_word(st, "OFF")) fail(st.where, "CUTCOM expects LEFT, RIGHT or OFF", text);
+    const auto v = numbers_of(st);
+    if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
+    return c;
+  }
+
+  /// CIRCLE, CYCLE, NURBS (KNOT, CNTRL), MSYS and the ends (END-OF-PATH, END, FINI).
+  bool apply_geometry_record(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    if (w == "CIRCLE") {
       pending.push_back(circle(st, text));
-    } else if (w == "CUTCOM") {
-      CutterComp c;
-      c.where = at;
-      c.text = st.raw_arguments;
-      if (has_word(st, "LEFT")) c.side = CutterComp::Side::left;
-      else if (has_word(st, "RIGHT")) c.side = CutterComp::Side::right;
-      else if (!has_word(st, "OFF")) fail(at, "CUTCOM expects LEFT, RIGHT or OFF", text);
-      const auto v = numbers_of(st);
-      if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
-      pending.push_back(c);
     } else if (w == "CYCLE") {
       if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) pending.push_back(std::move(*c));
-    } else if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
+    } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
+      pending.push_back(End{st.where, w == "FINI"});
+    } else if (w == "NURBS" || w == "KNOT" || w == "CNTRL") {
+      nurbs_record(st, text);
+    } else if (w == "MSYS") {
+      msys(st, text);
+      pending.push_back(Comment{st.where, w + "/" + st.raw_arguments});
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  /// PPRINT, INSERT, TPRINT, PARTNO, NX's TOOL PATH and OPERATION NAME, and the information for
+  /// the post that does not change the motion (CSYS, TLDATA, CUTTER, ...): kept as comments.
+  bool apply_text_record(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    auto comment = [&](std::string t) { pending.push_back(Comment{st.where, std::move(t)}); };
+    if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
       if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
@@ -513,22 +577,13 @@ struct AptReader::State {
       std::string rest = w == "PARTNO" ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)));
       rest.erase(0, std::min(rest.size(), rest.find_first_not_of(" \t/")));
       comment("PARTNO " + rest);
-    } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
-      pending.push_back(End{at, w == "FINI"});
-    } else if (w == "NURBS" || w == "KNOT" || w == "CNTRL") {
-      nurbs_record(st, text);
-    } else if (w == "MSYS") {
-      msys(st, text);
-      comment(w + "/" + st.raw_arguments);
-    } else if (w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" ||
-               w == "MACHIN" || w == "CLRSRF" || w == "SELCTL") {
-      // Information for the post that does not change the motion: kept as a comment.
+    } else if (w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" || w == "MACHIN" ||
+               w == "CLRSRF" || w == "SELCTL") {
       if (w != "PAINT") comment(w + (st.has_slash ? "/" + st.raw_arguments : ""));
     } else {
-      notices.push_back(fmt::format("{}:{}:{}: '{}' is not acted on; passed through as a comment", file, at.line,
-                                    at.column, w));
-      pending.push_back(Unsupported{at, text});
+      return false;
     }
+    return true;
   }
 };
 

@@ -484,6 +484,12 @@ struct GcodeClReader::State {
     }
     seen_content = true;
     if (block.deleted && options.block_delete) return true;
+    return interpret_block(line, line_number);
+  }
+
+  /// The records of one parsed block, queued in `before`/`after` (or held while the program's
+  /// start is not settled); false when the block ends the program.
+  bool interpret_block(std::string_view line, int line_number) {
     for (const BlockComment& c : block.comments)
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
     interpreter.apply(block, line_number, line, effect);
@@ -493,6 +499,30 @@ struct GcodeClReader::State {
     check_rtcp_forced(line_number);
     for (auto& n : interpreter.take_notices()) notices.push_back(std::move(n));
     const BlockEffect& fx = effect;
+    queue_modal_records(fx, line_number);
+    const cl::Location where{line_number, block.column};
+    if (fx.has_motion && fx.cycle) {
+      queue_cycle_hole(fx, where, line);
+    } else if (fx.has_motion && fx.arc) {
+      queue_arc(fx, where, line, known_prior);
+    } else if (fx.has_motion && !start_settled && fx.motion == MotionMode::rapid && held.size() < kMaxHeld) {
+      return hold_rapid(fx, where);
+    } else if (fx.has_motion) {
+      queue_linear(fx, where, known_prior);
+    }
+    for (const auto& u : fx.after_motion) after.push_back(u);
+    if (fx.program_end) return end_program(where);
+    if (!held.empty()) {  // a block without motion between held rapids keeps its place
+      for (auto& r : before) held.push_back(std::move(r));
+      for (auto& r : after) held.push_back(std::move(r));
+      before.clear();
+      after.clear();
+    }
+    return true;
+  }
+
+  /// Feed, tool, spindle, coolant, compensation and the other records before the block's motion.
+  void queue_modal_records(const BlockEffect& fx, int line_number) {
     if (fx.feed) before.push_back(*fx.feed);
     if (fx.tool_change) before.push_back(*fx.tool_change);
     if (fx.spindle) before.push_back(*fx.spindle);
@@ -504,74 +534,73 @@ struct GcodeClReader::State {
       off.where = {line_number, block.column};
       before.push_back(off);
     }
-    if (fx.has_motion && fx.cycle) {
-      // a canned-cycle hole: its cycle, then the hole at its R plane (the cycle runs along machine Z)
-      const cl::Location where{line_number, block.column};
-      cl::Motion m = motion_at(fx.end, where);
-      ProgramPoint below = fx.end;
-      below[2] -= 1.0;
-      const cl::Motion d = motion_at(below, where);
-      if ((m.point.tip_mm - d.point.tip_mm - m.point.axis).norm() > 1e-6)
-        throw InputError({file, line_number, block.column},
-                         "a canned cycle where machine Z is not the tool axis (a tilted head) is not supported",
-                         std::string(line));
-      before.push_back(*fx.cycle);
-      before.push_back(m);
-    } else if (fx.has_motion) {
-      const cl::Location where{line_number, block.column};
-      update_wrap(fx, line_number, !fx.arc);
-      if (fx.arc && !start_settled) release_held(known_prior);  // an arc starts from the held position
-      if (fx.arc) {
-        const long n = arc_segments(*fx.arc, options.arc_chord_tolerance_mm);
-        if (n > kMaxArcSegments)
-          throw InputError({file, line_number, block.column},
-                           fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
-                                       kMaxArcSegments, options.arc_chord_tolerance_mm),
-                           std::string(line));
-        if (auto circle = as_circle(*fx.arc, where, n)) {
-          before.push_back(*circle);
-          cl::Motion m = motion_at(unwrapped(fx.arc->end), where);
-          source_time_feed(m);  // not G93 (as_circle): follows the position
-          before.push_back(std::move(m));
-        } else {
-          arc = fx.arc;
-          arc_segments_total = n;
-          arc_segment = 0;
-          arc_where = where;
-          if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
-        }
-      } else if (!start_settled && fx.motion == MotionMode::rapid && held.size() < kMaxHeld) {
-        for (const auto& u : fx.after_motion) after.push_back(u);
-        hold_block(fx, where);
-        if (std::none_of(fx.assumed.begin(), fx.assumed.end(), [](bool b) { return b; })) release_held(known_before);
-        if (fx.program_end) {
-          release_held(known_before);
-          units_hint();
-          after.push_back(cl::End{cl::Location{line_number, block.column}, true});
-          return false;
-        }
-        return true;
-      } else {
-        if (!start_settled) release_held(known_prior);  // a feed motion starts from the held position
-        cl::Motion m = motion_at(unwrapped(fx.end), where);
-        if (auto f = source_time_feed(m)) before.push_back(*f);
-        before.push_back(std::move(m));
-      }
+  }
+
+  /// A canned-cycle hole: its cycle, then the hole at its R plane (the cycle runs along machine Z).
+  void queue_cycle_hole(const BlockEffect& fx, cl::Location where, std::string_view line) {
+    cl::Motion m = motion_at(fx.end, where);
+    ProgramPoint below = fx.end;
+    below[2] -= 1.0;
+    const cl::Motion d = motion_at(below, where);
+    if ((m.point.tip_mm - d.point.tip_mm - m.point.axis).norm() > 1e-6)
+      throw InputError({file, where.line, where.column},
+                       "a canned cycle where machine Z is not the tool axis (a tilted head) is not supported",
+                       std::string(line));
+    before.push_back(*fx.cycle);
+    before.push_back(m);
+  }
+
+  /// An arc: a CIRCLE record and its end point where it is one, else points along it (next()).
+  void queue_arc(const BlockEffect& fx, cl::Location where, std::string_view line,
+                 const std::array<bool, 6>& known_prior) {
+    update_wrap(fx, where.line, false);
+    if (!start_settled) release_held(known_prior);  // an arc starts from the held position
+    const long n = arc_segments(*fx.arc, options.arc_chord_tolerance_mm);
+    if (n > kMaxArcSegments)
+      throw InputError({file, where.line, where.column},
+                       fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
+                                   kMaxArcSegments, options.arc_chord_tolerance_mm),
+                       std::string(line));
+    if (auto circle = as_circle(*fx.arc, where, n)) {
+      before.push_back(*circle);
+      cl::Motion m = motion_at(unwrapped(fx.arc->end), where);
+      source_time_feed(m);  // not G93 (as_circle): follows the position
+      before.push_back(std::move(m));
+    } else {
+      arc = fx.arc;
+      arc_segments_total = n;
+      arc_segment = 0;
+      arc_where = where;
+      if (fx.inverse_time && fx.motion_feed) effect.motion_feed = *fx.motion_feed * static_cast<double>(n);
     }
+  }
+
+  /// A rapid before the program's start is settled is held (the axes it leaves out are taken from
+  /// their first programmed values); false when the block ends the program.
+  bool hold_rapid(const BlockEffect& fx, cl::Location where) {
+    update_wrap(fx, where.line, true);
     for (const auto& u : fx.after_motion) after.push_back(u);
-    if (fx.program_end) {
-      release_held(known_before);
-      units_hint();
-      after.push_back(cl::End{cl::Location{line_number, block.column}, true});
-      return false;
-    }
-    if (!held.empty()) {  // a block without motion between held rapids keeps its place
-      for (auto& r : before) held.push_back(std::move(r));
-      for (auto& r : after) held.push_back(std::move(r));
-      before.clear();
-      after.clear();
-    }
+    hold_block(fx, where);
+    if (std::none_of(fx.assumed.begin(), fx.assumed.end(), [](bool b) { return b; })) release_held(known_before);
+    if (fx.program_end) return end_program(where);
     return true;
+  }
+
+  /// A G0/G1 motion (with its source-time feed where the program runs in inverse time).
+  void queue_linear(const BlockEffect& fx, cl::Location where, const std::array<bool, 6>& known_prior) {
+    update_wrap(fx, where.line, true);
+    if (!start_settled) release_held(known_prior);  // a feed motion starts from the held position
+    cl::Motion m = motion_at(unwrapped(fx.end), where);
+    if (auto f = source_time_feed(m)) before.push_back(*f);
+    before.push_back(std::move(m));
+  }
+
+  /// M2/M30: the held records out, the units hint, the End record; always false.
+  bool end_program(cl::Location where) {
+    release_held(known_before);
+    units_hint();
+    after.push_back(cl::End{where, true});
+    return false;
   }
 
   void finish_input() {
