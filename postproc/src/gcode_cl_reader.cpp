@@ -501,7 +501,10 @@ struct GcodeClReader::State {
     const BlockEffect& fx = effect;
     queue_modal_records(fx, line_number);
     const cl::Location where{line_number, block.column};
-    if (fx.has_motion && fx.cycle) {
+    if (fx.has_motion && !fx.machine_move) check_reference_axes(fx, where, line);
+    if (fx.machine_move) {
+      queue_machine_move(fx, where, line, known_prior);
+    } else if (fx.has_motion && fx.cycle) {
       queue_cycle_hole(fx, where, line);
     } else if (fx.has_motion && fx.arc) {
       queue_arc(fx, where, line, known_prior);
@@ -519,6 +522,101 @@ struct GcodeClReader::State {
       after.clear();
     }
     return true;
+  }
+
+  // ---- moves in the machine's own coordinates: G28/G30 (reference point), G53 ----------------
+  std::array<bool, 6> at_reference{};  ///< axes sent to a reference point the machine file does not give
+  int reference_line = 0;
+
+  /// A motion while an axis stands at a reference point of unknown position must program it.
+  void check_reference_axes(const BlockEffect& fx, cl::Location where, std::string_view line) {
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (!at_reference[i]) continue;
+      const char L = "XYZABC"[i];
+      if (!fx.programmed[i] || interpreter.state().incremental)
+        throw InputError({file, where.line, where.column},
+                         fmt::format("{} stands at its reference point since line {} (G28/G30), a position the "
+                                     "machine file does not give: this motion does not say where {} goes (program "
+                                     "{} absolutely on the first motion after the return)", L, reference_line, L, L),
+                         std::string(line));
+      at_reference[i] = false;
+    }
+  }
+
+  /// The program point `p` with the machine's linear axes given by `machine_mm` (where set):
+  /// machine reading takes them as they are; a tool-tip (RTCP) reading goes through the machine.
+  ProgramPoint with_machine_linear(ProgramPoint p, const std::array<std::optional<double>, 3>& machine_mm) {
+    if (!rtcp_now()) {
+      for (std::size_t i = 0; i < 3; ++i)
+        if (machine_mm[i]) p[i] = *machine_mm[i];
+      return p;
+    }
+    AxisPosition q;
+    for (int k = 0; k < rotaries(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
+    q.linear_mm = linear_for(machine, q.rotary_rad, Vec3d(p[0], p[1], p[2]), setup);
+    for (int i = 0; i < 3; ++i)
+      if (machine_mm[static_cast<std::size_t>(i)]) q.linear_mm[i] = *machine_mm[static_cast<std::size_t>(i)];
+    const Vec3d tip = nominal_table_T_tool(q).t - setup.workpiece_origin_mm;
+    for (int i = 0; i < 3; ++i) p[static_cast<std::size_t>(i)] = tip[i];
+    return p;
+  }
+
+  /// G28/G30 (the intermediate point, then Z to the top of its travel; X, Y and rotary axes to a
+  /// reference the machine file does not give: the next motion must program them) or G53 (the
+  /// motion to machine coordinates). Before the program's start is settled nothing is known of
+  /// where the tool stands: the move is a comment and the first programmed values place the start.
+  void queue_machine_move(const BlockEffect& fx, cl::Location where, std::string_view line,
+                          const std::array<bool, 6>& known_prior) {
+    const MachineMove& mm = *fx.machine_move;
+    if (options.word_forward)
+      throw InputError({file, where.line, mm.column},
+                       fmt::format("{} on the machine {}, whose words {} are no Cartesian frame: not supported",
+                                   mm.code, machine.name, program_letters(machine, options)),
+                       std::string(line));
+    if (!start_settled) {
+      notices.push_back(fmt::format("{}:{}:{}: {} before the first programmed position moves nothing in the "
+                                    "posted program (where the tool stands is not known yet): the program's first "
+                                    "positions place the tool", file, where.line,
+                                    mm.column, mm.code));
+      if (mm.kind == MachineMove::Kind::reference && fx.has_motion) hold_rapid(fx, where);
+      return;
+    }
+    if (mm.kind == MachineMove::Kind::reference && fx.has_motion) queue_linear(fx, where, known_prior);
+    ProgramPoint p = interpreter.state().position;
+    std::array<std::optional<double>, 3> machine_mm{};
+    bool moves = false;
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (!mm.axes[i]) continue;
+      if (mm.kind == MachineMove::Kind::machine) {
+        if (i < 3) machine_mm[i] = mm.machine_value[i];
+        else p[i] = mm.machine_value[i];  // a rotary axis's machine angle is its program angle
+        moves = true;
+      } else if (i == 2 && machine.axes.size() > 2 && machine.axes[2].limits) {
+        machine_mm[2] = machine.axes[2].limits->max;  // Z's reference: the top of its travel
+        moves = true;
+      } else {
+        at_reference[i] = true;
+        reference_line = where.line;
+      }
+    }
+    if (mm.kind == MachineMove::Kind::reference)
+      notices.push_back(fmt::format(
+          "{}:{}:{}: {} (return to the reference point): {}{}", file, where.line, mm.column, mm.code,
+          machine_mm[2] ? fmt::format("Z goes to the top of its travel ({:.3f} mm, machine file), written as a rapid",
+                                      *machine_mm[2])
+                        : std::string("Z is not returned"),
+          std::any_of(at_reference.begin(), at_reference.end(), [](bool b) { return b; })
+              ? "; the other axes named must be programmed on the next motion (their reference is not in the machine file)"
+              : ""));
+    if (!moves) return;
+    p = with_machine_linear(p, machine_mm);
+    cl::Motion m = motion_at(p, where);
+    m.rapid = mm.kind == MachineMove::Kind::reference || fx.motion == MotionMode::rapid;
+    if (!m.rapid) {
+      if (auto f = source_time_feed(m)) before.push_back(*f);
+    }
+    before.push_back(std::move(m));
+    interpreter.moved_to(p);
   }
 
   /// Feed, tool, spindle, coolant, compensation and the other records before the block's motion.

@@ -148,6 +148,8 @@ void BlockEffect::clear() {
   motion = MotionMode::none;
   arc.reset();
   assumed = {};
+  programmed = {};
+  machine_move.reset();
   motion_feed.reset();
   inverse_time = false;
   after_motion.clear();
@@ -523,6 +525,40 @@ void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Code
     fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
 }
 
+// G28/G30: the axes named (all of X Y Z when none is) go to their reference point after the
+// block's motion to the intermediate point; the reader places that through the machine
+void Interpreter::note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  const Code c = codes.of(g_non_modal);
+  MachineMove mm;
+  mm.kind = MachineMove::Kind::reference;
+  mm.code = g_name(c.code10);
+  mm.column = c.column;
+  bool any = false;
+  for (std::size_t i = 0; i < 6; ++i)
+    if (slots_[i] && w.has(slots_[i])) mm.axes[i] = any = true;
+  if (!any) mm.axes[0] = mm.axes[1] = mm.axes[2] = true;  // RS274NGC: G28 alone returns every axis
+  fx.before_motion.push_back(cl::Unsupported{cx.at(c.column), mm.code + " (return to the reference point)"});
+  fx.machine_move = std::move(mm);
+}
+
+// G53: the block's axis words are machine coordinates (absolute, whatever G90/G91)
+void Interpreter::note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  const double length_scale = state_.inch ? kMmPerInch : 1.0;
+  MachineMove mm;
+  mm.kind = MachineMove::Kind::machine;
+  mm.code = "G53";
+  mm.column = codes.of(g_non_modal).column;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const char L = slots_[i];
+    if (!L || !w.has(L)) continue;
+    mm.axes[i] = true;
+    mm.machine_value[i] = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
+    if (!(std::abs(mm.machine_value[i]) <= kMaxCoordinate))
+      cx.fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
+  }
+  fx.machine_move = std::move(mm);
+}
+
 void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
   ModalState& st = state_;
   const Fail& fail = cx.fail;
@@ -535,30 +571,45 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     }
   const int axis_column = first_axis_column ? first_axis_column : cx.block.column;
   const bool home_return = codes.is(g_non_modal, 280) || codes.is(g_non_modal, 300);
-  if (home_return) {
-    const Code c = codes.of(g_non_modal);
-    fx.before_motion.push_back(cl::Unsupported{cx.at(c.column), g_name(c.code10) + " (return to the reference point)"});
-    notice_once(g_name(c.code10), cx.line_number, c.column,
-                fmt::format("{} (return to the reference point) is passed through as a comment; the position "
-                            "after it is taken as unchanged",
-                            g_name(c.code10)));
-  }
+  if (home_return) note_reference_return(cx, w, codes, fx);
+  if (codes.is(g_non_modal, 530)) note_machine_coordinates(cx, w, codes, fx);
   const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
   const bool arc_words = !(st.motion == MotionMode::cycle) && (w.has('I') || w.has('J') || w.has('K') || w.has('R'));
   if (arc_words && !(is_arc && (codes.in(g_motion) || has_axis)) && !home_return) {
     const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
     fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));
   }
-  const bool moves = !home_return && (has_axis || (is_arc && codes.in(g_motion) && arc_words));
+  // the intermediate point of G28/G30 where its axes are known (else the return alone)
+  bool intermediate_known = true;
+  for (std::size_t i = 0; i < 6; ++i)
+    if (slots_[i] && w.has(slots_[i]) && !st.known[i]) intermediate_known = false;
+  const bool moves = home_return ? has_axis && intermediate_known
+                                 : (has_axis || (is_arc && codes.in(g_motion) && arc_words));
   if (!moves) return;
+  if (fx.machine_move && !home_return) {  // G53: the reader places the machine coordinates
+    if (st.motion != MotionMode::rapid && st.motion != MotionMode::linear)
+      fail(codes.of(g_non_modal).column, "G53 (machine coordinates) with an arc or a canned cycle: expected G0 or G1");
+    if (st.motion == MotionMode::linear && st.feed_mode == FeedMode::inverse_time)
+      fail(codes.of(g_non_modal).column, "G53 G1 under inverse-time feed (G93) is not supported: use G0 or G94");
+    fx.has_motion = true;
+    fx.motion = st.motion;
+    fx.start = fx.end = st.position;
+    for (std::size_t i = 0; i < 6; ++i) fx.programmed[i] = slots_[i] && w.has(slots_[i]);
+    return;
+  }
+  if (home_return) {  // the intermediate point: a rapid, whatever the modal motion (G28 is non-modal)
+    fx.has_motion = true;
+    fx.motion = MotionMode::rapid;
+    fx.start = st.position;
+    fx.end = motion_end(cx, w, axis_column, fx);
+    st.position = fx.end;
+    return;
+  }
   if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
     fail(codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column,
          fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
                      "as G0/G1 blocks)", is_arc ? "an arc" : "a canned cycle", axis_letters_));
-  if (codes.is(g_non_modal, 530))
-    notice_once("G53", cx.line_number, codes.of(g_non_modal).column,
-                "G53 machine coordinates are read as program coordinates");
   fx.has_motion = true;
   fx.motion = st.motion;
   fx.start = st.position;
@@ -588,6 +639,7 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
     if (!L) continue;
     const bool used = axis_letters_.find(L) != std::string::npos;
     if (w.has(L)) {
+      fx.programmed[i] = true;
       const double v = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
       end[i] = st.incremental ? st.position[i] + v : v;
       if (!(std::abs(end[i]) <= kMaxCoordinate))

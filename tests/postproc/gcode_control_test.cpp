@@ -8,6 +8,7 @@
 #include "cl_records.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/postproc/gcode_cl_reader.hpp"
 
 using namespace ncpost;
@@ -358,4 +359,69 @@ TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) 
   CHECK((ms[3].point.tip_mm - Vec3d(20, 20, 0)).norm() < 1e-12);
   // without the option (the default) every arc is points
   CHECK(only<cl::Circle>(read_all("G0 X0 Y0 Z10 A0 C0\nG1 Z0 F100\nG2 I-45\nM30\n").records).empty());
+}
+
+// G28/G30 and G53 move the machine in its own coordinates: a program that retracts with them and
+// then moves on must be posted with the retract, never with the tool left at depth.
+TEST_CASE("G-code: G28 Z mid-program retracts Z to the top of its travel, and the next moves stay there") {
+  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5\nG1 Z-2 F100\nX20\nG91 G28 Z0\nG90 G0 X50 Y50\nG1 Z-2\nM30\n");
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() == 7);  // the intermediate point of G91 G28 Z0 is where the tool stands
+  CHECK(m[4].point.tip_mm.isApprox(Vec3d(20, 10, 600)));  // ac-trunnion: Z -600 .. 600 mm
+  CHECK(m[4].rapid);
+  CHECK(m[5].point.tip_mm.isApprox(Vec3d(50, 50, 600)));  // X Y move at the top, not at Z-2
+  CHECK(m[5].rapid);
+  CHECK(m[6].point.tip_mm.isApprox(Vec3d(50, 50, -2)));
+  CHECK(any_contains(r.notices, "t.ngc:5:5: G28 (return to the reference point): Z goes to the top of its travel"));
+}
+
+TEST_CASE("G-code: G90 G28 Z50 goes through the intermediate point first; G30 likewise") {
+  for (const char* code : {"G28", "G30"}) {
+    INFO(code);
+    const Read r = read_all(std::string("G21 G90\nG0 X10 Y10 Z5\nG1 Z-2 F100\n") + code + " Z50\nG0 X0 Y0\nM30\n");
+    const auto m = only<cl::Motion>(r.records);
+    REQUIRE(m.size() == 5);
+    CHECK(m[2].point.tip_mm.isApprox(Vec3d(10, 10, 50)));
+    CHECK(m[3].point.tip_mm.isApprox(Vec3d(10, 10, 600)));
+    CHECK(m[4].point.tip_mm.isApprox(Vec3d(0, 0, 600)));
+  }
+}
+
+TEST_CASE("G-code: G53 moves to machine coordinates, not to program coordinates") {
+  // tool-tip reading with A turned: machine Z alone goes to -10, the tip moves along machine Z
+  GcodeReaderOptions o;
+  o.kind = InputKind::rtcp;
+  Setup s;
+  s.workpiece_origin_mm = Vec3d(0, 0, 80);
+  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5 A30 C0\nG53 G0 Z-10\nG0 X0\nM30\n", o, s);
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() == 3);
+  const Eigen::Vector2d rotary(deg_to_rad(30.0), 0.0);
+  const Vec3d before = linear_for(ac_machine(), rotary, m[0].point.tip_mm, s);
+  const Vec3d after = linear_for(ac_machine(), rotary, m[1].point.tip_mm, s);
+  CHECK(after.isApprox(Vec3d(before.x(), before.y(), -10.0)));
+  CHECK(m[1].rapid);
+  // the next move programs X only: Y and Z keep the program coordinates the G53 move reached
+  CHECK(m[2].point.tip_mm.y() == Approx(m[1].point.tip_mm.y()));
+  CHECK(m[2].point.tip_mm.z() == Approx(m[1].point.tip_mm.z()));
+  CHECK(m[2].point.tip_mm.x() == Approx(0.0).margin(1e-12));
+  // machine reading: the machine coordinate is the program coordinate of that axis
+  const auto m2 = only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG53 G0 Z-10\nM30\n").records);
+  REQUIRE(m2.size() == 2);
+  CHECK(m2[1].point.tip_mm.isApprox(Vec3d(10, 10, -10)));
+}
+
+TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before the start nothing moves") {
+  const InputError e = input_error("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 Z20\nM30\n");
+  CHECK(e.where().line == 4);
+  CHECK_THAT(e.what(), Catch::Contains("X stands at its reference point since line 3"));
+  // programmed absolutely: posted
+  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 X1 Y2 Z20\nM30\n").records).size() == 3);
+  // G53 Z0 and G28 before any programmed position: the first programmed values place the tool
+  const Read r = read_all("G21 G90\nG53 G0 Z0\nG91 G28 Z0\nG90 G0 X10 Y10 Z5\nM30\n");
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() >= 1);
+  CHECK(m.back().point.tip_mm.isApprox(Vec3d(10, 10, 5)));
+  for (const auto& x : m) CHECK(x.point.tip_mm.z() == Approx(5.0));  // never to Z0, the program's surface
+  CHECK(any_contains(r.notices, "G53 before the first programmed position moves nothing"));
 }

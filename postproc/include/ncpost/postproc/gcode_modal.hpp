@@ -63,6 +63,17 @@ struct ModalState {
   bool ended = false;                ///< M2/M30 seen
 };
 
+/// A move in the machine's own coordinates: G28/G30 (the named axes to their reference point,
+/// after the block's motion to the intermediate point) or G53 (the block's motion to machine
+/// coordinates). The reader places it through the machine (gcode_cl_reader.cpp).
+struct MachineMove {
+  enum class Kind { reference, machine } kind = Kind::reference;
+  std::string code;                            ///< "G28", "G30", "G53"
+  int column = 0;
+  std::array<bool, 6> axes{};                  ///< the axes (X Y Z A B C slots) it moves
+  std::array<double, 6> machine_value{};       ///< G53: the machine coordinate of each (mm, rad)
+};
+
 /// What one block does. Cleared by `Interpreter::apply` before it fills it.
 struct BlockEffect {
   std::optional<cl::Feed> feed;            ///< F under G94/G95
@@ -77,6 +88,8 @@ struct BlockEffect {
   ProgramPoint end{};
   std::optional<ArcMove> arc;              ///< for G2/G3
   std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
+  std::array<bool, 6> programmed{};        ///< axes with a word in this block
+  std::optional<MachineMove> machine_move; ///< G28/G30/G53
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
@@ -101,6 +114,8 @@ class Interpreter {
   void apply(const Block& block, int line_number, std::string_view line, BlockEffect& effect);
 
   const ModalState& state() const { return state_; }
+  /// The reader placed a machine move (MachineMove): the program position is now `p`.
+  void moved_to(const ProgramPoint& p) { state_.position = p; }
   std::vector<std::string> take_notices();
 
  private:
@@ -121,6 +136,8 @@ class Interpreter {
   void apply_motion_mode(const Codes& codes, BlockEffect& fx);
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
   void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx) const;
   void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
