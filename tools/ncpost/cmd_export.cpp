@@ -148,8 +148,7 @@ void add_export(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("export", "Export a model as compensation data for the control");
   sub->add_option("--format", args->format,
                   "linuxcnc: LinuxCNC COMP_FILE (type 1) of one axis; siemens: SINUMERIK LEC table ($AA_ENC_COMP) of "
-                  "one axis; machine: the machine file with the rotary axes' location errors applied (TRR-XY: the model's "
-                  "30 parameters as the machine's calibration)")
+                  "one axis; machine: the machine file with the rotary axes' location errors applied")
       ->required();
   sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens); needed when the model has "
                                         "tables for more than one");
