@@ -163,6 +163,8 @@ TEST_CASE("TRR-XY export: formats a TRR-XY model cannot fill are usage errors na
     }
   }
   std::string log;
+  CHECK(run("export --format csv --machine " + machine + " -o t.txt trr_model.json", &log) == 1);
+  CHECK(log.find("--format: expected machine for a TRR-XY model") != std::string::npos);
   CHECK(run("export --format machine -o t.toml trr_model.json", &log) == 1);  // the machine file to correct
   CHECK(log.find("needs --machine") != std::string::npos);
   CHECK(run("export --format machine --axis X --machine " + machine + " -o t.toml trr_model.json") == 1);

@@ -20,11 +20,14 @@ int export_trr_xy(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
   check_files({{"-o", args.output}}, inputs);
-  if (args.format != "machine")
+  if (args.format == "linuxcnc" || args.format == "siemens" || args.format == "isg")
     throw UsageError(fmt::format(
         "--format {}: a TRR-XY model holds the 30 geometric parameters of the parallel head (docs/trr-xy.md), no "
         "per-axis error table for a {} file; it supports --format machine (with --machine, the TRR-XY machine file "
-        "to correct)", args.format, args.format == "linuxcnc" || args.format == "siemens" || args.format == "isg" ? args.format : "one-axis"));
+        "to correct)", args.format, args.format));
+  if (args.format != "machine")
+    throw UsageError(fmt::format("--format: expected machine for a TRR-XY model (the machine file with the model as "
+                                 "its calibration), got '{}'", args.format));
   if (!args.axis.empty())
     throw UsageError("--axis: a TRR-XY machine file takes the whole model, not one axis (leave out --axis)");
   if (args.machine.empty())
