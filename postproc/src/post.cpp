@@ -134,13 +134,14 @@ class Poster {
       if (motion) motions.push_back(items.size() - 1);
       if (stop) break;
     }
-    plan_motions(items, motions);
+    plan_motions(items, motions, motions.size() == kPlanWindow);
     for (auto& item : items) pending_.push_back(std::move(item));
   }
 
   /// The greedy solutions of the motions (kept as solved ahead: the post uses them as it goes);
   /// where the limits force changes of solution on that path, the plan with the fewest.
-  void plan_motions(std::vector<detail::AheadItem>& items, std::vector<std::size_t> motions) {
+  /// `window_full`: the run goes on after these motions.
+  void plan_motions(std::vector<detail::AheadItem>& items, std::vector<std::size_t> motions, bool window_full) {
     auto point = [&](std::size_t k) -> const ClPoint& { return std::get<cl::Motion>(*items[motions[k]].record).point; };
     // a rapid first: any solution is free there (the post tests no change of solution on rapids)
     const bool rapid_first = !plannable(std::get<cl::Motion>(*items[motions[0]].record));
@@ -206,8 +207,10 @@ class Poster {
     const int last_line = std::get<cl::Motion>(*items[motions.back()].record).where.line;
     summary_.notices.push_back(fmt::format(
         "{}:{}: the rotary solutions of lines {} to {} are planned ahead: the axis limits force {} change{} of "
-        "solution there instead of {} (--branch-plan greedy)",
-        input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes));
+        "solution there instead of {} (--branch-plan greedy){}",
+        input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes,
+        window_full ? fmt::format("; at most {} motions are planned at once, those after line {} on their own",
+                                  kPlanWindow, last_line) : ""));
     ++summary_.planned_runs;
   }
 
