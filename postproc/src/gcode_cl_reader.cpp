@@ -535,7 +535,7 @@ struct GcodeClReader::State {
       const char L = "XYZABC"[i];
       if (!fx.programmed[i] || interpreter.state().incremental)
         throw InputError({file, where.line, where.column},
-                         fmt::format("{} stands at its reference point since line {} (G28/G30), a position the "
+                         fmt::format("{} stands at its reference point since line {} (G28/G30/G53), a position the "
                                      "machine file does not give: this motion does not say where {} goes (program "
                                      "{} absolutely on the first motion after the return)", L, reference_line, L, L),
                          std::string(line));
@@ -583,35 +583,43 @@ struct GcodeClReader::State {
     }
     if (mm.kind == MachineMove::Kind::reference && fx.has_motion) queue_linear(fx, where, known_prior);
     ProgramPoint p = interpreter.state().position;
+    // the control's machine coordinates count from each axis's reference point (Fanuc, Haas,
+    // LinuxCNC homing); Z's is the top of its travel in the machine file, the others' are not known
     std::array<std::optional<double>, 3> machine_mm{};
+    const bool given = mm.kind == MachineMove::Kind::machine;
     bool moves = false;
     for (std::size_t i = 0; i < 6; ++i) {
       if (!mm.axes[i]) continue;
-      if (mm.kind == MachineMove::Kind::machine) {
-        if (i < 3) machine_mm[i] = mm.machine_value[i];
-        else p[i] = mm.machine_value[i];  // a rotary axis's machine angle is its program angle
+      if (i == 2) {
+        if (machine.axes.size() < 3 || !machine.axes[2].limits)
+          throw InputError({file, where.line, mm.column},
+                           fmt::format("{} Z: the machine file gives no Z travel, so the top of Z (its reference "
+                                       "point) is not known", mm.code), std::string(line));
+        machine_mm[2] = machine.axes[2].limits->max + (given ? mm.machine_value[2] : 0.0);
         moves = true;
-      } else if (i == 2 && machine.axes.size() > 2 && machine.axes[2].limits) {
-        machine_mm[2] = machine.axes[2].limits->max;  // Z's reference: the top of its travel
+      } else if (i > 2 && given) {
+        p[i] = mm.machine_value[i];  // a rotary axis's machine angle is its program angle
         moves = true;
       } else {
         at_reference[i] = true;
         reference_line = where.line;
       }
     }
-    if (mm.kind == MachineMove::Kind::reference)
-      notices.push_back(fmt::format(
-          "{}:{}:{}: {} (return to the reference point): {}{}", file, where.line, mm.column, mm.code,
-          machine_mm[2] ? fmt::format("Z goes to the top of its travel ({:.3f} mm, machine file), written as a rapid",
-                                      *machine_mm[2])
-                        : std::string("Z is not returned"),
-          std::any_of(at_reference.begin(), at_reference.end(), [](bool b) { return b; })
-              ? "; the other axes named must be programmed on the next motion (their reference is not in the machine file)"
-              : ""));
+    notices.push_back(fmt::format(
+        "{}:{}:{}: {}: {}{}", file, where.line, mm.column, mm.code,
+        machine_mm[2] ? fmt::format("Z goes to {:.3f} mm, {} the top of its travel (machine file), as a rapid",
+                                    *machine_mm[2], given && mm.machine_value[2] != 0.0
+                                                        ? fmt::format("{:.3f} mm from", mm.machine_value[2])
+                                                        : std::string("at"))
+                      : std::string("Z does not move"),
+        std::any_of(at_reference.begin(), at_reference.end(), [](bool b) { return b; })
+            ? "; the other axes named go to (or count from) their reference point, which the machine file does not "
+              "give: the next motion must program them"
+            : ""));
     if (!moves) return;
     p = with_machine_linear(p, machine_mm);
     cl::Motion m = motion_at(p, where);
-    m.rapid = mm.kind == MachineMove::Kind::reference || fx.motion == MotionMode::rapid;
+    m.rapid = !given || fx.motion == MotionMode::rapid;
     if (!m.rapid) {
       if (auto f = source_time_feed(m)) before.push_back(*f);
     }

@@ -603,6 +603,7 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     fx.start = st.position;
     fx.end = motion_end(cx, w, axis_column, fx);
     st.position = fx.end;
+    fx.has_motion = fx.end != fx.start;  // G91 G28 Z0: no intermediate move
     return;
   }
   if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");

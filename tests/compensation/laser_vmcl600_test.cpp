@@ -115,8 +115,10 @@ std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const Setup&
   AxisPosition modal;
   const std::regex word(R"(([XYZ])\s*(-?[0-9]*\.?[0-9]+))");
   while (std::getline(nc, line)) {
+    // the program end: the return to the reference point (a re-posted G-code program carries its
+    // source's G91 G28 Z0 as a comment and a retract of Z to the top of its travel)
+    if (line.find("G28") != std::string::npos) break;
     line = std::regex_replace(line, std::regex(R"(\([^)]*\))"), "");
-    if (line.find("G28") != std::string::npos) continue;  // the program end's return to the reference point
     bool any = false;
     for (auto it = std::sregex_iterator(line.begin(), line.end(), word); it != std::sregex_iterator(); ++it) {
       modal[(*it)[1].str()[0] - 'X'] = std::stod((*it)[2].str());

@@ -366,13 +366,13 @@ TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) 
 TEST_CASE("G-code: G28 Z mid-program retracts Z to the top of its travel, and the next moves stay there") {
   const Read r = read_all("G21 G90\nG0 X10 Y10 Z5\nG1 Z-2 F100\nX20\nG91 G28 Z0\nG90 G0 X50 Y50\nG1 Z-2\nM30\n");
   const auto m = only<cl::Motion>(r.records);
-  REQUIRE(m.size() == 7);  // the intermediate point of G91 G28 Z0 is where the tool stands
-  CHECK(m[4].point.tip_mm.isApprox(Vec3d(20, 10, 600)));  // ac-trunnion: Z -600 .. 600 mm
+  REQUIRE(m.size() == 6);  // the intermediate point of G91 G28 Z0 is where the tool stands: no move
+  CHECK(m[3].point.tip_mm.isApprox(Vec3d(20, 10, 600)));  // ac-trunnion: Z -600 .. 600 mm
+  CHECK(m[3].rapid);
+  CHECK(m[4].point.tip_mm.isApprox(Vec3d(50, 50, 600)));  // X Y move at the top, not at Z-2
   CHECK(m[4].rapid);
-  CHECK(m[5].point.tip_mm.isApprox(Vec3d(50, 50, 600)));  // X Y move at the top, not at Z-2
-  CHECK(m[5].rapid);
-  CHECK(m[6].point.tip_mm.isApprox(Vec3d(50, 50, -2)));
-  CHECK(any_contains(r.notices, "t.ngc:5:5: G28 (return to the reference point): Z goes to the top of its travel"));
+  CHECK(m[5].point.tip_mm.isApprox(Vec3d(50, 50, -2)));
+  CHECK(any_contains(r.notices, "t.ngc:5:5: G28: Z goes to 600.000 mm, at the top of its travel"));
 }
 
 TEST_CASE("G-code: G90 G28 Z50 goes through the intermediate point first; G30 likewise") {
@@ -388,7 +388,8 @@ TEST_CASE("G-code: G90 G28 Z50 goes through the intermediate point first; G30 li
 }
 
 TEST_CASE("G-code: G53 moves to machine coordinates, not to program coordinates") {
-  // tool-tip reading with A turned: machine Z alone goes to -10, the tip moves along machine Z
+  // machine coordinates count from the reference point, Z's the top of its travel (600 mm):
+  // tool-tip reading with A turned: machine Z alone goes to 590, the tip moves along machine Z
   GcodeReaderOptions o;
   o.kind = InputKind::rtcp;
   Setup s;
@@ -399,7 +400,7 @@ TEST_CASE("G-code: G53 moves to machine coordinates, not to program coordinates"
   const Eigen::Vector2d rotary(deg_to_rad(30.0), 0.0);
   const Vec3d before = linear_for(ac_machine(), rotary, m[0].point.tip_mm, s);
   const Vec3d after = linear_for(ac_machine(), rotary, m[1].point.tip_mm, s);
-  CHECK(after.isApprox(Vec3d(before.x(), before.y(), -10.0)));
+  CHECK(after.isApprox(Vec3d(before.x(), before.y(), 590.0)));
   CHECK(m[1].rapid);
   // the next move programs X only: Y and Z keep the program coordinates the G53 move reached
   CHECK(m[2].point.tip_mm.y() == Approx(m[1].point.tip_mm.y()));
@@ -408,7 +409,12 @@ TEST_CASE("G-code: G53 moves to machine coordinates, not to program coordinates"
   // machine reading: the machine coordinate is the program coordinate of that axis
   const auto m2 = only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG53 G0 Z-10\nM30\n").records);
   REQUIRE(m2.size() == 2);
-  CHECK(m2[1].point.tip_mm.isApprox(Vec3d(10, 10, -10)));
+  CHECK(m2[1].point.tip_mm.isApprox(Vec3d(10, 10, 590)));
+  CHECK(any_contains(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG53 G0 Z-10\nM30\n").notices,
+                     "G53: Z goes to 590.000 mm, -10.000 mm from the top of its travel"));
+  // G53 X: counted from a reference the machine file does not give: the next motion must program X
+  CHECK_THAT(input_error("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG53 G0 X-100\nG0 Z20\nM30\n").what(),
+             Catch::Contains("X stands at its reference point since line 3"));
 }
 
 TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before the start nothing moves") {
@@ -416,7 +422,7 @@ TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before th
   CHECK(e.where().line == 4);
   CHECK_THAT(e.what(), Catch::Contains("X stands at its reference point since line 3"));
   // programmed absolutely: posted
-  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 X1 Y2 Z20\nM30\n").records).size() == 3);
+  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 X1 Y2 Z20\nM30\n").records).size() == 2);
   // G53 Z0 and G28 before any programmed position: the first programmed values place the tool
   const Read r = read_all("G21 G90\nG53 G0 Z0\nG91 G28 Z0\nG90 G0 X10 Y10 Z5\nM30\n");
   const auto m = only<cl::Motion>(r.records);
