@@ -13,6 +13,7 @@
 #include "ncpost/postproc/unreachable.hpp"
 #include "ncpost/postproc/cycle_words.hpp"
 #include "ncpost/postproc/tilted_plane.hpp"
+#include "ncpost/postproc/verify_arc.hpp"
 #include "post_cycle.hpp"
 #include "record_blocks.hpp"
 
@@ -550,6 +551,7 @@ class Poster {
     }
     arc.feed_mm_min = records_.feed_mm_min(options_.default_feed_mm_min);
     writer_.arc(arc);
+    const std::optional<std::array<double, 5>> start_words = last_values_;  // as the control has them
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
     SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad, data_) : *ik.position};
@@ -557,11 +559,40 @@ class Poster {
     if (plane_) executed = plane_executed(xe);
     else
       for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
+    if (options_.verify && !options_.rtcp) verify_native_arc(arc, start_words, normal, angle, c, end, executed);
     solver_.advance(executed, data_);
     last_executed_ = executed;
     previous_ = next;
     ++summary_.arcs_out;
     return true;
+  }
+
+  /// `post --verify` of a native arc: the circle the control interpolates from the words as written
+  /// (the start where the axes stand, the centre offset and the end rounded), executed on the
+  /// machine, against the CL circle (verify_arc.hpp). Before previous_ and last_executed_ move on.
+  void verify_native_arc(const NcArc& arc, const std::optional<std::array<double, 5>>& start_words,
+                         const Vec3d& normal, double angle, const cl::Circle& c, const cl::Motion& end,
+                         const AxisPosition& executed_end) {
+    FrameArc run;
+    run.start_mm = plane_ && start_words ? Vec3d((*start_words)[0], (*start_words)[1], (*start_words)[2])
+                                         : Vec3d(last_executed_.linear_mm);
+    for (int k = 0; k < 3; ++k) {
+      run.centre_mm[k] = run.start_mm[k] + writer_.rounded(k, arc.centre_offset_mm[static_cast<std::size_t>(k)]);
+      run.end_mm[k] = writer_.rounded(k, arc.end_mm[static_cast<std::size_t>(k)]);
+    }
+    run.normal = normal;
+    run.sweep_rad = angle;
+    const Eigen::Vector2d rotary = last_executed_.rotary_rad;
+    const std::function<AxisPosition(const Vec3d&)> commands_at = [&](const Vec3d& x) {
+      if (plane_) return plane_executed(x);
+      AxisPosition q = executed_end;
+      q.linear_mm = x;
+      q.rotary_rad = rotary;
+      return q;
+    };
+    const ClArc cl{previous_.cl.tip_mm, c.center_mm, end.point.tip_mm, c.axis.normalized(), previous_.cl.axis, angle};
+    const double contour_mm = verify_arc(solver_, data_, run, commands_at, cl, end.where.line, summary_.verify);
+    if (options_.on_verified) options_.on_verified(end.where.line, contour_mm);
   }
 
   /// One hole of the active cycle: native (cycle_words.hpp) where the hole runs down −Z of the
