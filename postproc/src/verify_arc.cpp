@@ -31,13 +31,16 @@ Vec3d FrameArc::at(double t) const { return arc_point(start_mm, centre_mm, end_m
 
 double ClArc::distance(const Vec3d& p) const {
   const Vec3d p0 = in_plane(start_mm - centre_mm, axis), v = in_plane(p - centre_mm, axis);
-  double phi = 0.0;
+  const auto at = [&](double phi) { return (p - arc_point(start_mm, centre_mm, end_mm, axis, sweep_rad, phi)).norm(); };
+  double best = std::min(at(0.0), at(sweep_rad));  // the ends
   if (v.norm() > 1e-12 && p0.norm() > 1e-12) {
-    phi = std::atan2(p0.cross(v).dot(axis), p0.dot(v));
+    // the angle of p about the axis, on every turn the sweep covers (a full circle's helix ends
+    // where it started, one pitch lower)
+    double phi = std::atan2(p0.cross(v).dot(axis), p0.dot(v));
     if (phi < 0.0) phi += kTwoPi;
-    if (phi > sweep_rad) phi = (phi - sweep_rad < kTwoPi - phi) ? sweep_rad : 0.0;  // the nearer end
+    for (; phi <= sweep_rad; phi += kTwoPi) best = std::min(best, at(phi));
   }
-  return (p - arc_point(start_mm, centre_mm, end_mm, axis, sweep_rad, phi)).norm();
+  return best;
 }
 
 double verify_arc(const KinematicModel& solver, const SolverData& data, const FrameArc& executed,

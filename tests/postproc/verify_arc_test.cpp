@@ -71,3 +71,9 @@ TEST_CASE("ClArc::distance: on, inside, beyond the sweep") {
   CHECK(cl.distance(Vec3d(0, -10, 0)) == Approx((Vec3d(0, -10, 0) - Vec3d(10, 0, 0)).norm()));  // nearer: the start
   CHECK(cl.distance(Vec3d(-10, 0.5, 0)) == Approx((Vec3d(-10, 0.5, 0) - Vec3d(0, 10, 0)).norm()));  // nearer: the end
 }
+
+TEST_CASE("ClArc::distance: a full-circle helix ends one pitch below its start") {
+  const ClArc cl{Vec3d(0.1, 0, 0), Vec3d::Zero(), Vec3d(0.1, 0, -0.2), Vec3d::UnitZ(), Vec3d::UnitZ(), 2.0 * kPi};
+  CHECK(cl.distance(Vec3d(0.1, 0, -0.2)) == Approx(0.0).margin(1e-12));  // the end, not the start
+  CHECK(cl.distance(Vec3d(-0.1, 0, -0.1)) == Approx(0.0).margin(1e-12));  // half way down
+}

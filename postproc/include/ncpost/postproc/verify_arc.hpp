@@ -25,8 +25,8 @@ struct FrameArc {
 struct ClArc {
   Vec3d start_mm, centre_mm, end_mm, axis, tool_axis;
   double sweep_rad = 0.0;
-  /// Distance of `p` from the arc: measured at the angle of `p` about the axis, clamped to the
-  /// sweep (an upper bound of the true distance on a helix).
+  /// Distance of `p` from the arc: the nearest of the points at the angle of `p` about the axis
+  /// (on every turn of the sweep) and the two ends (an upper bound of the true distance on a helix).
   double distance(const Vec3d& p) const;
 };
 
