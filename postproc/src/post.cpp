@@ -116,7 +116,7 @@ class Poster {
   /// kPlanWindow motions, and the record that ends it (a rapid that ends it opens the next run),
   /// chooses the solution of each motion, and queues the records with the choice.
   template <class Fetch> void plan_run(detail::AheadItem first, Fetch& fetch) {
-    std::vector<detail::AheadItem> items;
+    std::deque<detail::AheadItem>& items = pending_;  // (empty: a run opens once all before it is posted)
     std::vector<std::size_t> motions{0};
     items.push_back(std::move(first));
     while (motions.size() < kPlanWindow && items.size() < 4 * kPlanWindow) {
@@ -136,13 +136,12 @@ class Poster {
       if (stop) break;
     }
     plan_motions(items, motions, motions.size() == kPlanWindow);
-    for (auto& item : items) pending_.push_back(std::move(item));
   }
 
   /// The greedy solutions of the motions (kept as solved ahead: the post uses them as it goes);
   /// where the limits force changes of solution on that path, the plan with the fewest.
   /// `window_full`: the run goes on after these motions.
-  void plan_motions(std::vector<detail::AheadItem>& items, std::vector<std::size_t> motions, bool window_full) {
+  void plan_motions(std::deque<detail::AheadItem>& items, std::vector<std::size_t> motions, bool window_full) {
     auto point = [&](std::size_t k) -> const ClPoint& { return std::get<cl::Motion>(*items[motions[k]].record).point; };
     // a rapid first: any solution is free there (the post tests no change of solution on rapids)
     const bool rapid_first = !plannable(std::get<cl::Motion>(*items[motions[0]].record));
@@ -315,7 +314,9 @@ class Poster {
         toward.rotary_rad = *planned_rotary_;
         SolveFigures figures;
         IkOutcome planned = solver_.solve_quiet(cl, toward, data_, &figures);
-        if (planned.ok() && (planned.position->rotary_rad - *planned_rotary_).cwiseAbs().maxCoeff() < 1e-9) {
+        // (the same branch and turn: solutions apart are >= branch_change_rad apart; under --model
+        // the compensated angles may differ from the plan's in the last digits)
+        if (planned.ok() && (planned.position->rotary_rad - *planned_rotary_).cwiseAbs().maxCoeff() < 1e-6) {
           ik = std::move(planned);
           data_.record(figures);
         }

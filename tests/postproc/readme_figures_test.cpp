@@ -90,3 +90,40 @@ TEST_CASE("README, worked example: measure, identify, post compensated, cut on t
   CHECK_THAT(plain, Catch::Contains("largest contour error 0.0782 mm"));
   CHECK_THAT(plain, Catch::Contains("block ends 0.0776 mm"));
 }
+
+TEST_CASE("README, branch planning: retracts on the BC head, greedy and planned", "[readme][cli]") {
+  const std::string dir = ncpost::test::make_temp_dir("readme_branch_plan");
+  struct Case {
+    std::string cl;
+    std::size_t greedy, planned;
+  };
+  const Case cases[] = {{source("samples/hemisphere_5axis.cls"), 10, 2},
+                        {data("scenarios/public-clean/path.cls"), 19, 5}};
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  for (const Case& c : cases) {
+    INFO(c.cl);
+    std::string log[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::string path = dir + "/post" + std::to_string(k) + ".log";
+      REQUIRE(run_ncpost("post --machine " + source("machines/gantry-bc-head.toml") +
+                             " --workpiece-origin 0,0,-300 --tool-length 120 --retract 40 --verify --branch-plan " +
+                             (k == 0 ? "greedy" : "lookahead") + " -o " + dir + "/p.nc " + c.cl,
+                         path) == 0);
+      log[k] = read_text_file(path);
+    }
+    const std::string retract = "the axis limits force a change of solution (rotary";
+    CHECK(count(log[0], retract) == c.greedy);
+    CHECK(count(log[1], retract) == c.planned);
+    // the re-executed contour error is the same
+    const auto after = [](const std::string& text) {
+      const auto at = text.find("largest contour error ", text.find("after"));
+      return at == std::string::npos ? std::string() : text.substr(at, 31);
+    };
+    CHECK_FALSE(after(log[1]).empty());
+    CHECK(after(log[0]) == after(log[1]));
+  }
+}

@@ -226,9 +226,10 @@ void add_post(CLI::App& app, Action& action) {
       ->check(finite_in(0.0, kMaxRetractMm, "mm"));
   sub->add_option("--branch-plan", a->branch_plan,
                   "How the rotary solution of each feed motion is chosen: lookahead (default) plans each run of feed "
-                  "motions (up to 8192; longer runs window by window) for the fewest limit-forced changes of solution "
-                  "(retracts), else keeps the nearest solution; greedy takes the solution nearest the previous "
-                  "commands, motion by motion")
+                  "motions with the rapid before it (up to 8192 motions; longer runs window by window) for the fewest "
+                  "limit-forced changes of solution (retracts), then the least rotary travel, and leaves runs without "
+                  "a forced change as greedy writes them; greedy takes the solution nearest the previous commands, "
+                  "motion by motion")
       ->check(CLI::IsMember({"lookahead", "greedy"}));
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
