@@ -52,12 +52,16 @@ double verify_block(const KinematicModel& solver, const SolverData& data, const 
   best = std::max({best, f1, f2});
   report.max_endpoint_mm = std::max({report.max_endpoint_mm, (at(0.0).tip_mm - cl0.tip_mm).norm(),
                                      (at(1.0).tip_mm - cl1.tip_mm).norm()});
-  if (best > report.max_contour_mm) {
-    report.max_contour_mm = best;
+  record_verified_block(report, best, line);
+  return best;
+}
+
+void record_verified_block(VerifyReport& report, double contour_mm, int line) {
+  if (contour_mm > report.max_contour_mm) {
+    report.max_contour_mm = contour_mm;
     report.worst_line = line;
   }
   ++report.blocks;
-  return best;
 }
 
 }  // namespace ncpost

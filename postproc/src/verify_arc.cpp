@@ -56,11 +56,7 @@ double verify_arc(const KinematicModel& solver, const SolverData& data, const Fr
     if (i == 0) report.max_endpoint_mm = std::max(report.max_endpoint_mm, (pose.tip_mm - cl.start_mm).norm());
     if (i == samples) report.max_endpoint_mm = std::max(report.max_endpoint_mm, (pose.tip_mm - cl.end_mm).norm());
   }
-  if (best > report.max_contour_mm) {
-    report.max_contour_mm = best;
-    report.worst_line = line;
-  }
-  ++report.blocks;
+  record_verified_block(report, best, line);
   return best;
 }
 

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "axis_actual_position.hpp"
 #include "cli_run.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -51,22 +52,7 @@ double linuxcnc_trim(const std::vector<std::array<double, 3>>& rows, double n, b
   return rows.back()[c];
 }
 
-/// Where the axis actually is (mm or rad, along itself) at motor command q, by the model's chain.
-double actual_position(const MachineModel& model, int axis, double q, bool falling) {
-  const Machine& m = model.machine();
-  RowState<double> state;
-  if (const int r = model.layout().reversal_of(axis); r >= 0 && falling) state.reversal[axis] = model.values()[r];
-  AxisPosition command;
-  command[axis] = q;
-  const Axis& a = m.axes[axis];
-  if (!a.is_rotary()) return model.tool_pose(command, Setup{}, state).tip_mm.dot(a.direction);
-  // rotary: how far a point on a radius turns about the axis, as an angle
-  const ChainPose<double> pose = chain_pose<double>(m, command, 0.0, model.errors(state));
-  const Rigidd& body = a.side == Side::workpiece ? pose.bed_T_table : pose.bed_T_tool;
-  const Vec3d radial = a.direction.unitOrthogonal();
-  const Vec3d turned = body.R * radial;
-  return std::atan2(a.direction.dot(radial.cross(turned)), radial.dot(turned));
-}
+using test::actual_position;
 
 struct Residual {
   double max_compensated = 0.0;  ///< mm or rad

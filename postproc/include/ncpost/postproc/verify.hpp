@@ -20,6 +20,9 @@ struct VerifyReport {
   int worst_line = 0;            ///< CL line of the block with the largest contour error
 };
 
+/// Counts one verified block of contour error `contour_mm` (CL line `line`) in the report.
+void record_verified_block(VerifyReport& report, double contour_mm, int line);
+
 /// Adds one block from (cl0, q0) to (cl1, q1), executed on `solver`'s machine, to the report and
 /// returns its contour error (mm). `samples` points per block, refined around the largest by
 /// golden-section search.
