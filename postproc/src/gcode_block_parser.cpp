@@ -53,7 +53,7 @@ const auto on_delete = [](auto& ctx) { state(ctx).block.deleted = true; };
 const auto on_letter = [](auto& ctx) {
   ParseState& s = state(ctx);
   s.letter_end = x3::_where(ctx).begin();
-  s.block.words.push_back(Word{upper(x3::_attr(ctx)), 0.0, s.column_of(s.letter_end) - 1});
+  s.block.words.push_back(Word{upper(x3::_attr(ctx)), 0.0, s.column_of(s.letter_end) - 1, false});
 };
 
 const auto on_value = [](auto& ctx) {
@@ -64,7 +64,10 @@ const auto on_value = [](auto& ctx) {
     while (*number_begin == ' ' || *number_begin == '\t') ++number_begin;
     s.fail(number_begin, "number out of range (expected a finite number)");
   }
-  state(ctx).block.words.back().value = v;
+  ParseState& s = state(ctx);
+  s.block.words.back().value = v;
+  for (Iterator it = s.letter_end; it != x3::_where(ctx).begin(); ++it)
+    if (*it == '.') s.block.words.back().has_point = true;
 };
 
 /// The attribute is the comment with its delimiter ('(' or ';'), without the closing ')'.

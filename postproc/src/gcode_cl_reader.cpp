@@ -635,6 +635,7 @@ struct GcodeClReader::State {
     if (fx.coolant) before.push_back(*fx.coolant);
     if (fx.cutter_comp) before.push_back(*fx.cutter_comp);
     for (const auto& u : fx.before_motion) before.push_back(u);
+    if (fx.dwell_s) before.push_back(cl::Dwell{{line_number, block.column}, *fx.dwell_s});
     if (fx.cycle_off) {
       cl::Cycle off;  // kind off
       off.where = {line_number, block.column};

@@ -14,6 +14,7 @@ namespace ncpost::gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
+constexpr double kMaxDwellSeconds = 86400.0;  // a day: anything longer is a slip
 /// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
 constexpr double kMaxCoordinate = 1e9;
 /// Largest feed, spindle speed and tool number accepted.
@@ -150,6 +151,7 @@ void BlockEffect::clear() {
   assumed = {};
   programmed = {};
   machine_move.reset();
+  dwell_s.reset();
   motion_feed.reset();
   inverse_time = false;
   after_motion.clear();
@@ -163,12 +165,14 @@ struct Interpreter::Words {
   std::array<double, 26> value;
   std::array<int, 26> column;
   std::uint32_t present = 0;
+  std::uint32_t point = 0;  ///< letters whose number has a decimal point
   std::array<Code, 16> g;
   int g_count = 0;
   std::array<Code, 8> m;
   int m_count = 0;
 
   bool has(char c) const { return (present >> (c - 'A')) & 1u; }
+  bool has_point(char c) const { return (point >> (c - 'A')) & 1u; }
   double get(char c) const { return value[static_cast<std::size_t>(c - 'A')]; }
   int col(char c) const { return column[static_cast<std::size_t>(c - 'A')]; }
 };
@@ -265,6 +269,7 @@ Interpreter::Words Interpreter::read_words(const Context& cx) const {
     if (w.has(L)) fail(word.column, fmt::format("{} appears twice in the block", L));
     const auto i = static_cast<std::size_t>(L - 'A');
     w.present |= 1u << (L - 'A');
+    if (word.has_point) w.point |= 1u << (L - 'A');
     w.value[i] = word.value;
     w.column[i] = word.column;
   }
@@ -441,11 +446,7 @@ void Interpreter::apply_cutter_comp(const Context& cx, const Words& w, const Cod
 void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
   ModalState& st = state_;
   const int line_number = cx.line_number;
-  if (codes.is(g_non_modal, 40)) {
-    fx.before_motion.push_back(cl::Unsupported{cx.at(codes.of(g_non_modal).column),
-                                               fmt::format("G4 P{} (dwell)", w.has('P') ? w.get('P') : 0.0)});
-    notice_once("G4", line_number, codes.of(g_non_modal).column, "G4 (dwell) is passed through as a comment");
-  }
+  if (codes.is(g_non_modal, 40)) read_dwell(cx, w, codes, fx);
   if (codes.in(g_plane)) {
     const int c = codes.of(g_plane).code10;
     st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
@@ -525,6 +526,30 @@ void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Code
     fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
 }
 
+// G4: the dwell in seconds from X (Fanuc, Haas) or from P with a decimal point (LinuxCNC, Haas);
+// an integer P is milliseconds on Fanuc and Haas but seconds on LinuxCNC: passed through as a
+// comment with a notice rather than guessed. The block moves nothing (X is the time, not an axis).
+void Interpreter::read_dwell(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  const int column = codes.of(g_non_modal).column;
+  for (const char L : {'Y', 'Z', 'A', 'B', 'C', 'I', 'J', 'K', 'R'})
+    if (w.has(L)) cx.fail(w.col(L), fmt::format("{} in a G4 (dwell) block: a dwell moves nothing", L));
+  if (w.has('X') && w.has('P')) cx.fail(w.col('P'), "G4 takes the time either in X (seconds) or in P, not both");
+  const char t = w.has('X') ? 'X' : 'P';
+  if (!w.has(t)) cx.fail(column, "G4 (dwell) without its time (expected P or X)");
+  const double v = w.get(t);
+  if (!(v >= 0.0 && v <= kMaxDwellSeconds))
+    cx.fail(w.col(t), fmt::format("expected a dwell time from 0 to {} s, got {}", kMaxDwellSeconds, v));
+  if (t == 'X' || w.has_point('P') || v == 0.0) {
+    fx.dwell_s = v;
+    return;
+  }
+  fx.before_motion.push_back(cl::Unsupported{cx.at(column), fmt::format("G4 P{} (dwell)", v)});
+  notice_once("G4", cx.line_number, column,
+              fmt::format("G4 P{} (dwell) is passed through as a comment: an integer P is milliseconds on Fanuc and "
+                          "Haas but seconds on LinuxCNC; write P{:.1f} (seconds, with a decimal point) or X for a dwell "
+                          "in the program", v, v / 1000.0));
+}
+
 // G28/G30: the axes named (all of X Y Z when none is) go to their reference point after the
 // block's motion to the intermediate point; the reader places that through the machine
 void Interpreter::note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
@@ -570,6 +595,7 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
       if (!first_axis_column || w.col(L) < first_axis_column) first_axis_column = w.col(L);
     }
   const int axis_column = first_axis_column ? first_axis_column : cx.block.column;
+  if (codes.is(g_non_modal, 40)) return;  // G4: X is its time (read_dwell)
   const bool home_return = codes.is(g_non_modal, 280) || codes.is(g_non_modal, 300);
   if (home_return) note_reference_return(cx, w, codes, fx);
   if (codes.is(g_non_modal, 530)) note_machine_coordinates(cx, w, codes, fx);

@@ -89,7 +89,7 @@ class Poster {
   static bool passes(const cl::Record& r) {
     return std::holds_alternative<cl::Feed>(r) || std::holds_alternative<cl::Spindle>(r) ||
            std::holds_alternative<cl::Coolant>(r) || std::holds_alternative<cl::Comment>(r) ||
-           std::holds_alternative<cl::Unsupported>(r);
+           std::holds_alternative<cl::Unsupported>(r) || std::holds_alternative<cl::Dwell>(r);
   }
 
   /// True when `item` (read from the input, not planned yet) opens a run of feed motions to plan:
@@ -284,6 +284,9 @@ class Poster {
   }
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
+  void on(const cl::Dwell& d) {
+    for (const std::string& b : dwell_blocks(writer_.dialect(), d.seconds)) writer_.block(b);
+  }
   void on(const cl::End&) {}
 
   // ---- motion ----------------------------------------------------------------------------

@@ -431,3 +431,26 @@ TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before th
   for (const auto& x : m) CHECK(x.point.tip_mm.z() == Approx(5.0));  // never to Z0, the program's surface
   CHECK(any_contains(r.notices, "G53 before the first programmed position moves nothing"));
 }
+
+// G4: Fanuc's `G04 X1.5` is a dwell of 1.5 s, not a move of X (it was posted as a cut to X1.5)
+TEST_CASE("G-code: G4 dwells in X or P with a decimal point; an integer P is not guessed") {
+  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG1 Z-2 F100\nG04 X1.5\nG4 P0.5\nG4 P2000\nG1 Z5\nM30\n");
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() == 3);
+  CHECK(m[1].point.tip_mm.isApprox(Vec3d(10, 10, -2)));
+  CHECK(m[2].point.tip_mm.isApprox(Vec3d(10, 10, 5)));  // X stayed at 10
+  const auto d = only<cl::Dwell>(r.records);
+  REQUIRE(d.size() == 2);
+  CHECK(d[0].seconds == 1.5);
+  CHECK(d[0].where.line == 4);
+  CHECK(d[1].seconds == 0.5);
+  const auto passed = only<cl::Unsupported>(r.records);
+  REQUIRE(passed.size() == 1);
+  CHECK_THAT(passed[0].text, Catch::Contains("G4 P2000"));
+  CHECK(any_contains(r.notices, "t.ngc:6:1: G4 P2000 (dwell) is passed through as a comment: an integer P is milliseconds"));
+  // a dwell moves nothing: axis words other than its X time are refused
+  const InputError e = input_error("G21 G90\nG0 X1 Y1 Z1 A0 C0\nG4 X1 Y2\nM30\n");
+  CHECK(e.where().line == 3);
+  CHECK_THAT(e.what(), Catch::Contains("Y in a G4 (dwell) block"));
+  CHECK_THAT(input_error("G21 G90\nG4 P-1\nM30\n").what(), Catch::Contains("expected a dwell time from 0"));
+}

@@ -297,7 +297,7 @@ TEST_CASE("gcode reader: comments, tool, spindle, coolant, stops and the program
   CHECK_THAT(passed[1].text, Catch::Contains("M0"));
   REQUIRE(notices.size() == 3);
   CHECK_THAT(notices[0], Catch::Contains("t.ngc:6:") && Catch::Contains("not programmed before the first motion"));
-  CHECK_THAT(notices[1], Catch::Contains("t.ngc:8:1: G4 (dwell)"));
+  CHECK_THAT(notices[1], Catch::Contains("t.ngc:8:1: G4 P2 (dwell)"));
   CHECK_THAT(notices[2], Catch::Contains("t.ngc:9:1: M0 (program stop)"));
   const auto ends = only<cl::End>(rs);
   REQUIRE(ends.size() == 1);

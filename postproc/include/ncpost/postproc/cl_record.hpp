@@ -119,6 +119,12 @@ struct Unsupported {
   std::string text;
 };
 
+/// A dwell: the tool stands still for `seconds` (G-code G4 with an unambiguous time).
+struct Dwell {
+  Location where;
+  double seconds = 0.0;
+};
+
 /// END-OF-PATH, FINI, END: the end of an operation or of the program.
 struct End {
   Location where;
@@ -126,7 +132,7 @@ struct End {
 };
 
 using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, Circle, Cycle, CutterComp, Comment, Unsupported,
-                            End>;
+                            Dwell, End>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {

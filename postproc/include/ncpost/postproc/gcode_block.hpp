@@ -27,7 +27,8 @@ namespace ncpost::gcode {
 struct Word {
   char letter = '?';
   double value = 0.0;
-  int column = 0;  ///< 1-based column of the letter
+  int column = 0;          ///< 1-based column of the letter
+  bool has_point = false;  ///< the number was written with a decimal point (P1. vs P1000)
 };
 
 /// A `(...)` or `;` comment; `text` views the line buffer (valid until the next line is read).

@@ -90,6 +90,7 @@ struct BlockEffect {
   std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
   std::array<bool, 6> programmed{};        ///< axes with a word in this block
   std::optional<MachineMove> machine_move; ///< G28/G30/G53
+  std::optional<double> dwell_s;           ///< G4 with a time that is unambiguous (s)
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
@@ -136,6 +137,7 @@ class Interpreter {
   void apply_motion_mode(const Codes& codes, BlockEffect& fx);
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void read_dwell(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
