@@ -54,7 +54,7 @@ class Poster {
       } else {
         item = carry_ ? std::move(*carry_) : fetch();
         carry_.reset();
-        if (starts_run(item)) {
+        if (!continues_unplanned_run(item) && starts_run(item)) {
           plan_run(std::move(item), fetch);
           continue;
         }
@@ -100,6 +100,16 @@ class Poster {
       return false;
     const auto* m = std::get_if<cl::Motion>(&*item.record);
     return m && (plannable(*m) || free_start(*m)) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;
+  }
+
+  /// True while the feed motions of a run longer than one window go on: such a run is posted
+  /// greedily as a whole (a plan that starts mid-run is not attempted).
+  bool continues_unplanned_run(const detail::AheadItem& item) {
+    if (!unplanned_run_) return false;
+    const auto* m = item.record ? std::get_if<cl::Motion>(&*item.record) : nullptr;
+    if ((m && plannable(*m)) || (item.record && !m && passes(*item.record))) return true;
+    unplanned_run_ = false;
+    return false;
   }
 
   /// The continuity test of the post: moving the rotary axes from `from` to `to` for the tool axis
@@ -170,6 +180,15 @@ class Poster {
       greedy.push_back(q);
       q = next;
     }
+    if (window_full) {  // the run goes on beyond the window: posted greedily as a whole
+      unplanned_run_ = true;
+      if (greedy_changes > 0)
+        summary_.notices.push_back(fmt::format(
+            "{}:{}: a run of more than {} feed motions is not planned ahead (--branch-plan lookahead): its solutions "
+            "are chosen motion by motion", input_, std::get<cl::Motion>(*items[motions.front()].record).where.line,
+            kPlanWindow));
+      return;
+    }
     if (greedy_changes == 0) return;  // nothing to improve: the greedy program
     BranchCandidates candidates(motions.size());
     for (std::size_t k = 0; k < motions.size(); ++k) {
@@ -209,8 +228,7 @@ class Poster {
         "{}:{}: the rotary solutions of lines {} to {} are planned ahead: the axis limits force {} change{} of "
         "solution there instead of {} (--branch-plan greedy){}",
         input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes,
-        window_full ? fmt::format("; at most {} motions are planned at once, those after line {} on their own",
-                                  kPlanWindow, last_line) : ""));
+        ""));
     ++summary_.planned_runs;
   }
 
@@ -739,7 +757,8 @@ class Poster {
 
   const std::string& input_;
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
-  std::optional<Eigen::Vector2d> planned_rotary_;  ///< the current record's rotary angles chosen by the branch plan
+  std::optional<Eigen::Vector2d> planned_rotary_;
+  bool unplanned_run_ = false;  ///< in a run too long to plan (continues_unplanned_run)  ///< the current record's rotary angles chosen by the branch plan
   std::deque<detail::AheadItem> pending_;          ///< records read and planned, not posted yet
   std::optional<detail::AheadItem> carry_;         ///< a rapid read by the last plan: it opens the next run
   SolverData plan_data_;                            ///< the solver's working data of the branch plan

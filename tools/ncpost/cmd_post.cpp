@@ -43,7 +43,7 @@ struct PostArgs {
   std::string report;
   std::string verify_on;
   double retract_mm = 50.0;
-  std::string branch_plan = "lookahead";
+  std::string branch_plan = "greedy";
   int threads = 2;
   std::string output = "-";
   std::string input;       ///< the INPUT argument; in a run, the name in messages ("<stdin>" for "-")
@@ -225,11 +225,11 @@ void add_post(CLI::App& app, Action& action) {
                   "(mm, default 50), reorient, re-engage; 0 refuses (exit 3)")
       ->check(finite_in(0.0, kMaxRetractMm, "mm"));
   sub->add_option("--branch-plan", a->branch_plan,
-                  "How the rotary solution of each feed motion is chosen: lookahead (default) plans each run of feed "
-                  "motions with the rapid before it (up to 8192 motions; longer runs window by window) for the fewest "
-                  "limit-forced changes of solution (retracts), then the least rotary travel, and leaves runs without "
-                  "a forced change as greedy writes them; greedy takes the solution nearest the previous commands, "
-                  "motion by motion")
+                  "How the rotary solution of each feed motion is chosen: greedy (default) takes the solution nearest "
+                  "the previous commands, motion by motion; lookahead plans each run of feed motions with the rapid "
+                  "before it (up to 8192 motions; longer runs are posted greedily) for the fewest limit-forced "
+                  "changes of solution (retracts), then the least rotary travel, and leaves runs without a forced "
+                  "change as greedy writes them")
       ->check(CLI::IsMember({"lookahead", "greedy"}));
   sub->add_option("--verify-on", a->verify_on,
                   "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");

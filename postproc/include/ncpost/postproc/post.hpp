@@ -105,12 +105,12 @@ struct PostOptions {
   double retract_mm = 50.0;
   double branch_change_rad = 0.2;       ///< extra rotary travel (sum over the axes) that counts as a change
   /// How the post chooses among the inverse solutions (branches, turns of a rotary axis) of the
-  /// feed motions: `greedy`, each nearest the previous commands; `lookahead` (default), over each
+  /// feed motions: `greedy` (default), each nearest the previous commands; `lookahead`, over each
   /// run of feed motions (up to 8192, between rapids, tool changes, arcs and cycles; longer runs
-  /// window by window): where the greedy choice runs into limit-forced changes of solution
+  /// are posted greedily as a whole): where the greedy choice runs into limit-forced changes of solution
   /// (retracts), the choice with the fewest (branch_plan.hpp), else the greedy one unchanged.
   /// Two-rotary serial machines whose solver is concurrent() (not models with reversal).
-  enum class BranchChoice { greedy, lookahead } branch_choice = BranchChoice::lookahead;
+  enum class BranchChoice { greedy, lookahead } branch_choice = BranchChoice::greedy;
   /// 2: other threads read the CL records and solve their motions ahead (solving only for a
   /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
   int threads = 1;

@@ -88,7 +88,7 @@ struct PostRequest {
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
   double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
   /// greedy or planned over each run of feed motions (PostOptions::branch_choice)
-  PostOptions::BranchChoice branch_choice = PostOptions::BranchChoice::lookahead;
+  PostOptions::BranchChoice branch_choice = PostOptions::BranchChoice::greedy;
   int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same
   std::string program_name = "NCPOST";
   // verification
