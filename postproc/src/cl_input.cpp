@@ -47,6 +47,9 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   if (apt) return std::make_unique<cl::AptReader>(in, name, options);
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
+  go.integer_dwell = options.integer_dwell == cl::ReaderOptions::IntegerDwell::milliseconds ? gcode::IntegerDwell::milliseconds
+                   : options.integer_dwell == cl::ReaderOptions::IntegerDwell::seconds    ? gcode::IntegerDwell::seconds
+                                                                                          : gcode::IntegerDwell::automatic;
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine

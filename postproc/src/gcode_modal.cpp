@@ -15,6 +15,9 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr double kMaxDwellSeconds = 86400.0;  // a day: anything longer is a slip
+/// IntegerDwell::automatic: a time without a decimal point from this value on is milliseconds
+/// (as seconds it would be a dwell of minutes); below it, down to 1, both readings are plausible.
+constexpr double kSurelyMillisecondsFrom = 100.0;
 /// Largest coordinate accepted (mm, or rad for rotary axes): beyond it arithmetic loses meaning.
 constexpr double kMaxCoordinate = 1e9;
 /// Largest feed, spindle speed and tool number accepted.
@@ -177,8 +180,8 @@ struct Interpreter::Words {
   int col(char c) const { return column[static_cast<std::size_t>(c - 'A')]; }
 };
 
-Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch)
-    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)) {
+Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell)
+    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell) {
   state_.inch = state_.feed_inch = default_inch;
   if (axis_letters_.find_first_of("UVW") != std::string::npos) {
     word_axes_ = true;
@@ -518,36 +521,45 @@ void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Code
   if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale;
   if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale;
   if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
-  if (w.has('P')) {
-    st.cycle.p_s = w.get('P');
-    notice_once("cycle-P", cx.line_number, w.col('P'), "the dwell P of a canned cycle is read in seconds (RS274NGC)");
-  }
+  if (w.has('P')) st.cycle.p_s = dwell_seconds(cx, w, 'P', g_name(st.cycle.code10));
   if (w.has('L') || w.has('K'))
     fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
 }
 
-// G4: the dwell in seconds from X (Fanuc, Haas) or from P with a decimal point (LinuxCNC, Haas);
-// an integer P is milliseconds on Fanuc and Haas but seconds on LinuxCNC: passed through as a
-// comment with a notice rather than guessed. The block moves nothing (X is the time, not an axis).
+// G4: the dwell from X (Fanuc, Haas) or P (all); the block moves nothing (X is the time, not an axis)
 void Interpreter::read_dwell(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
   const int column = codes.of(g_non_modal).column;
   for (const char L : {'Y', 'Z', 'A', 'B', 'C', 'I', 'J', 'K', 'R'})
     if (w.has(L)) cx.fail(w.col(L), fmt::format("{} in a G4 (dwell) block: a dwell moves nothing", L));
-  if (w.has('X') && w.has('P')) cx.fail(w.col('P'), "G4 takes the time either in X (seconds) or in P, not both");
+  if (w.has('X') && w.has('P')) cx.fail(w.col('P'), "G4 takes the time either in X or in P, not both");
   const char t = w.has('X') ? 'X' : 'P';
   if (!w.has(t)) cx.fail(column, "G4 (dwell) without its time (expected P or X)");
-  const double v = w.get(t);
-  if (!(v >= 0.0 && v <= kMaxDwellSeconds))
-    cx.fail(w.col(t), fmt::format("expected a dwell time from 0 to {} s, got {}", kMaxDwellSeconds, v));
-  if (t == 'X' || w.has_point('P') || v == 0.0) {
-    fx.dwell_s = v;
-    return;
+  fx.dwell_s = dwell_seconds(cx, w, t, "G4");
+}
+
+// A dwell time in seconds: with a decimal point it is seconds on every control; without one it
+// is milliseconds on Fanuc and Haas but seconds on LinuxCNC (IntegerDwell says which, or how to guess)
+double Interpreter::dwell_seconds(const Context& cx, const Words& w, char letter, std::string_view code) {
+  const double v = w.get(letter);
+  const int column = w.col(letter);
+  const auto check = [&](double seconds) {
+    if (!(seconds >= 0.0 && seconds <= kMaxDwellSeconds))
+      cx.fail(column, fmt::format("expected a dwell time from 0 to {} s, got {}{} ({} s)", kMaxDwellSeconds, letter, v,
+                                  seconds));
+    return seconds;
+  };
+  if (!(v > 0.0) || w.has_point(letter) || integer_dwell_ == IntegerDwell::seconds) return check(v);
+  if (integer_dwell_ == IntegerDwell::milliseconds) return check(v / 1000.0);
+  if (v >= kSurelyMillisecondsFrom) {
+    notice_once("dwell-ms", cx.line_number, column,
+                fmt::format("{} {}{} (no decimal point) is read as {} ms, as Fanuc and Haas read it: as seconds it would "
+                            "be a dwell of {:.1f} min (--dwell-p s reads it so)", code, letter, v, v, v / 60.0));
+    return check(v / 1000.0);
   }
-  fx.before_motion.push_back(cl::Unsupported{cx.at(column), fmt::format("G4 P{} (dwell)", v)});
-  notice_once("G4", cx.line_number, column,
-              fmt::format("G4 P{} (dwell) is passed through as a comment: an integer P is milliseconds on Fanuc and "
-                          "Haas but seconds on LinuxCNC; write P{:.1f} (seconds, with a decimal point) or X for a dwell "
-                          "in the program", v, v / 1000.0));
+  cx.fail(column, fmt::format("{} {}{} (no decimal point) is {} ms on Fanuc and Haas but {} s on LinuxCNC: say which "
+                              "with --dwell-p ms or --dwell-p s, or write the time in seconds with a decimal point",
+                              code, letter, v, v, v));
+  return 0.0;
 }
 
 // G28/G30: the axes named (all of X Y Z when none is) go to their reference point after the

@@ -432,25 +432,63 @@ TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before th
   CHECK(any_contains(r.notices, "G53 before the first programmed position moves nothing"));
 }
 
-// G4: Fanuc's `G04 X1.5` is a dwell of 1.5 s, not a move of X (it was posted as a cut to X1.5)
-TEST_CASE("G-code: G4 dwells in X or P with a decimal point; an integer P is not guessed") {
-  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG1 Z-2 F100\nG04 X1.5\nG4 P0.5\nG4 P2000\nG1 Z5\nM30\n");
+// G4: Fanuc's `G04 X1.5` is a dwell of 1.5 s, not a move of X (it was posted as a cut to X1.5).
+// A time without a decimal point is ms on Fanuc and Haas, s on LinuxCNC: guessed only where the
+// other reading is absurd (P2000 as seconds: 33 min), else refused unless the user says which.
+TEST_CASE("G-code: G4 dwells in X or P; a time without a decimal point is ms, s, or refused") {
+  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG1 Z-2 F100\nG04 X1.5\nG4 P0.5\nG4 P2000\nG4 P0\nG1 Z5\nM30\n");
   const auto m = only<cl::Motion>(r.records);
   REQUIRE(m.size() == 3);
   CHECK(m[1].point.tip_mm.isApprox(Vec3d(10, 10, -2)));
   CHECK(m[2].point.tip_mm.isApprox(Vec3d(10, 10, 5)));  // X stayed at 10
   const auto d = only<cl::Dwell>(r.records);
-  REQUIRE(d.size() == 2);
+  REQUIRE(d.size() == 4);
   CHECK(d[0].seconds == 1.5);
   CHECK(d[0].where.line == 4);
   CHECK(d[1].seconds == 0.5);
-  const auto passed = only<cl::Unsupported>(r.records);
-  REQUIRE(passed.size() == 1);
-  CHECK_THAT(passed[0].text, Catch::Contains("G4 P2000"));
-  CHECK(any_contains(r.notices, "t.ngc:6:1: G4 P2000 (dwell) is passed through as a comment: an integer P is milliseconds"));
+  CHECK(d[2].seconds == 2.0);
+  CHECK(d[2].where.line == 6);
+  CHECK(d[3].seconds == 0.0);
+  CHECK(only<cl::Unsupported>(r.records).empty());
+  CHECK(any_contains(r.notices, "t.ngc:6:4: G4 P2000 (no decimal point) is read as 2000 ms"));
+  // 1 to 99 without a decimal point: 5 ms or 5 s are both plausible, so the user says which
+  const std::string ambiguous = "G21 G90\nG0 X10 Y10 Z5 A0 C0\nG4 P5\nG04 X20\nM30\n";
+  const InputError refused = input_error(ambiguous);
+  CHECK(refused.where().line == 3);
+  CHECK(refused.where().column == 4);
+  CHECK_THAT(refused.what(), Catch::Contains("G4 P5 (no decimal point) is 5 ms on Fanuc and Haas but 5 s on LinuxCNC") &&
+                                 Catch::Contains("--dwell-p ms or --dwell-p s"));
+  GcodeReaderOptions ms;
+  ms.integer_dwell = IntegerDwell::milliseconds;
+  const auto in_ms = only<cl::Dwell>(read_all(ambiguous, ms).records);
+  REQUIRE(in_ms.size() == 2);
+  CHECK(in_ms[0].seconds == Approx(0.005));
+  CHECK(in_ms[1].seconds == Approx(0.020));  // Fanuc: X without a decimal point counts ms too
+  GcodeReaderOptions s;
+  s.integer_dwell = IntegerDwell::seconds;
+  const auto in_s = only<cl::Dwell>(read_all(ambiguous, s).records);
+  REQUIRE(in_s.size() == 2);
+  CHECK(in_s[0].seconds == 5.0);
+  CHECK(in_s[1].seconds == 20.0);
+  CHECK(only<cl::Dwell>(read_all("G21 G90\nG4 P2.5\nM30\n", ms).records).at(0).seconds == 2.5);  // a point: seconds
   // a dwell moves nothing: axis words other than its X time are refused
   const InputError e = input_error("G21 G90\nG0 X1 Y1 Z1 A0 C0\nG4 X1 Y2\nM30\n");
   CHECK(e.where().line == 3);
   CHECK_THAT(e.what(), Catch::Contains("Y in a G4 (dwell) block"));
   CHECK_THAT(input_error("G21 G90\nG4 P-1\nM30\n").what(), Catch::Contains("expected a dwell time from 0"));
+}
+
+// The P of G82/G89 is the same dwell time as G4's: P500 on a Fanuc drilling cycle is 0.5 s (it
+// was read as 500 s and written back as P500000)
+TEST_CASE("G-code: the dwell P of G82 and G89 is read by the G4 rule") {
+  const std::string head = "G21 G90 G94\nG0 X10 Y10 Z20 A0 C0\nS1000 M3\n";
+  const auto c = only<cl::Cycle>(read_all(head + "G99 G82 X10 Y10 Z-5 R2 P500 F100\nX20 P1.5\nX30\nG80\nM30\n").records);
+  REQUIRE(c.size() == 4);
+  CHECK(c[3].kind == cl::Cycle::Kind::off);  // G80
+  CHECK(c[0].dwell_s == Approx(0.5));
+  CHECK(c[1].dwell_s == Approx(1.5));
+  CHECK(c[2].dwell_s == Approx(1.5));  // modal within the cycle
+  const InputError e = input_error(head + "G98 G89 X10 Y10 Z-5 R2 P2 F100\nG80\nM30\n");
+  CHECK(e.where().line == 4);
+  CHECK_THAT(e.what(), Catch::Contains("G89 P2 (no decimal point) is 2 ms on Fanuc and Haas but 2 s on LinuxCNC"));
 }

@@ -269,7 +269,7 @@ TEST_CASE("gcode reader: arcs expand within the chord tolerance") {
 TEST_CASE("gcode reader: comments, tool, spindle, coolant, stops and the program end") {
   std::vector<std::string> notices;
   const auto rs = read_all(
-      "%\nO0042 (DEMO)\n(first)\nN10 T3 M6 ; change\nN20 S1200 M3\nN30 M8 G0 X1\nS1500\nG4 P2\nM0\nM5 M9\nM30\nG0 X99\n%\n",
+      "%\nO0042 (DEMO)\n(first)\nN10 T3 M6 ; change\nN20 S1200 M3\nN30 M8 G0 X1\nS1500\nG4 P2.\nM0\nM5 M9\nM30\nG0 X99\n%\n",
       {}, {}, &notices);
   const auto comments = only<cl::Comment>(rs);
   REQUIRE(comments.size() == 3);
@@ -291,14 +291,16 @@ TEST_CASE("gcode reader: comments, tool, spindle, coolant, stops and the program
   CHECK(coolant[0].on);
   CHECK(coolant[0].mode == "FLOOD");
   CHECK_FALSE(coolant[1].on);
+  const auto dwells = only<cl::Dwell>(rs);
+  REQUIRE(dwells.size() == 1);
+  CHECK(dwells[0].seconds == 2.0);
+  CHECK(dwells[0].where.line == 8);
   const auto passed = only<cl::Unsupported>(rs);
-  REQUIRE(passed.size() == 2);
-  CHECK_THAT(passed[0].text, Catch::Contains("G4 P2"));
-  CHECK_THAT(passed[1].text, Catch::Contains("M0"));
-  REQUIRE(notices.size() == 3);
+  REQUIRE(passed.size() == 1);
+  CHECK_THAT(passed[0].text, Catch::Contains("M0"));
+  REQUIRE(notices.size() == 2);
   CHECK_THAT(notices[0], Catch::Contains("t.ngc:6:") && Catch::Contains("not programmed before the first motion"));
-  CHECK_THAT(notices[1], Catch::Contains("t.ngc:8:1: G4 P2 (dwell)"));
-  CHECK_THAT(notices[2], Catch::Contains("t.ngc:9:1: M0 (program stop)"));
+  CHECK_THAT(notices[1], Catch::Contains("t.ngc:9:1: M0 (program stop)"));
   const auto ends = only<cl::End>(rs);
   REQUIRE(ends.size() == 1);
   CHECK(ends[0].program);

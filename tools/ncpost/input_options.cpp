@@ -30,6 +30,10 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                  "NX MSYS: ignore = GOTOs as written, in the MCS, as NX's posts do (default); apply = map them "
                  "through MSYS into the absolute frame (README, Choices)")
       ->check(CLI::IsMember({"ignore", "apply"}));
+  sub.add_option("--dwell-p", o.dwell_p,
+                 "G-code input: a dwell time without a decimal point (G4 P, G82/G89 P) is ms (Fanuc, Haas) or s "
+                 "(LinuxCNC); auto reads 100 and more as ms and refuses 1 to 99 (README, Choices)")
+      ->check(CLI::IsMember({"auto", "ms", "s"}));
 }
 
 Vec3d workpiece_origin_mm(const JobOptions& o) {
@@ -59,6 +63,9 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.default_inch = o.units == "inch";
   ro.allow_unterminated = o.allow_unterminated;
   ro.msys = o.msys == "apply" ? cl::ReaderOptions::Msys::apply : cl::ReaderOptions::Msys::ignore;
+  ro.integer_dwell = o.dwell_p == "ms" ? cl::ReaderOptions::IntegerDwell::milliseconds
+                   : o.dwell_p == "s"  ? cl::ReaderOptions::IntegerDwell::seconds
+                                       : cl::ReaderOptions::IntegerDwell::automatic;
   return ro;
 }
 

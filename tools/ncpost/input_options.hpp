@@ -20,6 +20,7 @@ struct JobOptions {
   std::string input_kind = "auto";
   bool allow_unterminated = false;  ///< accept a CL file that ends without FINI / END / END-OF-PATH
   std::string msys = "ignore";      ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
+  std::string dwell_p = "auto";     ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
 };
 
 struct LoadedJob {

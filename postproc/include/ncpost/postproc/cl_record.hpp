@@ -149,6 +149,10 @@ struct ReaderOptions {
   /// changes between operations is refused); `apply` maps every position and axis through the
   /// current MSYS into the absolute frame, W = the absolute frame.
   enum class Msys { ignore, apply } msys = Msys::ignore;
+  /// G-code: the unit of a dwell time written without a decimal point (G4 P, G82/G89 P):
+  /// milliseconds (Fanuc, Haas) or seconds (LinuxCNC); `automatic` guesses only where one reading
+  /// is absurd and refuses the rest (gcode::IntegerDwell).
+  enum class IntegerDwell { automatic, milliseconds, seconds } integer_dwell = IntegerDwell::automatic;
   /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
   double curve_tolerance_mm = 0.01;
 };

@@ -51,6 +51,7 @@
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/gcode_modal.hpp"
 
 namespace ncpost::gcode {
 
@@ -63,6 +64,7 @@ struct GcodeReaderOptions {
   InputKind kind = InputKind::automatic;
   bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
   bool block_delete = true;              ///< skip blocks that start with '/'
+  IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< the unit of a dwell time without a decimal point
   double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
   /// Every motion's machine commands (machine program: the words; RTCP: the linear axes that put
   /// the tip there at the programmed angles) must lie within the machine's axis limits, else

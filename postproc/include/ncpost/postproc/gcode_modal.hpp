@@ -39,6 +39,12 @@ struct CycleModal {
   double initial_z = 0.0;        ///< Z when the cycle mode started (the G98 return level)
 };
 enum class FeedMode { per_minute, inverse_time, per_revolution };
+
+/// The unit of a dwell time written without a decimal point (G4 P or X, the P of G82/G89):
+/// milliseconds on Fanuc and Haas, seconds on LinuxCNC. A time with a decimal point is seconds
+/// everywhere. `automatic` reads 100 and more as milliseconds (as seconds it would be a dwell of
+/// minutes), 0 as no dwell, and refuses 1 to 99, which both readings make plausible.
+enum class IntegerDwell { automatic, milliseconds, seconds };
 enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 
 struct ModalState {
@@ -81,7 +87,7 @@ struct BlockEffect {
   std::optional<cl::ToolChange> tool_change;
   std::optional<cl::Coolant> coolant;
   std::optional<cl::CutterComp> cutter_comp;  ///< G40, G41/G42 (D: the offset register)
-  std::vector<cl::Unsupported> before_motion;  ///< dwell, G28/G30 ... (passed through)
+  std::vector<cl::Unsupported> before_motion;  ///< statements passed through as comments
   bool has_motion = false;
   MotionMode motion = MotionMode::none;
   ProgramPoint start{};
@@ -90,7 +96,7 @@ struct BlockEffect {
   std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
   std::array<bool, 6> programmed{};        ///< axes with a word in this block
   std::optional<MachineMove> machine_move; ///< G28/G30/G53
-  std::optional<double> dwell_s;           ///< G4 with a time that is unambiguous (s)
+  std::optional<double> dwell_s;           ///< G4: the dwell time (s)
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Unsupported> after_motion;   ///< M0, M1, unknown M codes (passed through)
@@ -109,7 +115,8 @@ class Interpreter {
   /// Letters with U, V or W (the TRR-XY machine's "XYUVW") name a machine whose words are all
   /// lengths and no Cartesian frame: ProgramPoint slot i is then axis_letters[i] (mm), other axis
   /// letters are errors, and arcs and canned cycles (which need X Y Z) are not supported.
-  Interpreter(std::string file_name, std::string axis_letters, bool default_inch = false);
+  Interpreter(std::string file_name, std::string axis_letters, bool default_inch = false,
+              IntegerDwell integer_dwell = IntegerDwell::automatic);
 
   /// Applies one block. `line` is the source text (for error carets). Throws InputError.
   void apply(const Block& block, int line_number, std::string_view line, BlockEffect& effect);
@@ -138,6 +145,7 @@ class Interpreter {
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void read_dwell(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  double dwell_seconds(const Context& cx, const Words& w, char letter, std::string_view code);
   void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
@@ -149,6 +157,7 @@ class Interpreter {
   std::array<char, 6> slots_{'X', 'Y', 'Z', 'A', 'B', 'C'};  ///< the letter of each ProgramPoint slot ('\0': none)
   std::array<bool, 6> slot_angle_{false, false, false, true, true, true};  ///< degrees in the program, rad inside
   bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
+  IntegerDwell integer_dwell_ = IntegerDwell::automatic;
   ModalState state_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;
