@@ -47,6 +47,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   if (apt) return std::make_unique<cl::AptReader>(in, name, options);
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
+  go.units_given = options.units_given;
   go.integer_dwell = options.integer_dwell == cl::ReaderOptions::IntegerDwell::milliseconds ? gcode::IntegerDwell::milliseconds
                    : options.integer_dwell == cl::ReaderOptions::IntegerDwell::seconds    ? gcode::IntegerDwell::seconds
                                                                                           : gcode::IntegerDwell::automatic;

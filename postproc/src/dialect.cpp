@@ -97,6 +97,9 @@ std::string without_word(const std::string& words, const std::string& placeholde
   return out;
 }
 
-std::string with_tool(const std::string& words, int tool) { return with_value(words, "{tool}", std::to_string(tool)); }
+std::string with_tool(const std::string& words, int tool, std::optional<int> length_register) {
+  return with_value(with_value(words, "{tool}", std::to_string(tool)), "{length}",
+                    std::to_string(length_register.value_or(tool)));
+}
 
 }  // namespace ncpost

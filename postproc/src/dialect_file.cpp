@@ -328,9 +328,9 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   tool.known({"call", "length_on", "rtcp_on", "rtcp_off"});
   d.tool_call = tool.blocks("call", {"{tool}", "{rpm}"});
   tool.require("call", d.tool_call, "{tool}", "the tool number would not be written");
-  d.tool_length_on = tool.blocks("length_on", {"{tool}"});
-  d.rtcp_on = tool.blocks("rtcp_on", {"{tool}"});
-  d.rtcp_off = tool.blocks("rtcp_off", {"{tool}"});
+  d.tool_length_on = tool.blocks("length_on", {"{tool}", "{length}"});
+  d.rtcp_on = tool.blocks("rtcp_on", {"{tool}", "{length}"});
+  d.rtcp_off = tool.blocks("rtcp_off", {"{tool}", "{length}"});
   bool call_takes_speed = false;
   for (const auto& b : d.tool_call) call_takes_speed = call_takes_speed || b.find("{rpm}") != std::string::npos;
   read_spindle(Section(file, root, "spindle"), d, call_takes_speed);

@@ -79,6 +79,18 @@ const auto on_comment = [](auto& ctx) {
       BlockComment{std::string_view(b + 1, static_cast<std::size_t>(range.end() - b - 1)), s.column_of(b)});
 };
 
+/// Sinumerik MSG("text"): a message for the operator, kept as a comment of its text (MSG() clears
+/// the message: nothing to keep).
+const auto on_message = [](auto& ctx) {
+  ParseState& s = state(ctx);
+  const auto range = x3::_attr(ctx);
+  const std::string_view all(range.begin(), static_cast<std::size_t>(range.end() - range.begin()));
+  const std::size_t open = all.find('"');
+  const std::size_t close = all.rfind('"');
+  if (open == std::string_view::npos || close <= open + 1) return;
+  s.block.comments.push_back(BlockComment{all.substr(open + 1, close - open - 1), s.column_of(range.begin())});
+};
+
 const auto on_program_name = [](auto& ctx) {
   const auto range = x3::_attr(ctx);
   state(ctx).block.program_name = std::string_view(range.begin() + 1, static_cast<std::size_t>(range.end() - range.begin() - 1));
@@ -104,11 +116,14 @@ const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") 
     (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
         -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
      x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
+const auto message = x3::rule<struct message_tag>{"message"} =
+    x3::raw[x3::lexeme[x3::no_case[x3::lit("msg")] >> *blank >> x3::lit('(') >> *blank >>
+                       -(x3::lit('"') >> *(x3::char_ - '"') >> x3::lit('"')) >> *blank >> x3::lit(')')]][on_message];
 const auto program_name = x3::rule<struct name_tag>{"program name"} =
     x3::raw[x3::lexeme[x3::char_("oO") >> &(*x3::char_("0-9") >> x3::char_("a-zA-Z_-")) >>
                        +(x3::char_ - x3::char_(" \t(;"))]][on_program_name];
 const auto block_grammar =
-    -x3::lit('/')[on_delete] >> -program_name >> *(paren_comment | keyword | word) >> -semicolon_comment;
+    -x3::lit('/')[on_delete] >> -program_name >> *(paren_comment | keyword | message | word) >> -semicolon_comment;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 

@@ -17,6 +17,8 @@
 #include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/gcode_modal.hpp"
 
+#include "units_evidence.hpp"
+
 namespace ncpost::gcode {
 namespace {
 
@@ -176,6 +178,7 @@ struct GcodeClReader::State {
   long words_4_decimals = 0, words_other_decimals = 0;
   Vec3d programmed_lo = Vec3d::Constant(1e300), programmed_hi = Vec3d::Constant(-1e300);
   bool units_hint_given = false;
+  bool block_delete_noticed = false;
 
   void observe_units(std::string_view line) {
     for (const Word& w : block.words) {
@@ -198,18 +201,29 @@ struct GcodeClReader::State {
     }
   }
 
+  // A program without units words is read in the units --units gives (mm by default); where its
+  // comments or its numbers speak inches it is refused rather than cut 25.4 times too small.
   void units_hint() {
-    if (units_hint_given || options.default_inch || interpreter.state().units_programmed) return;
+    if (units_hint_given || options.units_given || options.default_inch || interpreter.state().units_programmed) return;
     units_hint_given = true;
+    if (units_evidence.speaks_inches())
+      throw InputError({file, units_evidence.first_inch_line(), 0},
+                       fmt::format("the program has no G20/G21 (units) and its comments speak inches ('{}' at line {}, "
+                                   "no millimetres named): the control's default units decide such a program; post "
+                                   "with --units inch or --units mm (or add G20/G21)",
+                                   units_evidence.first_inch_word(), units_evidence.first_inch_line()));
     if (words_4_decimals < 5 || words_4_decimals <= 2 * words_other_decimals) return;
     for (int i = 0; i < 3; ++i)
       if (programmed_lo[i] <= programmed_hi[i] && (programmed_lo[i] < -50.0 || programmed_hi[i] > 50.0)) return;
     const Vec3d span = (programmed_hi - programmed_lo).cwiseMax(0.0);
-    notices.push_back(fmt::format(
-        "{}:1: the program has no G20/G21 and looks like inches ({} of {} X/Y/Z words with 4 decimals, all positions "
-        "within {:.4g} x {:.4g} x {:.4g}): read as mm (the default); if it is inch, post with --units inch (or add G20)",
-        file, words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
+    throw InputError({file, 1, 0},
+                     fmt::format("the program has no G20/G21 (units) and looks like inches ({} of {} X/Y/Z words with "
+                                 "4 decimals, all positions within {:.4g} x {:.4g} x {:.4g}): the control's default "
+                                 "units decide such a program; post with --units inch or --units mm (or add G20/G21)",
+                                 words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(),
+                                 span.z()));
   }
+  UnitsEvidence units_evidence;
 
   // ---- arcs that the post can write as arcs (G2/G3 of its dialect): a single turn, planar
   // or helical (no P turns), the rotary axes still, not under G93: a cl::Circle (centre and axis in
@@ -483,15 +497,23 @@ struct GcodeClReader::State {
       return false;  // the closing '%': the rest of the file is not part of the program
     }
     seen_content = true;
-    if (block.deleted && options.block_delete) return true;
+    if (block.deleted && options.block_delete) {
+      if (!block_delete_noticed)
+        notices.push_back(fmt::format("{}:{}: blocks that start with '/' (block delete) are left out, as the control "
+                                      "leaves them out with its block-skip switch on", file, line_number));
+      block_delete_noticed = true;
+      return true;
+    }
     return interpret_block(line, line_number);
   }
 
   /// The records of one parsed block, queued in `before`/`after` (or held while the program's
   /// start is not settled); false when the block ends the program.
   bool interpret_block(std::string_view line, int line_number) {
-    for (const BlockComment& c : block.comments)
+    for (const BlockComment& c : block.comments) {
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
+      units_evidence.scan_comment(c.text, line_number);
+    }
     interpreter.apply(block, line_number, line, effect);
     observe_units(line);
     const std::array<bool, 6> known_prior = known_before;
@@ -631,6 +653,7 @@ struct GcodeClReader::State {
   void queue_modal_records(const BlockEffect& fx, int line_number) {
     if (fx.feed) before.push_back(*fx.feed);
     if (fx.tool_change) before.push_back(*fx.tool_change);
+    if (fx.length_offset) before.push_back(*fx.length_offset);
     if (fx.spindle) before.push_back(*fx.spindle);
     if (fx.coolant) before.push_back(*fx.coolant);
     if (fx.cutter_comp) before.push_back(*fx.cutter_comp);

@@ -75,6 +75,22 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
               "G10 (writing offsets or parameters from within the program) is not supported: remove it and give the "
               "part's position with --workpiece-origin"};
     }
+    // the cancel words of modes the reader refuses when they are switched on (scaling G51, rotation
+    // G68, polar coordinates G16, mirror image G51.1): in a safe-start line they change nothing
+    case 500: case 690: case 150: case 501:
+      if (!geometry) return {ControlWordAction::drop, {}};
+      return {ControlWordAction::refuse, code10 == 500 ? "G50 with axis words (a lathe's coordinate setting) is not supported"
+                                                       : "a cancel word (G15, G50.1, G69) with axis words is not supported"};
+    case 1870:  // Haas G187 P1..3 E<corner rounding>: the smoothness of the control's path
+      if (!geometry)
+        return {ControlWordAction::drop,
+                "G187 (Haas smoothness and corner rounding) is a control mode word, not a motion: dropped (the posted "
+                "program runs with its control's own setting)"};
+      return {ControlWordAction::refuse, "G187 with axis words is not supported"};
+    case 1030:  // Haas G103 P<n>: limit block look-ahead
+      if (!geometry)
+        return {ControlWordAction::drop, "G103 (Haas block look-ahead limit) is a control mode word, not a motion: dropped"};
+      return {ControlWordAction::refuse, "G103 with axis words is not supported"};
     default: return {ControlWordAction::none, {}};
   }
 }

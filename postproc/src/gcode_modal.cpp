@@ -74,7 +74,8 @@ int g_group(int code10, const char*& why) {
     case 610: case 611: case 640: return g_path;
     case 2540: case 2550: return g_dynamic_offset;  // Haas DWO on/off
     case 411: case 421: why = "dynamic cutter radius compensation"; return -1;
-    case 330: case 331: case 760: why = "threading"; return -1;
+    case 330: case 331: why = "threading"; return -1;
+    case 760: why = "fine boring with a spindle orientation and shift on Fanuc and Haas mills; threading on lathes and LinuxCNC"; return -1;
     case 382: case 383: case 384: case 385: why = "probing"; return -1;
     case 50: case 51: case 52: case 53: why = "splines"; return -1;
     case 70: case 80: why = "lathe diameter/radius mode"; return -1;
@@ -145,6 +146,7 @@ void BlockEffect::clear() {
   feed.reset();
   spindle.reset();
   tool_change.reset();
+  length_offset.reset();
   coolant.reset();
   cutter_comp.reset();
   before_motion.clear();
@@ -243,8 +245,12 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
 Interpreter::Words Interpreter::read_words(const Context& cx) const {
   const Fail& fail = cx.fail;
   Words w;
+  // Haas G187 P E: its E (corner rounding) is the one E word the reader takes (and drops with it)
+  const bool smoothing = std::any_of(cx.block.words.begin(), cx.block.words.end(),
+                                     [](const Word& x) { return x.letter == 'G' && x.value == 187.0; });
   for (const Word& word : cx.block.words) {
     const char L = word.letter;
+    if (L == 'E' && smoothing) continue;
     if (L == 'G' || L == 'M') {
       const double scaled = word.value * 10.0;
       const double rounded = std::round(scaled);
@@ -316,7 +322,7 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
     if (cw.action != ControlWordAction::none) {
       if (cw.action == ControlWordAction::refuse) fail(c.column, cw.text);
       if (cw.action == ControlWordAction::drop) {
-        notice_once(g_name(c.code10), cx.line_number, c.column, cw.text);
+        if (!cw.text.empty()) notice_once(g_name(c.code10), cx.line_number, c.column, cw.text);
         continue;
       }
       const bool inch = cw.action == ControlWordAction::length_inch || cw.action == ControlWordAction::units_inch;
@@ -454,11 +460,9 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
     const int c = codes.of(g_plane).code10;
     st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
   }
+  apply_tool_length(cx, w, codes, fx);
   apply_rtcp(cx, codes);
-  if (codes.in(g_coordinates) && codes.of(g_coordinates).code10 != 540)
-    notice_once("work-offset", line_number, codes.of(g_coordinates).column,
-                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
-                            g_name(codes.of(g_coordinates).code10)));
+  apply_work_offset(cx, w, codes);
   if (codes.is(g_dynamic_offset, 2540))
     notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
@@ -467,6 +471,65 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
   if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
   apply_motion_mode(codes, fx);
   if (st.motion == MotionMode::cycle) read_cycle_words(cx, w, codes);
+}
+
+// G54-G59, G54.1 P<n>, G59.1-G59.3: the work offset places W on the machine (the job's
+// --workpiece-origin). One per program: a second one after the program has moved would put the
+// next operation's coordinates on the first one's part, so it is refused.
+void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Codes& codes) {
+  ModalState& st = state_;
+  if (!codes.in(g_coordinates)) return;
+  const Code c = codes.of(g_coordinates);
+  std::string name = g_name(c.code10);
+  if (c.code10 == 541) name += w.has('P') ? fmt::format(" P{}", w.get('P')) : std::string(" (without P)");
+  // (moves before any offset word: in the control's active one, G54 from power-on)
+  const std::string in_force = st.work_offset.empty() ? "G54" : st.work_offset;
+  if (st.moved_in_work && name != in_force)
+    cx.fail(c.column, fmt::format("{}: a second work offset (the program moved in {} {}): the post places one "
+                                  "workpiece frame (--workpiece-origin); post the operations of each set-up apart",
+                                  name, st.work_offset.empty() ? "the control's active offset" : st.work_offset,
+                                  st.work_offset.empty() ? std::string("before it")
+                                                         : fmt::format("from line {}", st.work_offset_line)));
+  if (name != st.work_offset) st.work_offset_line = cx.line_number;
+  st.work_offset = name;
+  if (c.code10 != 540)
+    notice_once("work-offset", cx.line_number, c.column,
+                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
+                            name));
+}
+
+// G43 H<n> (and G43.4, G43.5, G234): the tool's length from register n, which the post writes
+// (cl::LengthOffset); G49 or H0 cancels the length: a later motion is refused (check_length_in_force)
+void Interpreter::apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  if (!codes.in(g_length)) return;
+  const Code c = codes.of(g_length);
+  const bool cancel = c.code10 == 490 || (w.has('H') && w.get('H') == 0.0);
+  if (cancel) {
+    if (st.length == ModalState::Length::on) {
+      st.length = ModalState::Length::cancelled;
+      st.length_cancelled_line = cx.line_number;
+    }
+    return;
+  }
+  st.length = ModalState::Length::on;
+  if (!w.has('H')) return;  // the length in force (LinuxCNC: the tool's)
+  const double h = w.get('H');
+  if (h < 0.0 || h != std::floor(h) || h > kMaxRegister)
+    cx.fail(w.col('H'), fmt::format("expected a tool length register H from 0 to {:g} (a whole number)", kMaxRegister));
+  fx.length_offset = cl::LengthOffset{cx.at(w.col('H')), static_cast<int>(h)};
+}
+
+// Once a program has used a tool length, a motion after G49 (or H0) that depends on it is refused:
+// a cut, or a rapid with Z (Z names the spindle's gauge point then, the post the tool tip). Rapids
+// in X, Y and the rotary axes (positioning between tools, before the next G43) are taken as written.
+void Interpreter::check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column) const {
+  if (state_.length != ModalState::Length::cancelled) return;
+  if (motion == MotionMode::rapid && !w.has('Z')) return;
+  cx.fail(column, fmt::format("{} with the tool length cancelled (G49 or H0 at line {}): the post places the tool tip "
+                              "with the tool's length; program G43 H.. before it, or move in machine coordinates "
+                              "(G28, G53)", motion == MotionMode::rapid ? "a rapid in Z" : "a cutting motion",
+                              state_.length_cancelled_line));
 }
 
 // tool length and RTCP/TCPM: G43.4/G43.5/G234 ... G43/G49, M128/M129, M428/M429, TRAORI/TRAFOOF
@@ -642,9 +705,13 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     fx.end = motion_end(cx, w, axis_column, fx);
     st.position = fx.end;
     fx.has_motion = fx.end != fx.start;  // G91 G28 Z0: no intermediate move
+    if (fx.has_motion) check_length_in_force(cx, w, MotionMode::rapid, axis_column);
+    st.moved_in_work = st.moved_in_work || fx.has_motion;
     return;
   }
   if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");
+  if (!word_axes_) check_length_in_force(cx, w, st.motion, axis_column);
+  st.moved_in_work = true;
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
     fail(codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column,
          fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "

@@ -135,11 +135,13 @@ void NcWriter::begin_program(const std::string& name, const std::vector<std::str
   }
 }
 
-void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool) {
-  for (const auto& words : blocks) block(with_tool(words, tool));
+void NcWriter::tool_blocks(const std::vector<std::string>& blocks, int tool, int length_register) {
+  for (const auto& words : blocks) block(with_tool(words, tool, length_register));
 }
 
-void NcWriter::rtcp(bool on, int tool) { tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool); }
+void NcWriter::rtcp(bool on, int tool, int length_register) {
+  tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool, length_register);
+}
 
 bool NcWriter::motion(const NcMotion& m, const std::string& note) {
   write_held("");

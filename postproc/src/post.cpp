@@ -69,7 +69,7 @@ class Poster {
       for (auto& n : item.notices) summary_.notices.push_back(std::move(n));
     }
     close_plane();
-    if (options_.rtcp && rtcp_on_) writer_.rtcp(false, tool_);
+    if (options_.rtcp && rtcp_on_) writer_.rtcp(false, tool_, length_register());
     writer_.end_program();
     summary_.blocks_out = writer_.blocks_written();
     return summary_;
@@ -283,16 +283,43 @@ class Poster {
     const Dialect& d = writer_.dialect();
     close_plane();
     std::vector<std::string> blocks;
-    auto add = [&](const std::vector<std::string>& list, int tool) {
-      for (const auto& b : list) blocks.push_back(with_tool(b, tool));
+    auto add = [&](const std::vector<std::string>& list) {
+      for (const auto& b : list) blocks.push_back(with_tool(b, tool_, length_register()));
     };
-    if (rtcp_on_) add(d.rtcp_off, tool_);
+    if (rtcp_on_) add(d.rtcp_off);
     tool_ = t.number;
-    add(d.tool_call, tool_);
-    if (options_.rtcp) add(d.rtcp_on, tool_);
-    else if (options_.tool_length_on_change) add(d.tool_length_on, tool_);
+    length_register_ = t.number;
+    add(d.tool_call);
+    if (options_.rtcp) add(d.rtcp_on);
+    else if (options_.tool_length_on_change) add(d.tool_length_on);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
+  }
+
+  /// The length register in force: the program's (G43 H), else the tool's own.
+  int length_register() const { return length_register_.value_or(tool_); }
+
+  /// G43 H<n> of G-code input: the length of register n, written where it is not the one in force
+  /// (the tool's own after its change), with the dialect's length words naming the register
+  /// ("{length}"); a dialect whose tool call sets the length (Sinumerik D, Heidenhain TOOL CALL)
+  /// cannot write another register: refused rather than cut with the wrong length.
+  void on(const cl::LengthOffset& l) {
+    if (length_register_ == l.register_number) return;
+    if (!options_.rtcp && !options_.tool_length_on_change) return;  // (TRR-XY: the machine's lengths)
+    const Dialect& d = writer_.dialect();
+    const std::vector<std::string>& words = options_.rtcp ? d.rtcp_on : d.tool_length_on;
+    if (std::none_of(words.begin(), words.end(), [](const std::string& b) { return b.find("{length}") != std::string::npos; }))
+      throw InputError(SourcePosition{input_, l.where.line, l.where.column},
+                       fmt::format("H{}: the tool length of register {} {}cannot be written in the {} dialect (its "
+                                   "[tool] {} words name no register: {{length}}); program the tool's own register "
+                                   "after its change, or post with a dialect that writes one (fanuc, haas)",
+                                   l.register_number, l.register_number,
+                                   length_register_ ? fmt::format("(the tool in the spindle is T{}) ", tool_) : "",
+                                   d.name, options_.rtcp ? "rtcp_on" : "length_on"));
+    close_plane();
+    length_register_ = l.register_number;
+    if (options_.rtcp && !rtcp_on_) return;  // written when RTCP goes on, before the first motion
+    for (const std::string& b : words) writer_.block(with_tool(b, tool_, length_register()));
   }
 
   void on(const cl::Circle& c) { pending_circle_ = c; }
@@ -358,7 +385,7 @@ class Poster {
       next.executed = ik.executed;
     }
     if (options_.rtcp && !rtcp_on_) {  // motion before any tool change: the tool in the spindle (1)
-      writer_.rtcp(true, tool_);
+      writer_.rtcp(true, tool_, length_register());
       rtcp_on_ = true;
     }
     if (!rapid && !records_.feed_given() && !default_feed_noticed_) {
@@ -775,6 +802,7 @@ class Poster {
   bool have_position_ = false;
   bool rtcp_on_ = false;
   int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)
+  std::optional<int> length_register_;  ///< the length register written (the tool's, or a G43 H of the input)
   RecordBlocks records_{writer_};
   bool default_feed_noticed_ = false;
   std::optional<cl::Circle> pending_circle_;

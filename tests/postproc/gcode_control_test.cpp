@@ -124,6 +124,54 @@ TEST_CASE("gcode control: look-ahead mode words are dropped with a notice, splin
   CHECK_THAT(input_error("G0 X0 Y0\nG5 X10 Y5 I2 J2 P1 Q1\n").detail(), Catch::Contains("cubic spline"));
 }
 
+// Safe-start lines cancel modes the reader refuses (G15 G50 G50.1 G69); Haas writes G187 P E and
+// G103 P in every program: none of them moves anything (they were refused as scaling, rotation, E)
+TEST_CASE("gcode control: cancel words and Haas smoothing words are read, G76 fine boring refused as such") {
+  const Read r = read_all("G21 G90\nG0 G17 G40 G49 G50 G69 G80 G15 G50.1\nG187 P1 E0.002\nG103 P1\nG0 X1 Y2 Z3\n"
+                          "G1 X4 F100\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 2);
+  CHECK(ms[1].point.tip_mm.isApprox(Vec3d(4, 2, 3)));
+  CHECK(only<cl::Unsupported>(r.records).empty());
+  CHECK(any_contains(r.notices, "t.ngc:3:1: G187 (Haas smoothness and corner rounding) is a control mode word"));
+  CHECK(any_contains(r.notices, "t.ngc:4:1: G103 (Haas block look-ahead limit)"));
+  CHECK_FALSE(any_contains(r.notices, "G50"));  // a cancel of what was never on says nothing
+  // the modes themselves stay refused; an E word elsewhere too
+  CHECK_THAT(input_error("G21\nG51 X0 Y0 P2\n").detail(), Catch::Contains("G51 (scaling) is not supported"));
+  CHECK_THAT(input_error("G21\nG68 X0 Y0 R30\n").detail(), Catch::Contains("G68 (coordinate rotation)"));
+  CHECK_THAT(input_error("G21\nG0 X1 E2\n").detail(), Catch::Contains("E words are not supported"));
+  CHECK_THAT(input_error("G21\nG50 X100 Z50\n").detail(), Catch::Contains("lathe's coordinate setting"));
+  CHECK_THAT(input_error("G21 G0 X0 Y0 Z10 A0 C0\nG76 X5 Y5 Z-10 R2 Q0.1 F100\n").detail(),
+             Catch::Contains("G76 (fine boring with a spindle orientation and shift on Fanuc and Haas mills"));
+}
+
+// A second work offset would put the next set-up's coordinates on the first part
+TEST_CASE("gcode control: one work offset per program; a second after a motion is refused") {
+  const std::string head = "G21 G90\nG54 G0 X0 Y0 Z10 A0 C0\nG1 Z-1 F100\n";
+  const InputError e = input_error(head + "G0 Z10\nG55 G0 X20 Y0\nM30\n");
+  CHECK(e.where().line == 5);
+  CHECK(e.where().column == 1);
+  CHECK_THAT(e.detail(), Catch::Contains("G55: a second work offset (the program moved in G54 from line 2)"));
+  CHECK_THAT(input_error(head + "G54.1 P2 X1\nM30\n").detail(), Catch::Contains("G54.1 P2: a second work offset"));
+  CHECK_THAT(input_error("G21 G90 G54.1 P1\nG0 X0 Y0 Z10 A0 C0\nG54.1 P2\nM30\n").detail(),
+             Catch::Contains("G54.1 P2: a second work offset (the program moved in G54.1 P1 from line 1)"));
+  // the same offset again (each operation's safe-start line), or a choice before any motion: read
+  CHECK(only<cl::Motion>(read_all(head + "G0 Z10\nG90 G54 G0 X20\nM30\n").records).size() == 4);
+  CHECK(only<cl::Motion>(read_all("G21 G90 G54\nG91 G28 Z0\nG90 G55 G0 X0 Y0 Z10 A0 C0\nM30\n").records).size() >= 1);
+  // moves before any offset word are in the control's active offset (G54 from power-on)
+  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG54 X5\nM30\n").records).size() == 2);
+  CHECK_THAT(input_error("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG56 X5\nM30\n").detail(),
+             Catch::Contains("G56: a second work offset (the program moved in the control's active offset before it)"));
+}
+
+TEST_CASE("gcode control: blocks with '/' are left out with a notice") {
+  const Read r = read_all("G21 G90\nG0 X0 Y0 Z10 A0 C0\n/G1 Z-5 F100\n/M0\nG1 X5 F100\nM30\n");
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 2);
+  CHECK(ms[1].point.tip_mm.isApprox(Vec3d(5, 0, 10)));
+  CHECK(any_contains(r.notices, "t.ngc:3: blocks that start with '/' (block delete) are left out"));
+}
+
 TEST_CASE("gcode control: Sinumerik G70/G71 set length units, G700/G710 lengths and feeds") {
   {
     const Read r = read_all("G70 G0 X1 Y2 Z0.5\nG1 X2 F100\nG71 X10\nM30\n");
@@ -165,6 +213,19 @@ TEST_CASE("gcode control: Sinumerik keywords and G10 are refused naming what the
   CHECK_THAT(g10.detail(), Catch::Contains("G10 L2 P1 sets a work offset"));
   CHECK_THAT(g10.detail(), Catch::Contains("--workpiece-origin"));
   CHECK_THAT(input_error("G10 L1 P3 R5\n").detail(), Catch::Contains("tool table"));
+}
+
+// Sinumerik MSG("...") is an operator message: a comment (it was "expected a number after 'M'")
+TEST_CASE("gcode control: Sinumerik MSG(\"text\") is a comment; MSG() clears it") {
+  const Read r = read_all("G71 G90\nMSG(\"ROUGHING T3\")\nG0 X1 Y2 Z3 msg ( \"second\" )\nMSG()\nM30\n");
+  const auto comments = only<cl::Comment>(r.records);
+  REQUIRE(comments.size() == 2);
+  CHECK(comments[0].text == "ROUGHING T3");
+  CHECK(comments[0].where.line == 2);
+  CHECK(comments[0].where.column == 1);
+  CHECK(comments[1].text == "second");
+  REQUIRE(only<cl::Motion>(r.records).size() == 1);
+  CHECK_THAT(input_error("G71\nMSG(\"open\"\n").detail(), Catch::Contains("expected"));
 }
 
 TEST_CASE("gcode control: the real CAMotics botomata program is refused at its G10 L2 (line 6)") {
@@ -311,23 +372,40 @@ TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blo
   CHECK((*a_axis[1].rotary_rad)[0] * 180.0 / kPi == Approx(-100.0));
 }
 
-TEST_CASE("gcode control: an inch-looking program without G20/G21 gets a notice, a mm or explicit one none") {
+// A program without G20/G21 runs in the control's default units: read as mm unless it speaks
+// inches (it was posted as mm with at most a notice: a part 25.4 times too small, exit 0)
+TEST_CASE("gcode control: a program without G20/G21 that looks or speaks inch is refused unless --units says") {
   const std::string square = "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
-  const Read r = read_all(square);
-  CHECK(any_contains(r.notices, "t.ngc:1: the program has no G20/G21 and looks like inches (8 of 8 X/Y/Z words with 4 "
-                                "decimals, all positions within 1.125 x 0.5 x 1.1)"));
-  CHECK(only<cl::Motion>(r.records)[1].point.tip_mm.z() == Approx(-0.1));  // still read as mm
-  CHECK_FALSE(any_contains(read_all("G21\n" + square).notices, "looks like inches"));
-  CHECK_FALSE(any_contains(read_all("G20\n" + square).notices, "looks like inches"));
+  const InputError e = input_error(square);
+  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and looks like inches (8 of 8 X/Y/Z "
+                                       "words with 4 decimals, all positions within 1.125 x 0.5 x 1.1)") &&
+                           Catch::Contains("post with --units inch or --units mm"));
+  CHECK(only<cl::Motion>(read_all("G21\n" + square).records)[1].point.tip_mm.z() == Approx(-0.1));
+  CHECK(only<cl::Motion>(read_all("G20\n" + square).records)[1].point.tip_mm.z() == Approx(-2.54));
   GcodeReaderOptions inch;
-  inch.default_inch = true;
-  CHECK_FALSE(any_contains(read_all(square, inch).notices, "looks like inches"));
-  // mm-sized positions, or 3-decimal words: no notice
-  CHECK_FALSE(any_contains(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
-                                    "Y0.2500\nM30\n").notices,
-                           "looks like inches"));
-  CHECK_FALSE(any_contains(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").notices,
-                           "looks like inches"));
+  inch.default_inch = inch.units_given = true;
+  CHECK(only<cl::Motion>(read_all(square, inch).records)[1].point.tip_mm.z() == Approx(-2.54));
+  GcodeReaderOptions mm;
+  mm.units_given = true;  // --units mm: the user's word
+  CHECK(only<cl::Motion>(read_all(square, mm).records)[1].point.tip_mm.z() == Approx(-0.1));
+  // mm-sized positions, or 3-decimal words: read as mm
+  CHECK(only<cl::Motion>(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
+                                  "Y0.2500\nM30\n").records).size() == 6);
+  CHECK(only<cl::Motion>(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").records)
+            .size() == 6);
+  // comments that speak inches and never millimetres (a Haas program written by hand)
+  const std::string haas = "%\nO01000\n(TOOL 1 = .500IN ENDMILL)\nT1 M6\nG90 G54 G0 X1. Y-.5\nS2000 M3\nG43 H1 Z1.\n"
+                           "G1 Z-.75 F16.\nX3.\nG0 Z1.\nM30\n%\n";
+  const InputError h = input_error(haas);
+  CHECK(h.where().line == 3);
+  CHECK_THAT(h.what(), Catch::Contains("its comments speak inches ('.500IN' at line 3"));
+  for (const char* c : {"(1/4-20 UNC TAP)", "(FEED 16 IPM)", "(0.5 INCH DRILL)", "(1/2\" ENDMILL)"})
+    CHECK_THAT(input_error(std::string(c) + "\nG0 X1. Y1. Z1.\nM30\n").what(), Catch::Contains("speak inches"));
+  // a millimetre named anywhere, or English words only: read as mm
+  for (const char* c : {"(D10MM ENDMILL, 0.5 IN STEP)", "(TOOL IN SPINDLE)", "(6 MM DRILL)", "(INSIDE CONTOUR)"}) {
+    CAPTURE(c);
+    CHECK(only<cl::Motion>(read_all(std::string(c) + "\nG0 X1. Y1. Z1.\nM30\n").records).size() == 1);
+  }
 }
 
 TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) is a Circle and its end motion") {

@@ -59,6 +59,13 @@ struct ToolChange {
   std::optional<double> length_mm;  ///< from LOADTL/n,LENGTH,l or TLDATA where given
 };
 
+/// G43 H<n> of G-code input: the tool's length from register n (the post writes it where n is not
+/// the length already in force, e.g. not the tool's own register after its change).
+struct LengthOffset {
+  Location where;
+  int register_number = 0;
+};
+
 /// CIRCLE/xc,yc,zc,i,j,k,r,...: the next Motion ends the arc (centre and axis in W, mm).
 struct Circle {
   Location where;
@@ -131,8 +138,8 @@ struct End {
   bool program = false;        ///< FINI: end of the whole program
 };
 
-using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, Circle, Cycle, CutterComp, Comment, Unsupported,
-                            Dwell, End>;
+using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, LengthOffset, Circle, Cycle, CutterComp, Comment,
+                            Unsupported, Dwell, End>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {
@@ -142,6 +149,7 @@ inline Location location_of(const Record& r) {
 /// Options of every CL reader.
 struct ReaderOptions {
   bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
+  bool units_given = false;    ///< `default_inch` is the user's word (--units), not the default
   /// Accept a file that ends without FINI / END / END-OF-PATH (otherwise: "truncated?", exit 2).
   bool allow_unterminated = false;
   /// NX MSYS (the MCS the GOTOs are written in, given in the part's absolute frame):

@@ -6,7 +6,8 @@
 // feed words, block numbers, spindle, coolant, cycle and arc words), so ISO G-code and Heidenhain
 // Klartext are two sets of data for one writer.
 //
-// Block lists are data: "{tool}" stands for the tool number (`with_tool`), "{program}" for the
+// Block lists are data: "{tool}" stands for the tool number and "{length}" for its length register
+// (the tool's number unless the program gave another, G43 H) (`with_tool`), "{program}" for the
 // program name, "{rpm}" for the spindle speed, and an entry "{comments}" in `program_start` for the
 // header comments. A space-separated word whose placeholder has no value (no spindle speed yet) is
 // left out. A tool change writes `rtcp_off` (if RTCP is on), `tool_call`, then `tool_length_on`
@@ -142,7 +143,8 @@ Dialect parse_dialect(const std::string& text, const std::string& file);
 std::string without_word(const std::string& words, const std::string& placeholder);
 
 /// `words` with every "{tool}" replaced by the tool number.
-std::string with_tool(const std::string& words, int tool);
+/// "{tool}" -> the tool number, "{length}" -> the length register (the tool's own unless given).
+std::string with_tool(const std::string& words, int tool, std::optional<int> length_register = std::nullopt);
 
 /// `words` with every `placeholder` replaced by `value`.
 std::string with_value(const std::string& words, const std::string& placeholder, const std::string& value);

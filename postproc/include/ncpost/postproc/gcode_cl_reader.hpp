@@ -63,6 +63,7 @@ std::optional<InputKind> parse_input_kind(std::string_view text);
 struct GcodeReaderOptions {
   InputKind kind = InputKind::automatic;
   bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
+  bool units_given = false;              ///< the user gave the units (--units): a program without G20/G21 is not questioned
   bool block_delete = true;              ///< skip blocks that start with '/'
   IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< the unit of a dwell time without a decimal point
   double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs

@@ -62,6 +62,12 @@ struct ModalState {
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   int tool = 0;                      ///< the selected T
   Rtcp rtcp = Rtcp::off;
+  /// The tool length: G43, G43.4, G43.5, G234 turn it on, G49 (or H0) cancels it.
+  enum class Length { not_set, on, cancelled } length = Length::not_set;
+  int length_cancelled_line = 0;     ///< where it was cancelled
+  std::string work_offset;           ///< "G54", "G54.1 P2", ... ("": none programmed yet)
+  int work_offset_line = 0;          ///< where it was selected
+  bool moved_in_work = false;        ///< a motion in work coordinates (not G28's return, not G53)
   bool retract_to_r = false;         ///< G99 (else G98)
   CycleModal cycle;                  ///< while motion == cycle
   ProgramPoint position{};           ///< the current position (mm, rad)
@@ -85,6 +91,7 @@ struct BlockEffect {
   std::optional<cl::Feed> feed;            ///< F under G94/G95
   std::optional<cl::Spindle> spindle;      ///< S while turning, or M3/M4/M5
   std::optional<cl::ToolChange> tool_change;
+  std::optional<cl::LengthOffset> length_offset;  ///< G43/G43.4/G43.5/G234 H<n>
   std::optional<cl::Coolant> coolant;
   std::optional<cl::CutterComp> cutter_comp;  ///< G40, G41/G42 (D: the offset register)
   std::vector<cl::Unsupported> before_motion;  ///< statements passed through as comments
@@ -140,7 +147,10 @@ class Interpreter {
   void apply_feed_spindle_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_cutter_comp(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
+  void apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_rtcp(const Context& cx, const Codes& codes);
+  void check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column) const;
   void apply_motion_mode(const Codes& codes, BlockEffect& fx);
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);

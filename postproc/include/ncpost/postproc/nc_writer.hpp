@@ -71,7 +71,7 @@ class NcWriter {
   /// X Y of the hole, Z of the initial level (G98) or of the R plane (G99).
   void cycle(const NcCycle& c);
   /// Blocks of the dialect's tool words (Dialect::tool_call, ...) for `tool`.
-  void tool_blocks(const std::vector<std::string>& blocks, int tool);
+  void tool_blocks(const std::vector<std::string>& blocks, int tool, int length_register);
   /// The blocks of a tool change ("{tool}" already replaced). When one names "{rpm}" they wait
   /// for the next spindle start, which puts its speed in them, or are written (with the speed in
   /// force, or without the speed word) before the next block that is not a comment.
@@ -84,7 +84,7 @@ class NcWriter {
   /// Each of `blocks` (no placeholders), e.g. the dialect's coolant words.
   void blocks(const std::vector<std::string>& blocks);
   /// RTCP/TCPM on with the length of `tool`, or off.
-  void rtcp(bool on, int tool);
+  void rtcp(bool on, int tool, int length_register);
   /// True if the hole continues the active modal cycle: same code, words, feed and return level,
   /// the tool at the return level (`return_z_mm`: the initial level for G98, the R plane for G99).
   bool continues(const NcCycle& c, double return_z_mm) const;
