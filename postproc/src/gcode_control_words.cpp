@@ -81,6 +81,12 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
       if (!geometry) return {ControlWordAction::drop, {}};
       return {ControlWordAction::refuse, code10 == 500 ? "G50 with axis words (a lathe's coordinate setting) is not supported"
                                                        : "a cancel word (G15, G50.1, G69) with axis words is not supported"};
+    case 970:  // G97: spindle speed in rpm (constant surface speed G96 off), what S always is here
+      if (!geometry) return {ControlWordAction::drop, {}};
+      return {ControlWordAction::refuse, "G97 with axis words is not supported"};
+    case 960:  // G96: constant surface speed (S in m/min or ft/min)
+      return {ControlWordAction::refuse,
+              "G96 (constant surface speed: S in m/min or ft/min) is not supported: program the speed in rpm (G97)"};
     case 1870:  // Haas G187 P1..3 E<corner rounding>: the smoothness of the control's path
       if (!geometry)
         return {ControlWordAction::drop,

@@ -128,7 +128,7 @@ TEST_CASE("gcode control: look-ahead mode words are dropped with a notice, splin
 // G103 P in every program: none of them moves anything (they were refused as scaling, rotation, E)
 TEST_CASE("gcode control: cancel words and Haas smoothing words are read, G76 fine boring refused as such") {
   const Read r = read_all("G21 G90\nG0 G17 G40 G49 G50 G69 G80 G15 G50.1\nG187 P1 E0.002\nG103 P1\nG0 X1 Y2 Z3\n"
-                          "G1 X4 F100\nM30\n");
+                          "G97 S1200 M3\nG1 X4 F100\nM30\n");
   const auto ms = only<cl::Motion>(r.records);
   REQUIRE(ms.size() == 2);
   CHECK(ms[1].point.tip_mm.isApprox(Vec3d(4, 2, 3)));
@@ -137,6 +137,9 @@ TEST_CASE("gcode control: cancel words and Haas smoothing words are read, G76 fi
   CHECK(any_contains(r.notices, "t.ngc:4:1: G103 (Haas block look-ahead limit)"));
   CHECK_FALSE(any_contains(r.notices, "G50"));  // a cancel of what was never on says nothing
   // the modes themselves stay refused; an E word elsewhere too
+  REQUIRE(only<cl::Spindle>(r.records).size() == 1);
+  CHECK(only<cl::Spindle>(r.records)[0].rpm == 1200.0);
+  CHECK_THAT(input_error("G21\nG96 S200 M3\n").detail(), Catch::Contains("G96 (constant surface speed"));
   CHECK_THAT(input_error("G21\nG51 X0 Y0 P2\n").detail(), Catch::Contains("G51 (scaling) is not supported"));
   CHECK_THAT(input_error("G21\nG68 X0 Y0 R30\n").detail(), Catch::Contains("G68 (coordinate rotation)"));
   CHECK_THAT(input_error("G21\nG0 X1 E2\n").detail(), Catch::Contains("E words are not supported"));

@@ -8,7 +8,8 @@
 //   - Sinumerik G70/G71 (lengths in inch/mm, feeds stay in the control's basic unit) and
 //     G700/G710 (lengths and feeds in inch/mm);
 //   - G10 (offset and tool-table writes from the program): refused with what to do;
-//   - the cancel words of refused modes (G15, G50, G50.1, G69) without geometry: nothing to do;
+//   - the cancel words of refused modes (G15, G50, G50.1, G69) and G97 (rpm, constant surface
+//     speed G96 off) without geometry: nothing to do; G96 itself is refused;
 //     Haas G187 P E (smoothness; its E is read only there) and G103 P (look-ahead): dropped.
 // The same numbers mean other things on other controls (LinuxCNC G5/G5.1 splines, G7/G8 lathe
 // modes): those are recognised by their words (I J P Q with axis words) and refused as such.
