@@ -218,7 +218,7 @@ void read_coolant(const Section& s, Dialect& d) {
 
 void read_cycles(const Section& s, Dialect& d) {
   s.known({"native", "drill", "drill_dwell", "deep", "chip_break", "tap", "tap_left", "bore", "bore_dwell", "bore_drag",
-           "dwell_in_ms", "first_peck_ijk", "cancel", "return_initial", "return_r"});
+           "dwell_in_ms", "first_peck_ijk", "cancel", "return_initial", "return_r", "tap_before"});
   if (!s.boolean("native")) return;
   CycleWords w;
   w.drill = s.text("drill"), w.drill_dwell = s.text("drill_dwell"), w.deep = s.text("deep");
@@ -229,6 +229,7 @@ void read_cycles(const Section& s, Dialect& d) {
   w.cancel = word(s, "cancel");
   w.return_initial = word(s, "return_initial");
   w.return_r = word(s, "return_r");
+  if (s.has("tap_before")) w.tap_before = s.blocks("tap_before", {"{rpm}"});  // optional: none
   d.cycles = w;
 }
 

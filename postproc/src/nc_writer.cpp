@@ -250,7 +250,7 @@ void NcWriter::arc(const NcArc& a) {
 bool NcWriter::continues(const NcCycle& c, double return_z_mm) const {
   if (!active_cycle_) return false;
   const NcCycle& a = *active_cycle_;
-  if (a.code != c.code || a.retract_to_r != c.retract_to_r || a.words != c.words ||
+  if (a.code != c.code || a.retract_to_r != c.retract_to_r || a.words != c.words || a.before != c.before ||
       std::abs(a.feed_mm_min - c.feed_mm_min) > 1e-9)
     return false;
   if (rounded(2, return_z_mm) != cycle_return_z_) return false;
@@ -280,6 +280,7 @@ void NcWriter::cycle(const NcCycle& c) {
   const CycleWords& words = *dialect_.cycles;  // the post writes cycles only in a dialect that has them
   if (!continues(c, c.retract_to_r ? c.r_plane_mm : last_[2].value_or(c.r_plane_mm))) {
     end_cycle();
+    for (const std::string& b : c.before) write_block(b);
     start_line();
     per_minute_mode();
     // the initial level of G98 is where the tool stands now

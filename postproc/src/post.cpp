@@ -696,7 +696,8 @@ class Poster {
     auto on_axis = [&](const Vec3d& a) { return std::abs(a.x() - xb.x()) < across && std::abs(a.y() - xb.y()) < across; };
     if (!on_axis(xt) || !on_axis(xr) || !(xb.z() < xr.z()) || xt.z() < xr.z() - 1e-9) return false;
     std::string note;
-    const auto nc = detail::native_hole(cycle_, *words, xr, xb, p.retract_to_r, feed, writer_.dialect().linear_decimals, note);
+    const auto nc = detail::native_hole(cycle_, *words, xr, xb, p.retract_to_r, feed, records_.spindle_rpm(),
+                                        writer_.dialect().linear_decimals, note);
     if (!nc) return false;
     if (!note.empty() && noticed_cycle_line_ != cycle_.where.line) {
       notice(cycle_.where, note);

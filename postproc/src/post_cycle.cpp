@@ -78,7 +78,8 @@ std::vector<HoleStep> expand_hole(const cl::Cycle& c, const HolePlanes& p, doubl
 }
 
 std::optional<NcCycle> native_hole(const cl::Cycle& c, const CycleWords& w, const Vec3d& r_plane, const Vec3d& bottom,
-                                   bool retract_to_r, double feed_mm_min, int linear_decimals, std::string& notice) {
+                                   bool retract_to_r, double feed_mm_min, double rpm, int linear_decimals,
+                                   std::string& notice) {
   using K = cl::Cycle::Kind;
   const std::string& code = w.word(c);
   if (code.empty()) return std::nullopt;
@@ -88,6 +89,8 @@ std::optional<NcCycle> native_hole(const cl::Cycle& c, const CycleWords& w, cons
   n.bottom_mm = {bottom.x(), bottom.y(), bottom.z()};
   n.r_plane_mm = r_plane.z();
   n.feed_mm_min = feed_mm_min;
+  if (c.kind == K::tap)
+    for (const std::string& b : w.tap_before) n.before.push_back(with_value(b, "{rpm}", fmt::format("{:.0f}", rpm)));
   fmt::memory_buffer words;
   auto word = [&](char letter, double v, int decimals) {
     words.push_back(' ');

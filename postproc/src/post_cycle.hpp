@@ -44,6 +44,7 @@ std::vector<HoleStep> expand_hole(const cl::Cycle& c, const HolePlanes& p, doubl
 /// positions of its planes; none when the dialect has no word for the kind. `notice` gets what
 /// the native block does differently from the CL record (pecks), if anything.
 std::optional<NcCycle> native_hole(const cl::Cycle& c, const CycleWords& w, const Vec3d& r_plane, const Vec3d& bottom,
-                                   bool retract_to_r, double feed_mm_min, int linear_decimals, std::string& notice);
+                                   bool retract_to_r, double feed_mm_min, double rpm, int linear_decimals,
+                                   std::string& notice);
 
 }  // namespace ncpost::detail

@@ -76,7 +76,7 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
       {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 H{length}\"]", ":53:9: unknown placeholder '{length}'"},
       {"replaced = \"()%;\"        # characters that must not appear in a comment ...\nreplacements = \"[]  \"",
        "replaced = \"(%;\"\nreplacements = \"[  \"", ":47:12: replaced in [comments]: expected ')' among the characters"},
-      {"\n[dwell]", "\n[dwel]", ":86:2: unknown section [dwel]"},
+      {"\n[dwell]", "\n[dwel]", ":87:2: unknown section [dwel]"},  // (line 87 since [cycles] tap_before)
       {"style = \"parentheses\"", "style = \"braces\"", "expected \"parentheses\" or \"semicolon\""},
       // the words that were C++ before: motion, feed, block numbers, arcs, spindle, cycles
       {"feed_modal = true", "feed_modal = \"yes\"", ":33:14: feed_modal in [motion]: expected true or false"},

@@ -71,6 +71,11 @@ TEST_CASE("drill with dwell G82 P in ms; retract to the R plane G99; bore G85/G8
   // Creo tap, 20 TPI at 1000 rpm: 1.27 mm x 1000 = 1270 mm/min
   CHECK_THAT(post_apt(kHead + "CYCLE / TAP, DEPTH, 10, TPI, 20, CLEAR, 2\n" + kHoles, "fanuc"),
              Catch::Contains("G99 G84 X10.0000 Y20.0000 Z-10.0000 R2.0000 F1270.0\n"));
+  // Fanuc taps rigidly after M29 S (its dialect's [cycles] tap_before), once per cycle; Haas needs none
+  const std::string tap = kHead + "CYCLE / TAP, DEPTH, 10, TPI, 20, CLEAR, 2\n" + kHoles;
+  CHECK_THAT(post_apt(tap, "fanuc"), Catch::Contains("M29 S1000\nG94 G99 G84 X10.0000 Y20.0000 Z-10.0000 R2.0000 "
+                                                     "F1270.0\nX30.0000\nG80\n"));
+  CHECK_THAT(post_apt(tap, "haas"), !Catch::Contains("M29"));
 }
 
 TEST_CASE("peck cycles: G83 Q, G73 Q; first and next peck as Haas I J K, the smaller Q elsewhere") {

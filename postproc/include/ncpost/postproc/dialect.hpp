@@ -35,6 +35,8 @@ struct CycleWords {
   std::string cancel = "G80";          ///< ends the modal cycle
   std::string return_initial = "G98";  ///< back to the level the cycle started from
   std::string return_r = "G99";        ///< back to the R plane
+  /// Blocks before a tapping cycle starts ({rpm}: the spindle speed): Fanuc rigid tapping `M29 S{rpm}`.
+  std::vector<std::string> tap_before;
   /// The word of this kind (with or without a dwell at the bottom), empty when not native.
   const std::string& word(const cl::Cycle& c) const;
 };

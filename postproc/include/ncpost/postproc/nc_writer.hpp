@@ -47,6 +47,7 @@ struct NcCycle {
   double r_plane_mm = 0.0;            ///< Z of the R plane
   std::string words;                  ///< further words as written (" Q2.0000", " P500"), leading blank each
   double feed_mm_min = 0.0;
+  std::vector<std::string> before;    ///< blocks before the cycle's first block (Fanuc rigid tapping M29 S)
 };
 
 class NcWriter {
