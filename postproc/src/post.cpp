@@ -305,6 +305,7 @@ class Poster {
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::Dwell& d) {
+    records_.resume();  // a dwell after a stop waits with the spindle turning (it may be its run-up)
     for (const std::string& b : dwell_blocks(writer_.dialect(), d.seconds)) writer_.block(b);
   }
   /// A program stop moves nothing: it is written where it stands, also in a tilted work plane (the

@@ -51,7 +51,7 @@ class RecordBlocks {
 
   /// A program stop: the dialect's stop (or optional-stop) blocks, the operator's message as a
   /// comment on the last. M0/M1 stop the spindle and the coolant on many controls (Heidenhain
-  /// always): the ones turning before the stop start again before the next motion (`resume`),
+  /// always): the ones on before the stop start again before the next motion or dwell (`resume`),
   /// unless the program itself says what they do first.
   void stop(const cl::Stop& s) {
     const Dialect& d = writer_.dialect();
@@ -61,7 +61,7 @@ class RecordBlocks {
     restart_coolant_ = coolant_on_.has_value();
   }
 
-  /// Before a motion: the spindle and coolant that a stop may have turned off, on again.
+  /// Before a motion or a dwell: the spindle and coolant that a stop may have turned off, on again.
   void resume() {
     if (restart_spindle_) writer_.spindle_on(spindle_rpm_, spindle_ccw_);
     if (restart_coolant_) write_coolant(*coolant_on_);

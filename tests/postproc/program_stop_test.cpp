@@ -294,6 +294,16 @@ TEST_CASE("stops, dwells and machine functions in the Fanuc and Heidenhain progr
         "35 END PGM NCPOST MM\n");
 }
 
+TEST_CASE("after a stop the spindle and coolant start before a dwell (its run-up), not after it", "[stop][post]") {
+  const std::string cl = "UNITS/MM\nLOADTL/1\nSPINDL/RPM,2000,CCLW\nCOOLNT/MIST\nRAPID\nGOTO/0,0,10\nSTOP\nDELAY/1.5\n"
+                         "FEDRAT/MMPM,300\nGOTO/0,0,-1\nFINI\n";
+  CHECK_THAT(post_text(cl, request("fanuc")),
+             Catch::Contains("G0 X0.0000 Y0.0000 Z90.0000 A0.0000 C0.0000\nM0\nS2000 M4\nM7\nG4 P1500\nG94 G1 Z79.0000 F300.0\n"));
+  CHECK_THAT(post_text(cl, request("heidenhain")),
+             Catch::Contains("FMAX\n10 M0\n11 TOOL CALL Z S2000\n12 M4\n13 M7\n14 CYCL DEF 9.0 DWELL TIME\n"
+                             "15 CYCL DEF 9.1 DWELL 1.500\n16 L Z+79.0000 F300\n"));
+}
+
 TEST_CASE("G-code M0 (Fusion manual tool change) posted: the stop, then the program's own spindle start", "[stop][post]") {
   const std::string nc =
       "%\nO0004\nG90 G94 G17\nG21\n(2D Contour)\nM0\n(MANUAL TOOL CHANGE TO T14)\nS6000 M3\nG54\nG0 X-1.3 Y-4.85\nZ15\n"
