@@ -398,7 +398,7 @@ TEST_CASE("dialect files: [program] stop and optional_stop are data, and never e
     parse_dialect(test::replaced(fanuc, "stop = [\"M0\"]", "stop = []"), "mine.toml");
     FAIL("an empty stop was accepted");
   } catch (const InputError& e) {
-    CHECK_THAT(e.what(), Catch::StartsWith("mine.toml:15:8: stop in [program]: expected at least one block"));
+    CHECK_THAT(e.what(), Catch::StartsWith("mine.toml:12:8: stop in [program]: expected at least one block"));
   }
   try {
     parse_dialect(test::replaced(fanuc, "optional_stop = [\"M1\"]", "optional_stop = [\"M1 {tool}\"]"), "mine.toml");
