@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Meaning of APT statements: units, motions, feeds, tool, spindle, coolant, circles, cycles,
-// comments. Unknown statements become Unsupported records with a notice; they never abort.
+// Meaning of APT statements: units, motions, feeds, tool, spindle, coolant, stops, dwells,
+// circles, cycles, comments. Unknown statements become Unsupported records with a notice.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -20,6 +20,15 @@ namespace {
 constexpr double kMaxNurbsOrder = 1000.0;
 
 constexpr double kMmPerInch = 25.4;
+constexpr double kMmPerMetre = 1000.0;   // SPINDL/v,SMM: v in m/min
+constexpr double kMmPerFoot = 304.8;     // SPINDL/v,SFM: v in ft/min
+constexpr double kSecondsPerMinute = 60.0;
+constexpr double kMaxDwellSeconds = 86400.0;  // DELAY: a day; anything longer is a slip
+constexpr double kMaxRpm = 1e6;               // a surface speed giving more is a slip (units, diameter)
+
+/// The M functions by number (AUXFUN/n) that mean the same on every control.
+enum class AuxFunction { stop = 0, optional_stop = 1, spindle_cw = 3, spindle_ccw = 4, spindle_off = 5, mist = 7,
+                         flood = 8, coolant_off = 9 };
 
 bool has_word(const AptStatement& st, const char* w) {
   for (const auto& a : st.arguments)
@@ -92,6 +101,10 @@ struct AptReader::State {
   bool have_position = false;     ///< a motion has set `position`
   bool any_statement = false;
   bool last_was_end = false;      ///< the last statement was FINI, END or END-OF-PATH
+  std::optional<double> cutter_diameter_mm;  ///< of the last CUTTER/d,...
+  Location cutter_where;
+  double spindle_rpm = 0.0;       ///< the speed of the last SPINDL that gave one (0: none yet)
+  bool spindle_turning = false;   ///< the last spindle statement turns it
   /// A 6-value CIRCLE (radius taken from the start point): the next motion must end on it.
   struct ArcCheck {
     Location where;
@@ -446,7 +459,7 @@ struct AptReader::State {
 
   void apply_statement(const AptStatement& st, const std::string& text) {
     if (apply_motion_word(st) || apply_modal_setting(st, text) || apply_machine_function(st, text) ||
-        apply_geometry_record(st, text) || apply_text_record(st, text))
+        apply_program_function(st, text) || apply_geometry_record(st, text) || apply_text_record(st, text))
       return;
     notices.push_back(fmt::format("{}:{}:{}: '{}' is not acted on; passed through as a comment", file, st.where.line,
                                   st.where.column, st.major));
@@ -495,7 +508,7 @@ struct AptReader::State {
   /// SPINDL, COOLNT, LOADTL / LOAD/TOOL, CUTCOM.
   bool apply_machine_function(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
-    if (w == "SPINDL") pending.push_back(spindle(st));
+    if (w == "SPINDL") pending.push_back(spindle(st, text));
     else if (w == "COOLNT") pending.push_back(coolant(st));
     else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) pending.push_back(tool_change(st, text));
     else if (w == "CUTCOM") pending.push_back(cutter_comp(st, text));
@@ -503,14 +516,46 @@ struct AptReader::State {
     return true;
   }
 
-  Spindle spindle(const AptStatement& st) const {
+  /// SPINDL/[RPM,]n,CLW|CCLW, SPINDL/OFF, or a surface speed SPINDL/v,SMM|SFM,... (turned into rpm
+  /// with the CUTTER diameter).
+  Spindle spindle(const AptStatement& st, const std::string& text) {
     Spindle s;
     s.where = st.where;
     if (has_word(st, "OFF")) s.direction = Spindle::Direction::off;
     else if (has_word(st, "CCLW")) s.direction = Spindle::Direction::ccw;
     const auto v = numbers_of(st);
-    if (!v.empty()) s.rpm = v[0];
+    const bool smm = has_word(st, "SMM"), sfm = has_word(st, "SFM");
+    if (!v.empty()) s.rpm = smm || sfm ? surface_speed_rpm(st, text, v[0], smm ? kMmPerMetre : kMmPerFoot) : v[0];
+    spindle_turning = s.direction != Spindle::Direction::off;
+    if (s.rpm > 0.0) spindle_rpm = s.rpm;
     return s;
+  }
+
+  /// The whole rpm of the surface speed `v` (m/min or ft/min: `mm_per_unit`) at the CUTTER
+  /// diameter: n = v * mm_per_unit / (pi * d_mm).
+  double surface_speed_rpm(const AptStatement& st, const std::string& text, double v, double mm_per_unit) {
+    const char* unit = mm_per_unit == kMmPerMetre ? "SMM" : "SFM";
+    if (!cutter_diameter_mm)
+      fail(st.where, fmt::format("SPINDL/{:g},{}: surface speed needs the tool diameter (CUTTER/...): give CUTTER/d "
+                                 "before it, or the speed in rpm (SPINDL/RPM,n)", v, unit), echo_of(text));
+    if (!(v > 0.0)) fail(st.where, fmt::format("SPINDL: the surface speed must be positive, got {:g} {}", v, unit), echo_of(text));
+    const double rpm = std::round(v * mm_per_unit / (kPi * *cutter_diameter_mm));
+    if (!(rpm >= 1.0 && rpm <= kMaxRpm))
+      fail(st.where, fmt::format("SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is {:.6g} rpm (expected 1 to "
+                                 "{:g}): check the speed and the CUTTER diameter", v, unit, *cutter_diameter_mm,
+                                 cutter_where.line, rpm, kMaxRpm), echo_of(text));
+    notices.push_back(fmt::format("{}:{}:{}: SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is posted as {:.0f} rpm",
+                                  file, st.where.line, st.where.column, v, unit, *cutter_diameter_mm, cutter_where.line, rpm));
+    return rpm;
+  }
+
+  /// CUTTER/d[,r,...]: the diameter, for a surface speed; kept as a comment.
+  void cutter(const AptStatement& st) {
+    const auto v = numbers_of(st);
+    if (!v.empty() && v[0] > 0.0 && v[0] * scale <= kMaxCoordinateMm) {
+      cutter_diameter_mm = v[0] * scale;
+      cutter_where = st.where;
+    }
   }
 
   static Coolant coolant(const AptStatement& st) {
@@ -542,6 +587,83 @@ struct AptReader::State {
     const auto v = numbers_of(st);
     if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
     return c;
+  }
+
+  /// STOP, OPSTOP, DELAY, AUXFUN, PREFUN.
+  bool apply_program_function(const AptStatement& st, const std::string& text) {
+    const std::string& w = st.major;
+    if (w == "STOP" || w == "OPSTOP") pending.push_back(Stop{st.where, w == "OPSTOP", operator_message(st)});
+    else if (w == "DELAY") pending.push_back(delay(st, text));
+    else if (w == "AUXFUN") pending.push_back(aux_function(st, text));
+    else if (w == "PREFUN")
+      fail(st.where, fmt::format("PREFUN/{} (a G function by number) is not posted: its meaning depends on the control; "
+                                 "write the APT statement it stands for, or remove it where the machine needs none",
+                                 st.raw_arguments), echo_of(text));
+    else return false;
+    return true;
+  }
+
+  /// The text of STOP/(text) or STOP/text, without the parentheses ("" for STOP alone).
+  static std::string operator_message(const AptStatement& st) {
+    std::string t = st.raw_arguments;
+    if (t.size() >= 2 && t.front() == '(' && t.back() == ')') t = t.substr(1, t.size() - 2);
+    const auto b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
+    return b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
+  }
+
+  /// DELAY/t (seconds) or DELAY/REV,n (spindle revolutions at the speed in force).
+  Dwell delay(const AptStatement& st, const std::string& text) {
+    const auto v = numbers_of(st);
+    const bool revolutions = has_word(st, "REV");
+    if (v.size() != 1 || st.arguments.size() != (revolutions ? 2u : 1u))
+      fail(st.where, "DELAY expects a time in seconds (DELAY/t) or in spindle revolutions (DELAY/REV,n)", echo_of(text));
+    double seconds = v[0];
+    if (revolutions) {
+      if (!spindle_turning || !(spindle_rpm > 0.0))
+        fail(st.where, "DELAY/REV: a dwell in spindle revolutions needs the spindle turning at a known speed (SPINDL/n "
+                       "before it); give the dwell in seconds (DELAY/t)", echo_of(text));
+      seconds = v[0] * kSecondsPerMinute / spindle_rpm;
+    }
+    if (!(seconds >= 0.0 && seconds <= kMaxDwellSeconds))
+      fail(st.where, fmt::format("DELAY: expected a dwell from 0 to {:g} s, got {:g} s", kMaxDwellSeconds, seconds),
+           echo_of(text));
+    if (revolutions)
+      notices.push_back(fmt::format("{}:{}:{}: DELAY/REV,{:g}: {:g} revolutions at {:g} rpm are posted as a dwell of {:.3f} s",
+                                    file, st.where.line, st.where.column, v[0], v[0], spindle_rpm, seconds));
+    return Dwell{st.where, seconds};
+  }
+
+  /// AUXFUN/n: the M functions with one meaning on every control (AuxFunction) as records; any
+  /// other is refused (its meaning is the machine's own).
+  Record aux_function(const AptStatement& st, const std::string& text) {
+    const auto v = numbers_of(st);
+    if (v.size() != 1 || st.arguments.size() != 1 || v[0] != std::floor(v[0]) || !(v[0] >= 0.0 && v[0] <= 9999.0))
+      fail(st.where, "AUXFUN expects one M function number (AUXFUN/n)", echo_of(text));
+    const int n = static_cast<int>(v[0]);
+    switch (static_cast<AuxFunction>(n)) {
+      case AuxFunction::stop: return Stop{st.where, false, {}};
+      case AuxFunction::optional_stop: return Stop{st.where, true, {}};
+      case AuxFunction::spindle_cw:
+      case AuxFunction::spindle_ccw: return aux_spindle(st, text, n);
+      case AuxFunction::spindle_off:
+        spindle_turning = false;
+        return Spindle{st.where, Spindle::Direction::off, 0.0};
+      case AuxFunction::mist: return Coolant{st.where, true, "MIST"};
+      case AuxFunction::flood: return Coolant{st.where, true, "FLOOD"};
+      case AuxFunction::coolant_off: return Coolant{st.where, false, "OFF"};
+    }
+    fail(st.where, fmt::format("AUXFUN/{} (M{}) is not posted: its meaning depends on the machine (ncpost writes AUXFUN/0, "
+                               "1, 3, 4, 5, 7, 8, 9); write the APT statement it stands for (COOLNT/..., SPINDL/..., "
+                               "LOADTL/...), or remove it where the machine needs none", n, n), echo_of(text));
+  }
+
+  /// AUXFUN/3 or /4: the spindle on at the speed of the last SPINDL.
+  Spindle aux_spindle(const AptStatement& st, const std::string& text, int n) {
+    if (!(spindle_rpm > 0.0))
+      fail(st.where, fmt::format("AUXFUN/{} (M{}, spindle on) before any spindle speed: give SPINDL/n,{} instead", n, n,
+                                 n == 3 ? "CLW" : "CCLW"), echo_of(text));
+    spindle_turning = true;
+    return Spindle{st.where, n == 3 ? Spindle::Direction::cw : Spindle::Direction::ccw, spindle_rpm};
   }
 
   /// CIRCLE, CYCLE, NURBS (KNOT, CNTRL), MSYS and the ends (END-OF-PATH, END, FINI).
@@ -579,6 +701,7 @@ struct AptReader::State {
       comment("PARTNO " + rest);
     } else if (w == "CSYS" || w == "TLDATA" || w == "CUTTER" || w == "TOOLNO" || w == "PAINT" || w == "MACHIN" ||
                w == "CLRSRF" || w == "SELCTL") {
+      if (w == "CUTTER") cutter(st);
       if (w != "PAINT") comment(w + (st.has_slash ? "/" + st.raw_arguments : ""));
     } else {
       return false;

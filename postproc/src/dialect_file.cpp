@@ -288,6 +288,14 @@ void read_tilted_plane(const Section& s, Dialect& d) {
 
 }  // namespace
 
+/// A program stop's blocks (`stop`, `optional_stop` of [program]): optional, `blocks` keeps its
+/// default when absent; an empty list is refused (the machine would not stop where the CAM says).
+void read_stop(const Section& program, const char* key, std::vector<std::string>& blocks) {
+  if (!program.has(key)) return;
+  blocks = program.blocks(key, {});
+  if (blocks.empty()) throw program.wrong(program.node(key), key, "at least one block (a program that stops nowhere is not the CAM's program)");
+}
+
 Dialect parse_dialect(const std::string& text, const std::string& file) {
   toml::table root;
   try {
@@ -311,14 +319,15 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   if (d.name.empty()) throw head.wrong(head.node("name"), "name", "a name");
 
   const Section program(file, root, "program");
-  program.known({"percent_framing", "start", "end", "stop"});
+  program.known({"percent_framing", "start", "end", "stop", "optional_stop"});
   d.percent_framing = program.boolean("percent_framing");
   d.program_start = program.blocks("start", {"{program}", "{comments}"});
   for (const auto& b : d.program_start)
     if (b != "{comments}" && b.find("{comments}") != std::string::npos)
       throw program.wrong(program.node("start"), "start", "\"{comments}\" as an entry of its own");
   d.program_end = program.blocks("end", {"{program}"});
-  if (program.has("stop")) d.program_stop = program.blocks("stop", {});  // optional: M0 when absent
+  read_stop(program, "stop", d.program_stop);  // optional: M0 when absent
+  read_stop(program, "optional_stop", d.program_optional_stop);  // optional: M1 when absent
 
   read_blocks(Section(file, root, "blocks"), d);
   read_motion(Section(file, root, "motion"), d);

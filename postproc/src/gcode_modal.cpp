@@ -815,12 +815,14 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   fx.arc = outcome.arc;
 }
 
-// M2/M30 end the program; M0, M1, M60 are passed through
+// M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 is passed through
 void Interpreter::apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx) {
   const Code& m_stop = codes.m_stop;
   if (m_stop.code10 == 2 || m_stop.code10 == 30) {
     fx.program_end = true;
     state_.ended = true;
+  } else if (m_stop.code10 == 0 || m_stop.code10 == 1) {
+    fx.after_motion.push_back(cl::Stop{cx.at(m_stop.column), m_stop.code10 == 1, {}});
   } else if (m_stop.code10 >= 0) {
     const int c = m_stop.code10;
     fx.after_motion.push_back(cl::Unsupported{cx.at(m_stop.column), fmt::format("M{} (program stop)", c)});

@@ -89,7 +89,8 @@ class Poster {
   static bool passes(const cl::Record& r) {
     return std::holds_alternative<cl::Feed>(r) || std::holds_alternative<cl::Spindle>(r) ||
            std::holds_alternative<cl::Coolant>(r) || std::holds_alternative<cl::Comment>(r) ||
-           std::holds_alternative<cl::Unsupported>(r) || std::holds_alternative<cl::Dwell>(r);
+           std::holds_alternative<cl::Unsupported>(r) || std::holds_alternative<cl::Dwell>(r) ||
+           std::holds_alternative<cl::Stop>(r);
   }
 
   /// True when `item` (read from the input, not planned yet) opens a run of feed motions to plan:
@@ -254,6 +255,7 @@ class Poster {
     ++summary_.motions_in;
     if (options_.progress && summary_.motions_in % 4096 == 0) options_.progress(summary_.motions_in);
     const bool rapid = m.rapid || m.from;
+    records_.resume();  // the spindle and coolant a program stop turned off
     update_plane(m, rapid);
     check_comp(m);
     if (pending_circle_) {
@@ -330,8 +332,12 @@ class Poster {
   void on(const cl::Comment& c) { records_.comment(c); }
   void on(const cl::Unsupported& u) { records_.unsupported(u); }
   void on(const cl::Dwell& d) {
+    records_.resume();  // a dwell after a stop waits with the spindle turning (it may be its run-up)
     for (const std::string& b : dwell_blocks(writer_.dialect(), d.seconds)) writer_.block(b);
   }
+  /// A program stop moves nothing: it is written where it stands, also in a tilted work plane (the
+  /// plane, like every modal frame, holds across M0/M1 on the controls of the dialects).
+  void on(const cl::Stop& s) { records_.stop(s); }
   void on(const cl::End&) {}
 
   // ---- motion ----------------------------------------------------------------------------

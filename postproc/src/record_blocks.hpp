@@ -2,8 +2,8 @@
 #pragma once
 // The CL records that the serial post (post.cpp) and the TRR-XY post (trr_post.cpp) turn into NC
 // blocks alike: the feed they keep (mm/min; a feed per revolution times the spindle speed), the
-// spindle (speed and direction), coolant and comments. Motion, tool changes and cycles are each
-// post's own.
+// spindle (speed and direction), coolant, comments and program stops. Motion, tool changes and
+// cycles are each post's own.
 #include <fmt/format.h>
 
 #include <optional>
@@ -30,7 +30,9 @@ class RecordBlocks {
 
   /// The dialect's spindle words (SpindleWords; a held tool call takes the speed).
   void spindle(const cl::Spindle& s) {
-    if (s.direction == cl::Spindle::Direction::off) {
+    restart_spindle_ = false;  // the program says what the spindle does after a stop
+    spindle_turning_ = s.direction != cl::Spindle::Direction::off;
+    if (!spindle_turning_) {
       writer_.spindle_stop();
       return;
     }
@@ -41,8 +43,29 @@ class RecordBlocks {
 
   /// The dialect's coolant words (CoolantWords).
   void coolant(const cl::Coolant& c) {
-    const CoolantWords& w = writer_.dialect().coolant;
-    writer_.blocks(!c.on ? w.off : c.mode == "MIST" ? w.mist : w.flood);
+    restart_coolant_ = false;
+    coolant_on_.reset();
+    if (c.on) coolant_on_ = c;
+    write_coolant(c);
+  }
+
+  /// A program stop: the dialect's stop (or optional-stop) blocks, the operator's message as a
+  /// comment on the last. M0/M1 stop the spindle and the coolant on many controls (Heidenhain
+  /// always): the ones on before the stop start again before the next motion or dwell (`resume`),
+  /// unless the program itself says what they do first.
+  void stop(const cl::Stop& s) {
+    const Dialect& d = writer_.dialect();
+    const std::vector<std::string>& list = s.optional ? d.program_optional_stop : d.program_stop;
+    for (std::size_t i = 0; i < list.size(); ++i) writer_.block(list[i], i + 1 == list.size() ? s.text : std::string());
+    restart_spindle_ = spindle_turning_;
+    restart_coolant_ = coolant_on_.has_value();
+  }
+
+  /// Before a motion or a dwell: the spindle and coolant that a stop may have turned off, on again.
+  void resume() {
+    if (restart_spindle_) writer_.spindle_on(spindle_rpm_, spindle_ccw_);
+    if (restart_coolant_) write_coolant(*coolant_on_);
+    restart_spindle_ = restart_coolant_ = false;
   }
   void comment(const cl::Comment& c) {
     if (!c.text.empty()) writer_.comment(c.text);
@@ -71,11 +94,20 @@ class RecordBlocks {
   }
 
  private:
+  void write_coolant(const cl::Coolant& c) {
+    const CoolantWords& w = writer_.dialect().coolant;
+    writer_.blocks(!c.on ? w.off : c.mode == "MIST" ? w.mist : w.flood);
+  }
+
   NcWriter& writer_;
   double feed_mm_min_ = 0.0;
   bool given_ = false;
   double spindle_rpm_ = 0.0;
   bool spindle_ccw_ = false;
+  bool spindle_turning_ = false;           ///< the last spindle record turns it
+  std::optional<cl::Coolant> coolant_on_;  ///< the coolant in force (none: off)
+  bool restart_spindle_ = false;           ///< a stop came since the spindle's last record
+  bool restart_coolant_ = false;
 };
 
 }  // namespace ncpost::detail

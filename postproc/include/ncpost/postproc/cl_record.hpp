@@ -126,10 +126,20 @@ struct Unsupported {
   std::string text;
 };
 
-/// A dwell: the tool stands still for `seconds` (G-code G4 with an unambiguous time).
+/// A dwell: the tool stands still for `seconds` (G-code G4 with an unambiguous time, APT DELAY).
 struct Dwell {
   Location where;
   double seconds = 0.0;
+};
+
+/// A program stop after the motion before it (APT STOP, OPSTOP, AUXFUN/0, AUXFUN/1; G-code M0,
+/// M1): the machine stands until the operator presses cycle start. `optional`: only where the
+/// control's optional-stop switch is on (OPSTOP, M1). `text`: a message for the operator
+/// (CATIA STOP/(text)), "" when none.
+struct Stop {
+  Location where;
+  bool optional = false;
+  std::string text;
 };
 
 /// END-OF-PATH, FINI, END: the end of an operation or of the program.
@@ -139,7 +149,7 @@ struct End {
 };
 
 using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, LengthOffset, Circle, Cycle, CutterComp, Comment,
-                            Unsupported, Dwell, End>;
+                            Unsupported, Dwell, Stop, End>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {

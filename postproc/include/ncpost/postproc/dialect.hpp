@@ -114,6 +114,7 @@ struct Dialect {
   std::vector<std::string> program_start{"{comments}", "G90 G21 G94 G17 G40 G49 G80"};
   std::vector<std::string> program_end{"M30"};
   std::vector<std::string> program_stop{"M0"};  ///< a program stop (the operator resumes with cycle start)
+  std::vector<std::string> program_optional_stop{"M1"};  ///< a stop only where the optional-stop switch is on
   std::vector<std::string> tool_call{"T{tool} M6"};  ///< blocks of a tool change
   std::vector<std::string> tool_length_on;  ///< after the tool call without RTCP (empty: the call does it)
   std::vector<std::string> rtcp_on;         ///< RTCP/TCPM on with the tool's length

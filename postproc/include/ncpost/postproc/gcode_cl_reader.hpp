@@ -16,8 +16,8 @@
 // Records: comments -> cl::Comment; F under G94/G95 -> cl::Feed (mm/min or mm/rev); S/M3/M4/M5 ->
 // cl::Spindle; M6 -> cl::ToolChange (the last T); M7/M8/M9 -> cl::Coolant; G0 -> Motion with
 // rapid; G1 -> Motion; under G93 motions carry inverse_time and feed (1/min); M2/M30 -> cl::End
-// (the rest of the file is ignored, as controls do); dwell, G28/G30, M0/M1 and unknown M codes ->
-// cl::Unsupported with a notice.
+// (the rest of the file is ignored, as controls do); M0/M1 -> cl::Stop (after the block's motion);
+// dwell, G28/G30, M60 and unknown M codes -> cl::Unsupported with a notice.
 // Arcs (G2/G3, also helical, with P turns) are expanded into points: equal angle steps with a
 // chord error <= `arc_chord_tolerance_mm` (1 µm by default), interpolated in program space (the
 // control's motion) and then mapped like any motion; under G93 each of the n segments gets
