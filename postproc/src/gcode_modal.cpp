@@ -520,16 +520,23 @@ void Interpreter::apply_tool_length(const Context& cx, const Words& w, const Cod
   fx.length_offset = cl::LengthOffset{cx.at(w.col('H')), static_cast<int>(h)};
 }
 
-// Once a program has used a tool length, a motion after G49 (or H0) that depends on it is refused:
-// a cut, or a rapid with Z (Z names the spindle's gauge point then, the post the tool tip). Rapids
-// in X, Y and the rotary axes (positioning between tools, before the next G43) are taken as written.
-void Interpreter::check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column) const {
+// Once a program has used a tool length, a cut after G49 (or H0) is refused: its Z would name the
+// spindle's gauge point, the post's the tool tip. Rapids (positioning between tools, before the
+// next G43) are taken as the rapids before the first G43 are, the tip where the words say — for a
+// Z rapid that is the tool length above where the source would put it — with a notice.
+void Interpreter::check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column) {
   if (state_.length != ModalState::Length::cancelled) return;
-  if (motion == MotionMode::rapid && !w.has('Z')) return;
-  cx.fail(column, fmt::format("{} with the tool length cancelled (G49 or H0 at line {}): the post places the tool tip "
-                              "with the tool's length; program G43 H.. before it, or move in machine coordinates "
-                              "(G28, G53)", motion == MotionMode::rapid ? "a rapid in Z" : "a cutting motion",
-                              state_.length_cancelled_line));
+  if (motion == MotionMode::rapid) {
+    if (w.has('Z'))
+      notice_once("rapid-after-G49", cx.line_number, column,
+                  fmt::format("a rapid in Z with the tool length cancelled (G49 or H0 at line {}) is posted with the "
+                              "length in force: the tool tip at the programmed Z (a tool length above the spindle's "
+                              "gauge point there)", state_.length_cancelled_line));
+    return;
+  }
+  cx.fail(column, fmt::format("a cutting motion with the tool length cancelled (G49 or H0 at line {}): the post places "
+                              "the tool tip with the tool's length; program G43 H.. before it, or move in machine "
+                              "coordinates (G28, G53)", state_.length_cancelled_line));
 }
 
 // tool length and RTCP/TCPM: G43.4/G43.5/G234 ... G43/G49, M128/M129, M428/M429, TRAORI/TRAFOOF

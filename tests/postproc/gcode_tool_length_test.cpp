@@ -2,9 +2,10 @@
 // The tool length of G-code input: `G43 H<n>` names the register whose length the program cuts
 // with. It was rewritten to the tool's number (`T3 ... G43 H23` posted as `G43 H3`: Z off by the
 // difference of two lengths) or dropped (a program without a tool change posted under the
-// header's G49). G49 cancels the length: a motion after it in the work's coordinates is refused.
+// header's G49). G49 cancels the length: a cut after it in the work's coordinates is refused.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 #include "cl_records.hpp"
@@ -95,12 +96,23 @@ TEST_CASE("G-code: G43 H is a length record after the tool change; H0 and G49 ca
   CHECK(length < motion);
   // G49 in the safety line before any G43 leaves the motions as they were
   CHECK(test::only<cl::Motion>(read_all("G21 G90 G40 G49 G80\nG0 X10. Y10. Z50. A0 C0\nM30\n")).size() == 1);
-  // after a G43, G49 (or G43 H0) cancels the length: a cut, or a rapid in Z, is refused
+  // after a G43, G49 (or G43 H0) cancels the length: a cut is refused
   const std::string head = "G21 G90\nT1 M6\nG0 G43 H1 Z50. X0 Y0 A0 C0\nG1 Z-1. F100.\nG0 Z50.\nG49\n";
   CHECK_THAT(input_error_of([&] { read_all(head + "G1 X10. Z-1.\nM30\n"); }),
              Catch::Contains("t.nc:7:4: a cutting motion with the tool length cancelled (G49 or H0 at line 6)"));
-  CHECK_THAT(input_error_of([&] { read_all(head + "G0 Z10.\nM30\n"); }),
-             Catch::Contains("t.nc:7:4: a rapid in Z with the tool length cancelled (G49 or H0 at line 6)"));
+  // a rapid in Z is posted as the rapids before the first G43 are (the tip at Z), with a notice
+  std::vector<std::string> notices;
+  {
+    std::istringstream in(head + "G0 Z60.\nM30\n");
+    gcode::GcodeClReader r(in, "t.nc", ac_machine(), Setup{});
+    std::vector<cl::Record> rs;
+    while (auto x = r.next()) rs.push_back(std::move(*x));
+    notices = r.take_notices();
+    CHECK(test::only<cl::Motion>(rs).back().point.tip_mm.z() == Approx(60.0));
+  }
+  CHECK(std::any_of(notices.begin(), notices.end(), [](const std::string& n) {
+    return n.find("t.nc:7:4: a rapid in Z with the tool length cancelled (G49 or H0 at line 6) is posted") != std::string::npos;
+  }));
   CHECK_THAT(input_error_of([&] { read_all(head + "G81 X5. Y5. Z-3. R2. F50.\nM30\n"); }),
              Catch::Contains("t.nc:7:5: a cutting motion with the tool length cancelled"));
   CHECK_THAT(input_error_of([&] { read_all("G21 G90\nG0 G43 H1 Z50. X0 Y0 A0 C0\nG43 H0\nG1 Z10. F100.\nM30\n"); }),

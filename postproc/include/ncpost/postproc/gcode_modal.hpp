@@ -150,7 +150,7 @@ class Interpreter {
   void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
   void apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_rtcp(const Context& cx, const Codes& codes);
-  void check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column) const;
+  void check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column);
   void apply_motion_mode(const Codes& codes, BlockEffect& fx);
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
