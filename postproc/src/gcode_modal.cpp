@@ -822,7 +822,8 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   fx.arc = outcome.arc;
 }
 
-// M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 is passed through
+// M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 (a pallet
+// change with a stop) is refused: dropped, the rest of the program would cut on the wrong pallet
 void Interpreter::apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx) {
   const Code& m_stop = codes.m_stop;
   if (m_stop.code10 == 2 || m_stop.code10 == 30) {
@@ -831,10 +832,9 @@ void Interpreter::apply_stop(const Context& cx, const Codes& codes, BlockEffect&
   } else if (m_stop.code10 == 0 || m_stop.code10 == 1) {
     fx.after_motion.push_back(cl::Stop{cx.at(m_stop.column), m_stop.code10 == 1, {}});
   } else if (m_stop.code10 >= 0) {
-    const int c = m_stop.code10;
-    fx.after_motion.push_back(cl::Unsupported{cx.at(m_stop.column), fmt::format("M{} (program stop)", c)});
-    notice_once(fmt::format("M{}", c), cx.line_number, m_stop.column,
-                fmt::format("M{} (program stop) is passed through as a comment", c));
+    cx.fail(m_stop.column, fmt::format("M{} (pallet change and program stop) is not supported: without it the rest "
+                                       "of the program would cut on the wrong pallet; post each pallet's part apart",
+                                       m_stop.code10));
   }
 }
 

@@ -167,6 +167,14 @@ TEST_CASE("gcode control: one work offset per program; a second after a motion i
              Catch::Contains("G56: a second work offset (the program moved in the control's active offset before it)"));
 }
 
+// M60 (pallet change + stop) was a comment with a notice: the next pallet's cuts on this one
+TEST_CASE("gcode control: M60 is refused naming the pallet change") {
+  const InputError e = input_error("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG0 Z50 M60\nM30\n");
+  CHECK(e.where().line == 3);
+  CHECK(e.where().column == 8);
+  CHECK_THAT(e.detail(), Catch::Contains("M60 (pallet change and program stop) is not supported"));
+}
+
 TEST_CASE("gcode control: blocks with '/' are left out with a notice") {
   const Read r = read_all("G21 G90\nG0 X0 Y0 Z10 A0 C0\n/G1 Z-5 F100\n/M0\nG1 X5 F100\nM30\n");
   const auto ms = only<cl::Motion>(r.records);

@@ -106,7 +106,7 @@ struct BlockEffect {
   std::optional<double> dwell_s;           ///< G4: the dwell time (s)
   std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
   bool inverse_time = false;               ///< G93 active for this motion
-  std::vector<cl::Record> after_motion;   ///< M0/M1 (cl::Stop), M60 and unknown M codes (passed through)
+  std::vector<cl::Record> after_motion;   ///< M0/M1 (cl::Stop) and unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30
   /// A canned-cycle block: the cycle of this hole (distances from the motion's end, the hole at
   /// its R plane, along machine Z), written before the motion; `cycle_off` ends a cycle first.
