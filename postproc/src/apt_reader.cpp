@@ -23,7 +23,6 @@ constexpr double kMmPerInch = 25.4;
 constexpr double kMmPerMetre = 1000.0;   // SPINDL/v,SMM: v in m/min
 constexpr double kMmPerFoot = 304.8;     // SPINDL/v,SFM: v in ft/min
 constexpr double kSecondsPerMinute = 60.0;
-constexpr double kMaxDwellSeconds = 86400.0;  // DELAY: a day; anything longer is a slip
 constexpr double kMaxRpm = 1e6;               // a surface speed giving more is a slip (units, diameter)
 
 /// The M functions by number (AUXFUN/n) that mean the same on every control.

@@ -48,9 +48,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
   go.units_given = options.units_given;
-  go.integer_dwell = options.integer_dwell == cl::ReaderOptions::IntegerDwell::milliseconds ? gcode::IntegerDwell::milliseconds
-                   : options.integer_dwell == cl::ReaderOptions::IntegerDwell::seconds    ? gcode::IntegerDwell::seconds
-                                                                                          : gcode::IntegerDwell::automatic;
+  go.integer_dwell = options.integer_dwell;
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine

@@ -512,7 +512,8 @@ struct GcodeClReader::State {
   bool interpret_block(std::string_view line, int line_number) {
     for (const BlockComment& c : block.comments) {
       before.push_back(cl::Comment{cl::Location{line_number, c.column}, std::string(trim(c.text))});
-      units_evidence.scan_comment(c.text, line_number);
+      if (!options.units_given && !options.default_inch && !interpreter.state().units_programmed)
+        units_evidence.scan_comment(c.text, line_number);  // (units_hint reads it only then)
     }
     interpreter.apply(block, line_number, line, effect);
     observe_units(line);

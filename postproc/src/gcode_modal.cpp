@@ -14,7 +14,7 @@ namespace ncpost::gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr double kMaxDwellSeconds = 86400.0;  // a day: anything longer is a slip
+using cl::kMaxDwellSeconds;
 /// IntegerDwell::automatic: a time without a decimal point from this value on is milliseconds
 /// (as seconds it would be a dwell of minutes); below it, down to 1, both readings are plausible.
 constexpr double kSurelyMillisecondsFrom = 100.0;

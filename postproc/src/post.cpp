@@ -321,7 +321,7 @@ class Poster {
     close_plane();
     length_register_ = l.register_number;
     if (options_.rtcp && !rtcp_on_) return;  // written when RTCP goes on, before the first motion
-    for (const std::string& b : words) writer_.block(with_tool(b, tool_, length_register()));
+    writer_.tool_blocks(words, tool_, length_register());
   }
 
   void on(const cl::Circle& c) { pending_circle_ = c; }

@@ -64,9 +64,9 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.units_given = !o.units.empty();
   ro.allow_unterminated = o.allow_unterminated;
   ro.msys = o.msys == "apply" ? cl::ReaderOptions::Msys::apply : cl::ReaderOptions::Msys::ignore;
-  ro.integer_dwell = o.dwell_p == "ms" ? cl::ReaderOptions::IntegerDwell::milliseconds
-                   : o.dwell_p == "s"  ? cl::ReaderOptions::IntegerDwell::seconds
-                                       : cl::ReaderOptions::IntegerDwell::automatic;
+  ro.integer_dwell = o.dwell_p == "ms" ? cl::IntegerDwell::milliseconds
+                   : o.dwell_p == "s"  ? cl::IntegerDwell::seconds
+                                       : cl::IntegerDwell::automatic;
   return ro;
 }
 

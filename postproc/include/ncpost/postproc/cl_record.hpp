@@ -126,6 +126,9 @@ struct Unsupported {
   std::string text;
 };
 
+/// Longest dwell accepted from any reader (s): a day; anything longer is a slip.
+inline constexpr double kMaxDwellSeconds = 86400.0;
+
 /// A dwell: the tool stands still for `seconds` (G-code G4 with an unambiguous time, APT DELAY).
 struct Dwell {
   Location where;
@@ -156,6 +159,12 @@ inline Location location_of(const Record& r) {
   return std::visit([](const auto& x) { return x.where; }, r);
 }
 
+/// G-code: the unit of a dwell time written without a decimal point (G4 P or X, the P of
+/// G82/G89): milliseconds on Fanuc and Haas, seconds on LinuxCNC. A time with a decimal point is
+/// seconds everywhere. `automatic` reads 100 and more as milliseconds (as seconds it would be a
+/// dwell of minutes), 0 as no dwell, and refuses 1 to 99, which both readings make plausible.
+enum class IntegerDwell { automatic, milliseconds, seconds };
+
 /// Options of every CL reader.
 struct ReaderOptions {
   bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
@@ -167,10 +176,7 @@ struct ReaderOptions {
   /// changes between operations is refused); `apply` maps every position and axis through the
   /// current MSYS into the absolute frame, W = the absolute frame.
   enum class Msys { ignore, apply } msys = Msys::ignore;
-  /// G-code: the unit of a dwell time written without a decimal point (G4 P, G82/G89 P):
-  /// milliseconds (Fanuc, Haas) or seconds (LinuxCNC); `automatic` guesses only where one reading
-  /// is absurd and refuses the rest (gcode::IntegerDwell).
-  enum class IntegerDwell { automatic, milliseconds, seconds } integer_dwell = IntegerDwell::automatic;
+  IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< G-code: the unit of a dwell time without a decimal point
   /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
   double curve_tolerance_mm = 0.01;
 };

@@ -39,12 +39,7 @@ struct CycleModal {
   double initial_z = 0.0;        ///< Z when the cycle mode started (the G98 return level)
 };
 enum class FeedMode { per_minute, inverse_time, per_revolution };
-
-/// The unit of a dwell time written without a decimal point (G4 P or X, the P of G82/G89):
-/// milliseconds on Fanuc and Haas, seconds on LinuxCNC. A time with a decimal point is seconds
-/// everywhere. `automatic` reads 100 and more as milliseconds (as seconds it would be a dwell of
-/// minutes), 0 as no dwell, and refuses 1 to 99, which both readings make plausible.
-enum class IntegerDwell { automatic, milliseconds, seconds };
+using cl::IntegerDwell;  // the unit of a dwell time without a decimal point (cl_record.hpp)
 enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 
 struct ModalState {
