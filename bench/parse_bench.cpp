@@ -128,12 +128,12 @@ Figures repost(const std::string& path, const Machine& m, bool solve_ik) {
   gcode::GcodeClReader reader(in, path, m, Setup{});
   std::FILE* sink = std::fopen("/dev/null", "wb");
   fmt::memory_buffer out;
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   long failures = 0;
   while (auto r = reader.next()) {
     const auto* mo = std::get_if<cl::Motion>(&*r);
     if (!mo) continue;
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     if (solve_ik || !mo->rotary_rad) {
       const IkOutcome ik = solve(m, mo->point, Setup{}, previous);
       if (!ik.ok()) {

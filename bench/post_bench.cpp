@@ -112,7 +112,7 @@ double batch_seconds(const Machine& m, const Setup& setup, const std::string& cl
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<nonlinear::ClBlock> batch;
   ClPoint previous_cl;
-  AxisPosition previous_q;
+  AxisPosition previous_q = home_of(m);
   bool have = false;
   out_blocks = 0;
   auto flush = [&] {

@@ -76,6 +76,28 @@ std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d
   return std::atan2(d.dot(f.cross(t)), f.dot(t));
 }
 
+namespace {
+
+/// One rotary axis (direction d): its rotation keeps the component along d, so the tool axis u
+/// is within reach when u·d = e_z·d; then one angle turns e_z onto u (a head) or u onto e_z (a
+/// table). u along d (and so e_z along d): every angle fits, the axis is free.
+SmallList<RotarySolution, 2> single_axis_solutions(const Axis& axis, const Vec3d& u, double tolerance) {
+  const Vec3d ez = Vec3d::UnitZ();
+  const Vec3d& d = axis.direction;
+  SmallList<RotarySolution, 2> out;
+  if (std::abs(u.dot(d) - ez.dot(d)) > std::sqrt(tolerance)) return out;
+  const double free_tol = 1e-9;
+  const std::optional<double> q = axis.side == Side::tool ? angle_about(d, ez, u, free_tol) : angle_about(d, u, ez, free_tol);
+  RotarySolution s;
+  s.rotary_rad = RotaryAngles::Zero(1);
+  if (q) s.rotary_rad[0] = wrap_pi(*q);
+  else s.free_axis = 0;
+  out.push_back(s);
+  return out;
+}
+
+}  // namespace
+
 SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance) {
   const Vec3d u = axis_W.normalized();
   const Vec3d ez = Vec3d::UnitZ();
@@ -84,6 +106,7 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
     if ((u - ez).norm() <= std::sqrt(tolerance)) out.push_back(RotarySolution{});
     return out;
   }
+  if (m.rotary_count() == 1) return single_axis_solutions(m.rotary(0), u, tolerance);
   const RotaryLayout l = layout_of(m);
   const Vec3d d1 = m.rotary(l.outer).direction;
   const Vec3d d2 = m.rotary(l.inner).direction;
@@ -101,6 +124,7 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   const double free_tol = 1e-9;
   for (const Vec3d& v : vs) {
     RotarySolution s;
+    s.rotary_rad = RotaryAngles::Zero(2);
     std::optional<double> q_inner, q_outer;
     switch (l.kind) {
       case RotaryLayout::table_table:
@@ -125,18 +149,17 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   return out;
 }
 
-Vec3d linear_for(const Machine& m, const Eigen::Vector2d& rotary_rad, const Vec3d& tip_W, const Setup& setup) {
-  AxisPosition q;
-  q.rotary_rad = rotary_rad;
+Vec3d linear_for(const Machine& m, const RotaryAngles& rotary_rad, const Vec3d& tip_W, const Setup& setup) {
+  const AxisPosition q(Vec3d::Zero(), rotary_rad);
   const ChainPose<double> pose = chain_pose<double>(m, q, setup.tool_length_mm, NominalErrors{});
   // With X = Y = Z = 0 the tool tip sits at bed_T_tool·0; the linear axes add (X, Y, Z) to it.
   const Vec3d target = pose.bed_T_table.apply(setup.workpiece_origin_mm + tip_W);
   return target - pose.bed_T_tool.t;
 }
 
-std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::Vector2d& rotary_rad,
-                                                 const Eigen::Vector2d& previous_rad) {
-  AxisPosition q;
+std::optional<AxisPosition> admissible_candidate(const Machine& m, const RotaryAngles& rotary_rad,
+                                                 const RotaryAngles& previous_rad) {
+  AxisPosition q = home_of(m);
   for (int k = 0; k < m.rotary_count(); ++k) {
     const Axis& axis = m.rotary(k);
     const double base = rotary_rad[k];
@@ -154,7 +177,7 @@ std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::
   return q;
 }
 
-std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const Eigen::Vector2d& previous_rad,
+std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const RotaryAngles& previous_rad,
                                               const IkPolicy& policy) {
   std::optional<double> best;
   for (const RotarySolution& s : rotary_solutions(m, axis_W, policy.reach_tolerance)) {
@@ -174,16 +197,17 @@ namespace {
 /// The admissible solutions among the rotary solutions `raw`, best first (only the best with
 /// `best_only`: the linear axes of the others are not computed).
 SmallList<AxisPosition, 2> admissible_of(const Machine& m, const SmallList<RotarySolution, 2>& raw, const ClPoint& cl,
-                                         const Setup& setup, const AxisPosition& previous, bool best_only) {
+                                         const Setup& setup, const AxisPosition& previous_given, bool best_only) {
+  const RotaryAngles previous = rotary_of(previous_given, m.rotary_count());  // AxisPosition{}: home
   SmallList<std::pair<double, AxisPosition>, 2> ranked;
   for (RotarySolution s : raw) {
     if (s.free_axis >= 0) {
       // Singular: keep the free angle, solve the other one for it.
-      s.rotary_rad[s.free_axis] = previous.rotary_rad[s.free_axis];
+      s.rotary_rad[s.free_axis] = previous[s.free_axis];
     }
-    auto candidate = admissible_candidate(m, s.rotary_rad, previous.rotary_rad);
+    auto candidate = admissible_candidate(m, s.rotary_rad, previous);
     if (!candidate) continue;
-    const double cost = (candidate->rotary_rad - previous.rotary_rad).cwiseAbs().sum();
+    const double cost = (candidate->rotary_rad - previous).cwiseAbs().sum();
     ranked.push_back({cost, *candidate});
   }
   // the cheaper first; equal costs (within 1e-12) keep the order of the rotary solutions

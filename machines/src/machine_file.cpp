@@ -15,6 +15,9 @@
 namespace ncpost {
 namespace {
 
+/// Rotary axes the serial chain's closed-form inverse solves (inverse.hpp): 0, 1 or 2.
+constexpr int kMaxSerialRotaryAxes = 2;
+
 using toml_reading::at;
 using toml_reading::reject_unknown_keys;
 
@@ -150,9 +153,10 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
   for (auto& [letter, axis] : by_letter)
     if (axis.is_rotary()) m.axes.push_back(axis);
   assign_chain(m, *chain->value<std::string>(), at(file_name, chain->source()));
-  if (m.rotary_count() != 0 && m.rotary_count() != 2)
+  if (m.rotary_count() > kMaxSerialRotaryAxes)
     throw InputError(at(file_name, axes->source()),
-                     fmt::format("{} rotary axes: a serial machine has none or two", m.rotary_count()));
+                     fmt::format("{} rotary axes: a serial machine has none, one (four-axis) or two (five-axis)",
+                                 m.rotary_count()));
   if (m.rotary_count() == 2 && m.rotary(0).direction.cross(m.rotary(1).direction).norm() < 1e-6)
     throw InputError(at(file_name, axes->source()), "the two rotary axes are parallel: the tool axis cannot be oriented");
   return m;

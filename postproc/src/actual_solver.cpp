@@ -6,7 +6,7 @@ namespace ncpost {
 namespace {
 
 bool same(const AxisPosition& a, const AxisPosition& b) {
-  return a.linear_mm == b.linear_mm && a.rotary_rad == b.rotary_rad;
+  return a == b;
 }
 
 }  // namespace
@@ -98,7 +98,7 @@ IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& pr
   return o;
 }
 
-AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const {
+AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const {
   // programmed angles (G-code input) are the start; the model then moves them as little as it must
   const AxisPosition nominal = nominal_.with_rotary(cl, rotary_rad);
   std::string failure;

@@ -16,14 +16,14 @@ struct Cost {
   }
 };
 
-double travel(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { return (to - from).cwiseAbs().sum(); }
+double travel(const RotaryAngles& from, const RotaryAngles& to) { return (to - from).cwiseAbs().sum(); }
 
 /// Viterbi over the points [begin, end) from `start`; appends the choices to `plan`.
-void plan_window(const Eigen::Vector2d& start, const BranchCandidates& candidates, const ForcedChange& forced,
+void plan_window(const RotaryAngles& start, const BranchCandidates& candidates, const ForcedChange& forced,
                  std::size_t begin, std::size_t end, BranchPlan& plan) {
   std::vector<std::vector<std::size_t>> back(end - begin);
   std::vector<Cost> cost, next;
-  for (const Eigen::Vector2d& c : candidates[begin]) {
+  for (const RotaryAngles& c : candidates[begin]) {
     Cost k;
     k.changes = forced(begin, start, c) ? 1 : 0;
     k.travel_rad = travel(start, c);
@@ -61,13 +61,13 @@ void plan_window(const Eigen::Vector2d& start, const BranchCandidates& candidate
 }
 
 /// Changes and travel of the choices in `plan` from `start`.
-void account(const Eigen::Vector2d& start, const BranchCandidates& candidates, const ForcedChange& forced,
+void account(const RotaryAngles& start, const BranchCandidates& candidates, const ForcedChange& forced,
              BranchPlan& plan) {
-  Eigen::Vector2d at = start;
+  RotaryAngles at = start;
   plan.changes = 0;
   plan.travel_rad = 0.0;
   for (std::size_t i = 0; i < plan.choice.size(); ++i) {
-    const Eigen::Vector2d& c = candidates[i][plan.choice[i]];
+    const RotaryAngles& c = candidates[i][plan.choice[i]];
     plan.changes += forced(i, at, c) ? 1 : 0;
     plan.travel_rad += travel(at, c);
     at = c;
@@ -76,11 +76,11 @@ void account(const Eigen::Vector2d& start, const BranchCandidates& candidates, c
 
 }  // namespace
 
-BranchPlan plan_branches(const Eigen::Vector2d& start_rad, const BranchCandidates& candidates,
+BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
                          const ForcedChange& forced, std::size_t window) {
   assert(window >= 1);
   BranchPlan plan;
-  Eigen::Vector2d start = start_rad;
+  RotaryAngles start = start_rad;
   for (std::size_t begin = 0; begin < candidates.size(); begin += window) {
     const std::size_t end = std::min(candidates.size(), begin + window);
     plan_window(start, candidates, forced, begin, end, plan);
@@ -90,10 +90,10 @@ BranchPlan plan_branches(const Eigen::Vector2d& start_rad, const BranchCandidate
   return plan;
 }
 
-BranchPlan greedy_branches(const Eigen::Vector2d& start_rad, const BranchCandidates& candidates,
+BranchPlan greedy_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
                            const ForcedChange& forced) {
   BranchPlan plan;
-  Eigen::Vector2d at = start_rad;
+  RotaryAngles at = start_rad;
   for (const auto& list : candidates) {
     assert(!list.empty());
     std::size_t best = 0;

@@ -137,11 +137,11 @@ struct GcodeClReader::State {
       locate_words(m, p, rtcp);
       return;
     }
-    AxisPosition q;
+    AxisPosition q = AxisPosition::zero(rotaries());
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
     for (int k = 0; k < rotaries(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
-    if (rotaries() > 0) m.rotary_rad = Eigen::Vector2d(q.rotary_rad);
+    if (rotaries() > 0) m.rotary_rad = q.rotary_rad;
     const Rigidd table_T_tool = nominal_table_T_tool(q);
     m.point.axis = table_T_tool.R.col(2);
     m.point.tip_mm = rtcp ? q.linear_mm : Vec3d(table_T_tool.t - setup.workpiece_origin_mm);
@@ -160,8 +160,8 @@ struct GcodeClReader::State {
                        fmt::format("an RTCP (tool-tip) program on the machine {}, whose words {} are no Cartesian "
                                    "frame: not supported (post a program of machine words)",
                                    machine.name, program_letters(machine, options)));
-    AxisPosition q;
-    for (std::size_t i = 0; i < machine.axes.size() && i < 5; ++i) q[static_cast<int>(i)] = p[i];
+    AxisPosition q = AxisPosition::zero(static_cast<int>(machine.axes.size()) - 3);
+    for (std::size_t i = 0; i < machine.axes.size() && i < p.size(); ++i) q[static_cast<int>(i)] = p[i];
     if (options.check_limits) check_limits(q, false, m.where);
     std::string why;
     const std::optional<ToolPoseT<double>> pose = options.word_forward(q, &why);
@@ -176,6 +176,22 @@ struct GcodeClReader::State {
   // mostly written with 4 decimals (inch posts) where 3 would do for mm, and every position within
   // a 50-unit box (2 inches is 50.8 mm: an inch program read as mm shrinks 25.4 times). A notice.
   long words_4_decimals = 0, words_other_decimals = 0;
+  // A metric design posted in inches: X Y Z words of 3 or 4 decimals (not whole hundredths) that
+  // are whole half-millimetres divided by 25.4 (Y3.937 = 100 mm, Z.9843 = 25 mm), the rounding of
+  // a 4-decimal inch word (0.00005 in = 0.00127 mm) allowed. A millimetre word does that by chance
+  // about once in 170; most of the fine words of a program doing it is an inch program.
+  static constexpr double kMmPerInch = 25.4;
+  static constexpr double kRoundMetricMm = 0.5;
+  static constexpr double kMetricInInchToleranceMm = 0.0015;
+  static constexpr long kMetricInInchMinWords = 5;
+  static constexpr double kMetricInInchShare = 0.6;
+  long words_fine = 0, words_metric_in_inch = 0;
+  struct {
+    char letter = '?';
+    double value = 0.0;
+    int line = 0;
+  } first_metric_in_inch;
+  static bool is_whole(double v, double tolerance = 1e-9) { return std::abs(v - std::round(v)) <= tolerance; }
   Vec3d programmed_lo = Vec3d::Constant(1e300), programmed_hi = Vec3d::Constant(-1e300);
   bool units_hint_given = false;
   bool block_delete_noticed = false;
@@ -190,6 +206,12 @@ struct GcodeClReader::State {
       if (at < line.size() && line[at] == '.')
         while (++at < line.size() && line[at] >= '0' && line[at] <= '9') ++decimals;
       (decimals == 4 ? words_4_decimals : words_other_decimals) += 1;
+      if (decimals >= 3 && !is_whole(w.value * 100.0)) {
+        ++words_fine;
+        if (is_whole(w.value * kMmPerInch / kRoundMetricMm, kMetricInInchToleranceMm / kRoundMetricMm)) {
+          if (words_metric_in_inch++ == 0) first_metric_in_inch = {w.letter, w.value, source.line_number()};
+        }
+      }
     }
     if (effect.has_motion) {
       const ModalState& st = interpreter.state();
@@ -212,6 +234,17 @@ struct GcodeClReader::State {
                                    "no millimetres named): the control's default units decide such a program; post "
                                    "with --units inch or --units mm (or add G20/G21)",
                                    units_evidence.first_inch_word(), units_evidence.first_inch_line()));
+    if (words_metric_in_inch >= kMetricInInchMinWords &&
+        static_cast<double>(words_metric_in_inch) >= kMetricInInchShare * static_cast<double>(words_fine))
+      throw InputError({file, first_metric_in_inch.line, 0},
+                       fmt::format("the program has no G20/G21 (units) and its positions look like a metric design "
+                                   "written in inches ({} of its {} X/Y/Z words with 3 or 4 decimals are whole "
+                                   "half-millimetres divided by 25.4, e.g. {}{} at line {} = {:.3f} mm): the control's "
+                                   "default units decide such a program; post with --units inch or --units mm (or add "
+                                   "G20/G21)",
+                                   words_metric_in_inch, words_fine, first_metric_in_inch.letter,
+                                   first_metric_in_inch.value, first_metric_in_inch.line,
+                                   first_metric_in_inch.value * kMmPerInch));
     if (words_4_decimals < 5 || words_4_decimals <= 2 * words_other_decimals) return;
     for (int i = 0; i < 3; ++i)
       if (programmed_lo[i] <= programmed_hi[i] && (programmed_lo[i] < -50.0 || programmed_hi[i] > 50.0)) return;
@@ -232,7 +265,7 @@ struct GcodeClReader::State {
   // checked against the axis limits.
   Vec3d tip_in_W(const ProgramPoint& p, bool rtcp) const {
     if (rtcp) return Vec3d(p[0], p[1], p[2]);
-    AxisPosition q;
+    AxisPosition q = AxisPosition::zero(rotaries());
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
     for (int k = 0; k < rotaries(); ++k)
       q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
@@ -271,15 +304,16 @@ struct GcodeClReader::State {
   // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
   std::optional<cl::Motion> pending_motion;  ///< an arc segment waiting behind its feed record
   std::optional<Vec3d> last_tip;
-  Eigen::Vector2d last_rotary = Eigen::Vector2d::Zero();
+  RotaryAngles last_rotary;  ///< the programmed rotary angles (rad) of the last motion
 
   /// The feed record of a G93 motion (nullopt otherwise); follows the last position in any case.
   std::optional<cl::Feed> source_time_feed(const cl::Motion& m) {
     std::optional<cl::Feed> out;
-    const Eigen::Vector2d rotary = m.rotary_rad ? Eigen::Vector2d(*m.rotary_rad) : Eigen::Vector2d::Zero();
+    const RotaryAngles rotary = m.rotary_rad ? *m.rotary_rad : RotaryAngles::Zero(rotaries());
+    if (last_rotary.size() != rotary.size()) last_rotary = RotaryAngles::Zero(rotary.size());
     if (m.inverse_time && m.feed && *m.feed > 0.0 && last_tip) {
       const double length_mm = (m.point.tip_mm - *last_tip).norm();
-      const double travel_deg = (rotary - last_rotary).cwiseAbs().maxCoeff() * 180.0 / kPi;
+      const double travel_deg = max_abs_step(rotary, last_rotary) * 180.0 / kPi;
       const double reach = std::max(length_mm, travel_deg);
       if (reach > 1e-9) out = cl::Feed{m.where, reach * *m.feed, false};
     }
@@ -335,6 +369,7 @@ struct GcodeClReader::State {
   // first says, never with a rapid to 0 the source did not make); a feed motion, an arc or the
   // end releases them with 0 for the axes still unknown (where a control starting at program zero
   // would be).
+  static constexpr std::size_t kZSlot = 2;  ///< Z in a ProgramPoint (X Y Z A B C)
   struct HeldMotion {
     std::size_t index;  ///< into `held`
     ProgramPoint p;
@@ -366,10 +401,22 @@ struct GcodeClReader::State {
   /// those still unknown) and puts the held records before the current block's.
   /// `usable`: the axes whose first values may be taken (a feed motion that programs an axis for
   /// the first time starts from 0 in it, as the notice says; the held rapids end there too).
-  void release_held(const std::array<bool, 6>& usable) {
+  /// `cutting_line`: the line of the feed motion or arc that releases them (0: the program end).
+  void release_held(const std::array<bool, 6>& usable, int cutting_line = 0) {
     start_settled = true;
     if (held.empty()) return;
     for (HeldMotion& h : held_motions) {
+      // Z first programmed by the cut that releases them: a rapid taken to Z0 would run to the work
+      // offset's zero (the part's face) before the cut; where the tool stands is not known, so no
+      // rapid is invented (a program that never programs Z, e.g. a plasma cutter's, stays at Z0)
+      if (h.assumed[kZSlot] && !usable[kZSlot] && cutting_line > 0 && interpreter.state().known[kZSlot]) {
+        const cl::Location at = std::get<cl::Motion>(held[h.index]).where;
+        throw InputError({file, at.line, at.column},
+                         fmt::format("this rapid does not say where Z goes, and Z is first programmed by the cutting "
+                                     "motion at line {}: taken as Z0 it would run to the work offset's zero before "
+                                     "the cut; program Z on the first rapid (a G0 Z.. above the part)",
+                                     cutting_line));
+      }
       for (std::size_t i = 0; i < 6; ++i)
         if (h.assumed[i]) h.p[i] = usable[i] ? first_value[i] : 0.0;
       locate(std::get<cl::Motion>(held[h.index]), h.p, h.rtcp);
@@ -574,7 +621,7 @@ struct GcodeClReader::State {
         if (machine_mm[i]) p[i] = *machine_mm[i];
       return p;
     }
-    AxisPosition q;
+    AxisPosition q = AxisPosition::zero(rotaries());
     for (int k = 0; k < rotaries(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     q.linear_mm = linear_for(machine, q.rotary_rad, Vec3d(p[0], p[1], p[2]), setup);
     for (int i = 0; i < 3; ++i)
@@ -685,7 +732,7 @@ struct GcodeClReader::State {
   void queue_arc(const BlockEffect& fx, cl::Location where, std::string_view line,
                  const std::array<bool, 6>& known_prior) {
     update_wrap(fx, where.line, false);
-    if (!start_settled) release_held(known_prior);  // an arc starts from the held position
+    if (!start_settled) release_held(known_prior, where.line);  // an arc starts from the held position
     const long n = arc_segments(*fx.arc, options.arc_chord_tolerance_mm);
     if (n > kMaxArcSegments)
       throw InputError({file, where.line, where.column},
@@ -720,7 +767,7 @@ struct GcodeClReader::State {
   /// A G0/G1 motion (with its source-time feed where the program runs in inverse time).
   void queue_linear(const BlockEffect& fx, cl::Location where, const std::array<bool, 6>& known_prior) {
     update_wrap(fx, where.line, true);
-    if (!start_settled) release_held(known_prior);  // a feed motion starts from the held position
+    if (!start_settled) release_held(known_prior, fx.motion == MotionMode::rapid ? 0 : where.line);  // a feed motion starts from the held position
     cl::Motion m = motion_at(unwrapped(fx.end), where);
     if (auto f = source_time_feed(m)) before.push_back(*f);
     before.push_back(std::move(m));

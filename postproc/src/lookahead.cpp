@@ -68,7 +68,7 @@ void Lookahead::read() {
 
 void Lookahead::solve() {
   const bool ahead = solver_.concurrent();
-  AxisPosition previous{};  // the post starts from the zero position too
+  AxisPosition previous = solver_.words().home();  // the post starts from home too
   for (;;) {
     std::optional<std::vector<AheadItem>> batch = parsed_.pop();
     if (!batch) return;

@@ -37,8 +37,7 @@ struct AheadSolve {
   IkOutcome ik;
   SolveFigures figures;
   bool fits(const ClPoint& point, const AxisPosition& from) const {
-    return point.tip_mm == cl.tip_mm && point.axis == cl.axis && from.linear_mm == previous.linear_mm &&
-           from.rotary_rad == previous.rotary_rad;
+    return point.tip_mm == cl.tip_mm && point.axis == cl.axis && from == previous;
   }
 };
 
@@ -49,7 +48,7 @@ struct AheadItem {
   std::optional<AheadSolve> solved;
   /// The rotary angles (rad) the branch plan chose for this motion (post.cpp, branch_plan.hpp);
   /// nullopt: the solution nearest the previous commands.
-  std::optional<Eigen::Vector2d> planned_rotary_rad;
+  std::optional<RotaryAngles> planned_rotary_rad;
   std::exception_ptr error;  ///< the reader failed here
 };
 

@@ -5,11 +5,18 @@
 #include "ncpost/postproc/nc_text.hpp"
 
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 namespace ncpost {
 
 NcWriter::NcWriter(AtomicFile& out, Dialect dialect, std::string letters)
-    : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)), line_number_(dialect_.numbers.start) {}
+    : out_(out), dialect_(std::move(dialect)), letters_(std::move(letters)), line_number_(dialect_.numbers.start) {
+  if (letters_.size() > static_cast<std::size_t>(kMaxAxes))
+    throw std::invalid_argument(fmt::format("NcWriter: {} axis words ({}), more than the {} a block holds",
+                                            letters_.size(), letters_, kMaxAxes));
+}
 
 double NcWriter::rounded(int axis, double value) const {
   const int decimals = axis < 3 ? dialect_.linear_decimals : dialect_.angle_decimals;

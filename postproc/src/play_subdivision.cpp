@@ -66,7 +66,7 @@ double turned_by(const comp::MachineModel& model, const AxisPosition& a, const A
 
 bool same_commands(const AxisPosition& a, const AxisPosition& b) {
   return (a.linear_mm - b.linear_mm).cwiseAbs().maxCoeff() <= 1e-12 &&
-         (a.rotary_rad - b.rotary_rad).cwiseAbs().maxCoeff() <= 1e-12;
+         max_abs_step(a.rotary_rad, b.rotary_rad) <= 1e-12;
 }
 
 }  // namespace

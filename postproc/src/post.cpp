@@ -20,6 +20,17 @@
 namespace ncpost {
 namespace {
 
+/// Rotary angles (rad) in degrees for a message: "12.3450, -45.0000".
+std::string degrees_list(const RotaryAngles& rotary_rad, int decimals) {
+  std::string out;
+  for (Eigen::Index k = 0; k < rotary_rad.size(); ++k)
+    out += fmt::format("{}{:.{}f}", k ? ", " : "", rad_to_deg(rotary_rad[k]), decimals);
+  return out;
+}
+
+}  // namespace
+namespace {
+
 using detail::RecordBlocks;
 
 class Poster {
@@ -27,7 +38,10 @@ class Poster {
   Poster(const std::string& input, const KinematicModel& solver, SolverData& data, NcWriter& writer,
          const PostOptions& options)
       : input_(input), solver_(solver), data_(data), writer_(writer), options_(options), machine_(solver.machine()),
-        words_(solver.words()) {}
+        words_(solver.words()) {
+    previous_.q = words_.home();  // the program starts from home, sized for the model's axes
+    last_executed_ = words_.home();
+  }
 
   PostSummary run(cl::Reader& reader) {
     writer_.begin_program(options_.program_name, options_.header_comments);
@@ -115,7 +129,7 @@ class Poster {
 
   /// The continuity test of the post: moving the rotary axes from `from` to `to` for the tool axis
   /// `axis_W` travels clearly further than the machine without limits would (another branch).
-  bool forced_change(const Vec3d& axis_W, const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+  bool forced_change(const Vec3d& axis_W, const RotaryAngles& from, const RotaryAngles& to) const {
     const double chosen = (to - from).cwiseAbs().sum();
     if (chosen <= options_.branch_change_rad) return false;  // the free travel is >= 0
     const auto free = unlimited_rotary_travel(machine_, axis_W, from);
@@ -193,7 +207,7 @@ class Poster {
     if (greedy_changes == 0) return;  // nothing to improve: the greedy program
     BranchCandidates candidates(motions.size());
     for (std::size_t k = 0; k < motions.size(); ++k) {
-      std::vector<Eigen::Vector2d>& list = candidates[k];
+      std::vector<RotaryAngles>& list = candidates[k];
       list.push_back(items[motions[k]].solved->ik.position->rotary_rad);  // the greedy choice first
       std::vector<AxisPosition> branches;
       try {
@@ -202,17 +216,17 @@ class Poster {
         return;  // (a solver that fails here fails the post at this motion, or solves it greedily)
       }
       for (const AxisPosition& b : branches)
-        for (const Eigen::Vector2d& turned : turns(b.rotary_rad))
-          if (std::none_of(list.begin(), list.end(), [&](const Eigen::Vector2d& c) { return (c - turned).cwiseAbs().maxCoeff() < 1e-9; }))
+        for (const RotaryAngles& turned : turns(b.rotary_rad))
+          if (std::none_of(list.begin(), list.end(), [&](const RotaryAngles& c) { return max_abs_step(c, turned) < 1e-9; }))
             list.push_back(turned);
     }
     // the free travel from one candidate to the next point, computed once for all its candidates
     struct {
       std::size_t k = SIZE_MAX;
-      Eigen::Vector2d from;
+      RotaryAngles from;
       std::optional<double> free;
     } last;
-    const ForcedChange forced = [&](std::size_t k, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    const ForcedChange forced = [&](std::size_t k, const RotaryAngles& from, const RotaryAngles& to) {
       if (!tested(k)) return false;
       const double chosen = (to - from).cwiseAbs().sum();
       if (chosen <= options_.branch_change_rad) return false;
@@ -235,18 +249,20 @@ class Poster {
 
   /// The rotary angles `rotary_rad` and their whole turns within the limits (at most two turns
   /// either way; an axis without limits: one turn either way).
-  std::vector<Eigen::Vector2d> turns(const Eigen::Vector2d& rotary_rad) const {
-    std::array<std::vector<double>, 2> each;
-    for (int k = 0; k < 2; ++k) {
+  std::vector<RotaryAngles> turns(const RotaryAngles& rotary_rad) const {
+    std::vector<RotaryAngles> out{rotary_rad};
+    for (int k = 0; k < machine_.rotary_count(); ++k) {
       const Axis& axis = machine_.rotary(k);
-      for (int t : {0, -1, 1, -2, 2}) {
-        const double v = rotary_rad[k] + 2.0 * kPi * t;
-        if (axis.limits ? axis.limits->contains(v) : std::abs(t) <= 1) each[static_cast<std::size_t>(k)].push_back(v);
-      }
+      std::vector<RotaryAngles> grown;
+      for (const RotaryAngles& partial : out)
+        for (int t : {0, -1, 1, -2, 2}) {
+          const double v = rotary_rad[k] + 2.0 * kPi * t;
+          if (axis.limits ? !axis.limits->contains(v) : std::abs(t) > 1) continue;
+          grown.push_back(partial);
+          grown.back()[k] = v;
+        }
+      out = std::move(grown);
     }
-    std::vector<Eigen::Vector2d> out;
-    for (double a : each[0])
-      for (double b : each[1]) out.emplace_back(a, b);
     return out;
   }
 
@@ -345,13 +361,13 @@ class Poster {
     summary_.notices.push_back(fmt::format("{}:{}: {}", input_, where.line, what));
   }
 
-  void move_to(const ClPoint& cl, int line, bool rapid, std::optional<Eigen::Vector2d> rotary = std::nullopt) {
+  void move_to(const ClPoint& cl, int line, bool rapid, std::optional<RotaryAngles> rotary = std::nullopt) {
     if (plane_ && (cl.axis - plane_->axis_W).norm() > 1e-9) close_plane();  // (a motion of a cycle or arc)
     if (plane_ && !rotary) {
       // the rotary axes stand still in the plane, where the point is within the limits there;
       // else the plane ends and the motion is posted as without it (limits, retract, message)
       const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, data_, nullptr);
-      if (ik.ok() && (ik.position->rotary_rad - plane_->rotary_rad).cwiseAbs().maxCoeff() < 1e-9)
+      if (ik.ok() && max_abs_step(ik.position->rotary_rad, plane_->rotary_rad) < 1e-9)
         rotary = plane_->rotary_rad;
       else
         close_plane();
@@ -370,7 +386,7 @@ class Poster {
         IkOutcome planned = solver_.solve_quiet(cl, toward, data_, &figures);
         // (the same branch and turn: solutions apart are >= branch_change_rad apart; under --model
         // the compensated angles may differ from the plan's in the last digits)
-        if (planned.ok() && (planned.position->rotary_rad - *planned_rotary_).cwiseAbs().maxCoeff() < 1e-6) {
+        if (planned.ok() && max_abs_step(planned.position->rotary_rad, *planned_rotary_) < 1e-6) {
           ik = std::move(planned);
           data_.record(figures);
         }
@@ -409,10 +425,9 @@ class Poster {
     }
     if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
-        throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {:.4f}, {:.4f} -> "
-                                     "{:.4f}, {:.4f} deg) and no retract is allowed", input_, line,
-                                     rad_to_deg(previous_.q.rotary_rad[0]), rad_to_deg(previous_.q.rotary_rad[1]),
-                                     rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1])));
+        throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {} -> {} deg) and "
+                                     "no retract is allowed", input_, line, degrees_list(previous_.q.rotary_rad, 4),
+                                     degrees_list(next.q.rotary_rad, 4)));
       retract_and_reorient(next, line);
     }
     // (in a tilted plane the tool axis and the rotary axes are still: a straight line, nothing to bound)
@@ -454,9 +469,8 @@ class Poster {
           fmt::format("the axis limits force a change of solution, and the retract point {} mm along the tool axis "
                       "is out of reach: {}", d, !a.ok() ? a.failure.message : b.failure.message)));
     summary_.notices.push_back(fmt::format(
-        "{}:{}: the axis limits force a change of solution (rotary {:.3f}, {:.3f} -> {:.3f}, {:.3f} deg): retract "
-        "{} mm along the tool axis, reorient, re-engage", input_, line, rad_to_deg(previous_.q.rotary_rad[0]),
-        rad_to_deg(previous_.q.rotary_rad[1]), rad_to_deg(next.q.rotary_rad[0]), rad_to_deg(next.q.rotary_rad[1]), d));
+        "{}:{}: the axis limits force a change of solution (rotary {} -> {} deg): retract {} mm along the tool "
+        "axis, reorient, re-engage", input_, line, degrees_list(previous_.q.rotary_rad, 3), degrees_list(next.q.rotary_rad, 3), d));
     ++summary_.retracts;
     writer_.comment("retract, reorient, re-engage (axis limits)");
     const SolvedPoint p1{up_here, *a.position}, p2{up_there, *b.position};
@@ -481,7 +495,7 @@ class Poster {
     }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
     const double rotary_travel_deg =
-        words_.rotary_count > 0 ? rad_to_deg((to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff()) : 0.0;
+        words_.rotary_count > 0 ? rad_to_deg(max_abs_step(to.q.rotary_rad, from.q.rotary_rad)) : 0.0;
     // (in a tilted plane the control turned the rotary axes before: the block moves X Y Z only)
     const bool simultaneous = !plane_ && words_.rotary_count > 0 && rotary_travel_deg > 1e-9;
     const bool inverse = !options_.rtcp && options_.feed_mode != PostOptions::FeedMode::per_minute &&
@@ -578,7 +592,7 @@ class Poster {
     const Vec3d start = previous_.cl.tip_mm, stop = end.point.tip_mm;
     if (previous_.cl.axis.cross(n).norm() > 1e-9 || end.point.axis.cross(n).norm() > 1e-9) return false;
     const IkOutcome ik = solver_.solve(end.point, previous_.q, data_);
-    if (!ik.ok() || (ik.position->rotary_rad - previous_.q.rotary_rad).cwiseAbs().maxCoeff() > 1e-12) return false;
+    if (!ik.ok() || max_abs_step(ik.position->rotary_rad, previous_.q.rotary_rad) > 1e-12) return false;
     const Vec3d centre = c.center_mm + (start - c.center_mm).dot(n) * n;  // in the plane of the arc
     // the arc in the program's frame: W under RTCP, else the linear axes for the fixed rotary angles
     auto frame = [&](const Vec3d& p) -> Vec3d {
@@ -606,7 +620,7 @@ class Poster {
     }
     arc.feed_mm_min = records_.feed_mm_min(options_.default_feed_mm_min);
     writer_.arc(arc);
-    const std::optional<std::array<double, 5>> start_words = last_values_;  // as the control has them
+    const std::optional<PerAxis<double>> start_words = last_values_;  // as the control has them
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
     SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad, data_) : *ik.position};
@@ -625,7 +639,7 @@ class Poster {
   /// `post --verify` of a native arc: the circle the control interpolates from the words as written
   /// (the start where the axes stand, the centre offset and the end rounded), executed on the
   /// machine, against the CL circle (verify_arc.hpp). Before previous_ and last_executed_ move on.
-  void verify_native_arc(const NcArc& arc, const std::optional<std::array<double, 5>>& start_words,
+  void verify_native_arc(const NcArc& arc, const std::optional<PerAxis<double>>& start_words,
                          const Vec3d& normal, double angle, const cl::Circle& c, const cl::Motion& end,
                          const AxisPosition& executed_end) {
     FrameArc run;
@@ -637,7 +651,7 @@ class Poster {
     }
     run.normal = normal;
     run.sweep_rad = angle;
-    const Eigen::Vector2d rotary = last_executed_.rotary_rad;
+    const RotaryAngles rotary = last_executed_.rotary_rad;
     const std::function<AxisPosition(const Vec3d&)> commands_at = [&](const Vec3d& x) {
       if (plane_) return plane_executed(x);
       AxisPosition q = executed_end;
@@ -690,7 +704,7 @@ class Poster {
     if (!options_.native_cycles || !words) return false;
     const IkOutcome ik = solver_.solve(p.retract, previous_.q, data_);
     if (!ik.ok()) return false;  // the expansion names the failure
-    const Eigen::Vector2d rotary = ik.position->rotary_rad;
+    const RotaryAngles rotary = ik.position->rotary_rad;
     auto frame = [&](const ClPoint& c) -> Vec3d {
       if (plane_) return plane_->words.to_plane(c.tip_mm + home_offset_);
       return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary, data_).linear_mm;
@@ -710,7 +724,7 @@ class Poster {
       noticed_cycle_line_ = cycle_.where.line;
     }
     const SolvedPoint at_retract{p.retract, *ik.position};
-    const bool same_rotary = !have_position_ || (rotary - previous_.q.rotary_rad).cwiseAbs().maxCoeff() < 1e-12;
+    const bool same_rotary = !have_position_ || max_abs_step(rotary, previous_.q.rotary_rad) < 1e-12;
     if (have_position_ && same_rotary && writer_.continues(*nc, p.retract_to_r ? xr.z() : xt.z())) {
       // the modal cycle travels there itself: the tool stands at the return level over the hole
       AxisPosition executed = at_retract.q;
@@ -791,7 +805,7 @@ class Poster {
 
   const std::string& input_;
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
-  std::optional<Eigen::Vector2d> planned_rotary_;
+  std::optional<RotaryAngles> planned_rotary_;
   bool unplanned_run_ = false;  ///< in a run too long to plan (continues_unplanned_run)  ///< the current record's rotary angles chosen by the branch plan
   std::deque<detail::AheadItem> pending_;          ///< records read and planned, not posted yet
   std::optional<detail::AheadItem> carry_;         ///< a rapid read by the last plan: it opens the next run
@@ -805,7 +819,7 @@ class Poster {
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
-  std::optional<std::array<double, 5>> last_values_;  ///< words of the last motion block (mm, deg)
+  std::optional<PerAxis<double>> last_values_;  ///< words of the last motion block (mm, deg)
   bool have_position_ = false;
   bool rtcp_on_ = false;
   int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)
@@ -823,13 +837,13 @@ class Poster {
   struct Plane {
     TiltedPlane words;
     Vec3d axis_W = Vec3d::UnitZ();        ///< the CL tool axis of the run
-    Eigen::Vector2d rotary_rad{0, 0};     ///< the post's solution (limits, continuity)
-    Eigen::Vector2d executed_rotary_rad{0, 0};  ///< the control's: the tool along the words' Z, nearest it
+    RotaryAngles rotary_rad;           ///< the post's solution (limits, continuity)
+    RotaryAngles executed_rotary_rad;  ///< the control's: the tool along the words' Z, nearest it
   };
 
   /// The program frame at home P = W + home_offset_ (W is parallel to M at home).
   Vec3d home_offset() const {
-    return solver_.with_rotary(ClPoint{Vec3d::Zero(), Vec3d::UnitZ()}, Eigen::Vector2d::Zero(), data_).linear_mm;
+    return solver_.with_rotary(ClPoint{Vec3d::Zero(), Vec3d::UnitZ()}, words_.home().rotary_rad, data_).linear_mm;
   }
 
   /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
@@ -847,7 +861,7 @@ class Poster {
     const TiltedPlaneWords& tw = *writer_.dialect().tilted_plane;
     const IkOutcome ik = solver_.solve_quiet(cl, previous_.q, data_, nullptr);
     if (!ik.ok()) return;  // the motion names the failure
-    const Eigen::Vector2d rotary = ik.position->rotary_rad;
+    const RotaryAngles rotary = ik.position->rotary_rad;
     // the program frame's axes seen from the tilted part (W) at this solution
     const Vec3d o = solver_.with_rotary(ClPoint{Vec3d::Zero(), cl.axis}, rotary, data_).linear_mm;
     Mat3d P_from_W;
@@ -868,9 +882,10 @@ class Poster {
     // which of the two solutions: +1 the one with the larger first rotary angle
     int dir = 1;
     for (const RotarySolution& s : rotary_solutions(machine_, cl.axis)) {
-      const double d0 = std::remainder(s.rotary_rad[0] - rotary[0], 2.0 * kPi);
-      const double d1 = std::remainder(s.rotary_rad[1] - rotary[1], 2.0 * kPi);
-      if (std::abs(d0) + std::abs(d1) > 1e-6 && d0 > 0.0) dir = -1;  // the other solution is larger
+      double apart = 0.0;
+      for (Eigen::Index k = 0; k < rotary.size(); ++k) apart += std::abs(std::remainder(s.rotary_rad[k] - rotary[k], 2.0 * kPi));
+      const double d0 = rotary.size() > 0 ? std::remainder(s.rotary_rad[0] - rotary[0], 2.0 * kPi) : 0.0;
+      if (apart > 1e-6 && d0 > 0.0) dir = -1;  // the other solution is larger
     }
     std::string rotary_words;
     for (int k = 0; k < machine_.rotary_count(); ++k)
@@ -896,8 +911,7 @@ class Poster {
       AxisPosition q = last_executed_;
       q.rotary_rad = p.executed_rotary_rad;
       const Vec3d at = p.words.to_plane(solver_.execute(q, data_).tip_mm + home_offset_);
-      last_values_ = std::array<double, 5>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z()),
-                                           0.0, 0.0};
+      last_values_ = PerAxis<double>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z())};
     } else {
       last_values_.reset();
     }
@@ -909,7 +923,7 @@ class Poster {
     writer_.tilted_plane(writer_.dialect().tilted_plane->off, false);
     // back in the program frame: the machine stands at the last executed commands
     if (have_position_) {
-      std::array<double, 5> v{};
+      PerAxis<double> v{};
       for (int i = 0; i < 3; ++i) v[static_cast<std::size_t>(i)] = writer_.rounded(i, last_executed_.linear_mm[i]);
       for (int k = 0; k < machine_.rotary_count(); ++k)
         v[static_cast<std::size_t>(3 + k)] = rad_to_deg(last_executed_.rotary_rad[k]);

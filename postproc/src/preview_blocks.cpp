@@ -15,7 +15,7 @@ class Previewer {
  public:
   Previewer(const std::string& input, const KinematicModel& solver, const BlockEvaluator& evaluator,
             const std::function<void(const BlockRow&)>& sink, const std::function<void(std::size_t)>& progress)
-      : input_(input), solver_(solver), evaluator_(evaluator), sink_(sink), progress_(progress) {}
+      : input_(input), solver_(solver), evaluator_(evaluator), sink_(sink), progress_(progress), previous_q_(solver.words().home()) {}
 
   PreviewStats run(cl::Reader& reader) {
     while (auto record = reader.next()) {

@@ -55,12 +55,12 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
   }
   // the free angle as the exact solution leaves the start: the farthest probe that still swings
   // far faster than the block's pace (near a singular pose the swing is spread over the first probes)
-  const double pace_rad = (to.q.rotary_rad - from.q.rotary_rad).cwiseAbs().maxCoeff();
-  std::optional<Eigen::Vector2d> swing;
+  const double pace_rad = max_abs_step(to.q.rotary_rad, from.q.rotary_rad);
+  std::optional<RotaryAngles> swing;
   for (double t : kSingularProbeT) {
     const IkOutcome o = solver.solve_quiet(nonlinear::cl_at(from.cl, to.cl, t), from.q, data, nullptr);
     if (!o.ok()) break;
-    const Eigen::Vector2d d = o.position->rotary_rad - from.q.rotary_rad;
+    const RotaryAngles d = o.position->rotary_rad - from.q.rotary_rad;
     if (d.cwiseAbs().maxCoeff() <= std::max(kSingularJumpRad, kSingularPaceFactor * t * pace_rad)) break;
     swing = d;
   }

@@ -66,10 +66,10 @@ IkOutcome TrrSolver::inverse(const ClPoint& cl) const {
   return out;
 }
 
-AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const Eigen::Vector2d& /*rotary_rad*/,
+AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const RotaryAngles& /*rotary_rad*/,
                                     SolverData& /*data*/) const {
   const IkOutcome o = inverse(cl);
-  return o.position.value_or(AxisPosition{});
+  return o.position.value_or(AxisPosition::zero(2));  // V W
 }
 
 ToolPoseT<double> TrrSolver::deviation(const AxisPosition& q, const SolverData& /*data*/) const {

@@ -36,19 +36,20 @@ std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, c
                                bool* linear_out) {
   if (!solver.words().serial) return {};  // the solver's failure names the axis (e.g. the TRR-XY sliders)
   const Machine& m = solver.machine();
-  std::vector<Eigen::Vector2d> rotaries;
+  std::vector<RotaryAngles> rotaries;
+  const RotaryAngles before = rotary_of(previous, m.rotary_count());
   if (m.rotary_count() == 0) {
-    rotaries.push_back(Eigen::Vector2d::Zero());
+    rotaries.push_back(RotaryAngles());
   } else {
     for (const RotarySolution& s : rotary_solutions(m, cl.axis, 1e-7)) {
-      Eigen::Vector2d r = s.rotary_rad;
-      if (s.free_axis >= 0) r[s.free_axis] = previous.rotary_rad[s.free_axis];
-      for (int k = 0; k < m.rotary_count(); ++k) r[k] = nearest_turn_to_limits(m.rotary(k), r[k], previous.rotary_rad[k]);
+      RotaryAngles r = s.rotary_rad;
+      if (s.free_axis >= 0) r[s.free_axis] = before[s.free_axis];
+      for (int k = 0; k < m.rotary_count(); ++k) r[k] = nearest_turn_to_limits(m.rotary(k), r[k], before[k]);
       rotaries.push_back(r);
     }
   }
   std::string text;
-  for (const Eigen::Vector2d& r : rotaries) {
+  for (const RotaryAngles& r : rotaries) {
     std::vector<std::string> out;
     for (int k = 0; k < m.rotary_count(); ++k)
       if (m.rotary(k).limits && !m.rotary(k).limits->contains(r[k], 1e-9)) out.push_back(out_of_limits(m.rotary(k), r[k]));

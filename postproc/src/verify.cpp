@@ -14,7 +14,7 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
 }
 
 AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
-                               const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F) {
+                               const RotaryAngles& rotary_rad, const Vec3d& xyz_F) {
   const Vec3d tip_W = plane.to_program(xyz_F) - home_offset_mm;
   return solver.with_rotary(ClPoint{tip_W, plane.P_R_F.col(2)}, rotary_rad, data);
 }

@@ -73,13 +73,13 @@ TEST_CASE("solve_actual with reversal follows the direction of the command") {
   cl.tip_mm = Vec3d(20, 30, 5);
   cl.axis = Vec3d(0, -std::sin(0.5), std::cos(0.5)).normalized();
   ActualIkOptions from_above;
-  AxisPosition high;
+  AxisPosition high = home_of(m);
   high.linear_mm = Vec3d(0, 400, 0);
   high.rotary_rad = Eigen::Vector2d(1.5, 0.0);
   from_above.previous_actual = high;
   check_hits(model, cl, setup, from_above);
   ActualIkOptions from_below;
-  AxisPosition low;
+  AxisPosition low = home_of(m);
   low.linear_mm = Vec3d(0, -400, 0);
   low.rotary_rad = Eigen::Vector2d(-1.0, 0.0);
   from_below.previous_actual = low;

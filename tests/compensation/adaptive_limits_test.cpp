@@ -24,7 +24,7 @@ double largest_rotary_step(const ClBlock& b, const SplitBlock& split) {
   double step = 0;
   AxisPosition from = b.from;
   for (const BlockNode& n : split.nodes) {
-    step = std::max(step, (n.q.rotary_rad - from.rotary_rad).cwiseAbs().maxCoeff());
+    step = std::max(step, max_abs_step(n.q.rotary_rad, from.rotary_rad));
     from = n.q;
   }
   return step;

@@ -29,7 +29,7 @@ struct DomeRun {
 template <class Errors, class Solver>
 DomeRun subdivide_dome(const Machine& m, const Setup& s, const Errors& errors, const Solver& solver) {
   const auto path = test::read_gotos(test::dome_path());
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   AdaptiveOptions o;
   o.tolerance_mm = 0.005;
   DomeRun r;

@@ -23,7 +23,7 @@ double reexecute(const Machine& m, const Setup& s, const ClBlock& b, const Split
     const Vec3d d = node.cl.tip_mm - start.tip_mm;
     for (int i = 0; i <= samples; ++i) {
       const double t = double(i) / samples;
-      AxisPosition q;
+      AxisPosition q = home_of(m);
       q.linear_mm = (1 - t) * from.linear_mm + t * node.q.linear_mm;
       q.rotary_rad = (1 - t) * from.rotary_rad + t * node.q.rotary_rad;
       const Vec3d x = tool_pose<double>(m, q, s, NominalErrors{}).tip_mm;

@@ -73,7 +73,7 @@ TEST_CASE("EA0C:A:p1: the posting path (home cache, compensated IK) sees the til
   const Machine m = public_machine();
   comp::ErrorParameters coupled = truth_with(m, {}), rowwise = coupled;
   coupled.set("EA0C:A:p1", 40e-6);
-  AxisPosition q;
+  AxisPosition q = home_of(m);
   q.linear_mm = Vec3d(50, 30, 20);
   q.rotary_rad = Eigen::Vector2d(1.0, 0.7);
   rowwise.set("EA0C", rowwise.value_or("EA0C", 0.0) + 40e-6 * 1.0);

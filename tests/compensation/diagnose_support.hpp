@@ -98,7 +98,7 @@ inline double worst_prediction_um(const Machine& m, const comp::ErrorParameters&
   };
   double worst = 0.0, largest = 0.0;
   for (int k = 0; k < 2000; ++k) {
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     q.linear_mm = Vec3d(uniform(-250, 250), uniform(-250, 250), uniform(-150, 350));
     q.rotary_rad = Eigen::Vector2d(deg_to_rad(uniform(-10, 100)), deg_to_rad(uniform(-360, 360)));
     const auto pt = actual.tool_pose(q, setup);
@@ -118,7 +118,7 @@ inline double worst_prediction_on_path_um(const Machine& m, const comp::ErrorPar
   const comp::MachineModel actual(m, truth), identified(m, model);
   std::ifstream in(cl_path);
   cl::AptReader reader(in, cl_path);
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   double worst = 0.0;
   std::size_t n = 0;
   while (auto r = reader.next()) {
@@ -144,7 +144,7 @@ class CompensatedOnTruth final : public KinematicModel {
                         SolveFigures* figures) const override {
     return compensated_.solve_quiet(cl, previous, data, figures);
   }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& r, SolverData& data) const override {
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& r, SolverData& data) const override {
     return compensated_.with_rotary(cl, r, data);
   }
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override { return truth_.tool_pose(q, setup_); }
@@ -206,7 +206,7 @@ inline double compensated_cut_with_reversal_mm(const Machine& m, const comp::Err
   const comp::MachineModel identified(m, identified_parameters), truth(m, truth_parameters);
   const Setup s = dome_setup();
   const auto path = read_gotos(dome_path());
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   std::optional<AxisPosition> actual_identified, actual_truth;
   if (endpoint_mm) *endpoint_mm = 0.0;
   nonlinear::AdaptiveOptions o;
@@ -258,7 +258,7 @@ inline double compensated_ends_mm(const Machine& m, const comp::ErrorParameters&
                                   const comp::ErrorParameters& truth_parameters) {
   const comp::MachineModel model(m, model_parameters), truth(m, truth_parameters);
   const Setup s = dome_setup();
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   std::optional<AxisPosition> actual_model, actual_truth;
   double worst = 0.0;
   auto with_offsets = [](const comp::RowState<double>& st, AxisPosition q) {

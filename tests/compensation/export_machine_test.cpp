@@ -40,7 +40,7 @@ std::pair<double, double> compare_forward(const MachineModel& model, const Machi
   const Setup setup{Vec3d(10, -20, 80), tool_length_mm};
   double tip = 0.0, axis = 0.0;
   for (int k = 0; k < 500; ++k) {
-    AxisPosition q;
+    AxisPosition q = home_of(corrected);
     for (int i = 0; i < static_cast<int>(corrected.axes.size()); ++i) {
       const Axis& a = corrected.axes[i];
       const double half = a.limits ? 0.5 * (a.limits->max - a.limits->min) : 3.14159;
@@ -58,7 +58,7 @@ std::pair<double, double> compare_forward(const MachineModel& model, const Machi
 /// The axis words of every motion block (modal: a word not written keeps its value).
 std::vector<AxisPosition> commands_of(const std::string& program, const Machine& m) {
   std::vector<AxisPosition> out;
-  AxisPosition q;
+  AxisPosition q = home_of(m);
   const std::regex word("([XYZABC])(-?[0-9]+\\.?[0-9]*)");
   std::istringstream in(program);
   std::string line;

@@ -78,7 +78,7 @@ TEST_CASE("identify public-clean: truth recovered, tool-tip prediction within 1 
     return lo + (hi - lo) * double(state >> 8) / double(1u << 24);
   };
   for (int k = 0; k < 2000; ++k) {
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     q.linear_mm = Vec3d(uniform(-250, 250), uniform(-250, 250), uniform(-150, 350));
     q.rotary_rad = Eigen::Vector2d(deg_to_rad(uniform(-10, 100)), deg_to_rad(uniform(-360, 360)));
     const auto pt = actual.tool_pose(q, setup);

@@ -22,7 +22,7 @@ namespace {
 template <class Errors>
 std::pair<double, double> dense_max(const Machine& m, const Setup& s, const ClBlock& b, const Errors& errors, int samples) {
   auto position_error = [&](double t) {
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     q.linear_mm = (1 - t) * b.from.linear_mm + t * b.to.linear_mm;
     q.rotary_rad = (1 - t) * b.from.rotary_rad + t * b.to.rotary_rad;
     const Vec3d x = tool_pose<double>(m, q, s, errors).tip_mm;
@@ -32,7 +32,7 @@ std::pair<double, double> dense_max(const Machine& m, const Setup& s, const ClBl
     return (x - (b.start.tip_mm + u * d)).norm();
   };
   auto orientation_error = [&](double t) {
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     q.linear_mm = (1 - t) * b.from.linear_mm + t * b.to.linear_mm;
     q.rotary_rad = (1 - t) * b.from.rotary_rad + t * b.to.rotary_rad;
     const Vec3d a = tool_pose<double>(m, q, s, errors).axis.normalized();
@@ -59,6 +59,7 @@ struct RandomBlocks {
 
   ClBlock next(const Machine& m, const Setup& s) {
     ClBlock b;
+    b.from = b.to = home_of(m);
     for (int i = 0; i < 3; ++i) b.from.linear_mm[i] = uniform(-150, 150);
     const bool big = uniform(0, 1) < 0.15;
     for (int k = 0; k < m.rotary_count(); ++k) {

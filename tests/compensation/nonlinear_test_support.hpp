@@ -47,7 +47,7 @@ inline ClPoint seed001_end() {
 /// The seed 001 segment as a block on `m`, on the paper's branch: A = arccos(k) >= 0,
 /// C = atan2(i, j) (the solution nearest A = 0, C = 180 deg).
 inline nonlinear::ClBlock seed001_block(const Machine& m, const Setup& s) {
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   previous.rotary_rad = Eigen::Vector2d(0.0, 3.14159265358979323846);
   const AxisPosition q0 = *solve(m, seed001_start(), s, previous).position;
   const AxisPosition q1 = *solve(m, seed001_end(), s, q0).position;
@@ -94,7 +94,7 @@ inline Setup dome_setup() {
 /// moves skipped).
 inline std::vector<nonlinear::ClBlock> blocks_of(const Machine& m, const Setup& s, const std::vector<ClLine>& path) {
   std::vector<nonlinear::ClBlock> blocks;
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   for (std::size_t i = 0; i < path.size(); ++i) {
     const IkOutcome o = solve(m, path[i].point, s, previous);
     if (!o.ok()) throw std::runtime_error("IK failed on line " + std::to_string(path[i].line));

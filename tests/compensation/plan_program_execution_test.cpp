@@ -62,7 +62,7 @@ Execution execute(const Machine& m, const std::vector<NamedPlan>& plans, const s
   Execution ex;
   std::istringstream in(program);
   std::string line;
-  AxisPosition q;
+  AxisPosition q = home_of(m);
   bool mounted = false, stopped_once = false;
   bool g1 = false;  // the motion word is modal
   std::size_t read_in_set = 0;
@@ -110,7 +110,7 @@ Execution execute(const Machine& m, const std::vector<NamedPlan>& plans, const s
       setup.tool_length_mm = s.tool_length_mm;
       const bool turning = (next.rotary_rad - q.rotary_rad).norm() > 1e-12;
       for (int k = 0; k <= 20; ++k) {
-        AxisPosition p;
+        AxisPosition p = home_of(m);
         const double f = k / 20.0;
         p.linear_mm = q.linear_mm + f * (next.linear_mm - q.linear_mm);
         p.rotary_rad = q.rotary_rad + f * (next.rotary_rad - q.rotary_rad);

@@ -18,7 +18,7 @@ namespace {
 double draw(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 AxisPosition random_pose(const Machine& m, std::mt19937& rng) {
-  AxisPosition q;
+  AxisPosition q = home_of(m);
   for (int i = 0; i < 3; ++i) {
     const auto& l = m.axes[static_cast<std::size_t>(i)].limits;
     q.linear_mm[i] = l ? draw(rng, l->min, l->max) : draw(rng, -300, 300);
@@ -47,7 +47,7 @@ TEST_CASE("forward(inverse(x)) = x on random reachable poses of every shipped ma
       const ToolPoseT<double> cl = forward(m, truth, setup);
       // a previous pose near the truth, as along a tool path
       AxisPosition previous = truth;
-      previous.rotary_rad += Eigen::Vector2d(draw(rng, -0.05, 0.05), draw(rng, -0.05, 0.05)).head(2);
+      previous.rotary_rad += Eigen::Vector2d(draw(rng, -0.05, 0.05), draw(rng, -0.05, 0.05)).head(m.rotary_count());
       const IkOutcome ik = solve(m, {cl.tip_mm, cl.axis}, setup, previous);
       if (!ik.ok()) continue;  // linear limits may exclude the other solution only
       const ToolPoseT<double> back = forward(m, *ik.position, setup);
@@ -74,7 +74,7 @@ TEST_CASE("both rotary solutions of an AC table reach the same CL point") {
   REQUIRE(sols.size() == 2);
   CHECK(std::abs(std::abs(sols[0].rotary_rad[0]) - std::abs(sols[1].rotary_rad[0])) < 1e-12);  // A and -A
   for (const auto& s : sols) {
-    AxisPosition q;
+    AxisPosition q = home_of(m);
     q.rotary_rad = s.rotary_rad;
     q.linear_mm = linear_for(m, s.rotary_rad, Vec3d(10, 20, 30), {});
     const auto pose = forward(m, q, {});
@@ -85,7 +85,7 @@ TEST_CASE("both rotary solutions of an AC table reach the same CL point") {
 
 TEST_CASE("at the singular orientation the free angle keeps its previous value") {
   const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   previous.rotary_rad = Eigen::Vector2d(0.3, 1.234);  // A, C
   const IkOutcome ik = solve(m, {Vec3d(5, 6, 7), Vec3d::UnitZ()}, {}, previous);
   REQUIRE(ik.ok());
@@ -96,10 +96,10 @@ TEST_CASE("at the singular orientation the free angle keeps its previous value")
 
 TEST_CASE("continuous axes unwind toward the previous angle; limited axes do not") {
   const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   previous.rotary_rad = Eigen::Vector2d(0.5, deg_to_rad(710.0));
   const Vec3d u = Vec3d(std::sin(0.5) * std::sin(deg_to_rad(-10.0)), 0.0, 0.0);
-  AxisPosition truth;
+  AxisPosition truth = home_of(m);
   truth.rotary_rad = Eigen::Vector2d(0.5, deg_to_rad(-10.0 + 720.0));
   const auto cl = forward(m, truth, {});
   const IkOutcome ik = solve(m, {cl.tip_mm, cl.axis}, {}, previous);

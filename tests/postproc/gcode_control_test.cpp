@@ -581,3 +581,44 @@ TEST_CASE("G-code: the dwell P of G82 and G89 is read by the G4 rule") {
   CHECK(e.where().line == 4);
   CHECK_THAT(e.what(), Catch::Contains("G89 P2 (no decimal point) is 2 ms on Fanuc and Haas but 2 s on LinuxCNC"));
 }
+
+// NX's Mazak Nexus 4-axis sample: no G20/G21, X Y Z words 100 mm, 25 mm, 90 mm ... divided by
+// 25.4 (Y3.937 Z.9843 Y3.5433): a metric design posted in inches, read as mm 25.4 times too small
+// with exit 0. Refused unless --units says; a millimetre program with 3-4 decimals is not.
+TEST_CASE("gcode control: a metric design written in inches without G20/G21 is refused unless --units says") {
+  const std::string strips =
+      "G90 G0 X0.0 Y3.937 Z1.9685\nG1 Z.9843 F9.8\nY3.5433\nY3.1496\nY2.7559\nY2.3622\nY1.9685\nG0 Z1.9685\nM30\n";
+  const InputError e = input_error(strips);
+  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and its positions look like a metric "
+                                       "design written in inches (9 of its 9 X/Y/Z words with 3 or 4 decimals are whole "
+                                       "half-millimetres divided by 25.4, e.g. Y3.937 at line 1 = 100.000 mm)") &&
+                           Catch::Contains("post with --units inch or --units mm"));
+  GcodeReaderOptions inch;
+  inch.default_inch = inch.units_given = true;
+  const auto ms = only<cl::Motion>(read_all(strips, inch).records);
+  REQUIRE(ms.size() == 8);
+  CHECK(ms[0].point.tip_mm.y() == Approx(100.0).margin(0.001));  // 3.937 in
+  CHECK(ms[1].point.tip_mm.z() == Approx(25.0).margin(0.002));   // .9843 in
+  // millimetres with 3 decimals that are no such fractions: read as mm, no refusal
+  const auto mm = only<cl::Motion>(
+      read_all("G90 G0 X0.0 Y12.345 Z5.0\nG1 Z-1.234 F300\nY17.891\nY23.456\nY31.017\nY40.123\nG0 Z5.0\nM30\n").records);
+  REQUIRE(mm.size() == 7);
+  CHECK(mm[2].point.tip_mm.y() == Approx(17.891));
+}
+
+// NX's Mazak sample again: after G91 G28 Z0, 'X0.0 Y0.0' (still G91: no move) is the first rapid
+// and Z comes first in the G1 that follows. The held rapid was taken to Z0 (the work offset's
+// zero: a rapid onto the part's face) with exit 0. Refused now; a program that never programs Z
+// (a plasma cutter's) stays at Z0 as before.
+TEST_CASE("gcode control: a rapid before Z is known, released by a cut that programs Z, is refused") {
+  const InputError e = input_error("G21 G90 G0 X10 Y10\nG1 X20 Y10 Z-1 F100\nM30\n");
+  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1:") &&
+                           Catch::Contains("this rapid does not say where Z goes, and Z is first programmed by the "
+                                           "cutting motion at line 2: taken as Z0 it would run to the work offset's zero"));
+  const auto plasma = only<cl::Motion>(read_vmc("G21 G90\nG0 X10 Y10\nG1 X20 F500\nY20\nM30\n"));
+  REQUIRE(plasma.size() == 3);
+  check_tip(plasma[0], 10, 10, 0);
+  const auto z_first = only<cl::Motion>(read_vmc("G21 G90\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F100\nM30\n"));
+  REQUIRE(z_first.size() == 3);
+  check_tip(z_first[1], 10, 10, 5);
+}

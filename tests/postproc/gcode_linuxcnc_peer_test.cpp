@@ -139,7 +139,7 @@ TEST_CASE("LinuxCNC peer: impeller (TCP on) gives LinuxCNC's xyzac-trt joints, b
     std::size_t n = 0;
     double max_joint_dev = 0, max_axis_dev = 0, max_ik_dev = 0, max_angle_dev = 0;
     int inverse_time = 0;
-    AxisPosition previous;
+    AxisPosition previous = home_of(m);
     while (auto record = reader->next()) {
       const auto* motion = std::get_if<cl::Motion>(&*record);
       if (!motion) continue;
@@ -157,7 +157,7 @@ TEST_CASE("LinuxCNC peer: impeller (TCP on) gives LinuxCNC's xyzac-trt joints, b
       max_axis_dev = std::max(max_axis_dev, (motion->point.axis - linuxcnc_xyzac_tool_axis(k, p.a_deg, p.c_deg)).norm());
       // closed-form IK from the CL point alone (nearest the programmed angles, as a post would
       // keep continuity) reaches the same joints
-      AxisPosition near;
+      AxisPosition near = home_of(m);
       near.rotary_rad = *motion->rotary_rad;
       const IkOutcome ik = solve(m, motion->point, setup, near);
       REQUIRE(ik.ok());

@@ -133,7 +133,7 @@ TEST_CASE("gcode reader: machine-axis program goes through the nominal forward k
   const auto ms = motions("G0 X10 Y20 Z30 A30 C45\nG1 X-4 A-60 C-120 F300\n", {}, setup);
   REQUIRE(ms.size() == 2);
   const Machine& m = ac_machine();
-  AxisPosition q;
+  AxisPosition q = home_of(m);
   q.linear_mm = Vec3d(10, 20, 30);
   q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(45));
   const auto expected = forward(m, q, setup);
@@ -144,7 +144,7 @@ TEST_CASE("gcode reader: machine-axis program goes through the nominal forward k
   const Vec3d xyz = linear_for(m, *ms[1].rotary_rad, ms[1].point.tip_mm, setup);
   CHECK((xyz - Vec3d(-4, 20, 30)).norm() < 1e-9);
   // and the closed-form IK finds the programmed angles again
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   previous.rotary_rad = *ms[1].rotary_rad;
   const IkOutcome ik = solve(m, ms[1].point, setup, previous);
   REQUIRE(ik.ok());
@@ -159,14 +159,14 @@ TEST_CASE("gcode reader: RTCP programs keep the tip and take the axis from the a
     const auto ms = motions(text);
     REQUIRE(ms.size() == 1);
     check_tip(ms[0], 1, 2, 3);
-    AxisPosition q;
+    AxisPosition q = home_of(ac_machine());
     q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
     CHECK((ms[0].point.axis - forward(ac_machine(), q, Setup{}).axis).norm() < 1e-12);
   }
   // switched off again: machine axes
   const auto ms = motions("M428\nG1 X1 Y2 Z3 A30 C90 F100\nM429\nG1 X1\n");
   REQUIRE(ms.size() == 2);
-  AxisPosition q;
+  AxisPosition q = home_of(ac_machine());
   q.linear_mm = Vec3d(1, 2, 3);
   q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
   CHECK((ms[1].point.tip_mm - forward(ac_machine(), q, Setup{}).tip_mm).norm() < 1e-12);
@@ -451,7 +451,7 @@ TEST_CASE("gcode reader: every machine file maps machine-axis programs through i
     std::string program = "G90 G94\n";
     std::vector<AxisPosition> programmed;
     for (int i = 0; i < 20; ++i) {
-      AxisPosition q;
+      AxisPosition q = home_of(m);
       q.linear_mm = Vec3d(10.0 * i - 50.0, 3.0 * i, -2.5 * i);
       std::string line = fmt::format("G1 X{} Y{} Z{}", q.linear_mm.x(), q.linear_mm.y(), q.linear_mm.z());
       for (int k = 0; k < m.rotary_count(); ++k) {

@@ -35,10 +35,7 @@ comp::PlanProgram laser_x(const Machine& m) {
 }
 
 AxisPosition pose(double x, double y, double z, double a_deg, double c_deg) {
-  AxisPosition q;
-  q.linear_mm = {x, y, z};
-  q.rotary_rad = {deg_to_rad(a_deg), deg_to_rad(c_deg)};
-  return q;
+  return AxisPosition(Vec3d(x, y, z), Eigen::Vector2d(deg_to_rad(a_deg), deg_to_rad(c_deg)));
 }
 
 /// Every record kind; a machine name and set text with what would end a comment or the tape.

@@ -18,7 +18,7 @@ TEST_CASE("public-clean dome path: every CL point is hit exactly by the posted c
   std::ifstream in(test::data("scenarios/public-clean/path.cls"));
   cl::AptReader reader(in, "path.cls");
   NominalSolver solver(m, setup);
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   int motions = 0;
   double worst_tip = 0.0, worst_axis = 0.0, largest_rotary_step = 0.0;
   while (auto r = reader.next()) {
@@ -30,7 +30,7 @@ TEST_CASE("public-clean dome path: every CL point is hit exactly by the posted c
     worst_tip = std::max(worst_tip, (pose.tip_mm - mo->point.tip_mm).norm());
     worst_axis = std::max(worst_axis, (pose.axis - mo->point.axis).norm());
     if (motions > 0)
-      largest_rotary_step = std::max(largest_rotary_step, (ik.position->rotary_rad - previous.rotary_rad).cwiseAbs().maxCoeff());
+      largest_rotary_step = std::max(largest_rotary_step, max_abs_step(ik.position->rotary_rad, previous.rotary_rad));
     previous = *ik.position;
     ++motions;
   }

@@ -59,7 +59,7 @@ Run run(const KinematicModel& solver, const std::vector<ClPoint>& points) {
 }
 
 bool same(const AxisPosition& a, const AxisPosition& b) {
-  return a.linear_mm == b.linear_mm && a.rotary_rad == b.rotary_rad;
+  return a == b;
 }
 
 /// Bit-for-bit equal commands, poses and figures.

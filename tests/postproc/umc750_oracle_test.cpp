@@ -48,7 +48,7 @@ TEST_CASE("UMC-750: B and C of every GOTO equal NX's post output") {
   std::ifstream cl_in(test::data("real/nx_APT_Variable_Axis.txt"));
   cl::AptReader reader(cl_in, "nx_APT_Variable_Axis.txt", {.default_inch = true});
   NominalSolver solver(m, {});
-  AxisPosition previous;
+  AxisPosition previous = home_of(m);
   std::size_t i = 0;
   double worst_deg = 0.0;
   int c_swings = 0;

@@ -26,7 +26,7 @@ struct Case {
 
   double run(const FrameArc& arc, VerifyReport& report) {
     const auto at = [&](const Vec3d& x) {
-      AxisPosition q;
+      AxisPosition q = home_of(machine);
       q.linear_mm = x;  // a three-axis machine at home offsets: the tool tip is at the linear axes
       return q;
     };

@@ -13,7 +13,7 @@ inline double actual_position(const comp::MachineModel& model, int axis, double 
   const Machine& m = model.machine();
   comp::RowState<double> state;
   if (const int r = model.layout().reversal_of(axis); r >= 0 && falling) state.reversal[axis] = model.values()[r];
-  AxisPosition command;
+  AxisPosition command = home_of(m);
   command[axis] = q;
   const Axis& a = m.axes[axis];
   if (!a.is_rotary()) return model.tool_pose(command, Setup{}, state).tip_mm.dot(a.direction);

@@ -16,7 +16,7 @@
 namespace ncpost::comp {
 namespace {
 
-using Jet = Eigen::AutoDiffScalar<Eigen::Matrix<double, 5, 1>>;
+using Jet = Eigen::AutoDiffScalar<Eigen::Matrix<double, kMaxAxes, 1>>;  // d/d(each command)
 
 /// Two unit vectors completing u to an orthonormal basis.
 void perpendicular_pair(const Vec3d& u, Vec3d& b1, Vec3d& b2) {
@@ -76,7 +76,7 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
     if (out.tip_error_mm <= o.tip_tolerance_mm && out.axis_error_rad <= o.axis_tolerance_rad) {
       out.position = q;
       out.actual = q;
-      for (int a = 0; a < 5; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
+      for (int a = 0; a < 3 + m.rotary_count(); ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
       out.actual_pose = actual;
       return out;
     }
@@ -91,7 +91,7 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
     target.axis = (u - (actual.axis - nominal.axis)).normalized();
     const IkOutcome ik = solve(m, target, setup, q);
     if (!ik.ok()) return std::nullopt;
-    if ((ik.position->rotary_rad - nominal_guess.rotary_rad).cwiseAbs().maxCoeff() > kMaxRotaryStepRad) return std::nullopt;
+    if (max_abs_step(ik.position->rotary_rad, nominal_guess.rotary_rad) > kMaxRotaryStepRad) return std::nullopt;
     q = *ik.position;
   }
   return std::nullopt;
@@ -115,14 +115,11 @@ ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup
   for (out.iterations = 0; out.iterations <= o.max_iterations; ++out.iterations) {
     const RowState<double> state = state_of(q);
     AxisPositionT<Jet> qj;
-    for (int i = 0; i < 5; ++i) {
-      const double v = i < n ? q[i] : 0.0;
-      qj[i] = i < n ? Jet(v, 5, i) : Jet(v, Eigen::Matrix<double, 5, 1>::Zero());
-    }
+    for (int i = 0; i < n; ++i) qj[i] = Jet(q[i], kMaxAxes, i);
     const ErrorFunctor<double> f(model.layout(), model.values().data(), state, true);
     const ToolPoseT<Jet> pose = ncpost::tool_pose<Jet>(m, qj, setup, f);
-    Eigen::Matrix<double, 5, 1> r;
-    Eigen::Matrix<double, 5, 5> J;
+    Eigen::Matrix<double, 5, 1> r;  // tip (3, mm) and tool axis across u (2)
+    Eigen::Matrix<double, 5, kMaxAxes> J;
     for (int k = 0; k < 3; ++k) {
       r[k] = pose.tip_mm[k].value() - cl.tip_mm[k];
       J.row(k) = pose.tip_mm[k].derivatives().transpose();
@@ -143,11 +140,13 @@ ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup
       for (int a = 0; a < n; ++a) out.actual[a] += state.reversal[static_cast<std::size_t>(a)];
       return out;
     }
-    // a three-axis machine solves the tip only
-    const Eigen::MatrixXd A = n == 5 ? Eigen::MatrixXd(J) : Eigen::MatrixXd(J.topLeftCorner(3, n));
+    // a three-axis machine solves the tip only; with rotary axes the tool axis too (least squares
+    // with one rotary axis, which turns the tool about one direction only)
+    const int rows = n > 3 ? 5 : 3;
+    const Eigen::MatrixXd A = J.topLeftCorner(rows, n);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
     svd.setThreshold(1e-9);
-    const Eigen::VectorXd rr = n == 5 ? Eigen::VectorXd(r) : Eigen::VectorXd(r.head(3));
+    const Eigen::VectorXd rr = r.head(rows);
     const Eigen::VectorXd step = -svd.solve(rr);
     for (int i = 0; i < n; ++i) q[i] += step[i];
   }
@@ -163,10 +162,10 @@ enum class PlaySide { rising, falling, standing };
 /// rising axis stands at command + min(0, b), a falling one at command + max(0, b) (smooth in the
 /// command), a standing one where it stands (its command moves it not at all: a zero column of the
 /// Jacobian, which the truncated SVD leaves alone).
-RowState<double> held_on(const std::array<PlaySide, 5>& side, const AxisPosition& previous_actual) {
+RowState<double> held_on(const PerAxis<PlaySide>& side, const AxisPosition& previous_actual) {
   RowState<double> s;
-  std::array<double, 5> from{};
-  for (int a = 0; a < 5; ++a) {
+  PerAxis<double> from{};
+  for (int a = 0; a < kMaxAxes; ++a) {
     const double far = 1e9;  // beyond any band: the clamp picks the edge of the side
     switch (side[static_cast<std::size_t>(a)]) {
       case PlaySide::rising: from[static_cast<std::size_t>(a)] = -far; break;
@@ -213,7 +212,7 @@ ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, co
   ActualIkOutcome free = newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
   if (!free.ok()) return free;
   std::vector<int> play_axes;
-  std::array<PlaySide, 5> implied{};
+  PerAxis<PlaySide> implied{};
   implied.fill(PlaySide::rising);
   for (int a = 0; a < n; ++a) {
     if (model.layout().reversal_of(a) < 0) continue;
@@ -230,7 +229,7 @@ ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, co
     const double keep = o.previous_command ? (*o.previous_command)[a] : (*free.position)[a];
     return std::clamp(keep, from[a] - hi, from[a] - lo);
   };
-  auto attempt = [&](const std::array<PlaySide, 5>& side, ActualIkOutcome& out) {
+  auto attempt = [&](const PerAxis<PlaySide>& side, ActualIkOutcome& out) {
     AxisPosition guess = *free.position;
     for (int a : play_axes) guess[a] = command_for(a, side[static_cast<std::size_t>(a)], (*free.position)[a]);
     const RowState<double> held = held_on(side, from);
@@ -241,8 +240,8 @@ ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, co
   };
   // first the implied sides with every axis whose move is tiny standing; then the implied sides;
   // then every other choice (3^k, k axes with reversal)
-  std::vector<std::array<PlaySide, 5>> order;
-  std::array<PlaySide, 5> still = implied;
+  std::vector<PerAxis<PlaySide>> order;
+  PerAxis<PlaySide> still = implied;
   for (int a : play_axes) {
     const double move = std::abs((*free.position)[a] - from[a]);
     const double small = a < 3 ? o.tip_tolerance_mm : o.axis_tolerance_rad;
@@ -254,7 +253,7 @@ ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, co
   int combos = 1;
   for (int i = 0; i < k; ++i) combos *= 3;
   for (int c = 0; c < combos; ++c) {
-    std::array<PlaySide, 5> side = implied;
+    PerAxis<PlaySide> side = implied;
     int code = c;
     for (int a : play_axes) {
       side[static_cast<std::size_t>(a)] = static_cast<PlaySide>(code % 3);

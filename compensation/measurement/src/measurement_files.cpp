@@ -10,8 +10,8 @@ namespace ncpost::comp {
 namespace {
 
 bool same_row(const MeasurementRow& a, const MeasurementRow& b) {
-  return a.time_s == b.time_s && a.run == b.run && a.approach == b.approach && a.command.linear_mm == b.command.linear_mm &&
-         a.command.rotary_rad == b.command.rotary_rad && a.value == b.value;
+  return a.time_s == b.time_s && a.run == b.run && a.approach == b.approach && a.command == b.command &&
+         a.value == b.value;
 }
 
 }  // namespace

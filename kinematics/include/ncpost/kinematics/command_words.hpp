@@ -2,21 +2,23 @@
 #pragma once
 // The NC words of a kinematic model's commands (kinematic_model.hpp): which slot of AxisPosition
 // is which letter, and which are angles. Units: rad inside, degrees in the program; mm.
-#include <array>
+#include <string>
+#include <vector>
 
 #include "ncpost/kinematics/machine.hpp"
 
 namespace ncpost {
 
 /// The NC words of a model's commands: AxisPosition slot i (operator[]) is the word `letters[i]`,
-/// an angle (rad inside, degrees in the program) where `angle[i]`, else a length (mm). Serial
-/// machines: X Y Z and their rotary axes; the TRR-XY machine: X Y U V W, all lengths. Read once
-/// per post (not per point).
+/// an angle (rad inside, degrees in the program) where `angle[i]`, else a length (mm). As many as
+/// the model has axes: a three-axis machine X Y Z, a four-axis one X Y Z and its rotary axis, a
+/// five-axis one X Y Z and its two; the TRR-XY machine X Y U V W, all lengths. Read once per post
+/// (not per point).
 struct CommandWords {
-  int count = 5;
-  std::array<char, 5> letters{'X', 'Y', 'Z', 'A', 'B'};
-  std::array<bool, 5> angle{false, false, false, true, true};
-  int rotary_count = 2;  ///< how many words are angles (slots 3 and 4 on a serial machine)
+  int count = 3;
+  std::vector<char> letters{'X', 'Y', 'Z'};
+  std::vector<bool> angle{false, false, false};
+  int rotary_count = 0;  ///< how many words are angles (slots 3 and up on a serial machine)
   /// True for a serial chain (Machine, closed-form inverse): with_rotary() and the rotary-axis
   /// strategies of the post (branch changes, native arcs and cycles, cutter compensation) apply.
   bool serial = true;
@@ -25,13 +27,17 @@ struct CommandWords {
   static CommandWords of(const Machine& m) {
     CommandWords w;
     w.count = static_cast<int>(m.axes.size());
-    for (int i = 0; i < w.count && i < 5; ++i) {
-      w.letters[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].letter;
-      w.angle[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].is_rotary();
+    w.letters.clear();
+    w.angle.clear();
+    for (const Axis& a : m.axes) {
+      w.letters.push_back(a.letter);
+      w.angle.push_back(a.is_rotary());
     }
     w.rotary_count = m.rotary_count();
     return w;
   }
+  /// The model's position at home (every axis at 0), sized for its words.
+  AxisPosition home() const { return AxisPosition::zero(count - 3); }
 };
 
 }  // namespace ncpost

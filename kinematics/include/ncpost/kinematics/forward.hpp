@@ -59,10 +59,10 @@ struct HomeInverse {
   double tool_length_mm = 0.0;
   /// Per axis: the actual direction of a rotary axis tilted by its location errors,
   /// Rot(ε⊥)·d (the hook's location terms are constants of the model).
-  std::array<std::optional<Vec3d>, 5> rotary_direction;
+  PerAxis<std::optional<Vec3d>> rotary_direction;
   /// Per axis: the error terms at home, which are the terms at every command for a hook whose
   /// terms are all constants (the hook decides when to use them).
-  std::array<AxisErrorTerms<double>, 5> terms_at_home;
+  PerAxis<AxisErrorTerms<double>> terms_at_home;
 };
 
 /// An error hook that carries its home inverse: `errors.cached_home(tool_length_mm)` returns it

@@ -7,6 +7,8 @@
 // Method: with v the tool axis direction between the two rotary axes, both rotations preserve
 // the component of a vector along their own axis, so v lies on the intersection of two planes
 // with the unit sphere: two solutions in general, one on the boundary, none outside the reach.
+// One rotary axis (a four-axis machine): the tool axis must keep its component along that axis
+// (u·d = e_z·d), then one angle turns it; no rotary axis: the tool axis must be +Z.
 // Angles in rad, lengths in mm, CL data in W.
 //
 // Solution choice (`select_solution`): among the two solutions and their 2π shifts, the one within
@@ -50,7 +52,7 @@ template <class T, std::size_t N> class SmallList {
 /// One rotary solution in principal angles (-π, π]; `free_axis` >= 0 at a singular pose
 /// names the rotary index whose angle is undetermined (set to 0 here).
 struct RotarySolution {
-  Eigen::Vector2d rotary_rad = Eigen::Vector2d::Zero();
+  RotaryAngles rotary_rad;  ///< one angle per rotary axis of the machine
   int free_axis = -1;
 };
 
@@ -60,7 +62,7 @@ struct RotarySolution {
 SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance = 1e-9);
 
 /// X Y Z (mm) that put the tool tip on `tip_W` for the given rotary angles.
-Vec3d linear_for(const Machine& m, const Eigen::Vector2d& rotary_rad, const Vec3d& tip_W, const Setup& setup);
+Vec3d linear_for(const Machine& m, const RotaryAngles& rotary_rad, const Vec3d& tip_W, const Setup& setup);
 
 struct IkPolicy {
   double singular_tolerance = 1e-9;  ///< |sin| of the angle between the tool axis and the free axis
@@ -83,8 +85,8 @@ struct IkOutcome {
 };
 
 /// Candidate unwound to be nearest `previous` and within limits; nullopt if no 2π shift fits.
-std::optional<AxisPosition> admissible_candidate(const Machine& m, const Eigen::Vector2d& rotary_rad,
-                                                 const Eigen::Vector2d& previous_rad);
+std::optional<AxisPosition> admissible_candidate(const Machine& m, const RotaryAngles& rotary_rad,
+                                                 const RotaryAngles& previous_rad);
 
 /// Solve a CL point, choosing the solution nearest `previous` that respects the limits.
 IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const AxisPosition& previous,
@@ -97,7 +99,7 @@ SmallList<AxisPosition, 2> admissible_solutions(const Machine& m, const ClPoint&
 /// Rotary travel (sum of |Δangle|, rad) from `previous_rad` to the nearest solution for the tool
 /// axis `axis_W` if the rotary axes had no limits; nullopt at a singular pose or out of reach. A
 /// chosen solution that travels clearly more was forced by the limits onto another branch.
-std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const Eigen::Vector2d& previous_rad,
+std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axis_W, const RotaryAngles& previous_rad,
                                               const IkPolicy& policy = {});
 
 /// Angle (rad) that turns `from` into `to` about the unit `d`, both projected on the plane normal

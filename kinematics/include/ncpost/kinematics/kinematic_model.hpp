@@ -36,7 +36,7 @@ class KinematicModel {
   /// True when solve_quiet() depends on nothing the post's progress changes (no reversal state).
   virtual bool concurrent() const { return false; }
   /// Commands for `cl` with the rotary angles given (programmed angles of G-code input).
-  virtual AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const = 0;
+  virtual AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const = 0;
   /// Where the tool is at the commands q (tip and axis in W) on the machine the program is for,
   /// the axes standing where `data` says.
   virtual ToolPoseT<double> execute(const AxisPosition& q, const SolverData& data) const = 0;

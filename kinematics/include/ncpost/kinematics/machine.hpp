@@ -6,6 +6,8 @@
 // Frames and units: directions and pivots are given at home in M (mm). Head-axis pivots are
 // relative to the spindle gauge point (the job's tool length is added along +Z). Limits are in mm
 // for linear axes and in radians for rotary axes; a rotary axis without limits is continuous.
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +38,7 @@ struct Axis {
   bool continuous() const { return is_rotary() && !limits; }
 };
 
-/// A serial machine: exactly the linear axes X, Y, Z and zero or two rotary axes.
+/// A serial machine: exactly the linear axes X, Y, Z and zero, one or two rotary axes.
 /// `axes` is ordered X, Y, Z, then the rotary axes in NC word order (A before B before C), so that
 /// rotary axis k is `axes[3 + k]` and `AxisPosition::rotary_rad[k]`.
 struct Machine {
@@ -56,14 +58,67 @@ struct Machine {
   }
 };
 
-/// Commanded positions of a serial machine: X Y Z in mm, rotary axes in rad (machine order).
+template <class S> struct AxisPositionT;
+/// All axes of `m` at 0 (home), sized for its rotary axes.
+AxisPositionT<double> home_of(const Machine& m);
+
+/// Most rotary (or further) axes a kinematic model has: a serial chain here has 0, 1 or 2, the
+/// TRR-XY machine 2 (its V W); held in place (no allocation per point).
+inline constexpr int kMaxRotaryAxes = 3;
+/// Most axes of a model (3 linear + kMaxRotaryAxes): the capacity of per-axis tables held in
+/// place; how many are used is the model's (Machine::axes, CommandWords::count).
+inline constexpr int kMaxAxes = 3 + kMaxRotaryAxes;
+/// A value per axis of a model, held in place (entries beyond the model's axes are unused).
+template <class T> using PerAxis = std::array<T, kMaxAxes>;
+template <class T> constexpr PerAxis<T> per_axis_filled(const T& v) {
+  PerAxis<T> a{};
+  a.fill(v);
+  return a;
+}
+/// The rotary commands of a model, as many as it has (rad; machine order).
+template <class S> using RotaryT = Eigen::Matrix<S, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxRotaryAxes, 1>;
+using RotaryAngles = RotaryT<double>;
+
+/// Commanded positions: X Y Z in mm, then the model's further axes — on a serial machine its
+/// rotary axes in rad (machine order, as many as Machine::rotary_count()); the number of axes is
+/// the model's (3 + rotary_rad.size()), not fixed.
 template <class S> struct AxisPositionT {
   Vec3<S> linear_mm = Vec3<S>::Zero();
-  Eigen::Matrix<S, 2, 1> rotary_rad = Eigen::Matrix<S, 2, 1>::Zero();
+  RotaryT<S> rotary_rad;  ///< size = the model's rotary axis count (0 on a three-axis machine)
 
-  /// Command of axis `index` of Machine::axes (mm or rad).
-  S& operator[](int index) { return index < 3 ? linear_mm[index] : rotary_rad[index - 3]; }
-  const S& operator[](int index) const { return index < 3 ? linear_mm[index] : rotary_rad[index - 3]; }
+  /// X Y Z at 0 and no rotary axis given: home on every model (rotary_of, operator[]).
+  AxisPositionT() = default;
+  /// All axes at 0 for a model with `rotary_count` rotary axes.
+  static AxisPositionT zero(int rotary_count) {
+    AxisPositionT q;
+    q.rotary_rad = RotaryT<S>::Zero(rotary_count);
+    return q;
+  }
+  /// X Y Z then the rotary angles given.
+  AxisPositionT(const Vec3<S>& linear, const RotaryT<S>& rotary) : linear_mm(linear), rotary_rad(rotary) {}
+
+  /// The same commands, exactly (positions of different sizes differ).
+  bool operator==(const AxisPositionT& o) const {
+    return rotary_rad.size() == o.rotary_rad.size() && linear_mm == o.linear_mm && rotary_rad == o.rotary_rad;
+  }
+  /// How many axes: 3 linear and the rotary ones.
+  int size() const { return 3 + static_cast<int>(rotary_rad.size()); }
+  /// Command of axis `index` of Machine::axes (mm or rad); writing an axis beyond size() adds
+  /// the axes up to it (at 0).
+  S& operator[](int index) {
+    if (index < 3) return linear_mm[index];
+    if (index - 3 >= rotary_rad.size()) {
+      const Eigen::Index had = rotary_rad.size();
+      rotary_rad.conservativeResize(index - 2);
+      rotary_rad.tail(rotary_rad.size() - had).setZero();
+    }
+    return rotary_rad[index - 3];
+  }
+  /// Command of axis `index` (mm or rad); an axis beyond size() stands at 0 (home).
+  S operator[](int index) const {
+    if (index < 3) return linear_mm[index];
+    return index - 3 < rotary_rad.size() ? rotary_rad[index - 3] : S(0);
+  }
 
   template <class T> AxisPositionT<T> cast() const {
     AxisPositionT<T> r;
@@ -73,6 +128,25 @@ template <class S> struct AxisPositionT {
   }
 };
 using AxisPosition = AxisPositionT<double>;
+
+/// The rotary angles of q on a model with `count` rotary axes: q's own, the missing ones at 0
+/// (home) — AxisPosition{} is home on every model.
+template <class S> RotaryT<S> rotary_of(const AxisPositionT<S>& q, int count) {
+  RotaryT<S> r = RotaryT<S>::Zero(count);
+  const Eigen::Index have = std::min<Eigen::Index>(count, q.rotary_rad.size());
+  r.head(have) = q.rotary_rad.head(have);
+  return r;
+}
+/// q with exactly `count` rotary axes (the missing ones at 0, extra ones dropped).
+template <class S> AxisPositionT<S> sized(const AxisPositionT<S>& q, int count) {
+  return AxisPositionT<S>(q.linear_mm, rotary_of(q, count));
+}
+inline AxisPosition home_of(const Machine& m) { return AxisPosition::zero(m.rotary_count()); }
+
+/// Largest |a_k − b_k| over the rotary angles (0 without rotary axes); a and b the same size.
+inline double max_abs_step(const RotaryAngles& a, const RotaryAngles& b) {
+  return a.size() == 0 ? 0.0 : (a - b).cwiseAbs().maxCoeff();
+}
 
 /// A cutter-location point in W: the tool tip and the unit tool axis (tip toward spindle).
 struct ClPoint {

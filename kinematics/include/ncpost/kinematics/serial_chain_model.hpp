@@ -21,15 +21,14 @@ class SerialChainModel final : public KinematicModel {
     return ncpost::solve(machine_, cl, setup_, previous);
   }
   bool concurrent() const override { return true; }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData&) const override {
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData&) const override {
     return with_rotary(cl, rotary_rad);
   }
   /// with_rotary() needs no data on the nominal machine.
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad) const {
-    AxisPosition q;
-    q.rotary_rad = rotary_rad;
-    q.linear_mm = linear_for(machine_, rotary_rad, cl.tip_mm, setup_);
-    return q;
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad) const {
+    const RotaryAngles rotary = rotary_rad.size() == machine_.rotary_count() ? rotary_rad
+                                                                             : rotary_of(AxisPosition(Vec3d::Zero(), rotary_rad), machine_.rotary_count());
+    return AxisPosition(linear_for(machine_, rotary, cl.tip_mm, setup_), rotary);
   }
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override { return execute(q); }
   /// execute() needs no data on the nominal machine.

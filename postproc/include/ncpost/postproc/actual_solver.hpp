@@ -48,7 +48,7 @@ class ActualSolver final : public KinematicModel {
                            const std::optional<AxisPosition>& stands) const;
   /// Without reversal terms the commands depend on the CL point and the previous commands only.
   bool concurrent() const override { return !model_.has_reversal(); }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const override;
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const override;
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData& data) const override;
   void advance(const AxisPosition& command, SolverData& data) const override;
   std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to,
@@ -66,8 +66,8 @@ class ActualSolver final : public KinematicModel {
   comp::ErrorFunctor<double> errors_from(const std::optional<AxisPosition>& stands) const {
     comp::RowState<double> state;
     if (stands) {
-      std::array<double, 5> previous{};
-      for (int a = 0; a < 5; ++a) previous[static_cast<std::size_t>(a)] = (*stands)[a];
+      PerAxis<double> previous{};
+      for (int a = 0; a < stands->size(); ++a) previous[static_cast<std::size_t>(a)] = (*stands)[a];
       state.previous_actual = previous;
     }
     return model_.errors(state).with_home(&home_);

@@ -18,16 +18,16 @@
 #include <functional>
 #include <vector>
 
-#include <Eigen/Core>
+#include "ncpost/kinematics/machine.hpp"
 
 namespace ncpost {
 
 /// The rotary angles (rad) of each candidate solution of each point, best (the solver's order) first.
-using BranchCandidates = std::vector<std::vector<Eigen::Vector2d>>;
+using BranchCandidates = std::vector<std::vector<RotaryAngles>>;
 
 /// True when moving from the rotary angles `from` (the point before, or the start) to `to` at point
 /// `point` is a forced change of solution.
-using ForcedChange = std::function<bool(std::size_t point, const Eigen::Vector2d& from, const Eigen::Vector2d& to)>;
+using ForcedChange = std::function<bool(std::size_t point, const RotaryAngles& from, const RotaryAngles& to)>;
 
 struct BranchPlan {
   std::vector<std::size_t> choice;  ///< the candidate index of each point
@@ -38,11 +38,11 @@ struct BranchPlan {
 /// The plan with the fewest forced changes, then the least travel, from `start_rad`; ties keep the
 /// earlier candidate. Every point must have at least one candidate. `window` >= 1 points are
 /// planned at once.
-BranchPlan plan_branches(const Eigen::Vector2d& start_rad, const BranchCandidates& candidates,
+BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
                          const ForcedChange& forced, std::size_t window);
 
 /// The greedy choice (nearest the previous, ties keep the earlier candidate), for comparison.
-BranchPlan greedy_branches(const Eigen::Vector2d& start_rad, const BranchCandidates& candidates,
+BranchPlan greedy_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
                            const ForcedChange& forced);
 
 }  // namespace ncpost

@@ -30,7 +30,7 @@ struct Motion {
   bool from = false;           ///< FROM: the start position, no cutting
   /// Rotary angles programmed in G-code input (rad, machine rotary order); the post keeps them
   /// instead of choosing a solution itself (RTCP programs, re-posted machine-axis programs).
-  std::optional<Eigen::Vector2d> rotary_rad;
+  std::optional<RotaryAngles> rotary_rad;
   bool inverse_time = false;   ///< G93 was active: `feed` of this motion is 1/min
   std::optional<double> feed;  ///< a feed word on this block (mm/min, or 1/min under G93)
 };

@@ -22,7 +22,7 @@ class ExecutedOn final : public KinematicModel {
     return commands_.solve_quiet(cl, previous, data, figures);
   }
   bool concurrent() const override { return commands_.concurrent(); }
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const override {
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const override {
     return commands_.with_rotary(cl, rotary_rad, data);
   }
   /// On the executing machine, its axes standing at data.executing_stands.

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "ncpost/kinematics/machine.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/dialect.hpp"
 
@@ -20,7 +21,7 @@ namespace ncpost {
 /// One motion block in output units: axis words in `letters` order (mm, deg).
 struct NcMotion {
   bool rapid = false;
-  std::array<double, 5> values{};  ///< X Y Z then rotary axes
+  PerAxis<double> values{};  ///< X Y Z then rotary axes
   enum class FeedMode { per_minute, inverse_time } feed_mode = FeedMode::per_minute;
   double feed = 0.0;               ///< mm/min, or 1/min under inverse time
 };
@@ -130,7 +131,7 @@ class NcWriter {
   Dialect dialect_;
   std::string letters_;
   fmt::memory_buffer buf_;
-  std::array<std::optional<double>, 5> last_{};
+  PerAxis<std::optional<double>> last_{};
   std::optional<int> last_motion_;  ///< 0, 1, 2 or 3
   int plane_ = 17;
   std::optional<NcMotion::FeedMode> last_feed_mode_;

@@ -31,7 +31,7 @@ class TrrSolver final : public KinematicModel {
   IkOutcome inverse(const ClPoint& cl) const;
   bool concurrent() const override { return true; }
   /// The TRR-XY machine has no rotary words: the angles are ignored (the post never asks: words().serial is false).
-  AxisPosition with_rotary(const ClPoint& cl, const Eigen::Vector2d& rotary_rad, SolverData& data) const override;
+  AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const override;
   /// Tool tip and axis in W at the commands; throws Infeasible when the plate pose cannot be solved.
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData& /*data*/) const override { return execute(q); }
   ToolPoseT<double> execute(const AxisPosition& q) const;

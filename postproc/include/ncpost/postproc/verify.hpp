@@ -35,7 +35,7 @@ double verify_block(const KinematicModel& solver, const SolverData& data, const 
 /// `rotary_rad` (where the control turned them: the tool along the plane's Z). verify_block of two
 /// such commands measures the block as the control runs it.
 AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
-                               const Eigen::Vector2d& rotary_rad, const Vec3d& xyz_F);
+                               const RotaryAngles& rotary_rad, const Vec3d& xyz_F);
 
 /// Distance of `p` from the segment a-b.
 double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b);

@@ -96,7 +96,7 @@ class ModelLayout {
   std::vector<std::vector<int>> axis_terms_;
   std::vector<std::array<TableNodes, 6>> tables_;
   std::vector<bool> periodic_;  ///< per axis: its tables are periodic (rotary)
-  std::array<int, 5> reversal_{-1, -1, -1, -1, -1};
+  PerAxis<int> reversal_ = per_axis_filled(-1);
   std::vector<int> drift_terms_;
   int drift_axis_ = -1;
   std::vector<bool> acts_;  ///< per axis: any parameter acts on it
@@ -108,13 +108,13 @@ class ModelLayout {
 
 /// What the model needs to know about the measurement row being evaluated.
 template <class P> struct RowState {
-  std::array<P, 5> reversal{P(0), P(0), P(0), P(0), P(0)};  ///< actual − command per axis (mm / rad)
+  PerAxis<P> reversal = per_axis_filled(P(0));  ///< actual − command per axis (mm / rad)
   double time_s = 0.0;                                      ///< time stamp for the drift law
   /// Where the axes stood before the current move (mm / rad). When set, the reversal offset of
   /// each command q is that of the dead band from there, clamp(previous, q, q + b) − q, instead of
   /// the fixed `reversal` above: a block that starts on a reversal first crosses the band standing
   /// still (posting: the commands of a block vary along it).
-  std::optional<std::array<double, 5>> previous_actual;
+  std::optional<PerAxis<double>> previous_actual;
 };
 
 template <class P> class ErrorFunctor {

@@ -44,7 +44,7 @@ std::vector<RowState<P>> row_states(const ModelLayout& layout, const P* values,
                                     const std::vector<AxisPosition>& commands, const std::vector<double>& times_s) {
   std::vector<RowState<P>> states(commands.size());
   for (std::size_t k = 0; k < commands.size(); ++k) states[k].time_s = k < times_s.size() ? times_s[k] : 0.0;
-  for (int axis = 0; axis < 5; ++axis) {
+  for (int axis = 0; axis < kMaxAxes; ++axis) {
     const int p = layout.reversal_of(axis);
     if (p < 0) continue;
     std::vector<double> c(commands.size());

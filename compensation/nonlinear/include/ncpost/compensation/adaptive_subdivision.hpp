@@ -112,7 +112,7 @@ template <class Errors, class Solver> class Subdivider {
  public:
   Subdivider(const Machine& m, const Setup& s, const ClBlock& b, const Errors& e, Solver& solver, const AdaptiveOptions& o)
       : machine_(m), setup_(s), block_(b), errors_(e), solver_(solver), options_(o) {
-    const double travel = (b.to.rotary_rad - b.from.rotary_rad).cwiseAbs().maxCoeff();
+    const double travel = max_abs_step(b.to.rotary_rad, b.from.rotary_rad);
     max_step_ = travel + o.max_rotary_step_rad;
     bow_bounded_ = o.model_bow_mm > 0.0 && !rigid_chain(e);
   }
@@ -228,7 +228,7 @@ template <class Errors, class Solver> class Subdivider {
         tb = cuts[k];
         cb = cl_at(block_.start, block_.end, tb);
         const IkOutcome o = keep_rotary_ ? IkOutcome{} : solver_(cb, qa);
-        if (o.ok() && (o.position->rotary_rad - qa.rotary_rad).cwiseAbs().maxCoeff() <= max_step_) {
+        if (o.ok() && max_abs_step(o.position->rotary_rad, qa.rotary_rad) <= max_step_) {
           qb = *o.position;
         } else {
           auto kept = rotary_kept_node(tb, cb, failure);
@@ -248,11 +248,11 @@ template <class Errors, class Solver> class Subdivider {
   /// (end points on different branches, near the singular cone).
   bool branch_consistent() const {
     const double limit = std::max(options_.branch_deviation_rad,
-                                  (block_.to.rotary_rad - block_.from.rotary_rad).cwiseAbs().maxCoeff());
+                                  max_abs_step(block_.to.rotary_rad, block_.from.rotary_rad));
     for (double t : {0.25, 0.5, 0.75}) {
       const AxisPosition hint = lerp(block_.from, block_.to, t);
       const IkOutcome o = solver_(cl_at(block_.start, block_.end, t), hint);
-      if (o.ok() && (o.position->rotary_rad - hint.rotary_rad).cwiseAbs().maxCoeff() > limit) return false;
+      if (o.ok() && max_abs_step(o.position->rotary_rad, hint.rotary_rad) > limit) return false;
     }
     return true;
   }

@@ -51,7 +51,7 @@ inline NonlinearErrorOptions fast_error_options() {
 
 /// Scan intervals used for a block: enough to bracket the maxima of its rotary motion.
 inline int scan_intervals_for(const ClBlock& block, const NonlinearErrorOptions& options) {
-  const double travel = (block.to.rotary_rad - block.from.rotary_rad).cwiseAbs().maxCoeff();
+  const double travel = max_abs_step(block.to.rotary_rad, block.from.rotary_rad);
   const int n = static_cast<int>(std::ceil(travel / options.scan_step_rad));
   return std::clamp(n, options.min_scan_intervals, options.max_scan_intervals);
 }
