@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "ncpost/postproc/gcode_control_words.hpp"
 
@@ -140,6 +141,76 @@ void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, Pr
   fx.cycle = k;
 }
 
+/// A G2/G3 given by its centre words, before they are read (offsets along the plane's a1, a2; mm).
+struct ArcGiven {
+  const ProgramPoint& start;
+  const ProgramPoint& end;
+  Plane plane;
+  bool clockwise;
+  double offset1_mm, offset2_mm;
+  int turns;
+
+  bool fits(ArcCentre reading) const {
+    const std::array<double, 2> c = arc_centre_of(reading, start, axes_of(plane), offset1_mm, offset2_mm);
+    return arc_from_centre(start, end, plane, clockwise, c[0], c[1], turns).arc.has_value();
+  }
+  /// The radii at the start and at the end under `reading` (mm).
+  std::array<double, 2> radii(ArcCentre reading) const {
+    const PlaneAxes ax = axes_of(plane);
+    const std::array<double, 2> c = arc_centre_of(reading, start, ax, offset1_mm, offset2_mm);
+    const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
+    return {std::hypot(start[a1] - c[0], start[a2] - c[1]), std::hypot(end[a1] - c[0], end[a2] - c[1])};
+  }
+  /// Whether I and J fit as distances whose signs the writer dropped (a centre from some signs).
+  bool fits_unsigned() const {
+    for (const double sign1 : {1.0, -1.0})
+      for (const double sign2 : {1.0, -1.0}) {
+        const std::array<double, 2> c = arc_centre_of(ArcCentre::incremental, start, axes_of(plane),
+                                                       sign1 * std::abs(offset1_mm), sign2 * std::abs(offset2_mm));
+        if (arc_from_centre(start, end, plane, clockwise, c[0], c[1], turns).arc) return true;
+      }
+    return false;
+  }
+};
+
+/// For an arc that the reading in force does not fit: the other readings it fits exactly (within
+/// the arc's radius tolerance) and how to post with one, or that none does. Never a reading chosen
+/// for the user: a program has one convention, and a full circle fits every one.
+std::string other_readings_advice(const ArcGiven& arc, ArcCentre in_force, int set_at_line, std::string_view letters) {
+  std::vector<ArcCentre> fitting;
+  for (const ArcCentre r : {ArcCentre::incremental, ArcCentre::centre_to_start, ArcCentre::absolute})
+    if (r != in_force && arc.fits(r)) fitting.push_back(r);
+  if (fitting.empty()) {
+    if (arc.fits_unsigned())
+      return fmt::format("; it fits only if {} are distances without their signs, a writing ncpost does not read (the "
+                         "centre is then a guess): post the CL data, or a program with signed {}", letters, letters);
+    ArcCentre nearest = in_force;
+    double nearest_mm = std::numeric_limits<double>::infinity();
+    for (const ArcCentre r : {ArcCentre::incremental, ArcCentre::centre_to_start, ArcCentre::absolute}) {
+      const std::array<double, 2> rr = arc.radii(r);
+      if (r != in_force && std::abs(rr[1] - rr[0]) < nearest_mm) nearest = r, nearest_mm = std::abs(rr[1] - rr[0]);
+    }
+    const std::array<double, 2> rr = arc.radii(nearest);
+    return fmt::format("; no other reading of {} (from the start, from the centre, absolute, unsigned) fits it either "
+                       "(the nearest: if {}, radius {:.4f} mm at the start, {:.4f} mm at the end)",
+                       letters, arc_centre_meaning(nearest, letters), rr[0], rr[1]);
+  }
+  if (set_at_line) {
+    std::string readings;
+    for (const ArcCentre r : fitting) readings += (readings.empty() ? "" : ", or if ") + arc_centre_meaning(r, letters);
+    return fmt::format("; it fits if {}, but G9{}.1 at line {} says {}", readings,
+                       in_force == ArcCentre::absolute ? 0 : 1, set_at_line, arc_centre_meaning(in_force, letters));
+  }
+  if (fitting.size() == 1)
+    return fmt::format("; it fits if {}: post with --arc-centre {}", arc_centre_meaning(fitting[0], letters),
+                       arc_centre_name(fitting[0]));
+  std::string readings;
+  for (const ArcCentre r : fitting)
+    readings += fmt::format("{}{} (--arc-centre {})", readings.empty() ? "" : ", or if ", arc_centre_meaning(r, letters),
+                            arc_centre_name(r));
+  return fmt::format("; it fits if {}: post with the one the program's control uses", readings);
+}
+
 }  // namespace
 
 void BlockEffect::clear() {
@@ -182,9 +253,12 @@ struct Interpreter::Words {
   int col(char c) const { return column[static_cast<std::size_t>(c - 'A')]; }
 };
 
-Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell)
-    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell) {
+Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell,
+                         ArcCentre arc_centre)
+    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell),
+      arc_centre_option_(arc_centre) {
   state_.inch = state_.feed_inch = default_inch;
+  state_.arc_centre = arc_centre;
   if (axis_letters_.find_first_of("UVW") != std::string::npos) {
     word_axes_ = true;
     for (std::size_t i = 0; i < slots_.size(); ++i) {
@@ -467,10 +541,27 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
     notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (codes.in(g_distance)) st.incremental = codes.of(g_distance).code10 == 910;
-  if (codes.in(g_arc_distance)) st.arc_centre_absolute = codes.of(g_arc_distance).code10 == 901;
+  apply_arc_distance(cx, codes);
   if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
   apply_motion_mode(codes, fx);
   if (st.motion == MotionMode::cycle) read_cycle_words(cx, w, codes);
+}
+
+// G90.1/G91.1: the program says how its I J K read; beside --arc-centre other than incremental
+// (the standard's reading, which G90.1 may switch) a different word contradicts the user's reading
+void Interpreter::apply_arc_distance(const Context& cx, const Codes& codes) {
+  if (!codes.in(g_arc_distance)) return;
+  const Code c = codes.of(g_arc_distance);
+  const ArcCentre said = c.code10 == 901 ? ArcCentre::absolute : ArcCentre::incremental;
+  if (arc_centre_option_ != ArcCentre::incremental && said != arc_centre_option_)
+    cx.fail(c.column, fmt::format("{} says I, J and K {} ({}), which contradicts --arc-centre {}: post without "
+                                  "--arc-centre {} (the program says how it writes arc centres)",
+                                  g_name(c.code10), said == ArcCentre::absolute ? "are the centre's coordinates"
+                                                                                : "are the vector from the start to the centre",
+                                  arc_centre_name(said), arc_centre_name(arc_centre_option_),
+                                  arc_centre_name(arc_centre_option_)));
+  state_.arc_centre = said;
+  state_.arc_centre_line = cx.line_number;
 }
 
 // G54-G59, G54.1 P<n>, G59.1-G59.3: the work offset places W on the machine (the job's
@@ -813,10 +904,13 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
     const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
     if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
       fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
-    const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
-    const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
-    const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
-    outcome = arc_from_centre(fx.start, end, st.plane, clockwise, c1, c2, turns);
+    const std::array<double, 2> centre = arc_centre_of(st.arc_centre, fx.start, ax, o1, o2);
+    outcome = arc_from_centre(fx.start, end, st.plane, clockwise, centre[0], centre[1], turns);
+    if (!outcome.arc) {
+      const ArcGiven given{fx.start, end, st.plane, clockwise, o1, o2, turns};
+      fail(column, outcome.error + other_readings_advice(given, st.arc_centre, st.arc_centre_line,
+                                                         fmt::format("{} and {}", l1, l2)));
+    }
   }
   if (!outcome.arc) fail(column, outcome.error);
   fx.arc = outcome.arc;
