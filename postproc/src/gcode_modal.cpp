@@ -872,7 +872,7 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
 
 // G2/G3: the arc from R or from its centre (I J K, incremental unless G90.1), P turns
 void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end,
-                           BlockEffect& fx) const {
+                           BlockEffect& fx) {
   const ModalState& st = state_;
   const Fail& fail = cx.fail;
   const double length_scale = st.inch ? kMmPerInch : 1.0;
@@ -899,7 +899,15 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
     outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
   } else {
     const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
-    if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
+    if (!w.has(l1) && !w.has(l2)) {
+      // NX posts for some controls leave them out where they equal the last arc's: they are not modal
+      const std::string last =
+          last_arc_line_ ? fmt::format("; they are not modal: the {} of the arc at line {} {} not carried over (write "
+                                       "the centre or R on every arc)",
+                                       last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are")
+                         : std::string();
+      fail(column, fmt::format("an arc needs {} and {} (its centre) or R{}", l1, l2, last));
+    }
     const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
     const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
     if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
@@ -914,6 +922,8 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   }
   if (!outcome.arc) fail(column, outcome.error);
   fx.arc = outcome.arc;
+  last_arc_line_ = cx.line_number;
+  last_arc_words_ = w.has('R') ? "R" : fmt::format("{} and {}", offset_letter[ax.a1], offset_letter[ax.a2]);
 }
 
 // M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 (a pallet

@@ -234,3 +234,31 @@ TEST_CASE("gcode arc centre: ncpost post --arc-centre centre-to-start writes the
   CHECK_THAT(test::read_text_file(log), Catch::Contains("c2s.ngc:4:1: the end point is not on the arc") &&
                                             Catch::Contains("post with --arc-centre centre-to-start"));
 }
+
+TEST_CASE("gcode arc centre: I J and R are not modal; one omitted centre word is 0") {
+  const GcodeReaderOptions o = reading(ArcCentre::incremental);
+  // nxpost_Mori_Seiki_Dura_Vert5100 lines 32-33: a full circle with I J, then an arc without them
+  const InputError ij = error_of("G20 G90\nG0 X1.1811 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG17 G03 I.7874 J0\nX1.2056 Y1.7737\n"
+                                 "M30\n",
+                                 o);
+  CHECK(ij.where().line == 5);
+  CHECK(ij.detail() == "an arc needs I and J (its centre) or R; they are not modal: the I and J of the arc at line 4 "
+                       "are not carried over (write the centre or R on every arc)");
+  // nxpost_LeBlond_Makino_KE_55 lines 322-324: an R arc, a line, an arc without R
+  const InputError r = error_of("G20 G90\nG0 X0 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG02X0.0Y2.1329R.1644\nG01X1.9685\n"
+                                "G02X2.1329Y1.9685\nM30\n",
+                                o);
+  CHECK(r.where().line == 6);
+  CHECK_THAT(r.detail(), Catch::EndsWith("the R of the arc at line 4 is not carried over (write the centre or R on "
+                                         "every arc)"));
+  CHECK(error_of("G21 G90\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10\nM30\n", o).detail() ==
+        "an arc needs I and J (its centre) or R");
+  // J omitted (RS274NGC, Fanuc: 0): start (10, 0), I-10 -> centre (0, 0); G3 to (-10, 0)
+  const OneArc a = one_arc("G21 G90\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X-10 Y0 I-10\nM30\n", ArcCentre::incremental);
+  CHECK((a.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
+  CHECK((a.end_mm - Vec3d(-10, 0, 0)).norm() < 1e-12);
+  // I omitted: start (0, -10), J10 -> centre (0, 0); G3 to (0, 10)
+  const OneArc b = one_arc("G21 G90\nG0 X0 Y-10 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 J10\nM30\n", ArcCentre::incremental);
+  CHECK((b.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
+  CHECK((b.end_mm - Vec3d(0, 10, 0)).norm() < 1e-12);
+}

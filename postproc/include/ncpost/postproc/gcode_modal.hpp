@@ -162,7 +162,7 @@ class Interpreter {
   void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
-  void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx) const;
+  void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx);
   void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
 
   std::string file_;
@@ -172,6 +172,8 @@ class Interpreter {
   bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
   IntegerDwell integer_dwell_ = IntegerDwell::automatic;
   ArcCentre arc_centre_option_ = ArcCentre::incremental;  ///< --arc-centre
+  int last_arc_line_ = 0;          ///< the last arc (for the message of an arc without I J or R)
+  std::string last_arc_words_;     ///< its centre words ("I and J", "R")
   ModalState state_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;
