@@ -229,6 +229,27 @@ constexpr const char* kOWordFlow =
 
 bool starts_with_o_word(const Block& b) { return !b.words.empty() && b.words.front().letter == 'O'; }
 
+/// `% 123 G71` (also `N9999 %123 G71 *` at the end) opens a Heidenhain ISO program: a program
+/// name and the units after the '%' (a Sinumerik `%_N_NAME_MPF` has no units word).
+bool heidenhain_iso_header(std::string_view rest) {
+  const auto skip_blanks = [&] {
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+  };
+  skip_blanks();
+  const std::size_t name = rest.find_first_of(" \t");
+  if (name == 0 || name == std::string_view::npos) return false;
+  rest.remove_prefix(name);
+  skip_blanks();
+  if (rest.size() < 3 || upper(rest[0]) != 'G' || rest[1] != '7' || (rest[2] != '0' && rest[2] != '1')) return false;
+  rest.remove_prefix(3);
+  skip_blanks();
+  return rest.empty() || rest.front() == '*';
+}
+
+constexpr const char* kHeidenhainIso =
+    "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J K are absolute "
+    "centres and M91/M92 move in machine coordinates, so ncpost does not read it as RS274 G-code; post the CL data";
+
 }  // namespace
 
 void parse_block(std::string_view line, Block& block, const std::string& file, int line_number) {
@@ -240,6 +261,8 @@ void parse_block(std::string_view line, Block& block, const std::string& file, i
   if (first == end) return;
   block.column = static_cast<int>(first - begin) + 1;
   if (*first == '%') {
+    if (heidenhain_iso_header(std::string_view(first + 1, static_cast<std::size_t>(end - first - 1))))
+      throw InputError({file, line_number, block.column}, kHeidenhainIso, std::string(line));
     block.percent = true;
     return;
   }

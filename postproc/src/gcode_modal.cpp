@@ -426,6 +426,17 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
   }
 }
 
+/// M91/M92 beside axis words: on Heidenhain (and the ISO programs NX writes for it) the block's
+/// coordinates are machine coordinates; elsewhere the machine builder's. Either way not W.
+constexpr const char* kMachineDatumM =
+    "M{} with axis words: on Heidenhain controls the block's coordinates are then machine coordinates (M91: from "
+    "the machine datum, M92: from a machine-defined position), which the reader does not place, and elsewhere M91/M92 "
+    "are the machine builder's; post the CL data, or move in machine coordinates with G53";
+
+bool Interpreter::has_axis_words(const Words& w) const {
+  return std::any_of(slots_.begin(), slots_.end(), [&](char L) { return L && w.has(L); });
+}
+
 // M codes by group; the ones not acted on are passed through
 void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx) {
   const auto take = [&](Code& slot, const Code& c) {
@@ -441,6 +452,9 @@ void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes,
       case 7: case 8: case 9: take(codes.m_coolant, c); break;
       case 128: case 129: case 428: case 429: take(codes.m_rtcp, c); break;
       case 97: case 98: case 99: cx.fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
+      case 91: case 92:
+        if (has_axis_words(w)) cx.fail(c.column, fmt::format(kMachineDatumM, c.code10));
+        [[fallthrough]];
       default:
         fx.after_motion.push_back(cl::Unsupported{cx.at(c.column), fmt::format("M{}", c.code10)});
         notice_once(fmt::format("M{}", c.code10), cx.line_number, c.column,
@@ -807,7 +821,9 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     st.moved_in_work = st.moved_in_work || fx.has_motion;
     return;
   }
-  if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");
+  if (st.motion == MotionMode::none)
+    fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
+                      "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block");
   if (!word_axes_) check_length_in_force(cx, w, st.motion, axis_column);
   st.moved_in_work = true;
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))

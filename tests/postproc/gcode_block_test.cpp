@@ -246,3 +246,17 @@ TEST_CASE("gcode block: a line that starts with a number says what it is") {
   CHECK(bin.where().column == 1);
   CHECK(bin.detail() == "unexpected byte 0xD0 at column 3 (binary data?); expected G-code text");
 }
+
+TEST_CASE("gcode block: a Heidenhain ISO program's '%' line is refused; other '%' lines delimit") {
+  // nxpost_Micron_WF21D line 1
+  const InputError e = error_of("% 123 G71");
+  CHECK(e.where().column == 1);
+  CHECK(e.detail() == "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J "
+                      "K are absolute centres and M91/M92 move in machine coordinates, so ncpost does not read it as "
+                      "RS274 G-code; post the CL data");
+  CHECK_THROWS_AS(parse("%PART1 G70 *"), InputError);
+  CHECK(parse("%_N_PART1_MPF").percent);  // Sinumerik
+  CHECK(parse("% 123").percent);
+  CHECK(parse("%").percent);
+  CHECK(parse("% part G71X").percent);  // not the units word alone
+}

@@ -13,7 +13,8 @@
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
 //   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
-//   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
+//   M429 (other M codes pass through as comments with a notice; M91/M92 beside axis words, Heidenhain's
+//   machine coordinates, are refused); words A B C D F H I J K L N O P Q
 //   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
 //   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
 //   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and
@@ -143,6 +144,7 @@ class Interpreter {
   // the steps of apply(), in order
   Words read_words(const Context& cx) const;
   void check_letter(const Context& cx, const Word& word) const;
+  bool has_axis_words(const Words& w) const;
   void group_g_codes(const Context& cx, const Words& w, Codes& codes);
   void group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx);
   void apply_units(const Context& cx, const Codes& codes);
