@@ -49,6 +49,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   go.default_inch = options.default_inch;
   go.units_given = options.units_given;
   go.integer_dwell = options.integer_dwell;
+  go.arc_centre = options.arc_centre;
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine

@@ -40,9 +40,11 @@ ArcOutcome finish(const ProgramPoint& start, const ProgramPoint& end, Plane plan
     return out;
   }
   const double dr = std::abs(a.radius_end_mm - a.radius_start_mm);
-  if (dr > std::max(kRadiusToleranceMm, kRadiusToleranceRelative * a.radius_start_mm)) {
-    out.error = fmt::format("the end point is not on the arc: radius {:.4f} mm at the start, {:.4f} mm at the end",
-                            a.radius_start_mm, a.radius_end_mm);
+  const double allowed_mm = std::max(kRadiusToleranceMm, kRadiusToleranceRelative * a.radius_start_mm);
+  if (dr > allowed_mm) {
+    out.error = fmt::format("the end point is not on the arc: radius {:.4f} mm at the start, {:.4f} mm at the end "
+                            "(they may differ by {:.4f} mm)",
+                            a.radius_start_mm, a.radius_end_mm, allowed_mm);
     return out;
   }
   a.angle_start_rad = std::atan2(s2, s1);
@@ -88,6 +90,35 @@ ProgramPoint ArcMove::at(double t) const {
 ArcOutcome arc_from_centre(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise,
                            double centre1_mm, double centre2_mm, int turns) {
   return finish(start, end, plane, clockwise, centre1_mm, centre2_mm, turns);
+}
+
+std::array<double, 2> arc_centre_of(ArcCentre reading, const ProgramPoint& start, PlaneAxes axes, double offset1_mm,
+                                    double offset2_mm) {
+  const double s1 = start[static_cast<std::size_t>(axes.a1)], s2 = start[static_cast<std::size_t>(axes.a2)];
+  switch (reading) {
+    case ArcCentre::incremental: return {s1 + offset1_mm, s2 + offset2_mm};
+    case ArcCentre::centre_to_start: return {s1 - offset1_mm, s2 - offset2_mm};
+    case ArcCentre::absolute: return {offset1_mm, offset2_mm};
+  }
+  return {s1 + offset1_mm, s2 + offset2_mm};
+}
+
+std::string_view arc_centre_name(ArcCentre reading) {
+  switch (reading) {
+    case ArcCentre::incremental: return "incremental";
+    case ArcCentre::centre_to_start: return "centre-to-start";
+    case ArcCentre::absolute: return "absolute";
+  }
+  return "incremental";
+}
+
+std::string arc_centre_meaning(ArcCentre reading, std::string_view letters) {
+  switch (reading) {
+    case ArcCentre::incremental: return fmt::format("{} are the vector from the start to the centre", letters);
+    case ArcCentre::centre_to_start: return fmt::format("{} are the vector from the centre to the start", letters);
+    case ArcCentre::absolute: return fmt::format("{} are the centre's coordinates", letters);
+  }
+  return {};
 }
 
 ArcOutcome arc_from_radius(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise,

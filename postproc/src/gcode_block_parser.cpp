@@ -8,7 +8,9 @@
 #include <boost/spirit/home/x3.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "ncpost/postproc/gcode_block.hpp"
 
@@ -91,6 +93,14 @@ const auto on_message = [](auto& ctx) {
   s.block.comments.push_back(BlockComment{all.substr(open + 1, close - open - 1), s.column_of(range.begin())});
 };
 
+/// ':' is the ISO program number address, written for O (Fanuc: `:1234` is `O1234`; NX's Fadal
+/// and Mori Seiki posts): a word O.
+const auto on_colon = [](auto& ctx) {
+  ParseState& s = state(ctx);
+  s.letter_end = x3::_where(ctx).begin();
+  s.block.words.push_back(Word{'O', 0.0, s.column_of(s.letter_end) - 1, false});
+};
+
 const auto on_program_name = [](auto& ctx) {
   const auto range = x3::_attr(ctx);
   state(ctx).block.program_name = std::string_view(range.begin() + 1, static_cast<std::size_t>(range.end() - range.begin() - 1));
@@ -122,15 +132,47 @@ const auto message = x3::rule<struct message_tag>{"message"} =
 const auto program_name = x3::rule<struct name_tag>{"program name"} =
     x3::raw[x3::lexeme[x3::char_("oO") >> &(*x3::char_("0-9") >> x3::char_("a-zA-Z_-")) >>
                        +(x3::char_ - x3::char_(" \t(;"))]][on_program_name];
-const auto block_grammar =
-    -x3::lit('/')[on_delete] >> -program_name >> *(paren_comment | keyword | message | word) >> -semicolon_comment;
+const auto colon_number = x3::rule<struct colon_tag>{"colon program number"} = x3::lit(':')[on_colon] > number;
+const auto block_grammar = -x3::lit('/')[on_delete] >> -(program_name | colon_number) >>
+                           *(paren_comment | keyword | message | word) >> -semicolon_comment;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// Words that follow the block number of a Heidenhain conversational (plain-language) block.
+constexpr std::string_view kHeidenhainWords[] = {"BEGIN PGM", "END PGM", "BLK FORM", "TOOL CALL", "TOOL DEF",
+                                                 "CYCL DEF", "CYCL CALL", "LBL ", "CALL LBL", "FN ", "PLANE ",
+                                                 "L ", "CC ", "C ", "CR ", "CT ", "RND ", "CHF ", "STOP"};
+
+/// A line that starts with a number: a Heidenhain conversational block (`0010 BEGIN PGM 100 MM`)
+/// or a block number without its N.
+std::string leading_number_message(const ParseState& s, Iterator at, Iterator end) {
+  const Iterator binary = std::find_if(at, end, [](char b) {
+    const auto byte = static_cast<unsigned char>(b);
+    return (byte < 0x20 && b != '\t') || byte >= 0x7f;
+  });
+  if (binary != end)
+    return fmt::format("unexpected byte 0x{:02X} at column {} (binary data?); expected G-code text",
+                       static_cast<unsigned char>(*binary), s.column_of(binary));
+  Iterator p = at;
+  while (p != end && is_digit(*p)) ++p;
+  const std::string number(at, p);
+  while (p != end && (*p == ' ' || *p == '\t')) ++p;
+  const std::string_view rest(p, static_cast<std::size_t>(end - p));
+  for (const std::string_view w : kHeidenhainWords)
+    if (rest.substr(0, w.size()) == w || (rest == w.substr(0, w.size() - 1) && w.back() == ' '))
+      return fmt::format("'{} {}...' is a Heidenhain conversational (plain-language) block, not G-code: ncpost reads "
+                         "ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or have the CAM "
+                         "post the part for an ISO control", number, w.back() == ' ' ? w.substr(0, w.size() - 1) : w);
+  return fmt::format("a block that starts with the number '{}' (expected a word: a letter and its number, such as "
+                     "N{} for a block number)", number, number);
+}
 
 /// Explains why the grammar stopped at `at` (shared by expectation failures and leftovers).
 std::string explain(const ParseState& s, Iterator at, Iterator end, const char* expected) {
   if (at == end) return fmt::format("expected {}, found the end of the line", expected);
   const char c = *at;
+  if (is_digit(c) && std::all_of(s.line_begin, at, [](char b) { return b == ' ' || b == '\t'; }))
+    return leading_number_message(s, at, end);
   const auto byte = static_cast<unsigned char>(c);
   if (c == '#') return "parameters (#...) are not supported";
   if (c == '[') return "expressions ([...]) are not supported";
@@ -187,6 +229,27 @@ constexpr const char* kOWordFlow =
 
 bool starts_with_o_word(const Block& b) { return !b.words.empty() && b.words.front().letter == 'O'; }
 
+/// `% 123 G71` (also `N9999 %123 G71 *` at the end) opens a Heidenhain ISO program: a program
+/// name and the units after the '%' (a Sinumerik `%_N_NAME_MPF` has no units word).
+bool heidenhain_iso_header(std::string_view rest) {
+  const auto skip_blanks = [&] {
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+  };
+  skip_blanks();
+  const std::size_t name = rest.find_first_of(" \t");
+  if (name == 0 || name == std::string_view::npos) return false;
+  rest.remove_prefix(name);
+  skip_blanks();
+  if (rest.size() < 3 || upper(rest[0]) != 'G' || rest[1] != '7' || (rest[2] != '0' && rest[2] != '1')) return false;
+  rest.remove_prefix(3);
+  skip_blanks();
+  return rest.empty() || rest.front() == '*';
+}
+
+constexpr const char* kHeidenhainIso =
+    "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J K are absolute "
+    "centres and M91/M92 move in machine coordinates, so ncpost does not read it as RS274 G-code; post the CL data";
+
 }  // namespace
 
 void parse_block(std::string_view line, Block& block, const std::string& file, int line_number) {
@@ -198,6 +261,8 @@ void parse_block(std::string_view line, Block& block, const std::string& file, i
   if (first == end) return;
   block.column = static_cast<int>(first - begin) + 1;
   if (*first == '%') {
+    if (heidenhain_iso_header(std::string_view(first + 1, static_cast<std::size_t>(end - first - 1))))
+      throw InputError({file, line_number, block.column}, kHeidenhainIso, std::string(line));
     block.percent = true;
     return;
   }

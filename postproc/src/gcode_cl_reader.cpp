@@ -89,7 +89,7 @@ struct GcodeClReader::State {
   std::vector<std::string> notices;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, GcodeReaderOptions o)
-      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch, o.integer_dwell) {
+      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch, o.integer_dwell, o.arc_centre) {
     for (int k = 0; k < rotaries() && k < 2; ++k) {
       const std::string letters = "XYZABC";
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(letters.find(machine.rotary(k).letter));

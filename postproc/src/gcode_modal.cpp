@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "ncpost/postproc/gcode_control_words.hpp"
 
@@ -140,6 +141,76 @@ void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, Pr
   fx.cycle = k;
 }
 
+/// A G2/G3 given by its centre words, before they are read (offsets along the plane's a1, a2; mm).
+struct ArcGiven {
+  const ProgramPoint& start;
+  const ProgramPoint& end;
+  Plane plane;
+  bool clockwise;
+  double offset1_mm, offset2_mm;
+  int turns;
+
+  bool fits(ArcCentre reading) const {
+    const std::array<double, 2> c = arc_centre_of(reading, start, axes_of(plane), offset1_mm, offset2_mm);
+    return arc_from_centre(start, end, plane, clockwise, c[0], c[1], turns).arc.has_value();
+  }
+  /// The radii at the start and at the end under `reading` (mm).
+  std::array<double, 2> radii(ArcCentre reading) const {
+    const PlaneAxes ax = axes_of(plane);
+    const std::array<double, 2> c = arc_centre_of(reading, start, ax, offset1_mm, offset2_mm);
+    const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
+    return {std::hypot(start[a1] - c[0], start[a2] - c[1]), std::hypot(end[a1] - c[0], end[a2] - c[1])};
+  }
+  /// Whether I and J fit as distances whose signs the writer dropped (a centre from some signs).
+  bool fits_unsigned() const {
+    for (const double sign1 : {1.0, -1.0})
+      for (const double sign2 : {1.0, -1.0}) {
+        const std::array<double, 2> c = arc_centre_of(ArcCentre::incremental, start, axes_of(plane),
+                                                       sign1 * std::abs(offset1_mm), sign2 * std::abs(offset2_mm));
+        if (arc_from_centre(start, end, plane, clockwise, c[0], c[1], turns).arc) return true;
+      }
+    return false;
+  }
+};
+
+/// For an arc that the reading in force does not fit: the other readings it fits exactly (within
+/// the arc's radius tolerance) and how to post with one, or that none does. Never a reading chosen
+/// for the user: a program has one convention, and a full circle fits every one.
+std::string other_readings_advice(const ArcGiven& arc, ArcCentre in_force, int set_at_line, std::string_view letters) {
+  std::vector<ArcCentre> fitting;
+  for (const ArcCentre r : {ArcCentre::incremental, ArcCentre::centre_to_start, ArcCentre::absolute})
+    if (r != in_force && arc.fits(r)) fitting.push_back(r);
+  if (fitting.empty()) {
+    if (arc.fits_unsigned())
+      return fmt::format("; it fits only if {} are distances without their signs, a writing ncpost does not read (the "
+                         "centre is then a guess): post the CL data, or a program with signed {}", letters, letters);
+    ArcCentre nearest = in_force;
+    double nearest_mm = std::numeric_limits<double>::infinity();
+    for (const ArcCentre r : {ArcCentre::incremental, ArcCentre::centre_to_start, ArcCentre::absolute}) {
+      const std::array<double, 2> rr = arc.radii(r);
+      if (r != in_force && std::abs(rr[1] - rr[0]) < nearest_mm) nearest = r, nearest_mm = std::abs(rr[1] - rr[0]);
+    }
+    const std::array<double, 2> rr = arc.radii(nearest);
+    return fmt::format("; no other reading of {} (from the start, from the centre, absolute, unsigned) fits it either "
+                       "(the nearest: if {}, radius {:.4f} mm at the start, {:.4f} mm at the end)",
+                       letters, arc_centre_meaning(nearest, letters), rr[0], rr[1]);
+  }
+  if (set_at_line) {
+    std::string readings;
+    for (const ArcCentre r : fitting) readings += (readings.empty() ? "" : ", or if ") + arc_centre_meaning(r, letters);
+    return fmt::format("; it fits if {}, but G9{}.1 at line {} says {}", readings,
+                       in_force == ArcCentre::absolute ? 0 : 1, set_at_line, arc_centre_meaning(in_force, letters));
+  }
+  if (fitting.size() == 1)
+    return fmt::format("; it fits if {}: post with --arc-centre {}", arc_centre_meaning(fitting[0], letters),
+                       arc_centre_name(fitting[0]));
+  std::string readings;
+  for (const ArcCentre r : fitting)
+    readings += fmt::format("{}{} (--arc-centre {})", readings.empty() ? "" : ", or if ", arc_centre_meaning(r, letters),
+                            arc_centre_name(r));
+  return fmt::format("; it fits if {}: post with the one the program's control uses", readings);
+}
+
 }  // namespace
 
 void BlockEffect::clear() {
@@ -182,9 +253,12 @@ struct Interpreter::Words {
   int col(char c) const { return column[static_cast<std::size_t>(c - 'A')]; }
 };
 
-Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell)
-    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell) {
+Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell,
+                         ArcCentre arc_centre)
+    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell),
+      arc_centre_option_(arc_centre) {
   state_.inch = state_.feed_inch = default_inch;
+  state_.arc_centre = arc_centre;
   if (axis_letters_.find_first_of("UVW") != std::string::npos) {
     word_axes_ = true;
     for (std::size_t i = 0; i < slots_.size(); ++i) {
@@ -352,6 +426,17 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
   }
 }
 
+/// M91/M92 beside axis words: on Heidenhain (and the ISO programs NX writes for it) the block's
+/// coordinates are machine coordinates; elsewhere the machine builder's. Either way not W.
+constexpr const char* kMachineDatumM =
+    "M{} with axis words: on Heidenhain controls the block's coordinates are then machine coordinates (M91: from "
+    "the machine datum, M92: from a machine-defined position), which the reader does not place, and elsewhere M91/M92 "
+    "are the machine builder's; post the CL data, or move in machine coordinates with G53";
+
+bool Interpreter::has_axis_words(const Words& w) const {
+  return std::any_of(slots_.begin(), slots_.end(), [&](char L) { return L && w.has(L); });
+}
+
 // M codes by group; the ones not acted on are passed through
 void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx) {
   const auto take = [&](Code& slot, const Code& c) {
@@ -367,6 +452,9 @@ void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes,
       case 7: case 8: case 9: take(codes.m_coolant, c); break;
       case 128: case 129: case 428: case 429: take(codes.m_rtcp, c); break;
       case 97: case 98: case 99: cx.fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
+      case 91: case 92:
+        if (has_axis_words(w)) cx.fail(c.column, fmt::format(kMachineDatumM, c.code10));
+        [[fallthrough]];
       default:
         fx.after_motion.push_back(cl::Unsupported{cx.at(c.column), fmt::format("M{}", c.code10)});
         notice_once(fmt::format("M{}", c.code10), cx.line_number, c.column,
@@ -467,10 +555,27 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
     notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (codes.in(g_distance)) st.incremental = codes.of(g_distance).code10 == 910;
-  if (codes.in(g_arc_distance)) st.arc_centre_absolute = codes.of(g_arc_distance).code10 == 901;
+  apply_arc_distance(cx, codes);
   if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
   apply_motion_mode(codes, fx);
   if (st.motion == MotionMode::cycle) read_cycle_words(cx, w, codes);
+}
+
+// G90.1/G91.1: the program says how its I J K read; beside --arc-centre other than incremental
+// (the standard's reading, which G90.1 may switch) a different word contradicts the user's reading
+void Interpreter::apply_arc_distance(const Context& cx, const Codes& codes) {
+  if (!codes.in(g_arc_distance)) return;
+  const Code c = codes.of(g_arc_distance);
+  const ArcCentre said = c.code10 == 901 ? ArcCentre::absolute : ArcCentre::incremental;
+  if (arc_centre_option_ != ArcCentre::incremental && said != arc_centre_option_)
+    cx.fail(c.column, fmt::format("{} says I, J and K {} ({}), which contradicts --arc-centre {}: post without "
+                                  "--arc-centre {} (the program says how it writes arc centres)",
+                                  g_name(c.code10), said == ArcCentre::absolute ? "are the centre's coordinates"
+                                                                                : "are the vector from the start to the centre",
+                                  arc_centre_name(said), arc_centre_name(arc_centre_option_),
+                                  arc_centre_name(arc_centre_option_)));
+  state_.arc_centre = said;
+  state_.arc_centre_line = cx.line_number;
 }
 
 // G54-G59, G54.1 P<n>, G59.1-G59.3: the work offset places W on the machine (the job's
@@ -716,7 +821,9 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     st.moved_in_work = st.moved_in_work || fx.has_motion;
     return;
   }
-  if (st.motion == MotionMode::none) fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3)");
+  if (st.motion == MotionMode::none)
+    fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
+                      "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block");
   if (!word_axes_) check_length_in_force(cx, w, st.motion, axis_column);
   st.moved_in_work = true;
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
@@ -781,7 +888,7 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
 
 // G2/G3: the arc from R or from its centre (I J K, incremental unless G90.1), P turns
 void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end,
-                           BlockEffect& fx) const {
+                           BlockEffect& fx) {
   const ModalState& st = state_;
   const Fail& fail = cx.fail;
   const double length_scale = st.inch ? kMmPerInch : 1.0;
@@ -808,18 +915,31 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
     outcome = arc_from_radius(fx.start, end, st.plane, clockwise, r, turns);
   } else {
     const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
-    if (!w.has(l1) && !w.has(l2)) fail(column, fmt::format("an arc needs {} and {} (its centre) or R", l1, l2));
+    if (!w.has(l1) && !w.has(l2)) {
+      // NX posts for some controls leave them out where they equal the last arc's: they are not modal
+      const std::string last =
+          last_arc_line_ ? fmt::format("; they are not modal: the {} of the arc at line {} {} not carried over (write "
+                                       "the centre or R on every arc)",
+                                       last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are")
+                         : std::string();
+      fail(column, fmt::format("an arc needs {} and {} (its centre) or R{}", l1, l2, last));
+    }
     const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
     const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
     if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
       fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
-    const auto a1 = static_cast<std::size_t>(ax.a1), a2 = static_cast<std::size_t>(ax.a2);
-    const double c1 = st.arc_centre_absolute ? o1 : fx.start[a1] + o1;
-    const double c2 = st.arc_centre_absolute ? o2 : fx.start[a2] + o2;
-    outcome = arc_from_centre(fx.start, end, st.plane, clockwise, c1, c2, turns);
+    const std::array<double, 2> centre = arc_centre_of(st.arc_centre, fx.start, ax, o1, o2);
+    outcome = arc_from_centre(fx.start, end, st.plane, clockwise, centre[0], centre[1], turns);
+    if (!outcome.arc) {
+      const ArcGiven given{fx.start, end, st.plane, clockwise, o1, o2, turns};
+      fail(column, outcome.error + other_readings_advice(given, st.arc_centre, st.arc_centre_line,
+                                                         fmt::format("{} and {}", l1, l2)));
+    }
   }
   if (!outcome.arc) fail(column, outcome.error);
   fx.arc = outcome.arc;
+  last_arc_line_ = cx.line_number;
+  last_arc_words_ = w.has('R') ? "R" : fmt::format("{} and {}", offset_letter[ax.a1], offset_letter[ax.a2]);
 }
 
 // M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 (a pallet

@@ -206,3 +206,57 @@ TEST_CASE("gcode block: errors name the exact column and what was expected") {
     CHECK_THAT(e.detail(), Catch::Contains("found '$'"));
   }
 }
+
+TEST_CASE("gcode block: ':' is the ISO program number address O (NX's Fadal and Mori Seiki posts)") {
+  const Block fadal = parse(":1234 (PROGRAM)");  // nxpost_Fadal_VMC_6030 line 2
+  REQUIRE(fadal.words.size() == 1);
+  CHECK(fadal.words[0].letter == 'O');
+  CHECK(fadal.words[0].value == 1234.0);
+  CHECK(fadal.words[0].column == 1);
+  CHECK(fadal.comments.size() == 1);
+  const Block sh8000 = parse(":0110 T01 M06");  // nxpost_MS_SH8000 line 12: a label before the tool change
+  REQUIRE(sh8000.words.size() == 3);
+  CHECK(sh8000.words[0].letter == 'O');
+  CHECK(sh8000.words[0].value == 110.0);
+  CHECK(sh8000.words[1].letter == 'T');
+  CHECK(sh8000.words[1].column == 7);
+  CHECK(parse("/:5 G0 X1").deleted);
+  // only where a program number stands: first in the block
+  const InputError inside = error_of("G0 :5 X1");
+  CHECK(inside.where().column == 4);
+  CHECK(inside.detail() == "expected a word (letter and number), a comment or the end of the line, found ':'");
+  CHECK(error_of(":").detail() == "O-word subroutines and control flow (sub, call, if, while, ...) are not supported; "
+                                  "expected a program number");
+}
+
+TEST_CASE("gcode block: a line that starts with a number says what it is") {
+  // Heidenhain conversational (nxpost_Bridgeport_412 line 1, nxpost_DMG_DMC_100_MILLPLUS line 1)
+  const InputError pgm = error_of("0010 BEGIN PGM 100 IN");
+  CHECK(pgm.where().column == 1);
+  CHECK(pgm.detail() == "'0010 BEGIN PGM...' is a Heidenhain conversational (plain-language) block, not G-code: "
+                        "ncpost reads ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or "
+                        "have the CAM post the part for an ISO control");
+  CHECK_THAT(error_of("21 L X+.6079 Y+4.6458 Z+11.9106 FMAX M3").detail(), Catch::StartsWith("'21 L...' is a Heidenhain"));
+  CHECK_THAT(error_of("  9 CYCL DEF 7.0 DATUM SHIFT").detail(), Catch::StartsWith("'9 CYCL DEF...' is a Heidenhain"));
+  // a block number without its N
+  CHECK(error_of("0010 G1 X5").detail() == "a block that starts with the number '0010' (expected a word: a letter and "
+                                           "its number, such as N0010 for a block number)");
+  // binary data (a compressed file named .nc)
+  const InputError bin = error_of(std::string("6=\xd0\x34") + "O_");
+  CHECK(bin.where().column == 1);
+  CHECK(bin.detail() == "unexpected byte 0xD0 at column 3 (binary data?); expected G-code text");
+}
+
+TEST_CASE("gcode block: a Heidenhain ISO program's '%' line is refused; other '%' lines delimit") {
+  // nxpost_Micron_WF21D line 1
+  const InputError e = error_of("% 123 G71");
+  CHECK(e.where().column == 1);
+  CHECK(e.detail() == "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J "
+                      "K are absolute centres and M91/M92 move in machine coordinates, so ncpost does not read it as "
+                      "RS274 G-code; post the CL data");
+  CHECK_THROWS_AS(parse("%PART1 G70 *"), InputError);
+  CHECK(parse("%_N_PART1_MPF").percent);  // Sinumerik
+  CHECK(parse("% 123").percent);
+  CHECK(parse("%").percent);
+  CHECK(parse("% part G71X").percent);  // not the units word alone
+}

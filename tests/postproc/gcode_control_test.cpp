@@ -621,4 +621,28 @@ TEST_CASE("gcode control: a rapid before Z is known, released by a cut that prog
   const auto z_first = only<cl::Motion>(read_vmc("G21 G90\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F100\nM30\n"));
   REQUIRE(z_first.size() == 3);
   check_tip(z_first[1], 10, 10, 5);
+
+// nxpost_Micron_WF21D (Heidenhain ISO): `N0070 G90 Z-25. M91` moves Z in machine coordinates; read
+// as W it would put the tool 25 mm below the part's zero
+TEST_CASE("gcode control: M91/M92 beside axis words are refused (Heidenhain machine coordinates)") {
+  const InputError m91 = input_error("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG0 Z-25. M91\nM30\n");
+  CHECK(m91.where().line == 3);
+  CHECK(m91.where().column == 10);
+  CHECK(m91.detail() ==
+        "M91 with axis words: on Heidenhain controls the block's coordinates are then machine coordinates (M91: from "
+        "the machine datum, M92: from a machine-defined position), which the reader does not place, and elsewhere "
+        "M91/M92 are the machine builder's; post the CL data, or move in machine coordinates with G53");
+  CHECK_THAT(input_error("G21 G90\nG0 X0 Y0 Z10 A0 C0\nM92 G0 X5\nM30\n").detail(), Catch::StartsWith("M92 with axis"));
+  // alone it moves nothing: passed through as other M codes are
+  const Read alone = read_all("G21 G90\nG0 X0 Y0 Z10 A0 C0\nM91\nG0 X5\nM30\n");
+  CHECK(only<cl::Motion>(alone.records).size() == 2);
+  CHECK(any_contains(alone.notices, "M91 is not acted on; passed through as a comment"));
+}
+
+TEST_CASE("gcode control: axis words before any motion mode stay refused, saying why") {
+  const InputError e = input_error("G21 G90\nG43 Z100. H1\nG0 X0 Y0 A0 C0\nM30\n");
+  CHECK(e.where().line == 2);
+  CHECK(e.where().column == 5);
+  CHECK(e.detail() == "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode (G0 "
+                      "or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block");
 }

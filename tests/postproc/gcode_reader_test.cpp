@@ -508,3 +508,16 @@ TEST_CASE("gcode reader: absolute arc centres (G90.1), the G19 plane and several
     CHECK(three[i].point.tip_mm.head<2>().norm() == Approx(5.0));
   }
 }
+
+TEST_CASE("gcode reader: ':' program numbers and labels (ISO O address) move nothing") {
+  // nxpost_Fadal_VMC_6030 line 2 and nxpost_MS_SH8000 line 12
+  const auto rs = read_all("%\n:1234 (PROGRAM)\nN0100 S485 M03\n:0110 T01 M06\nG0 G90 X1 Y2 Z3 A0 C0\nM30\n%\n");
+  const auto tools = only<cl::ToolChange>(rs);
+  REQUIRE(tools.size() == 1);
+  CHECK(tools[0].number == 1);
+  CHECK(tools[0].where.line == 4);
+  CHECK(only<cl::Comment>(rs).size() == 1);
+  const auto ms = only<cl::Motion>(rs);
+  REQUIRE(ms.size() == 1);
+  check_tip(ms[0], 1, 2, 3);
+}

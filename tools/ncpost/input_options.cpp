@@ -34,6 +34,12 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                  "G-code input: a dwell time without a decimal point (G4 P, G82/G89 P) is ms (Fanuc, Haas) or s "
                  "(LinuxCNC); auto reads 100 and more as ms and refuses 1 to 99 (README, Choices)")
       ->check(CLI::IsMember({"auto", "ms", "s"}));
+  sub.add_option("--arc-centre", o.arc_centre,
+                 "G-code input: what I J K of G2/G3 give: incremental = the vector from the start to the centre "
+                 "(RS274, Fanuc, Haas; default), centre-to-start = the vector from the centre to the start (some NX "
+                 "posts), absolute = the centre's coordinates (as G90.1); an arc that does not fit is refused, "
+                 "naming the readings it fits")
+      ->check(CLI::IsMember({"incremental", "centre-to-start", "absolute"}));
 }
 
 Vec3d workpiece_origin_mm(const JobOptions& o) {
@@ -67,6 +73,9 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.integer_dwell = o.dwell_p == "ms" ? cl::IntegerDwell::milliseconds
                    : o.dwell_p == "s"  ? cl::IntegerDwell::seconds
                                        : cl::IntegerDwell::automatic;
+  ro.arc_centre = o.arc_centre == "centre-to-start" ? cl::ArcCentre::centre_to_start
+                : o.arc_centre == "absolute"        ? cl::ArcCentre::absolute
+                                                    : cl::ArcCentre::incremental;
   return ro;
 }
 

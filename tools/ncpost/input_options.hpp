@@ -21,6 +21,7 @@ struct JobOptions {
   bool allow_unterminated = false;  ///< accept a CL file that ends without FINI / END / END-OF-PATH
   std::string msys = "ignore";      ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
   std::string dwell_p = "auto";     ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
+  std::string arc_centre = "incremental";  ///< G-code I J K: "incremental", "centre-to-start" or "absolute"
 };
 
 struct LoadedJob {

@@ -165,6 +165,12 @@ inline Location location_of(const Record& r) {
 /// dwell of minutes), 0 as no dwell, and refuses 1 to 99, which both readings make plausible.
 enum class IntegerDwell { automatic, milliseconds, seconds };
 
+/// G-code: what the I J K of a G2/G3 give (docs/cli.md, --arc-centre). `incremental`: the vector
+/// from the start to the centre (RS274NGC, Fanuc, Haas; G91.1); `centre_to_start`: the vector from
+/// the centre to the start (some NX posts for older controls); `absolute`: the centre's coordinates
+/// (G90.1). The program's G90.1 or G91.1 switches `incremental` and is refused beside another.
+enum class ArcCentre { incremental, centre_to_start, absolute };
+
 /// Options of every CL reader.
 struct ReaderOptions {
   bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
@@ -177,6 +183,7 @@ struct ReaderOptions {
   /// current MSYS into the absolute frame, W = the absolute frame.
   enum class Msys { ignore, apply } msys = Msys::ignore;
   IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< G-code: the unit of a dwell time without a decimal point
+  ArcCentre arc_centre = ArcCentre::incremental;         ///< G-code: what I J K of an arc give
   /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
   double curve_tolerance_mm = 0.01;
 };

@@ -11,6 +11,9 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
+
+#include "ncpost/postproc/cl_record.hpp"
 
 namespace ncpost::gcode {
 
@@ -49,6 +52,19 @@ struct ArcOutcome {
 /// Start = end means a full circle.
 ArcOutcome arc_from_centre(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise,
                            double centre1_mm, double centre2_mm, int turns);
+
+using cl::ArcCentre;
+
+/// The centre (absolute, along a1 and a2) that the offsets I J K (along a1 and a2, mm) name under
+/// `reading`, for an arc from `start`.
+std::array<double, 2> arc_centre_of(ArcCentre reading, const ProgramPoint& start, PlaneAxes axes, double offset1_mm,
+                                    double offset2_mm);
+
+/// The --arc-centre value that names `reading` ("incremental", "centre-to-start", "absolute").
+std::string_view arc_centre_name(ArcCentre reading);
+
+/// What `reading` takes I and J (in the plane's letters, e.g. "I and J") to be, for messages.
+std::string arc_centre_meaning(ArcCentre reading, std::string_view letters);
 
 /// Arc given by its radius (R word; negative: the arc longer than half a circle).
 ArcOutcome arc_from_radius(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise,

@@ -4,7 +4,8 @@
 // before any meaning is applied (docs/formats.md "NC programs").
 //
 // Lexical rules (the Spirit X3 grammar is in gcode_block_parser.cpp):
-//   block   := [ '/' ] [ name ] { comment | keyword | word } [ ';' text ] -- blanks anywhere between
+//   block   := [ '/' ] [ name | ':' number ] { comment | keyword | word } [ ';' text ] -- blanks anywhere
+//              between; ':' is the ISO program number address, read as the word O (`:1234` = `O1234`)
 //   name    := 'O' digits* (letter|'_'|'-') { not blank, '(' or ';' }  -- a program name (NX:
 //              Omnf01_vx_0, O2021-11-28_test2setup_1); 'O' digits is a program number word
 //   word    := letter number                                           -- letter case-insensitive
@@ -14,7 +15,8 @@
 // A line holding only '%' (and blanks) is a program delimiter. Blanks may stand between a letter
 // and its number (`X  16.339`) but not inside a number (`X1 0` is an error, not X10).
 // Parameters (`#1`), expressions (`[...]`), assignments and O-word control flow are not supported:
-// they are rejected with the exact column.
+// they are rejected with the exact column; so is a line that starts with a number (a Heidenhain
+// conversational block such as `0010 BEGIN PGM 100 MM` is named as such).
 #include <string>
 #include <string_view>
 #include <vector>

@@ -6,10 +6,15 @@
 // stop). Units are converted here: lengths to mm (G20 inches x 25.4, also F under G94/G95),
 // rotary words from degrees to rad; incremental words (G91) are made absolute.
 //
+// I J K of G2/G3: the vector from the start to the centre (RS274NGC), from the centre to the start,
+// or the centre itself (G90.1), as the reader's ArcCentre and the program's G90.1/G91.1 say; an arc
+// whose end is not on it is refused, naming the other readings it fits.
+//
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
 //   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
-//   M429 (other M codes pass through as comments with a notice); words A B C D F H I J K L N O P Q
+//   M429 (other M codes pass through as comments with a notice; M91/M92 beside axis words, Heidenhain's
+//   machine coordinates, are refused); words A B C D F H I J K L N O P Q
 //   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
 //   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
 //   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and
@@ -50,7 +55,8 @@ struct ModalState {
   bool units_programmed = false;     ///< a units word (G20/G21/G70/G71/G700/G710) was seen
   cl::CutterComp::Side cutter = cl::CutterComp::Side::off;  ///< G40/G41/G42
   bool incremental = false;
-  bool arc_centre_absolute = false;  ///< G90.1
+  ArcCentre arc_centre = ArcCentre::incremental;  ///< what I J K give: --arc-centre, then G90.1/G91.1
+  int arc_centre_line = 0;           ///< the line of the G90.1/G91.1 in force (0: --arc-centre)
   FeedMode feed_mode = FeedMode::per_minute;
   double feed = 0.0;                 ///< mm/min, mm/rev, or 1/min (G93), converted
   double spindle_rpm = 0.0;
@@ -117,8 +123,10 @@ class Interpreter {
   /// Letters with U, V or W (the TRR-XY machine's "XYUVW") name a machine whose words are all
   /// lengths and no Cartesian frame: ProgramPoint slot i is then axis_letters[i] (mm), other axis
   /// letters are errors, and arcs and canned cycles (which need X Y Z) are not supported.
+  /// `arc_centre`: what I J K give until the program's G90.1/G91.1 (which contradict any other
+  /// reading than `incremental` but the same: InputError).
   Interpreter(std::string file_name, std::string axis_letters, bool default_inch = false,
-              IntegerDwell integer_dwell = IntegerDwell::automatic);
+              IntegerDwell integer_dwell = IntegerDwell::automatic, ArcCentre arc_centre = ArcCentre::incremental);
 
   /// Applies one block. `line` is the source text (for error carets). Throws InputError.
   void apply(const Block& block, int line_number, std::string_view line, BlockEffect& effect);
@@ -136,12 +144,14 @@ class Interpreter {
   // the steps of apply(), in order
   Words read_words(const Context& cx) const;
   void check_letter(const Context& cx, const Word& word) const;
+  bool has_axis_words(const Words& w) const;
   void group_g_codes(const Context& cx, const Words& w, Codes& codes);
   void group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx);
   void apply_units(const Context& cx, const Codes& codes);
   void apply_feed_spindle_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_cutter_comp(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void apply_arc_distance(const Context& cx, const Codes& codes);
   void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
   void apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_rtcp(const Context& cx, const Codes& codes);
@@ -154,7 +164,7 @@ class Interpreter {
   void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
-  void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx) const;
+  void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx);
   void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
 
   std::string file_;
@@ -163,6 +173,9 @@ class Interpreter {
   std::array<bool, 6> slot_angle_{false, false, false, true, true, true};  ///< degrees in the program, rad inside
   bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
   IntegerDwell integer_dwell_ = IntegerDwell::automatic;
+  ArcCentre arc_centre_option_ = ArcCentre::incremental;  ///< --arc-centre
+  int last_arc_line_ = 0;          ///< the last arc (for the message of an arc without I J or R)
+  std::string last_arc_words_;     ///< its centre words ("I and J", "R")
   ModalState state_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;
