@@ -621,6 +621,7 @@ TEST_CASE("gcode control: a rapid before Z is known, released by a cut that prog
   const auto z_first = only<cl::Motion>(read_vmc("G21 G90\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F100\nM30\n"));
   REQUIRE(z_first.size() == 3);
   check_tip(z_first[1], 10, 10, 5);
+}
 
 // nxpost_Micron_WF21D (Heidenhain ISO): `N0070 G90 Z-25. M91` moves Z in machine coordinates; read
 // as W it would put the tool 25 mm below the part's zero
