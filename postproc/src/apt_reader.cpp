@@ -602,6 +602,27 @@ struct AptReader::State {
     return true;
   }
 
+  /// INSERT/ text is literal NC output; INSERT/STOP [text] and INSERT/OPSTOP [text] (SOLIDWORKS CAM's
+  /// "INSERT/STOP  change fixture") ask for a program stop: posted as one, the rest of the text as
+  /// the operator's message, not as a comment the machine runs past.
+  static std::optional<Stop> inserted_stop(const AptStatement& st) {
+    const std::string& t = st.raw_arguments;
+    const std::size_t b = t.find_first_not_of(" \t");
+    if (b == std::string::npos) return std::nullopt;
+    std::size_t e = t.find_first_of(" \t,(", b);
+    if (e == std::string::npos) e = t.size();
+    std::string first = t.substr(b, e - b);
+    for (char& c : first) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (first != "STOP" && first != "OPSTOP") return std::nullopt;
+    std::string rest = t.substr(e);
+    const std::size_t rb = rest.find_first_not_of(" \t,");
+    rest = rb == std::string::npos ? std::string() : rest.substr(rb);
+    if (rest.size() >= 2 && rest.front() == '(' && rest.back() == ')') rest = rest.substr(1, rest.size() - 2);
+    const std::size_t re = rest.find_last_not_of(" \t");
+    rest = re == std::string::npos ? std::string() : rest.substr(0, re + 1);
+    return Stop{st.where, first == "OPSTOP", rest};
+  }
+
   /// The text of STOP/(text) or STOP/text, without the parentheses ("" for STOP alone).
   static std::string operator_message(const AptStatement& st) {
     std::string t = st.raw_arguments;
@@ -690,9 +711,12 @@ struct AptReader::State {
   bool apply_text_record(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
     auto comment = [&](std::string t) { pending.push_back(Comment{st.where, std::move(t)}); };
-    if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
+    if (w == "INSERT") {
+      if (auto stop = inserted_stop(st)) pending.push_back(std::move(*stop));
+      else comment(st.raw_arguments.empty() ? w : st.raw_arguments);
+    } else if (w == "PPRINT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
       if (w == "TOOL PATH") nx_circle_axis = true;
-      comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
+      comment(st.raw_arguments.empty() ? w : (w == "PPRINT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
       // PARTNO/text, or PARTNO text (which may hold a '/' of its own)
       std::string rest = w == "PARTNO" ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)));

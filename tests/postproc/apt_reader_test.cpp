@@ -147,3 +147,23 @@ TEST_CASE("every real CL file reads completely") {
     CHECK(motions > 0);
   }
 }
+
+TEST_CASE("INSERT/STOP and INSERT/OPSTOP are program stops; other INSERT text is a comment (SOLIDWORKS CAM)") {
+  // swcam basemach.apt: "INSERT/STOP  change fixture" between two setups; the CAM's own post
+  // writes a program stop there. As a comment the machine would run on into the next setup.
+  const auto rs = read_all("INSERT/8MM CRB 4FL 20 LOC\nINSERT/STOP  change fixture\nINSERT/stop\nINSERT/OPSTOP,(check)\n"
+                           "INSERT/STOPWATCH\n");
+  const auto stops = only<cl::Stop>(rs);
+  REQUIRE(stops.size() == 3);
+  CHECK_FALSE(stops[0].optional);
+  CHECK(stops[0].text == "change fixture");
+  CHECK(stops[0].where.line == 2);
+  CHECK_FALSE(stops[1].optional);
+  CHECK(stops[1].text.empty());
+  CHECK(stops[2].optional);
+  CHECK(stops[2].text == "check");
+  const auto comments = only<cl::Comment>(rs);
+  REQUIRE(comments.size() == 2);
+  CHECK(comments[0].text == "8MM CRB 4FL 20 LOC");
+  CHECK(comments[1].text == "STOPWATCH");
+}
