@@ -116,6 +116,8 @@ struct AptReader::State {
   Eigen::Matrix3d msys_R = Eigen::Matrix3d::Identity();
   std::optional<Location> first_msys;
   std::optional<Location> rotating_msys;  ///< an MSYS that rotates, posted as written (ignore)
+  /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
+  std::optional<Location> active_cycle;
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
     Location where;
@@ -509,7 +511,10 @@ struct AptReader::State {
     const std::string& w = st.major;
     if (w == "SPINDL") pending.push_back(spindle(st, text));
     else if (w == "COOLNT") pending.push_back(coolant(st));
-    else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) pending.push_back(tool_change(st, text));
+    else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) {
+      refuse_inside_cycle(st, text, "a tool change");
+      pending.push_back(tool_change(st, text));
+    }
     else if (w == "CUTCOM") pending.push_back(cutter_comp(st, text));
     else return false;
     return true;
@@ -686,13 +691,31 @@ struct AptReader::State {
     return Spindle{st.where, n == 3 ? Spindle::Direction::cw : Spindle::Direction::ccw, spindle_rpm};
   }
 
+  /// A tool change or an arc while a CYCLE/ is in force: the GOTOs after it would be drilled as
+  /// holes with the cycle of the operation before (SOLIDWORKS CAM files without CYCLE/OFF, whose
+  /// end milling went out as G81 holes). Whether the cycle goes on is not written: refused.
+  void refuse_inside_cycle(const AptStatement& st, const std::string& text, const char* what) const {
+    if (!active_cycle) return;
+    fail(st.where,
+         fmt::format("{} while the CYCLE of line {} is in force (no CYCLE/OFF since): the GOTOs after it would be "
+                     "drilled as holes of that cycle; end the cycle with CYCLE/OFF where its holes end (and repeat the "
+                     "CYCLE/ statement after the tool change if the new tool drills too)",
+                     what, active_cycle->line),
+         echo_of(text));
+  }
+
   /// CIRCLE, CYCLE, NURBS (KNOT, CNTRL), MSYS and the ends (END-OF-PATH, END, FINI).
   bool apply_geometry_record(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
     if (w == "CIRCLE") {
+      refuse_inside_cycle(st, text, "a CIRCLE (arc motion)");
       pending.push_back(circle(st, text));
     } else if (w == "CYCLE") {
-      if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) pending.push_back(std::move(*c));
+      if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) {
+        if (c->kind == Cycle::Kind::off) active_cycle.reset();
+        else active_cycle = st.where;
+        pending.push_back(std::move(*c));
+      }
     } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
       pending.push_back(End{st.where, w == "FINI"});
     } else if (w == "NURBS" || w == "KNOT" || w == "CNTRL") {

@@ -167,3 +167,16 @@ TEST_CASE("INSERT/STOP and INSERT/OPSTOP are program stops; other INSERT text is
   CHECK(comments[0].text == "8MM CRB 4FL 20 LOC");
   CHECK(comments[1].text == "STOPWATCH");
 }
+
+TEST_CASE("a tool change or a CIRCLE while a CYCLE is in force is refused (SOLIDWORKS CAM file without CYCLE/OFF)") {
+  // swcam RotateThin.apt: CYCLE/DRILL for a drill, no CYCLE/OFF, LOAD/TOOL,2 (an end mill), RAPID,
+  // FEDRAT, CIRCLE: its milling went out as G81 holes 7.65 mm deep.
+  const std::string head = "UNIT/MM\nLOAD/TOOL,15\nRAPID/\nGOTO/10,20,100\nCYCLE/INIT\n"
+                           "CYCLE/DRILL,FEDTO,7.65,MMPM,125.,RAPTO,3.,RTRCTO,100.,DWELL,0\nGOTO/10,20,0\n";
+  const std::string tool = error_of(head + "LOAD/TOOL,2\nRAPID/\nGOTO/10,20,2.5\n");
+  CHECK(tool.find("t.cls:8:1: a tool change while the CYCLE of line 6 is in force (no CYCLE/OFF since)") != std::string::npos);
+  const std::string arc = error_of(head + "CIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n");
+  CHECK(arc.find("t.cls:8:1: a CIRCLE (arc motion) while the CYCLE of line 6 is in force") != std::string::npos);
+  // with CYCLE/OFF both read
+  CHECK(error_of(head + "CYCLE/OFF\nLOAD/TOOL,2\nGOTO/5,20,0\nCIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n").empty());
+}
