@@ -118,6 +118,7 @@ struct AptReader::State {
   std::optional<Location> rotating_msys;  ///< an MSYS that rotates, posted as written (ignore)
   /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
   std::optional<Location> active_cycle;
+  std::optional<ClPoint> from_point;  ///< the FROM position (GOHOME alone returns there)
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
     Location where;
@@ -233,6 +234,30 @@ struct AptReader::State {
     rapid_pending = false;
     have_position = true;
     if (arc_check) check_arc_end(*arc_check, st);
+    arc_check.reset();
+    return m;
+  }
+
+  /// GOHOME/x,y,z[,i,j,k] (NX: the move to the operation's home point) or GOHOME alone (back to the
+  /// FROM point): a rapid move there, as the CAM systems' own posts write it. It was a comment
+  /// before, and the move was lost.
+  Motion go_home(const AptStatement& st) {
+    refuse_inside_cycle(st, "GOHOME/" + st.raw_arguments, "a GOHOME");
+    if (!st.arguments.empty()) {
+      rapid_pending = true;
+      return motion(st, false);
+    }
+    if (!from_point)
+      fail(st.where, "GOHOME without a point and no FROM before it: the home position is not known; give it "
+                     "(GOHOME/x,y,z) or a FROM/x,y,z at the start", "GOHOME");
+    Motion m;
+    m.where = st.where;
+    m.point = *from_point;
+    m.rapid = true;
+    position = m.point.tip_mm;
+    axis = m.point.axis;
+    rapid_pending = false;
+    have_position = true;
     arc_check.reset();
     return m;
   }
@@ -467,13 +492,16 @@ struct AptReader::State {
     pending.push_back(Unsupported{st.where, text});
   }
 
-  /// GOTO, FROM, GODLTA, RAPID.
+  /// GOTO, FROM, GOHOME, GODLTA, RAPID.
   bool apply_motion_word(const AptStatement& st) {
     const std::string& w = st.major;
     if (w == "GOTO" || w == "FROM") {
       Motion m = motion(st, false);
       m.from = (w == "FROM");
+      if (m.from) from_point = m.point;
       pending.push_back(m);
+    } else if (w == "GOHOME") {
+      pending.push_back(go_home(st));
     } else if (w == "GODLTA") {
       pending.push_back(motion(st, true));
     } else if (w == "RAPID") {

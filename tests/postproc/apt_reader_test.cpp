@@ -180,3 +180,20 @@ TEST_CASE("a tool change or a CIRCLE while a CYCLE is in force is refused (SOLID
   // with CYCLE/OFF both read
   CHECK(error_of(head + "CYCLE/OFF\nLOAD/TOOL,2\nGOTO/5,20,0\nCIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n").empty());
 }
+
+TEST_CASE("GOHOME/x,y,z is a rapid move there; GOHOME alone returns to FROM (NX drilling, HumMan CLSF samples)") {
+  // nx 9_SVERL_63_N2.cls ends "GOTO/297.5,-393,471 / GOHOME/297.5,-393,483 / END-OF-PATH": the last
+  // retract was lost as a comment.
+  const auto m = only<cl::Motion>(read_all("FROM/1,2,50,0,0,1\nFEDRAT/MMPM,120\nGOTO/1,2,3\nGOHOME/297.5,-393.0,483.0\n"
+                                           "GOTO/5,6,7\nGOHOME\n"));
+  REQUIRE(m.size() == 5);
+  CHECK(m[2].point.tip_mm == Vec3d(297.5, -393.0, 483.0));
+  CHECK(m[2].rapid);
+  CHECK_FALSE(m[2].from);
+  CHECK(m[2].where.line == 4);
+  CHECK_FALSE(m[3].rapid);  // the rapid was for the GOHOME only
+  CHECK(m[4].point.tip_mm == Vec3d(1, 2, 50));
+  CHECK(m[4].rapid);
+  CHECK(error_of("GOTO/1,2,3\nGOHOME\n").find("t.cls:2:1: GOHOME without a point and no FROM before it") !=
+        std::string::npos);
+}
