@@ -118,6 +118,7 @@ struct AptReader::State {
   std::optional<Location> rotating_msys;  ///< an MSYS that rotates, posted as written (ignore)
   /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
   std::optional<Location> active_cycle;
+  bool nx_short_nurbs_noted = false;
   std::optional<ClPoint> from_point;  ///< the FROM position (GOHOME alone returns there)
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
@@ -403,6 +404,37 @@ struct AptReader::State {
     }
   }
 
+  /// NX CLSF's short NURBS form: `GOTO/start`, `NURBS/`, `KNOT/` with the knots after 0 (the interior
+  /// ones and the end, each end once), `CNTRL/` with the control points after the first, which is
+  /// the tool position (HumMan/CLSFProcessor samples/nurbs.clsf: 70 curves, every one tangent to the
+  /// lines before and after it read so, and starting up to 22 mm off read any other way). Completes
+  /// the curve to the full clamped form; returns its degree (control points − interior knots).
+  int nx_short_form(NurbsBlock& b) {
+    NurbsCurve& c = b.curve;
+    for (const double w : c.weights)
+      if (w != 1.0)
+        fail(b.where, "NURBS: weighted control points in NX's short form (no start knots, the curve from the tool "
+                      "position): the weight of the start point is not written; expected weights of 1", "");
+    const int interior = static_cast<int>(c.knots.size()) - 1;
+    const int degree = static_cast<int>(c.points_mm.size()) - interior;
+    if (degree < 1) return degree;  // the curve check names the defect
+    const double u_end = c.knots.back();
+    std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
+    knots.insert(knots.end(), c.knots.begin(), c.knots.end() - 1);
+    knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, u_end);
+    c.knots = std::move(knots);
+    c.points_mm.insert(c.points_mm.begin(), position);
+    c.weights.insert(c.weights.begin(), 1.0);
+    if (!c.axes.empty()) c.axes.insert(c.axes.begin(), axis);
+    if (!nx_short_nurbs_noted) {
+      notices.push_back(fmt::format("{}:{}: NURBS in NX's short form (the knots after 0, the curve starting at the tool "
+                                    "position): read as a clamped curve of degree {}",
+                                    file, b.where.line, degree));
+      nx_short_nurbs_noted = true;
+    }
+    return degree;
+  }
+
   /// Ends the NURBS curve being collected: its chords become motions. `next` is the statement
   /// after the curve: a GOTO at the curve's end is the curve's last motion (its axis ends it).
   /// Returns true if `next` was consumed so.
@@ -412,6 +444,7 @@ struct AptReader::State {
     NurbsCurve& c = b.curve;
     if (c.weights.size() < c.points_mm.size()) c.weights.resize(c.points_mm.size(), 1.0);
     if (!b.degree) b.degree = static_cast<int>(c.knots.size()) - static_cast<int>(c.points_mm.size()) - 1;
+    if (*b.degree < 1 && !c.knots.empty() && have_position) b.degree = nx_short_form(b);
     c.degree = *b.degree;
     if (const std::string d = c.defect(); !d.empty()) fail(b.where, "NURBS: " + d, "");
     if (!have_position) fail(b.where, "NURBS before any motion: the curve must start where the tool is", "");
