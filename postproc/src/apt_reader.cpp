@@ -119,6 +119,7 @@ struct AptReader::State {
   /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
   std::optional<Location> active_cycle;
   bool nx_short_nurbs_noted = false;
+  bool units_stated = false;  ///< a UNITS/ statement was read (the lengths' unit is the file's word)
   std::optional<ClPoint> from_point;  ///< the FROM position (GOHOME alone returns there)
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
@@ -263,6 +264,21 @@ struct AptReader::State {
     return m;
   }
 
+  /// NX's helical engage: `CIRCLE/...,TIMES,n` before a GOTO that lies deeper along the axis. The n
+  /// turns come on top of the arc to the GOTO, but whether n counts it is not written (nx_APT_Project2:
+  /// TIMES,7 for 0.38 in of depth, a 3 degree ramp as 7 turns and the arc; as the arc alone, posted
+  /// before, the whole depth went down in 29 degrees of arc). Refused rather than guessed.
+  void refuse_repeated_circle(const AptStatement& st, const std::string& text) const {
+    const auto n = number_after(st, "TIMES");
+    if (!n && !has_word(st, "TIMES")) return;
+    fail(st.where,
+         fmt::format("CIRCLE ...,TIMES,{:g}: a helix of several turns (NX helical engage) is not posted: whether the "
+                     "turns include the arc to the next GOTO is not written, and one arc would take the whole depth in "
+                     "part of a turn; output the helix as GOTO points (NX: circular output off for helical moves)",
+                     n.value_or(0.0)),
+         echo_of(text));
+  }
+
   /// The distance of `p` from the axis of a circle (its radius if `p` is on the circle).
   static double radius_at(const Vec3d& p, const Vec3d& center, const Vec3d& n) {
     const Vec3d r = p - center;
@@ -281,6 +297,19 @@ struct AptReader::State {
            "");
   }
 
+  /// NX writes no UNITS record: an inch part says so only by its feeds (FEDRAT/IPM; its own posts
+  /// write G20). Read as mm, the default, every length would be 25.4 times too small. A feed in
+  /// inches in a file whose lengths are mm only by default is refused until --units says.
+  void refuse_inch_feed_in_mm_default(const AptStatement& st) const {
+    if (units_stated || options.default_inch || options.units_given) return;
+    fail(st.where,
+         fmt::format("FEDRAT/{} gives the feed in inches, and the file has no UNITS statement: its lengths are likely "
+                     "inches too (NX writes no UNITS record and says inches by IPM) and would be read as mm; give "
+                     "--units inch, or --units mm if the coordinates are mm",
+                     st.raw_arguments),
+         "FEDRAT/" + st.raw_arguments);
+  }
+
   Feed feed(const AptStatement& st) {
     Feed f;
     f.where = st.where;
@@ -288,6 +317,7 @@ struct AptReader::State {
     if (v.empty()) fail(st.where, "FEDRAT expects a feed value", "FEDRAT/" + st.raw_arguments);
     f.value = v[0];
     double unit = scale;
+    if (has_word(st, "IPM") || has_word(st, "IPR")) refuse_inch_feed_in_mm_default(st);
     if (has_word(st, "IPM")) unit = kMmPerInch;
     if (has_word(st, "MMPM")) unit = 1.0;
     if (has_word(st, "IPR")) { unit = kMmPerInch; f.per_rev = true; }
@@ -309,6 +339,7 @@ struct AptReader::State {
                                  v.size()),
            echo_of(text));
     check_coordinates(st, v, 3);
+    refuse_repeated_circle(st, text);
     Circle c;
     c.where = st.where;
     c.center_mm = to_w(scale * Vec3d(v[0], v[1], v[2]));
@@ -552,6 +583,7 @@ struct AptReader::State {
     if (w == "FEDRAT") {
       pending.push_back(feed(st));
     } else if (w == "UNITS" || w == "UNIT") {
+      units_stated = true;
       if (has_word(st, "MM")) scale = 1.0;
       else if (has_word(st, "INCHES") || has_word(st, "INCH") || has_word(st, "IN")) scale = kMmPerInch;
       else fail(at, "UNITS expects MM or INCHES", text);
