@@ -116,6 +116,11 @@ struct AptReader::State {
   Eigen::Matrix3d msys_R = Eigen::Matrix3d::Identity();
   std::optional<Location> first_msys;
   std::optional<Location> rotating_msys;  ///< an MSYS that rotates, posted as written (ignore)
+  /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
+  std::optional<Location> active_cycle;
+  bool nx_short_nurbs_noted = false;
+  bool units_stated = false;  ///< a UNITS/ statement was read (the lengths' unit is the file's word)
+  std::optional<ClPoint> from_point;  ///< the FROM position (GOHOME alone returns there)
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
     Location where;
@@ -235,6 +240,45 @@ struct AptReader::State {
     return m;
   }
 
+  /// GOHOME/x,y,z[,i,j,k] (NX: the move to the operation's home point) or GOHOME alone (back to the
+  /// FROM point): a rapid move there, as the CAM systems' own posts write it. It was a comment
+  /// before, and the move was lost.
+  Motion go_home(const AptStatement& st) {
+    refuse_inside_cycle(st, "GOHOME/" + st.raw_arguments, "a GOHOME");
+    if (!st.arguments.empty()) {
+      rapid_pending = true;
+      return motion(st, false);
+    }
+    if (!from_point)
+      fail(st.where, "GOHOME without a point and no FROM before it: the home position is not known; give it "
+                     "(GOHOME/x,y,z) or a FROM/x,y,z at the start", "GOHOME");
+    Motion m;
+    m.where = st.where;
+    m.point = *from_point;
+    m.rapid = true;
+    position = m.point.tip_mm;
+    axis = m.point.axis;
+    rapid_pending = false;
+    have_position = true;
+    arc_check.reset();
+    return m;
+  }
+
+  /// NX's helical engage: `CIRCLE/...,TIMES,n` before a GOTO that lies deeper along the axis. The n
+  /// turns come on top of the arc to the GOTO, but whether n counts it is not written (nx_APT_Project2:
+  /// TIMES,7 for 0.38 in of depth, a 3 degree ramp as 7 turns and the arc; as the arc alone, posted
+  /// before, the whole depth went down in 29 degrees of arc). Refused rather than guessed.
+  void refuse_repeated_circle(const AptStatement& st, const std::string& text) const {
+    const auto n = number_after(st, "TIMES");
+    if (!n && !has_word(st, "TIMES")) return;
+    fail(st.where,
+         fmt::format("CIRCLE ...,TIMES,{:g}: a helix of several turns (NX helical engage) is not posted: whether the "
+                     "turns include the arc to the next GOTO is not written, and one arc would take the whole depth in "
+                     "part of a turn; output the helix as GOTO points (NX: circular output off for helical moves)",
+                     n.value_or(0.0)),
+         echo_of(text));
+  }
+
   /// The distance of `p` from the axis of a circle (its radius if `p` is on the circle).
   static double radius_at(const Vec3d& p, const Vec3d& center, const Vec3d& n) {
     const Vec3d r = p - center;
@@ -253,6 +297,19 @@ struct AptReader::State {
            "");
   }
 
+  /// NX writes no UNITS record: an inch part says so only by its feeds (FEDRAT/IPM; its own posts
+  /// write G20). Read as mm, the default, every length would be 25.4 times too small. A feed in
+  /// inches in a file whose lengths are mm only by default is refused until --units says.
+  void refuse_inch_feed_in_mm_default(const AptStatement& st) const {
+    if (units_stated || options.default_inch || options.units_given) return;
+    fail(st.where,
+         fmt::format("FEDRAT/{} gives the feed in inches, and the file has no UNITS statement: its lengths are likely "
+                     "inches too (NX writes no UNITS record and says inches by IPM) and would be read as mm; give "
+                     "--units inch, or --units mm if the coordinates are mm",
+                     st.raw_arguments),
+         "FEDRAT/" + st.raw_arguments);
+  }
+
   Feed feed(const AptStatement& st) {
     Feed f;
     f.where = st.where;
@@ -260,6 +317,7 @@ struct AptReader::State {
     if (v.empty()) fail(st.where, "FEDRAT expects a feed value", "FEDRAT/" + st.raw_arguments);
     f.value = v[0];
     double unit = scale;
+    if (has_word(st, "IPM") || has_word(st, "IPR")) refuse_inch_feed_in_mm_default(st);
     if (has_word(st, "IPM")) unit = kMmPerInch;
     if (has_word(st, "MMPM")) unit = 1.0;
     if (has_word(st, "IPR")) { unit = kMmPerInch; f.per_rev = true; }
@@ -281,6 +339,7 @@ struct AptReader::State {
                                  v.size()),
            echo_of(text));
     check_coordinates(st, v, 3);
+    refuse_repeated_circle(st, text);
     Circle c;
     c.where = st.where;
     c.center_mm = to_w(scale * Vec3d(v[0], v[1], v[2]));
@@ -376,6 +435,37 @@ struct AptReader::State {
     }
   }
 
+  /// NX CLSF's short NURBS form: `GOTO/start`, `NURBS/`, `KNOT/` with the knots after 0 (the interior
+  /// ones and the end, each end once), `CNTRL/` with the control points after the first, which is
+  /// the tool position (HumMan/CLSFProcessor samples/nurbs.clsf: 70 curves, every one tangent to the
+  /// lines before and after it read so, and starting up to 22 mm off read any other way). Completes
+  /// the curve to the full clamped form; returns its degree (control points − interior knots).
+  int nx_short_form(NurbsBlock& b) {
+    NurbsCurve& c = b.curve;
+    for (const double w : c.weights)
+      if (w != 1.0)
+        fail(b.where, "NURBS: weighted control points in NX's short form (no start knots, the curve from the tool "
+                      "position): the weight of the start point is not written; expected weights of 1", "");
+    const int interior = static_cast<int>(c.knots.size()) - 1;
+    const int degree = static_cast<int>(c.points_mm.size()) - interior;
+    if (degree < 1) return degree;  // the curve check names the defect
+    const double u_end = c.knots.back();
+    std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
+    knots.insert(knots.end(), c.knots.begin(), c.knots.end() - 1);
+    knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, u_end);
+    c.knots = std::move(knots);
+    c.points_mm.insert(c.points_mm.begin(), position);
+    c.weights.insert(c.weights.begin(), 1.0);
+    if (!c.axes.empty()) c.axes.insert(c.axes.begin(), axis);
+    if (!nx_short_nurbs_noted) {
+      notices.push_back(fmt::format("{}:{}: NURBS in NX's short form (the knots after 0, the curve starting at the tool "
+                                    "position): read as a clamped curve of degree {}",
+                                    file, b.where.line, degree));
+      nx_short_nurbs_noted = true;
+    }
+    return degree;
+  }
+
   /// Ends the NURBS curve being collected: its chords become motions. `next` is the statement
   /// after the curve: a GOTO at the curve's end is the curve's last motion (its axis ends it).
   /// Returns true if `next` was consumed so.
@@ -385,6 +475,7 @@ struct AptReader::State {
     NurbsCurve& c = b.curve;
     if (c.weights.size() < c.points_mm.size()) c.weights.resize(c.points_mm.size(), 1.0);
     if (!b.degree) b.degree = static_cast<int>(c.knots.size()) - static_cast<int>(c.points_mm.size()) - 1;
+    if (*b.degree < 1 && !c.knots.empty() && have_position) b.degree = nx_short_form(b);
     c.degree = *b.degree;
     if (const std::string d = c.defect(); !d.empty()) fail(b.where, "NURBS: " + d, "");
     if (!have_position) fail(b.where, "NURBS before any motion: the curve must start where the tool is", "");
@@ -465,13 +556,16 @@ struct AptReader::State {
     pending.push_back(Unsupported{st.where, text});
   }
 
-  /// GOTO, FROM, GODLTA, RAPID.
+  /// GOTO, FROM, GOHOME, GODLTA, RAPID.
   bool apply_motion_word(const AptStatement& st) {
     const std::string& w = st.major;
     if (w == "GOTO" || w == "FROM") {
       Motion m = motion(st, false);
       m.from = (w == "FROM");
+      if (m.from) from_point = m.point;
       pending.push_back(m);
+    } else if (w == "GOHOME") {
+      pending.push_back(go_home(st));
     } else if (w == "GODLTA") {
       pending.push_back(motion(st, true));
     } else if (w == "RAPID") {
@@ -489,6 +583,7 @@ struct AptReader::State {
     if (w == "FEDRAT") {
       pending.push_back(feed(st));
     } else if (w == "UNITS" || w == "UNIT") {
+      units_stated = true;
       if (has_word(st, "MM")) scale = 1.0;
       else if (has_word(st, "INCHES") || has_word(st, "INCH") || has_word(st, "IN")) scale = kMmPerInch;
       else fail(at, "UNITS expects MM or INCHES", text);
@@ -509,7 +604,10 @@ struct AptReader::State {
     const std::string& w = st.major;
     if (w == "SPINDL") pending.push_back(spindle(st, text));
     else if (w == "COOLNT") pending.push_back(coolant(st));
-    else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) pending.push_back(tool_change(st, text));
+    else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) {
+      refuse_inside_cycle(st, text, "a tool change");
+      pending.push_back(tool_change(st, text));
+    }
     else if (w == "CUTCOM") pending.push_back(cutter_comp(st, text));
     else return false;
     return true;
@@ -602,6 +700,27 @@ struct AptReader::State {
     return true;
   }
 
+  /// INSERT/ text is literal NC output; INSERT/STOP [text] and INSERT/OPSTOP [text] (SOLIDWORKS CAM's
+  /// "INSERT/STOP  change fixture") ask for a program stop: posted as one, the rest of the text as
+  /// the operator's message, not as a comment the machine runs past.
+  static std::optional<Stop> inserted_stop(const AptStatement& st) {
+    const std::string& t = st.raw_arguments;
+    const std::size_t b = t.find_first_not_of(" \t");
+    if (b == std::string::npos) return std::nullopt;
+    std::size_t e = t.find_first_of(" \t,(", b);
+    if (e == std::string::npos) e = t.size();
+    std::string first = t.substr(b, e - b);
+    for (char& c : first) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (first != "STOP" && first != "OPSTOP") return std::nullopt;
+    std::string rest = t.substr(e);
+    const std::size_t rb = rest.find_first_not_of(" \t,");
+    rest = rb == std::string::npos ? std::string() : rest.substr(rb);
+    if (rest.size() >= 2 && rest.front() == '(' && rest.back() == ')') rest = rest.substr(1, rest.size() - 2);
+    const std::size_t re = rest.find_last_not_of(" \t");
+    rest = re == std::string::npos ? std::string() : rest.substr(0, re + 1);
+    return Stop{st.where, first == "OPSTOP", rest};
+  }
+
   /// The text of STOP/(text) or STOP/text, without the parentheses ("" for STOP alone).
   static std::string operator_message(const AptStatement& st) {
     std::string t = st.raw_arguments;
@@ -665,13 +784,31 @@ struct AptReader::State {
     return Spindle{st.where, n == 3 ? Spindle::Direction::cw : Spindle::Direction::ccw, spindle_rpm};
   }
 
+  /// A tool change or an arc while a CYCLE/ is in force: the GOTOs after it would be drilled as
+  /// holes with the cycle of the operation before (SOLIDWORKS CAM files without CYCLE/OFF, whose
+  /// end milling went out as G81 holes). Whether the cycle goes on is not written: refused.
+  void refuse_inside_cycle(const AptStatement& st, const std::string& text, const char* what) const {
+    if (!active_cycle) return;
+    fail(st.where,
+         fmt::format("{} while the CYCLE of line {} is in force (no CYCLE/OFF since): the GOTOs after it would be "
+                     "drilled as holes of that cycle; end the cycle with CYCLE/OFF where its holes end (and repeat the "
+                     "CYCLE/ statement after the tool change if the new tool drills too)",
+                     what, active_cycle->line),
+         echo_of(text));
+  }
+
   /// CIRCLE, CYCLE, NURBS (KNOT, CNTRL), MSYS and the ends (END-OF-PATH, END, FINI).
   bool apply_geometry_record(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
     if (w == "CIRCLE") {
+      refuse_inside_cycle(st, text, "a CIRCLE (arc motion)");
       pending.push_back(circle(st, text));
     } else if (w == "CYCLE") {
-      if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) pending.push_back(std::move(*c));
+      if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) {
+        if (c->kind == Cycle::Kind::off) active_cycle.reset();
+        else active_cycle = st.where;
+        pending.push_back(std::move(*c));
+      }
     } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
       pending.push_back(End{st.where, w == "FINI"});
     } else if (w == "NURBS" || w == "KNOT" || w == "CNTRL") {
@@ -690,9 +827,12 @@ struct AptReader::State {
   bool apply_text_record(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
     auto comment = [&](std::string t) { pending.push_back(Comment{st.where, std::move(t)}); };
-    if (w == "PPRINT" || w == "INSERT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
+    if (w == "INSERT") {
+      if (auto stop = inserted_stop(st)) pending.push_back(std::move(*stop));
+      else comment(st.raw_arguments.empty() ? w : st.raw_arguments);
+    } else if (w == "PPRINT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
       if (w == "TOOL PATH") nx_circle_axis = true;
-      comment(st.raw_arguments.empty() ? w : (w == "PPRINT" || w == "INSERT" ? st.raw_arguments : w + ": " + st.raw_arguments));
+      comment(st.raw_arguments.empty() ? w : (w == "PPRINT" ? st.raw_arguments : w + ": " + st.raw_arguments));
     } else if (w.rfind("PARTNO", 0) == 0) {
       // PARTNO/text, or PARTNO text (which may hold a '/' of its own)
       std::string rest = w == "PARTNO" ? st.raw_arguments : text.substr(std::min(text.size(), std::size_t(6)));

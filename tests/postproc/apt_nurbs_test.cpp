@@ -136,3 +136,31 @@ TEST_CASE("NURBS: bad curves are refused naming the line") {
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/ORDER,2.5\nFINI\n"), Catch::Contains("ORDER must be a whole number"));
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,-3\nFINI\n"), Catch::Contains("DEGREE must be a whole number"));
 }
+
+TEST_CASE("NURBS: NX's short form (knots after 0, the first control point is the tool position)") {
+  // HumMan/CLSFProcessor samples/nurbs.clsf writes "GOTO/start, NURBS/, KNOT/0.0417,0.375,0.625,0.9583,1,
+  // 7 x CNTRL": degree 3 = 7 control points - 4 interior knots. Here the same form, hand-checkable:
+  // degree 2 (2 control points, no interior knot) over (0,0,0), (1,1,0), (2,0,0): the parabola
+  // x = 2u, y = 2u(1-u), i.e. y = x - x^2/2, from the GOTO to (2,0,0).
+  const auto m = motions("GOTO/0,0,0\nNURBS/\nKNOT/1.0\nCNTRL/1,1,0\nCNTRL/2,0,0\nGOTO/2,0,0\nFINI\n");
+  REQUIRE(m.size() >= 3);
+  CHECK(m.front().point.tip_mm == Vec3d(0, 0, 0));
+  CHECK(m.back().point.tip_mm == Vec3d(2, 0, 0));
+  for (std::size_t i = 1; i < m.size(); ++i) {
+    const Vec3d p = m[i].point.tip_mm;
+    CHECK(p.y() == Approx(p.x() - p.x() * p.x() / 2.0).margin(1e-12));
+    CHECK(p.x() > m[i - 1].point.tip_mm.x());
+  }
+  // degree 3 with an interior knot at 0.5: 4 control points after the start, 1 interior knot; a
+  // straight line with the control points evenly spaced in pieces: the curve stays on the X axis
+  // and ends at the last control point
+  const auto line = motions("GOTO/0,0,0\nNURBS/\nKNOT/0.5,1\nCNTRL/1,0,0\nCNTRL/2,0,0\nCNTRL/3,0,0\nCNTRL/4,0,0\nGOTO/4,0,0\nFINI\n");
+  REQUIRE(line.size() >= 2);
+  CHECK(line.back().point.tip_mm == Vec3d(4, 0, 0));
+  for (const auto& x : line) CHECK(x.point.tip_mm.y() == 0.0);
+  // weights cannot be completed (the start point's is not written): refused
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/1\nCNTRL/1,1,0,0.5\nCNTRL/2,0,0,1\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("weighted control points in NX's short form"));
+  // too few control points for the knots, read either way: refused as before
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0.2,0.4,0.6,1\nCNTRL/1,1,0\nFINI\n"), Catch::Contains("n.cls:2:1"));
+}

@@ -72,7 +72,7 @@ TEST_CASE("a 3-value GOTO keeps the last tool axis; RAPID and RAPID/ mark one mo
 }
 
 TEST_CASE("FEDRAT in both argument orders and units") {
-  const auto f = only<cl::Feed>(read_all("FEDRAT/MMPM,250\nFEDRAT/ 1000.0,MMPM\nFEDRAT/IPM,10.0000\nFEDRAT/0.1,MMPR\n"));
+  const auto f = only<cl::Feed>(read_all("UNITS/MM\nFEDRAT/MMPM,250\nFEDRAT/ 1000.0,MMPM\nFEDRAT/IPM,10.0000\nFEDRAT/0.1,MMPR\n"));
   REQUIRE(f.size() == 4);
   CHECK(f[0].value == 250.0);
   CHECK(f[1].value == 1000.0);
@@ -135,15 +135,114 @@ TEST_CASE("bad input: file:line:column and what was expected") {
 }
 
 TEST_CASE("every real CL file reads completely") {
+  // NX's inch parts (nx_APT_*) have no UNITS record; read as inches, as their NX posts (G20) say.
+  // nx_APT_Project2.txt is refused at its helix CIRCLE/...,TIMES,7 (line 4641): see below.
   for (const char* f : {"nx_APT_Variable_Axis.txt", "nx_APT_SimpleMillPlane.txt", "nx_APT_Zig_Zag_Smoothed.txt",
-                        "nx_APT_Project2.txt", "catia_peening.aptsource", "creo_bohren_1.ncl", "creo_schruppen_1.ncl"}) {
+                        "catia_peening.aptsource", "creo_bohren_1.ncl", "creo_schruppen_1.ncl"}) {
     INFO(f);
     std::ifstream in(test::data(std::string("real/") + f), std::ios::binary);
     REQUIRE(in);
-    cl::AptReader r(in, f);
+    cl::ReaderOptions o;
+    o.default_inch = std::string(f).rfind("nx_APT_", 0) == 0;
+    cl::AptReader r(in, f, o);
     int motions = 0;
     while (auto x = r.next())
       if (std::holds_alternative<cl::Motion>(*x)) ++motions;
     CHECK(motions > 0);
   }
+}
+
+TEST_CASE("INSERT/STOP and INSERT/OPSTOP are program stops; other INSERT text is a comment (SOLIDWORKS CAM)") {
+  // swcam basemach.apt: "INSERT/STOP  change fixture" between two setups; the CAM's own post
+  // writes a program stop there. As a comment the machine would run on into the next setup.
+  const auto rs = read_all("INSERT/8MM CRB 4FL 20 LOC\nINSERT/STOP  change fixture\nINSERT/stop\nINSERT/OPSTOP,(check)\n"
+                           "INSERT/STOPWATCH\n");
+  const auto stops = only<cl::Stop>(rs);
+  REQUIRE(stops.size() == 3);
+  CHECK_FALSE(stops[0].optional);
+  CHECK(stops[0].text == "change fixture");
+  CHECK(stops[0].where.line == 2);
+  CHECK_FALSE(stops[1].optional);
+  CHECK(stops[1].text.empty());
+  CHECK(stops[2].optional);
+  CHECK(stops[2].text == "check");
+  const auto comments = only<cl::Comment>(rs);
+  REQUIRE(comments.size() == 2);
+  CHECK(comments[0].text == "8MM CRB 4FL 20 LOC");
+  CHECK(comments[1].text == "STOPWATCH");
+}
+
+TEST_CASE("a tool change or a CIRCLE while a CYCLE is in force is refused (SOLIDWORKS CAM file without CYCLE/OFF)") {
+  // swcam RotateThin.apt: CYCLE/DRILL for a drill, no CYCLE/OFF, LOAD/TOOL,2 (an end mill), RAPID,
+  // FEDRAT, CIRCLE: its milling went out as G81 holes 7.65 mm deep.
+  const std::string head = "UNIT/MM\nLOAD/TOOL,15\nRAPID/\nGOTO/10,20,100\nCYCLE/INIT\n"
+                           "CYCLE/DRILL,FEDTO,7.65,MMPM,125.,RAPTO,3.,RTRCTO,100.,DWELL,0\nGOTO/10,20,0\n";
+  const std::string tool = error_of(head + "LOAD/TOOL,2\nRAPID/\nGOTO/10,20,2.5\n");
+  CHECK(tool.find("t.cls:8:1: a tool change while the CYCLE of line 6 is in force (no CYCLE/OFF since)") != std::string::npos);
+  const std::string arc = error_of(head + "CIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n");
+  CHECK(arc.find("t.cls:8:1: a CIRCLE (arc motion) while the CYCLE of line 6 is in force") != std::string::npos);
+  // with CYCLE/OFF both read
+  CHECK(error_of(head + "CYCLE/OFF\nLOAD/TOOL,2\nGOTO/5,20,0\nCIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n").empty());
+}
+
+TEST_CASE("GOHOME/x,y,z is a rapid move there; GOHOME alone returns to FROM (NX drilling, HumMan CLSF samples)") {
+  // nx 9_SVERL_63_N2.cls ends "GOTO/297.5,-393,471 / GOHOME/297.5,-393,483 / END-OF-PATH": the last
+  // retract was lost as a comment.
+  const auto m = only<cl::Motion>(read_all("FROM/1,2,50,0,0,1\nFEDRAT/MMPM,120\nGOTO/1,2,3\nGOHOME/297.5,-393.0,483.0\n"
+                                           "GOTO/5,6,7\nGOHOME\n"));
+  REQUIRE(m.size() == 5);
+  CHECK(m[2].point.tip_mm == Vec3d(297.5, -393.0, 483.0));
+  CHECK(m[2].rapid);
+  CHECK_FALSE(m[2].from);
+  CHECK(m[2].where.line == 4);
+  CHECK_FALSE(m[3].rapid);  // the rapid was for the GOHOME only
+  CHECK(m[4].point.tip_mm == Vec3d(1, 2, 50));
+  CHECK(m[4].rapid);
+  CHECK(error_of("GOTO/1,2,3\nGOHOME\n").find("t.cls:2:1: GOHOME without a point and no FROM before it") !=
+        std::string::npos);
+}
+
+TEST_CASE("NX inch files without UNITS: FEDRAT/IPM is refused until --units says (they were read as mm)") {
+  // nx_APT_Variable_Axis.txt: no UNITS record, FEDRAT/IPM,10 at line 15; NX's own post writes G20.
+  // Read as mm (the default), every length was 25.4 times too small, with exit 0.
+  std::ifstream in(test::data("real/nx_APT_Variable_Axis.txt"), std::ios::binary);
+  REQUIRE(in);
+  cl::AptReader r(in, "nx_APT_Variable_Axis.txt");
+  try {
+    while (r.next()) {
+    }
+    FAIL("read as mm");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("nx_APT_Variable_Axis.txt:15:1: FEDRAT/IPM,10.0000 gives the feed in inches, "
+                                         "and the file has no UNITS statement") &&
+                             Catch::Contains("--units inch"));
+  }
+  // UNITS/MM, --units (default_inch or units_given) or IPR likewise
+  CHECK(error_of("UNITS/MM\nFEDRAT/IPM,10\nGOTO/1,2,3\n").empty());
+  CHECK(error_of("UNITS/INCHES\nFEDRAT/IPM,10\nGOTO/1,2,3\n").empty());
+  CHECK_THAT(error_of("GOTO/1,2,3\nFEDRAT/0.004,IPR\n"), Catch::Contains("t.cls:2:1: FEDRAT/0.004,IPR gives the feed in inches"));
+  cl::ReaderOptions mm;
+  mm.units_given = true;  // --units mm
+  REQUIRE(only<cl::Feed>(read_all("FEDRAT/IPM,10\n", mm)).size() == 1);
+}
+
+TEST_CASE("NX CIRCLE/...,TIMES,n (a helix of several turns) is refused (nx_APT_Project2.txt line 4641)") {
+  // TIMES,7 for 0.38 in of depth along the axis: posted as the one arc to the next GOTO, the whole
+  // depth went down in 29 degrees of arc instead of a 3 degree helical ramp.
+  std::ifstream in(test::data("real/nx_APT_Project2.txt"), std::ios::binary);
+  REQUIRE(in);
+  cl::ReaderOptions o;
+  o.default_inch = true;
+  cl::AptReader r(in, "nx_APT_Project2.txt", o);
+  int motions = 0;
+  try {
+    while (auto x = r.next())
+      if (std::holds_alternative<cl::Motion>(*x)) ++motions;
+    FAIL("read the helix");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("nx_APT_Project2.txt:4641:1: CIRCLE ...,TIMES,7: a helix of several turns"));
+  }
+  CHECK(motions > 4000);  // everything before it read
+  CHECK(error_of("UNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2\nGOTO/5,0,0\n")
+            .find("t.cls:3:1: CIRCLE ...,TIMES,2") != std::string::npos);
 }
