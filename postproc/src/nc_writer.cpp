@@ -101,6 +101,10 @@ void NcWriter::write_held(const std::string& rpm) {
 
 void NcWriter::tool_change(const std::vector<std::string>& list) {
   write_held("");
+  // the changer moves the axes (Z to its change position at least, X Y on many machines): the
+  // next motion writes every axis word and its motion word again, as the CAM's point says
+  for (auto& v : last_) v.reset();
+  last_motion_.reset();
   for (const auto& words : list)
     if (words.find("{rpm}") != std::string::npos) {
       held_ = list;

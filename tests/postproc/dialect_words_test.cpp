@@ -79,7 +79,7 @@ TEST_CASE("Klartext: the speed in TOOL CALL, M3 after it, CYCL DEF 9 dwell, L bl
         "13 M5\n"
         "14 M9\n"
         "15 TOOL CALL 2 Z S1500\n"  // a motion before the next SPINDL: the speed in force
-        "16 L Y+30.0000 FMAX\n"
+        "16 L X+20.0000 Y+30.0000 Z+25.0000 FMAX\n"  // after the change every word again
         "17 TOOL CALL Z S3000\n"
         "18 M3\n"
         "19 L Z+0.0000 F200\n"
@@ -103,7 +103,7 @@ TEST_CASE("Fanuc and Haas: the same CL in G-code words, ending with spindle and 
       "G1 X20.0000 Z25.0000 F500.0\n"
       "M5\nM9\n"
       "T2 M6\nG43 H2\n"
-      "G0 Y30.0000\n"
+      "G0 X20.0000 Y30.0000 Z25.0000\n"  // after a tool change every word again (the changer moved the axes)
       "S3000 M3\n"
       "G1 Z0.0000 F200.0\n";
   CHECK(post_apt(kCl, dialect_named("fanuc")) == "%\nO0001 (T)\n" + body + "M5\nM9\nG91 G28 Z0\nG90\nM30\n%\n");

@@ -39,12 +39,14 @@ std::unique_ptr<cl::Reader> open(std::istream& in, const Case& c, const Machine&
 }
 
 /// Motions that repeat the previous one (tip, axis and programmed angles): no axis word changes.
+/// After a tool change every word is written again (the changer moved the axes): not a repeat.
 std::size_t duplicates(const Case& c, const Machine& m, const Setup& setup) {
   std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
   auto reader = open(in, c, m, setup);
   std::size_t n = 0;
   std::optional<cl::Motion> last;
   while (auto r = reader->next()) {
+    if (std::holds_alternative<cl::ToolChange>(*r)) last.reset();
     const auto* mo = std::get_if<cl::Motion>(&*r);
     if (!mo) continue;
     if (last && (mo->point.tip_mm - last->point.tip_mm).norm() < 5e-5 &&
