@@ -28,9 +28,6 @@ std::string degrees_list(const RotaryAngles& rotary_rad, int decimals) {
   return out;
 }
 
-}  // namespace
-namespace {
-
 using detail::RecordBlocks;
 
 class Poster {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "shipped_machines.hpp"
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -22,11 +23,6 @@ using namespace ncpost::gcode;
 
 namespace {
 
-const Machine& ac_machine() {
-  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
-  return m;
-}
-
 GcodeReaderOptions reading(ArcCentre arc_centre) {
   GcodeReaderOptions o;
   o.circles = true;  // the arc reaches the post as a Circle (its centre) and its end motion
@@ -37,7 +33,7 @@ GcodeReaderOptions reading(ArcCentre arc_centre) {
 
 std::vector<cl::Record> read_all(const std::string& text, const GcodeReaderOptions& o) {
   std::istringstream in(text);
-  GcodeClReader r(in, "t.ngc", ac_machine(), Setup{}, o);
+  GcodeClReader r(in, "t.ngc", test::ac_trunnion(), Setup{}, o);
   return test::all_records(r);
 }
 

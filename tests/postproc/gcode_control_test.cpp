@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "shipped_machines.hpp"
 #include "cl_records.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -16,11 +17,6 @@ using namespace ncpost::gcode;
 
 namespace {
 
-const Machine& ac_machine() {  // Z -600 .. 600 mm, A -120 .. 120 deg, C continuous
-  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
-  return m;
-}
-
 struct Read {
   std::vector<cl::Record> records;
   std::vector<std::string> notices;
@@ -28,7 +24,7 @@ struct Read {
 
 Read read_all(const std::string& text, GcodeReaderOptions o = {}, Setup s = {}) {
   std::istringstream in(text);
-  GcodeClReader r(in, "t.ngc", ac_machine(), s, o);
+  GcodeClReader r(in, "t.ngc", test::ac_trunnion(), s, o);
   Read out;
   while (auto x = r.next()) {
     out.records.push_back(std::move(*x));
@@ -487,8 +483,8 @@ TEST_CASE("G-code: G53 moves to machine coordinates, not to program coordinates"
   const auto m = only<cl::Motion>(r.records);
   REQUIRE(m.size() == 3);
   const Eigen::Vector2d rotary(deg_to_rad(30.0), 0.0);
-  const Vec3d before = linear_for(ac_machine(), rotary, m[0].point.tip_mm, s);
-  const Vec3d after = linear_for(ac_machine(), rotary, m[1].point.tip_mm, s);
+  const Vec3d before = linear_for(test::ac_trunnion(), rotary, m[0].point.tip_mm, s);
+  const Vec3d after = linear_for(test::ac_trunnion(), rotary, m[1].point.tip_mm, s);
   CHECK(after.isApprox(Vec3d(before.x(), before.y(), 590.0)));
   CHECK(m[1].rapid);
   // the next move programs X only: Y and Z keep the program coordinates the G53 move reached

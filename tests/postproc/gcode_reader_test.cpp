@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "shipped_machines.hpp"
 #include "cl_records.hpp"
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
@@ -22,15 +23,10 @@ using namespace ncpost::gcode;
 
 namespace {
 
-const Machine& ac_machine() {
-  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
-  return m;
-}
-
 std::vector<cl::Record> read_all(const std::string& text, GcodeReaderOptions o = {}, Setup s = {},
                                  std::vector<std::string>* notices = nullptr) {
   std::istringstream in(text);
-  GcodeClReader r(in, "t.ngc", ac_machine(), s, o);
+  GcodeClReader r(in, "t.ngc", test::ac_trunnion(), s, o);
   std::vector<cl::Record> out = test::all_records(r);
   if (notices) *notices = r.take_notices();
   return out;
@@ -118,7 +114,7 @@ TEST_CASE("gcode reader: G91 incremental positions, including rotary axes") {
   CHECK(rad_to_deg((*ms[1].rotary_rad)[1]) == Approx(15.0));
   CHECK(rad_to_deg((*ms[2].rotary_rad)[0]) == Approx(12.0));
   // machine-axis program: the CL point maps back to the programmed X Y Z
-  const Machine& m = ac_machine();
+  const Machine& m = test::ac_trunnion();
   const Vec3d xyz = linear_for(m, *ms[2].rotary_rad, ms[2].point.tip_mm, Setup{});
   CHECK(xyz.x() == Approx(2.5));
   CHECK(xyz.y() == Approx(-1.0));
@@ -132,7 +128,7 @@ TEST_CASE("gcode reader: machine-axis program goes through the nominal forward k
   setup.workpiece_origin_mm = Vec3d(5, -3, 40);
   const auto ms = motions("G0 X10 Y20 Z30 A30 C45\nG1 X-4 A-60 C-120 F300\n", {}, setup);
   REQUIRE(ms.size() == 2);
-  const Machine& m = ac_machine();
+  const Machine& m = test::ac_trunnion();
   AxisPosition q = home_of(m);
   q.linear_mm = Vec3d(10, 20, 30);
   q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(45));
@@ -159,22 +155,22 @@ TEST_CASE("gcode reader: RTCP programs keep the tip and take the axis from the a
     const auto ms = motions(text);
     REQUIRE(ms.size() == 1);
     check_tip(ms[0], 1, 2, 3);
-    AxisPosition q = home_of(ac_machine());
+    AxisPosition q = home_of(test::ac_trunnion());
     q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
-    CHECK((ms[0].point.axis - forward(ac_machine(), q, Setup{}).axis).norm() < 1e-12);
+    CHECK((ms[0].point.axis - forward(test::ac_trunnion(), q, Setup{}).axis).norm() < 1e-12);
   }
   // switched off again: machine axes
   const auto ms = motions("M428\nG1 X1 Y2 Z3 A30 C90 F100\nM429\nG1 X1\n");
   REQUIRE(ms.size() == 2);
-  AxisPosition q = home_of(ac_machine());
+  AxisPosition q = home_of(test::ac_trunnion());
   q.linear_mm = Vec3d(1, 2, 3);
   q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
-  CHECK((ms[1].point.tip_mm - forward(ac_machine(), q, Setup{}).tip_mm).norm() < 1e-12);
+  CHECK((ms[1].point.tip_mm - forward(test::ac_trunnion(), q, Setup{}).tip_mm).norm() < 1e-12);
   // forced kinds
   GcodeReaderOptions machine_kind;
   machine_kind.kind = InputKind::machine;
   CHECK((motions("M428\nG1 X1 Y2 Z3 A30 C90 F1\n", machine_kind)[0].point.tip_mm -
-         forward(ac_machine(), q, Setup{}).tip_mm).norm() < 1e-12);
+         forward(test::ac_trunnion(), q, Setup{}).tip_mm).norm() < 1e-12);
   GcodeReaderOptions rtcp_kind;
   rtcp_kind.kind = InputKind::rtcp;
   check_tip(motions("G1 X1 Y2 Z3 A30 C90 F1\n", rtcp_kind)[0], 1, 2, 3);
@@ -411,10 +407,10 @@ TEST_CASE("gcode reader: G80 beside G0/G1 in one block cancels the cycle and set
 }
 
 TEST_CASE("gcode reader: unreadable files and invalid options") {
-  CHECK_THROWS_AS(open_gcode("/nonexistent/file.ngc", ac_machine(), Setup{}), InputError);
+  CHECK_THROWS_AS(open_gcode("/nonexistent/file.ngc", test::ac_trunnion(), Setup{}), InputError);
   const std::string dir = std::filesystem::temp_directory_path().string();
   try {
-    auto r = open_gcode(dir, ac_machine(), Setup{});
+    auto r = open_gcode(dir, test::ac_trunnion(), Setup{});
     while (r->next()) {
     }
     FAIL("a directory was read");
@@ -425,7 +421,7 @@ TEST_CASE("gcode reader: unreadable files and invalid options") {
   bad.arc_chord_tolerance_mm = 0.0;
   CHECK_FALSE(bad.validate().empty());
   std::istringstream in("G0 X1\n");
-  CHECK_THROWS_AS(GcodeClReader(in, "t.ngc", ac_machine(), Setup{}, bad), std::invalid_argument);
+  CHECK_THROWS_AS(GcodeClReader(in, "t.ngc", test::ac_trunnion(), Setup{}, bad), std::invalid_argument);
 }
 
 TEST_CASE("gcode detection: G-code versus APT, RTCP versus machine axes") {

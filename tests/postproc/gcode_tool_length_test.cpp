@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "shipped_machines.hpp"
 #include "cl_records.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
@@ -19,14 +20,9 @@ using namespace ncpost;
 
 namespace {
 
-const Machine& ac_machine() {
-  static const Machine m = load_machine(NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml");
-  return m;
-}
-
 std::vector<cl::Record> read_all(const std::string& text) {
   std::istringstream in(text);
-  gcode::GcodeClReader r(in, "t.nc", ac_machine(), Setup{});
+  gcode::GcodeClReader r(in, "t.nc", test::ac_trunnion(), Setup{});
   std::vector<cl::Record> out;
   while (auto x = r.next()) out.push_back(std::move(*x));
   return out;
@@ -35,14 +31,14 @@ std::vector<cl::Record> read_all(const std::string& text) {
 /// The blocks of the program posted from `text` in `dialect` (no header comments, no numbers).
 std::vector<std::string> post_blocks(const std::string& text, const std::string& dialect, bool rtcp = false) {
   std::istringstream in(text);
-  gcode::GcodeClReader reader(in, "t.nc", ac_machine(), Setup{});
+  gcode::GcodeClReader reader(in, "t.nc", test::ac_trunnion(), Setup{});
   const std::string out_path = "gcode_tool_length_test_" + dialect + ".nc";
   {
     AtomicFile out(out_path);
     NcWriter writer(out, dialect_named(dialect), "XYZAC");
     PostOptions o;
     o.rtcp = rtcp;
-    post_program(reader, "t.nc", NominalSolver(ac_machine(), Setup{}), writer, o);
+    post_program(reader, "t.nc", NominalSolver(test::ac_trunnion(), Setup{}), writer, o);
     out.commit();
   }
   std::istringstream lines(test::read_text_file(out_path));
@@ -104,7 +100,7 @@ TEST_CASE("G-code: G43 H is a length record after the tool change; H0 and G49 ca
   std::vector<std::string> notices;
   {
     std::istringstream in(head + "G0 Z60.\nM30\n");
-    gcode::GcodeClReader r(in, "t.nc", ac_machine(), Setup{});
+    gcode::GcodeClReader r(in, "t.nc", test::ac_trunnion(), Setup{});
     std::vector<cl::Record> rs;
     while (auto x = r.next()) rs.push_back(std::move(*x));
     notices = r.take_notices();

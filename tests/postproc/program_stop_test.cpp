@@ -10,6 +10,7 @@
 
 #include <sstream>
 
+#include "shipped_machines.hpp"
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "ncpost/machines/input_error.hpp"
@@ -27,14 +28,9 @@ using test::only;
 
 namespace {
 
-const Machine& ac_machine() {
-  static const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
-  return m;
-}
-
 std::vector<cl::Record> gcode_records(const std::string& text) {
   std::istringstream in(text);
-  gcode::GcodeClReader r(in, "t.ngc", ac_machine(), Setup{}, gcode::GcodeReaderOptions{});
+  gcode::GcodeClReader r(in, "t.ngc", test::ac_trunnion(), Setup{}, gcode::GcodeReaderOptions{});
   return test::all_records(r);
 }
 
@@ -72,7 +68,7 @@ template <class T> std::size_t index_of(const std::vector<cl::Record>& records, 
 
 PostRequest request(const std::string& dialect) {
   PostRequest r;
-  r.machine = ac_machine();
+  r.machine = test::ac_trunnion();
   r.machine_source = "machines/ac-trunnion.toml";
   r.setup.workpiece_origin_mm = Vec3d(0, 0, 80);
   r.dialect = dialect_named(dialect);
