@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """Recount what the real files of tests/data/real/ contain, independently of ncpost's code.
 
-A maintainer tool (not used by the tests): it cross-checks the hand-written manifest
+A check run by the tests (ctest: data/corpus_counts): it cross-checks the hand-written manifest
 tests/data/real/expected.json. For every file named there it reads the file itself and prints
 (or, with --check, compares against the manifest) the counts defined in SOURCES.md:
 

@@ -12,6 +12,7 @@
 
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/postproc/inverse_time.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
 #include "ncpost/postproc/line_source.hpp"
@@ -300,11 +301,28 @@ struct GcodeClReader::State {
   }
 
   // ---- G93 (inverse time): the source gives each block's time (1/F minutes). The post times a
-  // block by max(tip path mm, rotary travel deg) / feed, so each G93 motion is preceded by the
-  // cl::Feed that reproduces the source's time: feed = max(length, travel) x F.
+  // block by the rule of inverse_time.hpp (the executed tip path in W over the feed; deg/min for a
+  // pure reorientation), so each G93 motion is preceded by the cl::Feed that gives the source's
+  // block the source's time under that rule: the same program re-posted keeps every block's time.
   std::optional<cl::Motion> pending_motion;  ///< an arc segment waiting behind its feed record
   std::optional<Vec3d> last_tip;
   RotaryAngles last_rotary;  ///< the programmed rotary angles (rad) of the last motion
+
+  /// The machine commands (mm, rad) that put the tip on `tip_W` at the rotary angles `rotary_rad`
+  /// on the nominal machine: the tip is affine in the linear axes at fixed rotary angles.
+  AxisPosition commands_for(const Vec3d& tip_W, const RotaryAngles& rotary_rad) const {
+    AxisPosition q = AxisPosition::zero(rotaries());
+    for (int k = 0; k < rotaries(); ++k) q.rotary_rad[k] = rotary_rad[k];
+    const Vec3d t0 = nominal_table_T_tool(q).t;
+    Mat3d A;
+    for (int i = 0; i < 3; ++i) {
+      AxisPosition qi = q;
+      qi.linear_mm[i] = 1.0;
+      A.col(i) = nominal_table_T_tool(qi).t - t0;
+    }
+    q.linear_mm = A.partialPivLu().solve(tip_W + setup.workpiece_origin_mm - t0);
+    return q;
+  }
 
   /// The feed record of a G93 motion (nullopt otherwise); follows the last position in any case.
   std::optional<cl::Feed> source_time_feed(const cl::Motion& m) {
@@ -312,10 +330,20 @@ struct GcodeClReader::State {
     const RotaryAngles rotary = m.rotary_rad ? *m.rotary_rad : RotaryAngles::Zero(rotaries());
     if (last_rotary.size() != rotary.size()) last_rotary = RotaryAngles::Zero(rotary.size());
     if (m.inverse_time && m.feed && *m.feed > 0.0 && last_tip) {
-      const double length_mm = (m.point.tip_mm - *last_tip).norm();
+      const bool tip_moves = (m.point.tip_mm - *last_tip).norm() > kStillTipMm;
+      double path_mm = (m.point.tip_mm - *last_tip).norm();  // RTCP input: the tip moves straight in W
+      if (!last_rtcp && tip_moves) {  // machine axes interpolated linearly
+        const AxisPosition q0 = commands_for(*last_tip, last_rotary), q = commands_for(m.point.tip_mm, rotary);
+        path_mm = tip_path_length_mm([&](double t) {
+          AxisPosition qt = q0;
+          qt.linear_mm = q0.linear_mm + t * (q.linear_mm - q0.linear_mm);
+          qt.rotary_rad = q0.rotary_rad + t * (q.rotary_rad - q0.rotary_rad);
+          return Vec3d(nominal_table_T_tool(qt).t - setup.workpiece_origin_mm);
+        });
+      }
       const double travel_deg = max_abs_step(rotary, last_rotary) * 180.0 / kPi;
-      const double reach = std::max(length_mm, travel_deg);
-      if (reach > 1e-9) out = cl::Feed{m.where, reach * *m.feed, false};
+      const double feed = feed_for_minutes(path_mm, tip_moves, travel_deg, 1.0 / *m.feed);
+      if (feed > 0.0) out = cl::Feed{m.where, feed, false};
     }
     last_tip = m.point.tip_mm;
     last_rotary = rotary;

@@ -33,7 +33,13 @@ void NcWriter::start_line() {
 }
 
 void NcWriter::end_line() {
+  if (keep_last_line_) {  // the line is whole in the buffer: flush() runs only at a line's end
+    std::size_t begin = buf_.size();
+    while (begin > 0 && buf_[begin - 1] != '\n') --begin;
+    last_line_.assign(buf_.data() + begin, buf_.size() - begin);
+  }
   buf_.push_back('\n');
+  ++lines_;
   if (buf_.size() > (1 << 16)) flush();
 }
 
@@ -136,7 +142,10 @@ void NcWriter::spindle_turn(bool counter_clockwise) {
 
 void NcWriter::begin_program(const std::string& name, const std::vector<std::string>& header_comments) {
   program_name_ = nc_program_name(name, dialect_);
-  if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
+  if (dialect_.percent_framing) {
+    fmt::format_to(std::back_inserter(buf_), "%\n");
+    ++lines_;
+  }
   for (const auto& words : dialect_.program_start) {
     if (words == "{comments}") {
       for (const auto& c : header_comments) comment(c);
@@ -380,6 +389,24 @@ void NcWriter::end_program() {
     if (!names_missing_axis(words, letters_)) write_block(with_value(words, "{program}", program_name_));
   if (dialect_.percent_framing) fmt::format_to(std::back_inserter(buf_), "%\n");
   flush();
+}
+
+}  // namespace ncpost
+
+namespace ncpost {
+
+WrittenState NcWriter::in_force() const {
+  WrittenState s;
+  s.values = last_;
+  if (last_motion_)
+    s.motion = *last_motion_ == 0   ? WrittenState::Motion::rapid
+               : *last_motion_ == 1 ? WrittenState::Motion::linear
+               : *last_motion_ == 2 ? WrittenState::Motion::clockwise
+                                    : WrittenState::Motion::counter_clockwise;
+  s.plane = plane_;
+  s.inverse_time = last_feed_mode_ && *last_feed_mode_ == NcMotion::FeedMode::inverse_time;
+  s.feed = last_feed_;
+  return s;
 }
 
 }  // namespace ncpost

@@ -12,9 +12,11 @@
 #include "ncpost/compensation/nonlinear_block.hpp"
 #include "ncpost/postproc/unreachable.hpp"
 #include "ncpost/postproc/cycle_words.hpp"
+#include "ncpost/postproc/inverse_time.hpp"
 #include "ncpost/postproc/tilted_plane.hpp"
 #include "ncpost/postproc/verify_arc.hpp"
 #include "post_cycle.hpp"
+#include "read_back.hpp"
 #include "record_blocks.hpp"
 
 namespace ncpost {
@@ -38,6 +40,10 @@ class Poster {
         words_(solver.words()) {
     previous_.q = words_.home();  // the program starts from home, sized for the model's axes
     last_executed_ = words_.home();
+    if (options_.verify) {  // --verify reads every motion block back as written (read_back.hpp)
+      read_back_.emplace(writer_.dialect(), writer_.letters());
+      writer_.keep_last_line(true);
+    }
   }
 
   PostSummary run(cl::Reader& reader) {
@@ -296,7 +302,10 @@ class Poster {
   /// length (or RTCP with the length) of the new tool (the dialect's words).
   void on(const cl::ToolChange& t) {
     const Dialect& d = writer_.dialect();
+    if (t.length_mm) check_tool_length(t);
     close_plane();
+    last_rapid_.reset();
+    last_was_feed_ = false;
     std::vector<std::string> blocks;
     auto add = [&](const std::vector<std::string>& list) {
       for (const auto& b : list) blocks.push_back(with_tool(b, tool_, length_register()));
@@ -309,6 +318,33 @@ class Poster {
     else if (options_.tool_length_on_change) add(d.tool_length_on);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
+    if (t.length_mm)
+      writer_.comment(fmt::format("T{} length {:.4f} mm from the CL data: {}", t.number, *t.length_mm,
+                                  length_in_kinematics() ? "the axes are solved for it"
+                                                         : "the control's length register applies it"));
+  }
+
+  /// True when the axis positions the post writes depend on the tool length: a rotary axis on the
+  /// tool side (a head) and no RTCP (with RTCP the control places the tip with its own length).
+  bool length_in_kinematics() const {
+    if (options_.rtcp || !words_.serial) return false;
+    return std::any_of(machine_.axes.begin(), machine_.axes.end(),
+                       [](const Axis& a) { return a.is_rotary() && a.side == Side::tool; });
+  }
+
+  /// LOADTL/n,LENGTH,l: on a machine whose axis positions depend on the tool length the post solves
+  /// for one length (--tool-length); a tool of another length would cut off by the difference.
+  void check_tool_length(const cl::ToolChange& t) const {
+    if (!length_in_kinematics() || !options_.tool_length_mm) return;
+    if (std::abs(*t.length_mm - *options_.tool_length_mm) <= 5e-4) return;
+    throw InputError(SourcePosition{input_, t.where.line, t.where.column},
+                     fmt::format("LOADTL: tool {} is {:.4f} mm long (LENGTH), but the axes of {} are solved for a tool "
+                                 "length of {:.4f} mm (--tool-length): on this machine the axis positions depend on the "
+                                 "tool length (rotary axes in the head), and the tool would cut {:.4f} mm off the path. "
+                                 "Post with --tool-length {:.4f} (one run per tool length), or with --rtcp (the "
+                                 "control applies each tool's length)",
+                                 t.number, *t.length_mm, machine_.name, *options_.tool_length_mm,
+                                 std::abs(*t.length_mm - *options_.tool_length_mm), *t.length_mm));
   }
 
   /// The length register in force: the program's (G43 H), else the tool's own.
@@ -490,6 +526,15 @@ class Poster {
       const auto u = static_cast<std::size_t>(i);
       m.values[u] = words_.angle[u] ? rad_to_deg(to.q[i]) : to.q[i];
     }
+    // the control executes the rounded values (in a tilted plane: through the plane's words)
+    AxisPosition executed = to.q;
+    if (plane_) {
+      executed = plane_executed(Vec3d(m.values[0], m.values[1], m.values[2]));
+    } else {
+      for (int i = 0; i < words_.count; ++i)
+        executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
+                                                                 : writer_.rounded(i, to.q[i]);
+    }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
     const double rotary_travel_deg =
         words_.rotary_count > 0 ? rad_to_deg(max_abs_step(to.q.rotary_rad, from.q.rotary_rad)) : 0.0;
@@ -505,49 +550,236 @@ class Poster {
           "keeps the feed)",
           input_, line, writer_.dialect().name, writer_.dialect().file));
     if (inverse) {
-      // time of the block from the tool-tip path length; a pure reorientation runs its rotary
-      // travel at the feed read as deg/min
-      const double length_mm = (to.cl.tip_mm - from.cl.tip_mm).norm();
-      const double minutes = std::max(length_mm, rotary_travel_deg) / feed;
+      // the block's time by the rule of inverse_time.hpp: the executed tip path over the feed
+      const bool tip_moves = (to.cl.tip_mm - from.cl.tip_mm).norm() > kStillTipMm;
+      const double path_mm = tip_moves && !rapid ? executed_tip_path_mm(last_executed_, executed) : 0.0;
+      const double minutes = inverse_time_minutes(path_mm, tip_moves, rotary_travel_deg, feed);
       m.feed_mode = NcMotion::FeedMode::inverse_time;
       m.feed = minutes > 0.0 ? 1.0 / minutes : 99999.0;
     } else {
       m.feed = feed;
     }
-    // the control executes the rounded values (in a tilted plane: through the plane's words)
-    AxisPosition executed = to.q;
-    if (plane_) {
-      executed = plane_executed(Vec3d(m.values[0], m.values[1], m.values[2]));
-    } else {
-      for (int i = 0; i < words_.count; ++i)
-        executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
-                                                                 : writer_.rounded(i, to.q[i]);
-    }
     bool split = false;
+    std::optional<detail::WrittenRapid> first_block, block;  // read back (--verify)
+    WrittenState in_force = read_back_ ? writer_.in_force() : WrittenState{};
     if (rapid && options_.order_rapids && last_values_) {
-      // retract first when going up, descend last when going down
-      NcMotion first = m;
-      if (m.values[2] > (*last_values_)[2]) {
-        first.values = *last_values_;
-        first.values[2] = m.values[2];
-      } else {
-        first.values[2] = (*last_values_)[2];
+      split = write_retract_or_approach(from, to, m);
+      if (split && read_back_) {
+        first_block = read_written(in_force, from.cl, to.cl, line);
+        in_force = writer_.in_force();
       }
-      split = writer_.motion(first);  // nothing is written if no word changes
     }
     last_values_ = m.values;
     const bool written = writer_.motion(m);
     if (written && split) ++summary_.rapid_splits;
     if (!written && !split) return;  // the control is already there
     // (a split rapid that keeps Z is written whole by its first block: the machine is at `to` all the same)
-    if (written && options_.verify && have_position_ && !rapid && !options_.rtcp) {
-      const double contour_mm = verify_block(solver_, data_, from.cl, last_executed_, to.cl, executed, line, summary_.verify);
-      if (options_.on_verified) options_.on_verified(line, contour_mm);
-    }
+    if (written && read_back_) block = read_written(in_force, from.cl, to.cl, line);
+    if (read_back_) check_written(from, to, line, rapid, m, first_block, block);
     if (written && options_.on_block && have_position_)
       options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
     solver_.advance(executed, data_);
     last_executed_ = executed;
+  }
+
+  // ---- --verify: the program as written, read back (read_back.hpp) -------------------------
+  /// The block just written, read back from the words in force before it (`in_force`).
+  detail::WrittenRapid read_written(const WrittenState& in_force, const ClPoint& from, const ClPoint& to, int line) {
+    detail::WrittenRapid b;
+    b.from = in_force;
+    b.text = writer_.last_line();
+    b.program_line = writer_.lines_written();
+    b.cl_line = line;
+    b.cl_from_mm = from.tip_mm;
+    b.cl_to_mm = to.tip_mm;
+    read_back_->start_from(in_force);
+    try {
+      b.to = read_back_->read(b.text);
+    } catch (const std::runtime_error& e) {
+      detail::add_defect(summary_.verify, b.program_line, line, e.what());
+      b.to = writer_.in_force();
+    }
+    return b;
+  }
+
+  /// The commands (mm, rad) the control reaches at the words `v` (machine axes or a tilted plane).
+  AxisPosition commands_of(const PerAxis<double>& v) const {
+    if (plane_) return plane_executed(Vec3d(v[0], v[1], v[2]));
+    AxisPosition q = words_.home();
+    for (int i = 0; i < words_.count; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      q[i] = words_.angle[u] ? deg_to_rad(v[u]) : v[u];
+    }
+    return q;
+  }
+
+  /// The words of `a` and `b` interpolated at t (a word not in force stands at the other's value).
+  PerAxis<double> words_at(const WrittenState& a, const WrittenState& b, double t) const {
+    PerAxis<double> v{};
+    for (int i = 0; i < words_.count; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      const double va = a.values[u].value_or(b.values[u].value_or(0.0)), vb = b.values[u].value_or(va);
+      v[u] = va + t * (vb - va);
+    }
+    return v;
+  }
+
+  /// Where the tool is (W) at t of the move from the words `a` to `b` (detail::ExecuteWords).
+  ToolPoseT<double> execute_words(const WrittenState& a, const WrittenState& b, double t) const {
+    const PerAxis<double> v = words_at(a, b, t);
+    ToolPoseT<double> pose = solver_.execute(commands_of(v), data_);
+    if (options_.rtcp && !plane_) pose.tip_mm = Vec3d(v[0], v[1], v[2]);  // the control holds the tip on the words
+    return pose;
+  }
+
+  /// --verify of the blocks written for one CL motion: their words, feeds and (rapids) their lines.
+  void check_written(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid, const NcMotion& m,
+                     const std::optional<detail::WrittenRapid>& first, const std::optional<detail::WrittenRapid>& block) {
+    const detail::ExecuteWords execute = [this](const WrittenState& a, const WrittenState& b, double t) {
+      return execute_words(a, b, t);
+    };
+    const double tol = detail::kRapidLineToleranceMm;
+    for (const auto* b : {&first, &block}) {
+      if (!*b) continue;
+      const auto kind = (*b)->to.motion;
+      if (kind != (rapid ? WrittenState::Motion::rapid : WrittenState::Motion::linear))
+        detail::add_defect(summary_.verify, (*b)->program_line, line,
+                           fmt::format("'{}' is not written as a {}", (*b)->text, rapid ? "rapid" : "feed move"));
+    }
+    if (rapid) {
+      const std::optional<detail::WrittenRapid>& leaving = first ? first : block;
+      // (rapids cut to the tolerance, subdivide_rapids, follow the CL line within it: not checked here)
+      if (last_was_feed_ && leaving && !options_.subdivide_rapids &&
+          (to.cl.tip_mm - from.cl.tip_mm).dot(from.cl.axis.normalized()) > tol) {
+        const double off = detail::rapid_off_line_mm(*leaving, true, execute);
+        if (off > tol)
+          detail::add_defect(summary_.verify, leaving->program_line, line,
+                             fmt::format("the rapid out of the cut leaves the tool axis line (and the straight CL rapid) "
+                                         "by {:.4f} mm: the tool is dragged sideways", off));
+      }
+      last_rapid_ = block ? block : first;
+      last_was_feed_ = false;
+      return;
+    }
+    if (last_rapid_ && !options_.subdivide_rapids &&
+        (last_rapid_->cl_from_mm - from.cl.tip_mm).dot(from.cl.axis.normalized()) > tol) {
+      const double off = detail::rapid_off_line_mm(*last_rapid_, false, execute);
+      if (off > tol)
+        detail::add_defect(summary_.verify, last_rapid_->program_line, last_rapid_->cl_line,
+                           fmt::format("the rapid into the cut of CL line {} leaves the tool axis line (and the straight "
+                                       "CL rapid) by {:.4f} mm: the tool comes in sideways", line, off));
+    }
+    last_rapid_.reset();
+    last_was_feed_ = true;
+    if (!block) return;
+    check_feed_word(*block, from, to, line, m);
+    if (options_.rtcp || !have_position_) return;  // under RTCP the control does the kinematics
+    const double contour_mm = verify_block(solver_, data_, from.cl, commands_of(words_at(block->from, block->to, 0.0)),
+                                           to.cl, commands_of(words_at(block->from, block->to, 1.0)), line,
+                                           summary_.verify);
+    if (options_.on_verified) options_.on_verified(line, contour_mm);
+  }
+
+  /// The feed word of a written feed block against its rule: per minute the CL feed; inverse time
+  /// 1 / (executed tip path / CL feed) (inverse_time.hpp) on the words as written.
+  void check_feed_word(const detail::WrittenRapid& b, const SolvedPoint& from, const SolvedPoint& to, int line,
+                       const NcMotion& m) {
+    const MotionWords& w = writer_.dialect().motion;
+    const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
+    const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
+    for (int i = 0; i < words_.count; ++i)  // the first motion: it starts where the machine happens to be
+      if (inverse && !b.from.values[static_cast<std::size_t>(i)]) return;
+    if (b.to.inverse_time != inverse || !b.to.feed) {
+      detail::add_defect(summary_.verify, b.program_line, line,
+                         fmt::format("'{}' runs {}, the block needs {}", b.text,
+                                     !b.to.feed ? "with no feed in force" : b.to.inverse_time ? "in inverse time" : "per minute",
+                                     inverse ? "inverse time (G93: it turns a rotary axis)" : "a feed per minute"));
+      return;
+    }
+    double expected = feed;
+    double allowed = 0.5 * std::pow(10.0, -w.feed_decimals) + 1e-9;
+    if (inverse) {
+      const bool tip_moves = (to.cl.tip_mm - from.cl.tip_mm).norm() > kStillTipMm;
+      const double path_mm = tip_moves ? tip_path_length_mm([&](double t) {
+        return feed_solver().execute(commands_of(words_at(b.from, b.to, t)), data_).tip_mm;
+      }) : 0.0;
+      const double deg = words_.rotary_count > 0 ? rad_to_deg(max_abs_step(to.q.rotary_rad, from.q.rotary_rad)) : 0.0;
+      const double minutes = inverse_time_minutes(path_mm, tip_moves, deg, feed);
+      expected = minutes > 0.0 ? 1.0 / minutes : 99999.0;
+      allowed = 0.5 * std::pow(10.0, -w.inverse_time_decimals) + 1e-4 * expected;
+    }
+    if (std::abs(*b.to.feed - expected) > allowed)
+      detail::add_defect(summary_.verify, b.program_line, line,
+                         fmt::format("the feed word of '{}' is {}; by its rule it is {:.4f} ({})", b.text, *b.to.feed,
+                                     expected, inverse ? "1 / (tip path / CL feed)" : "the CL feed, mm/min"));
+  }
+
+  /// The words of a written arc block: its direction word and its feed (per minute, the CL feed).
+  void check_arc_words(const detail::WrittenRapid& b, const NcArc& arc) {
+    using Motion = WrittenState::Motion;
+    const Motion meant = arc.clockwise ? Motion::clockwise : Motion::counter_clockwise;
+    if (b.to.motion != meant)
+      detail::add_defect(summary_.verify, b.program_line, b.cl_line,
+                         fmt::format("'{}' turns the arc {}: the CL circle runs {} in the program's plane", b.text,
+                                     b.to.motion == Motion::clockwise ? "clockwise" : b.to.motion == Motion::counter_clockwise
+                                                                                           ? "counter-clockwise"
+                                                                                           : "not as an arc",
+                                     arc.clockwise ? "clockwise" : "counter-clockwise"));
+    const double allowed = 0.5 * std::pow(10.0, -writer_.dialect().motion.feed_decimals) + 1e-9;
+    if (b.to.inverse_time || !b.to.feed || std::abs(*b.to.feed - arc.feed_mm_min) > allowed)
+      detail::add_defect(summary_.verify, b.program_line, b.cl_line,
+                         fmt::format("the feed of '{}' is not the CL feed {:.1f} mm/min per minute", b.text, arc.feed_mm_min));
+  }
+
+  /// The model the program's times are computed on: the post's (under --verify-on, not the
+  /// verifying machine's, so that the program does not depend on it).
+  const KinematicModel& feed_solver() const { return options_.feed_solver ? *options_.feed_solver : solver_; }
+
+  /// The first block of a rapid in two (PostOptions::order_rapids): going up, the tool leaves
+  /// along its axis at `from` until it is level with the target; going down, it travels to the
+  /// point on the axis line of `to` level with where it is, then (the caller's block) descends
+  /// along that line. Level: Z of the program frame. With the tool along +Z of the program frame
+  /// this is Z first up / Z last down. Not split (one straight block, as the CL data give it) where
+  /// the tool axis is within 60 deg of horizontal in the program frame or the point on the line
+  /// is beyond a linear axis's limits. True when the block was written.
+  bool write_retract_or_approach(const SolvedPoint& from, const SolvedPoint& to, const NcMotion& m) {
+    const PerAxis<double>& last = *last_values_;
+    const bool up = m.values[2] > last[2];
+    const SolvedPoint& still = up ? from : to;
+    const Vec3d d = tool_axis_in_program(still.cl, still.q.rotary_rad);
+    if (!(d.z() >= 0.5)) return false;
+    const Vec3d at_still = up ? Vec3d(last[0], last[1], last[2]) : Vec3d(m.values[0], m.values[1], m.values[2]);
+    const double level = up ? m.values[2] : last[2];
+    const Vec3d on_line = at_still + ((level - at_still.z()) / d.z()) * d;
+    NcMotion first = m;
+    if (up) first.values = last;  // the rotary axes turn in the second block
+    for (int i = 0; i < 3; ++i) {
+      first.values[static_cast<std::size_t>(i)] = on_line[i];
+      const Axis& axis = machine_.axes[static_cast<std::size_t>(i)];
+      if (!plane_ && !options_.rtcp && axis.limits && !axis.limits->contains(on_line[i])) return false;
+    }
+    return writer_.motion(first);  // nothing is written if no word changes
+  }
+
+  /// The direction, in the program frame's X Y Z words, in which the tool tip moves along the tool
+  /// axis of `cl` (unit length in W) with the rotary axes at `rotary_rad`: +Z in a tilted plane,
+  /// the CL axis under RTCP (the words are the tip in W), else the linear axes' direction.
+  Vec3d tool_axis_in_program(const ClPoint& cl, const RotaryAngles& rotary_rad) const {
+    if (plane_) return Vec3d::UnitZ();
+    if (options_.rtcp) return cl.axis.normalized();
+    const Vec3d tip = solver_.with_rotary(cl, rotary_rad, data_).linear_mm;
+    const Vec3d above = solver_.with_rotary(ClPoint{cl.tip_mm + cl.axis.normalized(), cl.axis}, rotary_rad, data_).linear_mm;
+    return above - tip;
+  }
+
+  /// The length (mm) of the tool tip's path in W while the axes run linearly from `q0` to `q1`.
+  double executed_tip_path_mm(const AxisPosition& q0, const AxisPosition& q1) const {
+    return tip_path_length_mm([&](double t) {
+      AxisPosition q = q0;
+      q.linear_mm = q0.linear_mm + t * (q1.linear_mm - q0.linear_mm);
+      q.rotary_rad = q0.rotary_rad + t * (q1.rotary_rad - q0.rotary_rad);
+      return feed_solver().execute(q, data_).tip_mm;
+    });
   }
 
   void move_along_arc(const cl::Circle& c, const cl::Motion& end, bool rapid) {
@@ -616,7 +848,15 @@ class Poster {
       arc.centre_offset_mm[static_cast<std::size_t>(k)] = xc[k] - xs[k];
     }
     arc.feed_mm_min = records_.feed_mm_min(options_.default_feed_mm_min);
+    const WrittenState arc_in_force = read_back_ ? writer_.in_force() : WrittenState{};
     writer_.arc(arc);
+    std::optional<detail::WrittenRapid> written;  // read back (--verify)
+    if (read_back_) {
+      written = read_written(arc_in_force, previous_.cl, end.point, end.where.line);
+      check_arc_words(*written, arc);
+      last_rapid_.reset();
+      last_was_feed_ = true;
+    }
     const std::optional<PerAxis<double>> start_words = last_values_;  // as the control has them
     if (last_values_)
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
@@ -625,7 +865,7 @@ class Poster {
     if (plane_) executed = plane_executed(xe);
     else
       for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
-    if (options_.verify && !options_.rtcp) verify_native_arc(arc, start_words, normal, angle, c, end, executed);
+    if (written && !options_.rtcp) verify_native_arc(*written, arc, start_words, normal, angle, c, end, executed);
     solver_.advance(executed, data_);
     last_executed_ = executed;
     previous_ = next;
@@ -636,18 +876,22 @@ class Poster {
   /// `post --verify` of a native arc: the circle the control interpolates from the words as written
   /// (the start where the axes stand, the centre offset and the end rounded), executed on the
   /// machine, against the CL circle (verify_arc.hpp). Before previous_ and last_executed_ move on.
-  void verify_native_arc(const NcArc& arc, const std::optional<PerAxis<double>>& start_words,
-                         const Vec3d& normal, double angle, const cl::Circle& c, const cl::Motion& end,
-                         const AxisPosition& executed_end) {
+  void verify_native_arc(const detail::WrittenRapid& written, const NcArc& arc,
+                         const std::optional<PerAxis<double>>& start_words, const Vec3d& normal, double angle,
+                         const cl::Circle& c, const cl::Motion& end, const AxisPosition& executed_end) {
     FrameArc run;
     run.start_mm = plane_ && start_words ? Vec3d((*start_words)[0], (*start_words)[1], (*start_words)[2])
                                          : Vec3d(last_executed_.linear_mm);
+    // the circle of the words as written: the centre offset and the end read back, and the way
+    // round the written G2/G3 gives (the other way round: about -normal, the rest of the turn)
+    const PerAxis<double> end_words = words_at(written.from, written.to, 1.0);
     for (int k = 0; k < 3; ++k) {
-      run.centre_mm[k] = run.start_mm[k] + writer_.rounded(k, arc.centre_offset_mm[static_cast<std::size_t>(k)]);
-      run.end_mm[k] = writer_.rounded(k, arc.end_mm[static_cast<std::size_t>(k)]);
+      run.centre_mm[k] = run.start_mm[k] + written.to.centre_offset_mm[static_cast<std::size_t>(k)];
+      run.end_mm[k] = end_words[static_cast<std::size_t>(k)];
     }
-    run.normal = normal;
-    run.sweep_rad = angle;
+    const bool as_meant = (written.to.motion == WrittenState::Motion::clockwise) == arc.clockwise;
+    run.normal = as_meant ? normal : Vec3d(-normal);
+    run.sweep_rad = as_meant ? angle : 2.0 * kPi - angle;
     const RotaryAngles rotary = last_executed_.rotary_rad;
     const std::function<AxisPosition(const Vec3d&)> commands_at = [&](const Vec3d& x) {
       if (plane_) return plane_executed(x);
@@ -738,6 +982,8 @@ class Poster {
       move_to(p.retract, line, true);
     }
     writer_.cycle(*nc);
+    last_rapid_.reset();  // the cycle leaves and enters its holes along Z itself
+    last_was_feed_ = false;
     ++summary_.cycles_out;
     if (options_.verify && !options_.rtcp) {
       // the feed of the cycle block re-executed: R plane to the bottom (and back for taps and bores)
@@ -773,6 +1019,15 @@ class Poster {
       writer_.block(words->off);
       return;
     }
+    if (words->register_letter.empty() && c.offset_register && *c.offset_register != tool_)
+      // (Sinumerik: G41/G42 take the radius of the edge the tool call selected, D1)
+      throw InputError(at, fmt::format("CUTCOM/{}: radius register {} cannot be written in the {} dialect (G41/G42 "
+                                       "take the radius of the active tool's edge: [compensation] register_letter is "
+                                       "empty in {}); give the tool's own radius (CUTCOM/{} without a register), or "
+                                       "post with a dialect that writes one (fanuc, haas, linuxcnc)",
+                                       c.text, *c.offset_register, writer_.dialect().name, writer_.dialect().file,
+                                       c.side == cl::CutterComp::Side::left ? "LEFT" : "RIGHT"),
+                       "CUTCOM/" + c.text);
     const int reg = c.offset_register.value_or(tool_);
     writer_.block((c.side == cl::CutterComp::Side::left ? words->left : words->right) +
                   (words->register_letter.empty() ? std::string() : " " + words->register_letter + std::to_string(reg)));
@@ -817,6 +1072,9 @@ class Poster {
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
   std::optional<PerAxis<double>> last_values_;  ///< words of the last motion block (mm, deg)
+  std::optional<WrittenBlockReader> read_back_;  ///< --verify: the blocks as written, read back
+  std::optional<detail::WrittenRapid> last_rapid_;  ///< the last rapid written (an approach if a feed follows)
+  bool last_was_feed_ = false;                     ///< the last motion written was a feed move
   bool have_position_ = false;
   bool rtcp_on_ = false;
   int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)

@@ -99,6 +99,7 @@ PostOptions post_options(const PostRequest& r, const std::optional<double>& tole
                          const PostSolver& p, PostAccount& acc) {
   PostOptions options;
   options.rtcp = r.rtcp;
+  options.tool_length_mm = r.setup.tool_length_mm;
   options.retract_mm = r.retract_mm;
   options.branch_choice = r.branch_choice;
   options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
@@ -132,15 +133,24 @@ PostSummary write_program(cl::Reader& reader, std::ostream& program, const PostR
   NcWriter writer(out, r.dialect, axis_letters(r.machine));
   std::optional<ExecutedOn> verify_solver;
   if (executing) verify_solver.emplace(*p.solver, *executing, r.setup);
+  PostOptions with_feeds = options;
+  with_feeds.feed_solver = p.solver.get();  // the program's times on its own model, never the verifying one
   PostSummary summary;
   try {
     summary = post_program(reader, r.input_name,
                            verify_solver ? static_cast<const KinematicModel&>(*verify_solver) : *p.solver, writer,
-                           options, data);
+                           with_feeds, data);
   } catch (const Infeasible& e) {  // what in the input most likely explains it (e.g. NX MSYS)
     const std::string hint = reader.failure_hint();
     if (hint.empty()) throw;
     throw Infeasible(std::string(e.what()) + "\n  " + hint);
+  }
+  if (!summary.verify.defects.empty()) {
+    std::string list;
+    for (const std::string& d : summary.verify.defects) list += "\n  " + d;
+    throw VerifyFailed(fmt::format("{}: --verify: the written program does not do what the input means ({} defect{}); "
+                                   "no program is written:{}", r.input_name, summary.verify.defects.size(),
+                                   summary.verify.defects.size() == 1 ? "" : "s", list));
   }
   out.commit();  // flushes `program`
   return summary;

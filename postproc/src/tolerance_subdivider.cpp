@@ -31,17 +31,27 @@ std::string rounded_in(std::string words, double value) {
   return words;
 }
 
-/// The blocks that turn the free rotary angle at the block's start, where the tool axis lies along
-/// the inner rotary axis (so the angle is undetermined and the post kept the previous one), to the
-/// angle the block's exact solution leaves with — the tool tip standing still on the start point,
-/// the tool axis unchanged (it lies along the turning axis), each turn block within
-/// `tolerance_mm` of that point on the machine of `errors`. Empty when the start is not singular
-/// or the swing cannot be done in place (it would tilt the tool axis).
-template <class Errors>
-std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const KinematicModel& solver,
-                                                SolverData& data, const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
-                                                double tolerance_mm) {
-  if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
+/// The swing of a block that starts exactly at the singular pose (the tool axis along the inner
+/// rotary axis, the free angle kept from before): the CL axis leaves the pole on a great circle
+/// (slerp), whose azimuth is the end's all along, so the free axis turns to the end solution's
+/// angle before the block, however small the tilt. nullopt: not exactly singular, or no turn needed.
+std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
+  for (const RotarySolution& r : rotary_solutions(machine, from.cl.axis)) {
+    if (r.free_axis < 0) continue;
+    RotaryAngles d = RotaryAngles::Zero(2);
+    d[r.free_axis] = to.q.rotary_rad[r.free_axis] - from.q.rotary_rad[r.free_axis];
+    if (std::abs(d[r.free_axis]) <= kSingularJumpRad) return std::nullopt;
+    return d;
+  }
+  return std::nullopt;
+}
+
+/// The swing of a block that starts within a few µrad of the singular pose: the exact solutions
+/// just after the start swing the free angle within the first millionths of the block; the
+/// farthest probe that still swings far faster than the block's pace gives it (only the swinging
+/// axis turns). nullopt: no such swing.
+std::optional<RotaryAngles> near_singular_swing(const Machine& machine, const KinematicModel& solver, SolverData& data,
+                                                const SolvedPoint& from, const SolvedPoint& to) {
   const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT[0]);
   // cheap screen on the nominal closed form (no linear axes): does any rotary solution just after
   // the start lie near the start's angles?
@@ -51,10 +61,8 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
       const double d = r.rotary_rad[k] - from.q.rotary_rad[k];
       jump = std::max(jump, std::abs(d - 2.0 * kPi * std::round(d / (2.0 * kPi))));
     }
-    if (r.free_axis < 0 && jump <= 0.5 * kSingularJumpRad) return {};
+    if (r.free_axis < 0 && jump <= 0.5 * kSingularJumpRad) return std::nullopt;
   }
-  // the free angle as the exact solution leaves the start: the farthest probe that still swings
-  // far faster than the block's pace (near a singular pose the swing is spread over the first probes)
   const double pace_rad = max_abs_step(to.q.rotary_rad, from.q.rotary_rad);
   std::optional<RotaryAngles> swing;
   for (double t : kSingularProbeT) {
@@ -64,20 +72,30 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
     if (d.cwiseAbs().maxCoeff() <= std::max(kSingularJumpRad, kSingularPaceFactor * t * pace_rad)) break;
     swing = d;
   }
-  if (!swing) return {};
+  if (!swing) return std::nullopt;
   // only the swinging (free) axis turns; the other keeps its angle, so the tool axis stays put
-  int free = 0;
-  if (std::abs((*swing)[1]) > std::abs((*swing)[0])) free = 1;
+  const int free = std::abs((*swing)[1]) > std::abs((*swing)[0]) ? 1 : 0;
   (*swing)[1 - free] = 0.0;
+  return swing;
+}
+
+/// The blocks that turn the rotary axes by `swing` from `from` with the tool tip standing still
+/// on the start point and the tool axis unchanged (it lies along the turning axis), each turn
+/// block within `tolerance_mm` of that point on the machine of `errors`. Empty when the turn
+/// cannot be done in place (it would tilt the tool axis).
+template <class Errors>
+std::vector<SolvedPoint> turn_in_place(const Machine& machine, const Setup& setup, const KinematicModel& solver,
+                                       SolverData& data, const SolvedPoint& from, const RotaryAngles& swing,
+                                       const Errors& errors, double tolerance_mm) {
   auto node = [&](double s) {
-    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * *swing, data)};
+    return SolvedPoint{from.cl, solver.with_rotary(from.cl, from.q.rotary_rad + s * swing, data)};
   };
   auto tilt_ok = [&](const SolvedPoint& p) {
     return nonlinear::angle_between(solver.execute(p.q, data).axis, from.cl.axis) <= kTurnAxisDriftRad;
   };
   // the linear axes follow the tip round the turning axis on a circle of radius r: start from the
   // chord count for r, then double until every turn block is within
-  const double swing_rad = swing->cwiseAbs().maxCoeff();
+  const double swing_rad = swing.cwiseAbs().maxCoeff();
   const double ds = std::min(1.0, 0.01 / swing_rad);
   const double radius_mm = (node(ds).q.linear_mm - from.q.linear_mm).norm() / (ds * swing_rad);
   const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance_mm / std::max(radius_mm, tolerance_mm)));
@@ -98,6 +116,21 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
     if (within) return turn;
   }
   return {};
+}
+
+/// The blocks that turn the free rotary angle at the block's start, where the tool axis lies
+/// (exactly, or within a few µrad) along the inner rotary axis — so the angle is undetermined and
+/// the post kept the previous one — to the angle the block's solution leaves with, in place
+/// (turn_in_place). Empty when the start is not singular or the swing cannot be done in place.
+template <class Errors>
+std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const KinematicModel& solver,
+                                                SolverData& data, const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
+                                                double tolerance_mm) {
+  if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
+  std::optional<RotaryAngles> swing = exactly_singular_swing(machine, from, to);
+  if (!swing) swing = near_singular_swing(machine, solver, data, from, to);
+  if (!swing) return {};
+  return turn_in_place(machine, setup, solver, data, from, *swing, errors, tolerance_mm);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 // reach (refused, exit 2). Expected values worked by hand: R_Y(B)·u = +Z on the table.
 #include <catch2/catch.hpp>
 
+#include "nc_executor.hpp"
+
 #include "cli_run.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/kinematics/command_words.hpp"
@@ -83,7 +85,20 @@ TEST_CASE("ncpost post on a four-axis HMC writes X Y Z B, re-executes within the
   // tilted 30 deg turns to (40 cos30 - 10 sin30, -10, 40 sin30 + 10 cos30) = (29.6410, -10, 28.6603)
   CHECK_THAT(nc, Catch::Contains("G0 X0.0000 Y0.0000 Z50.0000 B0.0000\nZ80.0000\nY10.0000 B-90.0000\n"
                                  "G94 G1 Z50.0000 F500.0\nY-10.0000\nG93 X3.4550 Z49.0522 B-85.0000"));
-  CHECK_THAT(nc, Catch::Contains("X29.6410 Z28.6603 B-30.0000 F100.0000\nM5\n"));
+  CHECK_THAT(nc, Catch::Contains("X29.6410 Z28.6603 B-30.0000 F"));
+  // every G93 block by the rule of inverse time: F = CL feed / executed tip path (the tests' own
+  // executor: nc_executor.hpp), 1/min; the path is about 10 sqrt(2) mm in 12 blocks of 5 deg
+  const test::Executor ex(test::source("machines/hmc-b-table.toml"), test::ExecJob{}, nc);
+  int g93 = 0;
+  double path_mm = 0.0;
+  for (const test::ExecBlock& b : ex.blocks) {
+    if (b.kind == test::ExecBlock::Kind::rapid || !b.inverse_time) continue;
+    ++g93;
+    path_mm += ex.tip_path_mm(b);
+    CHECK(b.feed * ex.tip_path_mm(b) == Approx(500.0).epsilon(2e-4));
+  }
+  CHECK(g93 == 12);
+  CHECK(path_mm == Approx(10.0 * std::sqrt(2.0)).epsilon(1e-3));
   for (const char* other : {" A", " C"}) CHECK(nc.find(other) == std::string::npos);  // no other rotary word
   const std::string log = test::read_text_file(dir + "/log.txt");
   CHECK_THAT(log, Catch::Contains("after  (the written program re-executed"));

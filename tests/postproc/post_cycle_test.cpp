@@ -148,7 +148,11 @@ TEST_CASE("CUTCOM: G41/G42 D<tool> and G40; Heidenhain and simultaneous five-axi
   const std::string p = post_apt(cl, "fanuc");
   CHECK_THAT(p, Catch::Contains("G41 D4\nX10.0000\nY10.0000\nG40\n"));
   CHECK_THAT(p, Catch::Contains("G40\nG42 D7\nX0.0000"));
-  CHECK_THAT(post_apt(cl, "sinumerik"), Catch::Contains("G41\n"));
+  // Sinumerik: G41/G42 take the radius of the edge the tool call selected; the register 7 of
+  // CUTCOM/RIGHT,7 cannot be written, so it is refused (it was dropped: a bare G42, issue 27)
+  CHECK_THROWS_WITH(post_apt(cl, "sinumerik"), Catch::Contains("t.apt:9:") && Catch::Contains("radius register 7"));
+  const std::string own = "UNITS/MM\nLOADTL/4\nFEDRAT/MMPM,500\nGOTO/0,0,0\nCUTCOM/LEFT\nGOTO/10,0,0\nCUTCOM/OFF\nFINI\n";
+  CHECK_THAT(post_apt(own, "sinumerik"), Catch::Contains("G41\n"));
   CHECK_THROWS_WITH(post_apt(cl, "heidenhain"), Catch::Contains("t.apt:5:") && Catch::Contains("CUTCOM"));
   const std::string five = "UNITS/MM\nLOADTL/4\nMULTAX/ON\nFEDRAT/MMPM,500\nGOTO/0,0,0,0,0,1\nCUTCOM/LEFT\n"
                            "GOTO/10,0,0,0.1,0,0.99498744\nFINI\n";

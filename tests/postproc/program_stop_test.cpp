@@ -8,6 +8,8 @@
 // (Heidenhain's M0 stops both). Expected programs reviewed by hand.
 #include <catch2/catch.hpp>
 
+#include "nc_executor.hpp"
+
 #include <sstream>
 
 #include "shipped_machines.hpp"
@@ -369,7 +371,16 @@ TEST_CASE("a stop inside a run of five-axis feed motions: branch planning and th
   const std::string planned = post_text(text, r);
   r.branch_choice = PostOptions::BranchChoice::greedy;
   CHECK(planned == post_text(text, r));
-  CHECK_THAT(planned, Catch::Contains("F239.9931\nM1\nS10000 M3\nM8\nX0.0000 Y-7.3104 Z119.6652 A5.2430 C75.0000 F240.0133\n"));
+  CHECK_THAT(planned, Catch::Contains("\nM1\nS10000 M3\nM8\nX0.0000 Y-7.3104 Z119.6652 A5.2430 C75.0000 F"));
+  // the feeds around the stop by the rule of inverse time (the tests' executor): F = 1200 / tip path
+  const test::Executor ex(test::source("machines/ac-trunnion.toml"), test::ExecJob{Vec3d(0, 0, 80), 0.0}, planned);
+  int g93 = 0;
+  for (const test::ExecBlock& b : ex.blocks) {
+    if (b.kind == test::ExecBlock::Kind::rapid || !b.inverse_time || ex.tip_path_mm(b) < 1e-3) continue;
+    ++g93;
+    CHECK(b.feed * ex.tip_path_mm(b) == Approx(1200.0).epsilon(2e-4));
+  }
+  CHECK(g93 > 100);
   // TRR-XY (X Y U V W), re-executed with --verify
   REQUIRE(test::run_ncpost("post --machine '" + test::source("machines/trr-xy.toml") +
                                "' --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o '" + dir + "/trr.nc' '" + cl + "'",

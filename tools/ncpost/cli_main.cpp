@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/temp_files.hpp"
+#include "ncpost/postproc/verify.hpp"
 #include "ncpost/version.hpp"
 #include "option_spelling.hpp"
 #include "terminal_text.hpp"
@@ -73,6 +74,9 @@ int ncpost::cli::run(int argc, char** argv) {
   } catch (const ncpost::Infeasible& e) {
     fmt::print(stderr, "ncpost: infeasible: {}\n", terminal_text(e.what()));
     return 3;
+  } catch (const ncpost::VerifyFailed& e) {
+    fmt::print(stderr, "ncpost: verify failed: {}\n", terminal_text(e.what()));
+    return 5;
   } catch (const std::bad_alloc&) {
     print_error("out of memory (internal fault, exit 4: the input may be too large for this machine)");
     return 4;

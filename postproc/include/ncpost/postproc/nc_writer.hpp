@@ -15,6 +15,7 @@
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/postproc/atomic_file.hpp"
 #include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/written_block.hpp"
 
 namespace ncpost {
 
@@ -105,6 +106,15 @@ class NcWriter {
   /// Flushes buffered output into the file (called on end_program and when the buffer is large).
   void flush();
 
+  /// Keep the text of each block as written (last_line()): `post --verify` reads it back.
+  void keep_last_line(bool on) { keep_last_line_ = on; }
+  /// The last block written, as it stands in the program (no line end), when keep_last_line().
+  const std::string& last_line() const { return last_line_; }
+  /// The number of lines written so far (the last block's line in the program file).
+  std::size_t lines_written() const { return lines_; }
+  /// The modal words in force as the writer holds them (what the next block need not repeat).
+  WrittenState in_force() const;
+
   /// The value as the control will read it (rounded to the dialect's decimals).
   double rounded(int axis, double value) const;
   std::size_t blocks_written() const { return blocks_; }
@@ -144,6 +154,9 @@ class NcWriter {
   std::optional<NcCycle> active_cycle_;
   double cycle_return_z_ = 0.0;  ///< the level the active cycle returns to (rounded)
   bool tilted_ = false;          ///< in a tilted work plane: X Y Z words only
+  bool keep_last_line_ = false;
+  std::string last_line_;
+  std::size_t lines_ = 0;
 };
 
 }  // namespace ncpost

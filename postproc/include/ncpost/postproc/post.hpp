@@ -79,9 +79,12 @@ struct PostOptions {
   /// Write CYCLE/DRILL and CYCLE/DEEP holes as G81/G83 where the hole runs along −Z of the program
   /// frame and the dialect has them (fanuc, haas, linuxcnc); otherwise explicit moves.
   bool native_cycles = true;
-  /// Rapid moves in two blocks: up first (Z alone) when the target is higher, down last (Z alone)
-  /// when it is lower, everything else in the other block — the tool never descends while it
-  /// travels or turns. Z is that of the program frame (M, or W under RTCP).
+  /// Rapid moves in two blocks: when the target is higher, first out along the tool axis until
+  /// level with it (Z alone for a tool along Z), then the rest; when it is lower, first to the
+  /// point on the target's tool-axis line level with the tool, then down that line — the tool
+  /// never descends while it travels or turns, and leaves and enters a tilted hole along its axis.
+  /// Z is that of the program frame (M, W under RTCP, the plane's in a tilted plane). A tool axis
+  /// within 60 deg of horizontal there: one straight block (as the CL data give it).
   bool order_rapids = true;
   /// Cut rapid moves to the tolerance too (`subdivide`): machines whose control interpolates rapids
   /// in axis space far from the straight line (the TRR-XY sliders), where the rapid would not clear.
@@ -89,6 +92,9 @@ struct PostOptions {
   /// After a tool call, the dialect's tool-length block (G43 H..): off for machines whose tool length
   /// is part of the kinematics (the TRR-XY `tool_offset`), with no Z word to compensate.
   bool tool_length_on_change = true;
+  /// The tool length (mm) the solver places head pivots with (--tool-length): a LOADTL length
+  /// that differs from it is refused where the axis positions depend on it (a head without RTCP).
+  std::optional<double> tool_length_mm;
   /// Machines with reversal (`--model` with `reversal:` terms): before a feed block that reverses
   /// an axis, a block that moves only the commands through the play (the tool stands still), so the
   /// block itself runs without lag. On with `--tolerance` (the lag would otherwise bow the tip by
@@ -119,7 +125,12 @@ struct PostOptions {
   /// words, tilted_plane.hpp) with X Y Z in the plane's frame; simultaneous motions stay as they
   /// are. Machine-axis programs on the nominal machine only (not with `rtcp`).
   bool tilted_plane = false;
-  bool verify = false;                  ///< re-execute every block (VerifyReport in the summary)
+  /// Read every written motion block back and execute it (VerifyReport in the summary, defects
+  /// included: read_back.hpp).
+  bool verify = false;
+  /// The model the inverse-time (G93) feeds are computed on; null: the post's solver. Under
+  /// --verify-on the post's solver executes on the verifying machine: the program's feeds must not.
+  const KinematicModel* feed_solver = nullptr;
   /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
   std::function<void(int line, double contour_mm)> on_verified;
   /// Called for every written motion block that starts from a known position (rapids included;

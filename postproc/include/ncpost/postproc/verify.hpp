@@ -6,6 +6,9 @@
 // tip from the straight CL segment, mm, in W) and the orientation error (angle between the executed
 // tool axis and the normalised linearly interpolated CL axis, rad).
 #include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "ncpost/postproc/motion_solver.hpp"
 #include "ncpost/postproc/tilted_plane.hpp"
@@ -13,11 +16,21 @@
 namespace ncpost {
 
 struct VerifyReport {
+  /// What the written program does other than the input meant, each "program line N (CL line L):
+  /// what": a rapid that leaves its retract line, an arc the wrong way round, a feed word off its
+  /// rule, a motion word of the wrong kind. `post --verify` with any of these writes no program.
+  std::vector<std::string> defects;
   std::size_t blocks = 0;
   double max_contour_mm = 0.0;
   double max_orientation_rad = 0.0;
   double max_endpoint_mm = 0.0;  ///< error at block ends (rounding, model)
   int worst_line = 0;            ///< CL line of the block with the largest contour error
+};
+
+/// The written program does not do what the input meant (VerifyReport::defects): exit 5, no output.
+class VerifyFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// Counts one verified block of contour error `contour_mm` (CL line `line`) in the report.
