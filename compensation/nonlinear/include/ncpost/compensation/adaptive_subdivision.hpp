@@ -227,7 +227,10 @@ template <class Errors, class Solver> class Subdivider {
       if (k < cuts.size()) {
         tb = cuts[k];
         cb = cl_at(block_.start, block_.end, tb);
-        const IkOutcome o = keep_rotary_ ? IkOutcome{} : solver_(cb, qa);
+        // the solution nearest the block's own interpolation of its end points (their branch and
+        // turn: a node nearest qa alone may take another turn of a continuous axis than the end,
+        // and the last piece would swing a whole turn), within max_step_ of qa
+        const IkOutcome o = keep_rotary_ ? IkOutcome{} : solver_(cb, lerp(block_.from, block_.to, tb));
         if (o.ok() && max_abs_step(o.position->rotary_rad, qa.rotary_rad) <= max_step_) {
           qb = *o.position;
         } else {
