@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ncpost/compensation/export_axis_table.hpp"
+#include "ncpost/compensation/landing_check.hpp"
 
 namespace ncpost::comp {
 
@@ -35,6 +36,7 @@ struct LinuxcncCompTable {
   AxisExport axis;
   /// nominal, forward trim, reverse trim: mm (linear) or degrees (rotary)
   std::vector<std::array<double, 3>> rows;
+  LandingCheck landing;  ///< the rows applied as LinuxCNC applies them, against the model
 };
 
 /// LinuxCNC's limit on rows per joint (EMCMOT_COMP_SIZE).
@@ -49,7 +51,8 @@ std::vector<std::string> linuxcnc_comp_lines(const LinuxcncCompTable& table);
 /// The file: the rows, then `#` notes (type, sign convention, what is held and left out).
 std::string format_linuxcnc_comp(const LinuxcncCompTable& table, const MachineModel& model, const ExportSource& source);
 
-/// The notes every exported table shares: held terms, left-out terms, other axes (one line each).
+/// The notes every exported table shares: held terms, left-out terms, where the travel reaches
+/// beyond a table's nodes, other axes (one line each).
 std::vector<std::string> export_notes(const AxisExport& axis, const std::string& other_axes_hint);
 
 }  // namespace ncpost::comp
