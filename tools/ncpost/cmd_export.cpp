@@ -155,7 +155,7 @@ int export_serial(const ExportArgs& args) {
     const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
     write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
     print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
-      print_held_beyond(table.axis);
+    print_held_beyond(table.axis);
     fmt::print("exported {} points for axis {} ($AA_ENC_COMP, step {:.6g}) -> {}\n", table.values.size(), letter,
                table.step, args.output);
     print_landing(table.axis, table.landing);

@@ -93,7 +93,9 @@ std::string format_isg_lsec(const IsgLsecTable& t, const MachineModel& model, co
                    t.setpoints.size(), t.setpoints.size()));
   note(fmt::format("Sign: each value is the model's positioning error of {} at the setpoint (measured minus programmed", a.letter));
   note("  position, as in the documented example: -102 where the axis stopped 10.2 µm short); the control changes the");
-  note("  position setpoint by it, so that the axis lands on the programmed position. pos: moving positive; neg: moving");
+  note("  position setpoint by it, so that the axis lands on the programmed position. Each value is taken where the drive");
+  note("  must stand for the axis to land on the setpoint (the error at the setpoint to first order), so that the control's");
+  note("  setpoint minus value lands exactly. pos: moving positive; neg: moving");
   note(fmt::format("  negative. An axis that goes 0.010 {} too far at a point has pos = +100 there.", a.rotary ? "deg" : "mm"));
   if (a.reversal != 0.0)
     note(fmt::format("Reversal {:.6g} {} ({} counts) is in the neg column (bilateral LSEC): leave the separate backlash "

@@ -12,7 +12,9 @@
 // commanded position between nominals (the end rows' trims held beyond them; kept while the joint
 // stands), is added to the commanded position to give the motor command. So each trim here is the
 // correction t with (n + t) + e(n + t) = n, e the model's positioning error of the axis for that
-// direction (export_axis_table.hpp): about −e(n). Rows come first: LinuxCNC stops reading at the
+// direction (export_axis_table.hpp): about −e(n). The rows include, per direction, the commanded
+// position x + e(x) where the drive passes each node x of a table, where t has its kinks
+// (export_nodes.hpp), so that a table round-trips exactly. Rows come first: LinuxCNC stops reading at the
 // first line that is not three numbers, so the notes follow the rows (a comment on top would leave
 // the table empty without a message).
 // Units: mm for linear axes, degrees for rotary axes (LinuxCNC machine units with LINEAR_UNITS = mm).
