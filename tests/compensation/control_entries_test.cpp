@@ -85,7 +85,7 @@ TEST_CASE("control entries: EXX:p1 = 100 µm/m in the report as the linuxcnc, si
   SECTION("siemens: the value is the error itself") {
     const std::string html = report_of(m, p, ControlFormat::siemens);
     check_in_report(html, value_lines(format_siemens_lec(siemens_lec_table(model, 'X'), model, source)));
-    CHECK(html.find("$AA_ENC_COMP_MIN[0,X1]=-300.000000\n") != std::string::npos);
+    CHECK(html.find("$AA_ENC_COMP_MIN[0,X1]=-300.000000000\n") != std::string::npos);
   }
   SECTION("isg: pos and neg are the error in 0.1 µm") {
     const std::string html = report_of(m, p, ControlFormat::isg);

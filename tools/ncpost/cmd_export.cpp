@@ -70,6 +70,19 @@ void print_left_out(const std::vector<std::string>& left_out, const std::string&
   for (const std::string& s : left_out) fmt::print(stderr, "  {}\n", s);
 }
 
+/// Where the travel reaches beyond a table's nodes (end values held): never silent (issue 25 item 4).
+void print_held_beyond(const comp::AxisExport& axis) {
+  for (const std::string& s : axis.held_beyond)
+    fmt::print(stderr, "ncpost: note: beyond the measured travel: {} (also in the file)\n", s);
+}
+
+/// The file's own round trip (landing_check.hpp), in µm or µrad.
+void print_landing(const comp::AxisExport& axis, const comp::LandingCheck& check) {
+  const double to_micro = axis.rotary ? 1e6 : 1e3;
+  fmt::print("round trip: the axis lands within {:.4f} {} of the commanded position at {} positions (model alone: {:.3f})\n",
+             check.with_file * to_micro, axis.rotary ? "µrad" : "µm", check.positions, check.model_only * to_micro);
+}
+
 int export_serial(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
@@ -124,22 +137,28 @@ int export_serial(const ExportArgs& args) {
       const comp::LinuxcncCompTable table = comp::linuxcnc_comp_table(model, letter);
       write_file_atomically(args.output, comp::format_linuxcnc_comp(table, model, source));
       print_left_out(table.axis.left_out, fmt::format("a LinuxCNC compensation file of {}", letter));
+      print_held_beyond(table.axis);
       fmt::print("exported {} rows for axis {} (COMP_FILE_TYPE = 1) -> {}\n", table.rows.size(), letter, args.output);
+      print_landing(table.axis, table.landing);
       return 0;
     }
     if (args.format == "isg") {
       const comp::IsgLsecTable table = comp::isg_lsec_table(model, letter);
       write_file_atomically(args.output, comp::format_isg_lsec(table, model, source));
       print_left_out(table.axis.left_out, fmt::format("an ISG leadscrew error compensation list of {}", letter));
+      print_held_beyond(table.axis);
       fmt::print("exported {} points for axis {} (kw.ssfk, bilateral, 0.1 µm) -> {}\n", table.setpoints.size(), letter,
                  args.output);
+      print_landing(table.axis, table.landing);
       return 0;
     }
     const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
     write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
     print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
+    print_held_beyond(table.axis);
     fmt::print("exported {} points for axis {} ($AA_ENC_COMP, step {:.6g}) -> {}\n", table.values.size(), letter,
                table.step, args.output);
+    print_landing(table.axis, table.landing);
     return 0;
   } catch (const comp::ExportRefusal& e) {
     throw refused(e);

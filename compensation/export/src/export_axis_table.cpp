@@ -78,7 +78,8 @@ void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& ou
         if (own_component(axis, out.axis_index, s)) {
           out.has_positioning = true;
           out.held.push_back(s.name);
-          if (s.kind == ParameterKind::table) out.model_nodes.push_back(s.at_mm);
+          // a rotary axis's table is periodic, its nodes in rad (at_mm is a linear axis's)
+          if (s.kind == ParameterKind::table) out.model_nodes.push_back(s.periodic ? s.at_rad : s.at_mm);
           else out.piecewise_linear = false;
         } else if (const std::string effect = listed_effect(s); left_seen.insert(effect).second) {
           out.left_out.push_back(fmt::format("{} ({} of {}: acts across the axis or turns the tool)", effect,
@@ -119,6 +120,37 @@ void set_travel(const Axis& axis, AxisExport& out) {
   }
 }
 
+/// A rotary axis's table nodes (rad, one turn from 0) at every turn that falls within the travel.
+std::vector<double> nodes_in_travel(const AxisExport& out) {
+  std::vector<double> nodes;
+  for (double at : out.model_nodes)
+    for (double x = at + kTwoPi * std::ceil((out.travel_min - at) / kTwoPi); x <= out.travel_max; x += kTwoPi)
+      nodes.push_back(x);
+  return nodes;
+}
+
+/// Item 4 of issue 25: where the travel reaches beyond a linear table's nodes, the end values hold
+/// there (the model's rule and the controls'); said, never silent.
+void note_held_beyond(const Axis& axis, AxisExport& out) {
+  if (out.rotary || out.model_nodes.empty()) return;
+  const double lo = out.model_nodes.front(), hi = out.model_nodes.back();
+  const std::string table = fmt::format("E{}{}:t", out.letter, out.letter);
+  if (!axis.limits) {
+    out.held_beyond.push_back(fmt::format("{}: the table's nodes span {:g} to {:g} mm and the machine file gives {} no "
+                                          "limits: beyond them the end values are held, not extrapolated",
+                                          table, lo, hi, out.letter));
+    return;
+  }
+  if (out.travel_min < lo)
+    out.held_beyond.push_back(fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's first node: its "
+                                          "value there is held, not extrapolated (measure to the limit to know it)",
+                                          table, out.travel_min, lo));
+  if (out.travel_max > hi)
+    out.held_beyond.push_back(fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's last node: its "
+                                          "value there is held, not extrapolated (measure to the limit to know it)",
+                                          table, hi, out.travel_max));
+}
+
 }  // namespace
 
 AxisExport describe_axis_export(const MachineModel& model, char letter) {
@@ -150,6 +182,14 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   std::sort(out.model_nodes.begin(), out.model_nodes.end());
   out.model_nodes.erase(std::unique(out.model_nodes.begin(), out.model_nodes.end()), out.model_nodes.end());
   set_travel(axis, out);
+  if (out.rotary) {
+    out.model_nodes = nodes_in_travel(out);
+    std::sort(out.model_nodes.begin(), out.model_nodes.end());
+  } else {
+    note_held_beyond(axis, out);
+    // nodes beyond the travel change nothing within it: their kinks lie outside
+    std::erase_if(out.model_nodes, [&](double x) { return x < out.travel_min || x > out.travel_max; });
+  }
   return out;
 }
 
@@ -184,28 +224,6 @@ double axis_correction(const MachineModel& model, int axis_index, double nominal
     t = next;
   }
   return t;
-}
-
-std::vector<double> export_nodes(const AxisExport& axis, int max_nodes) {
-  std::vector<double> nodes;
-  for (double x : axis.model_nodes)
-    if (x > axis.travel_min && x < axis.travel_max) nodes.push_back(x);
-  nodes.push_back(axis.travel_min);
-  nodes.push_back(axis.travel_max);
-  if (!axis.piecewise_linear && axis.travel_max > axis.travel_min) {
-    const int room = max_nodes - static_cast<int>(nodes.size());
-    const int intervals = std::clamp(room - 1, 1, 200);
-    for (int k = 1; k < intervals; ++k)
-      nodes.push_back(axis.travel_min + (axis.travel_max - axis.travel_min) * k / intervals);
-  }
-  std::sort(nodes.begin(), nodes.end());
-  const double scale = std::max(1.0, std::max(std::abs(axis.travel_min), std::abs(axis.travel_max)));
-  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) < 1e-9 * scale; }),
-              nodes.end());
-  if (static_cast<int>(nodes.size()) > max_nodes)
-    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("axis {} needs {} nodes, more than the {} the table can hold", axis.letter,
-                                            nodes.size(), max_nodes));
-  return nodes;
 }
 
 }  // namespace ncpost::comp

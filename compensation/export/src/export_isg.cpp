@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "ncpost/compensation/export_nodes.hpp"
+
 namespace ncpost::comp {
 
 namespace {
@@ -14,6 +16,22 @@ constexpr double kDegPerRad = 57.295779513082320876798154814105;
 /// Counts of the list per model unit (mm or rad).
 double counts_per_unit(const AxisExport& a) { return a.rotary ? kIsgCountsPerDeg * kDegPerRad : kIsgCountsPerMm; }
 
+/// The list's value (counts) at setpoint x (counts) of column v: linear between the setpoints, the
+/// end values held beyond them, round the turn on a modulo axis.
+double list_value(const IsgLsecTable& t, const std::vector<std::int64_t>& v, double x) {
+  const auto& s = t.setpoints;
+  if (t.axis.continuous && s.size() >= 2) {
+    const double span = static_cast<double>(s.back() - s.front());
+    x = static_cast<double>(s.front()) + std::fmod(std::fmod(x - static_cast<double>(s.front()), span) + span, span);
+  }
+  if (x <= static_cast<double>(s.front())) return static_cast<double>(v.front());
+  for (std::size_t i = 1; i < s.size(); ++i)
+    if (x < static_cast<double>(s[i]))
+      return static_cast<double>(v[i - 1]) + static_cast<double>(v[i] - v[i - 1]) * (x - static_cast<double>(s[i - 1])) /
+                                                 static_cast<double>(s[i] - s[i - 1]);
+  return static_cast<double>(v.back());
+}
+
 }  // namespace
 
 IsgLsecTable isg_lsec_table(const MachineModel& model, char letter) {
@@ -22,15 +40,18 @@ IsgLsecTable isg_lsec_table(const MachineModel& model, char letter) {
   const AxisExport& a = table.axis;
   table.logical_axis = a.axis_index + 1;
   const double per_unit = counts_per_unit(a);
-  for (double n : export_nodes(a, kIsgMaxPoints)) {
-    // the setpoint on the list's grid first, then the error exactly there
-    const std::int64_t s = std::llround(n * per_unit);
-    if (!table.setpoints.empty() && s == table.setpoints.back()) continue;
-    const double q = static_cast<double>(s) / per_unit;
-    table.setpoints.push_back(s);
-    table.pos.push_back(std::llround(axis_positioning_error(model, a.axis_index, q, false) * per_unit));
-    table.neg.push_back(std::llround(axis_positioning_error(model, a.axis_index, q, true) * per_unit));
+  // setpoints on the list's grid of counts, each value there: the error the axis makes where the
+  // drive must go for it to land on the setpoint (−t, t the correction): exact where the control
+  // subtracts it, and the measured error to first order
+  for (double q : commanded_nodes(model, a, kIsgMaxPoints, 1.0 / per_unit)) {
+    table.setpoints.push_back(std::llround(q * per_unit));
+    table.pos.push_back(std::llround(-axis_correction(model, a.axis_index, q, false) * per_unit));
+    table.neg.push_back(std::llround(-axis_correction(model, a.axis_index, q, true) * per_unit));
   }
+  table.landing = check_landing(
+      model, a,
+      [&](double n, bool falling) { return n - list_value(table, falling ? table.neg : table.pos, n * per_unit) / per_unit; },
+      true);
   return table;
 }
 
@@ -72,7 +93,9 @@ std::string format_isg_lsec(const IsgLsecTable& t, const MachineModel& model, co
                    t.setpoints.size(), t.setpoints.size()));
   note(fmt::format("Sign: each value is the model's positioning error of {} at the setpoint (measured minus programmed", a.letter));
   note("  position, as in the documented example: -102 where the axis stopped 10.2 µm short); the control changes the");
-  note("  position setpoint by it, so that the axis lands on the programmed position. pos: moving positive; neg: moving");
+  note("  position setpoint by it, so that the axis lands on the programmed position. Each value is taken where the drive");
+  note("  must stand for the axis to land on the setpoint (the error at the setpoint to first order), so that the control's");
+  note("  setpoint minus value lands exactly. pos: moving positive; neg: moving");
   note(fmt::format("  negative. An axis that goes 0.010 {} too far at a point has pos = +100 there.", a.rotary ? "deg" : "mm"));
   if (a.reversal != 0.0)
     note(fmt::format("Reversal {:.6g} {} ({} counts) is in the neg column (bilateral LSEC): leave the separate backlash "
@@ -80,6 +103,9 @@ std::string format_isg_lsec(const IsgLsecTable& t, const MachineModel& model, co
                      a.rotary ? a.reversal * kDegPerRad : a.reversal, a.rotary ? "deg" : "mm",
                      std::llround(a.reversal * counts_per_unit(a))));
   if (a.continuous) note("One turn, 0 to 360 deg, modulo (kw.ssfk.modulo 1): the first and last points are the same position.");
+  note(fmt::format("Resolution: one count is {} ({}), so the list can be off the model by half a count on top of its "
+                   "interpolation.", count, a.rotary ? "1.745 µrad" : "0.1 µm"));
+  note(landing_note(a, t.landing, "the ISG kernel"));
   for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors")) note(s);
   for (const std::string& line : isg_lsec_lines(t)) out += line + "\n";
   return out;

@@ -3,24 +3,54 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
+
+#include "ncpost/compensation/export_nodes.hpp"
 
 namespace ncpost::comp {
 
 namespace {
+
 constexpr double kDegPerRad = 57.295779513082320876798154814105;
+/// Decimals of the file: nominals, and trims of a linear / rotary axis.
+constexpr int kNominalDecimals = 6;
+constexpr int kLinearTrimDecimals = 7;
+constexpr int kRotaryTrimDecimals = 9;
+
+double rounded(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(v * scale) / scale;
 }
+
+/// compute_screw_comp: the trim of the rows (file units) at nominal n (file units), moving forward
+/// or in reverse, linear between the nominals, the end rows' trims held beyond them.
+double trim_at(const std::vector<std::array<double, 3>>& rows, double n, bool reverse) {
+  const std::size_t c = reverse ? 2 : 1;
+  if (n <= rows.front()[0]) return rows.front()[c];
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (n < rows[i][0])
+      return rows[i - 1][c] + (rows[i][c] - rows[i - 1][c]) * (n - rows[i - 1][0]) / (rows[i][0] - rows[i - 1][0]);
+  return rows.back()[c];
+}
+
+}  // namespace
 
 LinuxcncCompTable linuxcnc_comp_table(const MachineModel& model, char letter) {
   LinuxcncCompTable table;
   table.axis = describe_axis_export(model, letter);
   const AxisExport& a = table.axis;
-  const double unit = a.rotary ? kDegPerRad : 1.0;
-  for (double n : export_nodes(a, kLinuxcncMaxRows)) {
+  const double unit = a.rotary ? kDegPerRad : 1.0;  // file units per model unit
+  const int trim_decimals = a.rotary ? kRotaryTrimDecimals : kLinearTrimDecimals;
+  // each row's trim exactly at the nominal the file prints
+  for (double n : commanded_nodes(model, a, kLinuxcncMaxRows, std::pow(10.0, -kNominalDecimals) / unit)) {
     const double forward_trim = axis_correction(model, a.axis_index, n, false);
     const double reverse_trim = axis_correction(model, a.axis_index, n, true);
-    table.rows.push_back({n * unit, forward_trim * unit, reverse_trim * unit});
+    table.rows.push_back({rounded(n * unit, kNominalDecimals), rounded(forward_trim * unit, trim_decimals),
+                          rounded(reverse_trim * unit, trim_decimals)});
   }
+  table.landing = check_landing(
+      model, a, [&](double n, bool falling) { return n + trim_at(table.rows, n * unit, falling) / unit; }, true);
   return table;
 }
 
@@ -45,16 +75,17 @@ std::vector<std::string> export_notes(const AxisExport& a, const std::string& ot
     notes.push_back(fmt::format("Left out (NOT compensated by this file): {} term(s) acting on {}:", a.left_out.size(), a.letter));
     for (const std::string& s : a.left_out) notes.push_back("  " + s);
   }
+  for (const std::string& s : a.held_beyond) notes.push_back("Beyond the measured travel: " + s);
   if (a.other_axis_terms > 0)
     notes.push_back(fmt::format("Not in this file: {} term(s) of the other axes ({})", a.other_axis_terms, other_axes_hint));
   return notes;
 }
 
 std::vector<std::string> linuxcnc_comp_lines(const LinuxcncCompTable& table) {
-  const int trim_decimals = table.axis.rotary ? 9 : 7;
+  const int trim_decimals = table.axis.rotary ? kRotaryTrimDecimals : kLinearTrimDecimals;
   std::vector<std::string> lines;
   for (const auto& r : table.rows)
-    lines.push_back(fmt::format("{:.6f} {:.{}f} {:.{}f}", r[0], r[1], trim_decimals, r[2], trim_decimals));
+    lines.push_back(fmt::format("{:.{}f} {:.{}f} {:.{}f}", r[0], kNominalDecimals, r[1], trim_decimals, r[2], trim_decimals));
   return lines;
 }
 
@@ -92,6 +123,7 @@ std::string format_linuxcnc_comp(const LinuxcncCompTable& table, const MachineMo
                                 : (model.machine().axes[static_cast<std::size_t>(a.axis_index)].limits
                                        ? "the machine's limits"
                                        : "the model's table; its end values hold beyond it")));
+  note(landing_note(a, table.landing, "LinuxCNC"));
   for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors")) note(s);
   return out;
 }

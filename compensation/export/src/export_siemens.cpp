@@ -7,29 +7,46 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ncpost/compensation/export_nodes.hpp"
+
 namespace ncpost::comp {
 
 namespace {
 
 constexpr double kDegPerRad = 57.295779513082320876798154814105;
 
-/// The largest step that puts every node on one grid from the first, or 0 when there is none
-/// within `max_points`.
-double common_step(const std::vector<double>& nodes, int max_points) {
-  if (nodes.size() < 2) return 0.0;
-  double step = nodes[1] - nodes[0];
-  for (std::size_t i = 2; i < nodes.size(); ++i) step = std::min(step, nodes[i] - nodes[i - 1]);
-  const double span = nodes.back() - nodes.front();
-  for (int divide = 1; divide <= 16; ++divide) {
-    const double s = step / divide;
-    if (span / s + 1 > max_points) break;
-    const bool on_grid = std::all_of(nodes.begin(), nodes.end(), [&](double x) {
-      const double k = (x - nodes.front()) / s;
-      return std::abs(k - std::round(k)) < 1e-7;
-    });
-    if (on_grid) return s;
+/// Decimals of the values: mm, degrees.
+constexpr int kLinearDecimals = 7;
+constexpr int kRotaryDecimals = 9;
+
+double as_printed(double v, bool rotary) {
+  const double scale = std::pow(10.0, rotary ? kRotaryDecimals : kLinearDecimals);
+  return std::round(v * scale) / scale;
+}
+
+/// The LEC value (model units) at measured position m (model units): linear between the points,
+/// the first and last values held beyond them, round the turn on a modulo axis.
+double lec_value(const SiemensLecTable& t, double m, double unit) {
+  if (t.step <= 0.0) return t.values.front() / unit;
+  const double x = m * unit;
+  double k = (x - t.min) / t.step;
+  const double points = static_cast<double>(t.values.size());
+  if (t.axis.continuous) k = std::fmod(std::fmod(k, points - 1.0) + (points - 1.0), points - 1.0);
+  if (k <= 0.0) return t.values.front() / unit;
+  if (k >= points - 1.0) return t.values.back() / unit;
+  const auto i = static_cast<std::size_t>(k);
+  return (t.values[i] + (k - static_cast<double>(i)) * (t.values[i + 1] - t.values[i])) / unit;
+}
+
+/// The position loop settles at the measured m with m + c(m) = n (fixed point: c changes slowly).
+double settled_position(const SiemensLecTable& t, double n, double unit) {
+  double m = n;
+  for (int k = 0; k < 100; ++k) {
+    const double next = n - lec_value(t, m, unit);
+    if (std::abs(next - m) < 1e-14) return next;
+    m = next;
   }
-  return 0.0;
+  return m;
 }
 
 }  // namespace
@@ -52,22 +69,15 @@ SiemensLecTable siemens_lec_table(const MachineModel& model, char letter) {
   }
   table.axis_name = std::string(1, letter) + "1";
   const double unit = a.rotary ? kDegPerRad : 1.0;
-  std::vector<double> nodes = export_nodes(a, kSiemensMaxPoints);
-  double step = common_step(nodes, kSiemensMaxPoints);
-  if (step <= 0.0 && nodes.size() >= 2) step = (nodes.back() - nodes.front()) / 1000.0;
-  const int points = nodes.size() < 2 ? 1 : static_cast<int>(std::lround((nodes.back() - nodes.front()) / step)) + 1;
-  table.min = nodes.front() * unit;
-  table.step = step * unit;
-  for (int k = 0; k < points; ++k)
-    table.values.push_back(axis_positioning_error(model, a.axis_index, nodes.front() + k * step, false) * unit);
-  // how far the table's linear interpolation is from the model between the points
-  for (int k = 0; k + 1 < points; ++k)
-    for (double f : {0.25, 0.5, 0.75}) {
-      const double x = nodes.front() + (k + f) * step;
-      const double interpolated = table.values[k] + f * (table.values[k + 1] - table.values[k]);
-      table.interpolation_error = std::max(
-          table.interpolation_error, std::abs(interpolated - axis_positioning_error(model, a.axis_index, x, false) * unit));
-    }
+  const EquidistantPoints grid = equidistant_points(a, kSiemensMaxPoints);
+  table.min = grid.min * unit;
+  table.step = grid.step * unit;
+  table.nodes_on_grid = grid.nodes_on_grid;
+  for (int k = 0; k < grid.count; ++k)
+    table.values.push_back(
+        as_printed(axis_positioning_error(model, a.axis_index, grid.min + k * grid.step, false) * unit, a.rotary));
+  // the reversal is left out (listed): the check moving up, where the table is all of the model
+  table.landing = check_landing(model, a, [&](double n, bool) { return settled_position(table, n, unit); }, false);
   return table;
 }
 
@@ -87,8 +97,10 @@ std::string format_siemens_lec(const SiemensLecTable& table, const MachineModel&
                    a.rotary ? "degrees" : "mm"));
   note("  measured actual position, so a positive value moves the axis in the negative direction: an axis that");
   note(fmt::format("  goes 0.010 {} too far at a point has +0.010 there and lands on the commanded position.", unit));
-  note(fmt::format("Linear interpolation between the points departs from the model by at most {:.3g} {}.",
-                   table.interpolation_error, unit));
+  if (!table.nodes_on_grid)
+    note("The model's table nodes do not lie on one grid of at most 2000 points: between them the points do not follow "
+         "its kinks exactly (see the round trip below).");
+  note(landing_note(a, table.landing, "SINUMERIK"));
   if (a.continuous) note("One turn, 0 to 360 deg, modulo: the first and last values are the same position.");
   for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors")) note(s);
   out += "CHANDATA(1)\n";
@@ -99,14 +111,14 @@ std::string format_siemens_lec(const SiemensLecTable& table, const MachineModel&
 
 std::vector<std::string> siemens_lec_lines(const SiemensLecTable& table) {
   const std::string& ax = table.axis_name;
-  const int value_decimals = table.axis.rotary ? 9 : 7;
+  const int value_decimals = table.axis.rotary ? kRotaryDecimals : kLinearDecimals;
   std::vector<std::string> lines;
   for (std::size_t n = 0; n < table.values.size(); ++n)
     lines.push_back(fmt::format("$AA_ENC_COMP[0,{},{}]={:.{}f}", n, ax, table.values[n], value_decimals));
   const double max = table.min + table.step * static_cast<double>(table.values.size() - 1);
-  lines.push_back(fmt::format("$AA_ENC_COMP_STEP[0,{}]={:.6f}", ax, table.step));
-  lines.push_back(fmt::format("$AA_ENC_COMP_MIN[0,{}]={:.6f}", ax, table.min));
-  lines.push_back(fmt::format("$AA_ENC_COMP_MAX[0,{}]={:.6f}", ax, max));
+  lines.push_back(fmt::format("$AA_ENC_COMP_STEP[0,{}]={:.9f}", ax, table.step));
+  lines.push_back(fmt::format("$AA_ENC_COMP_MIN[0,{}]={:.9f}", ax, table.min));
+  lines.push_back(fmt::format("$AA_ENC_COMP_MAX[0,{}]={:.9f}", ax, max));
   lines.push_back(fmt::format("$AA_ENC_COMP_IS_MODULO[0,{}]={}", ax, table.axis.continuous ? 1 : 0));
   return lines;
 }

@@ -10,8 +10,14 @@
 //                   direction — ECC(q) − ECC(0) for a C axis about ±Z, and the reversal.
 // Moving down (falling commands) the dead band adds the reversal b (actual = command + b).
 // Everything else acting on the axis (straightness, roll/pitch/yaw, radial and tilt motions,
-// location errors, squareness) is "left out": listed for the caller to print and to write into
-// the exported file. Units: mm / rad inside, as everywhere.
+// location errors, squareness, location errors that change with another axis) is "left out":
+// listed for the caller to print and to write into the exported file. Units: mm / rad inside.
+//
+// One evaluation (issue 25): every export and the report's control entries take the axis's error
+// from axis_positioning_error, the model's own chain with every family of the model at once
+// (harmonics, tables, polynomials such as the scale error, the reversal); what they sample it at
+// comes from AxisExport::model_nodes, the kinks of that function within the travel. Each export
+// then checks its file as the control applies it against that same function (landing_check.hpp).
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,12 +42,17 @@ struct AxisExport {
   double travel_max = 0.0;
   bool continuous = false;      ///< a rotary axis without limits: the table covers one turn, 0 to 2π
   bool piecewise_linear = true;  ///< the error is linear between `model_nodes` (tables and reversal only)
-  std::vector<double> model_nodes;  ///< the model's own table nodes of the positioning error (mm), sorted
+  /// The kinks of the positioning error within the travel (mm or rad), ascending: the nodes of the
+  /// axis's own tables, a rotary axis's (periodic) nodes at every turn that falls within the travel.
+  std::vector<double> model_nodes;
   double reversal = 0.0;            ///< dead band b (mm or rad), 0 without one
   bool has_positioning = false;     ///< some positioning term (not only the reversal)
   std::vector<std::string> held;      ///< parameter names the table holds
   std::vector<std::string> left_out;  ///< "NAME (why)" for every term acting on the axis it cannot hold
   int other_axis_terms = 0;           ///< machine effects of the other axes (a table of nodes counts once)
+  /// Where the travel reaches beyond a table's nodes (a linear axis): "EXX:t ..." saying that the
+  /// end values are held there, not extrapolated (issue 25 item 4); for the file and stderr.
+  std::vector<std::string> held_beyond;
 };
 
 /// Describes axis `letter` of the model. Throws ExportRefusal with the reason when the
@@ -49,15 +60,13 @@ struct AxisExport {
 /// to export), or a linear axis whose error is not a table needs limits the machine file lacks.
 AxisExport describe_axis_export(const MachineModel& model, char letter);
 
-/// The positioning error e(q) of the axis (mm or rad), moving up (`falling` false) or down.
+/// The positioning error e(q) of the axis (mm or rad), moving up (`falling` false) or down: the
+/// whole model of the axis through its chain, every other axis at home. The one function every
+/// export evaluates.
 double axis_positioning_error(const MachineModel& model, int axis_index, double q, bool falling);
 
 /// The correction t to add to the command n so that the axis actually lands on n:
 /// (n + t) + e(n + t) = n, solved by fixed-point iteration (e changes slowly).
 double axis_correction(const MachineModel& model, int axis_index, double nominal, bool falling);
-
-/// Nodes covering [travel_min, travel_max]: the model's table nodes, the travel ends and, where the
-/// error is not piecewise linear in those, an even grid; at most `max_nodes`, ascending.
-std::vector<double> export_nodes(const AxisExport& axis, int max_nodes);
 
 }  // namespace ncpost::comp

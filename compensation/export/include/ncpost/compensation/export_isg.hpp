@@ -21,16 +21,20 @@
 // axis position, the end values held beyond the table. The values are "absolute position errors":
 // the documented example enters, at setpoint 19866.7 µm, measured 19856.5 µm moving positive and
 // 19874.7 µm moving negative, pos = −102 and neg = +80 (×0.1 µm): value = measured − programmed
-// position, so the control commands programmed − value. Here each value is the model's positioning
-// error of the axis at the setpoint, for that direction (export_axis_table.hpp): +100 for an axis
-// that goes 10 µm too far; the reversal is in the neg column (bilateral LSEC needs no separate
-// backlash compensation, per the same page).
+// position, so the control commands programmed − value. Here each value is, for that direction,
+// the model's positioning error (export_axis_table.hpp) where the drive must stand for the axis to
+// land on the setpoint, −t with (s + t) + e(s + t) = s: the control's s − value then lands exactly,
+// and the value is the error at the setpoint to first order (+100 for an axis that goes 10 µm too
+// far). The setpoints include the kinks of that value (export_nodes.hpp). The reversal is in the
+// neg column (bilateral LSEC needs no separate backlash compensation, per the same page). The
+// list's unit, 0.1 µm or 0.0001° (1.745 µrad), bounds how closely it can follow the model.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "ncpost/compensation/export_axis_table.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
+#include "ncpost/compensation/landing_check.hpp"
 
 namespace ncpost::comp {
 
@@ -39,6 +43,7 @@ struct IsgLsecTable {
   int logical_axis = 0;  ///< kopf.achs_nr: the axis's place in the machine file (the user sets the control's)
   /// interpolation points and compensation values, in 0.1 µm (linear) or 0.0001° (rotary)
   std::vector<std::int64_t> setpoints, pos, neg;
+  LandingCheck landing;  ///< the list applied as the ISG kernel applies it, against the model
 };
 
 /// Units of the list (kw.ssfk.unit = 1): 0.1 µm per count for lengths, 0.0001° per count for angles.

@@ -12,7 +12,9 @@
 // commanded position between nominals (the end rows' trims held beyond them; kept while the joint
 // stands), is added to the commanded position to give the motor command. So each trim here is the
 // correction t with (n + t) + e(n + t) = n, e the model's positioning error of the axis for that
-// direction (export_axis_table.hpp): about −e(n). Rows come first: LinuxCNC stops reading at the
+// direction (export_axis_table.hpp): about −e(n). The rows include, per direction, the commanded
+// position x + e(x) where the drive passes each node x of a table, where t has its kinks
+// (export_nodes.hpp), so that a table round-trips exactly. Rows come first: LinuxCNC stops reading at the
 // first line that is not three numbers, so the notes follow the rows (a comment on top would leave
 // the table empty without a message).
 // Units: mm for linear axes, degrees for rotary axes (LinuxCNC machine units with LINEAR_UNITS = mm).
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "ncpost/compensation/export_axis_table.hpp"
+#include "ncpost/compensation/landing_check.hpp"
 
 namespace ncpost::comp {
 
@@ -35,6 +38,7 @@ struct LinuxcncCompTable {
   AxisExport axis;
   /// nominal, forward trim, reverse trim: mm (linear) or degrees (rotary)
   std::vector<std::array<double, 3>> rows;
+  LandingCheck landing;  ///< the rows applied as LinuxCNC applies them, against the model
 };
 
 /// LinuxCNC's limit on rows per joint (EMCMOT_COMP_SIZE).
@@ -49,7 +53,8 @@ std::vector<std::string> linuxcnc_comp_lines(const LinuxcncCompTable& table);
 /// The file: the rows, then `#` notes (type, sign convention, what is held and left out).
 std::string format_linuxcnc_comp(const LinuxcncCompTable& table, const MachineModel& model, const ExportSource& source);
 
-/// The notes every exported table shares: held terms, left-out terms, other axes (one line each).
+/// The notes every exported table shares: held terms, left-out terms, where the travel reaches
+/// beyond a table's nodes, other axes (one line each).
 std::vector<std::string> export_notes(const AxisExport& axis, const std::string& other_axes_hint);
 
 }  // namespace ncpost::comp

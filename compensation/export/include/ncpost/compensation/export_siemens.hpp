@@ -19,6 +19,7 @@
 
 #include "ncpost/compensation/export_axis_table.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
+#include "ncpost/compensation/landing_check.hpp"
 
 namespace ncpost::comp {
 
@@ -28,7 +29,8 @@ struct SiemensLecTable {
   double min = 0.0;       ///< mm or degrees
   double step = 0.0;
   std::vector<double> values;  ///< mm or degrees, point N at min + N·step
-  double interpolation_error = 0.0;  ///< largest |table − model| between the points (mm or degrees)
+  bool nodes_on_grid = true;   ///< every node of the model's tables is a point
+  LandingCheck landing;        ///< the table applied as SINUMERIK applies it, against the model (moving up)
 };
 
 /// Points for the table (SINUMERIK's own limit is a machine datum, MD38000 MM_ENC_COMP_MAX_POINTS).
