@@ -264,19 +264,25 @@ struct AptReader::State {
     return m;
   }
 
-  /// NX's helical engage: `CIRCLE/...,TIMES,n` before a GOTO that lies deeper along the axis. The n
-  /// turns come on top of the arc to the GOTO, but whether n counts it is not written (nx_APT_Project2:
-  /// TIMES,7 for 0.38 in of depth, a 3 degree ramp as 7 turns and the arc; as the arc alone, posted
-  /// before, the whole depth went down in 29 degrees of arc). Refused rather than guessed.
-  void refuse_repeated_circle(const AptStatement& st, const std::string& text) const {
+  /// NX's helical engage `CIRCLE/...,TIMES,n` (the centre at the level of the next GOTO, which lies
+  /// deeper or higher along the axis than the start): n turns in all, the last one the arc to the
+  /// GOTO — (n - 1) whole turns, then the arc, at one pitch, clockwise about (i,j,k) as every NX
+  /// circle. Confirmed on the geometry of nx_APT_Project2's two records (TIMES,7, 0.3845 in deep,
+  /// radius 0.1687 in, the arc to the GOTO 331.2 deg): 6.92 turns give a ramp of 3.0008 deg, NX's
+  /// round ramp angle, in both; 7 turns and the arc would give 2.93 deg. Outside NX files (no
+  /// `TOOL PATH/`) the count's convention is not known: refused.
+  int helix_extra_turns(const AptStatement& st, const std::string& text) const {
+    if (!has_word(st, "TIMES")) return 0;
     const auto n = number_after(st, "TIMES");
-    if (!n && !has_word(st, "TIMES")) return;
-    fail(st.where,
-         fmt::format("CIRCLE ...,TIMES,{:g}: a helix of several turns (NX helical engage) is not posted: whether the "
-                     "turns include the arc to the next GOTO is not written, and one arc would take the whole depth in "
-                     "part of a turn; output the helix as GOTO points (NX: circular output off for helical moves)",
-                     n.value_or(0.0)),
-         echo_of(text));
+    if (!n || !(*n >= 1.0 && *n <= 10000.0) || *n != std::round(*n))
+      fail(st.where, "CIRCLE ...,TIMES,n: n is the number of turns of the helix, a whole number from 1", echo_of(text));
+    if (!nx_circle_axis)
+      fail(st.where,
+           fmt::format("CIRCLE ...,TIMES,{:g}: a helix of several turns outside an NX file (no TOOL PATH/ record): "
+                       "whether the turns include the arc to the next GOTO is NX's convention, not known for this "
+                       "file's CAM system; output the helix as GOTO points", *n),
+           echo_of(text));
+    return static_cast<int>(*n) - 1;
   }
 
   /// The distance of `p` from the axis of a circle (its radius if `p` is on the circle).
@@ -339,8 +345,8 @@ struct AptReader::State {
                                  v.size()),
            echo_of(text));
     check_coordinates(st, v, 3);
-    refuse_repeated_circle(st, text);
     Circle c;
+    c.extra_turns = helix_extra_turns(st, text);
     c.where = st.where;
     c.center_mm = to_w(scale * Vec3d(v[0], v[1], v[2]));
     const Vec3d a(v[3], v[4], v[5]);

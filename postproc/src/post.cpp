@@ -795,7 +795,8 @@ class Poster {
     }
     double angle = *sweep;
     if (angle <= 1e-12) angle += 2.0 * kPi;  // counter-clockwise about the circle axis
-    if (native_arc(c, end, rapid, angle)) return;
+    angle += 2.0 * kPi * c.extra_turns;      // a helix of several turns (one pitch over all of them)
+    if (c.extra_turns == 0 && native_arc(c, end, rapid, angle)) return;
     const double radius = r0.norm();
     const double tol = std::min(options_.arc_tolerance_mm, 0.5 * radius);
     const double step = 2.0 * std::acos(1.0 - tol / radius);

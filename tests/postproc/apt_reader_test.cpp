@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "cl_records.hpp"
 #include "ncpost/postproc/apt_reader.hpp"
@@ -136,7 +137,7 @@ TEST_CASE("bad input: file:line:column and what was expected") {
 
 TEST_CASE("every real CL file reads completely") {
   // NX's inch parts (nx_APT_*) have no UNITS record; read as inches, as their NX posts (G20) say.
-  // nx_APT_Project2.txt is refused at its helix CIRCLE/...,TIMES,7 (line 4641): see below.
+  // nx_APT_Project2.txt has NX helices (CIRCLE/...,TIMES,7): see below.
   for (const char* f : {"nx_APT_Variable_Axis.txt", "nx_APT_SimpleMillPlane.txt", "nx_APT_Zig_Zag_Smoothed.txt",
                         "catia_peening.aptsource", "creo_bohren_1.ncl", "creo_schruppen_1.ncl"}) {
     INFO(f);
@@ -226,23 +227,30 @@ TEST_CASE("NX inch files without UNITS: FEDRAT/IPM is refused until --units says
   REQUIRE(only<cl::Feed>(read_all("FEDRAT/IPM,10\n", mm)).size() == 1);
 }
 
-TEST_CASE("NX CIRCLE/...,TIMES,n (a helix of several turns) is refused (nx_APT_Project2.txt line 4641)") {
-  // TIMES,7 for 0.38 in of depth along the axis: posted as the one arc to the next GOTO, the whole
-  // depth went down in 29 degrees of arc instead of a 3 degree helical ramp.
+TEST_CASE("NX CIRCLE/...,TIMES,n: n turns in all, the last one the arc to the next GOTO (nx_APT_Project2.txt)") {
+  // TIMES,7 for 0.3845 in of depth along the axis, radius 0.1687 in, the arc to the GOTO 331.2 deg
+  // clockwise about (i,j,k) (NX): 6 whole turns and the arc give a 3.0008 deg ramp in both records
   std::ifstream in(test::data("real/nx_APT_Project2.txt"), std::ios::binary);
   REQUIRE(in);
   cl::ReaderOptions o;
   o.default_inch = true;
   cl::AptReader r(in, "nx_APT_Project2.txt", o);
   int motions = 0;
-  try {
-    while (auto x = r.next())
-      if (std::holds_alternative<cl::Motion>(*x)) ++motions;
-    FAIL("read the helix");
-  } catch (const InputError& e) {
-    CHECK_THAT(e.what(), Catch::Contains("nx_APT_Project2.txt:4641:1: CIRCLE ...,TIMES,7: a helix of several turns"));
+  std::vector<cl::Circle> helices;
+  while (auto x = r.next()) {
+    if (std::holds_alternative<cl::Motion>(*x)) ++motions;
+    if (const auto* c = std::get_if<cl::Circle>(&*x); c && c->extra_turns > 0) helices.push_back(*c);
   }
-  CHECK(motions > 4000);  // everything before it read
+  CHECK(motions > 4000);  // read to the end
+  REQUIRE(helices.size() == 2);
+  for (const cl::Circle& c : helices) {
+    CHECK(c.extra_turns == 6);
+    CHECK(c.radius_mm == Approx(0.1687 * 25.4).margin(0.0002 * 25.4));  // 0.1687 and 0.1688 in
+  }
+  CHECK(helices[0].where.line == 4641);
+  // outside an NX file the count's convention is not known: refused
   CHECK(error_of("UNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2\nGOTO/5,0,0\n")
-            .find("t.cls:3:1: CIRCLE ...,TIMES,2") != std::string::npos);
+            .find("t.cls:3:1: CIRCLE ...,TIMES,2: a helix of several turns outside an NX file") != std::string::npos);
+  CHECK(error_of("TOOL PATH/A,TOOL,B\nUNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2.5\nGOTO/5,0,0\n")
+            .find("a whole number from 1") != std::string::npos);
 }

@@ -91,7 +91,7 @@ TEST_CASE("G2/G3 from NX CIRCLE records: NX's own post's directions") {
 }
 
 TEST_CASE("G2/G3 output follows the same path as the expanded points (NX and Creo conventions)") {
-  // nx_APT_Project2.txt is refused now (a helix CIRCLE/...,TIMES,7); creo_profilfraesen_2.ncl has
+  // (nx_APT_Project2.txt's helices, CIRCLE/...,TIMES,7, are points: never G2/G3); creo_profilfraesen_2.ncl has
   // clockwise CIRCLEs about (0,0,-1)
   for (const char* file : {"creo_profilfraesen_2.ncl", "creo_schruppen_1.ncl", "nx_APT_Zig_Zag_Smoothed.txt"}) {
     INFO(file);

@@ -64,7 +64,7 @@ std::size_t duplicates(const Case& c, const Machine& m, const Setup& setup) {
 TEST_CASE("every real file posts with one output motion per input motion") {
   const Case cases[] = {
       // NX inch parts have no UNITS record: read as inches (their NX posts write G20). nx_APT_Project2.txt
-      // (inch) is refused at its helix CIRCLE/...,TIMES,7 (apt_reader_test), no longer posted.
+      // (inch) has helices of 7 turns (apt_reader_test, never_wrong_move_test): more points than motions.
       {"nx_APT_Variable_Axis.txt", "haas-umc750", false, true, false},
       {"nx_APT_SimpleMillPlane.txt", "haas-umc750", false, false, true},
       {"nx_APT_Zig_Zag_Smoothed.txt", "haas-umc750", false, false, true},

@@ -72,6 +72,9 @@ struct Circle {
   Vec3d center_mm = Vec3d::Zero();
   Vec3d axis = Vec3d::UnitZ();  ///< the tool moves counter-clockwise about it (normalised by the reader)
   double radius_mm = 0.0;
+  /// Whole turns about the axis before the arc to the end point (NX `CIRCLE/...,TIMES,n`: n - 1);
+  /// the motion rises or sinks along the axis at one pitch over all of them (a helix).
+  int extra_turns = 0;
 };
 
 /// CYCLE/DRILL|DEEP|TAP|BORE|... (OFF ends it); the GOTOs that follow are the holes. Every
