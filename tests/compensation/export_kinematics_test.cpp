@@ -16,6 +16,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <iostream>
 #include <map>
 #include <random>
 #include <regex>
@@ -155,6 +157,14 @@ ErrorParameters params(std::initializer_list<std::pair<const char*, double>> lis
   return p;
 }
 
+std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  REQUIRE(in.good());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 Machine shipped(const std::string& name) { return load_machine(test::source("machines/" + name + ".toml")); }
 
 }  // namespace
@@ -269,6 +279,7 @@ TEST_CASE("siemens-cycle800: the record holds offsets, tilts and zero errors (ty
       worst_um = std::max(worst_um, (tip - model_tip(model, q)).norm() * 1e3);
     }
     INFO(name << ": " << worst_um << " um");
+    std::cout << "CYCLE800 " << name << ": " << worst_um << " um at 200 random poses\n";
     CHECK(worst_um < 0.1);
   }
 }
@@ -289,6 +300,28 @@ TEST_CASE("siemens-cycle800: a function of position is left out with the effect 
     together_um = std::max(together_um, (cycle800_tip(v, q.linear_mm, q[3], q[4]) - model_tip(model, q)).norm() * 1e3);
   CHECK(reported.at("together") == Approx(together_um).margin(0.002));
   CHECK(together_um > 1.0);
+}
+
+TEST_CASE("the README's example files (docs/exports/) are the bundled AC-trunnion identification's") {
+  const Machine m = shipped("ac-trunnion");
+  const ModelFile file = read_model_json(test::source("samples/measurements/ac-trunnion/model.json"), &m);
+  const MachineModel model(m, file.parameters);
+  ErrorParameters offsets;
+  for (const char* n : {"EY0A", "EZ0A", "EX0C", "EY0C"}) offsets.set(n, *file.parameters.get(n));
+  const MachineModel held(m, offsets);
+  const auto pin = hal_pins(text_of(test::source("docs/exports/ac-trunnion-xyzac-trt.hal")));
+  const auto carr = carr_values(text_of(test::source("docs/exports/ac-trunnion-cycle800.spf")));
+  REQUIRE(pin.size() == 6);
+  REQUIRE(carr.size() == 18);
+  double trt_um = 0.0, cycle800_um = 0.0;
+  for (const AxisPosition& q : random_poses(m, 100, 29)) {
+    trt_um = std::max(trt_um, (trt_world(pin, 'A', q.linear_mm, q[3] / kDeg, q[4] / kDeg) - model_tip(held, q)).norm() * 1e3);
+    cycle800_um = std::max(cycle800_um, (cycle800_tip(carr, q.linear_mm, q[3], q[4]) - model_tip(model, q)).norm() * 1e3);
+  }
+  std::cout << "docs/exports round trip at 100 random poses: xyzac-trt " << trt_um << " um (held terms), CYCLE800 "
+            << cycle800_um << " um (whole model)\n";
+  CHECK(trt_um < 0.1);
+  CHECK(cycle800_um < 0.1);
 }
 
 TEST_CASE("kinematics exports refuse machines they cannot describe") {

@@ -111,6 +111,10 @@ std::string format_linuxcnc_trt(const TrtKinematics& k, const MachineModel& mode
             " LinuxCNC 2.10; an older LinuxCNC refuses the setp: it has only the other sense)."
           : "conventional-directions = 0 (the default, not set here): positive commands turn the table right-handed"
             " about +X/+Y and +Z.",
+      fmt::format("Zero errors (E{0}0{0}, EC0C) have no pin here: a model's zero error is listed as left out below; the",
+                  k.tilt_letter),
+      "joint's HOME_OFFSET in the INI file could hold it (with the workpiece set up at home, that of the tilting",
+      "axis turns the C line, that of C has no effect).",
       "tool-offset is not set here: net it to motion.tooloffset.z (the tool length), as LinuxCNC's trt configurations do.",
       fmt::format("Held: {}", k.held.empty() ? std::string("none (the nominal pivots)") : fmt::format("{}", fmt::join(k.held, ", ")))};
   for (const std::string& line : left_out_lines(k.left_out)) notes.push_back(line);

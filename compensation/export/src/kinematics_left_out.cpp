@@ -130,9 +130,8 @@ std::vector<std::string> left_out_lines(const LeftOut& left) {
   std::vector<std::string> lines{
       fmt::format("Left out (NOT in this record, {} term(s)); each with the largest change of the tool tip on the",
                   left.terms.size()),
-      fmt::format("workpiece (um) when it alone is removed from the model, at {} poses ({}; tool", left.poses,
-                  left.poses_text),
-      "length 0, the tip at the spindle gauge point):"};
+      fmt::format("workpiece (um) when it alone is removed from the model, at {} poses of the travel:", left.poses),
+      fmt::format("  {}", left.poses_text), "  (tool length 0: the tip at the spindle gauge point; W = M at home)"};
   for (const LeftOutTerm& t : left.terms)
     lines.push_back(fmt::format("  {:<10} {:10.3f} um  {}", t.term, t.effect_um, t.why));
   lines.push_back(fmt::format("  all together: {:.3f} um (this record against the whole model at those poses)",
