@@ -27,6 +27,8 @@
 #include "ncpost/compensation/export_linuxcnc_trt.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "cli_run.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;
@@ -322,6 +324,38 @@ TEST_CASE("the README's example files (docs/exports/) are the bundled AC-trunnio
             << cycle800_um << " um (whole model)\n";
   CHECK(trt_um < 0.1);
   CHECK(cycle800_um < 0.1);
+}
+
+/// The lines of a file that carry numbers or the left-out list (not the header naming paths and version).
+std::string body_of(const std::string& text) {
+  std::string out;
+  std::istringstream in(text);
+  for (std::string s; std::getline(in, s);)
+    if (s.rfind("setp", 0) == 0 || s.rfind("$TC_CARR", 0) == 0 || s.find(" um") != std::string::npos) out += s + "\n";
+  return out;
+}
+
+TEST_CASE("ncpost export --format linuxcnc-trt | siemens-cycle800: exit codes, and the docs/exports files are current") {
+  const std::string dir = test::make_temp_dir("export_kinematics");
+  const std::string model = test::source("samples/measurements/ac-trunnion/model.json");
+  const std::string machine = test::source("machines/ac-trunnion.toml");
+  const std::string log = dir + "/log.txt";
+  for (const auto& [format, docs_file] : {std::pair<std::string, std::string>{"linuxcnc-trt", "ac-trunnion-xyzac-trt.hal"},
+                                         {"siemens-cycle800", "ac-trunnion-cycle800.spf"}}) {
+    const std::string out = dir + "/" + docs_file;
+    REQUIRE(test::run_ncpost("export --format " + format + " --machine " + machine + " -o " + out + " " + model, log) == 0);
+    const std::string written = text_of(out);
+    INFO(format);
+    CHECK(!body_of(written).empty());
+    CHECK(body_of(written) == body_of(text_of(test::source("docs/exports/" + docs_file))));
+    // --axis belongs to the one-axis tables; no --machine: refused before anything is written
+    CHECK(test::run_ncpost("export --format " + format + " --axis C --machine " + machine + " -o " + dir + "/x " + model, log) == 1);
+    CHECK(test::run_ncpost("export --format " + format + " -o " + dir + "/x " + model, log) == 1);
+    CHECK_FALSE(std::ifstream(dir + "/x").good());
+  }
+  // the LinuxCNC warning names the tilts on stderr
+  test::run_ncpost("export --format linuxcnc-trt --machine " + machine + " -o " + dir + "/y.hal " + model, log);
+  CHECK(text_of(log).find("EB0C       up to") != std::string::npos);
 }
 
 TEST_CASE("kinematics exports refuse machines they cannot describe") {

@@ -29,23 +29,25 @@ namespace ncpost::cli {
 
 namespace {
 
-/// The formats --format takes: name, what it writes (the option's help), whether it needs --machine.
+/// The formats --format takes: name, what it writes (the option's help), whether it needs --machine,
+/// whether it is a one-axis table (takes --axis).
 struct ExportFormat {
   const char* name;
   const char* help;
   bool needs_machine;
+  bool one_axis;
 };
 constexpr ExportFormat kFormats[] = {
-    {"linuxcnc", "LinuxCNC COMP_FILE (type 1) of one axis", false},
-    {"siemens", "SINUMERIK LEC table ($AA_ENC_COMP) of one axis", false},
+    {"linuxcnc", "LinuxCNC COMP_FILE (type 1) of one axis", false, true},
+    {"siemens", "SINUMERIK LEC table ($AA_ENC_COMP) of one axis", false, true},
     {"isg", "ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, bilateral) of one axis",
-     false},
+     false, true},
     {"machine", "the machine file with the rotary axes' location errors applied (TRR-XY: the model's 30 parameters "
-                "as the machine's calibration)", true},
+                "as the machine's calibration)", true, false},
     {"linuxcnc-trt", "the rotary axes' line offsets as LinuxCNC xyzac-trt / xyzbc-trt kinematics parameters (HAL "
-                     "setp lines; tilts listed as left out with their effect in um)", true},
+                     "setp lines; tilts listed as left out with their effect in um)", true, false},
     {"siemens-cycle800", "the rotary axes' lines (offsets and tilts) as a SINUMERIK CYCLE800 swivel data record, "
-                         "kinematic type P ($TC_CARR)", true},
+                         "kinematic type P ($TC_CARR)", true, false},
 };
 
 const ExportFormat* find_format(const std::string& name) {
@@ -140,6 +142,9 @@ int export_serial(const ExportArgs& args) {
   check_files({{"-o", args.output}}, inputs);
   const ExportFormat* format = find_format(args.format);
   if (format == nullptr) throw UsageError(fmt::format("--format: expected one of {}, got '{}'", format_names(), args.format));
+  if (!format->one_axis && !args.axis.empty())
+    throw UsageError(fmt::format("--axis {}: --format {} writes every rotary axis of the machine, not one axis's table",
+                                 args.axis, args.format));
   Machine machine;
   comp::ModelFile file;
   if (!args.machine.empty()) {
