@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // ncpost export: the model as compensation data for the control (issue 17; docs/cli.md "export"):
 // LinuxCNC's COMP_FILE, a SINUMERIK LEC table, an ISG-kernel / Beckhoff TwinCAT CNC leadscrew error
-// compensation list, or the machine file with the location errors of the rotary axes applied (the control's kinematics calibration). What a format cannot hold is listed
-// on stderr and in the file.
+// compensation list, the machine file with the location errors of the rotary axes applied (ncpost's own
+// kinematics calibration), or those errors as a control's kinematics: LinuxCNC's trt kinematics parameters,
+// a SINUMERIK CYCLE800 swivel data record (issue 25 item 2). What a format cannot hold is listed on stderr
+// and in the file.
 #include <fmt/format.h>
 
 #include <memory>
@@ -12,8 +14,10 @@
 #include "file_checks.hpp"
 #include "kind_steps.hpp"
 #include "model_input.hpp"
+#include "ncpost/compensation/export_cycle800.hpp"
 #include "ncpost/compensation/export_isg.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
+#include "ncpost/compensation/export_linuxcnc_trt.hpp"
 #include "ncpost/compensation/export_machine.hpp"
 #include "ncpost/compensation/export_siemens.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -24,6 +28,45 @@
 namespace ncpost::cli {
 
 namespace {
+
+/// The formats --format takes: name, what it writes (the option's help), whether it needs --machine,
+/// whether it is a one-axis table (takes --axis).
+struct ExportFormat {
+  const char* name;
+  const char* help;
+  bool needs_machine;
+  bool one_axis;
+};
+constexpr ExportFormat kFormats[] = {
+    {"linuxcnc", "LinuxCNC COMP_FILE (type 1) of one axis", false, true},
+    {"siemens", "SINUMERIK LEC table ($AA_ENC_COMP) of one axis", false, true},
+    {"isg", "ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, bilateral) of one axis",
+     false, true},
+    {"machine", "the machine file with the rotary axes' location errors applied (TRR-XY: the model's 30 parameters "
+                "as the machine's calibration)", true, false},
+    {"linuxcnc-trt", "the rotary axes' line offsets as LinuxCNC xyzac-trt / xyzbc-trt kinematics parameters (HAL "
+                     "setp lines; tilts listed as left out with their effect in um)", true, false},
+    {"siemens-cycle800", "the rotary axes' lines (offsets and tilts) as a SINUMERIK CYCLE800 swivel data record, "
+                         "kinematic type P ($TC_CARR)", true, false},
+};
+
+const ExportFormat* find_format(const std::string& name) {
+  for (const ExportFormat& f : kFormats)
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+std::string format_names() {
+  std::vector<std::string> names;
+  for (const ExportFormat& f : kFormats) names.push_back(f.name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+std::string format_help() {
+  std::vector<std::string> lines;
+  for (const ExportFormat& f : kFormats) lines.push_back(fmt::format("{}: {}", f.name, f.help));
+  return fmt::format("{}", fmt::join(lines, "; "));
+}
 
 /// A three-axis machine X Y Z for a model given without --machine (its axes say XYZ).
 Machine three_axis_machine(const std::string& name) {
@@ -70,6 +113,16 @@ void print_left_out(const std::vector<std::string>& left_out, const std::string&
   for (const std::string& s : left_out) fmt::print(stderr, "  {}\n", s);
 }
 
+/// The terms a kinematics record leaves out, with their effect on the workpiece (kinematics_left_out.hpp).
+void print_left_out_effects(const comp::LeftOut& left, const std::string& what) {
+  if (left.terms.empty()) return;
+  fmt::print(stderr, "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
+                     "(also listed in the file, with the poses):\n", what, left.terms.size());
+  for (const comp::LeftOutTerm& t : left.terms)
+    fmt::print(stderr, "  {:<10} up to {:.3f} um at the workpiece  ({})\n", t.term, t.effect_um, t.why);
+  fmt::print(stderr, "  all together: up to {:.3f} um at {} poses of the travel\n", left.together_um, left.poses);
+}
+
 /// Where the travel reaches beyond a table's nodes (end values held): never silent (issue 25 item 4).
 void print_held_beyond(const comp::AxisExport& axis) {
   for (const std::string& s : axis.held_beyond)
@@ -87,8 +140,11 @@ int export_serial(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
   check_files({{"-o", args.output}}, inputs);
-  if (args.format != "linuxcnc" && args.format != "siemens" && args.format != "isg" && args.format != "machine")
-    throw UsageError(fmt::format("--format: expected linuxcnc, siemens, isg or machine, got '{}'", args.format));
+  const ExportFormat* format = find_format(args.format);
+  if (format == nullptr) throw UsageError(fmt::format("--format: expected one of {}, got '{}'", format_names(), args.format));
+  if (!format->one_axis && !args.axis.empty())
+    throw UsageError(fmt::format("--axis {}: --format {} writes every rotary axis of the machine, not one axis's table",
+                                 args.axis, args.format));
   Machine machine;
   comp::ModelFile file;
   if (!args.machine.empty()) {
@@ -96,8 +152,9 @@ int export_serial(const ExportArgs& args) {
     file = read_model_for(args.model, machine, args.force);
   } else {
     file = comp::read_model_json(args.model, nullptr);
-    if (args.format == "machine")
-      throw UsageError("--format machine needs --machine M.toml: the machine file to correct");
+    if (format->needs_machine)
+      throw UsageError(fmt::format("--format {} needs --machine M.toml: the machine whose rotary axes the model "
+                                   "locates", args.format));
     if (!file.axes.empty() && file.axes != "XYZ")
       throw UsageError(fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
                                    "need their directions)", file.axes));
@@ -130,6 +187,22 @@ int export_serial(const ExportArgs& args) {
       print_left_out(out.left_out, "a machine file");
       fmt::print("exported {} location error(s) of '{}' into the machine file '{}' ({})\n", out.applied.size(),
                  machine.name, args.output, out.corrected.name);
+      return 0;
+    }
+    if (args.format == "linuxcnc-trt") {
+      const comp::TrtKinematics k = comp::linuxcnc_trt_kinematics(model);
+      write_file_atomically(args.output, comp::format_linuxcnc_trt(k, model, source));
+      print_left_out_effects(k.left_out, fmt::format("LinuxCNC's {}", k.module));
+      fmt::print("exported {} line offset(s) of '{}' as {} parameters -> {}\n", k.held.size(), machine.name, k.module,
+                 args.output);
+      return 0;
+    }
+    if (args.format == "siemens-cycle800") {
+      const comp::Cycle800Record r = comp::cycle800_record(model);
+      write_file_atomically(args.output, comp::format_cycle800(r, model, source));
+      print_left_out_effects(r.left_out, "a CYCLE800 swivel data record");
+      fmt::print("exported {} location error(s) of '{}' as the CYCLE800 record (type P, axes {} {}) -> {}\n",
+                 r.held.size(), machine.name, r.axis1, r.axis2, args.output);
       return 0;
     }
     const char letter = chosen_axis(args, model);
@@ -174,16 +247,12 @@ int run_export(const ExportArgs& args) { return kExportSteps[export_kind(args)].
 void add_export(CLI::App& app, Action& action) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* sub = app.add_subcommand("export", "Export a model as compensation data for the control");
-  sub->add_option("--format", args->format,
-                  "linuxcnc: LinuxCNC COMP_FILE (type 1) of one axis; siemens: SINUMERIK LEC table ($AA_ENC_COMP) of "
-                  "one axis; isg: ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, "
-                  "bilateral) of one axis; machine: the machine file with the rotary axes' location errors applied "
-                  "(TRR-XY: the model's 30 parameters as the machine's calibration)")
-      ->required();
+  sub->add_option("--format", args->format, format_help())->required();
   sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens, isg); needed when the model has "
                                         "tables for more than one");
   sub->add_option("--machine", args->machine,
-                  "machine definition (TOML); needed for rotary axes and --format machine");
+                  "machine definition (TOML); needed for rotary axes and --format machine, linuxcnc-trt, "
+                  "siemens-cycle800");
   add_model_force_option(*sub, args->force);
   sub->add_option("-o,--output", args->output, "the file to write")->required();
   sub->add_option("model", args->model, "error model JSON (written by identify)")->required();
