@@ -8,7 +8,7 @@
 #             matches exactly one case fails instead of passing with nothing run)
 #   folder    the file's working folder; RESOURCE_LOCK on it, so one file's cases never overlap.
 # Written here rather than with Catch2 2.13's catch_discover_tests, which splits a case name at a
-# ';' into two tests that match nothing (46 of the 454 names here had one).
+# ';' into tests that match nothing (43 of the 408 case names here have one).
 # Inputs (-D): EXE, the program; FILES, a file of lines "<tag>|<test name prefix>|<folder>";
 # OUT, the CTest file to write.
 file(STRINGS "${FILES}" _lines)
