@@ -10,7 +10,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=$(mktemp -d /tmp/ncpost-parse-bench.XXXXXX)
 trap 'rm -rf "$WORK"' EXIT INT TERM
 
-cmake -S "$ROOT" -B "$ROOT/build" -G Ninja >/dev/null
+cmake -S "$ROOT" -B "$ROOT/build" -G Ninja -DNCPOST_BUILD_BENCH=ON >/dev/null
 ninja -C "$ROOT/build" -j2 parse_bench >/dev/null
 
 ( cd "$WORK" && npm init -y >/dev/null 2>&1 && npm install --no-audit --no-fund --silent gcode-parser >/dev/null )

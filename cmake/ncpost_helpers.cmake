@@ -21,24 +21,83 @@ function(ncpost_library name)
     FILES_MATCHING PATTERN "*.hpp")
 endfunction()
 
-# ncpost_add_test(FILE DEPS...): one Catch2 executable per *_test.cpp, registered with CTest.
-# Each test runs in its own folder, build/test-tmp/<folder>_<name> (also NCPOST_TEST_TMPDIR):
-# files a test writes by a relative name land there, so tests run by `ctest -j` cannot collide on
-# a file name (two tests once both wrote build/trr_identified.json).
-function(ncpost_add_test file)
-  get_filename_component(_name "${file}" NAME_WE)
-  file(RELATIVE_PATH _rel "${CMAKE_SOURCE_DIR}/tests" "${file}")
-  get_filename_component(_dir "${_rel}" DIRECTORY)
-  string(REPLACE "/" "_" _prefix "${_dir}")
-  set(_target "test_${_prefix}_${_name}")
-  set(_tmp "${CMAKE_BINARY_DIR}/test-tmp/${_prefix}_${_name}")
-  file(MAKE_DIRECTORY "${_tmp}")
-  add_executable(${_target} "${file}")
-  target_link_libraries(${_target} PRIVATE ncpost_catch_main ${ARGN})
-  target_compile_definitions(${_target} PRIVATE
-    NCPOST_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
-    NCPOST_BINARY="$<TARGET_FILE:ncpost>"
-    NCPOST_TEST_TMPDIR="${_tmp}")
-  add_test(NAME "${_prefix}/${_name}" COMMAND ${_target})
-  set_tests_properties("${_prefix}/${_name}" PROPERTIES WORKING_DIRECTORY "${_tmp}")
+# The flags every test unit is compiled with (a precompiled header is only used with the same).
+macro(ncpost_test_flags target)
+  target_link_libraries(${target} PRIVATE ncpost_catch_main ${ARGN})
+  target_compile_definitions(${target} PRIVATE NCPOST_SOURCE_DIR="${CMAKE_SOURCE_DIR}" NCPOST_BINARY="$<TARGET_FILE:ncpost>")
+endmacro()
+
+# ncpost_add_test_folder(FOLDER FILES... DEPS deps...): the *_test.cpp FILES of tests/FOLDER/ as
+# one Catch2 program, test_FOLDER (a few programs to link instead of one per file). CTest lists each
+# TEST_CASE on its own, named "<folder>/<file>: <case>" (cmake/ncpost_discover_tests.cmake, after
+# each build), and runs it in its file's own folder, build/test-tmp/<folder>_<file> (also
+# NCPOST_TEST_TMPDIR): files a test writes by a relative name cannot collide with another file's
+# under `ctest -j`, and the cases of one file never run at the same time (a RESOURCE_LOCK on that
+# folder), as when each file was a program of its own. Hidden cases ([.]) are not registered.
+# One file's cases by hand: `build/tests/test_FOLDER -# "[#<file>]"`.
+function(ncpost_add_test_folder folder)
+  cmake_parse_arguments(PARSE_ARGV 1 _arg "" "" "DEPS")
+  if(NOT TARGET ncpost_test_pch)  # the test programs' precompiled header, built once for all
+    file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/ncpost_test_pch.cpp" "// the tests' precompiled header\n")
+    add_library(ncpost_test_pch OBJECT "${CMAKE_CURRENT_BINARY_DIR}/ncpost_test_pch.cpp")
+    ncpost_test_flags(ncpost_test_pch ${_arg_DEPS})
+    ncpost_precompile(ncpost_test_pch <catch2/catch.hpp> <Eigen/Dense> <fmt/format.h> <algorithm> <cmath>
+                      <filesystem> <fstream> <functional> <map> <optional> <regex> <sstream> <string> <vector>)
+  endif()
+  set(_target "test_${folder}")
+  add_executable(${_target} ${_arg_UNPARSED_ARGUMENTS})
+  ncpost_test_flags(${_target} ${_arg_DEPS})
+  ncpost_precompile(${_target} REUSE_FROM ncpost_test_pch)
+  set(_seen "")
+  set(_files_list "")
+  foreach(_file ${_arg_UNPARSED_ARGUMENTS})
+    get_filename_component(_name "${_file}" NAME_WE)
+    file(RELATIVE_PATH _rel "${CMAKE_SOURCE_DIR}/tests" "${_file}")
+    get_filename_component(_dir "${_rel}" DIRECTORY)
+    string(REPLACE "/" "_" _prefix "${_dir}")
+    if(_name IN_LIST _seen)  # Catch2's file tag [#<file>] names the file without its folder
+      message(FATAL_ERROR "tests/${folder}/: two test files named ${_name}.cpp; rename one")
+    endif()
+    list(APPEND _seen "${_name}")
+    set(_tmp "${CMAKE_BINARY_DIR}/test-tmp/${_prefix}_${_name}")
+    file(MAKE_DIRECTORY "${_tmp}")
+    set_property(SOURCE "${_file}" APPEND PROPERTY COMPILE_DEFINITIONS NCPOST_TEST_TMPDIR="${_tmp}")
+    string(APPEND _files_list "${_name}|${_dir}/${_name}|${_tmp}\n")
+  endforeach()
+  set(_files "${CMAKE_CURRENT_BINARY_DIR}/${_target}_files.txt")
+  set(_ctest "${CMAKE_CURRENT_BINARY_DIR}/${_target}_tests.cmake")
+  file(WRITE "${_files}" "${_files_list}")
+  add_custom_command(TARGET ${_target} POST_BUILD BYPRODUCTS "${_ctest}"
+    COMMAND "${CMAKE_COMMAND}" -D "EXE=$<TARGET_FILE:${_target}>" -D "FILES=${_files}" -D "OUT=${_ctest}"
+            -P "${PROJECT_SOURCE_DIR}/cmake/ncpost_discover_tests.cmake"
+    VERBATIM)
+  set(_include "${CMAKE_CURRENT_BINARY_DIR}/${_target}_include.cmake")
+  file(WRITE "${_include}" "if(EXISTS \"${_ctest}\")\n  include(\"${_ctest}\")\nelse()\n"
+                           "  add_test(${_target}_NOT_BUILT ${_target}_NOT_BUILT)\nendif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${_include}")
+endfunction()
+
+# ncpost_precompile(TARGET HEADERS... | TARGET REUSE_FROM OTHER): TARGET's units start from a
+# precompiled header of cmake/eigen_checks.hpp and HEADERS (heavy third-party and standard headers
+# most of its units include: parsed once instead of once per unit), or from OTHER's (same flags).
+# GCC uses a precompiled header only if nothing comes before it, so the -include of
+# eigen_checks.hpp that every unit gets (CMakeLists.txt) moves into the header, first as before.
+function(ncpost_precompile target)
+  cmake_parse_arguments(PARSE_ARGV 1 _arg "" "REUSE_FROM" "")
+  get_target_property(_opts ${target} COMPILE_OPTIONS)
+  if(_opts)
+    list(FILTER _opts EXCLUDE REGEX "eigen_checks\\.hpp")
+    set_target_properties(${target} PROPERTIES COMPILE_OPTIONS "${_opts}")
+  endif()
+  if(_arg_REUSE_FROM)
+    target_precompile_headers(${target} REUSE_FROM ${_arg_REUSE_FROM})
+  else()
+    target_precompile_headers(${target} PRIVATE "${PROJECT_SOURCE_DIR}/cmake/eigen_checks.hpp" ${_arg_UNPARSED_ARGUMENTS})
+  endif()
+  # ccache caches units built on a precompiled header only with this sloppiness (ccache manual,
+  # "Precompiled headers"): given here to these targets when ccache is the launcher.
+  if(CMAKE_CXX_COMPILER_LAUNCHER MATCHES "ccache")
+    set_target_properties(${target} PROPERTIES CXX_COMPILER_LAUNCHER
+      "${CMAKE_COMMAND};-E;env;CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime;${CMAKE_CXX_COMPILER_LAUNCHER}")
+  endif()
 endfunction()
