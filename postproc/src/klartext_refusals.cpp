@@ -71,7 +71,7 @@ std::string refused_statement(const Block& b) {
       return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
   }
   return fmt::format("'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
-                     "FUNCTION TCPM; docs/formats.md); {}", shown, kPostCl);
+                     "FUNCTION TCPM); {}", shown, kPostCl);
 }
 
 std::optional<std::string> refused_m(int code) {
