@@ -19,6 +19,7 @@
 #include "ncpost/postproc/klartext_block.hpp"
 #include "ncpost/postproc/line_source.hpp"
 
+#include "klartext_cycle_def.hpp"
 #include "klartext_refusals.hpp"
 
 namespace ncpost::klartext {
@@ -77,6 +78,7 @@ struct KlartextReader::State {
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   double rpm = 0.0;
   bool delta_radius = false;  ///< TOOL CALL DR/DR2 not 0
+  Vec3d datum_shift_mm = Vec3d::Zero();    ///< CYCL DEF 7: added to absolute X Y Z words
   std::optional<Eigen::Vector2d> centre;   ///< CC
   std::optional<Eigen::Vector2d> tangent;  ///< direction of the last contour element in X Y
   bool begun = false;
@@ -316,6 +318,15 @@ struct KlartextReader::State {
       rtcp = false;
       return true;
     }
+    if (s == "CYCL DEF") {
+      cycle_def(b);
+      return true;
+    }
+    if (s == "PLANE RESET") {
+      if (b.text != "STAY") fail(b.column, refused_statement(b));
+      notice_once("PLANE RESET", b.column, "PLANE RESET STAY: no tilted plane is active (none is read), nothing moves");
+      return true;
+    }
     if (s == "CC") {
       circle_centre(b);
       return true;
@@ -419,6 +430,30 @@ struct KlartextReader::State {
     }
   }
 
+  /// CYCL DEF 7 (datum shift: X Y Z, absolute from the preset or I... from the last shift) and
+  /// CYCL DEF 32 (the TNC's tolerance: noted); every other cycle is refused by name.
+  void cycle_def(const Block& b) {
+    const CycleDef c = cycle_def_of(b, file, line_number);
+    if (c.number == 32 && c.part >= 0) {
+      notice_once("CYCL DEF 32", b.column, "CYCL DEF 32 (the TNC's path tolerance) is noted, not posted: the post's "
+                                           "tolerance is its own (--tolerance)");
+      return;
+    }
+    if (c.number != 7 || c.part < 0) fail(b.column, refused_statement(b));
+    if (c.part == 0) return;  // CYCL DEF 7.0 DATUM SHIFT: the header
+    if (c.rest.find('#') != std::string::npos)
+      fail(b.column, "CYCL DEF 7: a datum shift from the datum table (#n) is not read; program the shift's values");
+    if (c.words.size() != 1) fail(b.column, "CYCL DEF 7: expected one axis word per block (X+10, IY-5)");
+    const Word& w = c.words[0];
+    bool incremental = false;
+    const int slot = axis_slot(w.name, incremental);
+    if (slot < 0 || slot > 2)
+      fail(w.column, fmt::format("CYCL DEF 7: a shift of {} is not read (X, Y and Z are)", w.name));
+    if (w.q_parameter || !w.value) fail(w.column, fmt::format("CYCL DEF 7: {} without a number", w.name));
+    datum_shift_mm[slot] = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
+  }
+
   // FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS [REFPNT TIP-TIP]
   void tcpm(const Block& b) {
     for (std::size_t i = 0; i < b.words.size(); ++i) {
@@ -450,7 +485,7 @@ struct KlartextReader::State {
         fail(w.column, fmt::format("'{}' in CC: expected X and Y (the working plane of the tool axis Z)", w.name));
       if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
-      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value;
+      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value + datum_shift_mm[slot];
     }
     centre = c;
   }
@@ -473,7 +508,7 @@ struct KlartextReader::State {
         if (incremental && !known[s] && slot < 3)
           fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
         const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
-        bw.target[s] = incremental ? pos[s] + v : v;
+        bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 ? datum_shift_mm[slot] : 0.0);
         if (!incremental && slot >= 3 && shortest_rotary && known[s] && machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
           bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
         bw.programmed[s] = true;

@@ -18,7 +18,8 @@ struct Refusal {
 };
 
 constexpr Refusal kStatements[] = {
-    {"CYCL DEF", "a cycle definition (datum shift, tilted plane, drilling ...) is not read", kPostCl},
+    {"CYCL DEF", "this cycle (tilted plane, drilling, pocket ...) is not read (CYCL DEF 7 datum shift and 32 "
+                 "tolerance are)", kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"PLANE ", "a tilted working plane is not read", "post the CL data, or a program with M128 / FUNCTION TCPM and rotary words"},
     {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},

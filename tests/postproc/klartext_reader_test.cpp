@@ -233,7 +233,10 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
     CHECK(e.find("t.h:4:") == 0);
     CHECK(e.find(what) != std::string::npos);
   };
-  refused("3 CYCL DEF 7.0 DATUM SHIFT\n", "'CYCL DEF 7.0 DATUM SHIFT': a cycle definition");
+  refused("3 CYCL DEF 19.0 WORKING PLANE\n", "'CYCL DEF 19.0 WORKING PLANE': this cycle");
+  refused("3 CYCL DEF 7.1 #5\n", "datum table");
+  refused("3 CYCL DEF 7.1 C+10\n", "a shift of C is not read");
+  refused("3 PLANE RESET MOVE DIST50 F1000\n", "'PLANE RESET MOVE DIST50 F1000': a tilted working plane");
   refused("3 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE ~\n  Q201=-10 ;DEPTH\n", "CYCL DEF 200");
   refused("3 PLANE SPATIAL SPA+0 SPB+45 SPC+0 STAY\n", "'PLANE SPATIAL SPA+0");
   refused("3 RND R5\n", "'RND R5': a rounding");
@@ -268,6 +271,40 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   klartext::ReaderOptions lax;
   lax.allow_unterminated = true;
   CHECK(only<cl::End>(read("0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+10 FMAX\n", lax).records).size() == 1);
+}
+
+TEST_CASE("klartext: CYCL DEF 7 shifts the datum (absolute from the preset, I... from the last shift); 32 is noted") {
+  const Read r = read(program(
+      "1 TOOL CALL 1 Z S100\n"
+      "2 CYCL DEF 7.0 DATUM SHIFT\n"
+      "3 CYCL DEF 7.1 X+10\n"
+      "4 CYCL DEF 7.2 Y-5\n"
+      "5 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+      "6 CYCL DEF 7.1 IX+2\n"
+      "7 L X+1 F100\n"
+      "8 L IY+1\n"
+      "9 CC X+0 Y+1\n"            // the pole at (12, -4) in the preset's coordinates
+      "10 C X+0 Y+2 DR+\n"        // a quarter circle from (13, -4) to (12, -3)
+      "11 CYCL DEF 7.0 DATUM SHIFT\n"
+      "12 CYCL DEF 7.1 X+0\n"
+      "13 CYCL DEF 7.2 Y+0\n"
+      "14 L X+1 Y+1\n"
+      "15 CYCL DEF 32.0 TOLERANCE\n"
+      "16 CYCL DEF 32.1 T0.02\n"
+      "17 PLANE RESET STAY\n"));
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 5);
+  check_tip(ms[0], 10, -5, 10);
+  check_tip(ms[1], 13, -5, 10);
+  check_tip(ms[2], 13, -4, 10);
+  // C X+0 Y+2 ends at (12, -3): 1 mm from the pole (12, -4) as the start (13, -4) is
+  check_tip(ms[3], 12, -3, 10);
+  const auto circles = only<cl::Circle>(r.records);
+  REQUIRE(circles.size() == 1);
+  CHECK((circles[0].center_mm - Vec3d(12, -4, 10)).norm() < 1e-12);
+  check_tip(ms[4], 1, 1, 10);
+  CHECK(any_contains(r.notices, "CYCL DEF 32"));
+  CHECK(any_contains(r.notices, "PLANE RESET STAY"));
 }
 
 TEST_CASE("klartext: machine limits make the program infeasible") {
