@@ -198,7 +198,13 @@ const Word* Block::find(std::string_view name) const {
 
 Block parse_block(std::string_view line, const std::string& file, int line_number) {
   Block b;
-  // the comment first: ';' outside a "..." string
+  // a '~' at the end continues the block on the next line (also after a comment: Q200=2 ;TEXT ~)
+  while (!line.empty() && is_blank(line.back())) line.remove_suffix(1);
+  if (!line.empty() && line.back() == '~') {
+    b.continued = true;
+    line.remove_suffix(1);
+  }
+  // the comment: ';' outside a "..." string
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
     if (line[i] == '"') quoted = !quoted;
@@ -211,10 +217,6 @@ Block parse_block(std::string_view line, const std::string& file, int line_numbe
   }
   std::string_view body = line;
   while (!body.empty() && is_blank(body.back())) body.remove_suffix(1);
-  if (!body.empty() && body.back() == '~') {
-    b.continued = true;
-    body.remove_suffix(1);
-  }
   Cursor c(body, file, line_number);
   c.skip_blanks();
   if (c.peek() == '/') {

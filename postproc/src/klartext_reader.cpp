@@ -10,6 +10,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "ncpost/kinematics/forward.hpp"
@@ -20,6 +21,7 @@
 #include "ncpost/postproc/line_source.hpp"
 
 #include "klartext_cycle_def.hpp"
+#include "klartext_drilling.hpp"
 #include "klartext_refusals.hpp"
 
 namespace ncpost::klartext {
@@ -98,6 +100,9 @@ struct KlartextReader::State {
   bool rotary_zero_noticed = false;
   std::vector<std::string> notices;
   std::set<std::string> noticed;
+
+  std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
+  std::optional<DrillingCycle> drilling;                   ///< CYCL DEF 200, for CYCL CALL and M99
 
   // the current line, for messages
   int line_number = 0;
@@ -275,9 +280,11 @@ struct KlartextReader::State {
     line_number = source.line_number();
     line_text = echo_of(line);
     Block b = parse_block(line, file, line_number);
-    while (b.continued) {  // the continuation lines of a cycle: read with it, refused with it
+    continuation.clear();
+    while (b.continued) {  // the continuation lines of a cycle (its Q parameters)
       std::string_view more;
       if (!source.next(more)) break;
+      continuation.emplace_back(std::string(more), source.line_number());
       b.continued = parse_block(more, file, source.line_number()).continued;
     }
     if (b.empty()) return true;
@@ -320,6 +327,11 @@ struct KlartextReader::State {
     }
     if (s == "CYCL DEF") {
       cycle_def(b);
+      return true;
+    }
+    if (s == "CYCL CALL") {
+      if (!b.text.empty()) fail(b.column, refused_statement(b));
+      call_cycle(at(b.column), b.column);
       return true;
     }
     if (s == "PLANE RESET") {
@@ -439,6 +451,10 @@ struct KlartextReader::State {
                                            "tolerance is its own (--tolerance)");
       return;
     }
+    if (c.number == 200 && c.part < 0) {
+      define_drilling(b);
+      return;
+    }
     if (c.number != 7 || c.part < 0) fail(b.column, refused_statement(b));
     if (c.part == 0) return;  // CYCL DEF 7.0 DATUM SHIFT: the header
     if (c.rest.find('#') != std::string::npos)
@@ -452,6 +468,47 @@ struct KlartextReader::State {
     if (w.q_parameter || !w.value) fail(w.column, fmt::format("CYCL DEF 7: {} without a number", w.name));
     datum_shift_mm[slot] = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
     notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
+  }
+
+  /// CYCL DEF 200 with its Q parameters on the '~' lines.
+  void define_drilling(const Block& b) {
+    std::map<int, double> q;
+    for (const auto& [text, line] : continuation) {
+      const std::optional<QAssignment> a = q_assignment(text);
+      if (!a) continue;  // (a comment line)
+      if (!a->value)
+        throw InputError({file, line, 0},
+                         fmt::format("Q{}={}: a cycle parameter that is not a number is not read; program the value",
+                                     a->number, a->text),
+                         echo_of(text));
+      q[a->number] = *a->value;
+    }
+    auto d = drilling_200(q, at(b.column));
+    if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
+    drilling = std::get<DrillingCycle>(d);
+  }
+
+  /// CYCL CALL or M99: one hole of CYCL DEF 200 where the tool stands (X Y), its top at Q203.
+  void call_cycle(cl::Location where, int column) {
+    if (!drilling) fail(column, "a cycle call without CYCL DEF 200 before it (other cycles are not read)");
+    if (rtcp) fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
+    if (!settled || !known[0] || !known[1] || !known[2])
+      fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
+    ProgramPoint top = pos;
+    top[2] = drilling->surface_mm + datum_shift_mm.z();
+    cl::Motion hole = locate(top, false, where);
+    ProgramPoint below = top;
+    below[2] -= 1.0;
+    if ((hole.point.tip_mm - tip_of(below, false) - hole.point.axis).norm() > 1e-6)
+      fail(column, "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
+    cl::Cycle c = drilling->cycle;
+    c.where = where;
+    emit(c);
+    emit(hole);  // (not rapid: the hole of the cycle)
+    cl::Cycle off;
+    off.where = where;
+    emit(off);
+    pos[2] = top[2] + drilling->return_mm;  // where the TNC leaves the tool
   }
 
   // FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS [REFPNT TIP-TIP]
@@ -577,9 +634,15 @@ struct KlartextReader::State {
     const bool path = b.statement != "M" && b.statement != "STOP";
     if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
       fail(b.column, fmt::format("{} with path words: program them in an L block", b.statement));
-    bool m140 = false, program_end = false;
+    bool m140 = false, program_end = false, cycle_call = false;
+    int cycle_call_column = 0;
     std::vector<cl::Record> after;
     for (const auto& [code, column] : bw.m) {
+      if (code == 99) {  // the cycle, at the end of the block's positioning
+        cycle_call = true;
+        cycle_call_column = column;
+        continue;
+      }
       if (auto why = refused_m(code)) fail(column, *why);
       const cl::Location mat = at(column);
       switch (code) {
@@ -628,6 +691,7 @@ struct KlartextReader::State {
       emit(cl::Feed{where, *bw.feed, false});
     }
     if (path) path_of(b, bw, where);
+    if (cycle_call) call_cycle(at(cycle_call_column), cycle_call_column);
     if (b.statement == "STOP") after.push_back(cl::Stop{where, false, ""});
     if (m140) retract(bw);
     for (auto& r : after) emit(std::move(r));

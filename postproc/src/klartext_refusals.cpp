@@ -18,8 +18,8 @@ struct Refusal {
 };
 
 constexpr Refusal kStatements[] = {
-    {"CYCL DEF", "this cycle (tilted plane, drilling, pocket ...) is not read (CYCL DEF 7 datum shift and 32 "
-                 "tolerance are)", kPostCl},
+    {"CYCL DEF", "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
+                 "shift, 32 tolerance and 200 drilling are)", kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"PLANE ", "a tilted working plane is not read", "post the CL data, or a program with M128 / FUNCTION TCPM and rotary words"},
     {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
@@ -46,7 +46,6 @@ struct MRefusal {
 constexpr MRefusal kMFunctions[] = {
     {89, "a modal cycle call: cycles are not read; post the CL data"},
     {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
-    {99, "a cycle call: cycles are not read; post the CL data"},
     {97, "a small contour step (radius compensation) is not read"},
     {101, "automatic tool change with a replacement tool is not read"},
     {114, "the automatic tool-length compensation of tilted axes (M114) gives X Y Z another meaning: not read; "

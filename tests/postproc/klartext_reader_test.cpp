@@ -99,6 +99,9 @@ TEST_CASE("klartext block: words, signs, FMAX, strings, comments, structure bloc
   CHECK(dr.words[2].sign == '-');
   CHECK_FALSE(dr.words[2].value);
   CHECK(klartext::parse_block("L X+Q12", "t.h", 6).words[0].q_parameter);
+  const auto q = klartext::parse_block("  Q200=+2 ;SET-UP CLEARANCE ~ ", "t.h", 7);
+  CHECK(q.continued);
+  CHECK(q.comment == "SET-UP CLEARANCE");
   CHECK(klartext::looks_like_klartext("0 BEGIN PGM 1 MM\n1 L X+0"));
   CHECK(klartext::looks_like_klartext("\xEF\xBB\xBF; header\r\nBEGIN  PGM PART mm\r\n"));
   CHECK_FALSE(klartext::looks_like_klartext("G0 X0\n0 BEGIN PGM 1 MM\n"));
@@ -249,7 +252,9 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 L X+Q1\n", "X+Q1: Q parameters are not read");
   refused("3 L X+10 FQ1\n", "FQ");
   refused("3 L Z+10 R0 FMAX M91\n", "M91 with axis words");
-  refused("3 L X+10 FMAX M99\n", "M99: a cycle call");
+  refused("3 L X+10 FMAX M99\n", "a cycle call without CYCL DEF 200 before it");
+  refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "'CYCL DEF 203 UNIVERSAL DRILLING': this cycle");
+  refused("3 M89\n", "M89: a modal cycle call");
   refused("3 M114\n", "M114");
   refused("3 TOOL CALL \"D10\" Z S100\n", "a tool called by name");
   refused("3 TOOL CALL 2 Z DL+0.5\n", "DL+0.5");
@@ -305,6 +310,74 @@ TEST_CASE("klartext: CYCL DEF 7 shifts the datum (absolute from the preset, I...
   check_tip(ms[4], 1, 1, 10);
   CHECK(any_contains(r.notices, "CYCL DEF 32"));
   CHECK(any_contains(r.notices, "PLANE RESET STAY"));
+}
+
+/// CYCL DEF 200 with the parameters of the TNC manual's example, the surface at Z+1.
+const std::string kDrilling =
+    "3 CYCL DEF 200 DRILLING ~\n"
+    "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+    "  Q201=-15 ;DEPTH ~\n"
+    "  Q206=+150 ;FEED RATE FOR PLNGNG ~\n"
+    "  Q202=+5 ;PLUNGING DEPTH ~\n"
+    "  Q210=+0 ;DWELL TIME AT TOP ~\n"
+    "  Q203=+1 ;SURFACE COORDINATE ~\n"
+    "  Q204=+20 ;2ND SET-UP CLEARANCE ~\n"
+    "  Q211=+0 ;DWELL TIME AT DEPTH ~\n"
+    "  Q395=+0 ;DEPTH REFERENCE\n";
+
+TEST_CASE("klartext: CYCL DEF 200 drilled at M99 and CYCL CALL, the hole's top at Q203") {
+  const Read r = read(program("1 TOOL CALL 4 Z S2000\n2 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX M3\n" + kDrilling +
+                              "4 L X+30 Y+20 R0 FMAX M99\n5 L X+40 FMAX\n6 CYCL CALL\n7 L Z+50 FMAX\n"));
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 6);
+  check_tip(ms[1], 30, 20, 50);
+  CHECK(ms[1].rapid);
+  check_tip(ms[2], 30, 20, 1);   // the hole: its top, the surface Q203
+  CHECK_FALSE(ms[2].rapid);
+  CHECK(ms[2].where.line == 14);
+  check_tip(ms[3], 40, 20, 21);  // the TNC left the tool at the 2nd set-up clearance, 20 above the surface
+  check_tip(ms[4], 40, 20, 1);
+  CHECK(ms[4].where.line == 16);
+  check_tip(ms[5], 40, 20, 50);
+  const auto cycles = only<cl::Cycle>(r.records);
+  REQUIRE(cycles.size() == 4);
+  const cl::Cycle& c = cycles[0];
+  CHECK(c.kind == cl::Cycle::Kind::deep);  // plunging depth 5 < depth 15: pecks with a full retract
+  CHECK(c.depth_mm == 15);
+  CHECK(c.rapid_to_mm == 2);
+  REQUIRE(c.retract_mm);
+  CHECK(*c.retract_mm == 20);
+  CHECK(c.peck_mm == 5);
+  REQUIRE(c.feed);
+  CHECK(*c.feed == 150);
+  CHECK(cycles[1].kind == cl::Cycle::Kind::off);
+  // the record order of a call: the cycle, the hole, the cycle off
+  const std::size_t none = r.records.size();
+  std::size_t cycle_at = none, hole_at = none, off_at = none;
+  for (std::size_t i = 0; i < r.records.size(); ++i) {
+    const auto* k = std::get_if<cl::Cycle>(&r.records[i]);
+    if (k && k->kind != cl::Cycle::Kind::off && cycle_at == none) cycle_at = i;
+    if (k && k->kind == cl::Cycle::Kind::off && off_at == none) off_at = i;
+    const auto* m = std::get_if<cl::Motion>(&r.records[i]);
+    if (m && m->where.line == 14 && !m->rapid && hole_at == none) hole_at = i;
+  }
+  CHECK(cycle_at < hole_at);
+  CHECK(hole_at < off_at);
+  // one plunge when Q202 reaches the depth; its dwell Q211 is the cycle's
+  std::string one = kDrilling;
+  one.replace(one.find("Q202=+5"), 7, "Q202=20");
+  one.replace(one.find("Q211=+0"), 7, "Q211=.5");
+  const auto single = only<cl::Cycle>(read(program("1 L X+0 Y+0 Z+50 R0 FMAX\n" + one + "4 CYCL CALL\n")).records);
+  REQUIRE(single.size() == 2);
+  CHECK(single[0].kind == cl::Cycle::Kind::drill);
+  CHECK(single[0].dwell_s == 0.5);
+  // parameters that change the meaning are refused by name
+  std::string top_dwell = kDrilling;
+  top_dwell.replace(top_dwell.find("Q210=+0"), 7, "Q210=+1");
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+50 R0 FMAX\n" + top_dwell)), Catch::Contains("Q210=1"));
+  std::string auto_feed = kDrilling;
+  auto_feed.replace(auto_feed.find("Q206=+150"), 9, "Q206=FAUTO");
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+50 R0 FMAX\n" + auto_feed)), Catch::Contains("t.h:6: Q206=FAUTO"));
 }
 
 TEST_CASE("klartext: machine limits make the program infeasible") {

@@ -156,6 +156,40 @@ TEST_CASE("klartext re-post: a five-axis machine-axis program on the AC trunnion
   CHECK(same(got.front(), ends.front()));
 }
 
+TEST_CASE("klartext re-post: CYCL DEF 200 becomes G83 with the planes of its Q parameters") {
+  const std::string text =
+      "0 BEGIN PGM DRILL MM\n"
+      "1 TOOL CALL 4 Z S2000\n"
+      "2 L X+0 Y+0 Z+50 R0 FMAX M3\n"
+      "3 CYCL DEF 200 DRILLING ~\n"
+      "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+      "  Q201=-15 ;DEPTH ~\n"
+      "  Q206=+150 ;FEED RATE FOR PLNGNG ~\n"
+      "  Q202=+5 ;PLUNGING DEPTH ~\n"
+      "  Q210=+0 ;DWELL TIME AT TOP ~\n"
+      "  Q203=+1 ;SURFACE COORDINATE ~\n"
+      "  Q204=+20 ;2ND SET-UP CLEARANCE\n"
+      "4 L X+30 Y+20 R0 FMAX M99\n"
+      "5 L Z+50 FMAX M5\n"
+      "6 END PGM DRILL MM\n";
+  const std::string nc = post_klartext(text, load_machine(test::source("machines/vmcl600.toml")), test::vmcl600_setup());
+  INFO(nc);
+  // the surface Z1: the R plane 2 above it (R3), the bottom 15 below it (Z-14), pecks of 5
+  const Written w = positions_of(nc);
+  int holes = 0;
+  for (const auto& b : w.blocks)
+    if (b.find("G83") != std::string::npos) {
+      ++holes;
+      for (const char* word : {"X30.0000", "Y20.0000", "Z-14.0000", "R3.0000", "Q5.0000", "F150.0"}) {
+        INFO(word);
+        CHECK(b.find(word) != std::string::npos);
+      }
+    }
+  CHECK(holes == 1);
+  REQUIRE_FALSE(w.positions.empty());
+  CHECK(same(w.positions.back(), Position{30, 20, 50, 0, 0}));
+}
+
 TEST_CASE("klartext input: detected by its BEGIN PGM, or named with --input-kind klartext") {
   CHECK(input_kind_named("klartext") == InputKind::klartext);
   const std::string text = "0 BEGIN PGM D MM\n1 L X+1 Y+2 Z+3 A+0 C+0 R0 FMAX\n2 END PGM D MM\n";

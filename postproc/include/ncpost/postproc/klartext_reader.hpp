@@ -19,9 +19,10 @@
 // rotary path) / M127, M128 / M129, FUNCTION TCPM / FUNCTION RESET TCPM, M140 MB MAX|n (a rapid
 // along the tool axis: the machine Z, on a machine without a tilting head), STOP, and the paths
 // CC, C, CR, CT, CP (klartext_arc.hpp): a cl::Circle and its end motion for a single-turn arc,
-// else points within `arc_chord_tolerance_mm`.
-// Refused by name with file:line:column and what to do: everything else (CYCL DEF, PLANE, RND, CHF,
-// LP, APPR/DEP, Q parameters, FN, LBL / CALL, M91 / M92 beside axis words, M99, M114, M116, M94,
+// else points within `arc_chord_tolerance_mm`; CYCL DEF 7 (datum shift), 32 (noted), 200 (drilling,
+// klartext_drilling.hpp) called by CYCL CALL or M99; PLANE RESET STAY (noted).
+// Refused by name with file:line:column and what to do: everything else (other cycles, PLANE, RND, CHF,
+// LP, APPR/DEP, Q parameters, FN, LBL / CALL, M91 / M92 beside axis words, M89, M114, M116, M94,
 // TOOL CALL by name, DL, INCH programs, FUNCTION TCPM with AXIS SPAT / F CONT / REFPNT other than
 // TIP-TIP / PATHCTRL VECTOR).
 // Start: rapids before X, Y and Z are all programmed are held and take those axes' first
