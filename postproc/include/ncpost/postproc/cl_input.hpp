@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The reader of a post's input: APT CL data, or G-code (machine axes or tool tip under RTCP) read
-// back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
+// The reader of a post's input: APT CL data, G-code (machine axes or tool tip under RTCP) or a
+// Heidenhain Klartext program read back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
 // the first 4 KiB of the stream, which is then put back where it was: the stream must be seekable.
 #include <istream>
 #include <memory>
@@ -21,9 +21,10 @@ enum class InputKind {
   cl,         ///< APT CL data
   machine,    ///< G-code with machine axis positions
   rtcp,       ///< G-code with the tool tip in W and rotary angles (RTCP)
+  klartext,   ///< a Heidenhain conversational program (klartext_reader.hpp); detected by its BEGIN PGM
 };
 
-/// "auto", "cl", "machine", "rtcp" (the CLI words); std::invalid_argument otherwise.
+/// "auto", "cl", "machine", "rtcp", "klartext" (the CLI words); std::invalid_argument otherwise.
 InputKind input_kind_named(const std::string& name);
 
 /// Opens the reader of `in` for its kind. InputError (naming `name`) when `automatic` finds an
