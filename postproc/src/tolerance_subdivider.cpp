@@ -133,6 +133,40 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
   return turn_in_place(machine, setup, solver, data, from, *swing, errors, tolerance_mm);
 }
 
+/// The free angle a block arrives with at an end exactly at the singular pose: the CL axis reaches
+/// the pole on a great circle whose azimuth is the start's, so the free axis keeps the start's angle.
+/// nullopt: the end is not exactly singular, or its programmed angle is that one already.
+std::optional<RotaryAngles> singular_end_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
+  if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return std::nullopt;
+  for (const RotarySolution& r : rotary_solutions(machine, to.cl.axis)) {
+    if (r.free_axis < 0) continue;
+    RotaryAngles d = RotaryAngles::Zero(2);
+    d[r.free_axis] = to.q.rotary_rad[r.free_axis] - from.q.rotary_rad[r.free_axis];
+    if (std::abs(d[r.free_axis]) <= kSingularJumpRad) return std::nullopt;
+    return d;
+  }
+  return std::nullopt;
+}
+
+/// The commands the block arrives with at a singular end (the free angle of the start's).
+AxisPosition arrival_at_singular_end(const Machine& machine, const KinematicModel& solver, SolverData& data,
+                                     const SolvedPoint& from, const SolvedPoint& to) {
+  RotaryAngles rotary = to.q.rotary_rad;
+  if (const auto d = singular_end_swing(machine, from, to)) rotary -= *d;
+  return solver.with_rotary(to.cl, rotary, data);
+}
+
+/// The turn in place at a singular end from the arrival angle to the programmed one (empty: none).
+template <class Errors>
+std::vector<SolvedPoint> turn_at_singular_end(const Machine& machine, const Setup& setup, const KinematicModel& solver,
+                                              SolverData& data, const SolvedPoint& from, const SolvedPoint& to,
+                                              const Errors& errors, double tolerance_mm) {
+  const std::optional<RotaryAngles> swing = singular_end_swing(machine, from, to);
+  if (!swing) return {};
+  const SolvedPoint arrival{to.cl, arrival_at_singular_end(machine, solver, data, from, to)};
+  return turn_in_place(machine, setup, solver, data, arrival, *swing, errors, tolerance_mm);
+}
+
 }  // namespace
 
 double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint& a, const ClPoint& b) {
@@ -173,14 +207,20 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
       std::vector<SolvedPoint> points =
           turn_at_singular_start(machine, setup, solver, data, from, to, errors, inner_tolerance_mm);
       const SolvedPoint start = points.empty() ? from : SolvedPoint{from.cl, points.back().q};
-      const nonlinear::ClBlock block{start.cl, to.cl, start.q, to.q, points.empty() ? from.executed : std::nullopt,
-                                     to.executed};
+      // a block that ends exactly at the singular pose with another free angle than it arrives
+      // with (G-code input programs it): arrive with the approach's angle, then turn in place
+      const std::vector<SolvedPoint> end_turn =
+          turn_at_singular_end(machine, setup, solver, data, start, to, errors, inner_tolerance_mm);
+      const SolvedPoint end = end_turn.empty() ? to : SolvedPoint{to.cl, arrival_at_singular_end(machine, solver, data, start, to)};
+      const nonlinear::ClBlock block{start.cl, end.cl, start.q, end.q, points.empty() ? from.executed : std::nullopt,
+                                     end_turn.empty() ? to.executed : std::nullopt};
       const nonlinear::SplitBlock split = nonlinear::compensate_block(machine, setup, block, errors, ik, c);
       if (!split.ok())
         throw Infeasible(fmt::format("the move cannot be cut within the tolerance {:.4g} mm: {}", c.tolerance_mm,
                                      rounded_in(split.failure, inner_tolerance_mm)));
-      points.reserve(points.size() + split.nodes.size());
+      points.reserve(points.size() + split.nodes.size() + end_turn.size());
       for (const auto& node : split.nodes) points.push_back({node.cl, node.q});
+      for (const SolvedPoint& p : end_turn) points.push_back(p);
       return points;
     };
     return actual ? cut(actual->errors_from(data.stands)) : cut(NominalErrors{});

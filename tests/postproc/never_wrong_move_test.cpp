@@ -260,3 +260,35 @@ TEST_CASE("a CUTCOM radius register that the dialect cannot write is refused, no
     CHECK(p.program.find("G41 D14") != std::string::npos);
   }
 }
+
+TEST_CASE("a G-code move that ends at the singular pose with another free angle posts: it arrives, then turns", "[post][singular]") {
+  // from A10 C15 to A0 C0: the tool axis reaches +Z on the great circle of azimuth C15, where C is
+  // free; the source programs C0 there, so C turns in place at the end (was: exit 3, 'error at t = 1')
+  const std::string source_nc = "%\nO0001\nG90 G21 G94 G17\nT1 M6\nG43 H1\nG0 X10 Y0 Z60 A10 C15\nG1 Z50 F500\n"
+                                "Y5 A0 C0\nM30\n%\n";
+  const std::string dir = make_temp_dir("singular_end");
+  const std::string in = write_text_file(dir + "/s.nc", source_nc), out = dir + "/o.nc", log = dir + "/o.log";
+  const int rc = run_ncpost("post --machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50 -o " +
+                                out + " " + in, log);
+  INFO(read_text_file(log));
+  REQUIRE(rc == 0);
+  const ExecJob job{V3(0, 0, 50), 0.0};
+  const Executor src(source("machines/ac-trunnion.toml"), job, source_nc);
+  const Executor ex(source("machines/ac-trunnion.toml"), job, read_text_file(out));
+  const ExecBlock& last_src = src.blocks.back();
+  const V3 a = src.at(last_src, 0.0).tip_W, b = src.at(last_src, 1.0).tip_W;
+  double worst = 0.0;
+  bool in_move = false;
+  for (const ExecBlock& blk : ex.blocks) {
+    if (blk.kind == ExecBlock::Kind::rapid) continue;
+    if (!in_move && (ex.at(blk, 0.0).tip_W - a).norm() > 1e-3) continue;
+    in_move = true;
+    for (int i = 0; i <= 50; ++i) worst = std::max(worst, from_segment(ex.at(blk, i / 50.0).tip_W, a, b));
+  }
+  CHECK(in_move);
+  CHECK(worst <= 0.01 + 1e-6);
+  const ExecPose end = ex.at(ex.blocks.back(), 1.0), want = src.at(last_src, 1.0);
+  CHECK((end.tip_W - want.tip_W).norm() < 1e-3);
+  CHECK((end.axis_W - want.axis_W).norm() < 1e-4);
+  CHECK(ex.blocks.back().to.at('C') == Approx(0.0).margin(1e-4));  // the programmed C at the end
+}
