@@ -664,7 +664,8 @@ struct GcodeClReader::State {
         throw InputError({file, where.line, where.column},
                          fmt::format("{} stands at its reference point since line {} (G28/G30/G53), a position the "
                                      "machine file does not give: this motion does not say where {} goes (program "
-                                     "{} absolutely on the first motion after the return)", L, reference_line, L, L),
+                                     "{} absolutely on the first motion after the return, or give the machine file "
+                                     "[axes.{}] reference = ...)", L, reference_line, L, L, L),
                          std::string(line));
       at_reference[i] = false;
     }
@@ -688,10 +689,22 @@ struct GcodeClReader::State {
     return p;
   }
 
-  /// G28/G30 (the intermediate point, then Z to the top of its travel; X, Y and rotary axes to a
-  /// reference the machine file does not give: the next motion must program them) or G53 (the
-  /// motion to machine coordinates). Before the program's start is settled nothing is known of
-  /// where the tool stands: the move is a comment and the first programmed values place the start.
+  /// Where G28 (`second`: G30) puts the axis, in M (mm or rad): the machine file's `reference`
+  /// (`reference2`); Z without `reference` goes to the top of its travel. nullopt where not given.
+  std::optional<double> reference_point(const Axis& axis, bool second) const {
+    if (second) return axis.reference2;
+    if (axis.reference) return axis.reference;
+    if (axis.letter == 'Z' && axis.limits) return axis.limits->max;
+    return std::nullopt;
+  }
+
+  /// G28/G30 (the intermediate point, then the named axes to their reference point) or G53 (the
+  /// motion to machine coordinates, counted from the reference point): the machine file's
+  /// `reference`/`reference2` place them (Z's reference is the top of its travel when not given).
+  /// An axis whose reference the file does not give must be programmed on the next motion (G28,
+  /// G53; a rotary axis under G53 takes its machine angle); G30 without `reference2` is refused.
+  /// Before the program's start is settled nothing is known of where the tool stands: the move
+  /// is a comment and the first programmed values place the start.
   void queue_machine_move(const BlockEffect& fx, cl::Location where, std::string_view line,
                           const std::array<bool, 6>& known_prior) {
     const MachineMove& mm = *fx.machine_move;
@@ -710,39 +723,53 @@ struct GcodeClReader::State {
     }
     if (mm.kind == MachineMove::Kind::reference && fx.has_motion) queue_linear(fx, where, known_prior);
     ProgramPoint p = interpreter.state().position;
-    // the control's machine coordinates count from each axis's reference point (Fanuc, Haas,
-    // LinuxCNC homing); Z's is the top of its travel in the machine file, the others' are not known
     std::array<std::optional<double>, 3> machine_mm{};
     const bool given = mm.kind == MachineMove::Kind::machine;
+    const bool second = mm.code == "G30";
     bool moves = false;
+    std::string placed, unknown;
     for (std::size_t i = 0; i < 6; ++i) {
       if (!mm.axes[i]) continue;
-      if (i == 2) {
-        if (machine.axes.size() < 3 || !machine.axes[2].limits)
-          throw InputError({file, where.line, mm.column},
-                           fmt::format("{} Z: the machine file gives no Z travel, so the top of Z (its reference "
-                                       "point) is not known", mm.code), std::string(line));
-        machine_mm[2] = machine.axes[2].limits->max + (given ? mm.machine_value[2] : 0.0);
+      const char L = "XYZABC"[i];
+      const int ai = machine.index_of(L);
+      if (ai < 0) continue;  // G28 alone names X Y Z; the interpreter refuses letters the machine lacks
+      const Axis& axis = machine.axes[static_cast<std::size_t>(ai)];
+      const std::optional<double> ref = reference_point(axis, second);
+      const double offset = given ? mm.machine_value[i] : 0.0;
+      if (second && !ref)
+        throw InputError({file, where.line, mm.column},
+                         fmt::format("G30 {}: the second reference point of {} is not in the machine file {}: give "
+                                     "it as [axes.{}] reference2 = ... ({})", L, L, machine.name, L,
+                                     axis.is_rotary() ? "deg" : "mm"),
+                         std::string(line));
+      const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
+      if (ref || (given && axis.is_rotary())) {
+        const double target = ref.value_or(0.0) + offset;
+        if (i < 3) machine_mm[i] = target;
+        else p[i] = target;
         moves = true;
-      } else if (i > 2 && given) {
-        p[i] = mm.machine_value[i];  // a rotary axis's machine angle is its program angle
-        moves = true;
+        const char* unit = axis.is_rotary() ? "deg" : "mm";
+        const std::string from = !ref ? std::string("its machine angle")
+                                 : offset != 0.0 ? fmt::format("{:.3f} {} from", offset * scale, unit)
+                                                 : std::string("at");
+        const std::string point = L == 'Z' && !axis.reference && !second ? "the top of its travel (machine file)"
+                                  : second ? "its second reference point (machine file)"
+                                           : "its reference point (machine file)";
+        placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", placed.empty() ? "" : "; ", L, target * scale, unit,
+                              from, ref ? " " + point : std::string());
       } else {
         at_reference[i] = true;
         reference_line = where.line;
+        unknown += unknown.empty() ? std::string(1, L) : fmt::format(", {}", L);
       }
     }
     notices.push_back(fmt::format(
         "{}:{}:{}: {}: {}{}", file, where.line, mm.column, mm.code,
-        machine_mm[2] ? fmt::format("Z goes to {:.3f} mm, {} the top of its travel (machine file), as a rapid",
-                                    *machine_mm[2], given && mm.machine_value[2] != 0.0
-                                                        ? fmt::format("{:.3f} mm from", mm.machine_value[2])
-                                                        : std::string("at"))
-                      : std::string("Z does not move"),
-        std::any_of(at_reference.begin(), at_reference.end(), [](bool b) { return b; })
-            ? "; the other axes named go to (or count from) their reference point, which the machine file does not "
-              "give: the next motion must program them"
-            : ""));
+        placed.empty() ? std::string("Z does not move") : placed + ", as a rapid",
+        unknown.empty() ? ""
+                        : fmt::format("; {} go(es) to (or count(s) from) a reference point the machine file does not "
+                                      "give ([axes.{}] reference): the next motion must program it", unknown,
+                                      unknown.front())));
     if (!moves) return;
     p = with_machine_linear(p, machine_mm);
     cl::Motion m = motion_at(p, where);
