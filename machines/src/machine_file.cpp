@@ -39,7 +39,7 @@ Vec3d read_vector(const std::string& file, const toml::node& n, const std::strin
 
 Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   const std::string section = fmt::format("axes.{}", letter);
-  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits"}, section);
+  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2"}, section);
   Axis axis;
   axis.letter = letter;
   auto type = t["type"].value<std::string>();
@@ -66,6 +66,18 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
     if (const toml::node* n = t.get("limits")) axis.limits = toml_reading::read_limits(file, *n, kPi / 180.0, "");
   } else {
     fail(file, *t.get("type"), fmt::format("type: expected \"linear\" or \"rotary\", got \"{}\"", *type));
+  }
+  // the reference points (G28 and G30), in the axis's unit; within its travel where it has one
+  const double scale = axis.is_rotary() ? kPi / 180.0 : 1.0;
+  for (const char* key : {"reference", "reference2"}) {
+    const toml::node* n = t.get(key);
+    if (!n) continue;
+    const auto v = n->value<double>();
+    if (!v || !std::isfinite(*v)) fail(file, *n, fmt::format("{}: expected a finite number ({})", key, axis.is_rotary() ? "deg" : "mm"));
+    if (axis.limits && !axis.limits->contains(*v * scale, 1e-9))
+      fail(file, *n, fmt::format("{}: {} lies outside the axis's limits [{}, {}]", key, *v, axis.limits->min / scale,
+                                 axis.limits->max / scale));
+    (std::string_view(key) == "reference" ? axis.reference : axis.reference2) = *v * scale;
   }
   return axis;
 }

@@ -118,8 +118,26 @@ const auto blank = x3::char_(" \t");
 const auto number = x3::rule<struct number_tag>{"number"} = real_number[on_value];
 const auto word = x3::rule<struct word_tag>{"word"} = letter_char[on_letter] > number;
 const auto close_paren = x3::rule<struct close_tag>{"')' closing the comment"} = x3::lit(')');
-const auto paren_comment = x3::rule<struct paren_tag>{"comment"} =
-    x3::raw[x3::lit('(') >> x3::lexeme[*(x3::char_ - ')')]][on_comment] > close_paren;
+/// '(' and the comment's text up to its closing ')' (not consumed: `close_paren` expects it),
+/// parentheses inside it balanced: `(TEST (NESTED) COMMENT)` is one comment, as NX and Mastercam
+/// headers write them.
+struct OpenComment : x3::parser<OpenComment> {
+  using attribute_type = x3::unused_type;
+  static bool const has_attribute = false;
+  template <class It, class Ctx, class RCtx, class Attr>
+  bool parse(It& first, const It& last, const Ctx&, RCtx&, Attr&) const {
+    if (first == last || *first != '(') return false;
+    int depth = 0;
+    It p = first;
+    for (; p != last; ++p) {
+      if (*p == '(') ++depth;
+      if (*p == ')' && --depth == 0) break;
+    }
+    first = p;  // at the closing ')', or at the end of the line (then close_paren reports it)
+    return true;
+  }
+};
+const auto paren_comment = x3::rule<struct paren_tag>{"comment"} = x3::raw[OpenComment{}][on_comment] > close_paren;
 const auto semicolon_comment = x3::rule<struct semi_tag>{"comment"} =
     x3::raw[x3::lit(';') >> x3::lexeme[*x3::char_]][on_comment];
 const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") >>

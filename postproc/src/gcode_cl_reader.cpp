@@ -15,9 +15,12 @@
 #include "ncpost/postproc/inverse_time.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
+#include "ncpost/postproc/gcode_macro.hpp"
 #include "ncpost/postproc/line_source.hpp"
 #include "ncpost/postproc/gcode_modal.hpp"
 
+#include "gcode_framing.hpp"
+#include "gcode_program_flow.hpp"
 #include "units_evidence.hpp"
 
 namespace ncpost::gcode {
@@ -67,6 +70,7 @@ struct GcodeClReader::State {
   Machine machine;
   Setup setup;
   GcodeReaderOptions options;
+  std::string letters;  ///< the axis words of the program (program_letters)
   Interpreter interpreter;
   Block block;
   BlockEffect effect;
@@ -90,11 +94,36 @@ struct GcodeClReader::State {
   std::vector<std::string> notices;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, GcodeReaderOptions o)
-      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), interpreter(f, program_letters(m, o), o.default_inch, o.integer_dwell, o.arc_centre) {
+      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), letters(program_letters(m, o)), interpreter(f, letters, o.default_inch, o.integer_dwell, o.arc_centre) {
     for (int k = 0; k < rotaries() && k < 2; ++k) {
-      const std::string letters = "XYZABC";
-      rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(letters.find(machine.rotary(k).letter));
+      const std::string slot_letters = "XYZABC";
+      rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(slot_letters.find(machine.rotary(k).letter));
     }
+    interpreter.on_rtcp_switch([this](const ProgramPoint& p, bool rtcp_on) { return reframed(p, rtcp_on); });
+  }
+
+  /// The machine's position `p` in the words of the other reading when the program switches RTCP
+  /// (Interpreter::on_rtcp_switch): the axes do not move, so machine X Y Z become the tip in W
+  /// (switching on) or the tip becomes machine X Y Z (off), through the nominal kinematics and the
+  /// job's set-up. Before every axis is programmed, or with the reading forced, `p` stays.
+  ProgramPoint reframed(ProgramPoint p, bool rtcp_on) const {
+    if (options.kind != InputKind::automatic || options.word_forward) return p;
+    const ModalState& st = interpreter.state();
+    for (std::size_t i = 0; i < 6; ++i)
+      if (letters.find("XYZABC"[i]) != std::string::npos && !st.known[i]) return p;
+    AxisPosition q = AxisPosition::zero(rotaries());
+    for (int k = 0; k < rotaries(); ++k)
+      q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
+    const Vec3d xyz(p[0], p[1], p[2]);
+    Vec3d now;
+    if (rtcp_on) {
+      q.linear_mm = xyz;
+      now = nominal_table_T_tool(q).t - setup.workpiece_origin_mm;
+    } else {
+      now = linear_for(machine, q.rotary_rad, xyz, setup);
+    }
+    for (std::size_t i = 0; i < 3; ++i) p[i] = now[static_cast<int>(i)];
+    return p;
   }
 
   /// The nominal chain's set-up at home (T(0), the identity for a nominal machine), cached.
@@ -508,50 +537,53 @@ struct GcodeClReader::State {
     notices.push_back(fmt::format("{}:{}: {}", file, line, text));
   }
 
-  /// Lines before the opening '%' that are not G-code (a tape leader, NX's listing header).
+  /// Lines before the opening '%' to skip (gcode_framing.hpp).
   int leader_lines = -1;  ///< -1: not looked for yet
 
-  /// Looks at the head of the input: when a '%' line follows non-blank lines that do not parse
-  /// as G-code, those lines are a leader and are skipped (Fanuc ignores what precedes the first
-  /// '%').
   void find_leader() {
-    leader_lines = 0;
     const std::string_view head = source.peek(LineSource::kChunkBytes);
-    std::size_t at = 0;
-    int line = 0;
-    bool content = false, bad = false;
-    Block scratch;
-    while (at < head.size()) {
-      std::size_t end = head.find('\n', at);
-      if (end == std::string_view::npos) return;  // no complete '%' line within the head
-      std::string_view text = head.substr(at, end - at);
-      ++line;
-      if (line == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-      const auto first = text.find_first_not_of(" \t\r");
-      if (first != std::string_view::npos && text[first] == '%') {
-        if (content && bad) {
-          leader_lines = line - 1;
-          notices.push_back(fmt::format("{}:1: {} line(s) before the opening '%' are not G-code: skipped as a leader",
-                                        file, leader_lines));
-        }
-        return;
+    Leader leader = gcode::find_leader(head, head.size() < LineSource::kChunkBytes, file, letters);
+    leader_lines = leader.lines;
+    if (!leader.notice.empty()) notices.push_back(std::move(leader.notice));
+  }
+
+  // ---- a program that moves nothing although its file has motion words is an input error (an
+  // empty output with exit 0 would hide it), wherever those words stand: in the program, in
+  // deleted blocks, before the opening '%' or after its end.
+  long motions_returned = 0;
+  int motion_words_line = 0;  ///< the first line read with motion words (0: none)
+
+  void note_motion_words(int line_number) {
+    if (!motion_words_line && has_motion_words(block, letters)) motion_words_line = line_number;
+  }
+
+  /// At the end of the records: InputError when nothing moved although some line has motion words.
+  void check_something_moved() {
+    if (motions_returned > 0) return;
+    const int end_line = source.line_number();
+    std::string_view line;
+    while (!motion_words_line && source.next(line)) {
+      try {
+        parse_block(line, block, file, source.line_number());
+        note_motion_words(source.line_number());
+      } catch (const InputError&) {
+        // text after the program's end is not read as G-code
       }
-      if (first != std::string_view::npos) {
-        content = true;
-        try {
-          parse_block(text, scratch, file, line);
-        } catch (const InputError&) {
-          bad = true;
-        }
-      }
-      at = end + 1;
     }
+    if (!motion_words_line) return;
+    throw InputError({file, motion_words_line, 0},
+                     fmt::format("this line has motion words, but the program read (ending at line {}) moves nothing: "
+                                 "{}", end_line,
+                                 motion_words_line > end_line ? "the line stands after the program's end ('%' or M2/M30)"
+                                                              : "the line is not part of the program (a deleted block "
+                                                                "or a leader before the opening '%')"));
   }
 
   /// Reads and interprets the next block; false at the end of the program.
   bool read_block() {
     if (leader_lines < 0) find_leader();
     std::string_view line;
+    const std::uint64_t line_offset = source.next_line_offset();
     if (!source.next(line)) {
       release_held(known_before);
       units_hint();
@@ -560,8 +592,18 @@ struct GcodeClReader::State {
     }
     const int line_number = source.line_number();
     if (line_number <= leader_lines) return true;
+    MacroFlow flow;
+    if (may_hold_macro(line)) {
+      if (options.block_delete && is_deleted(line)) return skip_deleted(line_number);
+      flow = apply_macro_line(line, parameters, macro_line, file, line_number);
+      line = macro_line;
+    }
     parse_block(line, block, file, line_number);
-    if (block.empty()) return true;
+    if (block.empty()) {
+      program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
+      return true;
+    }
+    note_motion_words(line_number);
     if (block.percent) {
       if (!seen_content && !opened_percent) {
         opened_percent = true;
@@ -572,15 +614,30 @@ struct GcodeClReader::State {
       return false;  // the closing '%': the rest of the file is not part of the program
     }
     seen_content = true;
-    if (block.deleted && options.block_delete) {
-      if (!block_delete_noticed)
-        notices.push_back(fmt::format("{}:{}: blocks that start with '/' (block delete) are left out, as the control "
-                                      "leaves them out with its block-skip switch on", file, line_number));
-      block_delete_noticed = true;
-      return true;
-    }
-    return interpret_block(line, line_number);
+    if (block.deleted && options.block_delete) return skip_deleted(line_number);
+    const bool goes_on = interpret_block(line, line_number);
+    if (goes_on) program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
+    return goes_on;
   }
+
+  static bool is_deleted(std::string_view line) {
+    const auto first = line.find_first_not_of(" \t");
+    return first != std::string_view::npos && line[first] == '/';
+  }
+
+  bool skip_deleted(int line_number) {
+    seen_content = true;
+    if (!block_delete_noticed)
+      notices.push_back(fmt::format("{}:{}: blocks that start with '/' (block delete) are left out, as the control "
+                                    "leaves them out with its block-skip switch on", file, line_number));
+    block_delete_noticed = true;
+    return true;
+  }
+
+  // ---- macro statements: parameters, expressions, jumps and loops (gcode_macro.hpp)
+  Parameters parameters;
+  std::string macro_line;  ///< the line with its expressions evaluated
+  ProgramFlow program_flow{source, file};
 
   /// The records of one parsed block, queued in `before`/`after` (or held while the program's
   /// start is not settled); false when the block ends the program.
@@ -635,7 +692,8 @@ struct GcodeClReader::State {
         throw InputError({file, where.line, where.column},
                          fmt::format("{} stands at its reference point since line {} (G28/G30/G53), a position the "
                                      "machine file does not give: this motion does not say where {} goes (program "
-                                     "{} absolutely on the first motion after the return)", L, reference_line, L, L),
+                                     "{} absolutely on the first motion after the return, or give the machine file "
+                                     "[axes.{}] reference = ...)", L, reference_line, L, L, L),
                          std::string(line));
       at_reference[i] = false;
     }
@@ -659,10 +717,22 @@ struct GcodeClReader::State {
     return p;
   }
 
-  /// G28/G30 (the intermediate point, then Z to the top of its travel; X, Y and rotary axes to a
-  /// reference the machine file does not give: the next motion must program them) or G53 (the
-  /// motion to machine coordinates). Before the program's start is settled nothing is known of
-  /// where the tool stands: the move is a comment and the first programmed values place the start.
+  /// Where G28 (`second`: G30) puts the axis, in M (mm or rad): the machine file's `reference`
+  /// (`reference2`); Z without `reference` goes to the top of its travel. nullopt where not given.
+  std::optional<double> reference_point(const Axis& axis, bool second) const {
+    if (second) return axis.reference2;
+    if (axis.reference) return axis.reference;
+    if (axis.letter == 'Z' && axis.limits) return axis.limits->max;
+    return std::nullopt;
+  }
+
+  /// G28/G30 (the intermediate point, then the named axes to their reference point) or G53 (the
+  /// motion to machine coordinates, counted from the reference point): the machine file's
+  /// `reference`/`reference2` place them (Z's reference is the top of its travel when not given).
+  /// An axis whose reference the file does not give must be programmed on the next motion (G28,
+  /// G53; a rotary axis under G53 takes its machine angle); G30 without `reference2` is refused.
+  /// Before the program's start is settled nothing is known of where the tool stands: the move
+  /// is a comment and the first programmed values place the start.
   void queue_machine_move(const BlockEffect& fx, cl::Location where, std::string_view line,
                           const std::array<bool, 6>& known_prior) {
     const MachineMove& mm = *fx.machine_move;
@@ -681,39 +751,53 @@ struct GcodeClReader::State {
     }
     if (mm.kind == MachineMove::Kind::reference && fx.has_motion) queue_linear(fx, where, known_prior);
     ProgramPoint p = interpreter.state().position;
-    // the control's machine coordinates count from each axis's reference point (Fanuc, Haas,
-    // LinuxCNC homing); Z's is the top of its travel in the machine file, the others' are not known
     std::array<std::optional<double>, 3> machine_mm{};
     const bool given = mm.kind == MachineMove::Kind::machine;
+    const bool second = mm.code == "G30";
     bool moves = false;
+    std::string placed, unknown;
     for (std::size_t i = 0; i < 6; ++i) {
       if (!mm.axes[i]) continue;
-      if (i == 2) {
-        if (machine.axes.size() < 3 || !machine.axes[2].limits)
-          throw InputError({file, where.line, mm.column},
-                           fmt::format("{} Z: the machine file gives no Z travel, so the top of Z (its reference "
-                                       "point) is not known", mm.code), std::string(line));
-        machine_mm[2] = machine.axes[2].limits->max + (given ? mm.machine_value[2] : 0.0);
+      const char L = "XYZABC"[i];
+      const int ai = machine.index_of(L);
+      if (ai < 0) continue;  // G28 alone names X Y Z; the interpreter refuses letters the machine lacks
+      const Axis& axis = machine.axes[static_cast<std::size_t>(ai)];
+      const std::optional<double> ref = reference_point(axis, second);
+      const double offset = given ? mm.machine_value[i] : 0.0;
+      if (second && !ref)
+        throw InputError({file, where.line, mm.column},
+                         fmt::format("G30 {}: the second reference point of {} is not in the machine file {}: give "
+                                     "it as [axes.{}] reference2 = ... ({})", L, L, machine.name, L,
+                                     axis.is_rotary() ? "deg" : "mm"),
+                         std::string(line));
+      const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
+      if (ref || (given && axis.is_rotary())) {
+        const double target = ref.value_or(0.0) + offset;
+        if (i < 3) machine_mm[i] = target;
+        else p[i] = target;
         moves = true;
-      } else if (i > 2 && given) {
-        p[i] = mm.machine_value[i];  // a rotary axis's machine angle is its program angle
-        moves = true;
+        const char* unit = axis.is_rotary() ? "deg" : "mm";
+        const std::string from = !ref ? std::string("its machine angle")
+                                 : offset != 0.0 ? fmt::format("{:.3f} {} from", offset * scale, unit)
+                                                 : std::string("at");
+        const std::string point = L == 'Z' && !axis.reference && !second ? "the top of its travel (machine file)"
+                                  : second ? "its second reference point (machine file)"
+                                           : "its reference point (machine file)";
+        placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", placed.empty() ? "" : "; ", L, target * scale, unit,
+                              from, ref ? " " + point : std::string());
       } else {
         at_reference[i] = true;
         reference_line = where.line;
+        unknown += unknown.empty() ? std::string(1, L) : fmt::format(", {}", L);
       }
     }
     notices.push_back(fmt::format(
         "{}:{}:{}: {}: {}{}", file, where.line, mm.column, mm.code,
-        machine_mm[2] ? fmt::format("Z goes to {:.3f} mm, {} the top of its travel (machine file), as a rapid",
-                                    *machine_mm[2], given && mm.machine_value[2] != 0.0
-                                                        ? fmt::format("{:.3f} mm from", mm.machine_value[2])
-                                                        : std::string("at"))
-                      : std::string("Z does not move"),
-        std::any_of(at_reference.begin(), at_reference.end(), [](bool b) { return b; })
-            ? "; the other axes named go to (or count from) their reference point, which the machine file does not "
-              "give: the next motion must program them"
-            : ""));
+        placed.empty() ? std::string("Z does not move") : placed + ", as a rapid",
+        unknown.empty() ? ""
+                        : fmt::format("; {} go(es) to (or count(s) from) a reference point the machine file does not "
+                                      "give ([axes.{}] reference): the next motion must program it", unknown,
+                                      unknown.front())));
     if (!moves) return;
     p = with_machine_linear(p, machine_mm);
     cl::Motion m = motion_at(p, where);
@@ -818,18 +902,25 @@ struct GcodeClReader::State {
       notices.push_back(fmt::format("{}:{}: the program ends without M2/M30 or '%'", file, line));
   }
 
+  cl::Record counted(cl::Record r) {
+    if (std::holds_alternative<cl::Motion>(r)) ++motions_returned;
+    return r;
+  }
+
   std::optional<cl::Record> next() {
     for (;;) {
-      if (before_next < before.size()) return std::move(before[before_next++]);
+      if (before_next < before.size()) return counted(std::move(before[before_next++]));
       if (pending_motion) {
         cl::Motion m = std::move(*pending_motion);
         pending_motion.reset();
+        ++motions_returned;
         return m;
       }
       if (arc) {
         ++arc_segment;
         const double t = static_cast<double>(arc_segment) / static_cast<double>(arc_segments_total);
         cl::Motion m = motion_at(unwrapped(arc->at(t)), arc_where);
+        ++motions_returned;
         if (arc_segment >= arc_segments_total) arc.reset();
         if (auto f = source_time_feed(m)) {
           pending_motion = std::move(m);
@@ -837,12 +928,15 @@ struct GcodeClReader::State {
         }
         return m;
       }
-      if (after_next < after.size()) return std::move(after[after_next++]);
+      if (after_next < after.size()) return counted(std::move(after[after_next++]));
       before.clear();
       before_next = 0;
       after.clear();
       after_next = 0;
-      if (done) return std::nullopt;
+      if (done) {
+        check_something_moved();
+        return std::nullopt;
+      }
       if (!read_block()) done = true;
     }
   }

@@ -647,6 +647,7 @@ void Interpreter::check_length_in_force(const Context& cx, const Words& w, Motio
 // tool length and RTCP/TCPM: G43.4/G43.5/G234 ... G43/G49, M128/M129, M428/M429, TRAORI/TRAFOOF
 void Interpreter::apply_rtcp(const Context& cx, const Codes& codes) {
   ModalState& st = state_;
+  const bool was_on = st.rtcp != Rtcp::off;
   if (codes.in(g_length)) {
     const int c = codes.of(g_length).code10;
     if (c == 434 || c == 435) st.rtcp = Rtcp::g43_4;
@@ -661,6 +662,8 @@ void Interpreter::apply_rtcp(const Context& cx, const Codes& codes) {
     if (k.keyword == Keyword::traori) st.rtcp = Rtcp::traori;
     if (k.keyword == Keyword::trafoof && st.rtcp == Rtcp::traori) st.rtcp = Rtcp::off;
   }
+  const bool is_on = st.rtcp != Rtcp::off;
+  if (reframe_ && is_on != was_on) st.position = reframe_(st.position, is_on);
 }
 
 // the motion group: G0 G1 G2 G3 G80 and the canned cycles (a new cycle starts from where the tool stands)

@@ -20,7 +20,21 @@ std::string echo_for(std::string_view line, int column) {
 }
 
 LineSource::LineSource(std::istream& in, std::string file_name, std::string expected)
-    : in_(in), file_(std::move(file_name)), expected_(std::move(expected)), buffer_(kChunkBytes) {}
+    : in_(in), origin_(in.tellg()), file_(std::move(file_name)), expected_(std::move(expected)), buffer_(kChunkBytes) {}
+
+bool LineSource::seek(std::uint64_t offset, int line_number) {
+  if (origin_ == std::istream::pos_type(-1)) return false;
+  in_.clear();
+  in_.seekg(origin_ + static_cast<std::streamoff>(offset));
+  if (!in_) return false;
+  begin_ = end_ = 0;
+  eof_ = false;
+  bom_checked_ = offset != 0;  // a byte order mark stands only at offset 0
+  terminated_ = true;
+  bytes_read_ = offset;
+  line_number_ = line_number - 1;
+  return true;
+}
 
 bool LineSource::refill() {
   if (eof_) return false;

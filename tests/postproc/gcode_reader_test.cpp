@@ -159,13 +159,17 @@ TEST_CASE("gcode reader: RTCP programs keep the tip and take the axis from the a
     q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
     CHECK((ms[0].point.axis - forward(test::ac_trunnion(), q, Setup{}).axis).norm() < 1e-12);
   }
-  // switched off again: machine axes
+  // switched off again: machine axes, from where the machine stands (issue 27.3: the words are not
+  // re-labelled). The tip (1, 2, 3) at A30 C90 needs machine Rot(x, 30°)·Rot(z, 90°)·(1, 2, 3) =
+  // (-2, cos30 - 3 sin30, sin30 + 3 cos30); G1 X1 then moves machine X alone to 1.
   const auto ms = motions("M428\nG1 X1 Y2 Z3 A30 C90 F100\nM429\nG1 X1\n");
   REQUIRE(ms.size() == 2);
   AxisPosition q = home_of(test::ac_trunnion());
-  q.linear_mm = Vec3d(1, 2, 3);
   q.rotary_rad = Eigen::Vector2d(deg_to_rad(30), deg_to_rad(90));
-  CHECK((ms[1].point.tip_mm - forward(test::ac_trunnion(), q, Setup{}).tip_mm).norm() < 1e-12);
+  const double c30 = std::cos(deg_to_rad(30)), s30 = std::sin(deg_to_rad(30));
+  q.linear_mm = Vec3d(1, c30 - 3 * s30, s30 + 3 * c30);
+  CHECK((ms[1].point.tip_mm - forward(test::ac_trunnion(), q, Setup{}).tip_mm).norm() < 1e-9);
+  q.linear_mm = Vec3d(1, 2, 3);
   // forced kinds
   GcodeReaderOptions machine_kind;
   machine_kind.kind = InputKind::machine;
@@ -330,14 +334,16 @@ TEST_CASE("gcode reader: block delete and percent framing") {
   const InputError cut = error_of("%\nG0 X1\nG1 X");
   CHECK(cut.where().line == 3);
   CHECK(cut.where().column == 5);
-  // a leader before the opening % (NX's information listing), and G-code before % is kept
+  // a leader before the opening % (lines that do not move; NX's information listing:
+  // gcode_leader_test.cpp), and G-code before % is kept when nothing moves after it
   std::vector<std::string> notices;
-  const auto led = only<cl::Motion>(read_all("Information listing created by\tMArkos\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
+  const auto led = only<cl::Motion>(read_all("PowerMill title\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
   REQUIRE(led.size() == 1);
   check_tip(led[0], 4, 0, 0);
   REQUIRE_FALSE(notices.empty());
   CHECK_THAT(notices[0], Catch::Contains("3 line(s) before the opening '%'"));
-  CHECK(motions("G0 X1\n%\nG0 X2\n").size() == 1);  // a '%' after G-code ends the program
+  CHECK(motions("G0 X1\nM30\n%\nG0 X2\n").size() == 1);  // a '%' after the program's end closes it
+  CHECK(error_of("G0 X1\n%\nG0 X2\n").where().line == 2);  // motions on both sides: refused
   // a UTF-8 byte order mark (NX writes one)
   check_tip(motions("\xEF\xBB\xBF%\nG0 X3\nM30\n%\n").at(0), 3, 0, 0);
   // CRLF line ends

@@ -33,6 +33,10 @@ struct Axis {
   Vec3d direction = Vec3d::UnitX();  ///< unit; rotary: positive command turns the carried body about it
   Vec3d pivot_mm = Vec3d::Zero();    ///< rotary: a point of the axis line at home
   std::optional<AxisLimits> limits;  ///< mm or rad; none = unlimited (continuous rotary axis)
+  /// Where the axis stands (its command in M: mm or rad) at its reference point, the zero of the
+  /// control's machine coordinates (G28, G53), and at its second reference point (G30); none where
+  /// the machine file does not say (docs/formats.md).
+  std::optional<double> reference, reference2;
 
   bool is_rotary() const { return kind == AxisKind::rotary; }
   bool continuous() const { return is_rotary() && !limits; }

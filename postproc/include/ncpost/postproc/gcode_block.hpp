@@ -10,13 +10,14 @@
 //              Omnf01_vx_0, O2021-11-28_test2setup_1); 'O' digits is a program number word
 //   word    := letter number                                           -- letter case-insensitive
 //   number  := [ '+' | '-' ] ( digits [ '.' digits? ] | '.' digits )   -- no exponent, NaN, Inf
-//   comment := '(' text ')'
+//   comment := '(' text ')'  -- parentheses inside balanced: `(TEST (NESTED) COMMENT)` is one
 //   keyword := TRAORI [ '(' n ')' ] | TRAFOOF                          -- Sinumerik RTCP on/off
 // A line holding only '%' (and blanks) is a program delimiter. Blanks may stand between a letter
 // and its number (`X  16.339`) but not inside a number (`X1 0` is an error, not X10).
-// Parameters (`#1`), expressions (`[...]`), assignments and O-word control flow are not supported:
-// they are rejected with the exact column; so is a line that starts with a number (a Heidenhain
-// conversational block such as `0010 BEGIN PGM 100 MM` is named as such).
+// Parameters (`#1`), expressions (`[...]`) and macro statements are evaluated before this grammar
+// reads a line (gcode_macro.hpp); here they are rejected with the exact column, as are O-word
+// control flow and a line that starts with a number (a Heidenhain conversational block such as
+// `0010 BEGIN PGM 100 MM` is named as such).
 #include <string>
 #include <string_view>
 #include <vector>

@@ -38,9 +38,12 @@
 // CutterComp: G41/G42 (D: the register)/G40 records precede the motion of their block.
 // Program framing: a leading '%' requires a closing '%' or M2/M30 (otherwise the file is taken
 // as truncated: InputError); text after the closing '%' is ignored, and so are lines before the
-// opening '%' when they are not G-code (a tape leader such as NX's "Information listing" header,
-// looked for in the first 64 KiB; notice). A UTF-8 byte order mark is skipped. Blocks starting with '/' are
-// skipped while `block_delete` is on.
+// opening '%' that hold no motion (a leader, looked for in the first 64 KiB; notice; the rules
+// and the refusals of NX's "Information listing" and of motions on both sides of the first '%'
+// are in gcode_framing.hpp). A UTF-8 byte order mark is skipped. Blocks starting with '/' are
+// skipped while `block_delete` is on. A program that moves nothing while a line of the file has
+// motion words (in a deleted block, a leader, after the end) is an InputError, never an empty
+// output.
 #include <functional>
 #include <istream>
 #include <memory>

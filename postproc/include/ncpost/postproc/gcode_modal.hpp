@@ -24,6 +24,7 @@
 //
 // RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
 // (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -134,6 +135,12 @@ class Interpreter {
   const ModalState& state() const { return state_; }
   /// The reader placed a machine move (MachineMove): the program position is now `p`.
   void moved_to(const ProgramPoint& p) { state_.position = p; }
+  /// Where the machine stands, in the words of the other reading: called when RTCP switches on
+  /// (`rtcp_on`: the machine axes of `p` become the tool tip in W) or off (the tip becomes machine
+  /// axes), before the block's motion. The axes stay where they physically are; without a
+  /// converter the words are carried over as they are.
+  using Reframe = std::function<ProgramPoint(const ProgramPoint& p, bool rtcp_on)>;
+  void on_rtcp_switch(Reframe reframe) { reframe_ = std::move(reframe); }
   std::vector<std::string> take_notices();
 
  private:
@@ -177,6 +184,7 @@ class Interpreter {
   int last_arc_line_ = 0;          ///< the last arc (for the message of an arc without I J or R)
   std::string last_arc_words_;     ///< its centre words ("I and J", "R")
   ModalState state_;
+  Reframe reframe_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;
 };

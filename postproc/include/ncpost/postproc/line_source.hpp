@@ -6,6 +6,7 @@
 // count after it). A line longer than kMaxLineBytes is bad input ("line too long"): the error
 // echoes at most kEchoBytes of it, never the whole line.
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -31,6 +32,12 @@ class LineSource {
   /// them (a look at the head of the file); valid until the next call of next().
   std::string_view peek(std::size_t bytes);
 
+  /// Where the next line starts: bytes from where the input started (for seek()).
+  std::uint64_t next_line_offset() const { return bytes_read_ - (end_ - begin_); }
+  /// Reads on from `offset` (a next_line_offset()), numbering the next line `line_number`; false
+  /// when the stream cannot be positioned (a pipe).
+  bool seek(std::uint64_t offset, int line_number);
+
   int line_number() const { return line_number_; }  ///< 1-based number of the last line returned
   const std::string& file() const { return file_; }
   bool last_line_terminated() const { return terminated_; }  ///< the last line ended with a line break
@@ -40,6 +47,7 @@ class LineSource {
   bool refill();
 
   std::istream& in_;
+  std::istream::pos_type origin_;  ///< where the input started in the stream (-1: not seekable)
   std::string file_;
   std::string expected_;
   std::vector<char> buffer_;
