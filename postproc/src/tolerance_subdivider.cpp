@@ -31,12 +31,14 @@ std::string rounded_in(std::string words, double value) {
   return words;
 }
 
-/// The swing of a block that starts exactly at the singular pose (the tool axis along the inner
-/// rotary axis, the free angle kept from before): the CL axis leaves the pole on a great circle
-/// (slerp), whose azimuth is the end's all along, so the free axis turns to the end solution's
-/// angle before the block, however small the tilt. nullopt: not exactly singular, or no turn needed.
-std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
-  for (const RotarySolution& r : rotary_solutions(machine, from.cl.axis)) {
+/// The free-angle change from `from` to `to` when `pole_axis` (the start's or the end's CL axis)
+/// is exactly the singular pose (the tool axis along the inner rotary axis, where that angle is
+/// free): the CL axis leaves or reaches the pole on a great circle (slerp) whose azimuth is the other
+/// end's all along, so the free axis turns in place there, however small the tilt. nullopt: not
+/// exactly singular, or no turn needed.
+std::optional<RotaryAngles> swing_at_pole(const Machine& machine, const Vec3d& pole_axis, const SolvedPoint& from,
+                                          const SolvedPoint& to) {
+  for (const RotarySolution& r : rotary_solutions(machine, pole_axis)) {
     if (r.free_axis < 0) continue;
     RotaryAngles d = RotaryAngles::Zero(2);
     d[r.free_axis] = to.q.rotary_rad[r.free_axis] - from.q.rotary_rad[r.free_axis];
@@ -44,6 +46,12 @@ std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const
     return d;
   }
   return std::nullopt;
+}
+
+/// The swing of a block that starts exactly at the singular pose (the free angle kept from before):
+/// turned to the end solution's angle before the block.
+std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
+  return swing_at_pole(machine, from.cl.axis, from, to);
 }
 
 /// The swing of a block that starts within a few µrad of the singular pose: the exact solutions
@@ -133,19 +141,11 @@ std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Se
   return turn_in_place(machine, setup, solver, data, from, *swing, errors, tolerance_mm);
 }
 
-/// The free angle a block arrives with at an end exactly at the singular pose: the CL axis reaches
-/// the pole on a great circle whose azimuth is the start's, so the free axis keeps the start's angle.
-/// nullopt: the end is not exactly singular, or its programmed angle is that one already.
+/// The swing at an end exactly at the singular pose whose programmed free angle is not the one the
+/// block arrives with (the start's: the great circle to the pole keeps its azimuth); turned after it.
 std::optional<RotaryAngles> singular_end_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
   if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return std::nullopt;
-  for (const RotarySolution& r : rotary_solutions(machine, to.cl.axis)) {
-    if (r.free_axis < 0) continue;
-    RotaryAngles d = RotaryAngles::Zero(2);
-    d[r.free_axis] = to.q.rotary_rad[r.free_axis] - from.q.rotary_rad[r.free_axis];
-    if (std::abs(d[r.free_axis]) <= kSingularJumpRad) return std::nullopt;
-    return d;
-  }
-  return std::nullopt;
+  return swing_at_pole(machine, to.cl.axis, from, to);
 }
 
 /// The commands the block arrives with at a singular end (the free angle of the start's).
