@@ -133,8 +133,12 @@ PostSummary write_program(cl::Reader& reader, std::ostream& program, const PostR
   NcWriter writer(out, r.dialect, axis_letters(r.machine));
   std::optional<ExecutedOn> verify_solver;
   if (executing) verify_solver.emplace(*p.solver, *executing, r.setup);
+  // the program's G93 times on the nominal kinematics: the machine's errors change a block's path
+  // length by far less than the F word's resolution, the nominal chain is several times cheaper to
+  // evaluate than the error model, and the times never depend on a verifying machine
+  const NominalSolver nominal(r.machine, r.setup);
   PostOptions with_feeds = options;
-  with_feeds.feed_solver = p.solver.get();  // the program's times on its own model, never the verifying one
+  with_feeds.feed_solver = &nominal;
   PostSummary summary;
   try {
     summary = post_program(reader, r.input_name,

@@ -128,8 +128,9 @@ struct PostOptions {
   /// Read every written motion block back and execute it (VerifyReport in the summary, defects
   /// included: read_back.hpp).
   bool verify = false;
-  /// The model the inverse-time (G93) feeds are computed on; null: the post's solver. Under
-  /// --verify-on the post's solver executes on the verifying machine: the program's feeds must not.
+  /// The model the inverse-time (G93) feeds are computed on; null: the post's solver. `post()` gives
+  /// the nominal kinematics: the machine's errors change a block's path length by far less than the
+  /// F word's resolution, and under --verify-on the post's solver executes on the verifying machine.
   const KinematicModel* feed_solver = nullptr;
   /// With `verify`: called for every re-executed feed block with its CL line and contour error (mm).
   std::function<void(int line, double contour_mm)> on_verified;
