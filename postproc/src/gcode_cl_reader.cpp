@@ -12,6 +12,7 @@
 
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/compensation/nonlinear_block.hpp"
 #include "ncpost/postproc/inverse_time.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/gcode_block.hpp"
@@ -363,12 +364,8 @@ struct GcodeClReader::State {
       double path_mm = (m.point.tip_mm - *last_tip).norm();  // RTCP input: the tip moves straight in W
       if (!last_rtcp && tip_moves) {  // machine axes interpolated linearly
         const AxisPosition q0 = commands_for(*last_tip, last_rotary), q = commands_for(m.point.tip_mm, rotary);
-        path_mm = tip_path_length_mm([&](double t) {
-          AxisPosition qt = q0;
-          qt.linear_mm = q0.linear_mm + t * (q.linear_mm - q0.linear_mm);
-          qt.rotary_rad = q0.rotary_rad + t * (q.rotary_rad - q0.rotary_rad);
-          return Vec3d(nominal_table_T_tool(qt).t - setup.workpiece_origin_mm);
-        });
+        path_mm = tip_path_length_mm(
+            [&](double t) { return Vec3d(nominal_table_T_tool(nonlinear::lerp(q0, q, t)).t - setup.workpiece_origin_mm); });
       }
       const double travel_deg = max_abs_step(rotary, last_rotary) * 180.0 / kPi;
       const double feed = feed_for_minutes(path_mm, tip_moves, travel_deg, 1.0 / *m.feed);

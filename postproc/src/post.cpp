@@ -560,7 +560,7 @@ class Poster {
       m.feed = feed;
     }
     bool split = false;
-    std::optional<detail::WrittenRapid> first_block, block;  // read back (--verify)
+    std::optional<detail::ReadBackBlock> first_block, block;  // read back (--verify)
     WrittenState in_force = read_back_ ? writer_.in_force() : WrittenState{};
     if (rapid && options_.order_rapids && last_values_) {
       split = write_retract_or_approach(from, to, m);
@@ -584,8 +584,8 @@ class Poster {
 
   // ---- --verify: the program as written, read back (read_back.hpp) -------------------------
   /// The block just written, read back from the words in force before it (`in_force`).
-  detail::WrittenRapid read_written(const WrittenState& in_force, const ClPoint& from, const ClPoint& to, int line) {
-    detail::WrittenRapid b;
+  detail::ReadBackBlock read_written(const WrittenState& in_force, const ClPoint& from, const ClPoint& to, int line) {
+    detail::ReadBackBlock b;
     b.from = in_force;
     b.text = writer_.last_line();
     b.program_line = writer_.lines_written();
@@ -634,7 +634,7 @@ class Poster {
 
   /// --verify of the blocks written for one CL motion: their words, feeds and (rapids) their lines.
   void check_written(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid, const NcMotion& m,
-                     const std::optional<detail::WrittenRapid>& first, const std::optional<detail::WrittenRapid>& block) {
+                     const std::optional<detail::ReadBackBlock>& first, const std::optional<detail::ReadBackBlock>& block) {
     const detail::ExecuteWords execute = [this](const WrittenState& a, const WrittenState& b, double t) {
       return execute_words(a, b, t);
     };
@@ -647,7 +647,7 @@ class Poster {
                            fmt::format("'{}' is not written as a {}", (*b)->text, rapid ? "rapid" : "feed move"));
     }
     if (rapid) {
-      const std::optional<detail::WrittenRapid>& leaving = first ? first : block;
+      const std::optional<detail::ReadBackBlock>& leaving = first ? first : block;
       // (rapids cut to the tolerance, subdivide_rapids, follow the CL line within it: not checked here)
       if (last_was_feed_ && leaving && !options_.subdivide_rapids &&
           (to.cl.tip_mm - from.cl.tip_mm).dot(from.cl.axis.normalized()) > tol) {
@@ -682,7 +682,7 @@ class Poster {
 
   /// The feed word of a written feed block against its rule: per minute the CL feed; inverse time
   /// 1 / (executed tip path / CL feed) (inverse_time.hpp) on the words as written.
-  void check_feed_word(const detail::WrittenRapid& b, const SolvedPoint& from, const SolvedPoint& to, int line,
+  void check_feed_word(const detail::ReadBackBlock& b, const SolvedPoint& from, const SolvedPoint& to, int line,
                        const NcMotion& m) {
     const MotionWords& w = writer_.dialect().motion;
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
@@ -700,9 +700,9 @@ class Poster {
     double allowed = 0.5 * std::pow(10.0, -w.feed_decimals) + 1e-9;
     if (inverse) {
       const bool tip_moves = (to.cl.tip_mm - from.cl.tip_mm).norm() > kStillTipMm;
-      const double path_mm = tip_moves ? tip_path_length_mm([&](double t) {
-        return feed_solver().execute(commands_of(words_at(b.from, b.to, t)), data_).tip_mm;
-      }) : 0.0;
+      const double path_mm = tip_moves ? executed_tip_path_mm(commands_of(words_at(b.from, b.to, 0.0)),
+                                                              commands_of(words_at(b.from, b.to, 1.0)))
+                                       : 0.0;
       const double deg = words_.rotary_count > 0 ? rad_to_deg(max_abs_step(to.q.rotary_rad, from.q.rotary_rad)) : 0.0;
       const double minutes = inverse_time_minutes(path_mm, tip_moves, deg, feed);
       expected = minutes > 0.0 ? 1.0 / minutes : 99999.0;
@@ -715,7 +715,7 @@ class Poster {
   }
 
   /// The words of a written arc block: its direction word and its feed (per minute, the CL feed).
-  void check_arc_words(const detail::WrittenRapid& b, const NcArc& arc) {
+  void check_arc_words(const detail::ReadBackBlock& b, const NcArc& arc) {
     using Motion = WrittenState::Motion;
     const Motion meant = arc.clockwise ? Motion::clockwise : Motion::counter_clockwise;
     if (b.to.motion != meant)
@@ -774,12 +774,7 @@ class Poster {
 
   /// The length (mm) of the tool tip's path in W while the axes run linearly from `q0` to `q1`.
   double executed_tip_path_mm(const AxisPosition& q0, const AxisPosition& q1) const {
-    return tip_path_length_mm([&](double t) {
-      AxisPosition q = q0;
-      q.linear_mm = q0.linear_mm + t * (q1.linear_mm - q0.linear_mm);
-      q.rotary_rad = q0.rotary_rad + t * (q1.rotary_rad - q0.rotary_rad);
-      return feed_solver().execute(q, data_).tip_mm;
-    });
+    return tip_path_length_mm([&](double t) { return feed_solver().execute(nonlinear::lerp(q0, q1, t), data_).tip_mm; });
   }
 
   void move_along_arc(const cl::Circle& c, const cl::Motion& end, bool rapid) {
@@ -851,7 +846,7 @@ class Poster {
     arc.feed_mm_min = records_.feed_mm_min(options_.default_feed_mm_min);
     const WrittenState arc_in_force = read_back_ ? writer_.in_force() : WrittenState{};
     writer_.arc(arc);
-    std::optional<detail::WrittenRapid> written;  // read back (--verify)
+    std::optional<detail::ReadBackBlock> written;  // read back (--verify)
     if (read_back_) {
       written = read_written(arc_in_force, previous_.cl, end.point, end.where.line);
       check_arc_words(*written, arc);
@@ -877,7 +872,7 @@ class Poster {
   /// `post --verify` of a native arc: the circle the control interpolates from the words as written
   /// (the start where the axes stand, the centre offset and the end rounded), executed on the
   /// machine, against the CL circle (verify_arc.hpp). Before previous_ and last_executed_ move on.
-  void verify_native_arc(const detail::WrittenRapid& written, const NcArc& arc,
+  void verify_native_arc(const detail::ReadBackBlock& written, const NcArc& arc,
                          const std::optional<PerAxis<double>>& start_words, const Vec3d& normal, double angle,
                          const cl::Circle& c, const cl::Motion& end, const AxisPosition& executed_end) {
     FrameArc run;
@@ -1074,7 +1069,7 @@ class Poster {
   AxisPosition last_executed_{};
   std::optional<PerAxis<double>> last_values_;  ///< words of the last motion block (mm, deg)
   std::optional<WrittenBlockReader> read_back_;  ///< --verify: the blocks as written, read back
-  std::optional<detail::WrittenRapid> last_rapid_;  ///< the last rapid written (an approach if a feed follows)
+  std::optional<detail::ReadBackBlock> last_rapid_;  ///< the last rapid written (an approach if a feed follows)
   bool last_was_feed_ = false;                     ///< the last motion written was a feed move
   bool have_position_ = false;
   bool rtcp_on_ = false;

@@ -16,7 +16,7 @@ void add_defect(VerifyReport& report, std::size_t program_line, int cl_line, con
     report.defects.push_back("... and more (the first 20 are listed)");
 }
 
-double rapid_off_line_mm(const WrittenRapid& rapid, bool at_start, const ExecuteWords& execute) {
+double rapid_off_line_mm(const ReadBackBlock& rapid, bool at_start, const ExecuteWords& execute) {
   for (std::size_t i = 3; i < rapid.from.values.size(); ++i)
     if (rapid.from.values[i] != rapid.to.values[i]) return 0.0;  // the tool turns: not a straight line
   const ToolPoseT<double> end = execute(rapid.from, rapid.to, at_start ? 0.0 : 1.0);

@@ -27,8 +27,8 @@ using ExecuteWords = std::function<ToolPoseT<double>(const WrittenState& a, cons
 /// wall a drill could be dragged through.
 inline constexpr double kRapidLineToleranceMm = 0.002;
 
-/// A written rapid block: its words before and after, and where it is in the program.
-struct WrittenRapid {
+/// A written motion block as read back: its words before and after, and where it is in the program.
+struct ReadBackBlock {
   WrittenState from, to;
   std::size_t program_line = 0;
   std::string text;
@@ -42,6 +42,6 @@ void add_defect(VerifyReport& report, std::size_t program_line, int cl_line, con
 /// The largest distance (mm) of the executed tip of `rapid` from both the tool-axis line through
 /// its executed start (retract, `at_start`) or end (approach), on the part's side of it, and the
 /// CL rapid segment (moved by the execution error at that end). Rapids with a rotary move: 0.
-double rapid_off_line_mm(const WrittenRapid& rapid, bool at_start, const ExecuteWords& execute);
+double rapid_off_line_mm(const ReadBackBlock& rapid, bool at_start, const ExecuteWords& execute);
 
 }  // namespace ncpost::detail

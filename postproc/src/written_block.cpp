@@ -53,7 +53,6 @@ WrittenBlockReader::WrittenBlockReader(const Dialect& dialect, std::string lette
     : dialect_(dialect), letters_(std::move(letters)) {}
 
 const WrittenState& WrittenBlockReader::read(std::string_view text) {
-  before_ = state_;
   std::vector<std::string> tokens = tokens_of(without_comment(text, dialect_.comments));
   std::size_t first = 0;
   if (dialect_.line_numbers && !tokens.empty()) {  // the block number ("N{n} ", "{n} ")

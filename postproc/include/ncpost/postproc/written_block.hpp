@@ -36,13 +36,11 @@ class WrittenBlockReader {
   /// throws std::runtime_error naming the word it cannot read.
   const WrittenState& read(std::string_view text);
   const WrittenState& state() const { return state_; }
-  /// The words in force before the last block read.
-  const WrittenState& before() const { return before_; }
 
  private:
   const Dialect& dialect_;
   std::string letters_;
-  WrittenState state_, before_;
+  WrittenState state_;
 };
 
 }  // namespace ncpost
