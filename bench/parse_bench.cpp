@@ -29,10 +29,10 @@
 
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_block.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
-#include "ncpost/postproc/line_source.hpp"
-#include "ncpost/postproc/fixed_format.hpp"
+#include "ncpost/postproc/read/gcode/gcode_block.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/line_source.hpp"
+#include "ncpost/postproc/write/fixed_format.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "ac_trunnion_text.hpp"
 

@@ -22,10 +22,10 @@
 #include "ncpost/compensation/nonlinear_batch.hpp"
 #include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "ncpost/postproc/post.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "ncpost/postproc/solve/actual_solver.hpp"
+#include "ncpost/postproc/solve/tolerance_subdivider.hpp"
 
 using namespace ncpost;
 

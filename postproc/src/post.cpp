@@ -7,17 +7,17 @@
 #include <cmath>
 #include <deque>
 
-#include "lookahead.hpp"
-#include "ncpost/postproc/branch_plan.hpp"
+#include "read/lookahead.hpp"
+#include "ncpost/postproc/solve/branch_plan.hpp"
 #include "ncpost/compensation/nonlinear_block.hpp"
-#include "ncpost/postproc/unreachable.hpp"
-#include "ncpost/postproc/cycle_words.hpp"
-#include "ncpost/postproc/inverse_time.hpp"
-#include "ncpost/postproc/tilted_plane.hpp"
-#include "ncpost/postproc/verify_arc.hpp"
-#include "post_cycle.hpp"
-#include "read_back.hpp"
-#include "record_blocks.hpp"
+#include "ncpost/postproc/solve/unreachable.hpp"
+#include "ncpost/postproc/write/cycle_words.hpp"
+#include "ncpost/postproc/solve/inverse_time.hpp"
+#include "ncpost/postproc/write/tilted_plane.hpp"
+#include "ncpost/postproc/verify/verify_arc.hpp"
+#include "write/post_cycle.hpp"
+#include "verify/read_back.hpp"
+#include "verify/record_blocks.hpp"
 
 namespace ncpost {
 namespace {

@@ -9,13 +9,13 @@
 
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/executed_on.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
-#include "ncpost/postproc/preview_blocks.hpp"
+#include "ncpost/postproc/solve/actual_solver.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
+#include "ncpost/postproc/solve/executed_on.hpp"
+#include "ncpost/postproc/write/nc_writer.hpp"
+#include "ncpost/postproc/verify/preview_blocks.hpp"
 #include "ncpost/version.hpp"
-#include "post_account_fill.hpp"
+#include "verify/post_account_fill.hpp"
 #include "trr_post_request.hpp"
 
 namespace ncpost {

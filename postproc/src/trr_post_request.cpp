@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "trr_post_request.hpp"
-#include "post_account_fill.hpp"
+#include "verify/post_account_fill.hpp"
 
 #include <fmt/format.h>
 
 
 #include "ncpost/kinematics/trr_xy_forward.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
-#include "ncpost/postproc/trr_solver.hpp"
-#include "ncpost/postproc/trr_preview_evaluator.hpp"
-#include "ncpost/postproc/trr_subdivider.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
+#include "ncpost/postproc/write/nc_writer.hpp"
+#include "ncpost/postproc/solve/trr_solver.hpp"
+#include "ncpost/postproc/solve/trr_preview_evaluator.hpp"
+#include "ncpost/postproc/solve/trr_subdivider.hpp"
 #include "ncpost/version.hpp"
 
 namespace ncpost::detail {

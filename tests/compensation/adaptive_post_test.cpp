@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "ncpost/compensation/nonlinear_compensation.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "nonlinear_test_support.hpp"
 

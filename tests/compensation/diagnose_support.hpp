@@ -19,10 +19,10 @@
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/compensation/simulate.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/postproc/post.hpp"
-#include "ncpost/postproc/preview_model_solver.hpp"
+#include "ncpost/postproc/solve/preview_model_solver.hpp"
 #include "nonlinear_test_support.hpp"
 
 namespace ncpost::test {

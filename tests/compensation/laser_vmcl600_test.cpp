@@ -22,10 +22,10 @@
 #include "ncpost/compensation/laser_report.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
-#include "ncpost/postproc/preview_model_solver.hpp"
+#include "ncpost/postproc/solve/preview_model_solver.hpp"
 #include "text_file.hpp"
 
 using namespace ncpost;

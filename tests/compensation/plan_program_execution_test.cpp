@@ -17,7 +17,7 @@
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/plan_nc.hpp"
+#include "ncpost/postproc/write/plan_nc.hpp"
 
 using namespace ncpost;
 using namespace ncpost::comp;

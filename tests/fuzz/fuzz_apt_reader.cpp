@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <sstream>
 
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   ncpost::cl::ReaderOptions options;

@@ -10,7 +10,7 @@
 
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "ac_trunnion_text.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include <sstream>
 
-#include "ncpost/postproc/apt_cycle.hpp"
+#include "ncpost/postproc/read/apt/apt_cycle.hpp"
 
 using namespace ncpost;
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "cl_records.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 
 using namespace ncpost;
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "ncpost/postproc/apt_nurbs.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_nurbs.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 
 using namespace ncpost;
 

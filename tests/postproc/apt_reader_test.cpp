@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cl_records.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "ncpost/postproc/branch_plan.hpp"
+#include "ncpost/postproc/solve/branch_plan.hpp"
 
 using namespace ncpost;
 

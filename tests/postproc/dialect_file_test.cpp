@@ -12,7 +12,7 @@
 
 #include "cli_run.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 #include "text_edit.hpp"

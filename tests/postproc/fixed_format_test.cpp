@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "ncpost/postproc/fixed_format.hpp"
+#include "ncpost/postproc/write/fixed_format.hpp"
 
 TEST_CASE("append_fixed agrees with fmt on random and edge values") {
   std::mt19937_64 rng(7);

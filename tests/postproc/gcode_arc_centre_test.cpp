@@ -15,7 +15,7 @@
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

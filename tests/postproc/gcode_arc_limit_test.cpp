@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

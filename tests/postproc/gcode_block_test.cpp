@@ -7,7 +7,7 @@
 #include <list>
 #include <string>
 
-#include "ncpost/postproc/gcode_block.hpp"
+#include "ncpost/postproc/read/gcode/gcode_block.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

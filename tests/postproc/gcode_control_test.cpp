@@ -10,7 +10,7 @@
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/kinematics/inverse.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

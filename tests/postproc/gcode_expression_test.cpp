@@ -10,9 +10,9 @@
 #include "cl_records.hpp"
 #include "shipped_machines.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
-#include "ncpost/postproc/gcode_expression.hpp"
-#include "ncpost/postproc/gcode_macro.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_expression.hpp"
+#include "ncpost/postproc/read/gcode/gcode_macro.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

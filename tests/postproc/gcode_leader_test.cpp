@@ -14,7 +14,7 @@
 #include "shipped_machines.hpp"
 #include "test_paths.hpp"
 #include "text_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

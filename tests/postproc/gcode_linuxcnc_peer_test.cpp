@@ -30,7 +30,7 @@
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 
 using namespace ncpost;
 

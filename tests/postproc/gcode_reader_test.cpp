@@ -15,8 +15,8 @@
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
-#include "ncpost/postproc/gcode_detect.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_detect.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

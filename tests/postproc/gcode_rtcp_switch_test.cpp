@@ -12,7 +12,7 @@
 
 #include "cl_records.hpp"
 #include "shipped_machines.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 
 using namespace ncpost;
 using namespace ncpost::gcode;

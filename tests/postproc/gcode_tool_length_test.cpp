@@ -12,7 +12,7 @@
 #include "cl_records.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "text_file.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "test_paths.hpp"
 
 namespace {

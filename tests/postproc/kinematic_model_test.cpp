@@ -12,8 +12,8 @@
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/trr_solver.hpp"
+#include "ncpost/postproc/solve/actual_solver.hpp"
+#include "ncpost/postproc/solve/trr_solver.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

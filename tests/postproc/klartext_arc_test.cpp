@@ -13,8 +13,8 @@
 #include "shipped_machines.hpp"
 #include "ncpost/kinematics/pose.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/klartext_arc.hpp"
-#include "ncpost/postproc/klartext_reader.hpp"
+#include "ncpost/postproc/read/klartext/klartext_arc.hpp"
+#include "ncpost/postproc/read/klartext/klartext_reader.hpp"
 
 using namespace ncpost;
 using test::only;

@@ -14,8 +14,8 @@
 #include "shipped_machines.hpp"
 #include "ncpost/kinematics/pose.hpp"
 #include "ncpost/machines/input_error.hpp"
-#include "ncpost/postproc/klartext_block.hpp"
-#include "ncpost/postproc/klartext_reader.hpp"
+#include "ncpost/postproc/read/klartext/klartext_block.hpp"
+#include "ncpost/postproc/read/klartext/klartext_reader.hpp"
 
 using namespace ncpost;
 using test::only;

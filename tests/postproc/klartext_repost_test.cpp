@@ -16,8 +16,8 @@
 #include "vmcl600_setup.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/cl_input.hpp"
-#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/read/cl_input.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "test_paths.hpp"
 

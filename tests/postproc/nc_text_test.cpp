@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "ncpost/postproc/nc_text.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
+#include "ncpost/postproc/write/nc_text.hpp"
+#include "ncpost/postproc/write/nc_writer.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;

@@ -15,7 +15,7 @@
 #include "cli_run.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/plan_nc.hpp"
+#include "ncpost/postproc/write/plan_nc.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 

@@ -8,8 +8,8 @@
 
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/play_subdivision.hpp"
+#include "ncpost/postproc/solve/actual_solver.hpp"
+#include "ncpost/postproc/solve/play_subdivision.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

@@ -15,10 +15,10 @@
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/compensation/simulate.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/actual_solver.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/executed_on.hpp"
-#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "ncpost/postproc/solve/actual_solver.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/solve/executed_on.hpp"
+#include "ncpost/postproc/solve/tolerance_subdivider.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

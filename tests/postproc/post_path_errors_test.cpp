@@ -3,7 +3,7 @@
 // its error, and the largest "after" error of the written blocks of the same CL line; bounded.
 #include <catch2/catch.hpp>
 
-#include "ncpost/postproc/post_report.hpp"
+#include "ncpost/postproc/verify/post_report.hpp"
 
 using ncpost::PathErrors;
 using ncpost::Vec3d;

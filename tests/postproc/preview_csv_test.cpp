@@ -9,8 +9,8 @@
 
 #include "ncpost/compensation/nonlinear_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/preview_blocks.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/verify/preview_blocks.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

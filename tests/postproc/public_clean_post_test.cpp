@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "test_paths.hpp"
 

@@ -10,8 +10,8 @@
 #include <memory>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "test_paths.hpp"
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "test_paths.hpp"
 

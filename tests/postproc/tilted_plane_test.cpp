@@ -19,8 +19,8 @@
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/post_request.hpp"
-#include "ncpost/postproc/tilted_plane.hpp"
-#include "ncpost/postproc/verify.hpp"
+#include "ncpost/postproc/write/tilted_plane.hpp"
+#include "ncpost/postproc/verify/verify.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "cli_run.hpp"
 #include "test_paths.hpp"
 #include "trr_program.hpp"

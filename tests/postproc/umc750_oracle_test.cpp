@@ -8,8 +8,8 @@
 #include <regex>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
-#include "ncpost/postproc/motion_solver.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/solve/motion_solver.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/motion_solver.hpp"
-#include "ncpost/postproc/verify_arc.hpp"
+#include "ncpost/postproc/solve/motion_solver.hpp"
+#include "ncpost/postproc/verify/verify_arc.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;

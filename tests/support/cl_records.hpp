@@ -5,7 +5,7 @@
 #include <variant>
 #include <vector>
 
-#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/read/cl_record.hpp"
 
 namespace ncpost::test {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ncpost/kinematics/trr_xy_forward.hpp"
-#include "ncpost/postproc/apt_reader.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "test_paths.hpp"
 
 namespace ncpost::test {

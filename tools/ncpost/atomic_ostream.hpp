@@ -6,7 +6,7 @@
 #include <ostream>
 #include <streambuf>
 
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 
 namespace ncpost::cli {
 

@@ -22,7 +22,7 @@
 #include "ncpost/compensation/export_siemens.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
 
 namespace ncpost::cli {

@@ -14,7 +14,7 @@
 #include "number_checks.hpp"
 #include "identify_laser.hpp"
 #include "kind_steps.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/control_entries.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"

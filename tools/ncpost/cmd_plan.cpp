@@ -12,12 +12,12 @@
 #include "file_checks.hpp"
 #include "number_checks.hpp"
 #include "kind_steps.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/plan_nc.hpp"
+#include "ncpost/postproc/write/plan_nc.hpp"
 
 namespace ncpost::cli {
 

@@ -18,7 +18,7 @@
 #include "number_checks.hpp"
 #include "atomic_ostream.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/postproc/post_report.hpp"
+#include "ncpost/postproc/verify/post_report.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "kind_steps.hpp"
 

@@ -15,10 +15,10 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/preview_csv.hpp"
-#include "ncpost/postproc/preview_html.hpp"
-#include "ncpost/postproc/preview_model_solver.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
+#include "ncpost/postproc/verify/preview_csv.hpp"
+#include "ncpost/postproc/verify/preview_html.hpp"
+#include "ncpost/postproc/solve/preview_model_solver.hpp"
 
 namespace ncpost::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include "number_checks.hpp"
 #include "ncpost/compensation/trr_sensitivity.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
-#include "ncpost/postproc/trr_sensitivity_report.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
+#include "ncpost/postproc/verify/trr_sensitivity_report.hpp"
 
 namespace ncpost::cli {
 namespace {

@@ -9,7 +9,7 @@
 #include "number_checks.hpp"
 #include "model_input.hpp"
 #include "kind_steps.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/simulate.hpp"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "dialect_option.hpp"
 
-#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
 
 namespace ncpost::cli {
 

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 
 namespace ncpost::cli {
 namespace {

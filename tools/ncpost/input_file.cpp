@@ -10,7 +10,7 @@
 #include <cstring>
 #include <vector>
 
-#include "ncpost/postproc/temp_files.hpp"
+#include "ncpost/postproc/write/temp_files.hpp"
 
 namespace ncpost::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/cl_input.hpp"
+#include "ncpost/postproc/read/cl_input.hpp"
 #include "number_checks.hpp"
 #include "terminal_text.hpp"
 

@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "ncpost/kinematics/machine.hpp"
-#include "ncpost/postproc/cl_input.hpp"
-#include "ncpost/postproc/cl_record.hpp"
+#include "ncpost/postproc/read/cl_input.hpp"
+#include "ncpost/postproc/read/cl_record.hpp"
 
 namespace ncpost::cli {
 
@@ -38,6 +38,6 @@ cl::ReaderOptions reader_options(const JobOptions& o);
 /// Opens the reader for the input's kind (detected from the content unless forced).
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, const JobOptions& o,
                                            const LoadedJob& job);
-// NC axis words of the machine: ncpost::axis_letters (ncpost/postproc/cl_input.hpp)
+// NC axis words of the machine: ncpost::axis_letters (ncpost/postproc/read/cl_input.hpp)
 
 }  // namespace ncpost::cli

@@ -15,7 +15,7 @@
 #include "machine_kind.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/postproc/post_request.hpp"
-#include "ncpost/postproc/preview_blocks.hpp"
+#include "ncpost/postproc/verify/preview_blocks.hpp"
 
 namespace ncpost::cli {
 

@@ -5,8 +5,8 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/trr_preview_evaluator.hpp"
-#include "ncpost/postproc/trr_solver.hpp"
+#include "ncpost/postproc/solve/trr_preview_evaluator.hpp"
+#include "ncpost/postproc/solve/trr_solver.hpp"
 #include "trr_model_input.hpp"
 
 namespace ncpost::cli {

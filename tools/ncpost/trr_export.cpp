@@ -10,7 +10,7 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/export_trr_machine.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/atomic_file.hpp"
+#include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
 #include "trr_model_input.hpp"
 

@@ -12,8 +12,8 @@
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/compensation/trr_probing_csv.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
-#include "ncpost/postproc/plan_nc.hpp"
-#include "ncpost/postproc/trr_solver.hpp"
+#include "ncpost/postproc/write/plan_nc.hpp"
+#include "ncpost/postproc/solve/trr_solver.hpp"
 #include "trr_model_input.hpp"
 
 namespace ncpost::cli {

@@ -13,10 +13,10 @@
 #include <type_traits>
 #include <vector>
 
-#include "ncpost/postproc/cl_record.hpp"
-#include "ncpost/postproc/motion_solver.hpp"
-#include "ncpost/postproc/nc_writer.hpp"
-#include "ncpost/postproc/verify.hpp"
+#include "ncpost/postproc/read/cl_record.hpp"
+#include "ncpost/postproc/solve/motion_solver.hpp"
+#include "ncpost/postproc/write/nc_writer.hpp"
+#include "ncpost/postproc/verify/verify.hpp"
 
 namespace ncpost {
 

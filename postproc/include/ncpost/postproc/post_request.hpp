@@ -30,12 +30,12 @@
 #include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/kinematics/trr_xy_geometry.hpp"
-#include "ncpost/postproc/cl_input.hpp"
-#include "ncpost/postproc/cl_record.hpp"
-#include "ncpost/postproc/dialect.hpp"
+#include "ncpost/postproc/read/cl_input.hpp"
+#include "ncpost/postproc/read/cl_record.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
 #include "ncpost/postproc/post.hpp"
-#include "ncpost/postproc/post_report.hpp"
-#include "ncpost/postproc/tolerance_subdivider.hpp"
+#include "ncpost/postproc/verify/post_report.hpp"
+#include "ncpost/postproc/solve/tolerance_subdivider.hpp"
 
 namespace ncpost {
 

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "ncpost/postproc/read/cl_input.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <string_view>
+
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "ncpost/postproc/read/klartext/klartext_block.hpp"
+#include "ncpost/postproc/read/klartext/klartext_reader.hpp"
+
+namespace ncpost {
+
+InputKind input_kind_named(const std::string& name) {
+  if (name == "auto") return InputKind::automatic;
+  if (name == "cl") return InputKind::cl;
+  if (name == "machine") return InputKind::machine;
+  if (name == "rtcp") return InputKind::rtcp;
+  if (name == "klartext") return InputKind::klartext;
+  throw std::invalid_argument("unknown input kind '" + name + "' (auto, cl, machine, rtcp, klartext)");
+}
+
+std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
+                                           const cl::ReaderOptions& options, const Machine& machine,
+                                           const Setup& setup) {
+  return open_cl_reader(in, name, kind, options, machine, setup, {});
+}
+
+std::unique_ptr<cl::Reader> open_cl_reader(
+    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options,
+    const Machine& machine, const Setup& setup,
+    const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward) {
+  if (word_forward && kind == InputKind::rtcp)
+    throw std::invalid_argument("open_cl_reader: a word machine reads no RTCP programs");
+  bool apt = kind == InputKind::cl;
+  bool klartext = kind == InputKind::klartext;
+  const auto read_head = [&in] {
+    const std::istream::pos_type start = in.tellg();
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    in.clear();
+    in.seekg(start);
+    return head;
+  };
+  const bool seekable = in.tellg() != std::istream::pos_type(-1);
+  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable && klartext::looks_like_klartext(read_head()))
+    throw InputError({name, 1, 0}, fmt::format("a Heidenhain Klartext program (BEGIN PGM), read as G-code as "
+                                               "--input-kind {} asks: use --input-kind klartext (or auto)",
+                                               kind == InputKind::machine ? "machine" : "rtcp"));
+  if (kind == InputKind::automatic) {
+    const std::string head = read_head();
+    std::string_view body(head);
+    if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
+    if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
+    klartext = klartext::looks_like_klartext(body);
+    apt = !klartext && cl::looks_like_apt(head);
+  }
+  if (apt) return std::make_unique<cl::AptReader>(in, name, options);
+  if (klartext) {
+    if (word_forward)
+      throw InputError({name, 0, 0}, fmt::format("a Heidenhain Klartext program on the machine {}, whose words {} are no "
+                                                 "Cartesian frame: not supported (post the CL data)",
+                                                 machine.name, axis_letters(machine)));
+    klartext::ReaderOptions ko;
+    ko.allow_unterminated = options.allow_unterminated;
+    return std::make_unique<klartext::KlartextReader>(in, name, machine, setup, ko);
+  }
+  gcode::GcodeReaderOptions go;
+  go.default_inch = options.default_inch;
+  go.units_given = options.units_given;
+  go.integer_dwell = options.integer_dwell;
+  go.arc_centre = options.arc_centre;
+  go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
+  go.word_forward = word_forward;
+  go.kind = kind == InputKind::machine ? gcode::InputKind::machine
+          : kind == InputKind::rtcp    ? gcode::InputKind::rtcp
+                                       : gcode::InputKind::automatic;
+  return std::make_unique<gcode::GcodeClReader>(in, name, machine, setup, go);
+}
+
+std::string axis_letters(const Machine& machine) {
+  std::string s;
+  for (const Axis& a : machine.axes) s += a.letter;
+  return s;
+}
+
+}  // namespace ncpost

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// CYCL DEF 200 as a cl::Cycle (klartext_drilling.hpp).
+#include "read/klartext/klartext_drilling.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+namespace ncpost::klartext {
+
+std::optional<QAssignment> q_assignment(std::string_view line) {
+  std::size_t p = 0;
+  const auto blanks = [&] {
+    while (p < line.size() && (line[p] == ' ' || line[p] == '\t')) ++p;
+  };
+  blanks();
+  if (p >= line.size() || (line[p] != 'Q' && line[p] != 'q')) return std::nullopt;
+  ++p;
+  const std::size_t digits = p;
+  while (p < line.size() && std::isdigit(static_cast<unsigned char>(line[p]))) ++p;
+  if (p == digits) return std::nullopt;
+  QAssignment a;
+  a.number = std::stoi(std::string(line.substr(digits, p - digits)));
+  blanks();
+  if (p >= line.size() || line[p] != '=') return std::nullopt;
+  ++p;
+  blanks();
+  std::size_t end = p;
+  while (end < line.size() && line[end] != ' ' && line[end] != '\t' && line[end] != ';' && line[end] != '~') ++end;
+  a.text = std::string(line.substr(p, end - p));
+  std::string number = a.text;
+  if (!number.empty() && number.front() == '+') number.erase(0, 1);
+  double v = 0.0;
+  const auto r = std::from_chars(number.data(), number.data() + number.size(), v);
+  if (!number.empty() && r.ec == std::errc{} && r.ptr == number.data() + number.size()) a.value = v;
+  return a;
+}
+
+std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double>& q, cl::Location where) {
+  const auto get = [&q](int n) -> std::optional<double> {
+    const auto it = q.find(n);
+    return it == q.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  for (int n : {200, 201, 206, 202, 203, 204})
+    if (!get(n)) return fmt::format("CYCL DEF 200 without Q{} (expected Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211)", n);
+  const double clearance = *get(200), depth = *get(201), feed = *get(206), peck = *get(202);
+  if (!(clearance > 0.0)) return fmt::format("CYCL DEF 200: Q200={} (the set-up clearance must be > 0)", clearance);
+  if (!(depth < 0.0)) return fmt::format("CYCL DEF 200: Q201={} (the depth must be < 0, below the surface)", depth);
+  if (!(feed > 0.0)) return fmt::format("CYCL DEF 200: Q206={} (the plunging feed must be > 0 mm/min)", feed);
+  if (!(peck > 0.0)) return fmt::format("CYCL DEF 200: Q202={} (the plunging depth must be > 0)", peck);
+  if (get(210).value_or(0.0) != 0.0)
+    return fmt::format("CYCL DEF 200: Q210={} (a dwell at the top between pecks) is not read; program Q210=0",
+                       *get(210));
+  if (get(395).value_or(0.0) != 0.0)
+    return "CYCL DEF 200: Q395=1 (the depth to the tool's full diameter) is not read; program Q395=0 (the tip)";
+  const double dwell = get(211).value_or(0.0);
+  if (dwell < 0.0 || dwell > cl::kMaxDwellSeconds) return fmt::format("CYCL DEF 200: Q211={} s is no dwell", dwell);
+  DrillingCycle d;
+  cl::Cycle& c = d.cycle;
+  c.where = where;
+  c.kind_word = "CYCL DEF 200";
+  c.text = "CYCL DEF 200 DRILLING";
+  c.depth_mm = -depth;
+  c.rapid_to_mm = clearance;
+  const double second = *get(204);
+  if (second > clearance) c.retract_mm = second;
+  c.feed = feed;
+  if (peck + 1e-9 >= c.depth_mm) {
+    c.kind = cl::Cycle::Kind::drill;
+    c.dwell_s = dwell;
+  } else {
+    if (dwell > 0.0)
+      return fmt::format("CYCL DEF 200: Q211={} s (a dwell at the depth) with pecks (Q202={} < the depth {}) is not "
+                         "read; program Q211=0 or one plunge", dwell, peck, -depth);
+    c.kind = cl::Cycle::Kind::deep;
+    c.peck_mm = c.first_peck_mm = peck;
+  }
+  d.surface_mm = *get(203);
+  d.return_mm = std::max(clearance, second);
+  return d;
+}
+
+}  // namespace ncpost::klartext

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// CYCL DEF 200 DRILLING (TNC user manual, "Cycles: drilling") as a cl::Cycle: its Q parameters,
+// written on the `~` continuation lines (`Q200=+2 ;SET-UP CLEARANCE ~`).
+//   Q200 set-up clearance above the surface (> 0), Q201 depth below it (< 0), Q206 plunging feed
+//   (mm/min), Q202 plunging depth (the hole in one plunge when >= the depth, else pecks with a
+//   full retract to the set-up clearance), Q210 dwell at the top (0 only), Q203 the surface
+//   coordinate (absolute, along the tool axis Z), Q204 2nd set-up clearance (the tool returns to
+//   the higher of Q200 and Q204), Q211 dwell at the depth (s, one plunge only), Q395 depth
+//   reference (0: the tool tip, only).
+// The hole's CL point is its top (X Y of the call, Z = Q203): cl::Cycle distances from there.
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "ncpost/postproc/read/cl_record.hpp"
+
+namespace ncpost::klartext {
+
+/// One `Qn = value` continuation line: the number and the value, or the text when not a number.
+struct QAssignment {
+  int number = -1;
+  std::optional<double> value;
+  std::string text;  ///< the value as written
+};
+/// nullopt when the line is no `Qn=` line.
+std::optional<QAssignment> q_assignment(std::string_view line);
+
+struct DrillingCycle {
+  cl::Cycle cycle;              ///< distances from the hole's top
+  double surface_mm = 0.0;      ///< Q203
+  double return_mm = 0.0;       ///< where the tool stands after a hole, above the surface: max(Q200, Q204)
+};
+
+/// CYCL DEF 200 from its parameters, or why not (a sentence naming the parameter).
+std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double>& q, cl::Location where);
+
+}  // namespace ncpost::klartext

@@ -1,0 +1,850 @@
+// SPDX-License-Identifier: Apache-2.0
+// Klartext -> CL records: line source, block tokenizer, the TNC's modal meaning, then the nominal
+// kinematics of the machine (klartext_reader.hpp).
+#include "ncpost/postproc/read/klartext/klartext_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "ncpost/kinematics/forward.hpp"
+#include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/read/klartext/klartext_arc.hpp"
+#include "ncpost/postproc/read/klartext/klartext_block.hpp"
+#include "ncpost/postproc/read/line_source.hpp"
+
+#include "read/klartext/klartext_cycle_def.hpp"
+#include "read/klartext/klartext_drilling.hpp"
+#include "read/klartext/klartext_refusals.hpp"
+
+namespace ncpost::klartext {
+namespace {
+
+constexpr const char* kWhatALineIs = "a Klartext block";
+constexpr std::string_view kSlots = "XYZABC";  ///< ProgramPoint order
+
+/// The slot (0..5) of an axis word X..C or IX..IC, or -1; `incremental` set for I words.
+int axis_slot(const std::string& name, bool& incremental) {
+  incremental = name.size() == 2 && name[0] == 'I';
+  const std::string letter = incremental ? name.substr(1) : name;
+  if (letter.size() != 1) return -1;
+  const std::size_t at = kSlots.find(letter[0]);
+  return at == std::string_view::npos ? -1 : static_cast<int>(at);
+}
+
+/// What one L / C / CR / CT / CP / M block asks besides its path.
+struct BlockWords {
+  ProgramPoint target{};
+  std::array<bool, 6> programmed{};
+  bool any_axis = false;
+  bool rapid = false;
+  std::optional<double> feed;
+  std::optional<cl::CutterComp::Side> comp;
+  std::vector<std::pair<int, int>> m;  ///< code, column
+  std::optional<double> retract_mm;    ///< M140 MB: the distance (infinity: MAX)
+  int retract_column = 0;
+  // arcs
+  std::optional<bool> counter_clockwise;  ///< DR+ / DR-
+  std::optional<double> radius_mm;        ///< CR R
+  std::optional<double> polar_rad;        ///< CP PA
+  std::optional<double> polar_step_rad;   ///< CP IPA
+};
+
+}  // namespace
+
+struct KlartextReader::State {
+  LineSource source;
+  std::string file;
+  Machine machine;
+  Setup setup;
+  ReaderOptions options;
+  std::array<int, 2> rotary_slot{-1, -1};  ///< ProgramPoint slot of machine rotary k
+
+  // ---- modal state of the TNC
+  ProgramPoint pos{};
+  std::array<bool, 6> known{};
+  std::array<int, 6> first_line{};  ///< the line that first programmed each axis
+  std::array<bool, 6> first_by_rapid{};
+  bool rtcp = false;
+  bool shortest_rotary = false;  ///< M126
+  std::optional<double> feed;
+  std::optional<double> auto_feed;  ///< TOOL CALL F, for FAUTO
+  cl::CutterComp::Side comp = cl::CutterComp::Side::off;
+  cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
+  double rpm = 0.0;
+  bool delta_radius = false;  ///< TOOL CALL DR/DR2 not 0
+  Vec3d datum_shift_mm = Vec3d::Zero();    ///< CYCL DEF 7: added to absolute X Y Z words
+  std::optional<Eigen::Vector2d> centre;   ///< CC
+  std::optional<Eigen::Vector2d> tangent;  ///< direction of the last contour element in X Y
+  bool begun = false;
+  bool ended = false;
+
+  // ---- output
+  std::deque<cl::Record> out;
+  struct Held {
+    std::size_t index;  ///< into `held`
+    ProgramPoint p;
+    std::array<bool, 6> assumed;
+    bool rtcp;
+  };
+  std::vector<cl::Record> held;
+  std::vector<Held> held_motions;
+  bool settled = false;
+  bool rotary_zero_noticed = false;
+  std::vector<std::string> notices;
+  std::set<std::string> noticed;
+
+  std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
+  std::optional<DrillingCycle> drilling;                   ///< CYCL DEF 200, for CYCL CALL and M99
+
+  // the current line, for messages
+  int line_number = 0;
+  std::string line_text;
+
+  State(std::istream& in, std::string f, const Machine& m, const Setup& s, ReaderOptions o)
+      : source(in, f, kWhatALineIs), file(std::move(f)), machine(m), setup(s), options(o) {
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
+      rotary_slot[static_cast<std::size_t>(k)] = static_cast<int>(kSlots.find(machine.rotary(k).letter));
+  }
+
+  [[noreturn]] void fail(int column, const std::string& what) const {
+    throw InputError({file, line_number, column}, what, line_text);
+  }
+  void notice(int column, const std::string& what) {
+    notices.push_back(column > 0 ? fmt::format("{}:{}:{}: {}", file, line_number, column, what)
+                                 : fmt::format("{}:{}: {}", file, line_number, what));
+  }
+  void notice_once(const std::string& key, int column, const std::string& what) {
+    if (noticed.insert(key).second) notice(column, what);
+  }
+  cl::Location at(int column) const { return {line_number, column}; }
+
+  void emit(cl::Record r) {
+    if (settled) out.push_back(std::move(r));
+    else held.push_back(std::move(r));
+  }
+
+  // ---- the machine -------------------------------------------------------------------------
+  bool machine_has(int slot) const {
+    if (slot < 3) return true;
+    return std::find(rotary_slot.begin(), rotary_slot.end(), slot) != rotary_slot.end();
+  }
+
+  AxisPosition commands_of(const ProgramPoint& p) const {
+    AxisPosition q = AxisPosition::zero(machine.rotary_count());
+    q.linear_mm = Vec3d(p[0], p[1], p[2]);
+    for (int k = 0; k < machine.rotary_count(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])];
+    return q;
+  }
+
+  /// The tool tip in W of program point `p` (no limit check: a circle's centre need not be reachable).
+  Vec3d tip_of(const ProgramPoint& p, bool tip_program) const {
+    const AxisPosition q = commands_of(p);
+    return tip_program ? q.linear_mm : forward(machine, q, setup).tip_mm;
+  }
+
+  /// The tip and axis in W of program point `p`, its angles, and the limit check.
+  cl::Motion locate(const ProgramPoint& p, bool tip_program, cl::Location where) const {
+    cl::Motion m;
+    m.where = where;
+    m.axis_given = true;
+    AxisPosition q = commands_of(p);
+    if (machine.rotary_count() > 0) m.rotary_rad = q.rotary_rad;
+    const ToolPoseT<double> pose = forward(machine, q, setup);
+    m.point.axis = pose.axis;
+    m.point.tip_mm = tip_program ? q.linear_mm : pose.tip_mm;
+    if (tip_program) q.linear_mm = linear_for(machine, q.rotary_rad, q.linear_mm, setup);
+    if (options.check_limits) check_limits(q, tip_program, where);
+    return m;
+  }
+
+  void check_limits(const AxisPosition& q, bool tip_program, cl::Location where) const {
+    for (std::size_t i = 0; i < machine.axes.size(); ++i) {
+      const Axis& axis = machine.axes[i];
+      const double v = q[static_cast<int>(i)];
+      if (!axis.limits || axis.limits->contains(v, axis.is_rotary() ? 1e-9 : 1e-6)) continue;
+      const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
+      const char* unit = axis.is_rotary() ? "deg" : "mm";
+      throw Infeasible(fmt::format(
+          "{}:{}:{}: {}{} {:.3f} {}, beyond the travel {:.3f} .. {:.3f} {} of machine {}: the program does not fit "
+          "the machine; {}",
+          file, where.line, where.column, tip_program && !axis.is_rotary() ? "the programmed tool tip needs machine " : "",
+          axis.letter, v * scale, unit, axis.limits->min * scale, axis.limits->max * scale, unit, machine.name,
+          axis.is_rotary() ? "check the program's angles against the machine file"
+                           : "check --workpiece-origin and --tool-length, or the machine file"));
+    }
+  }
+
+  // ---- the start: rapids before X Y Z are known are held ----------------------------------
+  void emit_motion(const ProgramPoint& p, cl::Location where, bool rapid, std::optional<double> block_feed) {
+    if (!settled) {
+      const bool all_linear = known[0] && known[1] && known[2];
+      if (!all_linear) {
+        if (!rapid)
+          fail(where.column, fmt::format("a cutting motion before {} {} programmed: where the tool starts is not "
+                                         "known; program X, Y and Z on a rapid (FMAX) first",
+                                         unknown_linear(), unknown_count() > 1 ? "are" : "is"));
+        cl::Motion m;
+        m.where = where;
+        m.rapid = true;
+        held_motions.push_back(Held{held.size(), p, assumed_now(), rtcp});
+        held.push_back(std::move(m));
+        return;
+      }
+      release(where, rapid);
+    }
+    note_rotary_zero(where);
+    cl::Motion m = locate(p, rtcp, where);
+    m.rapid = rapid;
+    m.feed = block_feed;
+    out.push_back(std::move(m));
+  }
+
+  std::array<bool, 6> assumed_now() const {
+    std::array<bool, 6> a{};
+    for (std::size_t i = 0; i < 3; ++i) a[i] = !known[i];
+    return a;
+  }
+  int unknown_count() const { return int(!known[0]) + int(!known[1]) + int(!known[2]); }
+  std::string unknown_linear() const {
+    std::string s;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!known[i]) s += std::string(s.empty() ? "" : ", ") + kSlots[i];
+    return s;
+  }
+
+  void note_rotary_zero(cl::Location where) {
+    if (rotary_zero_noticed) return;
+    std::string missing;
+    for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
+      if (!known[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])])
+        missing += std::string(missing.empty() ? "" : ", ") + machine.rotary(k).letter;
+    if (missing.empty()) return;
+    rotary_zero_noticed = true;
+    notices.push_back(fmt::format("{}:{}:{}: {} not programmed yet: taken as 0 (the machine's home)", file, where.line,
+                                  where.column, missing));
+  }
+
+  /// The held rapids take the first values of the axes they lacked; `rapid`: the block that
+  /// makes X Y Z known is itself a rapid (a cutting motion may not lend its first values).
+  void release(cl::Location where, bool rapid) {
+    for (Held& h : held_motions) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (!h.assumed[i]) continue;
+        if (!rapid && first_line[i] == where.line) {
+          const cl::Location held_at = std::get<cl::Motion>(held[h.index]).where;
+          throw InputError({file, held_at.line, held_at.column},
+                           fmt::format("this rapid does not say where {} goes, and {} is first programmed by the "
+                                       "cutting motion at line {}: program {} on a rapid (FMAX) before it",
+                                       kSlots[i], kSlots[i], where.line, kSlots[i]));
+        }
+        h.p[i] = first_value(i);
+      }
+      cl::Motion& m = std::get<cl::Motion>(held[h.index]);
+      note_rotary_zero(m.where);
+      cl::Motion located = locate(h.p, h.rtcp, m.where);
+      located.rapid = true;
+      m = std::move(located);
+    }
+    for (auto& r : held) out.push_back(std::move(r));
+    held.clear();
+    held_motions.clear();
+    settled = true;
+  }
+
+  std::array<double, 6> first_values{};
+  double first_value(std::size_t i) const { return first_values[i]; }
+
+  void note_programmed(const std::array<bool, 6>& programmed, bool rapid) {
+    for (std::size_t i = 0; i < 6; ++i)
+      if (programmed[i] && !known[i]) {
+        known[i] = true;
+        first_values[i] = pos[i];
+        first_line[i] = line_number;
+        first_by_rapid[i] = rapid;
+      }
+  }
+
+  // ---- blocks ------------------------------------------------------------------------------
+  /// Reads and acts on the next block; false at the end of the program.
+  bool read_block() {
+    std::string_view line;
+    if (!source.next(line)) return finish_input();
+    line_number = source.line_number();
+    line_text = echo_of(line);
+    Block b = parse_block(line, file, line_number);
+    continuation.clear();
+    while (b.continued) {  // the continuation lines of a cycle (its Q parameters)
+      std::string_view more;
+      if (!source.next(more)) break;
+      continuation.emplace_back(std::string(more), source.line_number());
+      b.continued = parse_block(more, file, source.line_number()).continued;
+    }
+    if (b.empty()) return true;
+    if (b.deleted && options.block_skip) {
+      notice_once("/", 1, "blocks that start with '/' (block skip) are left out, as the TNC does with block skip on");
+      return true;
+    }
+    if (!begun) {
+      if (b.statement.empty() || b.statement == "*") return true;  // comments before BEGIN PGM
+      if (b.statement != "BEGIN PGM")
+        fail(b.column, fmt::format("'{}' before BEGIN PGM: a Klartext program starts with BEGIN PGM name MM", b.statement));
+      begin_program(b);
+      return true;
+    }
+    if (!b.comment.empty()) emit(cl::Comment{at(b.comment_column), b.comment});
+    const std::string& s = b.statement;
+    if (s.empty() || s == "*") return true;
+    if (s == "BEGIN PGM") fail(b.column, "a second BEGIN PGM (the previous program has no END PGM)");
+    if (s == "END PGM") return end_program(at(b.column));
+    if (s == "BLK FORM") {
+      notice_once("BLK FORM", b.column, "BLK FORM (the blank, for the TNC's graphics) is noted, not posted");
+      return true;
+    }
+    if (s == "TOOL DEF") {
+      notice_once("TOOL DEF", b.column, "TOOL DEF (the tool preselection) is noted, not posted");
+      return true;
+    }
+    if (s == "TOOL CALL") {
+      tool_call(b);
+      return true;
+    }
+    if (s == "FUNCTION TCPM") {
+      tcpm(b);
+      return true;
+    }
+    if (s == "FUNCTION RESET") {
+      if (b.words.size() != 1 || b.words[0].name != "TCPM") fail(b.column, refused_statement(b));
+      rtcp = false;
+      return true;
+    }
+    if (s == "CYCL DEF") {
+      cycle_def(b);
+      return true;
+    }
+    if (s == "CYCL CALL") {
+      if (!b.text.empty()) fail(b.column, refused_statement(b));
+      call_cycle(at(b.column), b.column);
+      return true;
+    }
+    if (s == "PLANE RESET") {
+      if (b.text != "STAY") fail(b.column, refused_statement(b));
+      notice_once("PLANE RESET", b.column, "PLANE RESET STAY: no tilted plane is active (none is read), nothing moves");
+      return true;
+    }
+    if (s == "CC") {
+      circle_centre(b);
+      return true;
+    }
+    if (s == "L" || s == "M" || s == "STOP" || s == "C" || s == "CR" || s == "CT" || s == "CP") return motion_block(b);
+    fail(b.column, refused_statement(b));
+  }
+
+  void begin_program(const Block& b) {
+    begun = true;
+    const std::string& t = b.text;
+    const std::size_t blank = t.find_last_of(" \t");
+    const std::string unit = blank == std::string::npos ? std::string() : t.substr(blank + 1);
+    std::string u;
+    for (char c : unit) u += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (u == "INCH")
+      fail(b.column, "an INCH program: inch Klartext is not read (the TNC's feed unit in inch programs differs "
+                     "between generations); have the CAM system write the program in MM");
+    if (u != "MM") fail(b.column, "expected BEGIN PGM name MM (the program's name and its unit)");
+  }
+
+  bool end_program(cl::Location where) {
+    if (!settled) finish_start(where);
+    emit(cl::End{where, true});
+    ended = true;
+    return false;
+  }
+
+  bool finish_input() {
+    if (!begun) throw InputError({file, source.line_number(), 0}, "no BEGIN PGM: not a Klartext program");
+    if (!options.allow_unterminated)
+      throw InputError({file, source.line_number(), 0},
+                       "the program ends without END PGM, M2 or M30 (truncated file?); --allow-unterminated posts it");
+    notice(0, "the program ends without END PGM, M2 or M30");
+    line_number = source.line_number();
+    if (!settled) finish_start({line_number, 0});
+    emit(cl::End{{line_number, 0}, true});
+    return false;
+  }
+
+  /// The end while rapids are held: an axis never programmed has no value to give them.
+  void finish_start(cl::Location where) {
+    if (held_motions.empty()) {
+      release(where, true);
+      return;
+    }
+    if (unknown_count() > 0) {
+      const cl::Location held_at = std::get<cl::Motion>(held[held_motions.front().index]).where;
+      throw InputError({file, held_at.line, held_at.column},
+                       fmt::format("{} {} never programmed: where this rapid goes is not known", unknown_linear(),
+                                   unknown_count() > 1 ? "are" : "is"));
+    }
+    release(where, true);
+  }
+
+  // TOOL CALL n|"name" Z S.. F.. DL.. DR.. DR2..
+  void tool_call(const Block& b) {
+    std::optional<int> tool;
+    std::optional<double> speed;
+    bool dr_nonzero = false;
+    for (const Word& w : b.words) {
+      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      if (w.name.empty()) {
+        if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value) || *w.value > 1e9)
+          fail(w.column, "expected a tool number (an integer >= 0)");
+        tool = static_cast<int>(*w.value);
+      } else if (w.name == "\"") {
+        fail(w.column, fmt::format("TOOL CALL \"{}\": a tool called by name; the post writes tool numbers: call the "
+                                   "tool by its number", w.text));
+      } else if (w.name == "X" || w.name == "Y" || w.name == "Z") {
+        if (w.value) fail(w.column, fmt::format("expected the tool axis alone ({} without a value)", w.name));
+        if (w.name != "Z") fail(w.column, fmt::format("tool axis {}: only the tool axis Z is read", w.name));
+      } else if (w.name == "S") {
+        if (!w.value || *w.value < 0) fail(w.column, "expected a spindle speed (rpm >= 0)");
+        speed = *w.value;
+      } else if (w.name == "F") {
+        if (!w.value || *w.value < 0) fail(w.column, "expected a feed (mm/min >= 0)");
+        auto_feed = *w.value;
+      } else if (w.name == "DL") {
+        if (w.value && *w.value != 0.0)
+          fail(w.column, fmt::format("DL{:+g}: a delta length moves the tool tip along its axis; the post takes the "
+                                     "tool length from --tool-length: program DL+0", *w.value));
+      } else if (w.name == "DR" || w.name == "DR2") {
+        if (w.value && *w.value != 0.0) {
+          dr_nonzero = true;
+          notice(w.column, fmt::format("{}{:+g}: a delta radius acts only with RL/RR (refused beside it) and 3-D "
+                                       "compensation; the tool tip path is posted as programmed", w.name, *w.value));
+        }
+      } else {
+        fail(w.column, fmt::format("'{}' in TOOL CALL is not read (expected n Z S F DL DR)", w.name));
+      }
+    }
+    delta_radius = dr_nonzero;  // each TOOL CALL sets its own deltas
+    if (tool) {
+      emit(cl::ToolChange{at(b.column), *tool, std::nullopt});
+      spindle = cl::Spindle::Direction::off;  // the tool change stops the spindle; M3/M4 start it
+    }
+    if (speed) {
+      rpm = *speed;
+      if (spindle != cl::Spindle::Direction::off) emit(cl::Spindle{at(b.column), spindle, rpm});
+    }
+  }
+
+  /// CYCL DEF 7 (datum shift: X Y Z, absolute from the preset or I... from the last shift) and
+  /// CYCL DEF 32 (the TNC's tolerance: noted); every other cycle is refused by name.
+  void cycle_def(const Block& b) {
+    const CycleDef c = cycle_def_of(b, file, line_number);
+    if (c.number == 32 && c.part >= 0) {
+      notice_once("CYCL DEF 32", b.column, "CYCL DEF 32 (the TNC's path tolerance) is noted, not posted: the post's "
+                                           "tolerance is its own (--tolerance)");
+      return;
+    }
+    if (c.number == 200 && c.part < 0) {
+      define_drilling(b);
+      return;
+    }
+    if (c.number != 7 || c.part < 0) fail(b.column, refused_statement(b));
+    if (c.part == 0) return;  // CYCL DEF 7.0 DATUM SHIFT: the header
+    if (c.rest.find('#') != std::string::npos)
+      fail(b.column, "CYCL DEF 7: a datum shift from the datum table (#n) is not read; program the shift's values");
+    if (c.words.size() != 1) fail(b.column, "CYCL DEF 7: expected one axis word per block (X+10, IY-5)");
+    const Word& w = c.words[0];
+    bool incremental = false;
+    const int slot = axis_slot(w.name, incremental);
+    if (slot < 0 || slot > 2)
+      fail(w.column, fmt::format("CYCL DEF 7: a shift of {} is not read (X, Y and Z are)", w.name));
+    if (w.q_parameter || !w.value) fail(w.column, fmt::format("CYCL DEF 7: {} without a number", w.name));
+    datum_shift_mm[slot] = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
+  }
+
+  /// CYCL DEF 200 with its Q parameters on the '~' lines.
+  void define_drilling(const Block& b) {
+    std::map<int, double> q;
+    for (const auto& [text, line] : continuation) {
+      const std::optional<QAssignment> a = q_assignment(text);
+      if (!a) continue;  // (a comment line)
+      if (!a->value)
+        throw InputError({file, line, 0},
+                         fmt::format("Q{}={}: a cycle parameter that is not a number is not read; program the value",
+                                     a->number, a->text),
+                         echo_of(text));
+      q[a->number] = *a->value;
+    }
+    auto d = drilling_200(q, at(b.column));
+    if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
+    drilling = std::get<DrillingCycle>(d);
+  }
+
+  /// CYCL CALL or M99: one hole of CYCL DEF 200 where the tool stands (X Y), its top at Q203.
+  void call_cycle(cl::Location where, int column) {
+    if (!drilling) fail(column, "a cycle call without CYCL DEF 200 before it (other cycles are not read)");
+    if (rtcp) fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
+    if (!settled || !known[0] || !known[1] || !known[2])
+      fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
+    ProgramPoint top = pos;
+    top[2] = drilling->surface_mm + datum_shift_mm.z();
+    cl::Motion hole = locate(top, false, where);
+    ProgramPoint below = top;
+    below[2] -= 1.0;
+    if ((hole.point.tip_mm - tip_of(below, false) - hole.point.axis).norm() > 1e-6)
+      fail(column, "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
+    cl::Cycle c = drilling->cycle;
+    c.where = where;
+    emit(c);
+    emit(hole);  // (not rapid: the hole of the cycle)
+    cl::Cycle off;
+    off.where = where;
+    emit(off);
+    pos[2] = top[2] + drilling->return_mm;  // where the TNC leaves the tool
+  }
+
+  // FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS [REFPNT TIP-TIP]
+  void tcpm(const Block& b) {
+    for (std::size_t i = 0; i < b.words.size(); ++i) {
+      const Word& w = b.words[i];
+      const auto refuse = [&](const std::string& why) {
+        fail(w.column, fmt::format("FUNCTION TCPM ... {}: {}; ncpost reads F TCP, AXIS POS, PATHCTRL AXIS and "
+                                   "REFPNT TIP-TIP", w.name, why));
+      };
+      if (w.name == "SPAT") refuse("the rotary words are spatial angles, not machine axes: not read");
+      if (w.name == "CONT") refuse("a contouring feed over all axes: not read");
+      if (w.name == "VECTOR") refuse("the tool axis interpolated in a plane: not read");
+      if (w.name == "REFPNT") {
+        const bool tip_tip = i + 2 < b.words.size() && b.words[i + 1].name == "TIP" && b.words[i + 1].sign == '-' &&
+                             b.words[i + 2].name == "TIP";
+        if (!tip_tip) refuse("a reference point other than the tool tip: not read");
+      }
+    }
+    rtcp = true;
+  }
+
+  // CC X Y (or IX IY from the last position; a missing coordinate: the last position's)
+  void circle_centre(const Block& b) {
+    if (!known[0] || !known[1]) fail(b.column, "CC before X and Y are programmed (the pole's missing coordinates are the last position's)");
+    Eigen::Vector2d c(pos[0], pos[1]);
+    for (const Word& w : b.words) {
+      bool incremental = false;
+      const int slot = axis_slot(w.name, incremental);
+      if (slot != 0 && slot != 1)
+        fail(w.column, fmt::format("'{}' in CC: expected X and Y (the working plane of the tool axis Z)", w.name));
+      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
+      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value + datum_shift_mm[slot];
+    }
+    centre = c;
+  }
+
+  /// The words of a path block (L, C, CR, CT, CP, or M words alone).
+  BlockWords words_of(const Block& b) {
+    BlockWords bw;
+    bw.target = pos;
+    const bool cr = b.statement == "CR";
+    for (std::size_t i = 0; i < b.words.size(); ++i) {
+      const Word& w = b.words[i];
+      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      bool incremental = false;
+      const int slot = axis_slot(w.name, incremental);
+      if (slot >= 0) {
+        if (!machine_has(slot))
+          fail(w.column, fmt::format("{}: the machine {} has no {} axis", w.name, machine.name, kSlots[static_cast<std::size_t>(slot)]));
+        if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
+        const auto s = static_cast<std::size_t>(slot);
+        if (incremental && !known[s] && slot < 3)
+          fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
+        const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
+        bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 ? datum_shift_mm[slot] : 0.0);
+        if (!incremental && slot >= 3 && shortest_rotary && known[s] && machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
+          bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
+        bw.programmed[s] = true;
+        bw.any_axis = true;
+      } else if (w.name == "R" && cr) {
+        if (!w.value || *w.value == 0.0) fail(w.column, "CR: expected the radius R+ (up to 180 deg) or R- (beyond)");
+        bw.radius_mm = *w.value;
+      } else if (w.name == "R") {
+        if (!w.value || *w.value != 0.0) fail(w.column, "expected R0, RL or RR (the radius compensation)");
+        bw.comp = cl::CutterComp::Side::off;
+      } else if (w.name == "RL" || w.name == "RR") {
+        bw.comp = w.name == "RL" ? cl::CutterComp::Side::left : cl::CutterComp::Side::right;
+        if (delta_radius)
+          fail(w.column, fmt::format("{} with a delta radius DR from the TOOL CALL: the post's radius compensation "
+                                     "would use the tool's own radius; program DR+0 or post the tool centre path",
+                                     w.name));
+      } else if (w.name == "DR") {
+        if (w.sign == 0 || w.value) fail(w.column, "expected DR+ (counter-clockwise) or DR- (clockwise)");
+        bw.counter_clockwise = w.sign == '+';
+      } else if (w.name == "PA" || w.name == "IPA") {
+        if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
+        (w.name == "PA" ? bw.polar_rad : bw.polar_step_rad) = deg_to_rad(*w.value);
+      } else if (w.name == "F") {
+        if (!w.value || *w.value < 0.0) fail(w.column, "expected a feed (mm/min >= 0), FMAX or FAUTO");
+        bw.feed = *w.value;
+      } else if (w.name == "FMAX") {
+        bw.rapid = true;
+      } else if (w.name == "FAUTO") {
+        if (!auto_feed) fail(w.column, "FAUTO without a feed in the TOOL CALL (F)");
+        bw.feed = *auto_feed;
+      } else if (w.name == "FQ" || w.name == "FU" || w.name == "FZ") {
+        fail(w.column, fmt::format("{}: {} is not read; program F in mm/min", w.name + (w.value ? fmt::format("{:g}", *w.value) : ""),
+                                   w.name == "FQ" ? "a feed from a Q parameter" : w.name == "FU" ? "a feed per revolution" : "a feed per tooth"));
+      } else if (w.name == "M") {
+        if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value)) fail(w.column, "expected an M function number");
+        bw.m.emplace_back(static_cast<int>(*w.value), w.column);
+      } else if (w.name == "MB") {
+        bw.retract_column = w.column;
+        if (w.value) {
+          if (*w.value <= 0.0) fail(w.column, "M140 MB: expected a distance > 0 or MAX");
+          bw.retract_mm = *w.value;
+        } else if (i + 1 < b.words.size() && b.words[i + 1].name == "MAX") {
+          bw.retract_mm = std::numeric_limits<double>::infinity();
+          ++i;
+        } else {
+          fail(w.column, "M140 MB: expected a distance or MAX");
+        }
+      } else {
+        fail(w.column, fmt::format("'{}' in {} is not read", w.name, b.statement));
+      }
+    }
+    return bw;
+  }
+
+  int rotary_index(int slot) const {
+    for (int k = 0; k < 2; ++k)
+      if (rotary_slot[static_cast<std::size_t>(k)] == slot) return k;
+    return 0;
+  }
+
+  /// L, C, CR, CT, CP and blocks of M functions: compensation, feed, M functions at the start,
+  /// the path, M functions at the end. False when the block ends the program.
+  bool motion_block(const Block& b) {
+    BlockWords bw = words_of(b);
+    const cl::Location where = at(b.column);
+    const bool path = b.statement != "M" && b.statement != "STOP";
+    if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
+      fail(b.column, fmt::format("{} with path words: program them in an L block", b.statement));
+    bool m140 = false, program_end = false, cycle_call = false;
+    int cycle_call_column = 0;
+    std::vector<cl::Record> after;
+    for (const auto& [code, column] : bw.m) {
+      if (code == 99) {  // the cycle, at the end of the block's positioning
+        cycle_call = true;
+        cycle_call_column = column;
+        continue;
+      }
+      if (auto why = refused_m(code)) fail(column, *why);
+      const cl::Location mat = at(column);
+      switch (code) {
+        case 3: case 4: case 13: case 14:
+          spindle = code == 3 || code == 13 ? cl::Spindle::Direction::cw : cl::Spindle::Direction::ccw;
+          emit(cl::Spindle{mat, spindle, rpm});
+          if (code >= 13) emit(cl::Coolant{mat, true, "FLOOD"});
+          break;
+        case 5:
+          spindle = cl::Spindle::Direction::off;
+          after.push_back(cl::Spindle{mat, spindle, rpm});
+          break;
+        case 8: emit(cl::Coolant{mat, true, "FLOOD"}); break;
+        case 9: after.push_back(cl::Coolant{mat, false, "OFF"}); break;
+        case 0: case 1: after.push_back(cl::Stop{mat, code == 1, ""}); break;
+        case 2: case 30: program_end = true; break;
+        case 126: shortest_rotary = true; break;
+        case 127: shortest_rotary = false; break;
+        case 128: rtcp = true; break;
+        case 129: rtcp = false; break;
+        case 140: m140 = true; break;
+        case 91: case 92:
+          if (bw.any_axis)
+            fail(column, fmt::format("M{} with axis words: the block's coordinates are machine coordinates (M91: from "
+                                     "the machine datum, M92: from a position the machine builder sets), which the "
+                                     "machine file does not give; program the position in the workpiece frame, or "
+                                     "M140 MB MAX to retract", code));
+          [[fallthrough]];
+        default:
+          after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});
+          notice_once(fmt::format("M{}", code), column, fmt::format("M{} is not acted on; passed through as a comment", code));
+      }
+    }
+    if (bw.retract_mm && !m140) fail(bw.retract_column, "MB without M140");
+    if (m140 && !bw.retract_mm) fail(b.column, "M140 without MB (expected M140 MB MAX or M140 MB distance)");
+    if (bw.comp && *bw.comp != comp) {
+      comp = *bw.comp;
+      cl::CutterComp c;
+      c.where = where;
+      c.side = comp;
+      c.text = comp == cl::CutterComp::Side::off ? "R0" : comp == cl::CutterComp::Side::left ? "RL" : "RR";
+      emit(c);
+    }
+    if (bw.feed) {
+      feed = bw.feed;
+      emit(cl::Feed{where, *bw.feed, false});
+    }
+    if (path) path_of(b, bw, where);
+    if (cycle_call) call_cycle(at(cycle_call_column), cycle_call_column);
+    if (b.statement == "STOP") after.push_back(cl::Stop{where, false, ""});
+    if (m140) retract(bw);
+    for (auto& r : after) emit(std::move(r));
+    if (program_end) return end_program(where);
+    return true;
+  }
+
+  void path_of(const Block& b, const BlockWords& bw, cl::Location where) {
+    const std::string& s = b.statement;
+    const std::optional<double> block_feed = bw.rapid ? std::nullopt : bw.feed;
+    if (s == "L") {
+      if (!bw.any_axis) return;
+      if (bw.radius_mm || bw.counter_clockwise || bw.polar_rad || bw.polar_step_rad)
+        fail(b.column, "L with arc words (R, DR, PA, IPA): program C, CR or CP");
+      const ProgramPoint from = pos;
+      pos = bw.target;
+      note_programmed(bw.programmed, bw.rapid);
+      const Eigen::Vector2d d(pos[0] - from[0], pos[1] - from[1]);
+      if (d.norm() > 1e-9) tangent = d.normalized();
+      emit_motion(pos, where, bw.rapid, block_feed);
+      return;
+    }
+    arc_path(b, bw, where, block_feed);
+  }
+
+  void arc_path(const Block& b, const BlockWords& bw, cl::Location where, std::optional<double> block_feed) {
+    const std::string& s = b.statement;
+    if (!settled || !known[0] || !known[1] || !known[2])
+      fail(b.column, fmt::format("{} before X, Y and Z are programmed on a rapid: the start of the arc is not known", s));
+    for (std::size_t i = 3; i < 6; ++i)
+      if (bw.programmed[i]) fail(b.column, fmt::format("{} with a rotary word: program rotary axes in L blocks", s));
+    if (bw.programmed[2] && s != "CP") fail(b.column, fmt::format("{} with Z: a helix is programmed with CP", s));
+    if (s != "CR" && bw.radius_mm) fail(b.column, fmt::format("{} with a radius R: program CR", s));
+    if (s != "CP" && (bw.polar_rad || bw.polar_step_rad)) fail(b.column, fmt::format("{} with PA/IPA: program CP", s));
+    ProgramPoint end = bw.target;
+    ArcResult r;
+    if (s == "C" || s == "CP") {
+      if (!centre) fail(b.column, fmt::format("{} without a CC before it: the circle centre is not known", s));
+      if (!bw.counter_clockwise) fail(b.column, fmt::format("{} without DR+ or DR-: the direction is not known", s));
+    }
+    if (s == "C") {
+      r = arc_about_centre(pos, end, *centre, *bw.counter_clockwise);
+    } else if (s == "CR") {
+      if (!bw.radius_mm) fail(b.column, "CR without R");
+      if (!bw.counter_clockwise) fail(b.column, "CR without DR+ or DR-: the direction is not known");
+      r = arc_by_radius(pos, end, *bw.radius_mm, *bw.counter_clockwise);
+    } else if (s == "CT") {
+      if (bw.counter_clockwise) fail(b.column, "CT with DR: the tangent gives the direction");
+      if (!tangent) fail(b.column, "CT without a contour element before it in X Y: the tangent is not known");
+      r = arc_tangent(pos, end, *tangent);
+    } else {  // CP
+      if (bw.programmed[0] || bw.programmed[1]) fail(b.column, "CP with X or Y: a polar arc gives PA or IPA");
+      if (bw.polar_rad.has_value() == bw.polar_step_rad.has_value()) fail(b.column, "CP: expected PA or IPA (one of them)");
+      double sweep = 0.0;
+      const double a0 = std::atan2(pos[1] - centre->y(), pos[0] - centre->x());
+      if (bw.polar_step_rad) {
+        sweep = *bw.polar_step_rad;
+        if ((sweep > 0.0) != *bw.counter_clockwise)
+          fail(b.column, "CP: the signs of IPA and DR differ (the TNC requires IPA+ with DR+ and IPA- with DR-)");
+      } else {
+        sweep = sweep_between(a0, *bw.polar_rad, *bw.counter_clockwise);
+      }
+      r = arc_polar(pos, *centre, sweep, end[2]);
+    }
+    if (!r.arc) fail(b.column, fmt::format("{}: {}", s, r.error));
+    arc_motion(*r.arc, where, bw.rapid, block_feed, b);
+    pos = r.arc->end;
+    note_programmed(bw.programmed, bw.rapid);
+    tangent = end_tangent(*r.arc);
+  }
+
+  /// The arc as a cl::Circle and its end (one turn at most), else as points.
+  void arc_motion(const ArcMove& a, cl::Location where, bool rapid, std::optional<double> block_feed, const Block& b) {
+    const long n = gcode::arc_segments(a, options.arc_chord_tolerance_mm);
+    if (n > gcode::kMaxArcSegments)
+      fail(b.column, fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
+                                 gcode::kMaxArcSegments, options.arc_chord_tolerance_mm));
+    const bool circle = std::abs(a.sweep_rad) <= 2.0 * kPi + 1e-9 && std::abs(a.radius_start_mm - a.radius_end_mm) < 5e-4;
+    if (circle) {
+      for (long i = 1; i < n && options.check_limits; ++i) locate(a.at(static_cast<double>(i) / static_cast<double>(n)), rtcp, where);
+      ProgramPoint centre_p = a.start;
+      centre_p[0] = a.centre1_mm;
+      centre_p[1] = a.centre2_mm;
+      ProgramPoint above = centre_p;
+      above[2] += 1.0;
+      cl::Circle c;
+      c.where = where;
+      c.center_mm = tip_of(centre_p, rtcp);
+      const Vec3d up = tip_of(above, rtcp) - c.center_mm;
+      c.axis = (a.sweep_rad > 0.0 ? 1.0 : -1.0) * up.normalized();
+      c.radius_mm = a.radius_start_mm;
+      emit(c);
+      emit_motion(a.end, where, rapid, block_feed);
+      return;
+    }
+    for (long i = 1; i <= n; ++i) emit_motion(a.at(static_cast<double>(i) / static_cast<double>(n)), where, rapid, block_feed);
+  }
+
+  /// M140 MB MAX|d: a rapid along the tool axis, which is machine Z on a machine whose head does
+  /// not tilt, to the top of Z's travel (MAX) or by d (at most to the top).
+  void retract(const BlockWords& bw) {
+    for (int i : machine.tool_side)
+      if (machine.axes[static_cast<std::size_t>(i)].is_rotary())
+        fail(bw.retract_column, fmt::format("M140 on the machine {}, whose head tilts: the tool axis is not machine Z; "
+                                            "program the retract with L", machine.name));
+    if (!settled) {
+      notice(bw.retract_column, "M140 before the first programmed position moves nothing in the posted program (where "
+                                "the tool stands is not known yet)");
+      return;
+    }
+    if (!machine.axes[2].limits)
+      fail(bw.retract_column, "M140: the machine file gives no Z travel, so the top of Z is not known");
+    const double top = machine.axes[2].limits->max;
+    AxisPosition q = commands_of(pos);
+    if (rtcp) q.linear_mm = linear_for(machine, q.rotary_rad, q.linear_mm, setup);
+    const double z = std::isinf(*bw.retract_mm) ? top : std::min(top, q.linear_mm.z() + *bw.retract_mm);
+    if (z < q.linear_mm.z()) return;  // (above the top already: the TNC stays)
+    q.linear_mm.z() = z;
+    ProgramPoint p = pos;
+    const Vec3d xyz = rtcp ? forward(machine, q, setup).tip_mm : q.linear_mm;
+    for (std::size_t i = 0; i < 3; ++i) p[i] = xyz[static_cast<int>(i)];
+    notice_once("M140", bw.retract_column,
+                fmt::format("M140 MB: a rapid along the tool axis (machine Z) to Z {:.3f} mm{}", z,
+                            std::isinf(*bw.retract_mm) ? ", the top of its travel in the machine file" : ""));
+    pos = p;
+    emit_motion(pos, at(bw.retract_column), true, std::nullopt);
+  }
+
+  std::optional<cl::Record> next() {
+    for (;;) {
+      if (!out.empty()) {
+        cl::Record r = std::move(out.front());
+        out.pop_front();
+        return r;
+      }
+      if (ended) return std::nullopt;
+      if (!read_block()) ended = true;
+    }
+  }
+};
+
+KlartextReader::KlartextReader(std::istream& in, std::string file_name, const Machine& machine, const Setup& setup,
+                               ReaderOptions options)
+    : state_(std::make_unique<State>(in, std::move(file_name), machine, setup, options)) {}
+
+KlartextReader::~KlartextReader() = default;
+
+std::optional<cl::Record> KlartextReader::next() { return state_->next(); }
+
+std::vector<std::string> KlartextReader::take_notices() {
+  std::vector<std::string> out;
+  out.swap(state_->notices);
+  return out;
+}
+
+}  // namespace ncpost::klartext

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: Apache-2.0
+// The refusals of the Klartext reader (klartext_refusals.hpp): one table, one sentence each.
+#include "read/klartext/klartext_refusals.hpp"
+
+#include <fmt/format.h>
+
+#include <string_view>
+
+namespace ncpost::klartext {
+namespace {
+
+constexpr std::string_view kPostCl = "post the CL data, or have the CAM system write the motions as L and C blocks";
+
+struct Refusal {
+  std::string_view statement;  ///< the statement, or its first word followed by a blank
+  std::string_view what;
+  std::string_view instead;
+};
+
+constexpr Refusal kStatements[] = {
+    {"CYCL DEF", "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
+                 "shift, 32 tolerance and 200 drilling are)", kPostCl},
+    {"CYCL CALL", "a cycle call is not read", kPostCl},
+    {"PLANE ", "a tilted working plane is not read", "post the CL data, or a program with M128 / FUNCTION TCPM and rotary words"},
+    {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
+    {"CHF", "a chamfer between two contour elements is not read", "have the CAM system write the chamfer as an L block"},
+    {"LP", "a line in polar coordinates is not read", "have the CAM system write Cartesian L blocks"},
+    {"APPR", "an approach contour is not read", kPostCl},
+    {"DEP", "a departure contour is not read", kPostCl},
+    {"LN", "a line with a surface normal (3-D tool compensation) is not read", kPostCl},
+    {"FN", "Q parameter programming is not read", "have the CAM system write the values"},
+    {"Q", "a Q parameter assignment is not read", "have the CAM system write the values"},
+    {"LBL", "labels and subprograms are not read", "have the CAM system write the program without subprograms"},
+    {"CALL ", "program and label calls are not read", "have the CAM system write the program without subprograms"},
+    {"FUNCTION ", "this function is not read", kPostCl},
+    {"SEL", "a program or table selection is not read", "post each program on its own"},
+    {"SPL", "a spline is not read", kPostCl},
+    {"TCH", "a touch-probe cycle is not read", "probe on the machine; post the machining program"},
+};
+
+struct MRefusal {
+  int code;
+  std::string_view what;
+};
+
+constexpr MRefusal kMFunctions[] = {
+    {89, "a modal cycle call: cycles are not read; post the CL data"},
+    {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
+    {97, "a small contour step (radius compensation) is not read"},
+    {101, "automatic tool change with a replacement tool is not read"},
+    {114, "the automatic tool-length compensation of tilted axes (M114) gives X Y Z another meaning: not read; "
+          "use M128 or FUNCTION TCPM"},
+    {116, "a feed in mm/min on rotary axes (M116) gives F another meaning: not read"},
+    {118, "a handwheel superimposition is not read"},
+    {130, "a motion in the untilted system inside a tilted plane is not read"},
+    {138, "a selection of the rotary axes for M128 is not read"},
+    {144, "M144 (kinematics in the actual/nominal positions) gives X Y Z another meaning: not read"},
+    {145, "M145 is not read"},
+    {150, "M150 (no error at the limit switches) is not read"},
+};
+
+}  // namespace
+
+std::string refused_statement(const Block& b) {
+  std::string shown = b.statement;
+  if (!b.text.empty()) shown += " " + b.text.substr(0, std::min<std::size_t>(b.text.size(), 40));
+  for (const Refusal& r : kStatements) {
+    const bool prefix = r.statement.back() == ' ';
+    const std::string_view key = prefix ? r.statement.substr(0, r.statement.size() - 1) : r.statement;
+    if (prefix ? b.statement.rfind(key, 0) == 0 : b.statement == key)
+      return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
+  }
+  return fmt::format("'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
+                     "FUNCTION TCPM); {}", shown, kPostCl);
+}
+
+std::optional<std::string> refused_m(int code) {
+  for (const MRefusal& m : kMFunctions)
+    if (m.code == code) return fmt::format("M{}: {}", code, m.what);
+  return std::nullopt;
+}
+
+}  // namespace ncpost::klartext

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "read/lookahead.hpp"
+
+#include <variant>
+
+namespace ncpost::detail {
+
+bool BatchQueue::push(std::vector<AheadItem>&& batch) {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [this] { return stopped_ || batches_.size() < capacity_; });
+  if (stopped_) return false;
+  batches_.push_back(std::move(batch));
+  lock.unlock();
+  changed_.notify_all();
+  return true;
+}
+
+std::optional<std::vector<AheadItem>> BatchQueue::pop() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [this] { return stopped_ || !batches_.empty(); });
+  if (stopped_) return std::nullopt;
+  std::vector<AheadItem> batch = std::move(batches_.front());
+  batches_.pop_front();
+  lock.unlock();
+  changed_.notify_all();
+  return batch;
+}
+
+void BatchQueue::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stopped_ = true;
+  }
+  changed_.notify_all();
+}
+
+Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver)
+    : reader_(reader), solver_(solver), reading_([this] { read(); }), solving_([this] { solve(); }) {}
+
+Lookahead::~Lookahead() {
+  parsed_.stop();
+  solved_.stop();
+  reading_.join();
+  solving_.join();
+}
+
+void Lookahead::read() {
+  std::vector<AheadItem> batch;
+  batch.reserve(kBatchSize);
+  for (;;) {
+    AheadItem item;
+    try {
+      item.record = reader_.next();
+      item.notices = reader_.take_notices();
+    } catch (...) {
+      item.record.reset();
+      item.error = std::current_exception();
+    }
+    const bool last = !item.record;
+    batch.push_back(std::move(item));
+    if (last || batch.size() == kBatchSize) {
+      if (!parsed_.push(std::move(batch)) || last) return;  // push() fails once stopped
+      batch = {};
+      batch.reserve(kBatchSize);
+    }
+  }
+}
+
+void Lookahead::solve() {
+  const bool ahead = solver_.concurrent();
+  AxisPosition previous = solver_.words().home();  // the post starts from home too
+  for (;;) {
+    std::optional<std::vector<AheadItem>> batch = parsed_.pop();
+    if (!batch) return;
+    bool last = false;
+    for (AheadItem& item : *batch) {
+      if (!item.record) {
+        last = true;
+        break;
+      }
+      const auto* m = ahead ? std::get_if<cl::Motion>(&*item.record) : nullptr;
+      if (!m || m->rotary_rad) continue;
+      AheadSolve s{m->point, previous, {}, {}};
+      try {
+        s.ik = solver_.solve_quiet(m->point, previous, solving_data_, &s.figures);
+        if (s.ik.ok()) previous = *s.ik.position;
+        item.solved = std::move(s);
+      } catch (...) {
+        // the post solves this motion itself and meets the same failure there
+      }
+    }
+    if (!solved_.push(std::move(*batch)) || last) return;
+  }
+}
+
+AheadItem Lookahead::next() {
+  if (position_ == current_.size()) {
+    std::optional<std::vector<AheadItem>> batch = solved_.pop();
+    if (!batch) return {};  // stopped: only while the object is being destroyed
+    current_ = std::move(*batch);
+    position_ = 0;
+  }
+  return std::move(current_[position_++]);
+}
+
+}  // namespace ncpost::detail
