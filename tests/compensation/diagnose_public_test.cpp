@@ -66,7 +66,7 @@ TEST_CASE("diagnose public-ezc: EZC:h1 found, the basic model's 33 um prediction
 }
 
 // The issue's target, "the model's predictions within 1 um of the truth", read as the predictions
-// the job needs (README "Choices"): the tool tip at every pose of the scenario's own path (path.cls
+// the job needs (docs/choices.md): the tool tip at every pose of the scenario's own path (path.cls
 // with job.json's set-up) and the measurements themselves (the fitted values against the truth's
 // noise-free values).
 TEST_CASE("diagnose public-ezc: the final model predicts the job's tool tip and the measurements within 1 um", "[diagnose]") {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ncpost identify: fit error parameters to measurements (README "Worked example" and "Closing the loop").
+// ncpost identify: fit error parameters to measurements (README "Worked example" and docs/metrology.md "Closing the loop").
 #include <fmt/format.h>
 
 #include <unistd.h>

@@ -160,7 +160,7 @@ void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
       ->check(finite_in(0.0, 1000.0, "mm"));
   sub->add_option("--dialect", a->dialect,
                   "The NC program's dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain, or the path of a "
-                  "dialect file (README \"Dialect files\"); the plan's commands are rounded to its decimals")
+                  "dialect file (docs/usage.md \"Dialect files\"); the plan's commands are rounded to its decimals")
       ->type_name("NAME|PATH")
       ->check(dialect_name_or_path());
 }

@@ -213,7 +213,7 @@ void add_post(CLI::App& app, Action& action) {
                 "the plane, G2/G3 and drilling cycles in its XY. Not with --rtcp or --model");
   sub->add_option("--dialect", a->dialect,
                   "A built-in dialect: fanuc (default), haas, linuxcnc, sinumerik, heidenhain; or the path of a "
-                  "dialect file (a copy of postproc/dialects/fanuc.toml, edited; README \"Dialect files\")")
+                  "dialect file (a copy of postproc/dialects/fanuc.toml, edited; docs/usage.md \"Dialect files\")")
       ->type_name("NAME|PATH")
       ->check(dialect_name_or_path());
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ncpost sensitivity: the TRR-XY sensitivity maps (README "TRR-XY hybrid machine").
+// ncpost sensitivity: the TRR-XY sensitivity maps (docs/trr-xy.md).
 #include <fmt/format.h>
 
 #include <cmath>

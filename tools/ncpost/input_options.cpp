@@ -30,11 +30,11 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                "Post a CL file that ends without FINI/END/END-OF-PATH (refused otherwise: a cut copy)");
   sub.add_option("--msys", o.msys,
                  "NX MSYS: ignore = GOTOs as written, in the MCS, as NX's posts do (default); apply = map them "
-                 "through MSYS into the absolute frame (README, Choices)")
+                 "through MSYS into the absolute frame (docs/choices.md)")
       ->check(CLI::IsMember({"ignore", "apply"}));
   sub.add_option("--dwell-p", o.dwell_p,
                  "G-code input: a dwell time without a decimal point (G4 P, G82/G89 P) is ms (Fanuc, Haas) or s "
-                 "(LinuxCNC); auto reads 100 and more as ms and refuses 1 to 99 (README, Choices)")
+                 "(LinuxCNC); auto reads 100 and more as ms and refuses 1 to 99 (docs/choices.md)")
       ->check(CLI::IsMember({"auto", "ms", "s"}));
   sub.add_option("--arc-centre", o.arc_centre,
                  "G-code input: what I J K of G2/G3 give: incremental = the vector from the start to the centre "
