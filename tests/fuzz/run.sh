@@ -1,6 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# Builds the libFuzzer targets with clang-14 (ASan + UBSan) in build-fuzz/ and runs each for
+# Builds the libFuzzer targets with clang-14 in build-fuzz/ (the readers instrumented with ASan +
+# UBSan and coverage; the rest linked from the release build in build/, built first if missing:
+# tests/fuzz/CMakeLists.txt) and runs each for
 # SECONDS (default 60), starting from the seed corpus in tests/fuzz/corpus/ plus the real files
 # of tests/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
@@ -16,9 +18,13 @@ SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuz
 # -O1 with line tables only (what OSS-Fuzz builds with): about 15 % less compile time than -O2 -g,
 # and the sanitizers' reports still name file and line. Only the four targets and the libraries
 # they link are built (not the ncpost executable, the tests or the benchmarks).
+if [ ! -f "$ROOT/build/tools/ncpost/libncpost_cli.a" ]; then
+  cmake -S "$ROOT" -B "$ROOT/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$ROOT/build" -j2 --target ncpost
+fi
 CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
-  -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_TESTS=OFF -DNCPOST_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$SAN" >/dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DNCPOST_FUZZ_LIBS_FROM="$ROOT/build" \
+  -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_TESTS=OFF -DNCPOST_BUILD_BENCH=OFF -DNCPOST_FUZZ_SANITIZE="$SAN" >/dev/null
 TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader fuzz_post_cli}
 FUZZ_FLAGS=${FUZZ_FLAGS:-}
 ninja -C "$BUILD" -j2 $TARGETS
