@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Issue 17: how often the open-ended diagnosis attributes something that is not there.
-//  - noise-only sets (public-clean's location errors, nothing else; 50 seeds): any effect added or
+//  - noise-only sets (public-clean's location errors, nothing else; 20 seeds): any effect added or
 //    any structure reported unexplained is a false attribution. Each step tests at a family-wise
 //    rate of 1e-3 (Bonferroni over ~100-250 candidates) and the structure test at 1e-3 (Bonferroni
-//    over its columns), so the expected rate is about 2e-3 per set: over 50 sets, 0 expected;
-//    allowing 2 (4 %) keeps the test from failing by chance (P(≥ 3 | rate 1e-2) = 1.4 %) while a
-//    rate ten times the design's would show.
+//    over its columns), so the expected rate is about 2e-3 per set: over 20 sets, 0 expected;
+//    allowing 1 keeps the test from failing by chance (P(≥ 2 | rate 2e-3) < 1e-3), and a rate of
+//    one set in five or worse fails (P(≤ 1 | 20, 0.2) = 7 %). The rate itself, over 50 sets of
+//    each kind, is measured by bench/run_diagnose_full.sh (the hidden [sweep] case below); the
+//    suite ran 50 sets here before (37 s), cut to 20 to keep the test command short (issue 26).
 //  - wrong-model sets: an effect outside every family of the model, a three-per-revolution
 //    angular error of C whose amplitude grows with A (3 seeds, one ballbar of 200 rows and the
 //    sphere every 30°, to keep the time): any effect added is a false attribution (the closest-
@@ -29,7 +31,7 @@ TEST_CASE("False-attribution rate over noise-only sets", "[diagnose][open][rate]
   const auto plans = open_plan(m, 30.0, 100, false);
   const comp::ErrorParameters truth = truth_with(m, {});
   int false_sets = 0, unexplained_sets = 0;
-  const int seeds = 50;
+  const int seeds = 20;
   const auto t0 = std::chrono::steady_clock::now();
   for (int k = 0; k < seeds; ++k) {
     const auto sets = simulate_plan(m, plans, truth, 0.5, 1000 + 37 * static_cast<std::uint64_t>(k));
@@ -47,7 +49,7 @@ TEST_CASE("False-attribution rate over noise-only sets", "[diagnose][open][rate]
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("noise-only: %d of %d sets with an effect added, %d with structure reported unexplained (%.1f s)\n", false_sets,
               seeds, unexplained_sets, sec);
-  CHECK(false_sets + unexplained_sets <= 2);
+  CHECK(false_sets + unexplained_sets <= 1);
 }
 
 namespace {
