@@ -42,7 +42,7 @@ endmacro()
 # one Catch2 program, test_FOLDER (a few programs to link instead of one per file). CTest lists each
 # TEST_CASE on its own, named "<folder>/<file>: <case>" (cmake/ncpost_discover_tests.cmake, after
 # each build), and runs it in its file's own folder, build/test-tmp/<folder>_<file> (also
-# NCPOST_TEST_TMPDIR): files a test writes by a relative name cannot collide with another file's
+# NCPOST_TEST_TMP_ROOT/<folder>_<file>): files a test writes by a relative name cannot collide with another file's
 # under `ctest -j`, and the cases of one file never run at the same time (a RESOURCE_LOCK on that
 # folder), as when each file was a program of its own. Hidden cases ([.]) are not registered.
 # One file's cases by hand: `build/tests/test_FOLDER -# "[#<file>]"`.
@@ -59,6 +59,7 @@ function(ncpost_add_test_folder folder)
   add_executable(${_target} ${_arg_UNPARSED_ARGUMENTS})
   ncpost_test_flags(${_target} ${_arg_DEPS})
   ncpost_precompile(${_target} REUSE_FROM ncpost_test_pch)
+  ncpost_test_units(${_target} "${CMAKE_CURRENT_SOURCE_DIR}/${folder}" ${_arg_UNPARSED_ARGUMENTS})
   set(_seen "")
   set(_files_list "")
   foreach(_file ${_arg_UNPARSED_ARGUMENTS})
@@ -72,7 +73,6 @@ function(ncpost_add_test_folder folder)
     list(APPEND _seen "${_name}")
     set(_tmp "${CMAKE_BINARY_DIR}/test-tmp/${_prefix}_${_name}")
     file(MAKE_DIRECTORY "${_tmp}")
-    set_property(SOURCE "${_file}" APPEND PROPERTY COMPILE_DEFINITIONS NCPOST_TEST_TMPDIR="${_tmp}")
     string(APPEND _files_list "${_name}|${_dir}/${_name}|${_tmp}\n")
   endforeach()
   set(_files "${CMAKE_CURRENT_BINARY_DIR}/${_target}_files.txt")
@@ -111,4 +111,28 @@ function(ncpost_precompile target)
     set_target_properties(${target} PROPERTIES CXX_COMPILER_LAUNCHER
       "${CMAKE_COMMAND};-E;env;CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime;${CMAKE_CXX_COMPILER_LAUNCHER}")
   endif()
+endfunction()
+
+# ncpost_test_units(TARGET FOLDER FILES...): TARGET's test files are compiled 8 to a unit (CMake's
+# unity build): Catch2's, Eigen's and the library headers' inline code is then compiled once for 8
+# files instead of once for each (issue 26). Each file stays a namespace of its own
+# (NCPOST_UNITY_ID, one per file), so helpers of the same name in two files, or a `using
+# namespace` in one, do not meet; every header any file of the folder includes is included first,
+# outside those namespaces (a generated header, remade when a test file changes).
+function(ncpost_test_units target folder)
+  set(_incs "")
+  foreach(_file ${ARGN})
+    file(STRINGS "${_file}" _lines REGEX "^#include")
+    list(APPEND _incs ${_lines})
+  endforeach()
+  list(REMOVE_DUPLICATES _incs)
+  string(REPLACE ";" "\n" _text "${_incs}")
+  set(_header "${CMAKE_CURRENT_BINARY_DIR}/${target}_includes.hpp")
+  file(CONFIGURE OUTPUT "${_header}" CONTENT "// generated (ncpost_test_units): every header the files of ${target} include\n#pragma once\n${_text}\n" @ONLY)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ARGN})
+  target_include_directories(${target} PRIVATE "${folder}")
+  target_compile_definitions(${target} PRIVATE NCPOST_TEST_TMP_ROOT="${CMAKE_BINARY_DIR}/test-tmp")
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8 UNITY_BUILD_UNIQUE_ID NCPOST_UNITY_ID
+    UNITY_BUILD_CODE_BEFORE_INCLUDE "#include \"${_header}\"\nnamespace NCPOST_UNITY_ID {"
+    UNITY_BUILD_CODE_AFTER_INCLUDE "}  // namespace NCPOST_UNITY_ID")
 endfunction()

@@ -7,6 +7,7 @@
 
 using namespace ncpost;
 using namespace ncpost::nonlinear;
+using ncpost::nonlinear::NominalSolver;  // (ncpost::NominalSolver is the post's)
 
 TEST_CASE("compensate_blocks: two threads, same result", "[adaptive][batch]") {
   const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");

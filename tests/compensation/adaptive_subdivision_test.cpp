@@ -10,6 +10,7 @@
 
 using namespace ncpost;
 using namespace ncpost::nonlinear;
+using ncpost::nonlinear::NominalSolver;  // (ncpost::NominalSolver is the post's)
 
 namespace {
 

@@ -14,6 +14,7 @@
 
 using namespace ncpost;
 using namespace ncpost::gcode;
+using ncpost::gcode::InputKind;  // (ncpost::InputKind is the CL input's kind)
 
 namespace {
 
