@@ -161,11 +161,12 @@ TEST_CASE("SIGTERM, SIGINT, SIGHUP remove the temporary file; the previous outpu
   }
   // the spool of standard input too (TMPDIR: the spool goes into this test's folder)
   write(f / "out.nc", "PREVIOUS\n");
-  // (the writer's stderr goes to /dev/null: left on the test's, its sleep kept ctest waiting 30 s)
-  script(f, "export TMPDIR=$PWD; cat big.cls 2>/dev/null | (cat; sleep 30) 2>/dev/null | " + std::string(NCPOST_BINARY) +
-                " post --machine " + kMachine + " -o out.nc - 2>/dev/null & p=$!\n" +
+  // (the writer is killed at the end: a `sleep 30` left behind holds ctest's pipes for 30 s)
+  script(f, "export TMPDIR=$PWD; mkfifo in.fifo\n(cat big.cls; exec sleep 30) > in.fifo 2>/dev/null & w=$!\n" +
+                std::string(NCPOST_BINARY) + " post --machine " + kMachine + " -o out.nc - < in.fifo 2>/dev/null & p=$!\n" +
                 "for i in $(seq 300); do ls | grep -q ncpost-input && break; sleep 0.1; done\n" +
-                "ls | grep -c ncpost-input > during.txt; kill -TERM $p; wait $p; echo $? > rc.txt");
+                "ls | grep -c ncpost-input > during.txt; kill -TERM $p; wait $p; echo $? > rc.txt\n" +
+                "kill $w; wait $w 2>/dev/null; true");
   CHECK(slurp(f / "during.txt") == "1\n");
   CHECK(std::atoi(slurp(f / "rc.txt").c_str()) > 128);
   for (const auto& e : fs::directory_iterator(f.dir)) CHECK(e.path().filename().string().rfind("ncpost-input", 0) != 0);
