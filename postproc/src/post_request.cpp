@@ -56,7 +56,7 @@ std::vector<std::string> header_comments(const PostRequest& r, const std::option
 
 }  // namespace
 
-std::string PostRequest::invalid() const {
+std::string PostRequest::validate() const {
   if (machine.axes.empty() && !trr) return "no machine (load_machine)";
   if (trr && rtcp) return "rtcp: the TRR-XY machine has no RTCP dialect (it is posted in X Y U V W)";
   if (trr && tilted_plane) return "tilted_plane: the TRR-XY machine has no tilted work plane (no rotary axes)";
@@ -163,7 +163,7 @@ PostSummary write_program(cl::Reader& reader, std::ostream& program, const PostR
 }  // namespace
 
 PostResult post(std::istream& input, std::ostream& program, const PostRequest& r) {
-  if (const std::string why = r.invalid(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
+  if (const std::string why = r.validate(); !why.empty()) throw std::invalid_argument("ncpost::post: " + why);
   if (r.trr) return detail::post_trr(input, program, r);
   // the control interpolates the tool tip under RTCP: no tolerance unless asked for
   std::optional<double> tolerance_mm = r.tolerance_mm;

@@ -152,7 +152,7 @@ TEST_CASE("post from code: a request that cannot run says why", "[post][entry]")
   CHECK_THROWS_AS(post(in, out, r), std::invalid_argument);  // no machine
   r = request_for(test::source("machines/ac-trunnion.toml"), "empty.cls");
   r.threads = 3;
-  CHECK(r.invalid() == "threads: expected 1 or 2, got 3");
+  CHECK(r.validate() == "threads: expected 1 or 2, got 3");
   r.threads = 1;
   std::istringstream empty("  \n");
   CHECK_THROWS_AS(post(empty, out, r), InputError);

@@ -60,7 +60,7 @@ struct PostRequest {
   Machine machine;              ///< a serial machine (load_machine); unused with `trr`
   /// A TRR-XY machine instead of the serial one: the same post (trr_solver.hpp), with the words
   /// X Y U V W; `model`/`verify_on` are then unused (TrrJob has its own), as is the tool length
-  /// (the machine file's tool offset); no RTCP and no tilted plane (invalid()).
+  /// (the machine file's tool offset); no RTCP and no tilted plane (validate()).
   std::optional<TrrJob> trr;
   std::string machine_source;   ///< where it came from (the machine file), named in the program header
   Setup setup;                  ///< workpiece origin and tool length
@@ -101,7 +101,7 @@ struct PostRequest {
   PostProgress progress;
 
   /// Empty when the request can run, else what is wrong with it.
-  std::string invalid() const;
+  std::string validate() const;
 };
 
 struct PostResult {
@@ -115,7 +115,7 @@ struct PostResult {
 /// Posts `input` (read from where it stands; seekable: it is read again for the "before") into
 /// `program`. Throws InputError (bad input, naming input_name:line:col), Infeasible (a CL point
 /// the machine cannot reach, naming the line), FileError (`program` failed), std::invalid_argument
-/// (PostRequest::invalid()).
+/// (PostRequest::validate()).
 PostResult post(std::istream& input, std::ostream& program, const PostRequest& request);
 
 }  // namespace ncpost
