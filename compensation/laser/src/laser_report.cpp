@@ -181,17 +181,18 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
   if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
   for (const auto& [kind, t] : in.tolerances.by_kind_um) p.extra.push_back({"tolerance " + kind, fmt::format("{:g} µm", t)});
   add_condition_rows(p, in, sets);
-  std::string h = report::page_start(p) + conditions_html(sets);
+  std::string h = report::page_start(p);
   if (!r.iso230.empty()) {
     h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
          "approached from below (x̄↑) and from above (x̄↓) with ± 2s over the runs, and the reversal value "
          "B_i = x̄↑ − x̄↓; A accuracy, R repeatability, B reversal, E systematic deviation, M mean bidirectional "
          "deviation (µm).</p>";
-    h += iso230_2_verdicts_html(r, sets, in);
     h += "<div class=\"plots\">";
     for (const auto& g : r.iso230) h += "<div class=\"plot\">" + iso230_plot(g) + "</div>";
     h += "</div>";
+    h += iso230_2_verdicts_html(r, sets, in);  // the figures ± U, verdicts and budgets below the plots
   }
+  h += conditions_html(sets);
   h += "<h2>Summary</h2><pre>" + escape(laser_text_report(m, r)) + "</pre>";
   h += "<h2>Compensation values for the control</h2>" +
        control_entries_html(m, r.parameters, in.control.value_or(default_control_format(m)));
