@@ -132,10 +132,10 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
     throw InputError(at(file_name, t->get("kind")->source()),  // a parallel machine: trr_xy_file.hpp reads it
                      "[machine] kind = \"trr-xy\": a TRR-XY parallel machine, not a serial chain (load it with "
                      "load_trr_xy_machine; post, preview and sensitivity accept it)");
-  reject_unknown_keys(file_name, root, {"machine", "axes"}, "top level");
+  reject_unknown_keys(file_name, root, {"machine", "axes", "tolerances"}, "top level");
   const toml::table* mt = root["machine"].as_table();
   if (!mt) throw InputError({file_name, 1, 1}, "missing table [machine] (name, chain)");
-  reject_unknown_keys(file_name, *mt, {"name", "chain", "kind"}, "machine");
+  reject_unknown_keys(file_name, *mt, {"name", "chain", "kind", "serial", "owner"}, "machine");
   Machine m;
   auto name = (*mt)["name"].value<std::string>();
   if (!name) throw InputError(at(file_name, mt->source()), "[machine]: missing key 'name' (a string)");

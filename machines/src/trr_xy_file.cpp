@@ -71,10 +71,10 @@ std::string machine_file_kind(const std::string& path) {
 
 trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& file) {
   const toml::table root = parse_toml(text, file);
-  reject_unknown_keys(file, root, {"machine", "trr_xy", "axes"}, "top level");
+  reject_unknown_keys(file, root, {"machine", "trr_xy", "axes", "tolerances"}, "top level");
   const toml::table* mt = root["machine"].as_table();
   if (!mt) throw InputError({file, 1, 1}, "missing table [machine] (name, kind = \"trr-xy\")");
-  reject_unknown_keys(file, *mt, {"name", "kind"}, "machine");
+  reject_unknown_keys(file, *mt, {"name", "kind", "serial", "owner"}, "machine");
   trr::Machine m;
   auto name = (*mt)["name"].value<std::string>();
   if (!name) throw InputError(at(file, mt->source()), "[machine]: missing key 'name' (a string)");

@@ -126,4 +126,21 @@ CircularityFigures iso230_4_circularity(const std::vector<double>& ang, const st
   return f;
 }
 
+CircularityByDirection iso230_4_by_direction(const std::vector<double>& ang, const std::vector<double>& r) {
+  CircularityByDirection out;
+  out.both = iso230_4_circularity(ang, r);
+  const std::size_t n = std::min(ang.size(), r.size());
+  std::vector<double> a_ccw, r_ccw, a_cw, r_cw;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double step = k > 0 ? ang[k] - ang[k - 1] : (n > 1 ? ang[1] - ang[0] : 0.0);
+    if (step > 0) a_ccw.push_back(ang[k]), r_ccw.push_back(r[k]);
+    else if (step < 0) a_cw.push_back(ang[k]), r_cw.push_back(r[k]);
+  }
+  out.ccw = iso230_4_circularity(a_ccw, r_ccw);
+  out.cw = iso230_4_circularity(a_cw, r_cw);
+  if (a_ccw.empty()) out.ccw.message = "no counter-clockwise run";
+  if (a_cw.empty()) out.cw.message = "no clockwise run";
+  return out;
+}
+
 }  // namespace ncpost::report

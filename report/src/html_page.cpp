@@ -71,7 +71,7 @@ std::string page_start(const Provenance& p) {
        "td.n,th.n{text-align:left}.hash{font-family:monospace;font-size:11px;color:#555;margin-left:1em}"
        ".note{color:#555;font-size:13px}.plots{display:flex;flex-wrap:wrap;gap:12px}"
        ".plot{border:1px solid #e4e4e4;padding:6px}.pass{color:#0a7a2a;font-weight:bold}"
-       ".fail{color:#c0241b;font-weight:bold}pre{background:#f6f6f6;padding:.5em}"
+       ".fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;font-weight:bold}pre{background:#f6f6f6;padding:.5em}"
        "canvas{border:1px solid #ccc;cursor:grab}</style>\n</head><body>\n";
   h += "<h1>" + escape(p.title) + "</h1>\n" + provenance_table(p);
   return h;

@@ -60,3 +60,41 @@ TEST_CASE("a short arc or too few points gives no figures", "[report][circularit
   CHECK_FALSE(iso230_4_circularity(a, r).ok);
   CHECK_FALSE(iso230_4_circularity({0, 1, 2}, {0, 0, 0}).ok);
 }
+
+TEST_CASE("ISO 230-4 G of each direction: counter-clockwise and clockwise runs with their own G", "[report][circularity]") {
+  // counter-clockwise 0 → 359°: r = 2 cos 2θ (G_ccw = 4 µm about the LSC centre, which the 2θ lobe
+  // does not move); then clockwise 359° → 0: r = 3 cos 2θ + 10 cos θ (a centre 10 µm off in x that
+  // the clockwise LSC removes: G_cw = 6 µm). Both together: neither centre fits both, G > 6.
+  std::vector<double> a, r;
+  for (int k = 0; k < 360; ++k) {
+    const double t = 2 * kPi * k / 360.0;
+    a.push_back(t);
+    r.push_back(2 * std::cos(2 * t));
+  }
+  for (int k = 359; k >= 0; --k) {
+    const double t = 2 * kPi * k / 360.0;
+    a.push_back(t);
+    r.push_back(3 * std::cos(2 * t) + 10 * std::cos(t));
+  }
+  const auto f = ncpost::report::iso230_4_by_direction(a, r);
+  REQUIRE(f.ccw.ok);
+  REQUIRE(f.cw.ok);
+  CHECK(f.ccw.direction == 1);
+  CHECK(f.cw.direction == -1);
+  CHECK(f.ccw.G_um == Approx(4.0).margin(1e-9));
+  // the clockwise run's first point (359°, reached by a standstill) counts for neither direction:
+  // 359 points, the 2θ lobe no longer exactly orthogonal to the centre's cos θ, sin θ
+  CHECK(f.cw.G_um == Approx(6.0).margin(0.1));
+  CHECK(f.cw.centre_x_um == Approx(10.0).margin(0.1));
+  CHECK(f.ccw.centre_x_um == Approx(0.0).margin(1e-9));
+  REQUIRE(f.both.ok);
+  CHECK(f.both.direction == 0);
+  CHECK(f.both.G_um > 6.0);
+  CHECK(f.both.H_um > 0.0);
+  // one direction only: the other says so
+  const auto one = ncpost::report::iso230_4_by_direction(std::vector<double>(a.begin(), a.begin() + 360),
+                                                         std::vector<double>(r.begin(), r.begin() + 360));
+  CHECK(one.ccw.ok);
+  CHECK_FALSE(one.cw.ok);
+  CHECK(one.cw.message == "no clockwise run");
+}

@@ -123,12 +123,15 @@ TEST_CASE("identify.html: provenance, verdict, control values, ballbar polar plo
   CHECK(count(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"polar\"") == 4);
   CHECK(count(html, "C 0°</text>") == 4);
   CHECK(count(html, "axes moved: Y Z A C; C 86.7°/min counter-clockwise") >= 4);
-  CHECK(count(html, "<th class=n>ISO 230-4</th><th>circular deviation G µm</th>") == 2);
+  CHECK(count(html, "<th class=n>ISO 230-4</th><th>circular deviation G ± U µm</th>") == 2);
   // the README's figures: ballbar_h250 G 19.03 µm measured, 2.95 µm left by the model; 93.08 µm uncompensated (h300)
-  CHECK(html.find("<td class=n>measured (the machine as it is)</td><td>19.03</td>") != std::string::npos);
-  CHECK(html.find("<td class=n>residual after identification (left by the model)</td><td>2.95</td>") != std::string::npos);
-  CHECK(html.find("<td>93.08</td><td class=\"fail\">FAIL</td><td>1.352</td><td class=\"pass\">PASS</td>") !=
+  // (these files give no instrument uncertainty and no temperature: U unknown, and the report says so)
+  CHECK(html.find("<td class=n>measured (the machine as it is)</td><td>19.03 (U unknown: instrument, repeatability not "
+                  "given)</td>") != std::string::npos);
+  CHECK(html.find("<td class=n>residual after identification (left by the model)</td><td>2.95 (U unknown") !=
         std::string::npos);
+  CHECK(html.find("<td>93.08 (U unknown: instrument, temperature not given)</td><td class=\"fail\">FAIL</td><td>1.35 (U "
+                  "unknown: instrument, temperature not given)</td><td class=\"pass\">PASS</td>") != std::string::npos);
   // sphere: dispersion per axis, before and after
   CHECK(html.find("<th class=n>dispersion per axis (µm)</th>") != std::string::npos);
   CHECK(count(html, "<tr><td class=n>d") >= 3);

@@ -15,7 +15,9 @@
 #include "identify_laser.hpp"
 #include "kind_steps.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
+#include "ncpost/compensation/conditions_report.hpp"
 #include "ncpost/compensation/control_entries.hpp"
+#include "ncpost/compensation/decision_rule.hpp"
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
@@ -23,7 +25,9 @@
 #include "ncpost/compensation/measurement_files.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/compensation/thermal_correction.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/machine_record.hpp"
 
 namespace ncpost::cli {
 
@@ -41,6 +45,19 @@ std::vector<std::string> split_list(const std::string& s) {
   return out;
 }
 
+/// The readers' notices and the temperature warnings on stderr; the conditions on stdout when a
+/// file gives any (issue 25 item 3).
+void print_conditions(const std::vector<comp::MeasurementSet>& sets) {
+  bool any = false;
+  for (const auto& s : sets) {
+    for (const auto& n : s.notices) fmt::print(stderr, "notice: {}\n", n);
+    any = any || s.conditions.any();
+  }
+  const std::vector<std::string> warnings = comp::temperature_warnings(sets);
+  for (const auto& w : warnings) fmt::print(stderr, "ncpost: warning: {}\n", w);
+  if (any || !warnings.empty()) fmt::print("{}", comp::conditions_text(sets));
+}
+
 /// Residual analysis (issue 6): basic fit, effects added by evidence, before/after report.
 IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::MeasurementSet>& sets,
                             const std::vector<std::string>& names, const comp::IdentifyOptions& o,
@@ -49,8 +66,9 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
   d.identify = o;
   if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
   const comp::DiagnoseResult r = comp::diagnose(m, sets, names, d);
-  const comp::ToolTipComparison tt = comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty,
-                                                              r.final_fit.covariance);
+  const comp::ToolTipComparison tt = comp::within_measured_region(
+      comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty, r.final_fit.covariance),
+      m, sets, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty, r.final_fit.covariance);
   fmt::print("{}", comp::text_report(m, sets, r.final_fit));
   fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
   if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);
@@ -64,8 +82,19 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
 /// the residual analysis unless --no-diagnose.
 IdentifyOutput identify_serial(const IdentifyArgs& a) {
   const Machine m = load_machine(a.machine);
+  comp::Tolerances tolerances;  // the machine file's [tolerances], then --tolerance kind by kind
+  try {
+    tolerances = comp::parse_tolerances(a.tolerance);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(fmt::format("--tolerance: {}", e.what()));
+  }
+  const MachineRecord record = load_machine_record(a.machine);
   const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a.data, m);
+  print_conditions(sets);
   comp::IdentifyReportInputs report_inputs{a.machine, a.output, a.pass_tolerance_um, std::nullopt};
+  report_inputs.machine_record = record;
+  report_inputs.tolerances.by_kind_um = record.tolerances_um;
+  for (const auto& [kind, um] : tolerances.by_kind_um) report_inputs.tolerances.by_kind_um[kind] = um;
   if (!a.control.empty()) report_inputs.control = comp::parse_control_format(a.control);
   if (comp::all_laser(sets))  // issue 7
     return identify_laser(m, sets, a.report, !a.params.empty() || !a.fixed.empty() || a.loss != "squared",
@@ -122,6 +151,9 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("--pass-tolerance-um", a->pass_tolerance_um,
                   "tolerance (µm) for the report's pass/fail verdicts: largest deviation per file, ISO 230-4 G")
       ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
+  sub->add_option("--tolerance", a->tolerance,
+                  "tolerances per figure kind for the report's ISO 14253-1 verdicts, KIND=µm comma-separated: ISO 230-2 "
+                  "A, B, E, M, R and ISO 230-4 G, e.g. G=10,A=8,R=3 (over the machine file's [tolerances])");
   std::vector<std::string> control_names;
   for (const comp::ControlFormatInfo& f : comp::control_formats()) control_names.push_back(f.name);
   sub->add_option("--control", a->control,

@@ -102,6 +102,7 @@ struct IdentifyArgs {
   std::string control;  ///< --control: the report's control entries ("" = the machine's default)
   double loss_scale_um = 3.0;
   std::optional<double> pass_tolerance_um;
+  std::string tolerance;  ///< --tolerance KIND=µm,...: per figure kind, over the machine file's [tolerances]
   bool no_diagnose = false, no_basic = false;
   std::vector<std::string> data;
 };

@@ -44,6 +44,23 @@ std::string spectrum_text(const ResidualSignature& s, const std::string& file, i
   return {};
 }
 
+/// Where the tool-tip figures hold (issue 25 item 4): the measured region, the figures within it,
+/// and what rests on the model's form beyond it.
+std::string region_claim(const ToolTipComparison& tt) {
+  if (tt.measured_region.empty()) return "The region the data cover was not computed: the figures rest on the model's form.";
+  std::string s = fmt::format("The data cover {}; within that region the machine deviates by up to {:.2f} µm and the final "
+                              "model's uncertainty is 1σ up to {:.2f} µm (rms {:.2f}). Beyond it (the working-space figures "
+                              "above) they rest on the model's form (location errors constant along the axes), which no "
+                              "measurement there confirms.",
+                              tt.measured_region, tt.measured_uncompensated_max_um, tt.measured_sigma_max_um,
+                              tt.measured_sigma_rms_um);
+  if (!tt.single_position_axes.empty())
+    s += fmt::format(" {} measured at one position only: terms that change with {} are not measured, and no figure "
+                     "holds for other positions of {} but by the model's assumption.",
+                     tt.single_position_axes, tt.single_position_axes, tt.single_position_axes);
+  return s;
+}
+
 struct Series {
   std::vector<double> x, y;
 };
@@ -170,6 +187,7 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
                    "    uncertainty, 1σ up to {:.2f} µm (rms {:.2f})\n",
                    tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um,
                    tt.final_sigma_max_um, tt.final_sigma_rms_um);
+  o += "    " + region_claim(tt) + "\n";
   o += signature_text(m, sets, d);
   return o;
 }
@@ -219,6 +237,7 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
                    "{:.2f}).</p>",
                    tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um,
                    tt.final_sigma_max_um, tt.final_sigma_rms_um);
+  h += "<p>" + escape(region_claim(tt)) + "</p>";
   h += "<h2>Residual signature</h2><p>Harmonic amplitudes against each rotary angle that turns most of a turn, "
        "correlation with the direction each axis last moved and with time; basic model → final model.</p><pre>" +
        escape(signature_text(m, sets, d)) + "</pre>";

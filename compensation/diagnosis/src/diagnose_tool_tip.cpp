@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/diagnose_tool_tip.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -10,9 +12,55 @@
 
 namespace ncpost::comp {
 
+PoseRegion measured_region(const Machine& m, const std::vector<MeasurementSet>& sets) {
+  PoseRegion r;
+  r.lo.assign(m.axes.size(), INFINITY);
+  r.hi.assign(m.axes.size(), -INFINITY);
+  for (const auto& s : sets)
+    for (const auto& row : s.rows)
+      for (std::size_t i = 0; i < m.axes.size(); ++i) {
+        r.lo[i] = std::min(r.lo[i], row.command[static_cast<int>(i)]);
+        r.hi[i] = std::max(r.hi[i], row.command[static_cast<int>(i)]);
+      }
+  for (std::size_t i = 0; i < m.axes.size(); ++i)
+    if (r.lo[i] > r.hi[i]) r.lo[i] = r.hi[i] = 0.0;  // no rows
+  return r;
+}
+
+namespace {
+
+/// An axis counts as held at one position when its commands span less than this (mm or rad).
+constexpr double kOnePositionMm = 1e-3, kOnePositionRad = 1e-5;
+
+bool one_position(const Axis& a, double lo, double hi) {
+  return hi - lo < (a.is_rotary() ? kOnePositionRad : kOnePositionMm);
+}
+
+}  // namespace
+
+std::string PoseRegion::description(const Machine& m) const {
+  std::string out;
+  for (std::size_t i = 0; i < m.axes.size() && i < lo.size(); ++i) {
+    const Axis& a = m.axes[i];
+    const double k = a.is_rotary() ? 180.0 / kPi : 1.0;
+    const char* unit = a.is_rotary() ? "°" : " mm";
+    out += (out.empty() ? "" : ", ") +
+           (one_position(a, lo[i], hi[i]) ? fmt::format("{} {:g}{} only", a.letter, lo[i] * k, unit)
+                                          : fmt::format("{} {:g} … {:g}{}", a.letter, lo[i] * k, hi[i] * k, unit));
+  }
+  return out;
+}
+
+std::string PoseRegion::single_position_axes(const Machine& m) const {
+  std::string out;
+  for (std::size_t i = 0; i < m.axes.size() && i < lo.size(); ++i)
+    if (one_position(m.axes[i], lo[i], hi[i])) out += (out.empty() ? "" : ", ") + std::string(1, m.axes[i].letter);
+  return out;
+}
+
 ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& final_model,
                                    const ErrorParameters& basic_model, const ErrorParameters& final_sigma,
-                                   const Eigen::MatrixXd& final_covariance, int poses) {
+                                   const Eigen::MatrixXd& final_covariance, int poses, const PoseRegion* region) {
   const MachineModel actual(m, final_model);
   const MachineModel basic(m, basic_model);
   // models with one fitted parameter stepped by its standard deviation (finite differences)
@@ -43,7 +91,8 @@ ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& fina
         lo = std::max(lo, a.limits->min);
         hi = std::min(hi, a.limits->max);
       }
-      q[static_cast<int>(i)] = std::uniform_real_distribution<double>(lo, hi)(rng);
+      if (region && i < region->lo.size()) lo = region->lo[i], hi = region->hi[i];
+      q[static_cast<int>(i)] = hi > lo ? std::uniform_real_distribution<double>(lo, hi)(rng) : lo;
     }
     const auto pa = actual.tool_pose(q, setup);
     const auto pb = basic.tool_pose(q, setup);
@@ -69,6 +118,21 @@ ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& fina
     c.basic_left_rms_um = std::sqrt(sum_b / poses);
     c.final_sigma_rms_um = std::sqrt(sum_s / poses);
   }
+  return c;
+}
+
+ToolTipComparison within_measured_region(ToolTipComparison c, const Machine& m, const std::vector<MeasurementSet>& sets,
+                                         const ErrorParameters& final_model, const ErrorParameters& basic_model,
+                                         const ErrorParameters& final_sigma, const Eigen::MatrixXd& final_covariance,
+                                         int poses) {
+  const PoseRegion region = measured_region(m, sets);
+  const ToolTipComparison inside =
+      compare_tool_tip(m, final_model, basic_model, final_sigma, final_covariance, poses, &region);
+  c.measured_region = region.description(m);
+  c.single_position_axes = region.single_position_axes(m);
+  c.measured_uncompensated_max_um = inside.uncompensated_max_um;
+  c.measured_sigma_max_um = inside.final_sigma_max_um;
+  c.measured_sigma_rms_um = inside.final_sigma_rms_um;
   return c;
 }
 

@@ -9,6 +9,7 @@
 #include "ncpost/report/circularity.hpp"
 #include "ncpost/report/html_page.hpp"
 #include "ncpost/report/polar_plot.hpp"
+#include "ncpost/compensation/uncertainty_report.hpp"
 
 namespace ncpost::comp::sections {
 namespace {
@@ -92,23 +93,34 @@ std::string feed_and_direction(const TestAngle& t, const MeasurementSet& s, int 
   return fmt::format("{} {:.0f} mm/min (radius {:.1f} mm) {}", t.axis, rate * t.radius_mm, t.radius_mm, dir);
 }
 
-std::string verdict(double value_um, std::optional<double> tolerance_um) {
-  if (!tolerance_um) return "";
-  return value_um <= *tolerance_um ? "<td class=\"pass\">PASS</td>" : "<td class=\"fail\">FAIL</td>";
-}
-
-std::string figures_row(const std::string& what, const report::CircularityFigures& f, std::optional<double> tol) {
+std::string figures_row(const std::string& what, const report::CircularityFigures& f, const UncertaintyBudget& budget,
+                        std::optional<double> tol) {
   if (!f.ok) return fmt::format("<tr><td class=n>{}</td><td class=n colspan=\"7\">{}</td></tr>", escape(what), escape(f.message));
-  return fmt::format("<tr><td class=n>{}</td><td>{:.2f}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{}</td><td>{:+.2f}, {:+.2f}</td>"
+  return fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{}</td><td>{:+.2f}, {:+.2f}</td>"
                      "<td>{:.0f}°</td>{}</tr>",
-                     escape(what), f.G_um, f.F_max_um, f.F_min_um, f.H_um >= 0 ? fmt::format("{:.2f}", f.H_um) : "(one direction)",
-                     f.centre_x_um, f.centre_y_um, f.arc_deg, verdict(f.G_um, tol));
+                     escape(what), escape(value_with_U(f.G_um, budget)), f.F_max_um, f.F_min_um,
+                     f.H_um >= 0 ? fmt::format("{:.2f}", f.H_um) : "(one direction)", f.centre_x_um, f.centre_y_um, f.arc_deg,
+                     verdict_cell(f.G_um, budget, tol));
 }
 
 }  // namespace
 
+BallbarFigures ballbar_figures(const Machine& m, const MeasurementSet& s) {
+  BallbarFigures out;
+  if (s.rows.size() < 8) return out;
+  const TestAngle t = test_angle(m, s);
+  std::vector<double> measured_um;
+  for (const auto& r : s.rows) measured_um.push_back(1e3 * (r.value[0] - s.bar_length_mm));
+  const report::CircularityByDirection f = report::iso230_4_by_direction(t.angle, measured_um);
+  out.both = f.both;
+  out.ccw = f.ccw;
+  out.cw = f.cw;
+  return out;
+}
+
 std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std::vector<double>& fitted,
-                            const std::vector<double>& nominal, std::optional<double> tol) {
+                            const std::vector<double>& nominal, std::optional<double> tol,
+                            const std::vector<double>& repeat_G_um) {
   if (s.rows.size() < 8 || fitted.size() < s.rows.size() || nominal.size() < s.rows.size()) return "";
   const TestAngle t = test_angle(m, s);
   std::vector<double> measured_um, fitted_um, nominal_um, residual_um;
@@ -137,11 +149,18 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
   f.title = name + ": residual after identification (own scale)";
   h += "<div class=\"plot\">" + report::polar_plot(f, {{"measured − identified model", "#2a8a3a", t.angle, residual_um}}) +
        "</div></div>";
-  h += "<table><tr><th class=n>ISO 230-4</th><th>circular deviation G µm</th><th>radial deviation F max µm</th>"
+  const UncertaintyBudget budget = circularity_budget(s, repeat_G_um);
+  h += "<table><tr><th class=n>ISO 230-4</th><th>circular deviation G ± U µm</th><th>radial deviation F max µm</th>"
        "<th>F min µm</th><th>circular hysteresis H µm</th><th>LSC centre offset µm</th><th>arc</th>";
   if (tol) h += fmt::format("<th>G ≤ {:g} µm</th>", *tol);
-  h += "</tr>" + figures_row("measured (the machine as it is)", before, tol) +
-       figures_row("residual after identification (left by the model)", after, tol) + "</table>";
+  h += "</tr>" + figures_row("measured (the machine as it is)", before, budget, tol);
+  if (before.direction == 0) {  // ISO 230-4: G of each direction of travel
+    const BallbarFigures by_direction = ballbar_figures(m, s);
+    h += figures_row("measured, counter-clockwise run", by_direction.ccw, budget, tol) +
+         figures_row("measured, clockwise run", by_direction.cw, budget, tol);
+  }
+  h += figures_row("residual after identification (left by the model)", after, budget, tol) + "</table>";
+  h += budget_table_html("G of " + name, budget);
   return h;
 }
 

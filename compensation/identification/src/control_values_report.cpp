@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "identify_report_sections.hpp"
+#include "ncpost/compensation/uncertainty_report.hpp"
 #include "ncpost/compensation/identify_report.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/report/html_page.hpp"
@@ -62,23 +63,31 @@ std::string control_values_section(const Machine& m, const IdentifyResult& r, Co
   return h + "</table>" + control_entries_html(m, r.parameters, format);
 }
 
-std::string verdict_section(const IdentifyResult& r, std::optional<double> tol) {
+std::string verdict_section(const IdentifyResult& r, const std::vector<MeasurementSet>& sets, std::optional<double> tol) {
   if (!tol) return "<p class=\"note\">No tolerance given (<code>identify --pass-tolerance-um</code>): no pass/fail verdict.</p>";
-  bool machine_ok = true, model_ok = true;
+  Verdict machine = Verdict::pass, model = Verdict::pass;
+  auto worst = [](Verdict a, Verdict b) {
+    if (a == Verdict::fail || b == Verdict::fail) return Verdict::fail;
+    return a == Verdict::not_proven || b == Verdict::not_proven ? Verdict::not_proven : Verdict::pass;
+  };
   std::string rows;
-  for (const auto& f : r.files) {
-    machine_ok = machine_ok && f.max_nominal_um <= *tol;
-    model_ok = model_ok && f.max_after_um <= *tol;
-    rows += fmt::format("<tr><td class=n>{}</td><td>{:.2f}</td><td class=\"{}\">{}</td><td>{:.3f}</td><td class=\"{}\">{}</td></tr>",
-                        escape(report::base_name(f.file)), f.max_nominal_um, f.max_nominal_um <= *tol ? "pass" : "fail",
-                        f.max_nominal_um <= *tol ? "PASS" : "FAIL", f.max_after_um, f.max_after_um <= *tol ? "pass" : "fail",
-                        f.max_after_um <= *tol ? "PASS" : "FAIL");
+  for (std::size_t i = 0; i < r.files.size(); ++i) {
+    const FileResidual& f = r.files[i];
+    const UncertaintyBudget b = i < sets.size() ? reading_budget(sets[i]) : UncertaintyBudget{};
+    const Verdict before = decide(f.max_nominal_um, b.expanded_um(), *tol);
+    const Verdict after = decide(f.max_after_um, b.expanded_um(), *tol);
+    machine = worst(machine, before);
+    model = worst(model, after);
+    rows += fmt::format("<tr><td class=n>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td><td class=\"{}\">{}</td></tr>",
+                        escape(report::base_name(f.file)), escape(value_with_U(f.max_nominal_um, b)), css_class(before),
+                        to_string(before), escape(value_with_U(f.max_after_um, b)), css_class(after), to_string(after));
   }
   std::string h = fmt::format(
       "<h2>Verdict against {:g} µm</h2><p>Machine as it is (largest deviation from the nominal machine): <span class=\"{}\">{}</span>; "
       "with the identified compensation (largest residual the model leaves): <span class=\"{}\">{}</span>.</p>",
-      *tol, machine_ok ? "pass" : "fail", machine_ok ? "PASS" : "FAIL", model_ok ? "pass" : "fail", model_ok ? "PASS" : "FAIL");
-  h += "<table><tr><th class=n>file</th><th>uncompensated max µm</th><th>verdict</th><th>after identification max µm</th>"
+      *tol, css_class(machine), to_string(machine), css_class(model), to_string(model));
+  h += decision_rule_note_html();
+  h += "<table><tr><th class=n>file</th><th>uncompensated max ± U µm</th><th>verdict</th><th>after identification max ± U µm</th>"
        "<th>verdict</th></tr>" + rows + "</table>";
   return h;
 }

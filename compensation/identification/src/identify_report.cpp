@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ncpost/compensation/conditions_report.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
+#include "ncpost/compensation/uncertainty_report.hpp"
 #include "identify_report_sections.hpp"
 #include "ncpost/report/html_page.hpp"
 #include "report_text.hpp"
@@ -17,7 +19,35 @@ namespace {
 using report::base_name;
 using report::escape;
 
+/// Two ballbar files are runs of one test when their set-up and commanded rows are the same.
+bool same_test(const MeasurementSet& a, const MeasurementSet& b) {
+  if (a.type != MeasurementType::ballbar || b.type != MeasurementType::ballbar || a.rows.size() != b.rows.size() ||
+      a.bar_length_mm != b.bar_length_mm || a.table_ball_mm != b.table_ball_mm || a.tool_ball_mm != b.tool_ball_mm)
+    return false;
+  for (std::size_t k = 0; k < a.rows.size(); ++k)
+    if (!(a.rows[k].command == b.rows[k].command)) return false;
+  return true;
+}
+
+/// G of every file of the same test as sets[s] (itself included) when it was run more than once.
+std::vector<double> repeated_G_um(const Machine& m, const std::vector<MeasurementSet>& sets, std::size_t s) {
+  std::vector<double> out;
+  for (const auto& other : sets)
+    if (same_test(sets[s], other)) {
+      const auto f = sections::ballbar_figures(m, other).both;
+      if (f.ok) out.push_back(f.G_um);
+    }
+  if (out.size() < 2) out.clear();
+  return out;
+}
+
 }  // namespace
+
+std::optional<double> tolerance_for(const IdentifyReportInputs& in, const std::string& kind) {
+  if (const auto t = in.tolerances.of(kind)) return t;
+  if (kind == "G" || kind == "A") return in.pass_tolerance_um;
+  return std::nullopt;
+}
 
 ReportValue report_value(const Machine& m, const std::string& name, double v) {
   const ParseResult p = parse_parameter_name(name, m);
@@ -79,17 +109,25 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
   if (!in.machine_file.empty()) p.inputs.push_back({"machine file", in.machine_file});
   for (const auto& s : sets) p.inputs.push_back({std::string(to_string(s.type)) + " data", s.file});
   if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm", *in.pass_tolerance_um)});
+  for (const auto& [kind, t] : in.tolerances.by_kind_um) p.extra.push_back({"tolerance " + kind, fmt::format("{:g} µm", t)});
+  add_condition_rows(p, in, sets);
   std::string h = report::page_start(p);
   h += "<p>" + escape(r.message) + "</p>";
-  h += sections::verdict_section(r, in.pass_tolerance_um);
+  h += conditions_html(sets);
+  h += sections::verdict_section(r, sets, in.pass_tolerance_um);
   h += sections::control_values_section(m, r, in.control.value_or(default_control_format(m)));
-  h += "<h2>Parameters</h2><table><tr><th class=n>name</th><th>value</th><th>± uncertainty</th><th class=n>unit</th></tr>";
+  h += "<h2>Parameters</h2><p class=\"note\">u: the fit's standard uncertainty (s² (JᵀJ)⁻¹; it holds the random part "
+       "of the instrument and the repeatability as far as the residual shows them); U = 2u (k = 2). A systematic error "
+       "of the instrument or of the temperature correction is not propagated into the parameters: see the figures' "
+       "budgets.</p><table><tr><th class=n>name</th><th>value</th><th>u (1σ)</th><th>U (k = 2)</th><th class=n>unit</th></tr>";
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     const std::string& n = r.parameters.names()[i];
     const ReportValue v = report_value(m, n, r.parameters.values()[i]);
     const auto u = r.uncertainty.get(n);
-    h += fmt::format("<tr><td class=n>{}</td><td>{:.3f}</td><td>{}</td><td class=n>{}</td></tr>", escape(n), v.value,
-                     u ? fmt::format("{:.3f}", report_value(m, n, *u).value) : "given", escape(v.unit));
+    const double u_shown = u ? report_value(m, n, *u).value : 0.0;
+    h += fmt::format("<tr><td class=n>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td><td class=n>{}</td></tr>", escape(n), v.value,
+                     u ? fmt::format("{:.3f}", u_shown) : "given", u ? fmt::format("{:.3f}", 2.0 * u_shown) : "—",
+                     escape(v.unit));
   }
   h += "</table>";
   const Identifiability& id = r.identifiability;
@@ -109,7 +147,8 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
   std::string ballbar, sphere;
   for (std::size_t s = 0; s < sets.size() && s < r.fitted.size() && s < r.nominal.size(); ++s) {
     if (sets[s].type == MeasurementType::ballbar)
-      ballbar += sections::ballbar_section(m, sets[s], r.fitted[s], r.nominal[s], in.pass_tolerance_um);
+      ballbar += sections::ballbar_section(m, sets[s], r.fitted[s], r.nominal[s], tolerance_for(in, "G"),
+                                           repeated_G_um(m, sets, s));
     else if (sets[s].type == MeasurementType::sphere)
       sphere += sections::sphere_section(m, sets[s], r.fitted[s], r.nominal[s]);
   }
@@ -117,7 +156,8 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
     h += "<h2 id=\"ballbar\">Ballbar tests</h2><p class=\"note\">ΔL = L − bar length (µm) against the angle of the axis that turns most "
          "(0° to the right, counter-clockwise positive), about a base circle; rings in µm. Left: measured, predicted by "
          "the identified model and by the nominal model; right: what the identified model leaves, on its own scale. "
-         "ISO 230-4 figures from ΔL as the radial deviation.</p>" + ballbar;
+         "ISO 230-4 figures from ΔL as the radial deviation.</p>" +
+         (tolerance_for(in, "G") ? decision_rule_note_html() : std::string()) + ballbar;
   if (!sphere.empty()) h += "<h2>Sphere probing</h2>" + sphere;
   return h + report::page_end();
 }

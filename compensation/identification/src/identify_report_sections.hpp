@@ -11,17 +11,30 @@
 
 #include "ncpost/compensation/control_entries.hpp"
 #include "ncpost/compensation/identify.hpp"
+#include "ncpost/report/circularity.hpp"
 
 namespace ncpost::comp::sections {
 
+/// `tolerance_um`: of G (ISO 14253-1 verdicts); `repeat_G_um`: G of every file of the same test
+/// (uncertainty_budget.hpp), empty when not repeated.
 std::string ballbar_section(const Machine& machine, const MeasurementSet& set, const std::vector<double>& fitted_mm,
-                            const std::vector<double>& nominal_mm, std::optional<double> tolerance_um);
+                            const std::vector<double>& nominal_mm, std::optional<double> tolerance_um,
+                            const std::vector<double>& repeat_G_um);
+
+/// ISO 230-4 figures of a ballbar file's measured ΔL: both directions together, and where the
+/// file runs both, each direction alone (ccw: the test angle rising).
+struct BallbarFigures {
+  report::CircularityFigures both, ccw, cw;
+};
+BallbarFigures ballbar_figures(const Machine& machine, const MeasurementSet& set);
 
 std::string sphere_section(const Machine& machine, const MeasurementSet& set, const std::vector<double>& fitted_mm,
                            const std::vector<double>& nominal_mm);
 
 std::string control_values_section(const Machine& machine, const IdentifyResult& result, ControlFormat format);
 
-std::string verdict_section(const IdentifyResult& result, std::optional<double> tolerance_um);
+/// The largest deviation of each file against `tolerance_um` (ISO 14253-1, the file's reading budget).
+std::string verdict_section(const IdentifyResult& result, const std::vector<MeasurementSet>& sets,
+                            std::optional<double> tolerance_um);
 
 }  // namespace ncpost::comp::sections

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include "ncpost/compensation/conditions_report.hpp"
+#include "ncpost/compensation/uncertainty_report.hpp"
 #include "ncpost/report/html_page.hpp"
 #include "ncpost/report/xy_chart.hpp"
 #include "report_text.hpp"
@@ -64,6 +66,65 @@ std::string iso230_plot(const Iso230Figures& g) {
   return report::xy_chart(fr, {up, down, reversal});
 }
 
+struct Figure {
+  char kind;
+  double (*value)(const Iso230Figures&);
+};
+constexpr Figure kFigures[] = {
+    {'A', [](const Iso230Figures& g) { return g.accuracy_A_um; }},
+    {'B', [](const Iso230Figures& g) { return g.reversal_B_um; }},
+    {'E', [](const Iso230Figures& g) { return g.systematic_E_um; }},
+    {'M', [](const Iso230Figures& g) { return g.mean_bidirectional_M_um; }},
+    {'R', [](const Iso230Figures& g) { return g.repeatability_R_um; }},
+};
+
+/// ISO 230-2 figures of every positioning line with U (k = 2), the ISO 14253-1 verdict of each kind
+/// that has a tolerance, and the budgets (uncertainty_budget.hpp).
+std::string iso230_2_verdicts_html(const LaserIdentifyResult& r, const std::vector<MeasurementSet>& sets,
+                                   const IdentifyReportInputs& in) {
+  std::string h = decision_rule_note_html() + "<table><tr><th class=n>line</th><th>axis</th>";
+  for (const Figure& f : kFigures) {
+    const std::string kind(1, f.kind);
+    h += fmt::format("<th>{} ± U µm</th>", kind);
+    if (const auto t = tolerance_for(in, kind)) h += fmt::format("<th>{} ≤ {:g} µm</th>", kind, *t);
+  }
+  h += "</tr>";
+  std::string budgets;
+  for (const auto& g : r.iso230) {
+    const MeasurementSet* set = nullptr;
+    for (const auto& s : sets)
+      if (s.file == g.file) set = &s;
+    if (!set) continue;
+    h += fmt::format("<tr><td class=n>{}</td><td>{}</td>", escape(report::base_name(g.file)), g.axis);
+    budgets += fmt::format("<table><tr><th class=n colspan=\"6\">uncertainty budget of {} (ISO 230-9), u µm</th></tr>"
+                           "<tr><th class=n>source</th>",
+                           escape(report::base_name(g.file)));
+    std::vector<UncertaintyBudget> of_kind;
+    for (const Figure& f : kFigures) {
+      of_kind.push_back(iso230_2_budget(*set, g, f.kind));
+      h += "<td>" + escape(value_with_U(f.value(g), of_kind.back())) + "</td>" +
+           verdict_cell(f.value(g), of_kind.back(), tolerance_for(in, std::string(1, f.kind)));
+      budgets += fmt::format("<th>{}</th>", f.kind);
+    }
+    h += "</tr>";
+    budgets += "<th class=n>from (A; B, R where they differ)</th></tr>";
+    for (std::size_t line = 0; line < of_kind[0].lines.size(); ++line) {
+      budgets += "<tr><td class=n>" + escape(of_kind[0].lines[line].source) + "</td>";
+      for (const auto& b : of_kind)
+        budgets += line < b.lines.size() && b.lines[line].given ? fmt::format("<td>{:.3f}</td>", b.lines[line].u_um) : "<td>—</td>";
+      std::string notes = of_kind[0].lines[line].note;
+      for (std::size_t k : {std::size_t{1}, std::size_t{4}})
+        if (line < of_kind[k].lines.size() && of_kind[k].lines[line].note != notes)
+          notes += fmt::format("; {}: {}", kFigures[k].kind, of_kind[k].lines[line].note);
+      budgets += "<td class=n>" + escape(notes) + "</td></tr>";
+    }
+    budgets += "<tr><th class=n>U (k = 2)</th>";
+    for (const auto& b : of_kind) budgets += fmt::format("<th>{:.3f}</th>", b.expanded_um());
+    budgets += "<th class=n></th></tr></table>";
+  }
+  return h + "</table>" + budgets;
+}
+
 }  // namespace
 
 std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
@@ -118,24 +179,20 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
   if (!in.machine_file.empty()) p.inputs.push_back({"machine file", in.machine_file});
   for (const auto& s : sets) p.inputs.push_back({"laser data", s.file});
   if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
+  for (const auto& [kind, t] : in.tolerances.by_kind_um) p.extra.push_back({"tolerance " + kind, fmt::format("{:g} µm", t)});
+  add_condition_rows(p, in, sets);
   std::string h = report::page_start(p);
   if (!r.iso230.empty()) {
     h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
          "approached from below (x̄↑) and from above (x̄↓) with ± 2s over the runs, and the reversal value "
          "B_i = x̄↑ − x̄↓; A accuracy, R repeatability, B reversal, E systematic deviation, M mean bidirectional "
          "deviation (µm).</p>";
-    if (in.pass_tolerance_um) {
-      h += fmt::format("<table><tr><th class=n>line</th><th>axis</th><th>A µm</th><th>A ≤ {:g} µm</th></tr>", *in.pass_tolerance_um);
-      for (const auto& g : r.iso230)
-        h += fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{:.2f}</td>{}</tr>", escape(report::base_name(g.file)), g.axis,
-                         g.accuracy_A_um,
-                         g.accuracy_A_um <= *in.pass_tolerance_um ? "<td class=\"pass\">PASS</td>" : "<td class=\"fail\">FAIL</td>");
-      h += "</table>";
-    }
     h += "<div class=\"plots\">";
     for (const auto& g : r.iso230) h += "<div class=\"plot\">" + iso230_plot(g) + "</div>";
     h += "</div>";
+    h += iso230_2_verdicts_html(r, sets, in);  // the figures ± U, verdicts and budgets below the plots
   }
+  h += conditions_html(sets);
   h += "<h2>Summary</h2><pre>" + escape(laser_text_report(m, r)) + "</pre>";
   h += "<h2>Compensation values for the control</h2>" +
        control_entries_html(m, r.parameters, in.control.value_or(default_control_format(m)));

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -94,6 +95,14 @@ int column_of_field(const std::string& raw, std::size_t index) {
   return static_cast<int>(at) + 1;
 }
 
+/// The temperatures a machine is measured at (°C); a value outside is a unit or typing error.
+constexpr double kLowestTemperatureC = 0.0, kHighestTemperatureC = 50.0;
+/// The largest linear expansion coefficient of a machine material (1/K; aluminium 23e-6).
+constexpr double kLargestExpansionPerK = 50e-6;
+
+/// The largest instrument uncertainty (µm, k = 2) and temperature uncertainty (K) a file may give.
+constexpr double kLargestInstrumentUUm = 1000.0, kLargestTemperatureUK = 10.0;
+
 /// A laser row's command off its file's '# line:' by more than this (mm) is refused.
 constexpr double kOffLineMm = 1e-4;
 
@@ -116,7 +125,7 @@ class CsvParser {
       const Context where{file_, line_no_, raw};
       if (line.empty()) continue;
       if (line[0] == '#') {
-        if (header_.empty()) metadata_line(line);  // else a comment among the rows
+        metadata_line(line, raw);
       } else if (header_.empty()) {
         read_header(line, raw, where);
       } else {
@@ -131,13 +140,54 @@ class CsvParser {
   }
 
  private:
-  /// `# key: value` (a free comment without a colon is skipped).
-  void metadata_line(const std::string& line) {
+  /// A `#` line. Before the column line, `# key: value` with a key of letters, digits and `_`
+  /// (starting with a letter) right before the colon is a key line; any other `#` line is a
+  /// comment (docs/formats.md "Header keys and comments"). After the column line every `#` line is
+  /// a comment; a known key there gets a notice (it is not read).
+  void metadata_line(const std::string& line, const std::string& raw) {
     const std::string body = trim(line.substr(1));
-    const auto colon = body.find(':');
-    if (colon == std::string::npos) return;
-    set_.metadata.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
+    std::size_t end = 0;
+    while (end < body.size() && (std::isalnum(static_cast<unsigned char>(body[end])) || body[end] == '_')) ++end;
+    std::size_t colon = end;
+    while (colon < body.size() && (body[colon] == ' ' || body[colon] == '\t')) ++colon;
+    if (end == 0 || !std::isalpha(static_cast<unsigned char>(body[0])) || colon >= body.size() || body[colon] != ':')
+      return;  // a comment
+    const std::string key = body.substr(0, end);
+    const Context where{file_, line_no_, raw};
+    if (!header_.empty()) {
+      if (known_key(key))
+        notice(fmt::format("'# {}:' after the column line (line {}) is a comment there and is not read: header keys go "
+                           "before the column line",
+                           key, header_line_));
+      return;
+    }
+    check_key(key, where);
+    set_.metadata.emplace_back(key, trim(body.substr(colon + 1)));
     meta_lines_.push_back(line_no_);
+  }
+
+  static const HeaderKey* known_key(const std::string& key) {
+    for (const HeaderKey& k : header_keys())
+      if (key == k.name) return &k;
+    return nullptr;
+  }
+
+  void notice(const std::string& text) { set_.notices.push_back(fmt::format("{}:{}: {}", file_, line_no_, text)); }
+
+  /// A known key given twice or in other letter case is refused; an unknown key gets a notice.
+  void check_key(const std::string& key, const Context& where) {
+    if (known_key(key)) {
+      if (const int first = key_line(key); first > 0)
+        where.fail(fmt::format("'# {}:' given twice (first on line {}): which one holds? keep one", key, first));
+      return;
+    }
+    std::string lower = key;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (known_key(lower))
+      where.fail(fmt::format("key '{}': header keys are lower case; write '# {}:'", key, lower));
+    notice(fmt::format("unknown key '# {}:' kept with the file's metadata but not used (known keys: docs/formats.md "
+                       "\"Measurement data\"; a comment has no 'word:' at its start)",
+                       key));
   }
 
   int key_line(const std::string& key) const {
@@ -160,6 +210,7 @@ class CsvParser {
     header_ = split(line, ',');
     read_type(where);
     read_type_keys(raw);
+    read_conditions(raw);
     read_columns(where);
     if (set_.type == MeasurementType::laser && !set_.meta("line").empty()) {
       line_axis_ = set_.meta("axis")[0];
@@ -176,6 +227,61 @@ class CsvParser {
     else if (type == "sphere") set_.type = MeasurementType::sphere;
     else if (type == "laser") set_.type = MeasurementType::laser;
     else throw InputError({file_, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
+  }
+
+  /// Temperature, expansion, instrument, serial, operator and date (measurement_conditions.hpp),
+  /// and a notice for each known key the file's type does not use.
+  void read_conditions(const std::string& raw) {
+    auto at_key = [&](const std::string& key) { return Context{file_, key_line(key), raw}; };
+    MeasurementConditions& c = set_.conditions;
+    if (const std::string t = set_.meta("temperature"); !t.empty()) {
+      c.temperature_c = number(t, at_key("temperature"), "temperature");
+      if (*c.temperature_c < kLowestTemperatureC || *c.temperature_c > kHighestTemperatureC)
+        at_key("temperature").fail(fmt::format("temperature {} °C is outside {:g}–{:g} °C, where no machine is measured: "
+                                               "degrees Celsius expected (°F or K?)",
+                                               t, kLowestTemperatureC, kHighestTemperatureC));
+    }
+    if (const std::string a = set_.meta("material_expansion"); !a.empty()) {
+      c.expansion_per_k = number(a, at_key("material_expansion"), "material_expansion");
+      if (std::abs(*c.expansion_per_k) > kLargestExpansionPerK)
+        at_key("material_expansion")
+            .fail(fmt::format("material_expansion {} is not a linear expansion coefficient in 1/K (steel 11.5e-6, cast "
+                              "iron 10.5e-6, aluminium 23e-6; at most {:g}): write e.g. 11.5e-6 for 11.5 µm/(m·K)",
+                              a, kLargestExpansionPerK));
+      if (!c.temperature_c)
+        at_key("material_expansion")
+            .fail("material_expansion without '# temperature:': the correction to 20 °C needs the machine's temperature "
+                  "(°C); give it or remove the coefficient");
+    }
+    if (const std::string d = set_.meta("date"); !d.empty()) {
+      if (!is_iso8601_date(d))
+        at_key("date").fail(fmt::format("date '{}' is not ISO 8601: expected e.g. 2026-11-20T09:30 (or 2026-11-20)", d));
+      c.date = d;
+    }
+    c.instrument_U_um = positive_key("instrument_uncertainty", kLargestInstrumentUUm, "µm", raw);
+    c.temperature_u_k = positive_key("temperature_uncertainty", kLargestTemperatureUK, "K", raw);
+    c.expansion_u_per_k = positive_key("expansion_uncertainty", kLargestExpansionPerK, "1/K", raw);
+    c.instrument = set_.meta("instrument");
+    c.serial = set_.meta("serial");
+    c.operator_name = set_.meta("operator");
+    const std::string type = to_string(set_.type);
+    for (std::size_t i = 0; i < set_.metadata.size(); ++i) {
+      const HeaderKey* k = known_key(set_.metadata[i].first);
+      if (k && std::string(k->types).find(type) == std::string::npos)
+        set_.notices.push_back(fmt::format("{}:{}: '# {}:' is not used in a {} file (it is a {} key)", file_, meta_lines_[i],
+                                           k->name, type, k->types));
+    }
+  }
+
+  /// An uncertainty key: a number > 0 and at most `largest` (its unit), or absent.
+  std::optional<double> positive_key(const std::string& key, double largest, const char* unit, const std::string& raw) {
+    const std::string text = set_.meta(key);
+    if (text.empty()) return std::nullopt;
+    const Context at{file_, key_line(key), raw};
+    const double v = number(text, at, key);
+    if (!(v > 0.0) || v > largest)
+      at.fail(fmt::format("{} {} is not an uncertainty in {} (greater than 0, at most {:g})", key, text, unit, largest));
+    return v;
   }
 
   /// The keys of the type (table_ball, sphere, component, ...) and the tool length.

@@ -6,6 +6,8 @@
 
 #include <utility>
 
+#include "ncpost/compensation/thermal_correction.hpp"
+
 namespace ncpost::comp {
 namespace {
 
@@ -46,6 +48,7 @@ std::vector<MeasurementSet> read_measurement_files(const std::vector<std::string
       ids.emplace_back(dev_t(-1), ino_t(-1));  // read_measurement_csv says why it cannot be opened
     }
     sets.push_back(read_measurement_csv(paths[k], machine, options));
+    correct_to_20c(sets.back());
     if (const int e = same_rows_as_earlier(sets, k); e >= 0)
       throw InputError({paths[k], sets[k].rows.front().line, 0},
                        fmt::format("holds the same rows as '{}' (a copy of the same measurement): it would count twice "

@@ -5,6 +5,7 @@
 
 #include "ncpost/compensation/laser_reading.hpp"
 #include "ncpost/compensation/prediction.hpp"
+#include "ncpost/compensation/thermal_correction.hpp"
 
 namespace ncpost::comp {
 
@@ -26,6 +27,7 @@ MeasurementSet simulate(const Machine& m, const MeasurementSet& plan, const Erro
       const double e = options.noise_um > 0.0 ? sigma * noise(rng) : 0.0;
       out.rows[k].value[v] = values[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(v)] + e;
     }
+  expand_to_measuring_temperature(out);  // what the instrument reads at the plan's temperature
   return out;
 }
 

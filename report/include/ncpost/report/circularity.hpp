@@ -25,4 +25,13 @@ struct CircularityFigures {
 
 CircularityFigures iso230_4_circularity(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
 
+/// ISO 230-4 asks for the figures of each direction of travel: `both` of the whole path (with H),
+/// `ccw` of the points reached with θ rising, `cw` of those reached with θ falling (the first point
+/// takes the direction of the move that leaves it), each with its own LSC centre and G. A direction
+/// the path does not run has ok = false and says so.
+struct CircularityByDirection {
+  CircularityFigures both, ccw, cw;
+};
+CircularityByDirection iso230_4_by_direction(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
+
 }  // namespace ncpost::report

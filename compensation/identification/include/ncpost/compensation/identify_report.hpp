@@ -2,8 +2,9 @@
 #pragma once
 // Human reports of an identification: text for the terminal and a self-contained HTML page
 // (inline SVG, no external resources; the shared pieces of ncpost::report) naming every input with
-// its SHA-256, the machine, the model, the date and the version; a pass/fail verdict against the
-// user's tolerance; the compensation values for the control (µm, µrad, and as the chosen control's
+// its SHA-256, the machine (with its serial and owner), the model, the date and the version; the
+// measurement conditions and dates (conditions_report.hpp); ISO 14253-1 verdicts of figures with
+// their expanded uncertainty and budget (uncertainty_report.hpp); the compensation values for the control (µm, µrad, and as the chosen control's
 // own entries, control_entries.hpp); the parameters with their
 // uncertainty, the identifiability findings and the residual before and after per file; the
 // ballbar tests as polar plots labelled with angles and the axes moved (measured, identified and
@@ -14,7 +15,9 @@
 #include <vector>
 
 #include "ncpost/compensation/control_entries.hpp"
+#include "ncpost/compensation/decision_rule.hpp"
 #include "ncpost/compensation/identify.hpp"
+#include "ncpost/machines/machine_record.hpp"
 
 namespace ncpost::comp {
 
@@ -33,7 +36,15 @@ struct IdentifyReportInputs {
   std::optional<double> pass_tolerance_um;   ///< `identify --pass-tolerance-um`: pass/fail verdicts
   /// `identify --control`: the control's own entries; unset: default_control_format(machine)
   std::optional<ControlFormat> control;
+  /// The machine file's `serial` and `owner` (machine_record.hpp), shown beside its name.
+  MachineRecord machine_record = {};
+  /// One tolerance per figure kind (µm; decision_rule.hpp): `identify --tolerance` over the
+  /// machine file's [tolerances].
+  Tolerances tolerances = {};
 };
+
+/// The tolerance of a figure kind: `tolerances`, else for G and A the --pass-tolerance-um.
+std::optional<double> tolerance_for(const IdentifyReportInputs& inputs, const std::string& kind);
 
 /// The model's values as `format`'s own entries (control_entries.hpp): the lines `ncpost export`
 /// writes, per file, and what the format cannot hold; an HTML section of the identification reports.

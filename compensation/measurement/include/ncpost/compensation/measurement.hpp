@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ncpost/compensation/measurement_conditions.hpp"
 #include "ncpost/kinematics/machine.hpp"
 
 namespace ncpost::comp {
@@ -41,6 +42,14 @@ struct MeasurementSet {
   double tool_length_mm = 0.0;          ///< `tool_length` key (all types; default 0)
   bool has_values = true;               ///< false for a plan (value columns absent)
   std::vector<MeasurementRow> rows;
+  /// Temperature, expansion, instrument, serial, operator, date (measurement_conditions.hpp).
+  MeasurementConditions conditions;
+  /// What the reader noticed without refusing the file (unknown keys, keys among the rows), each
+  /// "file:line: text"; `identify` prints them on stderr and in the report.
+  std::vector<std::string> notices;
+  /// thermal_correction.hpp: true once the values are corrected to 20 °C; the largest change (µm).
+  bool corrected_to_20c = false;
+  double thermal_correction_max_um = 0.0;
 
   /// Number of values per row: 1 (ballbar, laser) or 3 (sphere).
   int values_per_row() const { return type == MeasurementType::sphere ? 3 : 1; }

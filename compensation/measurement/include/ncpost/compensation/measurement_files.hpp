@@ -3,7 +3,9 @@
 // The measurement files of one identification, read together (issue 14 item 5): each file once.
 // A path given twice (the same file by device and inode, whatever its name) or a file whose rows
 // repeat an earlier file's rows would count the same measurements twice and shrink the reported
-// uncertainties by √2: both are InputErrors naming the file (and the first one).
+// uncertainties by √2: both are InputErrors naming the file (and the first one). Each set's
+// lengths are corrected to 20 °C where its file gives the temperature and the expansion
+// coefficient (thermal_correction.hpp).
 #include <string>
 #include <vector>
 

@@ -2,7 +2,9 @@
 #pragma once
 // Simulated measurements: a plan run on a machine described by error parameters (the truth),
 // with Gaussian noise (docs/formats.md, docs/cli.md `simulate`). Values in the file's units (mm; laser µm);
-// the noise standard deviation is given in µm for every type.
+// the noise standard deviation is given in µm for every type. A plan whose file gives
+// `# temperature:` and `# material_expansion:` is simulated as read at that temperature (the
+// lengths expanded, thermal_correction.hpp), which `identify` corrects back to 20 °C.
 #include <cstdint>
 
 #include "ncpost/compensation/error_parameters.hpp"
