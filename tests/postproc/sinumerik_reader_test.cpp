@@ -91,30 +91,30 @@ TEST_CASE("sinumerik: DEF, R parameters, expressions, X=IC()/AC(), G91, comments
 
 TEST_CASE("sinumerik: IF/ELSE, FOR, WHILE, REPEAT, LOOP with GOTOF, GOTOB and labels") {
   const std::string text =
-      "DEF INT I, K\n"
+      "DEF INT II, KK\n"
       "G0 G90 X0 Y0 Z10 A0 C0\n"
-      "FOR I=1 TO 3\n"
-      "  G1 X=I*10 F200\n"
+      "FOR II=1 TO 3\n"
+      "  G1 X=II*10 F200\n"
       "ENDFOR\n"
-      "IF I>=3\n"
+      "IF II>=3\n"
       "  Y5\n"
       "ELSE\n"
       "  Y-5\n"
       "ENDIF\n"
-      "K=0\n"
-      "WHILE K<2\n"
-      "  K=K+1\n"
-      "  Z=10-K\n"
+      "KK=0\n"
+      "WHILE KK<2\n"
+      "  KK=KK+1\n"
+      "  Z=10-KK\n"
       "ENDWHILE\n"
       "REPEAT\n"
-      "  K=K+1\n"
-      "UNTIL K>=4\n"
-      "X=K\n"
+      "  KK=KK+1\n"
+      "UNTIL KK>=4\n"
+      "X=KK\n"
       "LOOP\n"
-      "  K=K+1\n"
-      "  IF K>5 GOTOF OUT\n"
+      "  KK=KK+1\n"
+      "  IF KK>5 GOTOF OUT\n"
       "ENDLOOP\n"
-      "OUT: Y=K\n"
+      "OUT: Y=KK\n"
       "R5=0\n"
       "BACK: R5=R5+1\n"
       "IF R5<3 GOTOB BACK\n"
@@ -242,8 +242,9 @@ TEST_CASE("sinumerik: TRAORI with A3= B3= C3= gives the tool axis in W and the r
   check_tip(m[2], 20, 0, 20);
   CHECK(m[2].point.axis.isApprox(Vec3d(s, 0, s), 1e-12));
   // the angles: the AC table tilts the part, so the axis (0, -s, s) in W is A = +-45 deg, C = 0 or 180
-  REQUIRE(m[1].rotary_rad.size() == 2);
-  CHECK(std::abs(m[1].rotary_rad[0]) * 180 / M_PI == Approx(45.0));
+  REQUIRE(m[1].rotary_rad);
+  REQUIRE(m[1].rotary_rad->size() == 2);
+  CHECK(std::abs((*m[1].rotary_rad)[0]) * 180 / M_PI == Approx(45.0));
 }
 
 TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands") {
@@ -278,13 +279,14 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
       {"G0 X0 Y0 Z0\nCYCLE84(10,0,2,-5)\nM30\n", "CYCLE84 (rigid tapping) is not read", 2},
       {"G0 X0 Y0 Z0\nG505\nM30\n", "G505: a settable work offset beyond G57 is not read", 2},
       {"G0 X0 Y0 Z0\nR1=$AA_IM[X]\nM30\n", "$AA_IM is a system variable", 2},
-      {"DEF REAL A\nIF A==1 AND A==2\nENDIF\nM30\n", "Sinumerik binds comparisons last", 2},
+      {"DEF REAL AA\nIF AA==1 AND AA==2\nENDIF\nM30\n", "Sinumerik binds comparisons last", 2},
       {"G0 X0 Y0 Z0\nCIP X1 Y1 I1=0 J1=1\nM30\n", "CIP (a circle through an intermediate point) is not read", 2},
       {"G0 X0 Y0 Z0\nWHILE 1\nM30\n", "WHILE without its ENDWHILE", 2},
       {"G0 X0 Y0 Z0\nGOTOF NOWHERE\nM30\n", "no label NOWHERE", 2},
       {"G0 X0 Y0 Z0\nCYCLE800(0,\"TC\",0,27,0,0,0,10,20,30,0,0,0,1)\nM30\n", "CYCLE800 _MODE=27", 2},
       {"G0 X0 Y0 Z0\nG1 X=FOO F1\nM30\n", "FOO is not a defined variable", 2},
       {"G0 X0 Y0 Z0\nH5\nM30\n", "H (an auxiliary function", 2},
+      {"DEF INT K\nM30\n", "DEF K: a name starts with two letters", 1},
   };
   for (const Case& c : cases) {
     INFO(c.text);

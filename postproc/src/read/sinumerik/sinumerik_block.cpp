@@ -90,6 +90,12 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
     w.orientation[static_cast<std::size_t>(n[0] - 'A')] = value(l, item.column, item.text);
     return;
   }
+  const std::string& t = item.text;
+  if (n == "T" && !number && t.size() > 2 && t.front() == '"' && t.back() == '"' &&
+      t.find_first_not_of("0123456789", 1) == t.size() - 1) {  // T="12": the tool number as a string
+    w.iso.push_back("T" + t.substr(1, t.size() - 2));
+    return;
+  }
   if (n == "T" && !number && !item.text.empty() && item.text.front() == '"')
     fail(l, item.column, fmt::format("T={}: a tool by name is not read (the posted program selects tools by number); have "
                                      "the CAM system write T=<number>, or post the CL data", item.text));

@@ -10,7 +10,7 @@
 //     direction of the reference (first) rotary axis (+1/-1; 0: rotary axes not positioned:
 //     refused for a tilted plane). CYCLE800() resets the plane.
 //   CYCLE81(RTP, RFP, SDIS, DP, DPR), CYCLE82(RTP, RFP, SDIS, DP, DPR, DTB): rapid to RFP + SDIS,
-//     feed to DP (or RFP - DPR), dwell DTB s (CYCLE82), rapid to RTP; at the current X Y, along
+//     feed to RFP - DPR (DPR not 0) or DP, dwell DTB s (CYCLE82), rapid to RTP; at the current X Y, along
 //     the current frame's Z.
 #include <fmt/format.h>
 
@@ -119,13 +119,18 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
   d.retract = need(0, "RTP (the retract plane)");
   d.reference = need(1, "RFP (the reference plane)");
   d.safety = args.given(2) ? std::abs(value(l, item.column, args.text[2])) : 0.0;
-  const bool dp = args.given(3), dpr = args.given(4);
-  if (!dp && !dpr) fail(l, item.column, fmt::format("{}: neither DP nor DPR (the depth) is given", item.name));
-  const double from_dp = dp ? value(l, item.column, args.text[3]) : 0.0;
-  const double from_dpr = dpr ? d.reference - std::abs(value(l, item.column, args.text[4])) : 0.0;
-  if (dp && dpr && std::abs(from_dp - from_dpr) > 1e-9)
-    fail(l, item.column, fmt::format("{}: DP and DPR give different depths ({} and {})", item.name, from_dp, from_dpr));
-  d.depth = dp ? from_dp : from_dpr;
+  // DPR (relative) wins over DP where it is not 0, as the cycle does ("Depth: corresponding to value for relative depth")
+  const double relative = args.given(4) ? std::abs(value(l, item.column, args.text[4])) : 0.0;
+  if (relative != 0.0) {
+    d.depth = d.reference - relative;
+    if (args.given(3) && std::abs(value(l, item.column, args.text[3]) - d.depth) > 1e-9)
+      notice_once(l, item.name + " DPR", fmt::format("{}: DP and DPR differ; the depth is RFP - DPR = {}, as the cycle takes it",
+                                                   item.name, d.depth));
+  } else if (args.given(3)) {
+    d.depth = value(l, item.column, args.text[3]);
+  } else {
+    fail(l, item.column, fmt::format("{}: neither DP nor DPR (the depth) is given", item.name));
+  }
   if (item.name == "CYCLE82" && args.given(5)) d.dwell_s = value(l, item.column, args.text[5]);
   if (args.text.size() > (item.name == "CYCLE82" ? 6u : 5u))
     fail(l, item.column, fmt::format("{}: more parameters than RTP, RFP, SDIS, DP, DPR{} are not read", item.name,

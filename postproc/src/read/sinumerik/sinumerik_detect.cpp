@@ -10,7 +10,10 @@ namespace ncpost::sinumerik {
 
 bool looks_like_sinumerik(std::string_view head) {
   static const std::regex kMarks(
-      R"(^\s*(%_N_\w+_(MPF|SPF)\b|(N\d+\s+)?(DEF\s+(REAL|INT|BOOL|STRING)\b|PROC\s+\w|MCALL\b|TRANS\s|ATRANS\s|AROT\s|ROT\s+[XYZ])|.*\b(CYCLE8\d\d?\s*\(|GOTO[FB]\s|SUPA\b|T\s*=\s*"|(R\d+|[XYZ])\s*=\s*[-+(.\w]))))",
+      R"(^\s*%_N_\w+_(MPF|SPF)\b)"
+      R"(|^\s*(N\d+\s+)?(DEF\s+(REAL|INT|BOOL|STRING)\b|PROC\s+\w|MCALL\b|TRANS\s|ATRANS\s|AROT\s|ROT\s+[XYZ]))"
+      R"(|\b(CYCLE8\d\d?\s*\(|GOTO[FB]\s|SUPA\b|T\s*=\s*"))"
+      R"(|(^|\s)(R\d+|[XYZIJK]|[ABC]3|CR|_\w+)\s*=\s*[-+(.\w"])",
       std::regex::icase | std::regex::optimize);
   std::size_t from = 0;
   while (from < head.size()) {

@@ -103,7 +103,7 @@ void match_blocks(Program& p) {
       throw InputError({p.file, o.number, o.block.statement_column},
                        fmt::format("{} without its {} in its program unit", o.block.statement, closer_of(o.block.statement)), o.text);
     }
-    if (opens(s) && !(s == "IF" && one_line_if(l.block))) {
+    if (opens(s) && !(s == "IF" && one_line_if(l.block)) && !(s == "REPEAT" && !l.block.rest.empty())) {
       open.push_back(i);
       continue;
     }

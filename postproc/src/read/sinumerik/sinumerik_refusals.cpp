@@ -53,7 +53,7 @@ constexpr NameEntry kNoted[] = {
     {"ORIVECT", "orientation by vector interpolation"}, {"CUT2D", "2-D radius compensation"},
     {"CUT2DF", "2-D radius compensation in the frame"}, {"STOPRE", "preprocessing stop"},
     {"DIAMOF", "radius programming"}, {"SETMS", "master spindle"}, {"WAITMC", "wait for marker"},
-    {"G64", "continuous path"}, {"CTOL", "contour tolerance"}, {"OTOL", "orientation tolerance"},
+    {"CTOL", "contour tolerance"}, {"OTOL", "orientation tolerance"},
     {"TCOABS", "tool length from the tool data"}, {"ORIPATH", "orientation relative to the path"},
 };
 
@@ -67,7 +67,7 @@ constexpr NameEntry kRefused[] = {
     {"TCARR", "a tool carrier selected by the program"}, {"TOFRAME", "a frame along the tool"},
     {"PAROT", "a frame aligned with the workpiece"}, {"CYCLE83", "deep-hole drilling (not read yet)"},
     {"CYCLE84", "rigid tapping"}, {"CYCLE840", "tapping with compensating chuck"}, {"CYCLE85", "reaming"},
-    {"CYCLE86", "boring"}, {"CYCLE800", "the swivel cycle (its parameters: see the manual)"},
+    {"CYCLE86", "boring"},
     {"SPOS", "spindle positioning"}, {"OFFN", "contour offset"}, {"CUT3DC", "3-D radius compensation"},
     {"CUT3DF", "3-D radius compensation"}, {"CUT3DFF", "3-D radius compensation"}, {"ORIC", "orientation change at corners"},
 };
@@ -112,6 +112,9 @@ const char* noted_name(const std::string& name) {
 std::string refused_name(const std::string& name) {
   for (const NameEntry& e : kRefused)
     if (e.name == name) return fmt::format("{} ({}) is not read; {}", name, e.what, kPostCl);
+  if (name.size() > 1 && name[0] == 'L' && name.find_first_not_of("0123456789", 1) == std::string::npos)
+    return fmt::format("{}: the subprogram {} is not in this file; append it as %_N_{}_SPF (its blocks) and post "
+                       "the file", name, name, name);
   if (name.rfind("CYCLE", 0) == 0) return fmt::format("{} (a Sinumerik cycle) is not read; {}", name, kPostCl);
   if (!name.empty() && name[0] == '$') return fmt::format("{} (a system variable) is not read", name);
   return fmt::format("{} is not read (not a statement, address or subprogram of this file ncpost knows); {}", name, kPostCl);

@@ -87,50 +87,65 @@ void Translator::statement(const ProgramLine& l) {
   const std::string& r = l.block.rest;
   if (!l.block.comment.empty()) emit(l, ";" + l.block.comment);
   if (s == "DEF") return define(l);
-  if (s == "GOTOF" || s == "GOTOB" || s == "GOTO" || s == "GOTOC") return jump(l, s, upper(r));
-  if (s == "IF") {
-    const std::string R = upper(r);
-    for (const char* g : {" GOTOF ", " GOTOB ", " GOTOC ", " GOTO "}) {
-      const std::size_t at = (R + " ").find(g);
-      if (at == std::string::npos) continue;
-      if (condition(l, r.substr(0, at))) {
-        std::string label = R.substr(at + std::string(g).size());
-        while (!label.empty() && label.back() == ' ') label.pop_back();
-        jump(l, std::string(g).substr(1, std::string(g).size() - 2), label);
-      }
-      return;
-    }
-    if (!condition(l, r)) pc_ = (l.partner ? l.partner : l.end) + 1;
-    return;
-  }
-  if (s == "ELSE") {
-    pc_ = l.end + 1;
-    return;
-  }
-  if (s == "WHILE") {
-    if (!condition(l, r)) pc_ = l.end + 1;
-    return;
-  }
-  if (s == "ENDWHILE" || s == "ENDLOOP") {
-    pc_ = l.partner + (s == "ENDLOOP" ? 1 : 0);
-    return;
-  }
-  if (s == "UNTIL") {
-    if (!condition(l, r)) pc_ = l.partner + 1;
-    return;
-  }
-  if (s == "FOR" || s == "ENDFOR") return for_loop(l);
-  if (s == "ENDIF" || s == "REPEAT" || s == "LOOP") return;
+  if (flow_statement(l)) return;
   if (s == "RET") return return_from_unit();
   if (s == "TRANS" || s == "ATRANS" || s == "ROT" || s == "AROT" || s == "SCALE" || s == "ASCALE") return frame_statement(l);
   if (s == "CALL") {
-    const std::string name = values_.evaluate_string(r);
+    std::string name;
+    try {
+      name = values_.evaluate_string(r);
+    } catch (const ValueError& e) {
+      fail(l, l.block.rest_column, e.what);
+    }
     return call(l, upper(name), {}, 1);
   }
   if (s == "STOPRE" || s == "SETMS") return notice_once(l, s, fmt::format("{} is noted (nothing to post)", s));
   if (s == "MCALL") return modal_call(l);
   if (s == "PROC") fail(l, l.block.statement_column, "PROC inside the main program: a subprogram starts a program unit");
   fail(l, l.block.statement_column, fmt::format("{} is not read", s));
+}
+
+/// GOTO*, IF, ELSE, WHILE, REPEAT/UNTIL, LOOP, FOR and their ends; false for other statements.
+bool Translator::flow_statement(const ProgramLine& l) {
+  const std::string& s = l.block.statement;
+  const std::string& r = l.block.rest;
+  if (s == "GOTOF" || s == "GOTOB" || s == "GOTO" || s == "GOTOC") {
+    jump(l, s, upper(r));
+  } else if (s == "IF") {
+    if_statement(l);
+  } else if (s == "ELSE") {
+    pc_ = l.end + 1;
+  } else if (s == "WHILE") {
+    if (!condition(l, r)) pc_ = l.end + 1;
+  } else if (s == "ENDWHILE" || s == "ENDLOOP") {
+    pc_ = l.partner + (s == "ENDLOOP" ? 1 : 0);
+  } else if (s == "UNTIL") {
+    if (!condition(l, r)) pc_ = l.partner + 1;
+  } else if (s == "FOR" || s == "ENDFOR") {
+    for_loop(l);
+  } else if (s == "REPEAT" && !l.block.rest.empty()) {
+    fail(l, l.block.statement_column, fmt::format("REPEAT {} (repeating a section of the program) is not read", l.block.rest));
+  } else if (s != "ENDIF" && s != "REPEAT" && s != "LOOP") {
+    return false;
+  }
+  return true;
+}
+
+/// IF cond (a block up to ELSE/ENDIF) or IF cond GOTOF|GOTOB|GOTO label (a jump).
+void Translator::if_statement(const ProgramLine& l) {
+  const std::string& r = l.block.rest;
+  const std::string R = upper(r);
+  for (const std::string g : {" GOTOF ", " GOTOB ", " GOTOC ", " GOTO "}) {
+    const std::size_t at = (R + " ").find(g);
+    if (at == std::string::npos) continue;
+    if (condition(l, r.substr(0, at))) {
+      std::string label = R.substr(at + g.size());
+      while (!label.empty() && label.back() == ' ') label.pop_back();
+      jump(l, g.substr(1, g.size() - 2), label);
+    }
+    return;
+  }
+  if (!condition(l, r)) pc_ = (l.partner ? l.partner : l.end) + 1;
 }
 
 /// DEF REAL|INT|BOOL|STRING[n] name[=value], name ...

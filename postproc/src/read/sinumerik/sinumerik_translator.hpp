@@ -76,6 +76,8 @@ class Translator {
   // flow (sinumerik_translator.cpp)
   bool step();
   void statement(const ProgramLine& l);
+  bool flow_statement(const ProgramLine& l);
+  void if_statement(const ProgramLine& l);
   void define(const ProgramLine& l);
   void jump(const ProgramLine& l, const std::string& how, const std::string& label);
   bool condition(const ProgramLine& l, const std::string& text);

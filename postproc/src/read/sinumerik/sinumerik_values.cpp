@@ -42,13 +42,13 @@ const Function* function_named(const std::string& n) {
   return nullptr;
 }
 
-struct Level {
+}  // namespace
+
+struct Values::Level {
   const Function* function = nullptr;  ///< the call this '(' opened, if any
   bool comparison = false;
   bool logic = false;
 };
-
-}  // namespace
 
 int r_parameter(std::string_view name) {
   if (name.size() < 2 || (name[0] != 'R' && name[0] != 'r')) return -1;
@@ -63,6 +63,9 @@ int r_parameter(std::string_view name) {
 
 void Values::define(const std::string& name, VarType type) {
   if (r_parameter(name) >= 0) throw ValueError{0, fmt::format("DEF {}: R parameters are predefined", name)};
+  const auto letter_ = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  if (name.size() < 2 || !letter_(name[0]) || !letter_(name[1]))
+    throw ValueError{0, fmt::format("DEF {}: a name starts with two letters or underscores (one letter is an address)", name)};
   types_[name] = type;
   if (type == VarType::string) strings_[name] = "";
   else params_.set(key_of(name), 0.0);
@@ -128,56 +131,77 @@ double Values::evaluate(std::string_view e) const {
   }
 }
 
+/// A name at `i` of `e` (a function call, an operator word, a constant or a variable) in the
+/// evaluator's syntax, appended to `out`; the index after it.
+std::size_t Values::name_token(std::string_view e, std::size_t i, std::string& out, std::vector<Level>& levels) const {
+  std::size_t j = i;
+  while (j < e.size() && is_name_char(e[j])) ++j;
+  const std::string name = upper(e.substr(i, j - i));
+  std::size_t k = j;
+  while (k < e.size() && e[k] == ' ') ++k;
+  if (k < e.size() && e[k] == '(') {
+    const Function* f = function_named(name);
+    if (!f) throw ValueError{i, fmt::format("{}(...): this function is not read", name)};
+    out += f->open;
+    levels.push_back(Level{f});
+    return k + 1;
+  }
+  if (name == "AND" || name == "OR" || name == "XOR" || name == "MOD") {
+    if (name != "MOD") levels.back().logic = true;
+    out += " " + name + " ";
+  } else if (name == "TRUE" || name == "FALSE") {
+    out += name == "TRUE" ? "1" : "0";
+  } else if (name == "DIV" || name == "NOT" || name.rfind("B_", 0) == 0) {
+    throw ValueError{i, fmt::format("{} is not read (write the expression with + - * / MOD AND OR XOR)", name)};
+  } else if (name[0] == '$') {
+    throw ValueError{i, fmt::format("{} is a system variable: its value is the control's, so it is not read", name)};
+  } else if (k < e.size() && e[k] == '[') {
+    throw ValueError{i, fmt::format("{}[...]: arrays are not read", name)};
+  } else if (types_.count(name) && types_.at(name) == VarType::string) {
+    throw ValueError{i, fmt::format("{} is a STRING: strings are only read in MSG() and T=", name)};
+  } else if (known(name)) {
+    out += "#<" + key_of(name) + ">";
+  } else {
+    throw ValueError{i, fmt::format("{} is not a defined variable (DEF it, or an R parameter)", name)};
+  }
+  return j;
+}
+
+namespace {
+
+constexpr const char* kMixed = "a comparison beside AND/OR/XOR without parentheses: Sinumerik binds comparisons last, "
+                               "other languages first; write (A==1) AND (B==2)";
+
+/// A comparison operator at `i` in the evaluator's words (" EQ " ...), its length in `length`; null otherwise.
+const char* comparison_at(std::string_view e, std::size_t i, std::size_t& length) {
+  const std::string_view two = e.substr(i, 2);
+  length = 2;
+  if (two == "==") return " EQ ";
+  if (two == "<>") return " NE ";
+  if (two == ">=") return " GE ";
+  if (two == "<=") return " LE ";
+  if (two == "<<") throw ValueError{i, "'<<' (string concatenation) is not read outside MSG()"};
+  length = 1;
+  if (e[i] == '<') return " LT ";
+  if (e[i] == '>') return " GT ";
+  return nullptr;
+}
+
+}  // namespace
+
 /// The expression in the evaluator's syntax (see the header); ValueError where the languages differ.
 std::string Values::to_bracket_syntax(std::string_view e) const {
   std::string out;
   std::vector<Level> levels(1);
   for (std::size_t i = 0; i < e.size();) {
     const char c = e[i];
+    std::size_t length = 0;
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$') {
-      std::size_t j = i;
-      while (j < e.size() && is_name_char(e[j])) ++j;
-      const std::string name = upper(e.substr(i, j - i));
-      std::size_t k = j;
-      while (k < e.size() && e[k] == ' ') ++k;
-      const bool call = k < e.size() && e[k] == '(';
-      if (call) {
-        const Function* f = function_named(name);
-        if (!f) throw ValueError{i, fmt::format("{}(...): this function is not read", name)};
-        out += f->open;
-        levels.push_back(Level{f});
-        i = k + 1;
-        continue;
-      }
-      if (name == "AND" || name == "OR" || name == "XOR" || name == "MOD") {
-        if (name != "MOD") levels.back().logic = true;
-        out += " " + name + " ";
-      } else if (name == "TRUE" || name == "FALSE") {
-        out += name == "TRUE" ? "1" : "0";
-      } else if (name == "DIV" || name == "NOT" || name.rfind("B_", 0) == 0) {
-        throw ValueError{i, fmt::format("{} is not read (write the expression with + - * / MOD AND OR XOR)", name)};
-      } else if (name[0] == '$') {
-        throw ValueError{i, fmt::format("{} is a system variable: its value is the control's, so it is not read", name)};
-      } else if (k < e.size() && e[k] == '[') {
-        throw ValueError{i, fmt::format("{}[...]: arrays are not read", name)};
-      } else if (types_.count(name) && types_.at(name) == VarType::string) {
-        throw ValueError{i, fmt::format("{} is a STRING: strings are only read in MSG() and T=", name)};
-      } else if (known(name)) {
-        out += "#<" + key_of(name) + ">";
-      } else {
-        throw ValueError{i, fmt::format("{} is not a defined variable (DEF it, or an R parameter)", name)};
-      }
-      i = j;
-      continue;
-    }
-    const std::string_view two = e.substr(i, 2);
-    const char* word = two == "==" ? " EQ " : two == "<>" ? " NE " : two == ">=" ? " GE " : two == "<=" ? " LE " : nullptr;
-    if (!word && (c == '<' || c == '>') && two != "<<") word = c == '<' ? " LT " : " GT ";
-    if (two == "<<") throw ValueError{i, "'<<' (string concatenation) is not read outside MSG()"};
-    if (word) {
+      i = name_token(e, i, out, levels);
+    } else if (const char* word = comparison_at(e, i, length)) {
       levels.back().comparison = true;
       out += word;
-      i += (two == "==" || two == "<>" || two == ">=" || two == "<=") ? 2 : 1;
+      i += length;
     } else if (c == '(') {
       out += '[';
       levels.push_back(Level{});
@@ -186,9 +210,7 @@ std::string Values::to_bracket_syntax(std::string_view e) const {
       if (levels.size() < 2) throw ValueError{i, fmt::format("'{}' without its '('", c)};
       const Function* f = levels.back().function;
       if (c == ',' && (!f || f->comma.empty())) throw ValueError{i, "',' outside a function's arguments"};
-      if (levels.back().comparison && levels.back().logic)
-        throw ValueError{i, "a comparison beside AND/OR/XOR without parentheses: Sinumerik binds comparisons last, "
-                            "other languages first; write (A==1) AND (B==2)"};
+      if (levels.back().comparison && levels.back().logic) throw ValueError{i, kMixed};
       out += c == ',' ? std::string(f->comma) : f ? std::string(f->close) : std::string("]");
       if (c == ',') levels.back().comparison = levels.back().logic = false;
       else levels.pop_back();
@@ -200,9 +222,7 @@ std::string Values::to_bracket_syntax(std::string_view e) const {
       ++i;
     }
   }
-  if (levels.back().comparison && levels.back().logic)
-    throw ValueError{0, "a comparison beside AND/OR/XOR without parentheses: Sinumerik binds comparisons last, other "
-                        "languages first; write (A==1) AND (B==2)"};
+  if (levels.back().comparison && levels.back().logic) throw ValueError{0, kMixed};
   return out;
 }
 

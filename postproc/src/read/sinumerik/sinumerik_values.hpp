@@ -22,6 +22,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ncpost/postproc/read/gcode/gcode_expression.hpp"
 
@@ -61,7 +62,9 @@ class Values {
   void restore_scope(Saved s);
 
  private:
+  struct Level;  ///< one parenthesis level of an expression being rewritten
   std::string to_bracket_syntax(std::string_view e) const;
+  std::size_t name_token(std::string_view e, std::size_t i, std::string& out, std::vector<Level>& levels) const;
   std::map<std::string, VarType> types_;
   gcode::Parameters params_;
   std::map<std::string, std::string> strings_;

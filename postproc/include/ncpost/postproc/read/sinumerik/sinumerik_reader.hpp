@@ -49,8 +49,8 @@ class SinumerikReader final : public cl::Reader {
 
 /// True when `head` (the start of a file) holds a construct of the Sinumerik language that plain
 /// ISO G-code lacks: a `%_N_..._MPF/SPF` line, `DEF REAL|INT|BOOL|STRING`, `PROC`, a CYCLE8..
-/// call, MCALL, GOTOF/GOTOB, SUPA, `T="..."`, a `name=value` assignment of an R parameter or an
-/// axis (`R1=`, `X=`), TRANS/ROT/ATRANS/AROT. Comments do not count.
+/// call, MCALL, GOTOF/GOTOB, SUPA, `T="..."`, a `name=value` assignment of an R parameter, an
+/// axis, an orientation or a `_NAME` (`R1=`, `X=`, `A3=`, `CR=`, `_CAMTOL=`), TRANS/ROT/ATRANS/AROT. Comments do not count.
 bool looks_like_sinumerik(std::string_view head);
 
 }  // namespace ncpost::sinumerik
