@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cl_records.hpp"
@@ -247,7 +248,8 @@ TEST_CASE("sinumerik: TRAORI with A3= B3= C3= gives the tool axis in W and the r
   CHECK(std::abs((*m[1].rotary_rad)[0]) * 180 / M_PI == Approx(45.0));
 }
 
-TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands") {
+TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands, as cycles or as their motions") {
+  // RTP 20, RFP 0, SDIS 2: rapid to Z2, feed to the depth (DP -5; DPR 3: -3), dwell DTB, rapid to Z20
   const std::string text =
       "G0 G90 X0 Y0 Z20 A0 C0 F100\n"
       "CYCLE81(20, 0, 2, -5)\n"
@@ -256,15 +258,43 @@ TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands") {
       "Y10\n"
       "MCALL\n"
       "X0 Y0\n"
+      "G0 Z50\n"
+      "CYCLE81(20, 0, 2, -5)\n"   // the tool above RTP: straight down to Z2, not to RTP first
       "M30\n";
-  const auto m = motions(text);
-  std::vector<std::array<double, 3>> expected = {{0, 0, 20}, {0, 0, 2}, {0, 0, -5}, {0, 0, 20},
-                                                 {10, 0, 20}, {10, 0, 2}, {10, 0, -3}, {10, 0, 20},
-                                                 {10, 10, 20}, {10, 10, 2}, {10, 10, -3}, {10, 10, 20}, {0, 0, 20}};
-  REQUIRE(m.size() == expected.size());
-  for (std::size_t i = 0; i < m.size(); ++i) check_tip(m[i], expected[i][0], expected[i][1], expected[i][2]);
-  CHECK(m[2].rapid == false);
-  CHECK(m[3].rapid == true);
+  const Read r = read(text);
+  struct Hole {
+    double x, y, bottom, top, dwell;
+  };
+  std::vector<Hole> holes;
+  std::optional<cl::Cycle> cycle;
+  for (const auto& rec : r.records) {
+    if (const auto* c = std::get_if<cl::Cycle>(&rec)) cycle = c->kind == cl::Cycle::Kind::off ? std::nullopt : std::optional(*c);
+    const auto* m = std::get_if<cl::Motion>(&rec);
+    if (!m || !cycle) continue;
+    const Vec3d& p = m->point.tip_mm;
+    holes.push_back({p.x(), p.y(), p.z() - cycle->depth_mm, p.z() + cycle->retract_mm.value_or(cycle->rapid_to_mm), cycle->dwell_s});
+    cycle.reset();
+  }
+  const std::vector<Hole> expected = {{0, 0, -5, 20, 0}, {10, 0, -3, 20, 0.5}, {10, 10, -3, 20, 0.5}};
+  REQUIRE(holes.size() == expected.size());
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    INFO("hole " << i);
+    CHECK(holes[i].x == Approx(expected[i].x).margin(1e-9));
+    CHECK(holes[i].y == Approx(expected[i].y).margin(1e-9));
+    CHECK(holes[i].bottom == Approx(expected[i].bottom).margin(1e-9));
+    CHECK(holes[i].top == Approx(expected[i].top).margin(1e-9));
+    CHECK(holes[i].dwell == Approx(expected[i].dwell));
+  }
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() >= 4);
+  const std::size_t n = m.size();
+  check_tip(m[n - 4], 0, 0, 50);
+  check_tip(m[n - 3], 0, 0, 2);
+  check_tip(m[n - 2], 0, 0, -5);
+  check_tip(m[n - 1], 0, 0, 20);
+  CHECK(m[n - 3].rapid);
+  CHECK_FALSE(m[n - 2].rapid);
+  CHECK(m[n - 1].rapid);
 }
 
 TEST_CASE("sinumerik: what is not read is refused by name with its line, never a character-level error") {

@@ -11,7 +11,7 @@
 //     refused for a tilted plane). CYCLE800() resets the plane.
 //   CYCLE81(RTP, RFP, SDIS, DP, DPR), CYCLE82(RTP, RFP, SDIS, DP, DPR, DTB): rapid to RFP + SDIS,
 //     feed to RFP - DPR (DPR not 0) or DP, dwell DTB s (CYCLE82), rapid to RTP; at the current X Y, along
-//     the current frame's Z.
+//     the current frame's Z: G81/G82 (a cl::Cycle) where that is the same motion, else the motions.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -141,13 +141,29 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
 }
 
 /// The hole at the current X Y of the frame: rapid to the safety plane, feed to the depth, dwell,
-/// rapid to the retract plane.
+/// rapid to the retract plane. Where the frame only shifts and the tool stands on the retract plane
+/// (or the retract plane is the safety plane) it is the canned cycle G81/G82 with G98 (G99), which
+/// the G-code reader gives as a cl::Cycle; otherwise those motions.
 void Translator::drill(const ProgramLine& l, const Drilling& d) {
   const Eigen::Vector3d at = current_prog(l, 1);
   if (!base_known_[0] || !base_known_[1]) fail(l, 1, fmt::format("{}: X and Y of the hole are not known", d.name));
   const std::array<bool, 3> z_only{false, false, true};
   const auto to_z = [&](double z) { return Eigen::Vector3d(at.x(), at.y(), z); };
-  emit(l, "G0" + axis_words(l, to_z(d.reference + d.safety), z_only, false));
+  const Frame f = frame();
+  const double safety = d.reference + d.safety;
+  const bool on_retract = base_known_[2] && std::abs(at.z() - d.retract) < 1e-9;
+  if (f.shift_only() && !swivel_tip_ && !traori_ && (on_retract || std::abs(d.retract - safety) < 1e-9)) {
+    const Eigen::Vector3d hole = f.apply(at);
+    const double dz = f.offset.z();
+    emit(l, fmt::format("G{} G{} X{} Y{} Z{} R{}{}", on_retract ? 98 : 99, d.dwell_s > 0.0 ? 82 : 81,
+                        gcode::word_number(hole.x()), gcode::word_number(hole.y()), gcode::word_number(d.depth + dz),
+                        gcode::word_number(safety + dz), d.dwell_s > 0.0 ? fmt::format(" P{:.4f}", d.dwell_s) : ""));
+    emit(l, "G80");
+    base_[2] = d.retract + dz;
+    base_known_[2] = true;
+    return;
+  }
+  emit(l, "G0" + axis_words(l, to_z(safety), z_only, false));
   emit(l, "G1" + axis_words(l, to_z(d.depth), z_only, false));
   if (d.dwell_s > 0.0) emit(l, fmt::format("G4 P{:.4f}", d.dwell_s));
   emit(l, "G0" + axis_words(l, to_z(d.retract), z_only, false));
