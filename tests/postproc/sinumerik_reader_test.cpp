@@ -227,6 +227,41 @@ TEST_CASE("sinumerik: G2/G3 with I J, AC() centres and CR=, in a frame rotated a
   check_tip(m.back(), 10, 0, 0);
 }
 
+TEST_CASE("sinumerik: an arc in a frame tilted out of its plane becomes points on the circle in W") {
+  // ROT X90: the program's (x, y, z) is (x, -z, y) in W, so the quarter circle in the program's
+  // X Y plane about (0, 0) runs from (10, 0, 0) to (0, 0, 10) in W's X Z plane
+  const std::string text =
+      "G0 G90 G17 X10 Y0 Z0 A0 C0\n"
+      "ROT X90\n"
+      "G3 X0 Y10 I-10 J0 F100\n"
+      "M30\n";
+  const Read r = read(text);
+  CHECK(only<cl::Circle>(r.records).empty());
+  const auto m = only<cl::Motion>(r.records);
+  REQUIRE(m.size() > 10);
+  for (std::size_t i = 1; i < m.size(); ++i) {
+    INFO("point " << i);
+    CHECK(m[i].point.tip_mm.norm() == Approx(10.0).margin(1e-9));
+    CHECK(m[i].point.tip_mm.y() == Approx(0.0).margin(1e-9));
+    CHECK(m[i].where.line == 3);
+  }
+  check_tip(m.back(), 0, 0, 10);
+}
+
+TEST_CASE("sinumerik: D0 (no tool offset) before a cut is refused; the G-code reader's messages name the Sinumerik line") {
+  const std::string e = error_of("R1=5\nG0 X0 Y0 Z10 A0 C0\nD0\nR2=1\nG1 X=R1 F100\nM30\n");
+  CHECK_THAT(e, Catch::Contains("t.mpf:5:"));
+  CHECK_THAT(e, Catch::Contains("D0"));
+  // beyond X's travel (500 mm): found by the G-code reader on its own block, named at line 4 here
+  std::string limit;
+  try {
+    read("G0 X0 Y0 Z10 A0 C0\nR1=2\nDEF REAL _UNUSED\nG1 X=600*R1 F100\nM30\n");
+  } catch (const Infeasible& x) {
+    limit = x.what();
+  }
+  CHECK_THAT(limit, Catch::StartsWith("t.mpf:4:"));
+}
+
 TEST_CASE("sinumerik: TRAORI with A3= B3= C3= gives the tool axis in W and the rotary angles that reach it") {
   const double s = std::sqrt(0.5);
   const std::string text =

@@ -137,6 +137,7 @@ void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {
     return;
   }
   if (g == 17 || g == 18 || g == 19) plane_ = g;
+  if (g == 70 || g == 700 || g == 71 || g == 710) inch_ = g == 70 || g == 700;
   if (g == 500) {
     notice_once(l, "G500", "G500 (no settable work offset): W is the job's workpiece frame as for G54 (--workpiece-origin)");
     return;

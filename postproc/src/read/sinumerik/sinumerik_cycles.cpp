@@ -49,6 +49,7 @@ void Translator::cycle800(const ProgramLine& l, const Item& item) {
   if (args.text.empty()) return cycle800_reset(l);
   const auto num = [&](std::size_t i) { return args.given(i) ? value(l, item.column, args.text[i]) : 0.0; };
   if (traori_) fail(l, item.column, "CYCLE800 under TRAORI is not read (program TRAFOOF first)");
+  if (inch_) fail(l, item.column, "CYCLE800 in an inch program (G70/G700) is not read");
   const double fr = num(0), st = num(2), mode = num(3), dir = num(13);
   const Eigen::Vector3d x0(num(4), num(5), num(6)), angles(num(7), num(8), num(9)), x1(num(10), num(11), num(12));
   if (fr != 0.0 && fr != 1.0)

@@ -159,6 +159,9 @@ std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
 void Translator::motion(const ProgramLine& l, Words& w, std::string& iso) {
   if (w.motion) motion_ = *w.motion;
   if (motion_ < 0) fail(l, w.column, "a motion before G0, G1, G2 or G3 is programmed (the control's initial setting is not known)");
+  if (length_off_)
+    fail(l, w.column, "a motion with D0 (no tool offset) outside SUPA: the words name the spindle's gauge point, the "
+                      "post places the tool tip; program D1 (the tool's edge) before it, or move with SUPA");
   std::string words = w.any_orientation() ? orientation_words(l, w) : rotary_words(l, w);
   Eigen::Vector3d target;
   std::array<bool, 3> programmed{};

@@ -142,6 +142,7 @@ class Translator {
   bool traori_ = false;        ///< TRAORI programmed
   bool swivel_tip_ = false;    ///< CYCLE800 made the reader take tool-tip positions
   bool length_off_ = false;    ///< D0 in force
+  bool inch_ = false;          ///< G70/G700 in force (lengths in inch)
   Frame programmable_;
   Frame swivel_;
   Eigen::Vector3d base_ = Eigen::Vector3d::Zero();  ///< the last position in W (program unit)
