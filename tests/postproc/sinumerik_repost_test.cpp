@@ -158,3 +158,37 @@ TEST_CASE("sinumerik re-post: CYCLE800 tilts the plane 30 deg about X; the outpu
   CHECK(among);
   if (positive_exists) CHECK(got.at('A') > 0);  // _DIR = +1: the reference axis A on its plus side
 }
+
+TEST_CASE("sinumerik re-post: CYCLE800 about Y with a retract and _DIR=-1, then TRAORI with rotary words, on a machine-axis output") {
+  const std::string text =
+      "G17 G90 G94 G54\n"
+      "T1 D1 M6\n"
+      "S2500 M3\n"
+      "CYCLE800(1,\"TABLE\",100000,57,15,0,0,0,30,0,0,0,0,-1,100,1)\n"
+      "G0 X4 Y-40 Z60\n"
+      "G1 Z5 F300\n"
+      "G1 Y40 F700\n"
+      "G0 Z60\n"
+      "CYCLE800()\n"
+      "G0 X0 Y0 Z100 A45 C180\n"   // machine axes again: every word given (the linear axes stood still)
+      "TRAORI\n"
+      "G0 X40 Y-28 Z50\n"
+      "G1 Z-2 F600\n"
+      "G1 X-28\n"
+      "G1 C270\n"
+      "G1 Y28\n"
+      "G0 Z50\n"
+      "TRAFOOF\n"
+      "M30\n";
+  const std::string out = repost(text, false);
+  INFO(out);
+  check_ends(text, out);
+  // the plane Ry(30): A on its minus side (_DIR = -1) where the tests' FK has such a solution
+  const test::ExecMachine m = test::ExecMachine::load(test::source("machines/ac-trunnion.toml"));
+  const test::V3 normal = test::sin_rot(1, 30) * test::V3::UnitZ();
+  const std::map<char, double> got = first_tilt(out);
+  REQUIRE(got.count('A'));
+  const test::ExecPose pose = test::forward(m, exec_job(), test::V3::Zero(), {{'A', got.at('A')}, {'C', got.at('C')}});
+  CHECK((pose.axis_W - normal).norm() < kAxisTolerance);
+  CHECK(got.at('A') < 0);
+}
