@@ -202,7 +202,7 @@ void Translator::for_loop(const ProgramLine& l) {
     while (!name.empty() && name.back() == ' ') name.pop_back();
     const double next = value(l, 1, name) + 1.0;
     if (next <= for_end_[l.partner]) {
-      values_.assign(name, next);
+      assign_or_fail(l, name, next);
       pc_ = l.partner + 1;
     }
     return;
@@ -217,8 +217,16 @@ void Translator::for_loop(const ProgramLine& l) {
   if (!values_.known(name)) fail(l, l.block.rest_column, fmt::format("FOR {}: not a defined variable", name));
   const double start = value(l, l.block.rest_column, l.block.rest.substr(eq + 1, to - eq - 1));
   for_end_[pc_ - 1] = value(l, l.block.rest_column, l.block.rest.substr(to + 4));
-  values_.assign(name, start);
+  assign_or_fail(l, name, start);
   if (start > for_end_[pc_ - 1]) pc_ = l.end + 1;
+}
+
+void Translator::assign_or_fail(const ProgramLine& l, const std::string& name, double v) {
+  try {
+    values_.assign(name, v);
+  } catch (const ValueError& e) {
+    fail(l, l.block.rest_column, e.what);
+  }
 }
 
 /// An item that names a subprogram of the file (NAME, NAME(args), L<n>) is called; false otherwise.
@@ -244,13 +252,17 @@ void Translator::call(const ProgramLine& l, const std::string& unit_name, const 
   std::vector<std::pair<double, std::string>> given;
   for (const std::string& a : args) given.emplace_back(a.empty() ? 0.0 : (a.front() == '"' ? 0.0 : value(l, 1, a)), a);
   calls_.push_back(Call{pc_, static_cast<int>(it->second), l.number, unit_name, values_.save(), repeats - 1});
-  for (std::size_t i = 0; i < u.parameters.size(); ++i) {
-    const char t = u.parameter_types[i];
-    values_.define(u.parameters[i], t == 'R' ? VarType::real : t == 'I' ? VarType::integer : t == 'B' ? VarType::boolean : VarType::string);
-    if (i < given.size() && !given[i].second.empty()) {
-      if (t == 'S') values_.assign_string(u.parameters[i], values_.evaluate_string(given[i].second));
-      else values_.assign(u.parameters[i], given[i].first);
+  try {
+    for (std::size_t i = 0; i < u.parameters.size(); ++i) {
+      const char t = u.parameter_types[i];
+      values_.define(u.parameters[i], t == 'R' ? VarType::real : t == 'I' ? VarType::integer : t == 'B' ? VarType::boolean : VarType::string);
+      if (i < given.size() && !given[i].second.empty()) {
+        if (t == 'S') values_.assign_string(u.parameters[i], values_.evaluate_string(given[i].second));
+        else values_.assign(u.parameters[i], given[i].first);
+      }
     }
+  } catch (const ValueError& e) {
+    fail(l, 1, fmt::format("{}: {}", unit_name, e.what));
   }
   pc_ = u.first;
 }

@@ -82,6 +82,7 @@ class Translator {
   void jump(const ProgramLine& l, const std::string& how, const std::string& label);
   bool condition(const ProgramLine& l, const std::string& text);
   void for_loop(const ProgramLine& l);
+  void assign_or_fail(const ProgramLine& l, const std::string& name, double v);
   bool call_if_subprogram(const ProgramLine& l, const Item& item);
   void call(const ProgramLine& l, const std::string& unit_name, const std::vector<std::string>& args, long repeats);
   void return_from_unit();
