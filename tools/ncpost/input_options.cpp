@@ -24,8 +24,9 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
   sub.add_option("--units", o.units, "Units of a CL file or G-code program that does not say (mm or inch); a G-code program without G20/G21 that speaks inches, or an APT file without UNITS with FEDRAT/IPM (NX inch parts), is refused until this says")->check(CLI::IsMember({"mm", "inch"}));
   sub.add_option("--input-kind", o.input_kind,
                  "cl, machine (machine-axis G-code), rtcp (tool-tip G-code), klartext (Heidenhain conversational), "
-                 "auto (a file whose first block is BEGIN PGM is Klartext)")
-      ->check(CLI::IsMember({"auto", "cl", "machine", "rtcp", "klartext"}));
+                 "sinumerik (Siemens 840D sl: DEF, R parameters, program flow, frames, CYCLE800, TRAORI), "
+                 "auto (a file whose first block is BEGIN PGM is Klartext; DEF, CYCLE800, %_N_ ... mark Sinumerik)")
+      ->check(CLI::IsMember({"auto", "cl", "machine", "rtcp", "klartext", "sinumerik"}));
   sub.add_flag("--allow-unterminated", o.allow_unterminated,
                "Post a CL file that ends without FINI/END/END-OF-PATH (refused otherwise: a cut copy)");
   sub.add_option("--msys", o.msys,

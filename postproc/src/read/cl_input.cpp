@@ -11,6 +11,7 @@
 #include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
 #include "ncpost/postproc/read/klartext/klartext_block.hpp"
 #include "ncpost/postproc/read/klartext/klartext_reader.hpp"
+#include "ncpost/postproc/read/sinumerik/sinumerik_reader.hpp"
 
 namespace ncpost {
 
@@ -20,7 +21,8 @@ InputKind input_kind_named(const std::string& name) {
   if (name == "machine") return InputKind::machine;
   if (name == "rtcp") return InputKind::rtcp;
   if (name == "klartext") return InputKind::klartext;
-  throw std::invalid_argument("unknown input kind '" + name + "' (auto, cl, machine, rtcp, klartext)");
+  if (name == "sinumerik") return InputKind::sinumerik;
+  throw std::invalid_argument("unknown input kind '" + name + "' (auto, cl, machine, rtcp, klartext, sinumerik)");
 }
 
 std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& name, InputKind kind,
@@ -37,6 +39,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     throw std::invalid_argument("open_cl_reader: a word machine reads no RTCP programs");
   bool apt = kind == InputKind::cl;
   bool klartext = kind == InputKind::klartext;
+  bool sinumerik = kind == InputKind::sinumerik;
   const auto read_head = [&in] {
     const std::istream::pos_type start = in.tellg();
     std::string head(4096, '\0');
@@ -51,6 +54,10 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     throw InputError({name, 1, 0}, fmt::format("a Heidenhain Klartext program (BEGIN PGM), read as G-code as "
                                                "--input-kind {} asks: use --input-kind klartext (or auto)",
                                                kind == InputKind::machine ? "machine" : "rtcp"));
+  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable && sinumerik::looks_like_sinumerik(read_head()))
+    throw InputError({name, 1, 0}, fmt::format("a Sinumerik program (DEF, CYCLE800, %_N_ ...), read as plain G-code as "
+                                               "--input-kind {} asks: use --input-kind sinumerik (or auto)",
+                                               kind == InputKind::machine ? "machine" : "rtcp"));
   if (kind == InputKind::automatic) {
     const std::string head = read_head();
     std::string_view body(head);
@@ -59,6 +66,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
       throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
     klartext = klartext::looks_like_klartext(body);
     apt = !klartext && cl::looks_like_apt(head);
+    sinumerik = !klartext && !apt && sinumerik::looks_like_sinumerik(body);
   }
   if (apt) return std::make_unique<cl::AptReader>(in, name, options);
   if (klartext) {
@@ -70,6 +78,9 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     ko.allow_unterminated = options.allow_unterminated;
     return std::make_unique<klartext::KlartextReader>(in, name, machine, setup, ko);
   }
+  if (sinumerik && word_forward)
+    throw InputError({name, 0, 0}, fmt::format("a Sinumerik program on the machine {}, whose words {} are no Cartesian "
+                                               "frame: not supported (post the CL data)", machine.name, axis_letters(machine)));
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
   go.units_given = options.units_given;
@@ -80,6 +91,12 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine
           : kind == InputKind::rtcp    ? gcode::InputKind::rtcp
                                        : gcode::InputKind::automatic;
+  if (sinumerik) {
+    sinumerik::ReaderOptions so;
+    so.gcode = go;
+    so.gcode.kind = gcode::InputKind::automatic;  // the program's TRAORI/TRAFOOF and CYCLE800 say
+    return std::make_unique<sinumerik::SinumerikReader>(in, name, machine, setup, so);
+  }
   return std::make_unique<gcode::GcodeClReader>(in, name, machine, setup, go);
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The reader of a post's input: APT CL data, G-code (machine axes or tool tip under RTCP) or a
-// Heidenhain Klartext program read back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
+// Heidenhain Klartext or Sinumerik program read back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
 // the first 4 KiB of the stream, which is then put back where it was: the stream must be seekable.
 #include <istream>
 #include <memory>
@@ -22,9 +22,10 @@ enum class InputKind {
   machine,    ///< G-code with machine axis positions
   rtcp,       ///< G-code with the tool tip in W and rotary angles (RTCP)
   klartext,   ///< a Heidenhain conversational program (klartext_reader.hpp); detected by its BEGIN PGM
+  sinumerik,  ///< a Sinumerik 840D sl program (sinumerik_reader.hpp); detected by DEF, CYCLE800, %_N_ ...
 };
 
-/// "auto", "cl", "machine", "rtcp", "klartext" (the CLI words); std::invalid_argument otherwise.
+/// "auto", "cl", "machine", "rtcp", "klartext", "sinumerik" (the CLI words); std::invalid_argument otherwise.
 InputKind input_kind_named(const std::string& name);
 
 /// Opens the reader of `in` for its kind. InputError (naming `name`) when `automatic` finds an

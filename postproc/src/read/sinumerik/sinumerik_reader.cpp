@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: Apache-2.0
+// Sinumerik -> ISO blocks (the translator) -> CL records (the G-code reader), with every
+// position mapped back to the Sinumerik line (sinumerik_reader.hpp).
+#include "ncpost/postproc/read/sinumerik/sinumerik_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <exception>
+#include <streambuf>
+
+#include "ncpost/machines/input_error.hpp"
+#include "read/sinumerik/sinumerik_translator.hpp"
+
+namespace ncpost::sinumerik {
+namespace {
+
+/// The translator's ISO blocks as a character stream, one block a line; `source_line[i]` is the
+/// Sinumerik line of ISO line i + 1.
+class IsoStream final : public std::streambuf {
+ public:
+  explicit IsoStream(Translator& t) : translator_(t) {}
+  std::vector<int> source_line;
+  std::exception_ptr failure;  ///< the translator's own error (already on a Sinumerik line)
+
+ protected:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    buffer_.clear();
+    IsoBlock b;
+    try {
+      for (int i = 0; i < 64 && translator_.next(b); ++i) {
+        buffer_ += b.text;
+        buffer_ += '\n';
+        source_line.push_back(b.line);
+      }
+    } catch (...) {
+      failure = std::current_exception();
+      throw;
+    }
+    if (buffer_.empty()) return traits_type::eof();
+    setg(buffer_.data(), buffer_.data(), buffer_.data() + buffer_.size());
+    return traits_type::to_int_type(*gptr());
+  }
+
+ private:
+  Translator& translator_;
+  std::string buffer_;
+};
+
+TranslatorOptions translator_options(const ReaderOptions& o) {
+  TranslatorOptions t;
+  t.arc_chord_tolerance_mm = o.arc_chord_tolerance_mm;
+  t.max_call_depth = o.max_call_depth;
+  t.max_blocks = o.max_blocks;
+  t.block_skip = o.gcode.block_delete;
+  return t;
+}
+
+}  // namespace
+
+struct SinumerikReader::State {
+  std::string file;
+  Translator translator;
+  IsoStream buffer;
+  std::istream iso;
+  gcode::GcodeClReader gcode;
+
+  State(std::istream& in, std::string f, const Machine& m, const Setup& s, const ReaderOptions& o)
+      : file(f), translator(load_program(in, f), m, s, translator_options(o)), buffer(translator), iso(&buffer),
+        gcode((iso.exceptions(std::ios::badbit), iso), f, m, s, o.gcode) {}
+
+  /// The Sinumerik line of ISO line `n` (0 when not known).
+  int source_of(int n) const {
+    return n >= 1 && static_cast<std::size_t>(n) <= buffer.source_line.size() ? buffer.source_line[static_cast<std::size_t>(n - 1)] : 0;
+  }
+  std::string text_of(int line) const {
+    const auto& lines = translator.program().lines;
+    return line >= 1 && static_cast<std::size_t>(line) <= lines.size() ? lines[static_cast<std::size_t>(line - 1)].text : "";
+  }
+  /// "file:N[:C]: rest" with N an ISO line -> "file:M: rest" with M the Sinumerik line.
+  std::string remap(const std::string& message) const {
+    const std::string prefix = file + ":";
+    if (message.rfind(prefix, 0) != 0) return message;
+    std::size_t at = prefix.size(), end = at;
+    while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
+    if (end == at || end >= message.size() || message[end] != ':') return message;
+    std::size_t rest = end + 1;
+    std::size_t col = rest;
+    while (col < message.size() && std::isdigit(static_cast<unsigned char>(message[col]))) ++col;
+    if (col > rest && col < message.size() && message[col] == ':') rest = col + 1;
+    const int iso_line = std::stoi(message.substr(at, end - at));
+    return fmt::format("{}{}:{}", prefix, source_of(iso_line), message.substr(rest));
+  }
+};
+
+SinumerikReader::SinumerikReader(std::istream& in, std::string file_name, const Machine& machine, const Setup& setup,
+                                 ReaderOptions options)
+    : state_(std::make_unique<State>(in, std::move(file_name), machine, setup, options)) {}
+
+SinumerikReader::~SinumerikReader() = default;
+
+std::optional<cl::Record> SinumerikReader::next() {
+  State& s = *state_;
+  try {
+    std::optional<cl::Record> r = s.gcode.next();
+    if (r) std::visit([&](auto& x) { x.where = cl::Location{s.source_of(x.where.line), 0}; }, *r);
+    return r;
+  } catch (const InputError& e) {
+    if (s.buffer.failure) std::rethrow_exception(s.buffer.failure);
+    const int line = s.source_of(e.where().line);
+    throw InputError({s.file, line, 0}, e.detail(), s.text_of(line));
+  } catch (const Infeasible& e) {
+    throw Infeasible(s.remap(e.what()));
+  }
+}
+
+std::vector<std::string> SinumerikReader::take_notices() {
+  std::vector<std::string> out = state_->translator.take_notices();
+  for (std::string& n : state_->gcode.take_notices()) out.push_back(state_->remap(n));
+  return out;
+}
+
+}  // namespace ncpost::sinumerik

@@ -1,0 +1,112 @@
+#pragma once
+// SPDX-License-Identifier: Apache-2.0
+// A small Sinumerik interpreter for the tests, independent of the product: only what the
+// re-posting tests need. It gives, for each motion block of a program, where the tool tip and
+// the tool axis are in W at the block's end, by the rules of the SINUMERIK 840D sl programming
+// manual, with the tests' own forward kinematics (nc_executor.hpp):
+//   - numbers only (no variables); N numbers, ';' comments, G0 G1 G2 G3 (end points only), G90;
+//   - without TRAORI/CYCLE800: X Y Z and the rotary words are machine axes;
+//   - TRAORI: X Y Z are the tool tip in W, the orientation the rotary words or A3= B3= C3=
+//     (the unit vector in W itself);
+//   - CYCLE800(_FR,_TC,_ST,57,X0,Y0,Z0,A,B,C,X1,Y1,Z1,_DIR): the plane frame
+//     Trans(X0) Rx(A) Ry(B) Rz(C) Trans(X1); X Y Z after it are the tip in that frame, the tool
+//     axis its Z; CYCLE800() ends it;
+//   - TRANS X Y Z: a shift of the programmable frame.
+// Other words are skipped (S F T M D ...). Lengths mm, angles deg.
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "nc_executor.hpp"
+
+namespace ncpost::test {
+
+struct SinumerikEnd {
+  int line = 0;
+  V3 tip_W = V3::Zero();
+  V3 axis_W = V3::UnitZ();
+};
+
+inline M3 sin_rot(int axis, double deg) {
+  return Eigen::AngleAxisd(deg * M_PI / 180.0, V3::Unit(axis)).toRotationMatrix();
+}
+
+/// The value after `key` in `line` (e.g. "X", "A3="); nullopt when absent.
+inline std::optional<double> sin_word(const std::string& line, const std::string& key) {
+  for (std::size_t at = line.find(key); at != std::string::npos; at = line.find(key, at + 1)) {
+    if (at > 0 && (std::isalnum(static_cast<unsigned char>(line[at - 1])) || line[at - 1] == '_')) continue;
+    const std::size_t v = at + key.size();
+    if (v >= line.size() || !(std::isdigit(static_cast<unsigned char>(line[v])) || line[v] == '-' || line[v] == '.' || line[v] == '+'))
+      continue;
+    if (key.size() == 1 && v + 1 < line.size() && line[v] != '-' && line[v] != '.' && std::isdigit(static_cast<unsigned char>(line[v])) &&
+        line.find('=', v) != std::string::npos && line.find('=', v) < line.find(' ', v))
+      continue;  // A3=... is not A
+    return std::strtod(line.c_str() + v, nullptr);
+  }
+  return std::nullopt;
+}
+
+inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, const ExecMachine& m, const ExecJob& job) {
+  std::vector<SinumerikEnd> out;
+  std::map<char, double> words{{'X', 0}, {'Y', 0}, {'Z', 0}};
+  for (char c : m.rotary_letters) words[c] = 0.0;
+  bool traori = false, swivel = false;
+  Rt plane;         // CYCLE800's frame
+  V3 shift = V3::Zero();
+  std::optional<V3> vector;
+  std::istringstream in(text);
+  int line_no = 0;
+  for (std::string raw; std::getline(in, raw);) {
+    ++line_no;
+    std::string line = raw.substr(0, raw.find(';'));
+    for (char& c : line) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (line.find("TRAORI") != std::string::npos) traori = true;
+    if (line.find("TRAFOOF") != std::string::npos) traori = false;
+    if (line.find("TRANS ") != std::string::npos) {
+      shift = V3(sin_word(line, "X").value_or(0), sin_word(line, "Y").value_or(0), sin_word(line, "Z").value_or(0));
+      continue;
+    }
+    if (const std::size_t c8 = line.find("CYCLE800("); c8 != std::string::npos) {
+      std::vector<double> a;
+      std::stringstream args(line.substr(c8 + 9, line.find(')') - c8 - 9));
+      for (std::string s; std::getline(args, s, ',');) a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::strtod(s.c_str(), nullptr));
+      swivel = a.size() >= 14;
+      if (swivel) {
+        plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} * Rt{sin_rot(0, a[7]) * sin_rot(1, a[8]) * sin_rot(2, a[9]), V3::Zero()} *
+                Rt{M3::Identity(), V3(a[10], a[11], a[12])};
+      }
+      continue;
+    }
+    bool moved = false;
+    for (char c : std::string("XYZ") + m.rotary_letters)
+      if (auto v = sin_word(line, std::string(1, c))) words[c] = *v, moved = true;
+    std::optional<V3> vec;
+    if (line.find("A3=") != std::string::npos || line.find("B3=") != std::string::npos || line.find("C3=") != std::string::npos)
+      vec = V3(sin_word(line, "A3=").value_or(0), sin_word(line, "B3=").value_or(0), sin_word(line, "C3=").value_or(0)).normalized();
+    if (vec) vector = vec, moved = true;
+    if (!moved) continue;
+    SinumerikEnd e;
+    e.line = line_no;
+    const V3 p(words['X'], words['Y'], words['Z']);
+    std::map<char, double> rot;
+    for (char c : m.rotary_letters) rot[c] = words[c];
+    if (swivel) {
+      e.tip_W = plane * (p + shift);
+      e.axis_W = plane.R * V3::UnitZ();
+    } else if (traori) {
+      e.tip_W = p + shift;
+      e.axis_W = vector ? *vector : forward(m, job, V3::Zero(), rot).axis_W;
+    } else {
+      const ExecPose pose = forward(m, job, p + shift, rot);
+      e.tip_W = pose.tip_W;
+      e.axis_W = pose.axis_W;
+    }
+    out.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace ncpost::test
