@@ -149,3 +149,39 @@ TEST_CASE("klartext PLANE: the angles of the plane in Q120 .. Q122, refusals by 
     CHECK((turned[2].point.tip_mm - Vec3d(10 * std::cos(M_PI / 6), 10 * std::sin(M_PI / 6), 5)).norm() < 1e-9);
   }
 }
+
+TEST_CASE("klartext in a tilted plane: CYCL DEF 200 drills along the plane's Z; a datum shift there holds every motion") {
+  // PLANE SPATIAL SPA+0 SPB+0 SPC+90: the plane's X is W's Y; the hole at X+10 Y+0 of the plane is at
+  // W (0, 10), its top at the plane's Z+1 = W Z+1 (Q203); Q206=Q7 takes the feed from Q7
+  const auto ms = motions(
+      "1 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX\n"
+      "2 Q7 = 150\n"
+      "3 PLANE SPATIAL SPA+0 SPB+0 SPC+90 STAY\n"
+      "4 L A+Q120 C+Q122 FMAX\n"
+      "5 L X+10 Y+0 Z+20 FMAX\n"
+      "6 CYCL DEF 200 DRILLING ~\n"
+      "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+      "  Q201=-15 ;DEPTH ~\n"
+      "  Q206=Q7 ;FEED RATE FOR PLNGNG ~\n"
+      "  Q202=+5 ;PLUNGING DEPTH ~\n"
+      "  Q210=+0 ;DWELL TIME AT TOP ~\n"
+      "  Q203=+1 ;SURFACE COORDINATE ~\n"
+      "  Q204=+20 ;2ND SET-UP CLEARANCE ~\n"
+      "  Q211=+0 ;DWELL TIME AT DEPTH ~\n"
+      "  Q395=+0 ;DEPTH REFERENCE\n"
+      "7 CYCL CALL\n");
+  REQUIRE(ms.size() == 4);
+  CHECK((ms[3].point.tip_mm - Vec3d(0, 10, 1)).norm() < 1e-9);
+  CHECK((ms[3].point.axis - Vec3d(0, 0, 1)).norm() < 1e-12);
+  // CYCL DEF 7 inside the plane (as CAM systems reset the datum before PLANE RESET): nothing may move
+  // until PLANE RESET; then the shift applies to the machine's X Y Z words again
+  const std::string shifted =
+      "1 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX\n"
+      "2 PLANE SPATIAL SPA+0 SPB+0 SPC+0 STAY\n"
+      "3 CYCL DEF 7.0 DATUM SHIFT\n"
+      "4 CYCL DEF 7.1 X+5\n";
+  CHECK_THAT(error_of(shifted + "5 L X+1 FMAX\n"), Catch::Contains("a motion after CYCL DEF 7 changed the datum shift inside"));
+  const auto after = motions(shifted + "5 PLANE RESET STAY\n6 L X+1 Y+0 Z+50 FMAX\n");
+  REQUIRE(after.size() == 2);
+  CHECK((after[1].point.tip_mm - Vec3d(6, 0, 50)).norm() < 1e-9);
+}

@@ -111,6 +111,7 @@ struct KlartextReader::State {
   std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
   std::optional<DrillingCycle> drilling;                   ///< CYCL DEF 200, for CYCL CALL and M99
   std::optional<double> preset_number;                     ///< CYCL DEF 247 Q339
+  int shift_in_plane = 0;  ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
 
   // the current line, for messages
   int line_number = 0;
@@ -218,6 +219,7 @@ struct KlartextReader::State {
 
   // ---- the start: rapids before X Y Z are known are held ----------------------------------
   void emit_motion(const ProgramPoint& p, cl::Location where, bool rapid, std::optional<double> block_feed) {
+    check_no_stale_shift(where.column);
     if (!settled) {
       const bool all_linear = known[0] && known[1] && known[2];
       if (!all_linear) {
@@ -577,7 +579,6 @@ struct KlartextReader::State {
       return;
     }
     if (c.number != 7 || c.part < 0) fail(b.column, refused_statement(b));
-    if (plane) fail(b.column, "CYCL DEF 7 (datum shift) in a tilted plane (PLANE ...) is not read; shift the datum before the PLANE");
     if (c.part == 0) return;  // CYCL DEF 7.0 DATUM SHIFT: the header
     if (c.rest.find('#') != std::string::npos)
       fail(b.column, "CYCL DEF 7: a datum shift from the datum table (#n) is not read; program the shift's values");
@@ -588,7 +589,10 @@ struct KlartextReader::State {
     if (slot < 0 || slot > 2)
       fail(w.column, fmt::format("CYCL DEF 7: a shift of {} is not read (X, Y and Z are)", w.name));
     if (w.q_parameter || !w.value) fail(w.column, fmt::format("CYCL DEF 7: {} without a number", w.name));
-    datum_shift_mm[slot] = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    const double shift = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    // in a plane: the shift's axes there are not read, so nothing may move before PLANE RESET or a new PLANE
+    if (plane && shift != datum_shift_mm[slot]) shift_in_plane = b.column;
+    datum_shift_mm[slot] = shift;
     notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
   }
 
@@ -614,12 +618,15 @@ struct KlartextReader::State {
     for (const auto& [text, line] : continuation) {
       const std::optional<QAssignment> a = q_assignment(text);
       if (!a) continue;  // (a comment line)
-      if (!a->value)
+      std::optional<double> value = a->value;
+      QError error;
+      if (!value) value = this->q.evaluate(a->text, error);  // Q206=Q3: the parameter's value
+      if (!value)
         throw InputError({file, line, 0},
-                         fmt::format("Q{}={}: a cycle parameter that is not a number is not read; program the value",
-                                     a->number, a->text),
+                         fmt::format("Q{}={}: a cycle parameter that is not a number or a Q formula ({}) is not read; "
+                                     "program the value", a->number, a->text, error.what),
                          echo_of(text));
-      q[a->number] = *a->value;
+      q[a->number] = *value;
     }
     auto d = drilling_200(q, at(b.column));
     if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
@@ -630,16 +637,17 @@ struct KlartextReader::State {
   void call_cycle(cl::Location where, int column) {
     if (!drilling) fail(column, "a cycle call without CYCL DEF 200 before it (other cycles are not read)");
     if (rtcp) fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
-    if (plane) fail(column, "a cycle call in a tilted plane (PLANE ...) is not read");
     if (!settled || !known[0] || !known[1] || !known[2])
       fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
-    ProgramPoint top = pos;
-    top[2] = drilling->surface_mm + datum_shift_mm.z();
-    cl::Motion hole = locate(top, false, where);
+    check_no_stale_shift(column);
+    ProgramPoint top = pos;  // (in a plane: its coordinates, the datum shift in its origin)
+    top[2] = drilling->surface_mm + (plane ? 0.0 : datum_shift_mm.z());
+    cl::Motion hole = locate(top, tip_mode(), where);
     ProgramPoint below = top;
     below[2] -= 1.0;
-    if ((hole.point.tip_mm - tip_of(below, false) - hole.point.axis).norm() > 1e-6)
-      fail(column, "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
+    if ((hole.point.tip_mm - tip_of(below, tip_mode()) - hole.point.axis).norm() > 1e-6)
+      fail(column, plane ? "a cycle call in a tilted plane with the rotary axes not at the plane's angles is not read"
+                         : "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
     cl::Cycle c = drilling->cycle;
     c.where = where;
     emit(c);
@@ -714,6 +722,7 @@ struct KlartextReader::State {
       if (const std::string* why = std::get_if<std::string>(&angles)) fail(b.column, fmt::format("{}: {}", b.statement, *why));
       target = std::get<RotaryAngles>(angles);
     }
+    shift_in_plane = 0;
     switch_mode([&] {
       if (r.reset) {
         plane.reset();
@@ -760,6 +769,13 @@ struct KlartextReader::State {
     const Vec3d xyz = program_xyz(forward(machine, q, setup).tip_mm, q.rotary_rad);
     for (std::size_t i = 0; i < 3; ++i) to[i] = xyz[static_cast<int>(i)];
     return to;
+  }
+
+  /// After CYCL DEF 7 changed the shift in a plane nothing may move until PLANE RESET or a new PLANE.
+  void check_no_stale_shift(int column) const {
+    if (shift_in_plane)
+      fail(column, "a motion after CYCL DEF 7 changed the datum shift inside a tilted plane (PLANE ...): the shift's "
+                   "axes in the tilted system are not read; PLANE RESET first, or shift the datum before the PLANE");
   }
 
   /// In a tilted plane a motion needs the tool axis of the plane (the rotary axes at Q120 .. Q122).
