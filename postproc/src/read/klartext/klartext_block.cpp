@@ -7,6 +7,8 @@
 #include <cctype>
 #include <charconv>
 
+#include "read/klartext/klartext_q.hpp"
+
 namespace ncpost::klartext {
 namespace {
 
@@ -111,9 +113,9 @@ void read_statement(Cursor& c, Block& b) {
     b.statement = "M";
     return;
   }
-  if (first == "Q" && is_digit(c.peek(1))) {
+  std::size_t q_length = 0;
+  if (q_name_at(c.rest(), q_length)) {  // Q1 = ..., QL2 = ...: the text is the assignment
     b.statement = "Q";
-    c.advance(c.rest().size());
     return;
   }
   if (first.empty()) return;  // the word loop reports what it finds
@@ -136,7 +138,8 @@ void read_statement(Cursor& c, Block& b) {
 
 /// Statements whose words the tokenizer reads; the others keep their text for the message.
 bool has_words(std::string_view statement) {
-  for (std::string_view s : {"L", "C", "CC", "CR", "CT", "CP", "TOOL CALL", "TOOL DEF", "BLK FORM", "M", "STOP", "FUNCTION TCPM", "FUNCTION RESET", "RND", "CHF", "LP"})
+  for (std::string_view s : {"L", "C", "CC", "CR", "CT", "CP", "TOOL CALL", "TOOL DEF", "BLK FORM", "M", "STOP", "FUNCTION TCPM", "FUNCTION RESET", "RND", "CHF", "LP",
+                             "PLANE SPATIAL", "PLANE EULER", "PLANE VECTOR", "PLANE AXIAL", "PLANE RESET"})
     if (s == statement) return true;
   return false;
 }
@@ -175,11 +178,11 @@ void read_word(Cursor& c, Block& b) {
     w.sign = c.peek();
     c.advance(1);
   }
-  if (upper(c.peek()) == 'Q' && is_digit(c.peek(1))) {
-    c.advance(1);
-    const auto n = c.number();
+  std::size_t q_length = 0;
+  if (const auto q = q_name_at(c.rest(), q_length)) {
+    c.advance(q_length);
     w.q_parameter = true;
-    w.text = fmt::format("Q{}", n ? static_cast<long>(*n) : 0L);
+    w.text = *q;
   } else if (auto v = c.number()) {
     w.value = w.sign == '-' ? -*v : *v;
   }
@@ -233,7 +236,7 @@ Block parse_block(std::string_view line, const std::string& file, int line_numbe
   }
   if (c.done()) return b;
   read_statement(c, b);
-  if (b.statement == "*" || b.statement == "Q") return b;
+  if (b.statement == "*") return b;
   b.text = trimmed(c.rest());
   if (!has_words(b.statement)) return b;  // refused by name by the reader; its words are not read
   for (c.skip_blanks(); !c.done(); c.skip_blanks()) read_word(c, b);

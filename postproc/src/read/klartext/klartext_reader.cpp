@@ -22,6 +22,9 @@
 
 #include "read/klartext/klartext_cycle_def.hpp"
 #include "read/klartext/klartext_drilling.hpp"
+#include "read/klartext/klartext_flow.hpp"
+#include "read/klartext/klartext_plane.hpp"
+#include "read/klartext/klartext_q.hpp"
 #include "read/klartext/klartext_refusals.hpp"
 
 namespace ncpost::klartext {
@@ -61,6 +64,8 @@ struct BlockWords {
 
 struct KlartextReader::State {
   LineSource source;
+  ProgramFlow flow;   ///< labels, calls and jumps: which line runs next
+  QParameters q;      ///< Q, QL, QR
   std::string file;
   Machine machine;
   Setup setup;
@@ -73,6 +78,8 @@ struct KlartextReader::State {
   std::array<int, 6> first_line{};  ///< the line that first programmed each axis
   std::array<bool, 6> first_by_rapid{};
   bool rtcp = false;
+  std::optional<PlaneFrame> plane;            ///< PLANE ...: X Y Z are the tool tip in the plane
+  std::optional<RotaryAngles> plane_rad;      ///< the rotary angles the plane asks (Q120 .. Q122)
   bool shortest_rotary = false;  ///< M126
   std::optional<double> feed;
   std::optional<double> auto_feed;  ///< TOOL CALL F, for FAUTO
@@ -103,13 +110,17 @@ struct KlartextReader::State {
 
   std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
   std::optional<DrillingCycle> drilling;                   ///< CYCL DEF 200, for CYCL CALL and M99
+  std::optional<double> preset_number;                     ///< CYCL DEF 247 Q339
+  int shift_in_plane = 0;  ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
 
   // the current line, for messages
   int line_number = 0;
   std::string line_text;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, ReaderOptions o)
-      : source(in, f, kWhatALineIs), file(std::move(f)), machine(m), setup(s), options(o) {
+      : source(in, f, kWhatALineIs),
+        flow(source, [](std::string_view l) { return label_defined_in(l); }),
+        file(std::move(f)), machine(m), setup(s), options(o) {
     for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
       rotary_slot[static_cast<std::size_t>(k)] = static_cast<int>(kSlots.find(machine.rotary(k).letter));
   }
@@ -140,6 +151,7 @@ struct KlartextReader::State {
   AxisPosition commands_of(const ProgramPoint& p) const {
     AxisPosition q = AxisPosition::zero(machine.rotary_count());
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
+    if (plane) q.linear_mm = plane->origin_W + plane->W_R_plane * q.linear_mm;
     for (int k = 0; k < machine.rotary_count(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])];
     return q;
   }
@@ -182,8 +194,32 @@ struct KlartextReader::State {
     }
   }
 
+  // ---- the program's X Y Z: machine axes, the tool tip (M128), or the tip in a tilted plane -----
+  bool tip_mode() const { return rtcp || plane.has_value(); }
+  bool position_known() const { return settled && known[0] && known[1] && known[2]; }
+
+  /// X Y Z of the program for the tool tip at `tip_W` with the rotary axes at `rotary_rad`, in
+  /// the current mode.
+  Vec3d program_xyz(const Vec3d& tip_W, const RotaryAngles& rotary_rad) const {
+    if (plane) return plane->W_R_plane.transpose() * (tip_W - plane->origin_W);
+    if (rtcp) return tip_W;
+    return linear_for(machine, rotary_rad, tip_W, setup);
+  }
+
+  /// A change of mode (M128, M129, PLANE): the machine stays where it is, so the program's X Y Z
+  /// of the current position are recomputed in the new mode.
+  template <class Change> void switch_mode(Change change) {
+    const bool here = position_known();
+    const Vec3d tip_W = here ? tip_of(pos, tip_mode()) : Vec3d::Zero();
+    change();
+    if (!here) return;
+    const Vec3d xyz = program_xyz(tip_W, commands_of(pos).rotary_rad);
+    for (std::size_t i = 0; i < 3; ++i) pos[i] = xyz[static_cast<int>(i)];
+  }
+
   // ---- the start: rapids before X Y Z are known are held ----------------------------------
   void emit_motion(const ProgramPoint& p, cl::Location where, bool rapid, std::optional<double> block_feed) {
+    check_no_stale_shift(where.column);
     if (!settled) {
       const bool all_linear = known[0] && known[1] && known[2];
       if (!all_linear) {
@@ -194,14 +230,14 @@ struct KlartextReader::State {
         cl::Motion m;
         m.where = where;
         m.rapid = true;
-        held_motions.push_back(Held{held.size(), p, assumed_now(), rtcp});
+        held_motions.push_back(Held{held.size(), p, assumed_now(), tip_mode()});
         held.push_back(std::move(m));
         return;
       }
       release(where, rapid);
     }
     note_rotary_zero(where);
-    cl::Motion m = locate(p, rtcp, where);
+    cl::Motion m = locate(p, tip_mode(), where);
     m.rapid = rapid;
     m.feed = block_feed;
     out.push_back(std::move(m));
@@ -276,16 +312,16 @@ struct KlartextReader::State {
   /// Reads and acts on the next block; false at the end of the program.
   bool read_block() {
     std::string_view line;
-    if (!source.next(line)) return finish_input();
-    line_number = source.line_number();
+    if (!flow.next(line, line_number)) return finish_input();
     line_text = echo_of(line);
     Block b = parse_block(line, file, line_number);
     continuation.clear();
     while (b.continued) {  // the continuation lines of a cycle (its Q parameters)
       std::string_view more;
-      if (!source.next(more)) break;
-      continuation.emplace_back(std::string(more), source.line_number());
-      b.continued = parse_block(more, file, source.line_number()).continued;
+      int more_line = 0;
+      if (!flow.next(more, more_line)) break;
+      continuation.emplace_back(std::string(more), more_line);
+      b.continued = parse_block(more, file, more_line).continued;
     }
     if (b.empty()) return true;
     if (b.deleted && options.block_skip) {
@@ -302,6 +338,8 @@ struct KlartextReader::State {
     if (!b.comment.empty()) emit(cl::Comment{at(b.comment_column), b.comment});
     const std::string& s = b.statement;
     if (s.empty() || s == "*") return true;
+    if (program_flow(b)) return true;
+    resolve_q_words(b);
     if (s == "BEGIN PGM") fail(b.column, "a second BEGIN PGM (the previous program has no END PGM)");
     if (s == "END PGM") return end_program(at(b.column));
     if (s == "BLK FORM") {
@@ -322,7 +360,7 @@ struct KlartextReader::State {
     }
     if (s == "FUNCTION RESET") {
       if (b.words.size() != 1 || b.words[0].name != "TCPM") fail(b.column, refused_statement(b));
-      rtcp = false;
+      switch_mode([&] { rtcp = false; });
       return true;
     }
     if (s == "CYCL DEF") {
@@ -334,9 +372,8 @@ struct KlartextReader::State {
       call_cycle(at(b.column), b.column);
       return true;
     }
-    if (s == "PLANE RESET") {
-      if (b.text != "STAY") fail(b.column, refused_statement(b));
-      notice_once("PLANE RESET", b.column, "PLANE RESET STAY: no tilted plane is active (none is read), nothing moves");
+    if (s.rfind("PLANE ", 0) == 0) {
+      tilt(b);
       return true;
     }
     if (s == "CC") {
@@ -345,6 +382,80 @@ struct KlartextReader::State {
     }
     if (s == "L" || s == "M" || s == "STOP" || s == "C" || s == "CR" || s == "CT" || s == "CP") return motion_block(b);
     fail(b.column, refused_statement(b));
+  }
+
+  // ---- Q parameters and program flow (klartext_q.hpp, klartext_flow.hpp) ------------------
+  /// Q = formula, FN, LBL, CALL LBL: acted on here; false for every other statement.
+  bool program_flow(const Block& b) {
+    const std::string& s = b.statement;
+    QError error;
+    if (s == "Q" || s == "FN") {
+      const auto st = s == "Q" ? q_assignment_of(b.text, error) : fn_statement_of(b.text, error);
+      if (!st) fail(b.column, fmt::format("{} {}: {}", s == "Q" ? "" : "FN", b.text, error.what));
+      if (!st->target.empty()) {
+        q.set(st->target, formula_value(b, st->formula));
+      } else if (compare_holds(st->compare, formula_value(b, st->formula), formula_value(b, st->right))) {
+        flow.jump(st->label, line_number);
+      }
+      return true;
+    }
+    if (s == "LBL") {
+      const auto key = label_of(b.text);
+      if (!key) fail(b.column, fmt::format("LBL {}: expected a label number or \"name\"", b.text));
+      flow.label(*key, line_number);
+      return true;
+    }
+    if (s == "CALL LBL") {
+      call_label(b);
+      return true;
+    }
+    return false;
+  }
+
+  double formula_value(const Block& b, const std::string& formula) {
+    QError error;
+    const auto v = q.evaluate(formula, error);
+    if (!v) fail(b.column, fmt::format("{}{}: {}", b.statement == "Q" ? "" : b.statement + " ", b.text, error.what));
+    return *v;
+  }
+
+  /// CALL LBL n|"name" [REP m] (the TNC shows a running repeat as REP m/k: the k is left aside)
+  void call_label(const Block& b) {
+    const std::string& t = b.text;
+    const auto key = label_of(t);
+    if (!key) fail(b.column, fmt::format("CALL LBL {}: expected a label number or \"name\"", t));
+    std::size_t p = t[0] == '"' ? t.find('"', 1) + 1 : t.find_first_not_of("0123456789");
+    p = std::min(t.find_first_not_of(' ', std::min(p, t.size())), t.size());
+    int repeats = 0;
+    if (p < t.size()) {
+      const bool rep = t.size() > p + 3 && (t.compare(p, 3, "REP") == 0 || t.compare(p, 3, "rep") == 0);
+      const std::size_t digits = rep ? std::min(t.find_first_not_of(' ', p + 3), t.size()) : t.size();
+      const std::size_t end = std::min(t.find_first_not_of("0123456789", digits), t.size());
+      if (!rep || end == digits || end - digits > 5 || (end < t.size() && t[end] != '/' && t[end] != ' '))
+        fail(b.column, fmt::format("CALL LBL {}: expected CALL LBL n [REP m]", t));
+      repeats = std::stoi(t.substr(digits, end - digits));
+    }
+    flow.call(*key, repeats, line_number);
+  }
+
+  /// `X+Q1`, `FQ5`: the words take the parameters' values.
+  void resolve_q_words(Block& b) {
+    for (Word& w : b.words) {
+      if (w.name == "FQ" && w.value && !w.q_parameter) {  // FQ5: the feed in Q5
+        w.name = "F";
+        w.q_parameter = true;
+        w.text = fmt::format("Q{}", static_cast<long>(*w.value));
+        w.sign = 0;
+      }
+      if (!w.q_parameter) continue;
+      const auto v = q.get(w.text);
+      if (!v)
+        fail(w.column, fmt::format("{}{}{}: {} is not set in this program (the TNC would use the value it holds from "
+                                   "before); set it before it is read", w.name, w.sign ? std::string(1, w.sign) : "",
+                                   w.text, w.text));
+      w.value = w.sign == '-' ? -*v : *v;
+      w.q_parameter = false;
+    }
   }
 
   void begin_program(const Block& b) {
@@ -455,6 +566,18 @@ struct KlartextReader::State {
       define_drilling(b);
       return;
     }
+    if ((c.number == 332 || c.number == 392) && c.part < 0) {  // DMG's TUNING / ATC: servo dynamics, no motion
+      notice_once("CYCL DEF 332", b.column, fmt::format("CYCL DEF {} (the machine's dynamics tuning) is noted, not "
+                                                        "posted: it moves nothing", c.number));
+      return;
+    }
+    if (c.number == 19)
+      fail(b.column, "CYCL DEF 19 (working plane): its angles are axis or spatial angles as the machine builder set "
+                     "(a machine parameter), so they are not read; program PLANE SPATIAL or PLANE AXIAL");
+    if (c.number == 247 && c.part < 0) {
+      preset(b);
+      return;
+    }
     if (c.number != 7 || c.part < 0) fail(b.column, refused_statement(b));
     if (c.part == 0) return;  // CYCL DEF 7.0 DATUM SHIFT: the header
     if (c.rest.find('#') != std::string::npos)
@@ -466,8 +589,27 @@ struct KlartextReader::State {
     if (slot < 0 || slot > 2)
       fail(w.column, fmt::format("CYCL DEF 7: a shift of {} is not read (X, Y and Z are)", w.name));
     if (w.q_parameter || !w.value) fail(w.column, fmt::format("CYCL DEF 7: {} without a number", w.name));
-    datum_shift_mm[slot] = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    const double shift = incremental ? datum_shift_mm[slot] + *w.value : *w.value;
+    // in a plane: the shift's axes there are not read, so nothing may move before PLANE RESET or a new PLANE
+    if (plane && shift != datum_shift_mm[slot]) shift_in_plane = b.column;
+    datum_shift_mm[slot] = shift;
     notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
+  }
+
+  /// CYCL DEF 247 Q339=n: the program's preset. The job's workpiece origin (--workpiece-origin) is
+  /// taken as that preset; a program that changes to another preset is refused.
+  void preset(const Block& b) {
+    std::optional<double> number;
+    for (const auto& [text, line] : continuation)
+      if (const auto a = q_assignment(text); a && a->number == 339) number = a->value;
+    if (!number) fail(b.column, "CYCL DEF 247 without Q339=n (the preset number)");
+    if (preset_number && *preset_number != *number)
+      fail(b.column, fmt::format("CYCL DEF 247 Q339={:g}: a second preset (after Q339={:g}) moves the workpiece "
+                                 "origin by the preset table, which the post does not have; post each preset's part "
+                                 "on its own", *number, *preset_number));
+    preset_number = number;
+    notice_once("CYCL DEF 247", b.column, fmt::format("CYCL DEF 247 Q339={:g}: the preset is taken as the job's "
+                                                      "workpiece origin (--workpiece-origin)", *number));
   }
 
   /// CYCL DEF 200 with its Q parameters on the '~' lines.
@@ -476,12 +618,15 @@ struct KlartextReader::State {
     for (const auto& [text, line] : continuation) {
       const std::optional<QAssignment> a = q_assignment(text);
       if (!a) continue;  // (a comment line)
-      if (!a->value)
+      std::optional<double> value = a->value;
+      QError error;
+      if (!value) value = this->q.evaluate(a->text, error);  // Q206=Q3: the parameter's value
+      if (!value)
         throw InputError({file, line, 0},
-                         fmt::format("Q{}={}: a cycle parameter that is not a number is not read; program the value",
-                                     a->number, a->text),
+                         fmt::format("Q{}={}: a cycle parameter that is not a number or a Q formula ({}) is not read; "
+                                     "program the value", a->number, a->text, error.what),
                          echo_of(text));
-      q[a->number] = *a->value;
+      q[a->number] = *value;
     }
     auto d = drilling_200(q, at(b.column));
     if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
@@ -494,13 +639,15 @@ struct KlartextReader::State {
     if (rtcp) fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
     if (!settled || !known[0] || !known[1] || !known[2])
       fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
-    ProgramPoint top = pos;
-    top[2] = drilling->surface_mm + datum_shift_mm.z();
-    cl::Motion hole = locate(top, false, where);
+    check_no_stale_shift(column);
+    ProgramPoint top = pos;  // (in a plane: its coordinates, the datum shift in its origin)
+    top[2] = drilling->surface_mm + (plane ? 0.0 : datum_shift_mm.z());
+    cl::Motion hole = locate(top, tip_mode(), where);
     ProgramPoint below = top;
     below[2] -= 1.0;
-    if ((hole.point.tip_mm - tip_of(below, false) - hole.point.axis).norm() > 1e-6)
-      fail(column, "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
+    if ((hole.point.tip_mm - tip_of(below, tip_mode()) - hole.point.axis).norm() > 1e-6)
+      fail(column, plane ? "a cycle call in a tilted plane with the rotary axes not at the plane's angles is not read"
+                         : "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
     cl::Cycle c = drilling->cycle;
     c.where = where;
     emit(c);
@@ -528,7 +675,8 @@ struct KlartextReader::State {
         if (!tip_tip) refuse("a reference point other than the tool tip: not read");
       }
     }
-    rtcp = true;
+    if (plane) fail(b.column, "FUNCTION TCPM in a tilted plane (PLANE ...) is not read; PLANE RESET first");
+    switch_mode([&] { rtcp = true; });
   }
 
   // CC X Y (or IX IY from the last position; a missing coordinate: the last position's)
@@ -542,9 +690,101 @@ struct KlartextReader::State {
         fail(w.column, fmt::format("'{}' in CC: expected X and Y (the working plane of the tool axis Z)", w.name));
       if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
-      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value + datum_shift_mm[slot];
+      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value + (plane ? 0.0 : datum_shift_mm[slot]);
     }
     centre = c;
+  }
+
+  // ---- PLANE (klartext_plane.hpp) ------------------------------------------------------------
+  /// PLANE ...: the plane's frame, its angles in Q120 .. Q122, and the swivel (TURN) or none (STAY).
+  void tilt(const Block& b) {
+    auto parsed = plane_request(b, machine);
+    if (const std::string* why = std::get_if<std::string>(&parsed)) fail(b.column, *why);
+    const PlaneRequest& r = std::get<PlaneRequest>(parsed);
+    if (rtcp) fail(b.column, fmt::format("{} under M128 / FUNCTION TCPM is not read; M129 first", b.statement));
+    if (!held_motions.empty())
+      fail(b.column, fmt::format("{} while earlier rapids wait for X, Y and Z: program X, Y and Z on a rapid before "
+                                 "the PLANE", b.statement));
+    if (r.retract)
+      fail(b.column, fmt::format("{} ... MB (a retract along the tool axis before the swivel) is not read; program "
+                                 "the retract with L or M140 before the PLANE", b.statement));
+    if (r.motion == PlaneRequest::Motion::move)
+      fail(b.column, fmt::format("{} MOVE is not read (the tool tip follows the swivel); program STAY and position the "
+                                 "rotary axes with L A+Q120 B+Q121 C+Q122", b.statement));
+    if (r.reset && !plane && r.motion == PlaneRequest::Motion::stay) {
+      notice_once("PLANE RESET", b.column, "PLANE RESET STAY: no tilted plane is active, nothing moves");
+      return;
+    }
+    const RotaryAngles now = commands_of(pos).rotary_rad;
+    RotaryAngles target = r.reset ? RotaryAngles(RotaryAngles::Zero(now.size())) : now;
+    if (!r.reset) {
+      auto angles = plane_rotary(machine, r, now);
+      if (const std::string* why = std::get_if<std::string>(&angles)) fail(b.column, fmt::format("{}: {}", b.statement, *why));
+      target = std::get<RotaryAngles>(angles);
+    }
+    shift_in_plane = 0;
+    switch_mode([&] {
+      if (r.reset) {
+        plane.reset();
+        plane_rad.reset();
+        return;
+      }
+      plane = PlaneFrame{r.W_R_plane, datum_shift_mm};
+      plane_rad = target;
+    });
+    if (!r.reset) set_plane_parameters(target);
+    if (r.motion == PlaneRequest::Motion::turn) swivel(target, b, r);
+  }
+
+  /// Q120 .. Q122: the plane's angles of the machine's A, B, C axes in degrees.
+  void set_plane_parameters(const RotaryAngles& angles_rad) {
+    for (int k = 0; k < machine.rotary_count(); ++k) {
+      const char letter = machine.rotary(k).letter;
+      if (letter >= 'A' && letter <= 'C') q.set(fmt::format("Q{}", 120 + (letter - 'A')), rad_to_deg(angles_rad[k]));
+    }
+  }
+
+  /// PLANE ... TURN: the rotary axes turn to `target`, the linear axes stay.
+  void swivel(const RotaryAngles& target, const Block& b, const PlaneRequest& r) {
+    if (!position_known())
+      fail(b.column, fmt::format("{} TURN before X, Y and Z are programmed on a rapid: where the swivel happens is not "
+                                 "known", b.statement));
+    ProgramPoint to = pos;
+    std::array<bool, 6> programmed{};
+    for (int k = 0; k < machine.rotary_count(); ++k) {
+      const auto slot = static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)]);
+      to[slot] = target[k];
+      programmed[slot] = true;
+    }
+    pos = turned(pos, to);
+    note_programmed(programmed, true);
+    emit_motion(pos, at(b.column), !r.feed, r.feed);
+  }
+
+  /// `to` (rotary axes moved from `from`) with X Y Z where the machine's linear axes stay.
+  ProgramPoint turned(const ProgramPoint& from, ProgramPoint to) const {
+    const Vec3d machine_xyz = linear_for(machine, commands_of(from).rotary_rad, tip_of(from, tip_mode()), setup);
+    AxisPosition q = commands_of(to);
+    q.linear_mm = machine_xyz;
+    const Vec3d xyz = program_xyz(forward(machine, q, setup).tip_mm, q.rotary_rad);
+    for (std::size_t i = 0; i < 3; ++i) to[i] = xyz[static_cast<int>(i)];
+    return to;
+  }
+
+  /// After CYCL DEF 7 changed the shift in a plane nothing may move until PLANE RESET or a new PLANE.
+  void check_no_stale_shift(int column) const {
+    if (shift_in_plane)
+      fail(column, "a motion after CYCL DEF 7 changed the datum shift inside a tilted plane (PLANE ...): the shift's "
+                   "axes in the tilted system are not read; PLANE RESET first, or shift the datum before the PLANE");
+  }
+
+  /// In a tilted plane a motion needs the tool axis of the plane (the rotary axes at Q120 .. Q122).
+  void check_plane_axis(const Block& b, const ProgramPoint& target) const {
+    if (!plane) return;
+    const Vec3d axis_W = tool_frame_W(machine, commands_of(target).rotary_rad).col(2);
+    if ((axis_W - plane->W_R_plane.col(2)).norm() > 1e-6)
+      fail(b.column, fmt::format("{} in a tilted plane (PLANE ...) with the rotary axes not at the plane's angles: not "
+                                 "read; position them first (L A+Q120 B+Q121 C+Q122 FMAX)", b.statement));
   }
 
   /// The words of a path block (L, C, CR, CT, CP, or M words alone).
@@ -565,7 +805,7 @@ struct KlartextReader::State {
         if (incremental && !known[s] && slot < 3)
           fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
         const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
-        bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 ? datum_shift_mm[slot] : 0.0);
+        bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 && !plane ? datum_shift_mm[slot] : 0.0);
         if (!incremental && slot >= 3 && shortest_rotary && known[s] && machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
           bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
         bw.programmed[s] = true;
@@ -620,6 +860,28 @@ struct KlartextReader::State {
     return bw;
   }
 
+  /// M91: the block's X Y Z words are machine coordinates, counted from each axis's `reference` in
+  /// the machine file (as G53); the axes it does not name stay.
+  void machine_coordinates(const Block& b, BlockWords& bw, int column) {
+    if (tip_mode())
+      fail(column, "M91 with axis words under M128 / FUNCTION TCPM or in a tilted plane is not read");
+    for (const Word& w : b.words) {
+      bool incremental = false;
+      const int slot = axis_slot(w.name, incremental);
+      if (slot < 0) continue;
+      if (slot >= 3 || incremental)
+        fail(w.column, fmt::format("M91 with {}: only absolute X, Y and Z in machine coordinates are read", w.name));
+      const Axis& axis = machine.axes[static_cast<std::size_t>(slot)];
+      if (!axis.reference)
+        fail(w.column, fmt::format("M91 {}{:g}: machine coordinates count from the axis's reference point, which the "
+                                   "machine file {} does not give; add [axes.{}] reference = ... (docs/formats.md)",
+                                   w.name, *w.value, machine.name, w.name));
+      bw.target[static_cast<std::size_t>(slot)] = *axis.reference + *w.value;
+    }
+    notice_once("M91", column, "M91: the block's X Y Z are machine coordinates, counted from the axes' reference "
+                               "points in the machine file");
+  }
+
   int rotary_index(int slot) const {
     for (int k = 0; k < 2; ++k)
       if (rotary_slot[static_cast<std::size_t>(k)] == slot) return k;
@@ -630,6 +892,8 @@ struct KlartextReader::State {
   /// the path, M functions at the end. False when the block ends the program.
   bool motion_block(const Block& b) {
     BlockWords bw = words_of(b);
+    for (const auto& [code, column] : bw.m)
+      if (code == 91 && bw.any_axis) machine_coordinates(b, bw, column);
     const cl::Location where = at(b.column);
     const bool path = b.statement != "M" && b.statement != "STOP";
     if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
@@ -661,15 +925,21 @@ struct KlartextReader::State {
         case 2: case 30: program_end = true; break;
         case 126: shortest_rotary = true; break;
         case 127: shortest_rotary = false; break;
-        case 128: rtcp = true; break;
-        case 129: rtcp = false; break;
+        case 128: case 129: {
+          const bool on = code == 128;
+          if (plane && on) fail(column, "M128 in a tilted plane (PLANE ...) is not read; PLANE RESET first");
+          switch_mode([&] { rtcp = on; });
+          break;
+        }
         case 140: m140 = true; break;
-        case 91: case 92:
-          if (bw.any_axis)
-            fail(column, fmt::format("M{} with axis words: the block's coordinates are machine coordinates (M91: from "
-                                     "the machine datum, M92: from a position the machine builder sets), which the "
-                                     "machine file does not give; program the position in the workpiece frame, or "
-                                     "M140 MB MAX to retract", code));
+        case 91:
+          if (bw.any_axis) break;  // (machine coordinates: machine_coordinates() above)
+          [[fallthrough]];
+        case 92:
+          if (bw.any_axis && code == 92)
+            fail(column, "M92 with axis words: the block's coordinates count from a position the machine builder sets, "
+                         "which the machine file does not give; program the position in the workpiece frame, or "
+                         "M140 MB MAX to retract");
           [[fallthrough]];
         default:
           after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});
@@ -706,8 +976,16 @@ struct KlartextReader::State {
       if (!bw.any_axis) return;
       if (bw.radius_mm || bw.counter_clockwise || bw.polar_rad || bw.polar_step_rad)
         fail(b.column, "L with arc words (R, DR, PA, IPA): program C, CR or CP");
+      const bool rotary_only = !bw.programmed[0] && !bw.programmed[1] && !bw.programmed[2];
       const ProgramPoint from = pos;
-      pos = bw.target;
+      if (plane && rotary_only && position_known()) {  // in a plane: the linear axes stay, the tip moves
+        pos = turned(pos, bw.target);
+      } else {
+        if (!rotary_only) check_plane_axis(b, bw.target);
+        if (plane && !bw.rapid && commands_of(bw.target).rotary_rad != commands_of(pos).rotary_rad)
+          fail(b.column, "L with rotary words and a feed in a tilted plane (PLANE ...) is not read");
+        pos = bw.target;
+      }
       note_programmed(bw.programmed, bw.rapid);
       const Eigen::Vector2d d(pos[0] - from[0], pos[1] - from[1]);
       if (d.norm() > 1e-9) tangent = d.normalized();
@@ -723,6 +1001,7 @@ struct KlartextReader::State {
       fail(b.column, fmt::format("{} before X, Y and Z are programmed on a rapid: the start of the arc is not known", s));
     for (std::size_t i = 3; i < 6; ++i)
       if (bw.programmed[i]) fail(b.column, fmt::format("{} with a rotary word: program rotary axes in L blocks", s));
+    check_plane_axis(b, pos);
     if (bw.programmed[2] && s != "CP") fail(b.column, fmt::format("{} with Z: a helix is programmed with CP", s));
     if (s != "CR" && bw.radius_mm) fail(b.column, fmt::format("{} with a radius R: program CR", s));
     if (s != "CP" && (bw.polar_rad || bw.polar_step_rad)) fail(b.column, fmt::format("{} with PA/IPA: program CP", s));
@@ -771,7 +1050,7 @@ struct KlartextReader::State {
                                  gcode::kMaxArcSegments, options.arc_chord_tolerance_mm));
     const bool circle = std::abs(a.sweep_rad) <= 2.0 * kPi + 1e-9 && std::abs(a.radius_start_mm - a.radius_end_mm) < 5e-4;
     if (circle) {
-      for (long i = 1; i < n && options.check_limits; ++i) locate(a.at(static_cast<double>(i) / static_cast<double>(n)), rtcp, where);
+      for (long i = 1; i < n && options.check_limits; ++i) locate(a.at(static_cast<double>(i) / static_cast<double>(n)), tip_mode(), where);
       ProgramPoint centre_p = a.start;
       centre_p[0] = a.centre1_mm;
       centre_p[1] = a.centre2_mm;
@@ -779,8 +1058,8 @@ struct KlartextReader::State {
       above[2] += 1.0;
       cl::Circle c;
       c.where = where;
-      c.center_mm = tip_of(centre_p, rtcp);
-      const Vec3d up = tip_of(above, rtcp) - c.center_mm;
+      c.center_mm = tip_of(centre_p, tip_mode());
+      const Vec3d up = tip_of(above, tip_mode()) - c.center_mm;
       c.axis = (a.sweep_rad > 0.0 ? 1.0 : -1.0) * up.normalized();
       c.radius_mm = a.radius_start_mm;
       emit(c);
@@ -793,6 +1072,7 @@ struct KlartextReader::State {
   /// M140 MB MAX|d: a rapid along the tool axis, which is machine Z on a machine whose head does
   /// not tilt, to the top of Z's travel (MAX) or by d (at most to the top).
   void retract(const BlockWords& bw) {
+    if (plane) fail(bw.retract_column, "M140 in a tilted plane (PLANE ...) is not read; PLANE RESET first, or program the retract with L");
     for (int i : machine.tool_side)
       if (machine.axes[static_cast<std::size_t>(i)].is_rotary())
         fail(bw.retract_column, fmt::format("M140 on the machine {}, whose head tilts: the tool axis is not machine Z; "

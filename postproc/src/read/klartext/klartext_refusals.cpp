@@ -21,17 +21,13 @@ constexpr Refusal kStatements[] = {
     {"CYCL DEF", "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
                  "shift, 32 tolerance and 200 drilling are)", kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
-    {"PLANE ", "a tilted working plane is not read", "post the CL data, or a program with M128 / FUNCTION TCPM and rotary words"},
     {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
     {"CHF", "a chamfer between two contour elements is not read", "have the CAM system write the chamfer as an L block"},
     {"LP", "a line in polar coordinates is not read", "have the CAM system write Cartesian L blocks"},
     {"APPR", "an approach contour is not read", kPostCl},
     {"DEP", "a departure contour is not read", kPostCl},
     {"LN", "a line with a surface normal (3-D tool compensation) is not read", kPostCl},
-    {"FN", "Q parameter programming is not read", "have the CAM system write the values"},
-    {"Q", "a Q parameter assignment is not read", "have the CAM system write the values"},
-    {"LBL", "labels and subprograms are not read", "have the CAM system write the program without subprograms"},
-    {"CALL ", "program and label calls are not read", "have the CAM system write the program without subprograms"},
+    {"CALL ", "a program call is not read (CALL LBL is)", "post each program on its own, or copy the called program in as a subprogram (LBL)"},
     {"FUNCTION ", "this function is not read", kPostCl},
     {"SEL", "a program or table selection is not read", "post each program on its own"},
     {"SPL", "a spline is not read", kPostCl},
@@ -71,7 +67,7 @@ std::string refused_statement(const Block& b) {
       return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
   }
   return fmt::format("'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
-                     "FUNCTION TCPM); {}", shown, kPostCl);
+                     "FUNCTION TCPM, PLANE, Q parameters, FN, LBL, CALL LBL); {}", shown, kPostCl);
 }
 
 std::optional<std::string> refused_m(int code) {

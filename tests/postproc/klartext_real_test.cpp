@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// Real Klartext programs (tests/data/real/heidenhain_aptpp_*.h, GPL-3.0, see SOURCES.md: written by
+// the AptPostProcessor project's own post from SOLIDWORKS CAM APT, and by hand for its TNC 310).
+// Each is read by the Klartext reader (machines/head-table-bc.toml) and must post, or be refused at the line whose statement
+// the reader does not take, with a message naming it. The expected line is found here in the file
+// itself (the first line holding that statement), not taken from the reader's output.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "cl_records.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/postproc/read/klartext/klartext_reader.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "test_paths.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+std::string text_of(const std::string& name) {
+  std::ifstream in(test::data("real/" + name), std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The 1-based number of the first line of `text` that contains `what`, or 0.
+int line_with(const std::string& text, const std::string& what) {
+  std::istringstream in(text);
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++n;
+    if (line.find(what) != std::string::npos) return n;
+  }
+  return 0;
+}
+
+/// The reader's message for the file, or "" when it reads to the end.
+std::string outcome(const std::string& name) {
+  std::istringstream in(text_of(name));
+  // a machine whose file gives reference points (the programs retract with M91)
+  static const Machine machine = load_machine(test::source("machines/head-table-bc.toml"));
+  Setup setup;
+  setup.tool_length_mm = 100.0;
+  setup.workpiece_origin_mm = Vec3d(0, 0, -400);
+  klartext::KlartextReader r(in, name, machine, setup, {});
+  try {
+    test::all_records(r);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("real Klartext programs post or are refused at the statement they use") {
+  struct Expected {
+    const char* file;
+    const char* statement;  ///< as written in the file ("" : posts)
+    const char* message;    ///< what the refusal must say
+  };
+  const Expected cases[] = {
+      {"heidenhain_aptpp_profile.h", "FN18: SYSREAD", "FN 18 is not read"},
+      {"heidenhain_aptpp_dem_target2_11.h", "CYCLE DEF 9.0", "'CYCLE DEF 9.0 DWELL TIME' is not a Klartext statement"},
+      {"heidenhain_aptpp_xdial.h", "CYCL DEF 7.1  X + 0", "CYCL DEF 7: expected one axis word per block"},
+      {"heidenhain_aptpp_boss_12.h", "L Z 25.000", "Z without a value"},
+      {"heidenhain_aptpp_sacrifice_912.h", "CYCL DEF 7.1 Xnan", "CYCL DEF 7: a shift of XNAN is not read"},
+      {"heidenhain_aptpp_dem_target2_11setup.h", "", ""},
+  };
+  for (const Expected& c : cases) {
+    INFO(c.file);
+    const std::string e = outcome(c.file);
+    if (std::string(c.statement).empty()) {
+      CHECK(e.empty());
+      continue;
+    }
+    const int line = line_with(text_of(c.file), c.statement);
+    REQUIRE(line > 0);
+    CHECK_THAT(e, Catch::StartsWith(std::string(c.file) + ":" + std::to_string(line) + ":"));
+    CHECK_THAT(e, Catch::Contains(c.message));
+  }
+}

@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A small interpreter of Heidenhain Klartext for the tests, independent of the product's reader:
+// it runs only what the tests' programs use and reports where the tool tip is (in W) at the end of
+// each L block, by the TNC's rules as the tests read them from the TNC 640 manual:
+//   - L X Y Z A B C (+n, -n, +Qn, -Qn; IX IY IZ incremental), FMAX / F / R0 / M words (M128 / M129
+//     switch tool-tip programming on and off; others ignored);
+//   - Qn = a [op b] (op + - * /, operands numbers or Q), FN 0: Qn = v;
+//   - LBL n, LBL 0, CALL LBL n (subprogram: runs to LBL 0, returns), CALL LBL n REP m (the lines
+//     from LBL n to the call run m more times);
+//   - PLANE SPATIAL SPA SPB SPC STAY [SEQ+|SEQ-]: X Y Z are then the tip in the plane,
+//     W_R_plane = Rz(SPC) Ry(SPB) Rx(SPA), and Q120 .. Q122 are set from `angles` (the test's own
+//     computation of the control's angles); PLANE RESET STAY;
+//   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
+//     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves).
+// Anything else throws, so a test cannot pass by skipping a statement.
+#include <functional>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "nc_executor.hpp"
+
+namespace ncpost::test {
+
+/// The tool tip and axis (W) after each L block of the input, with its line.
+struct KlartextEnd {
+  int line = 0;
+  V3 tip_W = V3::Zero();
+  V3 axis_W = V3::UnitZ();
+};
+
+/// The control's rotary angles (deg, by letter) for a plane and its SEQ (+1, -1, 0).
+using PlaneAnglesFn = std::function<std::map<char, double>(const M3& W_R_plane, int seq)>;
+
+class KlartextInterpreter {
+ public:
+  KlartextInterpreter(const ExecMachine& m, const ExecJob& job, PlaneAnglesFn angles)
+      : m_(m), job_(job), angles_(std::move(angles)) {
+    for (char c : m_.rotary_letters) rot_[c] = 0.0;
+  }
+
+  std::vector<KlartextEnd> run(const std::string& text) {
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) lines_.push_back(strip(l));
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+      if (lines_[i].rfind("LBL ", 0) == 0) labels_[lines_[i].substr(4)] = i;
+    std::vector<std::pair<std::size_t, std::size_t>> returns;  // (return index, -)
+    std::map<std::size_t, int> repeats;
+    for (std::size_t i = 0; i < lines_.size();) {
+      const std::string& s = lines_[i];
+      if (s.rfind("CALL LBL ", 0) == 0) {
+        std::istringstream w(s.substr(9));
+        std::string label, rep;
+        int count = 0;
+        w >> label >> rep >> count;
+        if (rep == "REP") {
+          if (!repeats.count(i)) repeats[i] = count;
+          if (repeats[i]-- > 0) { i = labels_.at(label) + 1; continue; }
+          repeats.erase(i);
+          ++i;
+          continue;
+        }
+        returns.push_back({i + 1, 0});
+        i = labels_.at(label) + 1;
+        continue;
+      }
+      if (s == "LBL 0") {
+        if (!returns.empty()) { i = returns.back().first; returns.pop_back(); continue; }
+        ++i;
+        continue;
+      }
+      if (s == "M30" || s.rfind("END PGM", 0) == 0) break;
+      statement(s, static_cast<int>(i + 1));
+      ++i;
+    }
+    return ends_;
+  }
+
+ private:
+  static std::string strip(std::string l) {
+    if (const auto c = l.find(';'); c != std::string::npos) l = l.substr(0, c);
+    while (!l.empty() && (l.back() == ' ' || l.back() == '\r')) l.pop_back();
+    std::size_t p = 0;
+    while (p < l.size() && std::isdigit(static_cast<unsigned char>(l[p]))) ++p;
+    while (p < l.size() && l[p] == ' ') ++p;
+    return l.substr(p);
+  }
+
+  double value_of(const std::string& v) const {
+    const double sign = v[0] == '-' ? -1.0 : 1.0;
+    const std::string body = v[0] == '+' || v[0] == '-' ? v.substr(1) : v;
+    if (body[0] == 'Q') return sign * q_.at(body);
+    return sign * std::stod(body);
+  }
+
+  void statement(const std::string& s, int line) {
+    static const std::regex assign(R"(^(?:FN 0: ?)?(Q\d+) ?= ?([-+]?Q?[\d.]+)(?: ([-+*/]) ([-+]?Q?[\d.]+))?$)");
+    std::smatch m;
+    if (s.empty() || s[0] == '*' || s.rfind("BEGIN PGM", 0) == 0 || s.rfind("TOOL CALL", 0) == 0 ||
+        s.rfind("BLK FORM", 0) == 0 || s.rfind("LBL ", 0) == 0)
+      return;
+    if (std::regex_match(s, m, assign)) {
+      double v = value_of(m[2]);
+      if (m[3].matched) {
+        const double b = value_of(m[4]);
+        const char op = m[3].str()[0];
+        v = op == '+' ? v + b : op == '-' ? v - b : op == '*' ? v * b : v / b;
+      }
+      q_[m[1]] = v;
+      return;
+    }
+    if (s.rfind("PLANE ", 0) == 0) return plane(s);
+    if (s == "M128" || s == "M129") return set_rtcp(s == "M128");
+    if (s.rfind("L ", 0) == 0) return motion(s, line);
+    throw std::runtime_error("the test interpreter does not read: " + s);
+  }
+
+  void plane(const std::string& s) {
+    if (s == "PLANE RESET STAY") {
+      keep_tip([&] { plane_.reset(); });
+      return;
+    }
+    static const std::regex spatial(R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
+    std::smatch m;
+    if (!std::regex_match(s, m, spatial)) throw std::runtime_error("the test interpreter does not read: " + s);
+    const auto rad = [](const std::string& t) { return std::stod(t) * M_PI / 180.0; };
+    const M3 R = (Eigen::AngleAxisd(rad(m[3]), V3::UnitZ()) * Eigen::AngleAxisd(rad(m[2]), V3::UnitY()) *
+                  Eigen::AngleAxisd(rad(m[1]), V3::UnitX())).toRotationMatrix();
+    const int seq = !m[4].matched ? 0 : m[4].str() == "+" ? 1 : -1;
+    for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+    keep_tip([&] { plane_ = R; });
+  }
+
+  void set_rtcp(bool on) { keep_tip([&] { rtcp_ = on; }); }
+
+  /// A change of mode keeps the machine where it is: the program's X Y Z follow.
+  template <class F> void keep_tip(F change) {
+    const V3 tip = tip_W();
+    change();
+    xyz_ = program_of(tip);
+  }
+
+  V3 tip_W() const {
+    if (plane_) return *plane_ * xyz_;
+    if (rtcp_) return xyz_;
+    return forward(m_, job_, xyz_, rot_).tip_W;
+  }
+  V3 program_of(const V3& tip) const {
+    if (plane_) return plane_->transpose() * tip;
+    if (rtcp_) return tip;
+    return machine_xyz(tip, rot_);
+  }
+  /// X Y Z of the machine that put the tip on `tip` at `rot` (the forward kinematics is affine in X Y Z).
+  V3 machine_xyz(const V3& tip, const std::map<char, double>& rot) const {
+    const V3 t0 = forward(m_, job_, V3::Zero(), rot).tip_W;
+    M3 A;
+    for (int i = 0; i < 3; ++i) A.col(i) = forward(m_, job_, V3::Unit(i), rot).tip_W - t0;
+    return A.inverse() * (tip - t0);
+  }
+
+  void motion(const std::string& s, int line) {
+    std::istringstream w(s.substr(2));
+    V3 xyz = xyz_;
+    std::map<char, double> rot = rot_;
+    bool linear = false;
+    for (std::string word; w >> word;) {
+      const bool inc = word.size() > 2 && word[0] == 'I' && std::string("XYZ").find(word[1]) != std::string::npos;
+      const char letter = inc ? word[1] : word[0];
+      const std::string v = inc ? word.substr(2) : word.substr(1);
+      if (std::string("XYZ").find(letter) != std::string::npos && !v.empty() && (v[0] == '+' || v[0] == '-')) {
+        const int i = letter - 'X';
+        xyz[i] = (inc ? xyz_[i] : 0.0) + value_of(v);
+        linear = true;
+      } else if (m_.rotary_letters.find(letter) != std::string::npos && !v.empty() && (v[0] == '+' || v[0] == '-')) {
+        rot[letter] = value_of(v);
+      }  // F, FMAX, R0, M words: no position
+    }
+    if (!linear && !rtcp_) {  // rotary axes alone: the machine's linear axes stay
+      const V3 machine = plane_ ? machine_xyz(tip_W(), rot_) : xyz_;
+      rot_ = rot;
+      const V3 tip = forward(m_, job_, machine, rot_).tip_W;
+      xyz_ = program_of(tip);
+    } else {
+      xyz_ = xyz;
+      rot_ = rot;
+    }
+    ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
+  }
+
+  const ExecMachine& m_;
+  ExecJob job_;
+  PlaneAnglesFn angles_;
+  std::vector<std::string> lines_;
+  std::map<std::string, std::size_t> labels_;
+  std::map<std::string, double> q_;
+  V3 xyz_ = V3::Zero();
+  std::map<char, double> rot_;
+  std::optional<M3> plane_;
+  bool rtcp_ = false;
+  std::vector<KlartextEnd> ends_;
+};
+
+}  // namespace ncpost::test
