@@ -243,12 +243,18 @@ TEST_CASE("gcode control: the real CAMotics botomata program sets G54 and G55 wi
   GcodeReaderOptions o;
   o.kind = InputKind::rtcp;
   Setup s;
-  s.workpiece_origin_mm = Vec3d(-100, -100, -100);
+  s.workpiece_origin_mm = Vec3d(-100, -40, -100);  // G10 L2 P2 Y-101.6 (line 1945) puts a second part at Y-101.6
   const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
   auto reader = open_gcode(NCPOST_SOURCE_DIR "/tests/data/real/camotics_botomata_bottom.nc", vmc, s, o);
   std::vector<cl::Record> records;
   while (auto r = reader->next()) records.push_back(*r);
-  CHECK(only<cl::Motion>(records).size() > 3000);
+  const std::vector<cl::Motion> ms = only<cl::Motion>(records);
+  CHECK(ms.size() > 3000);
+  // line 1952 goes to Y3.752 of G55 after line 1945 set G55 101.6 mm lower: Y-97.848 of the posted frame
+  bool shifted = false;
+  for (const cl::Motion& m : ms)
+    if (m.where.line == 1952) shifted = std::abs(m.point.tip_mm.y() - (3.752 - 101.6)) < 1e-9;
+  CHECK(shifted);
   // the posted frame is G55's, whose values (0, 0, 0) the program's G10 sets: the notice says so
   bool said = false;
   for (const std::string& n : reader->take_notices())

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Issue 24.2: the power-on modal state from the dialect file ([input] power_on, as LinuxCNC's
-// RS274NGC_STARTUP_CODE): `G43 Z50. H8` and axis words before any motion word read on Fanuc
+// RS274NGC_STARTUP_CODE): `G43 Z30. H8` and axis words before any motion word read on Fanuc
 // (G00 from power-on), the posted header names the state assumed, the units of the power-on state
 // are a default the user's --units overrides, and a dialect file naming a code outside the modal
 // state is refused. The posting case executes the INPUT with the tests' own control interpreter
@@ -47,12 +47,12 @@ std::vector<cl::Motion> motions(const std::string& text, const gcode::GcodeReade
 
 // NX posts for Mori Seiki and Okuma: the tool's first positioning and its length call carry no
 // motion word; the control's power-on G00 moves them
-const char* const kNoMotionWord = "%\nO0001\nG21 G90 G17\nT8 M6\nX10. Y10. Z80. S1000 M3\nG43 Z50. H8\nG1 Z0 F200\n"
-                                  "X40.\nG0 Z50.\nM30\n%\n";
+const char* const kNoMotionWord = "%\nO0001\nG21 G90 G17\nT8 M6\nX10. Y10. Z40. S1000 M3\nG43 Z30. H8\nG1 Z0 F200\n"
+                                  "X40.\nG0 Z30.\nM30\n%\n";
 
 }  // namespace
 
-TEST_CASE("power-on: G43 Z50. H8 before any motion word posts on Fanuc, and the header says why") {
+TEST_CASE("power-on: G43 Z30. H8 before any motion word posts on Fanuc, and the header says why") {
   const std::string dir = make_temp_dir("power_on");
   const std::string in = write_text_file(dir + "/in.nc", kNoMotionWord);
   const int rc = run_ncpost("post --machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect fanuc -o " +
@@ -81,7 +81,7 @@ TEST_CASE("power-on: without a power-on state the same program is refused at its
   const auto ms = motions(kNoMotionWord, with_power_on("G0 G17 G90 G94 G54"));
   REQUIRE(ms.size() == 5);
   CHECK(ms[0].rapid);
-  CHECK(ms[1].point.tip_mm.isApprox(Vec3d(10, 10, 50)));
+  CHECK(ms[1].point.tip_mm.isApprox(Vec3d(10, 10, 30)));
   CHECK_FALSE(ms[2].rapid);  // G1 Z0
 }
 

@@ -143,10 +143,11 @@ TEST_CASE("subprograms: M98 P L under a modal canned cycle: P and L are the call
   std::vector<cl::Cycle> holes;
   for (const cl::Cycle& c : only<cl::Cycle>(records))
     if (c.kind != cl::Cycle::Kind::off) holes.push_back(c);
-  REQUIRE(holes.size() == 4);  // two holes, twice
+  REQUIRE(holes.size() == 5);  // the cycle's own block at X0 Y0 (its Z is an axis word), then two holes, twice
   for (const cl::Cycle& c : holes) {
     CHECK(c.dwell_s == Approx(0.5));  // G82's own P500, not the call's P1002
     CHECK(c.depth_mm == Approx(7.0));
   }
-  CHECK(holes[3].where.line == 10);
+  CHECK(holes[0].where.line == 3);
+  CHECK(holes[4].where.line == 10);
 }

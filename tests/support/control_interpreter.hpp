@@ -249,12 +249,19 @@ class ControlInterpreter {
   }
 
   // ---- Fanuc/Haas subprograms
-  std::size_t find_program(std::size_t pc, int number) const {
+  std::optional<std::size_t> program_line(int number) const {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
       const std::string& l = lines_[i];
       if (l.size() > 1 && l[0] == 'O' && std::isdigit(static_cast<unsigned char>(l[1])) && std::stoi(l.substr(1)) == number)
         return i + 1;
     }
+    return std::nullopt;
+  }
+  /// O<number>'s first line and the repeats: Fanuc's P<kkkk><oooo> where only O<oooo> exists.
+  std::pair<std::size_t, int> find_program(std::size_t pc, int number) const {
+    if (const auto at = program_line(number)) return {*at, 1};
+    if (number > 9999)
+      if (const auto at = program_line(number % 10000)) return {*at, number / 10000};
     fail(pc, "no O" + std::to_string(number));
   }
   std::size_t find_block(std::size_t pc, int number) const {
@@ -319,7 +326,7 @@ class ControlInterpreter {
     const std::string name = fanuc_l20 ? "G54.1 P" + std::to_string(p) : p == 0 ? active_ : names[p - 1];
     for (char a : spec_.axes) {
       if (!w.count(a)) continue;
-      const bool active = name == active_;
+      const bool active = name == active_ && !ends_.empty();  // a position to keep where the machine is
       const double machine = active || !(l == 2 || fanuc_l20) ? pos_[a] + offset(active_, a) : 0.0;
       if (l == 2 || fanuc_l20) spec_.offsets[name][a] = w.at(a);
       else spec_.offsets[name][a] = machine - w.at(a);
@@ -335,7 +342,8 @@ class ControlInterpreter {
       else if (c == 910) absolute_ = false;
       else if (c == 100) is_g10 = true;
       else if (const std::string n = offset_name(c, w); !n.empty()) {
-        for (char a : spec_.axes) pos_[a] += offset(active_, a) - offset(n, a);  // the machine stays
+        if (!ends_.empty())  // the machine stays; before any motion there is no position to carry
+          for (char a : spec_.axes) pos_[a] += offset(active_, a) - offset(n, a);
         active_ = n;
       }
     }
@@ -361,8 +369,15 @@ class ControlInterpreter {
       if (c == 2 || c == 30) ended_ = true;
       if (c == 98 || c == 97) {
         const int target = static_cast<int>(w.at('P'));
-        const int times = w.count('L') ? static_cast<int>(w.at('L')) : 1;
-        const std::size_t start = c == 98 ? find_program(pc, target) : find_block(pc, target);
+        int times = w.count('L') ? static_cast<int>(w.at('L')) : 1;
+        std::size_t start = 0;
+        if (c == 98) {
+          const auto [at, repeats] = find_program(pc, target);
+          start = at;
+          times *= repeats;
+        } else {
+          start = find_block(pc, target);
+        }
         frames_.push_back(Frame{pc + 1, start, times - 1, {}});
         return start;
       }

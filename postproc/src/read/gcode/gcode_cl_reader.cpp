@@ -639,7 +639,7 @@ struct GcodeClReader::State {
     seen_content = true;
     if (block.deleted && options.block_delete) return skip_deleted(line_number);
     const bool goes_on = interpret_block(line, line_number);
-    if (goes_on && effect.call) follow_call(*effect.call, line_number);
+    if (goes_on && effect.call) follow_call(*effect.call, line_number, std::string(line));
     else if (goes_on) program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
     return goes_on;
   }
@@ -648,11 +648,17 @@ struct GcodeClReader::State {
   SubprogramCalls calls{source, file};
   OWordFlow oword_flow{source, file, parameters, calls};
 
-  void follow_call(const SubprogramCall& c, int line_number) {
+  /// `text`: the calling line, for the caret of an error (the call re-reads the file).
+  void follow_call(const SubprogramCall& c, int line_number, const std::string& text) {
     const SubprogramCalls::Position back{source.next_line_offset(), line_number + 1};
-    if (c.m == 98) calls.call_program(c.p, c.times, back, line_number, c.column);
-    else if (c.m == 97) calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
-    else calls.leave(true, parameters, line_number, c.column);
+    try {
+      if (c.m == 98) calls.call_program(c.p, c.times, back, line_number, c.column);
+      else if (c.m == 97) calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
+      else calls.leave(true, parameters, line_number, c.column);
+    } catch (const InputError& e) {
+      if (!e.source_line().empty()) throw;
+      throw InputError(e.where(), e.detail(), text);
+    }
   }
 
   static bool is_deleted(std::string_view line) {
