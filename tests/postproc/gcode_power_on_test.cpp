@@ -108,11 +108,17 @@ TEST_CASE("power-on: its work offset is the base frame; a second offset is place
   const auto ms = motions("G21\nX0 Y0 Z10\nG55 X5\nM30\n", o);
   REQUIRE(ms.size() == 2);
   CHECK(ms[1].point.tip_mm.isApprox(Vec3d(105, 0, 10)));
-  // without a power-on offset the first frame is the control's active one, unnamed: G55 is refused
-  gcode::GcodeReaderOptions unnamed = with_power_on("G0 G17 G90 G94");
-  unnamed.work_offsets = table;
-  CHECK_THROWS_WITH(motions("G21\nX0 Y0 Z10\nG55 X5\nM30\n", unnamed),
-                    Catch::Contains("the program moved in the control's active offset"));
+  // a power-on G56 is the base instead: G55 lies 100 - 30 mm further in X than G56
+  auto with_g56 = std::make_shared<gcode::WorkOffsetTable>(*table);
+  with_g56->offsets["G56"] = {30.0, 0.0, 0.0, std::nullopt, std::nullopt, std::nullopt};
+  gcode::GcodeReaderOptions g56 = with_power_on("G0 G17 G90 G94 G56");
+  g56.work_offsets = with_g56;
+  const auto from_g56 = motions("G21\nX0 Y0 Z10\nG55 X5\nM30\n", g56);
+  REQUIRE(from_g56.size() == 2);
+  CHECK(from_g56[1].point.tip_mm.isApprox(Vec3d(75, 0, 10)));
+  // without a table the same program is refused at G55, naming the base
+  CHECK_THROWS_WITH(motions("G21\nX0 Y0 Z10\nG55 X5\nM30\n", with_power_on("G0 G17 G90 G94 G56")),
+                    Catch::Contains("G55: a second work offset (the program moved in G56)"));
 }
 
 TEST_CASE("power-on: a dialect file names only G codes of the modal state") {

@@ -3,8 +3,7 @@
 // The work offsets of a program placed in one frame (docs/formats.md "Work offsets").
 //
 // The posted program has one workpiece frame: the frame of the offset in force at the program's
-// first motion in work coordinates (the base; the control's active offset, unnamed, when none was
-// selected: then another offset's shift is known only through LinuxCNC's G10 L20).
+// first motion in work coordinates (the base; G54 when none was selected: the power-on offset).
 // A program point written under another offset k lies, in the base frame, at
 //   p_base = p_k + (value_k - value_base)          (per axis; mm, rad)
 // where value_n is where offset n's zero lies in machine coordinates (the control adds it to the
@@ -28,8 +27,8 @@ class WorkFrames {
   /// program may move, the only ones whose shift must be known.
   WorkFrames(std::shared_ptr<const WorkOffsetTable> table, std::array<bool, 6> used);
 
-  /// The offset in force ("" until the program selects one: the control's active offset, whose
-  /// name the program does not say).
+  /// The offset in force (G54, the power-on offset of Fanuc, Haas and LinuxCNC, until the program
+  /// or the dialect's power-on state selects another).
   const std::string& active() const { return active_; }
   /// Whether the first motion in work coordinates has fixed the base frame.
   bool fixed() const { return fixed_; }
@@ -69,7 +68,7 @@ class WorkFrames {
   std::array<bool, 6> used_{};
   std::map<std::string, Values> values_;
   std::map<std::string, std::string> sources_;
-  std::string active_;
+  std::string active_ = "G54";
   std::string base_;
   bool fixed_ = false;
   std::array<std::optional<double>, 6> base_value_{};  ///< the base's value at the first motion
