@@ -179,7 +179,8 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   PostResult result;
   PostAccount& acc = result.account;
   acc = detail::account_of(r, r.machine.name, r.model.has_value(), r.verify_on.has_value(), tolerance_mm);
-  const PostOptions options = post_options(r, tolerance_mm, account, p, acc);
+  PostOptions options = post_options(r, tolerance_mm, account, p, acc);
+  for (std::string& note : reader->header_notes()) options.header_comments.push_back(std::move(note));
   SolverData data;  // the solver's working data on this thread (reversal state, figures)
   result.summary = write_program(*reader, program, r, p, executing.get(), options, data);
   reader.reset();

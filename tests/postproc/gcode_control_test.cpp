@@ -145,23 +145,27 @@ TEST_CASE("gcode control: cancel words and Haas smoothing words are read, G76 fi
              Catch::Contains("G76 (fine boring with a spindle orientation and shift on Fanuc and Haas mills"));
 }
 
-// A second work offset would put the next set-up's coordinates on the first part
-TEST_CASE("gcode control: one work offset per program; a second after a motion is refused") {
+// A second work offset whose values are not known would put the next set-up's coordinates on the
+// first part (gcode_work_offset_test.cpp posts them with their values)
+TEST_CASE("gcode control: a second work offset without its values is refused, naming --work-offsets") {
   const std::string head = "G21 G90\nG54 G0 X0 Y0 Z10 A0 C0\nG1 Z-1 F100\n";
   const InputError e = input_error(head + "G0 Z10\nG55 G0 X20 Y0\nM30\n");
   CHECK(e.where().line == 5);
   CHECK(e.where().column == 1);
-  CHECK_THAT(e.detail(), Catch::Contains("G55: a second work offset (the program moved in G54 from line 2)"));
+  CHECK_THAT(e.detail(), Catch::Contains("G55: a second work offset (the program moved in G54)"));
+  CHECK_THAT(e.detail(), Catch::Contains("--work-offsets FILE"));
+  CHECK_THAT(e.detail(), Catch::Contains("(selected at line 2)"));
   CHECK_THAT(input_error(head + "G54.1 P2 X1\nM30\n").detail(), Catch::Contains("G54.1 P2: a second work offset"));
   CHECK_THAT(input_error("G21 G90 G54.1 P1\nG0 X0 Y0 Z10 A0 C0\nG54.1 P2\nM30\n").detail(),
-             Catch::Contains("G54.1 P2: a second work offset (the program moved in G54.1 P1 from line 1)"));
+             Catch::Contains("G54.1 P2: a second work offset (the program moved in G54.1 P1)"));
   // the same offset again (each operation's safe-start line), or a choice before any motion: read
   CHECK(only<cl::Motion>(read_all(head + "G0 Z10\nG90 G54 G0 X20\nM30\n").records).size() == 4);
   CHECK(only<cl::Motion>(read_all("G21 G90 G54\nG91 G28 Z0\nG90 G55 G0 X0 Y0 Z10 A0 C0\nM30\n").records).size() >= 1);
-  // moves before any offset word are in the control's active offset (G54 from power-on)
+  // moves before any offset word are in G54 (the power-on offset; a dialect's [input] power_on may
+  // name another)
   CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG54 X5\nM30\n").records).size() == 2);
   CHECK_THAT(input_error("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG56 X5\nM30\n").detail(),
-             Catch::Contains("G56: a second work offset (the program moved in the control's active offset before it)"));
+             Catch::Contains("G56: a second work offset (the program moved in G54)"));
 }
 
 // M60 (pallet change + stop) was a comment with a notice: the next pallet's cuts on this one
@@ -215,12 +219,11 @@ TEST_CASE("gcode control: Sinumerik keywords and G10 are refused naming what the
   CHECK_THAT(input_error("  CYCLE83(1,2)\n").detail(), Catch::Contains("CYCLE83 (a Sinumerik cycle call)"));
   CHECK(input_error("  CYCLE83(1,2)\n").where().column == 3);
   CHECK_THAT(input_error("TRANS X10\n").detail(), Catch::Contains("programmable work offset"));
-  const InputError g10 = input_error("G90 G21\nG0 X0 Y0 Z5\n\nG10 L2 P1 X0 Y0 Z0\n");
+  const InputError g10 = input_error("G90 G21\nG0 X0 Y0 Z5\n\nG10 L1 P3 R5\n");
   CHECK(g10.where().line == 4);
   CHECK(g10.where().column == 1);
-  CHECK_THAT(g10.detail(), Catch::Contains("G10 L2 P1 sets a work offset"));
-  CHECK_THAT(g10.detail(), Catch::Contains("--workpiece-origin"));
-  CHECK_THAT(input_error("G10 L1 P3 R5\n").detail(), Catch::Contains("tool table"));
+  CHECK_THAT(g10.detail(), Catch::Contains("tool table"));
+  CHECK_THAT(input_error("G10 L3 P1\n").detail(), Catch::Contains("G10 (writing offsets or parameters"));
 }
 
 // Sinumerik MSG("...") is an operator message: a comment (it was "expected a number after 'M'")
@@ -236,22 +239,27 @@ TEST_CASE("gcode control: Sinumerik MSG(\"text\") is a comment; MSG() clears it"
   CHECK_THAT(input_error("G71\nMSG(\"open\"\n").detail(), Catch::Contains("expected"));
 }
 
-TEST_CASE("gcode control: the real CAMotics botomata program is refused at its G10 L2 (line 6)") {
+TEST_CASE("gcode control: the real CAMotics botomata program sets G54 and G55 with G10 L2 and moves in G55") {
   GcodeReaderOptions o;
   o.kind = InputKind::rtcp;
   Setup s;
-  s.workpiece_origin_mm = Vec3d(-100, -100, -100);
+  s.workpiece_origin_mm = Vec3d(-100, -40, -100);  // G10 L2 P2 Y-101.6 (line 1945) puts a second part at Y-101.6
   const Machine vmc = load_machine(NCPOST_SOURCE_DIR "/machines/vmcl600.toml");
   auto reader = open_gcode(NCPOST_SOURCE_DIR "/tests/data/real/camotics_botomata_bottom.nc", vmc, s, o);
-  try {
-    while (reader->next()) {
-    }
-    FAIL("botomata read without an error");
-  } catch (const InputError& e) {
-    CHECK(e.where().line == 6);
-    CHECK(e.where().column == 1);
-    CHECK_THAT(e.detail(), Catch::Contains("G10 L2 P1 sets a work offset"));
-  }
+  std::vector<cl::Record> records;
+  while (auto r = reader->next()) records.push_back(*r);
+  const std::vector<cl::Motion> ms = only<cl::Motion>(records);
+  CHECK(ms.size() > 3000);
+  // line 1952 goes to Y3.752 of G55 after line 1945 set G55 101.6 mm lower: Y-97.848 of the posted frame
+  bool shifted = false;
+  for (const cl::Motion& m : ms)
+    if (m.where.line == 1952) shifted = std::abs(m.point.tip_mm.y() - (3.752 - 101.6)) < 1e-9;
+  CHECK(shifted);
+  // the posted frame is G55's, whose values (0, 0, 0) the program's G10 sets: the notice says so
+  bool said = false;
+  for (const std::string& n : reader->take_notices())
+    said = said || n.find("frame of G55, whose values the input's G10 at line 10 sets") != std::string::npos;
+  CHECK(said);
 }
 
 TEST_CASE("gcode control: motions beyond the machine's axis limits are Infeasible in every input kind") {
@@ -643,5 +651,6 @@ TEST_CASE("gcode control: axis words before any motion mode stay refused, saying
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 5);
   CHECK(e.detail() == "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode (G0 "
-                      "or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block");
+                      "or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or post "
+                      "with a dialect whose [input] power_on names it (fanuc, haas: G0)");
 }

@@ -375,7 +375,7 @@ TEST_CASE("gcode reader: semantic errors with their positions") {
   check("G0 X1\nG81 X1 Y1 Z-5 R1\n", 2, 11, "canned cycle before any feed F");  // cycles are read (post_cycle_test)
   check("G1 X1e5 F1\n", 1, 6, "E words");
   check("G0 U1\n", 1, 4, "U axis");
-  check("M98 P100\n", 1, 1, "subprograms");
+  check("M98 P100\n", 1, 1, "the file holds no program O100");
   check("G0 X1 M3 M4\n", 1, 10, "same modal group");
   check("G1 X1 F-5\n", 1, 7, "expected a feed within");
   check("G91 G0 X900000000\nX900000000\n", 2, 1, "out of range");

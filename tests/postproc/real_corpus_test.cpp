@@ -211,11 +211,14 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
         }
       }
 
-      // arcs as arcs, in their direction; compensation as the source asks
-      INFO("G2 expected " << e.at("arcs").at("cw") << ", program " << p.g2 << "; G3 expected " << e.at("arcs").at("ccw")
+      // arcs as arcs, in their direction (where the manifest counts the arcs kept as arcs apart, those:
+      // slightly spiral G-code arcs are written as lines within the chord tolerance); compensation as
+      // the source asks
+      const json& arcs = e.contains("arcs_as_arcs") ? e.at("arcs_as_arcs") : e.at("arcs");
+      INFO("G2 expected " << arcs.at("cw") << ", program " << p.g2 << "; G3 expected " << arcs.at("ccw")
                           << ", program " << p.g3);
-      CHECK(p.g2 == e.at("arcs").at("cw").get<int>());
-      CHECK(p.g3 == e.at("arcs").at("ccw").get<int>());
+      CHECK(p.g2 == arcs.at("cw").get<int>());
+      CHECK(p.g3 == arcs.at("ccw").get<int>());
       CHECK(p.g41 == e.at("cutcom").at("left").get<int>());
       CHECK(p.g42 == e.at("cutcom").at("right").get<int>());
 

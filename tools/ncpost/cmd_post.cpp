@@ -100,6 +100,9 @@ PostRequest post_request_of(const PostArgs& a) {
   r.input_file = a.input_path;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
+  r.reader.control = r.dialect.input_control;
+  r.reader.power_on = r.dialect.input_power_on;
+  r.reader.power_on_source = fmt::format("the {} dialect's [input] power_on", r.dialect.name);
   r.tolerance_mm = tolerance_of(a.tolerance);
   r.tolerance_is_default = a.tolerance.empty();
   r.nonlinear = *nonlinear::method_named(a.nonlinear);

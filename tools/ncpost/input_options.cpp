@@ -7,6 +7,7 @@
 
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/read/cl_input.hpp"
+#include "ncpost/postproc/read/gcode/work_offsets.hpp"
 #include "number_checks.hpp"
 #include "terminal_text.hpp"
 
@@ -43,6 +44,12 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                  "posts), absolute = the centre's coordinates (as G90.1); an arc that does not fit is refused, "
                  "naming the readings it fits")
       ->check(CLI::IsMember({"incremental", "centre-to-start", "absolute"}));
+  sub.add_option("--work-offsets", o.work_offsets,
+                 "G-code input: the values of the work offsets G54 .. G59.3, G54.1 P1 .. P300 (TOML, or a LinuxCNC "
+                 "var file: 5221 .. 5389; README \"Choices\", G-code input): a program that moves in several is "
+                 "posted in the frame of its first, the others shifted by their values; without it a second offset "
+                 "is refused")
+      ->check(CLI::ExistingFile);
 }
 
 Vec3d workpiece_origin_mm(const JobOptions& o) {
@@ -79,6 +86,8 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.arc_centre = o.arc_centre == "centre-to-start" ? cl::ArcCentre::centre_to_start
                 : o.arc_centre == "absolute"        ? cl::ArcCentre::absolute
                                                     : cl::ArcCentre::incremental;
+  if (!o.work_offsets.empty())
+    ro.work_offsets = std::make_shared<const gcode::WorkOffsetTable>(gcode::load_work_offsets(o.work_offsets));
   return ro;
 }
 

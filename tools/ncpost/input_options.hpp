@@ -22,6 +22,7 @@ struct JobOptions {
   std::string msys = "ignore";      ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
   std::string dwell_p = "auto";     ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
   std::string arc_centre = "incremental";  ///< G-code I J K: "incremental", "centre-to-start" or "absolute"
+  std::string work_offsets;       ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
 };
 
 struct LoadedJob {

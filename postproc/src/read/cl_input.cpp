@@ -86,6 +86,10 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   go.units_given = options.units_given;
   go.integer_dwell = options.integer_dwell;
   go.arc_centre = options.arc_centre;
+  go.work_offsets = options.work_offsets;
+  go.control = options.control;
+  go.power_on = options.power_on;
+  go.power_on_source = options.power_on_source;
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine

@@ -286,6 +286,42 @@ void read_tilted_plane(const Section& s, Dialect& d) {
   d.tilted_plane = std::move(w);
 }
 
+/// The G codes a power-on state may name: motion (G0 G1), plane, units, distance, feed mode, work
+/// offset, and the cancel words of compensation, length and cycles.
+bool power_on_code(const std::string& word) {
+  static const std::set<std::string> kCodes{"G0",  "G1",  "G17", "G18", "G19",   "G20",   "G21",   "G90",
+                                            "G91", "G93", "G94", "G95", "G54",   "G55",   "G56",   "G57",
+                                            "G58", "G59", "G40", "G49", "G80",   "G59.1", "G59.2", "G59.3"};
+  return kCodes.count(word) > 0;
+}
+
+/// [input] (optional): how a G-code program of this control reads where controls differ, and the
+/// modal state the control starts a program in (LinuxCNC's RS274NGC_STARTUP_CODE).
+void read_input(const Section& s, Dialect& d) {
+  s.known({"control", "power_on"});
+  if (s.has("control")) {
+    const std::string control = s.text("control");
+    if (control == "fanuc") d.input_control = cl::ControlFamily::fanuc;
+    else if (control == "linuxcnc") d.input_control = cl::ControlFamily::linuxcnc;
+    else throw s.wrong(s.node("control"), "control", "\"fanuc\" (also Haas) or \"linuxcnc\", got \"" + control + "\"");
+  }
+  if (!s.has("power_on")) return;
+  const std::string text = s.text("power_on");
+  std::string word;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] != ' ') {
+      word += static_cast<char>(std::toupper(static_cast<unsigned char>(text[i])));
+      continue;
+    }
+    if (!word.empty() && !power_on_code(word))
+      throw s.wrong(s.node("power_on"), "power_on",
+                    "G codes of the modal state separated by blanks (G0 G1, G17-G19, G20 G21, G90 G91, G93-G95, "
+                    "G54-G59.3, G40 G49 G80), got \"" + word + "\"");
+    word.clear();
+  }
+  d.input_power_on = text;
+}
+
 }  // namespace
 
 /// A program stop's blocks (`stop`, `optional_stop` of [program]): optional, `blocks` keeps its
@@ -304,7 +340,7 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
     throw InputError(at(file, e.source()), std::string(e.description()));
   }
   const std::vector<std::string> sections{"dialect", "program", "blocks",  "motion", "arcs",         "comments",
-                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation", "tilted_plane"};
+                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation", "tilted_plane", "input"};
   for (const auto& [key, node] : root)
     if (std::find(sections.begin(), sections.end(), std::string(key.str())) == sections.end()) {
       std::string list;
@@ -352,6 +388,7 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   d.dwell = dwell.blocks("blocks", {"{ms}", "{s}"});
   read_compensation(Section(file, root, "compensation"), d);
   if (root.contains("tilted_plane")) read_tilted_plane(Section(file, root, "tilted_plane"), d);
+  if (root.contains("input")) read_input(Section(file, root, "input"), d);
   return d;
 }
 

@@ -21,7 +21,10 @@
 #include "ncpost/postproc/read/gcode/gcode_modal.hpp"
 
 #include "read/gcode/gcode_framing.hpp"
+#include "read/gcode/gcode_oword.hpp"
+#include "read/gcode/gcode_oword_flow.hpp"
 #include "read/gcode/gcode_program_flow.hpp"
+#include "read/gcode/gcode_subprogram_calls.hpp"
 #include "read/units_evidence.hpp"
 
 namespace ncpost::gcode {
@@ -100,6 +103,8 @@ struct GcodeClReader::State {
       const std::string slot_letters = "XYZABC";
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(slot_letters.find(machine.rotary(k).letter));
     }
+    interpreter.set_work_offsets(options.work_offsets, options.control);
+    if (!options.power_on.empty()) interpreter.power_on(options.power_on, options.power_on_source, options.units_given);
     interpreter.on_rtcp_switch([this](const ProgramPoint& p, bool rtcp_on) { return reframed(p, rtcp_on); });
   }
 
@@ -576,8 +581,21 @@ struct GcodeClReader::State {
                                                                 "or a leader before the opening '%')"));
   }
 
-  /// Reads and interprets the next block; false at the end of the program.
+  /// Reads and interprets the next block; false at the end of the program. An error inside a
+  /// subprogram names the calls that led there.
   bool read_block() {
+    try {
+      return read_one_block();
+    } catch (const InputError& e) {
+      const std::string chain = calls.chain();
+      if (chain.empty() || (e.detail().size() >= chain.size() &&
+                            e.detail().compare(e.detail().size() - chain.size(), chain.size(), chain) == 0))
+        throw;
+      throw InputError(e.where(), e.detail() + chain, e.source_line());
+    }
+  }
+
+  bool read_one_block() {
     if (leader_lines < 0) find_leader();
     std::string_view line;
     const std::uint64_t line_offset = source.next_line_offset();
@@ -589,6 +607,11 @@ struct GcodeClReader::State {
     }
     const int line_number = source.line_number();
     if (line_number <= leader_lines) return true;
+    if (const std::optional<OWord> o = read_o_word(line)) {
+      seen_content = true;
+      oword_flow.follow(*o, line, line_offset, line_number);
+      return true;
+    }
     MacroFlow flow;
     if (may_hold_macro(line)) {
       if (options.block_delete && is_deleted(line)) return skip_deleted(line_number);
@@ -606,6 +629,9 @@ struct GcodeClReader::State {
         opened_percent = true;
         return true;
       }
+      if (calls.active())
+        throw InputError({file, line_number, block.column},
+                         fmt::format("{} ends at the '%' without M99 (or endsub)", calls.innermost()));
       release_held(known_before);
       units_hint();
       return false;  // the closing '%': the rest of the file is not part of the program
@@ -613,8 +639,26 @@ struct GcodeClReader::State {
     seen_content = true;
     if (block.deleted && options.block_delete) return skip_deleted(line_number);
     const bool goes_on = interpret_block(line, line_number);
-    if (goes_on) program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
+    if (goes_on && effect.call) follow_call(*effect.call, line_number, std::string(line));
+    else if (goes_on) program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
     return goes_on;
+  }
+
+  // ---- subprograms: M98/M97/M99 (the block's effect) and o-word statements (their own lines)
+  SubprogramCalls calls{source, file};
+  OWordFlow oword_flow{source, file, parameters, calls};
+
+  /// `text`: the calling line, for the caret of an error (the call re-reads the file).
+  void follow_call(const SubprogramCall& c, int line_number, const std::string& text) {
+    const SubprogramCalls::Position back{source.next_line_offset(), line_number + 1};
+    try {
+      if (c.m == 98) calls.call_program(c.p, c.times, back, line_number, c.column);
+      else if (c.m == 97) calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
+      else calls.leave(true, parameters, line_number, c.column);
+    } catch (const InputError& e) {
+      if (!e.source_line().empty()) throw;
+      throw InputError(e.where(), e.detail(), text);
+    }
   }
 
   static bool is_deleted(std::string_view line) {
@@ -955,6 +999,12 @@ std::vector<std::string> GcodeClReader::take_notices() {
   return out;
 }
 
+std::vector<std::string> GcodeClReader::header_notes() const {
+  const GcodeReaderOptions& o = state_->options;
+  if (o.power_on.empty()) return {};
+  return {fmt::format("G-code input read from the power-on state {} ({})", o.power_on, o.power_on_source)};
+}
+
 bool GcodeClReader::last_motion_rtcp() const { return state_->last_rtcp; }
 int GcodeClReader::lines_read() const { return state_->source.line_number(); }
 
@@ -968,6 +1018,7 @@ class FileGcodeReader final : public cl::Reader {
       : in_(std::move(in)), reader_(*in_, path, m, s, o) {}
   std::optional<cl::Record> next() override { return reader_.next(); }
   std::vector<std::string> take_notices() override { return reader_.take_notices(); }
+  std::vector<std::string> header_notes() const override { return reader_.header_notes(); }
 
  private:
   std::unique_ptr<std::ifstream> in_;

@@ -59,13 +59,7 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
       // an L beyond any G10 form is no kind (and must not overflow the int cast)
       const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
       const std::string p_text = p ? fmt::format(" P{}", number(*p)) : std::string();
-      if (kind == 2 || kind == 20)
-        return {ControlWordAction::refuse,
-                fmt::format("G10 L{}{} sets a work offset from within the program: the coordinates that follow are "
-                            "relative to an offset ncpost cannot know, so a re-post would be wrong; remove the G10 "
-                            "blocks and the work-offset selections they serve, and give the part's position with "
-                            "--workpiece-origin",
-                            kind, p_text)};
+      if (kind == 2 || kind == 20) return {ControlWordAction::none, {}};  // work offsets (gcode_modal.cpp)
       if (kind == 1 || kind == 10 || kind == 11)
         return {ControlWordAction::refuse,
                 fmt::format("G10 L{}{} writes the tool table from within the program: not supported; remove it "

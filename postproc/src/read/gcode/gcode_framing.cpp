@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "read/gcode/gcode_framing.hpp"
+#include "read/gcode/gcode_oword.hpp"
 
 #include <fmt/format.h>
 
@@ -90,8 +91,9 @@ Leader find_leader(std::string_view head, bool complete, const std::string& file
       if (!motion_line && has_motion_words(block, axis_letters)) motion_line = lines.number();
       ended = ended || ends_program(block);
     } catch (const InputError&) {
-      // a macro statement may move (X#1): counted as a motion, never skipped as a leader
-      if (may_hold_macro(line)) motion_line = motion_line ? motion_line : lines.number();
+      // a macro statement may move (X#1), an o-word statement calls or loops over blocks that may:
+      // counted as a motion, never skipped as a leader
+      if (may_hold_macro(line) || read_o_word(line)) motion_line = motion_line ? motion_line : lines.number();
       else not_gcode = true;
     }
   }
@@ -121,7 +123,7 @@ Leader find_leader(std::string_view head, bool complete, const std::string& file
       parse_block(line, block, file, lines.number());
       if (has_motion_words(block, axis_letters)) motion_after = lines.number();
     } catch (const InputError&) {
-      if (!may_hold_macro(line)) break;  // not G-code after the '%': text after the closing '%'
+      if (!may_hold_macro(line) && !read_o_word(line)) break;  // not G-code after the '%': text after the closing '%'
       motion_after = lines.number();
     }
   }

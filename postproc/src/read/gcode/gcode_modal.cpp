@@ -60,7 +60,7 @@ enum GGroup : int {
 /// The modal group of a supported G code, or -1 with `why` naming what is not supported.
 int g_group(int code10, const char*& why) {
   switch (code10) {
-    case 40: case 280: case 300: case 530: return g_non_modal;
+    case 40: case 100: case 280: case 300: case 530: return g_non_modal;
     case 0: case 10: case 20: case 30: case 800: return g_motion;
     case 170: case 180: case 190: return g_plane;
     case 900: case 910: return g_distance;
@@ -232,6 +232,7 @@ void BlockEffect::clear() {
   inverse_time = false;
   after_motion.clear();
   program_end = false;
+  call.reset();
   cycle.reset();
   cycle_off = false;
 }
@@ -294,7 +295,7 @@ struct Interpreter::Codes {
   std::array<bool, g_group_count> in_group{};
   Code control_units{-1, 0};
   bool control_inch = false, control_feeds_too = false;
-  Code m_stop{-1, 0}, m_spindle{-1, 0}, m_tool{-1, 0}, m_coolant{-1, 0}, m_rtcp{-1, 0};
+  Code m_stop{-1, 0}, m_spindle{-1, 0}, m_tool{-1, 0}, m_coolant{-1, 0}, m_rtcp{-1, 0}, m_call{-1, 0};
 
   bool in(int g) const { return in_group[static_cast<std::size_t>(g)]; }
   const Code& of(int g) const { return group[static_cast<std::size_t>(g)]; }
@@ -314,6 +315,7 @@ void Interpreter::apply(const Block& block, int line_number, std::string_view li
   apply_modal_settings(cx, w, codes, fx);
   apply_motion(cx, w, codes, fx);
   apply_stop(cx, codes, fx);
+  apply_call(cx, w, codes, fx);
 }
 
 Interpreter::Words Interpreter::read_words(const Context& cx) const {
@@ -451,7 +453,7 @@ void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes,
       case 6: take(codes.m_tool, c); break;
       case 7: case 8: case 9: take(codes.m_coolant, c); break;
       case 128: case 129: case 428: case 429: take(codes.m_rtcp, c); break;
-      case 97: case 98: case 99: cx.fail(c.column, fmt::format("subprograms (M{}) are not supported", c.code10));
+      case 97: case 98: case 99: take(codes.m_call, c); break;
       case 91: case 92:
         if (has_axis_words(w)) cx.fail(c.column, fmt::format(kMachineDatumM, c.code10));
         [[fallthrough]];
@@ -551,6 +553,7 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
   apply_tool_length(cx, w, codes, fx);
   apply_rtcp(cx, codes);
   apply_work_offset(cx, w, codes);
+  if (codes.is(g_non_modal, 100)) apply_g10(cx, w, codes);
   if (codes.is(g_dynamic_offset, 2540))
     notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
@@ -578,29 +581,138 @@ void Interpreter::apply_arc_distance(const Context& cx, const Codes& codes) {
   state_.arc_centre_line = cx.line_number;
 }
 
-// G54-G59, G54.1 P<n>, G59.1-G59.3: the work offset places W on the machine (the job's
-// --workpiece-origin). One per program: a second one after the program has moved would put the
-// next operation's coordinates on the first one's part, so it is refused.
+// G54-G59, G54.1 P<n>, G59.1-G59.3: the offset in force at the first motion places W (the job's
+// --workpiece-origin); the coordinates under another are shifted into its frame by the offsets'
+// values (work_frames.hpp), and refused where those are not known.
 void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Codes& codes) {
   ModalState& st = state_;
   if (!codes.in(g_coordinates)) return;
   const Code c = codes.of(g_coordinates);
   std::string name = g_name(c.code10);
-  if (c.code10 == 541) name += w.has('P') ? fmt::format(" P{}", w.get('P')) : std::string(" (without P)");
-  // (moves before any offset word: in the control's active one, G54 from power-on)
-  const std::string in_force = st.work_offset.empty() ? "G54" : st.work_offset;
-  if (st.moved_in_work && name != in_force)
-    cx.fail(c.column, fmt::format("{}: a second work offset (the program moved in {} {}): the post places one "
-                                  "workpiece frame (--workpiece-origin); post the operations of each set-up apart",
-                                  name, st.work_offset.empty() ? "the control's active offset" : st.work_offset,
-                                  st.work_offset.empty() ? std::string("before it")
-                                                         : fmt::format("from line {}", st.work_offset_line)));
+  if (c.code10 == 541) {
+    const std::optional<std::string> n =
+        w.has('P') ? work_offset_name(fmt::format("G54.1 P{}", w.get('P'))) : std::optional<std::string>();
+    if (!n) cx.fail(w.has('P') ? w.col('P') : c.column, "G54.1 needs P1 .. P300 (the number of the extended work offset)");
+    name = *n;
+  }
+  const bool fixed = frames_.fixed();
+  const std::string base = WorkFrames::named(frames_.base());
+  const int moved_line = st.work_offset_line;
   if (name != st.work_offset) st.work_offset_line = cx.line_number;
   st.work_offset = name;
-  if (c.code10 != 540)
+  if (word_axes_ && fixed && name != frames_.base())
+    cx.fail(c.column, fmt::format("{}: a second work offset on the machine {}, whose words are no Cartesian frame: "
+                                  "post the operations of each set-up apart", name, axis_letters_));
+  if (const std::string why = frames_.select(name); !why.empty())
+    cx.fail(c.column, moved_line ? fmt::format("{} (selected at line {})", why, moved_line) : why);
+  if (fixed && name != frames_.base()) {
+    const std::array<double, 6>& d = frames_.shift();
+    notice_once("work-offset " + name, cx.line_number, c.column,
+                fmt::format("{}: its coordinates are placed in the frame of {} (the posted program's W), shifted by "
+                            "X{:+.4f} Y{:+.4f} Z{:+.4f} mm{} (the offsets' values from {})",
+                            name, base, d[0], d[1], d[2],
+                            d[3] != 0.0 || d[4] != 0.0 || d[5] != 0.0
+                                ? fmt::format(" A{:+.4f} B{:+.4f} C{:+.4f} deg", rad_to_deg(d[3]), rad_to_deg(d[4]),
+                                              rad_to_deg(d[5]))
+                                : std::string(),
+                            frames_.source_of(name)));
+  } else if (c.code10 != 540) {
     notice_once("work-offset", cx.line_number, c.column,
                 fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
                             name));
+  }
+}
+
+// The first motion in work coordinates fixes the posted frame; where the program's own G10 set
+// that offset's values, the posted program (which does not set them) needs them on the control
+void Interpreter::note_moved(const Context& cx) {
+  if (frames_.fixed()) return;
+  frames_.moved();
+  const std::string source = frames_.source_of(frames_.base());
+  if (source.rfind("G10", 0) == 0)
+    notice_once("base-g10", cx.line_number, cx.block.column,
+                fmt::format("the posted program moves in the frame of {}, whose values the input's {} sets: the posted "
+                            "program does not set them (set {} on the control as the input does before running it)",
+                            WorkFrames::named(frames_.base()), source, WorkFrames::named(frames_.base())));
+}
+
+void Interpreter::set_work_offsets(std::shared_ptr<const WorkOffsetTable> table, cl::ControlFamily control) {
+  std::array<bool, 6> used{};
+  for (std::size_t i = 0; i < 6; ++i) used[i] = !word_axes_ && axis_letters_.find("XYZABC"[i]) != std::string::npos;
+  frames_ = WorkFrames(std::move(table), used);
+  control_ = control;
+}
+
+void Interpreter::power_on(const std::string& codes, const std::string& source, bool units_given) {
+  Block block;
+  parse_block(codes, block, source, 1);
+  const bool inch = state_.inch, feed_inch = state_.feed_inch;
+  BlockEffect scratch;  // cancel words (G40, G49, G80) change nothing to post
+  apply(block, 0, codes, scratch);
+  if (scratch.has_motion) throw InputError({source, 1, 0}, "the power-on state moves the machine: expected G codes only");
+  if (units_given) state_.inch = inch, state_.feed_inch = feed_inch;
+  state_.units_programmed = false;
+  state_.work_offset_line = 0;
+  notices_.clear();
+  noticed_keys_.clear();
+}
+
+// The offset a G10 L2/L20 P<n> names on the program's control (docs/formats.md "Work offsets")
+std::string Interpreter::g10_offset_name(const Context& cx, const Words& w, int kind, int column) const {
+  using F = cl::ControlFamily;
+  const double p = w.has('P') ? w.get('P') : -1.0;
+  if (p < 0.0 || p != std::floor(p) || p > 1000.0)
+    cx.fail(w.has('P') ? w.col('P') : column, fmt::format("G10 L{} needs P, the number of the offset it sets", kind));
+  const int n = static_cast<int>(p);
+  const auto control_needed = [&](const char* what) {
+    cx.fail(column, fmt::format("G10 L{} P{} {}: say which control the program is for with --dialect (a dialect whose "
+                                "[input] control is \"fanuc\" or \"linuxcnc\")", kind, n, what));
+  };
+  if (kind == 20 && control_ == F::fanuc) {
+    if (const std::optional<std::string> name = work_offset_name(fmt::format("G54.1 P{}", n))) return *name;
+    cx.fail(w.col('P'), "G10 L20 (Fanuc, Haas) sets an extended work offset G54.1 P1 .. P300: expected P1 .. P300");
+  }
+  if (kind == 20 && control_ == F::unknown)
+    control_needed("sets G54.1 P<n> on Fanuc and Haas, but on LinuxCNC makes the current position read the values");
+  if (n == 0) {
+    if (control_ == F::linuxcnc) return frames_.active();
+    if (control_ == F::fanuc)
+      cx.fail(w.col('P'), "G10 L2 P0 sets the external work offset (added to every offset): not supported; remove it "
+                          "and give its values in the offsets of --work-offsets");
+    control_needed("is the active offset on LinuxCNC but the external offset on Fanuc");
+  }
+  if (const std::optional<std::string> name = work_offset_of_register(n)) return *name;
+  cx.fail(w.col('P'), fmt::format("G10 L{} P{}: expected P1 .. P9 (G54 .. G59, G59.1 .. G59.3){}", kind, n,
+                                  control_ == F::linuxcnc ? " or P0 (the active offset)" : ""));
+}
+
+// G10 L2 P<n> (the offset's values, machine coordinates) and G10 L20 (Fanuc, Haas: G54.1 P<n>'s
+// values; LinuxCNC: the values that make the current position read the words)
+void Interpreter::apply_g10(const Context& cx, const Words& w, const Codes& codes) {
+  ModalState& st = state_;
+  const int column = codes.of(g_non_modal).column;
+  const int kind = static_cast<int>(w.get('L'));  // 2 or 20 (classify_control_word refuses the others)
+  if (st.incremental)
+    cx.fail(column, "G10 under G91: Fanuc adds the values to the offset, LinuxCNC sets them; write G90 before it");
+  if (w.has('R')) cx.fail(w.col('R'), "G10 with R (a rotated coordinate system) is not supported");
+  const std::string name = g10_offset_name(cx, w, kind, column);
+  const bool reading = kind == 20 && control_ == cl::ControlFamily::linuxcnc;
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+  std::array<std::optional<double>, 6> values{};
+  for (std::size_t i = 0; i < 6; ++i) {
+    const char L = slots_[i];
+    if (!L || !w.has(L)) continue;
+    values[i] = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
+    if (!(std::abs(*values[i]) <= kMaxCoordinate)) cx.fail(w.col(L), fmt::format("{} is out of range", L));
+    if (reading && !st.known[i])
+      cx.fail(w.col(L), fmt::format("G10 L20 sets {} so that the current position reads {}, and where {} stands is "
+                                    "not known yet (no motion has programmed it)", L, w.get(L), L));
+  }
+  if (word_axes_) cx.fail(column, fmt::format("G10 on the machine {}, whose words are no Cartesian frame: not supported",
+                                              axis_letters_));
+  const std::string why = reading ? frames_.set_reading(name, st.position, values) : frames_.set_value(name, values);
+  if (!why.empty()) cx.fail(column, why);
+  frames_.note_source(name, fmt::format("G10 at line {}", cx.line_number));
 }
 
 // G43 H<n> (and G43.4, G43.5, G234): the tool's length from register n, which the post writes
@@ -696,11 +808,12 @@ void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Code
   const double length_scale = st.inch ? kMmPerInch : 1.0;
   if (st.incremental) fail(codes.of(g_motion).column ? codes.of(g_motion).column : cx.block.column,
                            "canned cycles under G91 (incremental Z and R) are not supported");
-  if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale;
-  if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale;
+  if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale + frames_.shift()[2];
+  if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale + frames_.shift()[2];
   if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
-  if (w.has('P')) st.cycle.p_s = dwell_seconds(cx, w, 'P', g_name(st.cycle.code10));
-  if (w.has('L') || w.has('K'))
+  const bool call = codes.m_call.code10 == 97 || codes.m_call.code10 == 98;  // P and L are the call's
+  if (w.has('P') && !call) st.cycle.p_s = dwell_seconds(cx, w, 'P', g_name(st.cycle.code10));
+  if ((w.has('L') && !call) || w.has('K'))
     fail(w.col(w.has('L') ? 'L' : 'K'), "repeated canned cycles (L or K) are not supported");
 }
 
@@ -785,7 +898,7 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
       if (!first_axis_column || w.col(L) < first_axis_column) first_axis_column = w.col(L);
     }
   const int axis_column = first_axis_column ? first_axis_column : cx.block.column;
-  if (codes.is(g_non_modal, 40)) return;  // G4: X is its time (read_dwell)
+  if (codes.is(g_non_modal, 40) || codes.is(g_non_modal, 100)) return;  // G4: X is its time; G10: offset values
   const bool home_return = codes.is(g_non_modal, 280) || codes.is(g_non_modal, 300);
   if (home_return) note_reference_return(cx, w, codes, fx);
   if (codes.is(g_non_modal, 530)) note_machine_coordinates(cx, w, codes, fx);
@@ -822,13 +935,16 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     fx.has_motion = fx.end != fx.start;  // G91 G28 Z0: no intermediate move
     if (fx.has_motion) check_length_in_force(cx, w, MotionMode::rapid, axis_column);
     st.moved_in_work = st.moved_in_work || fx.has_motion;
+    if (fx.has_motion) note_moved(cx);
     return;
   }
   if (st.motion == MotionMode::none)
     fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
-                      "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block");
+                      "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or "
+                      "post with a dialect whose [input] power_on names it (fanuc, haas: G0)");
   if (!word_axes_) check_length_in_force(cx, w, st.motion, axis_column);
   st.moved_in_work = true;
+  note_moved(cx);
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
     fail(codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column,
          fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
@@ -855,6 +971,11 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
   ModalState& st = state_;
   const double length_scale = st.inch ? kMmPerInch : 1.0;
   ProgramPoint end = st.position;
+  const std::array<double, 6>& shift = frames_.shift();
+  if (st.rtcp != Rtcp::off && (shift[3] != 0.0 || shift[4] != 0.0 || shift[5] != 0.0))
+    cx.fail(axis_column, fmt::format("{} turns the rotary axes against {} (a rotary value in the offsets), and the "
+                                     "program moves the tool tip (RTCP): not supported; post the operations of each "
+                                     "set-up apart", st.work_offset, frames_.base()));
   std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
   const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
   for (std::size_t i = 0; i < 6; ++i) {
@@ -864,7 +985,7 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
     if (w.has(L)) {
       fx.programmed[i] = true;
       const double v = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
-      end[i] = st.incremental ? st.position[i] + v : v;
+      end[i] = st.incremental ? st.position[i] + v : v + frames_.shift()[i];
       if (!(std::abs(end[i]) <= kMaxCoordinate))
         cx.fail(w.col(L), fmt::format("{} is out of range (expected a coordinate within +-1e9)", L));
     }
@@ -931,7 +1052,11 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
     const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
     if (!(std::abs(o1) <= kMaxCoordinate && std::abs(o2) <= kMaxCoordinate))
       fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
-    const std::array<double, 2> centre = arc_centre_of(st.arc_centre, fx.start, ax, o1, o2);
+    // G90.1: the centre is a point of the offset's frame (shifted into the base frame like the end)
+    const bool absolute = st.arc_centre == ArcCentre::absolute;
+    const std::array<double, 2> centre =
+        arc_centre_of(st.arc_centre, fx.start, ax, o1 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a1)] : 0.0),
+                      o2 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a2)] : 0.0));
     outcome = arc_from_centre(fx.start, end, st.plane, clockwise, centre[0], centre[1], turns);
     if (!outcome.arc) {
       const ArcGiven given{fx.start, end, st.plane, clockwise, o1, o2, turns};
@@ -959,6 +1084,31 @@ void Interpreter::apply_stop(const Context& cx, const Codes& codes, BlockEffect&
                                        "of the program would cut on the wrong pallet; post each pallet's part apart",
                                        m_stop.code10));
   }
+}
+
+// M98 P<program> L<times>, M97 P<block> L<times>, M99: followed by the reader after the block
+void Interpreter::apply_call(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  const Code c = codes.m_call;
+  if (c.code10 < 0) return;
+  if (fx.program_end) cx.fail(c.column, fmt::format("M{} beside M2/M30", c.code10));
+  SubprogramCall call;
+  call.m = c.code10;
+  call.column = c.column;
+  if (c.code10 == 99) {
+    if (w.has('P')) cx.fail(w.col('P'), "M99 P (return to a block number) is not supported");
+    fx.call = call;
+    return;
+  }
+  if (!w.has('P')) cx.fail(c.column, fmt::format("M{} needs P (the {} it calls)", c.code10, c.code10 == 98 ? "program" : "block"));
+  call.p = w.get('P');
+  if (c.code10 == 97 && !(call.p >= 1.0 && call.p <= 99999.0 && call.p == std::floor(call.p)))
+    cx.fail(w.col('P'), "M97 P: expected a block number N1 .. N99999");
+  if (w.has('L')) {
+    const double l = w.get('L');
+    if (!(l >= 1.0 && l <= 9999.0 && l == std::floor(l))) cx.fail(w.col('L'), "expected a repeat count L1 .. L9999");
+    call.times = static_cast<int>(l);
+  }
+  fx.call = call;
 }
 
 }  // namespace ncpost::gcode

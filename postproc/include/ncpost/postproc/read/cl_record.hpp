@@ -6,6 +6,7 @@
 // Units: every length is in mm and every angle in degrees *as written* is converted by the
 // reader: positions in mm in W, tool axis unit vectors in W, feeds in mm/min (or mm/rev).
 // Every record carries the position of its first character in the source.
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -13,6 +14,10 @@
 
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/machines/input_error.hpp"
+
+namespace ncpost::gcode {
+struct WorkOffsetTable;  // ncpost/postproc/read/gcode/work_offsets.hpp
+}
 
 namespace ncpost::cl {
 
@@ -175,6 +180,10 @@ enum class IntegerDwell { automatic, milliseconds, seconds };
 enum class ArcCentre { incremental, centre_to_start, absolute };
 
 /// Options of every CL reader.
+/// The control family whose reading of a G-code program applies where controls differ (G10 L20:
+/// Fanuc and Haas set an extended offset's value, LinuxCNC makes the current position read the value).
+enum class ControlFamily { unknown, fanuc, linuxcnc };
+
 struct ReaderOptions {
   bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
   bool units_given = false;    ///< `default_inch` is the user's word (--units), not the default
@@ -189,6 +198,12 @@ struct ReaderOptions {
   ArcCentre arc_centre = ArcCentre::incremental;         ///< G-code: what I J K of an arc give
   /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
   double curve_tolerance_mm = 0.01;
+  ControlFamily control = ControlFamily::unknown;  ///< G-code: the control the program was written for
+  /// G-code: the modal state the control starts in ("G0 G17 G90 G94 G54"; "" none) and where it
+  /// was given (for messages and the program's header).
+  std::string power_on, power_on_source;
+  /// G-code: the values of the work offsets (`--work-offsets FILE`); null: none given.
+  std::shared_ptr<const gcode::WorkOffsetTable> work_offsets;
 };
 
 /// A pull-style stream of records; readers stream so memory stays flat in the input size.
@@ -199,6 +214,9 @@ class Reader {
   virtual std::optional<Record> next() = 0;
   /// Notices gathered so far (unsupported statements, ignored words), with their position.
   virtual std::vector<std::string> take_notices() { return {}; }
+  /// What the posted program's header should say about how the input was read (e.g. the power-on
+  /// modal state a G-code input was read from); known before the first record.
+  virtual std::vector<std::string> header_notes() const { return {}; }
   /// What in the input most likely explains a failure to post it ("" if nothing), for the
   /// message of that failure (e.g. an NX MSYS that rotates the MCS, posted as written).
   virtual std::string failure_hint() const { return {}; }

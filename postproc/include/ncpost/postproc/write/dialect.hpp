@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "ncpost/postproc/read/cl_record.hpp"
+
 namespace ncpost {
 
 namespace cl {
@@ -125,6 +127,12 @@ struct Dialect {
   int linear_decimals = 4;         ///< mm
   int angle_decimals = 4;          ///< deg
   std::shared_ptr<const TiltedPlaneWords> tilted_plane;  ///< none: `post --tilted-plane` writes today's blocks
+  /// [input] control: how the G-code input of a re-post reads where controls differ (G10 L20, G10
+  /// L2 P0); unknown: those forms are refused.
+  cl::ControlFamily input_control = cl::ControlFamily::unknown;
+  /// [input] power_on: the G codes of the modal state the control starts a program in ("G0 G17 G90
+  /// G94 G54"), applied before a G-code input's first block; "" none.
+  std::string input_power_on;
 };
 
 /// The built-in dialect names, in the order of the help text.

@@ -78,6 +78,13 @@ struct GcodeReaderOptions {
   /// Single-turn planar arcs with the rotary axes still (not under G93) become a cl::Circle and
   /// their end motion, which the post writes as G2/G3; otherwise every arc is expanded into points.
   bool circles = false;
+  /// The values of the work offsets (--work-offsets; null: none) and the control whose reading
+  /// of G10 L20 and G10 L2 P0 applies (work_frames.hpp).
+  std::shared_ptr<const WorkOffsetTable> work_offsets;
+  cl::ControlFamily control = cl::ControlFamily::unknown;
+  /// The modal state the control starts in ("G0 G17 G90 G94 G54", Interpreter::power_on) and where it
+  /// was given; the posted program's header names it. "" none: the program must set what it uses.
+  std::string power_on, power_on_source;
   /// A machine whose words are not a serial chain's (the TRR-XY machine: X Y U V W, all lengths):
   /// `machine.axes` lists the words in program order (their letters and limits), and this maps the
   /// words (AxisPosition slots, mm) to the tool tip and axis in W; nullopt, with `why`, where the
@@ -97,6 +104,7 @@ class GcodeClReader final : public cl::Reader {
 
   std::optional<cl::Record> next() override;
   std::vector<std::string> take_notices() override;
+  std::vector<std::string> header_notes() const override;
 
   /// Whether the last motion returned was read as an RTCP (tool-tip) motion.
   bool last_motion_rtcp() const;

@@ -11,15 +11,16 @@
 // whose end is not on it is refused, naming the other readings it fits.
 //
 // Supported and rejected words (InputError with the exact column):
-//   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1
+//   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1 P1-P300
+//   (work offsets: placed in one frame, work_frames.hpp) G10 L2/L20 (their values)
 //   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
 //   M429 (other M codes pass through as comments with a notice; M91/M92 beside axis words, Heidenhain's
 //   machine coordinates, are refused); words A B C D F H I J K L N O P Q
 //   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
 //   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
 //   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and
-//   cycles under G91 or with L/K repeats, G10/G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
-//   subprograms (M97/M98/M99), U V W and E are "not supported" errors; so are rotary letters the
+//   cycles under G91 or with L/K repeats, other G10 forms, G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
+//   U V W and E are "not supported" errors (M97/M98/M99 are SubprogramCall effects); so are rotary letters the
 //   machine lacks.
 //
 // RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
@@ -33,6 +34,7 @@
 #include "ncpost/postproc/read/cl_record.hpp"
 #include "ncpost/postproc/read/gcode/gcode_arc.hpp"
 #include "ncpost/postproc/read/gcode/gcode_block.hpp"
+#include "ncpost/postproc/read/gcode/work_frames.hpp"
 
 namespace ncpost::gcode {
 
@@ -88,6 +90,15 @@ struct MachineMove {
   std::array<double, 6> machine_value{};       ///< G53: the machine coordinate of each (mm, rad)
 };
 
+/// A subprogram call or return of a block (Fanuc/Haas M98 P L, Haas M97 P L, M99): the reader
+/// follows it after the block's motion (gcode_subprogram_calls.hpp).
+struct SubprogramCall {
+  int m = 98;        ///< 97, 98 or 99
+  double p = 0.0;    ///< M98: the program number; M97: the block number
+  int times = 1;     ///< L (1 when not given)
+  int column = 0;    ///< of the M word
+};
+
 /// What one block does. Cleared by `Interpreter::apply` before it fills it.
 struct BlockEffect {
   std::optional<cl::Feed> feed;            ///< F under G94/G95
@@ -110,6 +121,7 @@ struct BlockEffect {
   bool inverse_time = false;               ///< G93 active for this motion
   std::vector<cl::Record> after_motion;   ///< M0/M1 (cl::Stop) and unknown M codes (passed through)
   bool program_end = false;                ///< M2 / M30
+  std::optional<SubprogramCall> call;      ///< M97 / M98 / M99
   /// A canned-cycle block: the cycle of this hole (distances from the motion's end, the hole at
   /// its R plane, along machine Z), written before the motion; `cycle_off` ends a cycle first.
   std::optional<cl::Cycle> cycle;
@@ -142,6 +154,15 @@ class Interpreter {
   using Reframe = std::function<ProgramPoint(const ProgramPoint& p, bool rtcp_on)>;
   void on_rtcp_switch(Reframe reframe) { reframe_ = std::move(reframe); }
   std::vector<std::string> take_notices();
+  /// The values of the work offsets (null: none known but the program's G10) and the control
+  /// whose reading of G10 L20 and G10 L2 P0 applies (docs/formats.md "Work offsets").
+  void set_work_offsets(std::shared_ptr<const WorkOffsetTable> table, cl::ControlFamily control);
+  /// Applies `codes` (G codes of the modal state the control starts in, e.g. "G0 G17 G90 G94 G54")
+  /// before the program's first block; `source` names where they come from (messages). Units among
+  /// them are the default units, not the program's own (the units evidence still applies), and are
+  /// left out where the user gave the units (`units_given`).
+  void power_on(const std::string& codes, const std::string& source, bool units_given);
+  const WorkFrames& work_frames() const { return frames_; }
 
  private:
   struct Words;    ///< the words of one block by letter
@@ -160,6 +181,9 @@ class Interpreter {
   void apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_arc_distance(const Context& cx, const Codes& codes);
   void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
+  void apply_g10(const Context& cx, const Words& w, const Codes& codes);
+  void note_moved(const Context& cx);
+  std::string g10_offset_name(const Context& cx, const Words& w, int kind, int column) const;
   void apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_rtcp(const Context& cx, const Codes& codes);
   void check_length_in_force(const Context& cx, const Words& w, MotionMode motion, int column);
@@ -173,6 +197,7 @@ class Interpreter {
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
   void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx);
   void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
+  void apply_call(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
 
   std::string file_;
   std::string axis_letters_;
@@ -184,6 +209,8 @@ class Interpreter {
   int last_arc_line_ = 0;          ///< the last arc (for the message of an arc without I J or R)
   std::string last_arc_words_;     ///< its centre words ("I and J", "R")
   ModalState state_;
+  WorkFrames frames_{nullptr, {}};
+  cl::ControlFamily control_ = cl::ControlFamily::unknown;
   Reframe reframe_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;
