@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Every command on the TRR-XY machine through the one per-kind dispatch (tools/ncpost/machine_kind.hpp,
+// Every command on the TRR-XY machine through the one per-kind dispatch (tools/ncpost/commands/machine_kind.hpp,
 // kind_steps.hpp; issue 16 item 2): preview through the common preview (its CSV, summary and HTML),
 // plan/simulate/identify through the common writers and messages, the options this machine has not
 // refused (exit 1, nothing written), and --nonlinear harmonic measured by re-executing the program.
