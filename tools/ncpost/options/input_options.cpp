@@ -46,7 +46,7 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
       ->check(CLI::IsMember({"incremental", "centre-to-start", "absolute"}));
   sub.add_option("--work-offsets", o.work_offsets,
                  "G-code input: the values of the work offsets G54 .. G59.3, G54.1 P1 .. P300 (TOML, or a LinuxCNC "
-                 "var file: 5221 .. 5389; README \"Choices\", G-code input): a program that moves in several is "
+                 "var file: 5221 .. 5389; docs/choices.md, G-code input): a program that moves in several is "
                  "posted in the frame of its first, the others shifted by their values; without it a second offset "
                  "is refused")
       ->check(CLI::ExistingFile);

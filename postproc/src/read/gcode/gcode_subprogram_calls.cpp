@@ -125,12 +125,7 @@ void SubprogramCalls::call_program(double p, int times, Position back, int line,
   if (!body)
     fail(line, column, fmt::format("M98 P{}: the file holds no program {} (subprograms in the control's memory or in "
                                    "other files are not read: append it after M30)", number, label));
-  Frame f;
-  f.label = label;
-  f.back = back;
-  f.body = *body;
-  f.repeats_left = times - 1;
-  enter(std::move(f), line, column);
+  enter(Frame{label, 0, back, *body, times - 1, std::nullopt, 0}, line, column);
 }
 
 void SubprogramCalls::call_block(int n, int times, Position back, int line, int column) {
@@ -138,12 +133,7 @@ void SubprogramCalls::call_block(int n, int times, Position back, int line, int 
   const std::string label = fmt::format("N{}", n);
   const std::optional<Position> body = find(label, line, column);
   if (!body) fail(line, column, fmt::format("M97 P{}: the file holds no block N{}", n, n));
-  Frame f;
-  f.label = label;
-  f.back = back;
-  f.body = *body;
-  f.repeats_left = times - 1;
-  enter(std::move(f), line, column);
+  enter(Frame{label, 0, back, *body, times - 1, std::nullopt, 0}, line, column);
 }
 
 void SubprogramCalls::call_sub(const std::string& label, const std::vector<ParamValue>& arguments, Parameters& params,
