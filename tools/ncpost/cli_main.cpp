@@ -38,6 +38,7 @@ int ncpost::cli::run(int argc, char** argv) {
   ncpost::cli::add_plan(app, action);
   ncpost::cli::add_sensitivity(app, action);
   ncpost::cli::add_export(app, action);
+  ncpost::cli::add_compare(app, action);
   if (const std::string misspelt = ncpost::cli::misspelt_option(app, argc, argv); !misspelt.empty()) {
     print_error(misspelt);
     return 1;

@@ -30,6 +30,7 @@ void add_simulate(CLI::App& app, Action& action);
 void add_plan(CLI::App& app, Action& action);
 void add_sensitivity(CLI::App& app, Action& action);
 void add_export(CLI::App& app, Action& action);
+void add_compare(CLI::App& app, Action& action);
 
 /// For subcommands not built yet: registered with --help, and a clear message with exit 1.
 void add_not_built(CLI::App& app, Action& action, const std::string& name, const std::string& description,

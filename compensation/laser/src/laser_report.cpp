@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include "ncpost/compensation/conditions_report.hpp"
+#include "ncpost/compensation/laser_iso230_targets.hpp"
 #include "ncpost/compensation/uncertainty_report.hpp"
 #include "ncpost/report/html_page.hpp"
 #include "ncpost/report/xy_chart.hpp"
@@ -191,6 +192,8 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
     for (const auto& g : r.iso230) h += "<div class=\"plot\">" + iso230_plot(g) + "</div>";
     h += "</div>";
     h += iso230_2_verdicts_html(r, sets, in);  // the figures ± U, verdicts and budgets below the plots
+    h += "<h3>Per target</h3>";
+    for (const auto& g : r.iso230) h += iso230_2_target_table_html(g);
   }
   h += conditions_html(sets);
   h += "<h2>Summary</h2><pre>" + escape(laser_text_report(m, r)) + "</pre>";

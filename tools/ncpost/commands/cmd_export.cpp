@@ -15,6 +15,7 @@
 #include "kind_steps.hpp"
 #include "model_input.hpp"
 #include "ncpost/compensation/export_cycle800.hpp"
+#include "ncpost/compensation/export_heidenhain.hpp"
 #include "ncpost/compensation/export_isg.hpp"
 #include "ncpost/compensation/export_linuxcnc.hpp"
 #include "ncpost/compensation/export_linuxcnc_trt.hpp"
@@ -48,6 +49,8 @@ constexpr ExportFormat kFormats[] = {
                      "setp lines; tilts listed as left out with their effect in um)", true, false},
     {"siemens-cycle800", "the rotary axes' lines (offsets and tilts) as a SINUMERIK CYCLE800 swivel data record, "
                          "kinematic type P ($TC_CARR)", true, false},
+    {"heidenhain", "the rotary axes' positions and orientations as the Heidenhain kinematics entries KinematicsOpt "
+                   "adjusts (a table to enter)", true, false},
 };
 
 const ExportFormat* find_format(const std::string& name) {
@@ -205,6 +208,14 @@ int export_serial(const ExportArgs& args) {
                  r.held.size(), machine.name, r.axis1, r.axis2, args.output);
       return 0;
     }
+    if (args.format == "heidenhain") {
+      const comp::HeidenhainKinematics k = comp::heidenhain_kinematics(model);
+      write_file_atomically(args.output, comp::format_heidenhain(k, model, source));
+      print_left_out_effects(k.left_out, "a Heidenhain kinematics description");
+      fmt::print("exported {} location error(s) of '{}' as {} Heidenhain kinematics entries (axes {} {}) -> {}\n",
+                 k.held.size(), machine.name, k.entries.size(), k.axis1, k.axis2, args.output);
+      return 0;
+    }
     const char letter = chosen_axis(args, model);
     if (args.format == "linuxcnc") {
       const comp::LinuxcncCompTable table = comp::linuxcnc_comp_table(model, letter);
@@ -252,7 +263,7 @@ void add_export(CLI::App& app, Action& action) {
                                         "tables for more than one");
   sub->add_option("--machine", args->machine,
                   "machine definition (TOML); needed for rotary axes and --format machine, linuxcnc-trt, "
-                  "siemens-cycle800");
+                  "siemens-cycle800, heidenhain");
   add_model_force_option(*sub, args->force);
   sub->add_option("-o,--output", args->output, "the file to write")->required();
   sub->add_option("model", args->model, "error model JSON (written by identify)")->required();

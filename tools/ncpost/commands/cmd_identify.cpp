@@ -21,6 +21,7 @@
 #include "ncpost/compensation/diagnose_report.hpp"
 #include "ncpost/compensation/identify.hpp"
 #include "ncpost/compensation/identify_report.hpp"
+#include "ncpost/compensation/identify_summary.hpp"
 #include "ncpost/compensation/laser_identify.hpp"
 #include "ncpost/compensation/measurement_files.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -74,7 +75,10 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
   if (!r.final_fit.converged) throw Infeasible("the fit " + r.final_fit.message);
   IdentifyOutput out;
   out.model_json = comp::format_model_json(comp::to_model_file(m, r));
-  if (!report.empty()) out.report_html = comp::html_diagnose_report(m, sets, r, tt, inputs);
+  if (!report.empty()) {
+    out.report_html = comp::html_diagnose_report(m, sets, r, tt, inputs);
+    out.summary_html = comp::summary_page_html(comp::identification_summary(m, sets, r.final_fit, inputs, report));
+  }
   return out;
 }
 
@@ -124,7 +128,10 @@ IdentifyOutput identify_serial(const IdentifyArgs& a) {
   if (!r.converged) throw Infeasible("the fit " + r.message);
   IdentifyOutput out;
   out.model_json = comp::format_model_json(comp::to_model_file(m, r));
-  if (!a.report.empty()) out.report_html = comp::html_report(m, sets, r, report_inputs);
+  if (!a.report.empty()) {
+    out.report_html = comp::html_report(m, sets, r, report_inputs);
+    out.summary_html = comp::summary_page_html(comp::identification_summary(m, sets, r, report_inputs, a.report));
+  }
   return out;
 }
 
@@ -167,10 +174,13 @@ void add_identify(CLI::App& app, Action& action) {
     action = [a] {
       std::vector<NamedPath> inputs{{"--machine", a->machine}};
       for (const auto& f : a->data) inputs.push_back({"data", f});
-      check_files({{"-o", a->output}, {"--report", a->report}}, inputs);
+      check_files({{"-o", a->output}, {"--report", a->report},
+                   {"--report (its summary)", a->report.empty() ? std::string() : comp::summary_path(a->report)}},
+                  inputs);
       const IdentifyOutput out = kIdentifySteps[machine_kind(a->machine)].fit(*a);
       write_file_atomically(a->output, out.model_json);
       if (!a->report.empty()) write_file_atomically(a->report, out.report_html);
+      if (!out.summary_html.empty()) write_file_atomically(comp::summary_path(a->report), out.summary_html);
       fmt::print("{}", out.closing);
       return 0;
     };

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "ncpost/compensation/identify_summary.hpp"
 #include "ncpost/compensation/laser_identify.hpp"
 #include "ncpost/compensation/laser_report.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -21,7 +22,10 @@ IdentifyOutput identify_laser(const Machine& m, const std::vector<comp::Measurem
   if (!r.ok) throw Infeasible("laser identification: " + r.message);
   IdentifyOutput out;
   out.model_json = comp::format_model_json(comp::laser_model_file(m, r));
-  if (!report.empty()) out.report_html = comp::laser_html_report(m, r, sets, report_inputs);
+  if (!report.empty()) {
+    out.report_html = comp::laser_html_report(m, r, sets, report_inputs);
+    out.summary_html = comp::summary_page_html(comp::laser_identification_summary(m, sets, r, report_inputs, report));
+  }
   return out;
 }
 

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// Issue 25 item 5: the one-page summary of an identification carries the machine, the conditions,
+// the key figures with U (k = 2) and their ISO 14253-1 verdicts, and a signature block. Figures
+// worked out by hand: a one-way C run with ΔL = 6 cos 2C µm has G = 12 µm exactly.
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "ncpost/compensation/identify_summary.hpp"
+#include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/machines/machine_file.hpp"
+
+using namespace ncpost;
+using namespace ncpost::comp;
+
+namespace {
+
+MeasurementSet one_way_ballbar(const Machine& m) {
+  std::string csv = "# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: 100\n"
+                    "# instrument_uncertainty: 0.2\n# date: 2026-11-20T09:30\n# temperature: 20.4\n"
+                    "# operator: A. Metrologist\nt,X,Y,Z,A,C,L\n";
+  for (int c = 0; c < 360; c += 10)
+    csv += fmt::format("{},0,0,0,0,{},{:.9f}\n", c, c, 100.0 + 6e-3 * std::cos(2.0 * c * M_PI / 180.0));
+  return parse_measurement_csv(csv, "ballbar_c.csv", m);
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("identification summary: machine, conditions, figures with U and verdicts, signatures", "[summary]") {
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/ac-trunnion.toml");
+  const std::vector<MeasurementSet> sets{one_way_ballbar(m)};
+  IdentifyResult r;
+  r.parameters.set("EY0A", 0.025);   // mm: 25 µm, u 0.05 µm → U 0.1 µm
+  r.uncertainty.set("EY0A", 5e-5);
+  r.parameters.set("EB0A", 30e-6);   // rad: 30 µrad, u 0.3 µrad → U 0.6 µrad
+  r.uncertainty.set("EB0A", 3e-7);
+  r.files.push_back({"ballbar_c.csv", MeasurementType::ballbar, 36, 20.0, 46.0, 0.5, 1.4});
+  IdentifyReportInputs in;
+  in.pass_tolerance_um = 5.0;
+  in.tolerances.by_kind_um["G"] = 10.0;
+  in.machine_record.serial = "SN-0042";
+  const IdentificationSummary s = identification_summary(m, sets, r, in, "out/identify.html");
+  const std::string html = summary_page_html(s);
+  CHECK(has(html, "ac-trunnion"));
+  CHECK(has(html, "SN-0042"));
+  CHECK(has(html, "2026-11-20T09:30"));
+  CHECK(has(html, "20.40 °C"));
+  CHECK(has(html, "A. Metrologist"));
+  // G = 2 × 6 µm; U = 2 × √2 × 0.2 / 2 = 0.28 µm (instrument only); 12 − 0.28 > 10: FAIL
+  CHECK(has(html, "ballbar_c.csv: G (ISO 230-4)</td><td>12.00 ± 0.28"));
+  CHECK(has(html, "G ≤ 10 µm</td><td class=\"fail\">FAIL"));
+  // the largest deviation ± U of one reading (0.2 µm) against 5 µm: 46 FAIL, 1.4 PASS
+  CHECK(has(html, "machine as it is</td><td>46.00 ± 0.20"));
+  CHECK(has(html, "with the model</td><td>1.40 ± 0.20"));
+  CHECK(has(html, "class=\"pass\">PASS"));
+  CHECK(has(html, "parameter EY0A</td><td>25.000 ± 0.100 µm"));
+  CHECK(has(html, "parameter EB0A</td><td>30.000 ± 0.600 µrad"));
+  CHECK(has(html, "approved by"));
+  CHECK(has(html, "@page{size:A4"));
+  CHECK(has(html, "href=\"identify.html\""));
+  CHECK(summary_path("out/identify.html") == "out/identify-summary.html");
+  CHECK(summary_path("out.d/report") == "out.d/report-summary.html");
+}
