@@ -52,6 +52,11 @@ IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>
   return s;
 }
 
+std::pair<std::string, std::string> residual_fact(double rms_nominal, double max_nominal, double rms_after, double max_after) {
+  return {"residual (rms / max)", fmt::format("machine without errors {:.2f} / {:.2f} µm; with the model {:.2f} / {:.2f} µm",
+                                              rms_nominal, max_nominal, rms_after, max_after)};
+}
+
 void add_ballbar_figures(IdentificationSummary& s, const Machine& m, const MeasurementSet& set,
                          const IdentifyReportInputs& in) {
   const sections::BallbarFigures f = sections::ballbar_figures(m, set);
@@ -92,9 +97,7 @@ IdentificationSummary identification_summary(const Machine& m, const std::vector
                                              const IdentifyResult& r, const IdentifyReportInputs& in,
                                              const std::string& report_path) {
   IdentificationSummary s = common(m, sets, in, "Identification of " + m.name, report_path);
-  s.facts.push_back({"residual (rms / max)", fmt::format("machine without errors {:.2f} / {:.2f} µm; with the model "
-                                                         "{:.2f} / {:.2f} µm", r.rms_nominal_um, r.max_nominal_um,
-                                                         r.rms_after_um, r.max_after_um)});
+  s.facts.push_back(residual_fact(r.rms_nominal_um, r.max_nominal_um, r.rms_after_um, r.max_after_um));
   for (std::size_t i = 0; i < r.files.size() && i < sets.size(); ++i) {
     const UncertaintyBudget b = reading_budget(sets[i]);
     const std::string name = report::base_name(r.files[i].file);
@@ -124,9 +127,7 @@ IdentificationSummary laser_identification_summary(const Machine& m, const std::
                                                    const LaserIdentifyResult& r, const IdentifyReportInputs& in,
                                                    const std::string& report_path) {
   IdentificationSummary s = common(m, sets, in, "Laser identification of " + m.name, report_path);
-  s.facts.push_back({"residual (rms / max)", fmt::format("machine without errors {:.2f} / {:.2f} µm; with the model "
-                                                         "{:.2f} / {:.2f} µm", r.rms_nominal_um, r.max_nominal_um,
-                                                         r.rms_after_um, r.max_after_um)});
+  s.facts.push_back(residual_fact(r.rms_nominal_um, r.max_nominal_um, r.rms_after_um, r.max_after_um));
   for (const Iso230Figures& g : r.iso230)
     for (const MeasurementSet& set : sets)
       if (set.file == g.file) s.figures.push_back(iso230_2_line(g, set, in));

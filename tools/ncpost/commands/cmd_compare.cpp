@@ -8,10 +8,10 @@
 
 #include "commands.hpp"
 #include "file_checks.hpp"
+#include "tolerance_option.hpp"
 #include "ncpost/compensation/compare_report.hpp"
 #include "ncpost/compensation/measurement_files.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/machines/machine_record.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 
 namespace ncpost::cli {
@@ -43,15 +43,8 @@ int run_compare(const CompareArgs& a) {
   std::vector<NamedPath> inputs{{"--machine", a.machine}};
   for (const std::string& s : a.sessions) inputs.push_back({"SESSION", s});
   check_files({{"--html", a.html}}, inputs);
-  comp::Tolerances tolerances;  // the machine file's [tolerances], then --tolerance kind by kind
-  try {
-    tolerances = comp::parse_tolerances(a.tolerance);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(fmt::format("--tolerance: {}", e.what()));
-  }
   const Machine m = load_machine(a.machine);
-  const MachineRecord record = load_machine_record(a.machine);
-  for (const auto& [kind, um] : record.tolerances_um) tolerances.by_kind_um.try_emplace(kind, um);
+  const comp::Tolerances tolerances = tolerances_from(a.tolerance, a.machine);
   const comp::Comparison c = comp::compare_sessions(read_sessions(m, a.sessions), tolerances);
   fmt::print("{}", comp::compare_text(c));
   if (!a.html.empty()) write_file_atomically(a.html, comp::compare_html(c, m.name, a.machine));

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
+#include "tolerance_option.hpp"
 #include "identify_laser.hpp"
 #include "kind_steps.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
@@ -86,19 +87,13 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
 /// the residual analysis unless --no-diagnose.
 IdentifyOutput identify_serial(const IdentifyArgs& a) {
   const Machine m = load_machine(a.machine);
-  comp::Tolerances tolerances;  // the machine file's [tolerances], then --tolerance kind by kind
-  try {
-    tolerances = comp::parse_tolerances(a.tolerance);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(fmt::format("--tolerance: {}", e.what()));
-  }
+  const comp::Tolerances tolerances = tolerances_from(a.tolerance, a.machine);  // over the machine file's
   const MachineRecord record = load_machine_record(a.machine);
   const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a.data, m);
   print_conditions(sets);
   comp::IdentifyReportInputs report_inputs{a.machine, a.output, a.pass_tolerance_um, std::nullopt};
   report_inputs.machine_record = record;
-  report_inputs.tolerances.by_kind_um = record.tolerances_um;
-  for (const auto& [kind, um] : tolerances.by_kind_um) report_inputs.tolerances.by_kind_um[kind] = um;
+  report_inputs.tolerances = tolerances;
   if (!a.control.empty()) report_inputs.control = comp::parse_control_format(a.control);
   if (comp::all_laser(sets))  // issue 7
     return identify_laser(m, sets, a.report, !a.params.empty() || !a.fixed.empty() || a.loss != "squared",
