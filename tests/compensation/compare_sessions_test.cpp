@@ -13,6 +13,9 @@
 #include "ncpost/compensation/compare_report.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "cli_run.hpp"
+#include "temp_dir.hpp"
+#include "text_file.hpp"
 
 using namespace ncpost;
 using namespace ncpost::comp;
@@ -24,7 +27,7 @@ Machine ac() { return load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/a
 
 /// Targets 0 and 100 mm, two runs each way; readings (µm) scaled by `k`:
 ///   target 0:   up {1, 3}, down {0, 2};   target 100: up {10, 12}, down {6, 8}
-MeasurementSet positioning(double k, const std::string& date, const std::string& file) {
+std::string positioning_csv(double k, const std::string& date) {
   std::string csv = "# type: laser\n# axis: X\n# component: X\n# tool_point: 0, 0, 0\n# instrument_uncertainty: 0.5\n";
   if (!date.empty()) csv += "# date: " + date + "\n";
   csv += "t,run,approach,X,Y,Z,e_um\n";
@@ -39,7 +42,11 @@ MeasurementSet positioning(double k, const std::string& date, const std::string&
     row(run + 1, -1, 100, k * down1[run]);
     row(run + 1, -1, 0, k * down0[run]);
   }
-  return parse_measurement_csv(csv, file, vmc());
+  return csv;
+}
+
+MeasurementSet positioning(double k, const std::string& date, const std::string& file) {
+  return parse_measurement_csv(positioning_csv(k, date), file, vmc());
 }
 
 const FigureTrend& trend(const Comparison& c, const std::string& name) {
@@ -168,4 +175,26 @@ TEST_CASE("compare: a ballbar run both ways gives G of each direction and the hy
   CHECK(trend(c, "G").outcome == "better (proven)");
   CHECK_THROWS_WITH(compare_sessions({before, session_from_set(m, c_ballbar(1.0, 0.4, 150.0))}, {}),
                     Catch::Contains("not the same test"));
+}
+
+TEST_CASE("compare: the command line, its page, and what it refuses", "[compare][cli]") {
+  const std::string dir = test::make_temp_dir("ncpost_compare");
+  const std::string machine = std::string(NCPOST_SOURCE_DIR) + "/machines/vmcl600.toml";
+  const std::string before = test::write_text_file(dir + "/before.csv", positioning_csv(1.0, "2026-11-20"));
+  const std::string after = test::write_text_file(dir + "/after.csv", positioning_csv(0.1, "2026-11-27"));
+  const std::string log = dir + "/log.txt", html = dir + "/cmp.html";
+  const std::string args = "compare --machine " + machine + " --tolerance A=10 ";
+  REQUIRE(test::run_ncpost(args + "--html " + html + " " + before + " " + after, log) == 0);
+  const std::string out = test::read_text_file(log);
+  CHECK(out.find("A (µm): 15.657 ± 2.915 [FAIL]; 1.566 ± 0.762 [PASS]; -14.091 ± 3.013: better (proven)") != std::string::npos);
+  CHECK(test::read_text_file(html).find("<svg") != std::string::npos);
+  // in the wrong order by date, another test, models mixed with data, one session: nothing compared
+  CHECK(test::run_ncpost(args + after + " " + before, log) == 2);
+  CHECK(test::read_text_file(log).find("before.csv") != std::string::npos);
+  std::string other = positioning_csv(1.0, "2026-11-28");
+  other.replace(other.find("# tool_point: 0, 0, 0"), 21, "# tool_point: 0, 0, 50");  // another point measured
+  CHECK(test::run_ncpost(args + before + " " + test::write_text_file(dir + "/other.csv", other), log) == 2);
+  CHECK(test::read_text_file(log).find("not the same test") != std::string::npos);
+  CHECK(test::run_ncpost(args + before + " " + std::string(NCPOST_SOURCE_DIR) + "/samples/measurements/vmcl600/model.json", log) == 1);
+  CHECK(test::run_ncpost(args + before, log) == 1);
 }

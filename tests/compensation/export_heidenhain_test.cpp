@@ -10,7 +10,9 @@
 
 #include <Eigen/Geometry>
 
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -18,7 +20,10 @@
 #include "ncpost/compensation/export_heidenhain.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "cli_run.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
+#include "text_file.hpp"
 
 using namespace ncpost;
 using namespace ncpost::comp;
@@ -97,6 +102,15 @@ double largest_gap_um(const std::vector<Row>& rows, const MachineModel& model, c
 
 const ExportSource kFrom{"model.json", "machine.toml", "test"};
 
+/// The entry lines (those that start with their number) of a table, as text.
+std::string entry_lines(const std::string& text) {
+  std::string out;
+  std::istringstream in(text);
+  for (std::string s; std::getline(in, s);)
+    if (!s.empty() && std::isdigit(static_cast<unsigned char>(s[0]))) out += s + "\n";
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("heidenhain: the bundled AC-trunnion identification, offsets and tilts, read back as the control chains it",
@@ -145,4 +159,19 @@ TEST_CASE("heidenhain: axes that do not turn the table about +X, +Y, +Z are refu
   ErrorParameters p;
   p.set("EX0C", 0.01);
   CHECK_THROWS_WITH(heidenhain_kinematics(MachineModel(haas, p)), Catch::Contains("+X, +Y, +Z"));
+}
+
+TEST_CASE("ncpost export --format heidenhain: exit codes, and docs/exports/ac-trunnion-heidenhain.txt is current",
+          "[export][heidenhain][cli]") {
+  const std::string dir = test::make_temp_dir("export_heidenhain");
+  const std::string model = test::source("samples/measurements/ac-trunnion/model.json");
+  const std::string machine = test::source("machines/ac-trunnion.toml");
+  const std::string log = dir + "/log.txt", out = dir + "/h.txt";
+  REQUIRE(test::run_ncpost("export --format heidenhain --machine " + machine + " -o " + out + " " + model, log) == 0);
+  const std::string written = test::read_text_file(out);
+  CHECK(entry_lines(written).size() > 500);
+  CHECK(entry_lines(written) == entry_lines(test::read_text_file(test::source("docs/exports/ac-trunnion-heidenhain.txt"))));
+  CHECK(test::run_ncpost("export --format heidenhain --axis C --machine " + machine + " -o " + dir + "/x " + model, log) == 1);
+  CHECK(test::run_ncpost("export --format heidenhain -o " + dir + "/x " + model, log) == 1);
+  CHECK_FALSE(std::ifstream(dir + "/x").good());  // refused before anything is written
 }

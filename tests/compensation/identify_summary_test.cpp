@@ -65,3 +65,33 @@ TEST_CASE("identification summary: machine, conditions, figures with U and verdi
   CHECK(summary_path("out/identify.html") == "out/identify-summary.html");
   CHECK(summary_path("out.d/report") == "out.d/report-summary.html");
 }
+
+TEST_CASE("laser identification summary: one row per positioning line, the worst verdict of its kinds", "[summary]") {
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/vmcl600.toml");
+  const MeasurementSet set = parse_measurement_csv(
+      "# type: laser\n# axis: X\n# component: X\n# tool_point: 0, 0, 0\n# instrument_uncertainty: 0.4\n"
+      "t,run,X,Y,Z,e_um\n0,1,0,0,0,0\n1,1,100,0,0,1\n",
+      "x1.csv", m);
+  LaserIdentifyResult r;
+  Iso230Figures g;
+  g.axis = 'X';
+  g.file = "x1.csv";
+  g.accuracy_A_um = 12.0;
+  g.reversal_B_um = 3.0;
+  g.systematic_E_um = 10.0;
+  g.mean_bidirectional_M_um = 8.0;
+  g.repeatability_R_um = 4.0;
+  Iso230Target t;
+  t.s_up_um = 0.5;
+  t.s_down_um = 0.3;
+  t.runs_up = t.runs_down = 5;
+  g.targets = {t};
+  r.iso230 = {g};
+  IdentifyReportInputs in;
+  in.tolerances.by_kind_um = {{"A", 10.0}, {"B", 5.0}};
+  const std::string html = summary_page_html(laser_identification_summary(m, {set}, r, in, "laser.html"));
+  // U of A: 2 √((√2 × 0.2)² + (√2 × 0.5 / √5)²) = 2 √(0.08 + 0.1) = 0.85; 12 − 0.85 > 10: FAIL;
+  // B: 3 + 2 √(0.08 + 0.1) ≤ 5: PASS; the row shows the worse
+  CHECK(has(html, "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85"));
+  CHECK(has(html, "A ≤ 10, B ≤ 5 µm</td><td class=\"fail\">FAIL"));
+}
