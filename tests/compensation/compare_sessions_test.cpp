@@ -191,7 +191,7 @@ TEST_CASE("compare: the command line, its page, and what it refuses", "[compare]
   // in the wrong order by date, another test, models mixed with data, one session: nothing compared
   CHECK(test::run_ncpost(args + after + " " + before, log) == 2);
   CHECK(test::read_text_file(log).find("before.csv") != std::string::npos);
-  std::string other = positioning_csv(1.0, "2026-11-28");
+  std::string other = positioning_csv(0.5, "2026-11-28");
   other.replace(other.find("# tool_point: 0, 0, 0"), 21, "# tool_point: 0, 0, 50");  // another point measured
   CHECK(test::run_ncpost(args + before + " " + test::write_text_file(dir + "/other.csv", other), log) == 2);
   CHECK(test::read_text_file(log).find("not the same test") != std::string::npos);
