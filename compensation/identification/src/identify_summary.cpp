@@ -28,6 +28,15 @@ SummaryFigure judged(const std::string& what, double value_um, const Uncertainty
   return f;
 }
 
+/// One file's conditions in words (without its name).
+std::string conditions_of(const MeasurementSet& set) {
+  const MeasurementConditions& c = set.conditions;
+  return fmt::format("measured {}; {}; instrument {}{}; operator {}; {}", c.date.empty() ? "(date not given)" : c.date,
+                     c.temperature_c ? fmt::format("{:.2f} °C", *c.temperature_c) : std::string("temperature not given"),
+                     c.instrument.empty() ? "not given" : c.instrument, c.serial.empty() ? "" : " (serial " + c.serial + ")",
+                     c.operator_name.empty() ? "not given" : c.operator_name, correction_text(set));
+}
+
 IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>& sets, const IdentifyReportInputs& in,
                              const std::string& title, const std::string& report_path) {
   IdentificationSummary s;
@@ -37,16 +46,15 @@ IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>
   if (!in.machine_record.owner.empty()) s.facts.push_back({"owner", in.machine_record.owner});
   if (!in.model_file.empty()) s.facts.push_back({"model written", report::base_name(in.model_file)});
   if (!in.machine_file.empty()) s.inputs.push_back({"machine file", in.machine_file});
+  std::vector<std::pair<std::string, std::string>> grouped;  // conditions → the files under them, in order
   for (const MeasurementSet& set : sets) {
     s.inputs.push_back({"data", set.file});
-    const MeasurementConditions& c = set.conditions;
-    s.conditions.push_back(fmt::format(
-        "{}: measured {}; {}; instrument {}{}; operator {}; {}", report::base_name(set.file),
-        c.date.empty() ? "(date not given)" : c.date,
-        c.temperature_c ? fmt::format("{:.2f} °C", *c.temperature_c) : std::string("temperature not given"),
-        c.instrument.empty() ? "not given" : c.instrument, c.serial.empty() ? "" : " (serial " + c.serial + ")",
-        c.operator_name.empty() ? "not given" : c.operator_name, correction_text(set)));
+    const std::string text = conditions_of(set);
+    auto same = std::find_if(grouped.begin(), grouped.end(), [&](const auto& g) { return g.first == text; });
+    if (same == grouped.end()) grouped.push_back({text, report::base_name(set.file)});
+    else same->second += ", " + report::base_name(set.file);
   }
+  for (const auto& [text, files] : grouped) s.conditions.push_back(files + ": " + text);
   for (const std::string& w : temperature_warnings(sets)) s.warnings.push_back(w);
   s.full_report = report_path;
   return s;

@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+#include <vector>
+
 #include "ncpost/report/html_page.hpp"
 #include "ncpost/report/sha256.hpp"
 #include "ncpost/version.hpp"
@@ -13,26 +16,38 @@ namespace {
 using report::escape;
 
 constexpr const char* kStyle =
-    "<style>@page{size:A4;margin:12mm}body{font-family:sans-serif;font-size:10pt;color:#111;margin:0 auto;"
-    "max-width:186mm}h1{font-size:14pt;margin:0 0 4px}h2{font-size:11pt;margin:10px 0 3px}"
-    "table{border-collapse:collapse;width:100%;margin:2px 0}td,th{border:1px solid #bbb;padding:2px 5px;"
-    "text-align:left;vertical-align:top}th{background:#eee}.hash{font-family:monospace;font-size:7pt;color:#444}"
+    "<style>@page{size:A4;margin:10mm 12mm}body{font-family:sans-serif;font-size:9pt;line-height:1.15;color:#111;"
+    "margin:0 auto;max-width:186mm}h1{font-size:13pt;margin:0 0 3px}h2{font-size:10pt;margin:7px 0 2px}"
+    "table{border-collapse:collapse;width:100%;margin:1px 0}td,th{border:1px solid #bbb;padding:1px 4px;"
+    "text-align:left;vertical-align:top}th{background:#eee}.hash{font-family:monospace;font-size:6.5pt;color:#444}"
     ".pass{color:#0a7a2a;font-weight:bold}.fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;"
-    "font-weight:bold}.note{font-size:8.5pt;color:#333}.sign td{height:12mm}.sign{break-inside:avoid;"
-    "page-break-inside:avoid}@media print{a{color:inherit;text-decoration:none}}</style>";
+    "font-weight:bold}.note{font-size:8pt;color:#333;margin:2px 0}ul.note{padding-left:16px}.sign td{height:9mm}"
+    ".sign{break-inside:avoid;page-break-inside:avoid}@media print{a{color:inherit;text-decoration:none}}</style>";
 
 const char* verdict_class(const std::string& v) {
   return v == "PASS" ? "pass" : v == "FAIL" ? "fail" : v.empty() ? "" : "unproven";
 }
 
+/// "name 1a2b3c4d5e6f" (the first 12 hex digits of its SHA-256; the full report gives all 64).
+std::string named_with_hash(const std::string& path) {
+  const auto hash = report::file_sha256_hex(path);
+  return escape(report::base_name(path)) + " <span class=\"hash\">" + (hash ? hash->substr(0, 12) : "(not hashed)") +
+         "</span>";
+}
+
+/// The facts, then the inputs by role, each role in one row (27 laser lines stay one row).
 std::string facts_table(const IdentificationSummary& s) {
   std::string h = "<table>";
   for (const auto& [k, v] : s.facts) h += "<tr><th>" + escape(k) + "</th><td>" + escape(v) + "</td></tr>";
+  std::vector<std::pair<std::string, std::vector<std::string>>> roles;
   for (const auto& [role, path] : s.inputs) {
-    const auto hash = report::file_sha256_hex(path);
-    h += fmt::format("<tr><th>{}</th><td>{} <span class=\"hash\">SHA-256 {}</span></td></tr>", escape(role),
-                     escape(report::base_name(path)), hash ? *hash : std::string("(not hashed)"));
+    if (roles.empty() || roles.back().first != role) roles.push_back({role, {}});
+    roles.back().second.push_back(named_with_hash(path));
   }
+  for (const auto& [role, files] : roles)
+    h += fmt::format("<tr><th>{}{}</th><td>{}</td></tr>", escape(role),
+                     files.size() > 1 ? fmt::format(" ({} files)", files.size()) : "", fmt::format("{}", fmt::join(files, "; ")));
+  h += "<tr><th>SHA-256</th><td class=\"note\">the first 12 hex digits of each input; all 64 in the full report</td></tr>";
   return h + fmt::format("<tr><th>report date (UTC)</th><td>{}</td></tr><tr><th>ncpost</th><td>{}</td></tr></table>",
                          report::utc_now(), escape(ncpost::version()));
 }
