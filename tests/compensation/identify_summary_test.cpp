@@ -92,6 +92,7 @@ TEST_CASE("laser identification summary: one row per positioning line, the worst
   const std::string html = summary_page_html(laser_identification_summary(m, {set}, r, in, "laser.html"));
   // U of A: 2 √((√2 × 0.2)² + (√2 × 0.5 / √5)²) = 2 √(0.08 + 0.1) = 0.85; 12 − 0.85 > 10: FAIL;
   // B: 3 + 2 √(0.08 + 0.1) ≤ 5: PASS; the row shows the worse
-  CHECK(has(html, "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85"));
+  CHECK(has(html, "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85; B 3.00 ± 0.85; E 10.00 ± 0.85; M 8.00 ± 0.85; R 4.00 ± "));
+  CHECK(has(html, " µm (U lacks temperature)</td>"));  // said once for the row
   CHECK(has(html, "A ≤ 10, B ≤ 5 µm</td><td class=\"fail\">FAIL"));
 }

@@ -72,6 +72,7 @@ std::string compare_html(const Comparison& c, const std::string& machine_name, c
   report::Provenance p;
   p.title = "Before and after: " + machine_name;
   p.machine = machine_name + " (" + machine_file + ")";
+  p.model = "none applied: each session's figures as measured (or as identified, for a model)";
   p.inputs.push_back({"machine file", machine_file});
   for (std::size_t k = 0; k < c.sessions.size(); ++k) p.inputs.push_back({fmt::format("session {}", k + 1), c.sessions[k].file});
   p.extra.push_back({"test", escape(c.sessions.front().test)});

@@ -85,16 +85,18 @@ SummaryFigure iso230_2_line(const Iso230Figures& g, const MeasurementSet& set, c
                                            {'M', g.mean_bidirectional_M_um}, {'R', g.repeatability_R_um}};
   SummaryFigure f{fmt::format("{}: ISO 230-2 of {}", report::base_name(g.file), g.axis), "", "", ""};
   std::optional<Verdict> worst;
+  std::string lacks;  // the sources missing from any kind's budget, said once for the row
   for (const auto& [kind, value] : kinds) {
     const UncertaintyBudget b = iso230_2_budget(set, g, kind);
-    f.value += fmt::format("{}{} {}", f.value.empty() ? "" : "; ", kind, value_with_U(value, b));
+    f.value += fmt::format("{}{} {:.2f} ± {:.2f}", f.value.empty() ? "" : "; ", kind, value, b.expanded_um());
+    if (!b.complete() && lacks.find(b.missing()) == std::string::npos) lacks += (lacks.empty() ? "" : ", ") + b.missing();
     const auto tol = tolerance_for(in, std::string(1, kind));
     if (!tol) continue;
     const Verdict v = decide(value, b.expanded_um(), *tol);
     f.against += fmt::format("{}{} ≤ {:g}", f.against.empty() ? "" : ", ", kind, *tol);
     if (!worst || v == Verdict::fail || (v == Verdict::not_proven && *worst == Verdict::pass)) worst = v;
   }
-  f.value += " µm";
+  f.value += " µm" + (lacks.empty() ? std::string() : " (U lacks " + lacks + ")");
   if (worst) f.verdict = to_string(*worst), f.against += " µm";
   return f;
 }

@@ -22,7 +22,7 @@ constexpr const char* kStyle =
     "text-align:left;vertical-align:top}th{background:#eee}.hash{font-family:monospace;font-size:6.5pt;color:#444}"
     ".pass{color:#0a7a2a;font-weight:bold}.fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;"
     "font-weight:bold}.note{font-size:8pt;color:#333;margin:2px 0}ul.note{padding-left:16px}.sign td{height:9mm}"
-    ".sign{break-inside:avoid;page-break-inside:avoid}@media print{a{color:inherit;text-decoration:none}}</style>";
+    ".facts th{white-space:nowrap;width:1%}.sign{break-inside:avoid;page-break-inside:avoid}@media print{a{color:inherit;text-decoration:none}}</style>";
 
 const char* verdict_class(const std::string& v) {
   return v == "PASS" ? "pass" : v == "FAIL" ? "fail" : v.empty() ? "" : "unproven";
@@ -37,7 +37,7 @@ std::string named_with_hash(const std::string& path) {
 
 /// The facts, then the inputs by role, each role in one row (27 laser lines stay one row).
 std::string facts_table(const IdentificationSummary& s) {
-  std::string h = "<table>";
+  std::string h = "<table class=\"facts\">";
   for (const auto& [k, v] : s.facts) h += "<tr><th>" + escape(k) + "</th><td>" + escape(v) + "</td></tr>";
   std::vector<std::pair<std::string, std::vector<std::string>>> roles;
   for (const auto& [role, path] : s.inputs) {
