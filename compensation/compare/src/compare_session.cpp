@@ -53,9 +53,13 @@ Session laser_session(const MeasurementSet& s) {
     throw InputError({s.file, 0, 0}, "no ISO 230-2 figures (" + g.message +
                                          "): compare takes bidirectional positioning lines, ballbar files or models");
   Session out{s.file, s.conditions.date, "", {}};
-  out.test = fmt::format("laser positioning of {}: line {}, tool point {} mm, {} targets {:.3f} … {:.3f} mm", g.axis,
-                         s.meta("line").empty() ? std::string("(not given)") : s.meta("line"), vec_text(s.tool_point_mm),
-                         g.targets.size(), g.targets.front().target_mm, g.targets.back().target_mm);
+  const int moving = g.axis - 'X';
+  std::string line;  // where the other two axes stood at the first row (with `# line:` every row agrees)
+  for (int j = 0; j < 3; ++j)
+    if (j != moving) line += fmt::format("{}{} {:.3f}", line.empty() ? "" : ", ", char('X' + j), s.rows.front().command[j]);
+  out.test = fmt::format("laser positioning of {}: line at {} mm, tool point {} mm, {} targets {:.3f} … {:.3f} mm", g.axis,
+                         line, vec_text(s.tool_point_mm), g.targets.size(), g.targets.front().target_mm,
+                         g.targets.back().target_mm);
   const std::pair<char, double> figures[] = {{'A', g.accuracy_A_um},   {'B', g.reversal_B_um},
                                              {'E', g.systematic_E_um}, {'M', g.mean_bidirectional_M_um},
                                              {'R', g.repeatability_R_um}};
