@@ -4,7 +4,7 @@
 // executed program (trr_program.hpp). Every segment is measured, except those that cannot be nearer
 // than the best so far: for any point q of a segment with middle c and half length r,
 // |p - q| >= |p - c| - r, so a segment with |p - c| >= best + r is skipped. The answer is the
-// smallest distance over all segments, as by measuring each (distance_to_segment).
+// smallest distance over all segments, as by measuring each (segment_distance_mm).
 #include <algorithm>
 #include <cstddef>
 #include <vector>
@@ -14,7 +14,7 @@
 namespace ncpost::test {
 
 /// Distance (mm) from `p` to the segment from `a` to `b`.
-inline double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
+inline double segment_distance_mm(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   const Vec3d d = b - a;
   const double len2 = d.squaredNorm();
   const double u = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
@@ -35,11 +35,11 @@ class PolylineDistance {
   /// nearest to the previous point asked (successive points along a path are near each other).
   double operator()(const Vec3d& p) const {
     if (middles_.empty()) return 1e300;
-    double best = distance_to_segment(p, points_[last_], points_[last_ + 1]);
+    double best = segment_distance_mm(p, points_[last_], points_[last_ + 1]);
     for (std::size_t i = 0; i < middles_.size(); ++i) {
       const double reach = best + half_lengths_[i] + kMarginMm;
       if ((p - middles_[i]).squaredNorm() >= reach * reach) continue;
-      const double d = distance_to_segment(p, points_[i], points_[i + 1]);
+      const double d = segment_distance_mm(p, points_[i], points_[i + 1]);
       if (d < best) {
         best = d;
         last_ = i;

@@ -55,7 +55,7 @@ inline std::vector<trr::Command> read_trr_program(const std::string& path) {
 /// the same for many points, faster).
 inline double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
   double best = 1e300;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) best = std::min(best, distance_to_segment(p, path[i], path[i + 1]));
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) best = std::min(best, segment_distance_mm(p, path[i], path[i + 1]));
   return best;
 }
 
