@@ -8,7 +8,9 @@
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
 #   tests/fuzz/run.sh [SECONDS]        (from the repository root)
 # Environment: TARGETS (default: all four), FUZZ_FLAGS (extra libFuzzer flags, e.g.
-# "-fork=1 -ignore_crashes=1" to keep going after a finding).
+# "-fork=1 -ignore_crashes=1" to keep going after a finding), JOBS (targets fuzzed at the same
+# time, default: the number of cores; each target runs its SECONDS on one core either way, so 4
+# targets on 2 cores take 2 x SECONDS instead of 4 x SECONDS).
 set -eu
 SECONDS_EACH=${1:-60}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -30,20 +32,19 @@ FUZZ_FLAGS=${FUZZ_FLAGS:-}
 ninja -C "$BUILD" -j2 $TARGETS
 
 SHARED="$ROOT/tests/data/real"
-status=0
-for target in $TARGETS; do
+JOBS=${JOBS:-$(nproc)}
+
+# The corpus of a target: the seeds, plus the real files cut into 40-line pieces.
+prepare_corpus() {
+  target=$1
   case $target in
     fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
     fuzz_post_cli) seeds="$ROOT/tests/fuzz/corpus/apt $ROOT/tests/fuzz/corpus/gcode"; pattern='*.apt* *.ncl *.nc' ;;
     *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc *.nc *.gcode' ;;
   esac
   corpus="$BUILD/fuzz/corpus/$target"
-  findings="$BUILD/fuzz/findings/$target"
-  mkdir -p "$corpus" "$findings"
+  mkdir -p "$corpus" "$BUILD/fuzz/findings/$target"
   for s in $seeds; do cp "$s"/* "$corpus"/ 2>/dev/null || true; done
-  extra=""
-  # The command-line target's runs print the program's messages: keep them out of the log.
-  [ "$target" = fuzz_post_cli ] && extra="-close_fd_mask=3"
   if [ -d "$SHARED" ]; then
     for p in $pattern; do
       for f in "$SHARED"/$p; do
@@ -51,17 +52,50 @@ for target in $TARGETS; do
       done
     done
   fi
+  return 0
+}
+
+# Runs one target for SECONDS_EACH; its exit status goes to $BUILD/fuzz/$target.status.
+fuzz() {
+  target=$1
+  findings="$BUILD/fuzz/findings/$target"
+  extra=""
+  # The command-line target's runs print the program's messages: keep them out of the log.
+  [ "$target" = fuzz_post_cli ] && extra="-close_fd_mask=3"
+  rc=0
+  ( cd "$findings" && "$BUILD/fuzz/$target" -max_total_time="$SECONDS_EACH" -max_len=4096 -timeout=10 \
+      -rss_limit_mb=2048 -print_final_stats=1 $extra $FUZZ_FLAGS "$BUILD/fuzz/corpus/$target" \
+      >"$BUILD/fuzz/$target.log" 2>&1 ) || rc=$?
+  echo "$rc" > "$BUILD/fuzz/$target.status"
+}
+
+# The targets JOBS at a time, then each one's report in order.
+running=0
+for target in $TARGETS; do
+  prepare_corpus "$target"
   echo "=== $target: $SECONDS_EACH s"
+  fuzz "$target" &
+  running=$((running + 1))
+  if [ "$running" -ge "$JOBS" ]; then wait; running=0; fi
+done
+wait
+
+status=0
+for target in $TARGETS; do
   log="$BUILD/fuzz/$target.log"
-  if ! ( cd "$findings" && "$BUILD/fuzz/$target" -max_total_time="$SECONDS_EACH" -max_len=4096 -timeout=10 \
-         -rss_limit_mb=2048 -print_final_stats=1 $extra $FUZZ_FLAGS "$corpus" >"$log" 2>&1 ); then
+  findings="$BUILD/fuzz/findings/$target"
+  echo "--- $target"
+  if [ "$(cat "$BUILD/fuzz/$target.status")" != 0 ]; then
     status=1
     tail -40 "$log"
   fi
   grep -E "^Done|stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb|ERROR|SUMMARY" "$log" || true
-  if ls "$findings"/crash-* "$findings"/leak-* "$findings"/timeout-* >/dev/null 2>&1; then
-    echo "!!! $target: findings in $findings"
-    status=1
-  fi
+  for f in "$findings"/crash-* "$findings"/leak-* "$findings"/timeout-*; do
+    if [ -e "$f" ]; then
+      echo "!!! $target: findings in $findings"
+      status=1
+      break
+    fi
+  done
 done
 exit $status

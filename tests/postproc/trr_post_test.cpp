@@ -5,6 +5,7 @@
 // --model, preview --csv and the out-of-reach exit code through the CLI.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -46,6 +47,7 @@ double executed_deviation(const Kinematics& k, const std::vector<Command>& progr
                           double* endpoint_mm = nullptr) {
   double worst = 0.0, worst_end = 0.0;
   std::optional<Rigidd> warm;
+  const test::PolylineDistance distance_to_cl(path);
   for (std::size_t b = 0; b + 1 < program.size(); ++b) {
     for (int j = (b == 0 ? 0 : 1); j <= 200; ++j) {
       const double t = j / 200.0;
@@ -53,7 +55,7 @@ double executed_deviation(const Kinematics& k, const std::vector<Command>& progr
       const auto tp = k.tool(c.slider_mm, warm);
       if (!tp) FAIL("forward kinematics failed in block " << b);
       warm = tp->machine_T_plate;
-      const double d = test::distance_to_path(Kinematics::tip_in_workpiece(*tp, c, kOrigin), path);
+      const double d = distance_to_cl(Kinematics::tip_in_workpiece(*tp, c, kOrigin));
       worst = std::max(worst, d);
       if (j == 200) worst_end = std::max(worst_end, d);
     }
@@ -74,6 +76,29 @@ Errors some_errors() {
 }
 
 }  // namespace
+
+TEST_CASE("the executed-deviation measure: PolylineDistance is the distance to the nearest of all segments") {
+  // the hemisphere's CL path, and points scattered around it and far from it (a fixed sequence)
+  const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
+  REQUIRE(path.size() == 435);
+  const test::PolylineDistance fast(path);
+  std::uint32_t state = 12345u;
+  const auto next = [&state] {  // a small linear congruential sequence in [-1, 1)
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 23) - 1.0;
+  };
+  int far = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3d near_cl = path[static_cast<std::size_t>(i) % path.size()];
+    const double spread_mm = (i % 4 == 0) ? 200.0 : 0.05;
+    const Vec3d p = near_cl + spread_mm * Vec3d(next(), next(), next());
+    const double every = test::distance_to_path(p, path);
+    if (every > 1.0) ++far;
+    INFO("point " << i);
+    CHECK(fast(p) == Approx(every).margin(1e-12));
+  }
+  CHECK(far > 100);  // not only points next to the path
+}
 
 TEST_CASE("--tolerance 0.005: the executed tip stays within 5 um of the CL path") {
   const trr::Machine m = load_trr_xy_machine(machine_path());

@@ -34,23 +34,23 @@ const char* kChromium =
     "timeout 180 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
     "--disable-component-update --no-first-run --hide-scrollbars ";
 
-/// The DOM after the scripts ran.
-std::string dump_dom(const std::string& html) {
-  const std::string out = html + ".dom";
-  std::system((std::string(kChromium) + "--virtual-time-budget=5000 --dump-dom file://" + cwd() + "/" + html + " > " + out +
-               " 2> " + html + ".dom.log")
-                  .c_str());
-  return read_text_file(out);
-}
+/// What headless Chromium shows of a page: the DOM after the scripts ran and a screenshot.
+struct Rendered {
+  std::string dom;
+  ncpost::test::Image img;
+};
 
-ncpost::test::Image screenshot(const std::string& html, int width, int height) {
+/// One Chromium launch gives both (--dump-dom and --screenshot together): a launch costs seconds,
+/// far more than rendering the page (issue 26).
+Rendered render(const std::string& html, int width, int height) {
   const std::string png = html + ".png";
+  const std::string dom = html + ".dom";
   std::remove(png.c_str());
-  std::system((std::string(kChromium) + "--virtual-time-budget=5000 --screenshot=" + png + " --window-size=" +
-               std::to_string(width) + "," + std::to_string(height) + " file://" + cwd() + "/" + html + " > " + html +
-               ".png.log 2>&1")
+  std::system((std::string(kChromium) + "--virtual-time-budget=5000 --dump-dom --screenshot=" + png + " --window-size=" +
+               std::to_string(width) + "," + std::to_string(height) + " file://" + cwd() + "/" + html + " > " + dom +
+               " 2> " + html + ".chromium.log")
                   .c_str());
-  return ncpost::test::decode_png(read_text_file(png));
+  return {read_text_file(dom), ncpost::test::decode_png(read_text_file(png))};
 }
 
 /// Pixels within `tolerance` (per channel) of the colour #rrggbb.
@@ -140,9 +140,8 @@ TEST_CASE("identify.html: provenance, verdict, control values, ballbar polar plo
     WARN("chromium not installed (apt-get install chromium): rendering of identify.html not checked");
     return;
   }
-  const std::string dom = dump_dom("identify.html");
+  const auto [dom, img] = render("identify.html", 1250, 3000);
   CHECK(count(dom, "class=\"polar\"") == 4);
-  const auto img = screenshot("identify.html", 1250, 3000);
   CHECK(img.width == 1250);
   // the polar traces: measured (blue, on top), identified model (red, under it where they agree), residual (green)
   CHECK(pixels_near(img, 0x1f5fbf) > 300);
@@ -168,9 +167,8 @@ TEST_CASE("laser report: ISO 230-2 bidirectional plots with tick values", "[repo
     WARN("chromium not installed (apt-get install chromium): rendering of the laser report not checked");
     return;
   }
-  const std::string dom = dump_dom("laser.html");
+  const auto [dom, img] = render("laser.html", 1250, 1200);
   CHECK(count(dom, "class=\"xy\"") >= 3);
-  const auto img = screenshot("laser.html", 1250, 1200);
   CHECK(pixels_near(img, 0x1f5fbf, 30) > 200);  // x̄↑
   CHECK(pixels_near(img, 0xd0402b, 30) > 200);  // x̄↓
   CHECK(pixels_near(img, 0x2a8a3a, 30) > 100);  // B_i
@@ -196,7 +194,7 @@ TEST_CASE("post_report.html: provenance and the WebGL path view before and after
     WARN("chromium not installed (apt-get install chromium): rendering of post_report.html not checked");
     return;
   }
-  const std::string dom = dump_dom("post_report.html");
+  const auto [dom, img] = render("post_report.html", 1250, 1700);
   const std::regex drawn("id=\"(path-[a-z-]+)\"[^>]*data-drawn-pixels=\"([0-9]+)\"");
   int views = 0;
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), drawn); it != std::sregex_iterator(); ++it) {
@@ -205,7 +203,6 @@ TEST_CASE("post_report.html: provenance and the WebGL path view before and after
     ++views;
   }
   CHECK(views == 3);
-  const auto img = screenshot("post_report.html", 1250, 1700);
   // the canvases sit below the tables (y > 600): coloured path pixels and the colour bars
   CHECK(coloured_pixels(img, 600, 1700) > 5000);
   CHECK(pixels_near(img, 0x1e328c, 20) > 500);   // the colour of 0 µm: the "after" path on the shared scale

@@ -13,6 +13,7 @@
 
 #include "ncpost/kinematics/trr_xy_forward.hpp"
 #include "ncpost/postproc/read/apt/apt_reader.hpp"
+#include "polyline_distance.hpp"
 #include "test_paths.hpp"
 
 namespace ncpost::test {
@@ -50,15 +51,11 @@ inline std::vector<trr::Command> read_trr_program(const std::string& path) {
   return out;
 }
 
-/// Distance (mm) from `p` to the polyline `path`.
+/// Distance (mm) from `p` to the polyline `path`, measuring every segment (PolylineDistance gives
+/// the same for many points, faster).
 inline double distance_to_path(const Vec3d& p, const std::vector<Vec3d>& path) {
   double best = 1e300;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Vec3d d = path[i + 1] - path[i];
-    const double len2 = d.squaredNorm();
-    const double u = len2 > 0 ? std::clamp((p - path[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (path[i] + u * d)).norm());
-  }
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) best = std::min(best, segment_distance_mm(p, path[i], path[i + 1]));
   return best;
 }
 
@@ -70,6 +67,7 @@ inline std::optional<double> trr_executed_deviation(const trr::Kinematics& k, co
                                                     int samples = 100) {
   double worst = 0.0;
   std::optional<Rigidd> warm;
+  const PolylineDistance distance_to_cl(path);
   for (std::size_t b = 0; b + 1 < program.size(); ++b)
     for (int j = (b == 0 ? 0 : 1); j <= samples; ++j) {
       const double t = static_cast<double>(j) / samples;
@@ -77,7 +75,7 @@ inline std::optional<double> trr_executed_deviation(const trr::Kinematics& k, co
       const auto tp = k.tool(c.slider_mm, warm);
       if (!tp) return std::nullopt;
       warm = tp->machine_T_plate;
-      worst = std::max(worst, distance_to_path(trr::Kinematics::tip_in_workpiece(*tp, c, origin_mm), path));
+      worst = std::max(worst, distance_to_cl(trr::Kinematics::tip_in_workpiece(*tp, c, origin_mm)));
     }
   return worst;
 }
