@@ -68,10 +68,14 @@ Eigen::VectorXd residual_of(const Machine& m, const std::vector<MeasurementSet>&
   return prob.residuals(values);
 }
 
+/// The fit of `names` with `held` fixed; it starts from `start` (a fit of a model this one
+/// extends or retunes: a warm start, the same minimum in fewer iterations).
 IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets, const std::vector<std::string>& names,
-                         const ErrorParameters& held, const IdentifyOptions& base) {
+                         const ErrorParameters& held, const IdentifyOptions& base, const ErrorParameters& start = {}) {
   IdentifyOptions o = base;
   for (std::size_t i = 0; i < held.size(); ++i) o.fixed.set(held.names()[i], held.values()[i]);
+  for (std::size_t i = 0; i < start.size(); ++i)
+    if (!o.start.contains(start.names()[i])) o.start.set(start.names()[i], start.values()[i]);
   return identify(m, sets, names, o);
 }
 
@@ -112,7 +116,7 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
       if (log_tau < lo || log_tau > hi) return 1e300;
       Model trial = model;
       trial.held.set(name, std::exp(log_tau));
-      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify, model.fit.parameters);
       const double ssr = trial.fit.converged ? sum_of_squares(trial.fit, count) : 1e300;
       fits.emplace(j, std::make_pair(ssr, std::move(trial)));
       return ssr;
@@ -129,7 +133,7 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
       const double shift = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
       Model refined = model;
       refined.held.set(name, std::exp(origin + step * (best + shift)));
-      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify);
+      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify, model.fit.parameters);
       const double r = sum_of_squares(refined.fit, count);
       if (refined.fit.converged && r < chosen_ssr) chosen = std::move(refined), chosen_ssr = r;
     }
@@ -414,7 +418,7 @@ WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, 
     Model trial = model;
     for (const auto& p : s.spec.parameters) trial.names.push_back(p);
     for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
-    trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+    trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify, model.fit.parameters);
     RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
     const double s1 = sum_of_squares(trial.fit, count);
     const int p1 = static_cast<int>(trial.fit.uncertainty.size());
@@ -531,7 +535,7 @@ void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet
     for (std::size_t h = 0; h < e.candidate.held.size(); ++h)
       refit.held.set(e.candidate.held.names()[h], model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
   }
-  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify);
+  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify, model.fit.parameters);
   if (!refit.fit.converged) refit = Model{basic_names, {}, out.basic}, out.added.clear();
   model = std::move(refit);
 }
@@ -628,7 +632,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
     IdentifyOptions weighted = o.identify;
     for (const auto& f : model.fit.files) weighted.set_weights.push_back(1.0 / std::max(f.rms_after_um, 1e-3));
-    IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted);
+    IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted, model.fit.parameters);
     if (refit.converged && refit.identifiability.pinned == model.fit.identifiability.pinned) {
       model.fit = std::move(refit);
       out.set_noise_um.clear();

@@ -81,6 +81,7 @@ DampedSummary fit_kept(const ResidualProblem& prob, const std::vector<int>& kept
   DampedOptions d;
   d.loss = {o.loss, o.loss_scale_um * 1e-3};
   d.max_iterations = o.max_iterations;
+  d.initial_damping = 0.0;  // Gauss–Newton first: the residuals are nearly linear in the errors
   return levenberg_marquardt(p, x0, row_weight.cwiseProduct(r0), d);
 }
 
@@ -207,7 +208,9 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
 
   // 2. Levenberg–Marquardt on the kept parameters (residuals weighted during the fit)
-  const DampedSummary fit = fit_kept(prob, kept, row_weight, o, values, r0);
+  std::vector<double> start = values;
+  for (int k : kept) start[static_cast<std::size_t>(k)] = o.start.value_or(names[static_cast<std::size_t>(k)], values[static_cast<std::size_t>(k)]);
+  const DampedSummary fit = fit_kept(prob, kept, row_weight, o, start, o.start.size() ? prob.residuals(start) : r0);
   for (std::size_t i = 0; i < kept.size(); ++i) values[static_cast<std::size_t>(kept[i])] = fit.x[static_cast<Eigen::Index>(i)];
   res.iterations = fit.iterations;
   res.converged = fit.converged;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Identification of error parameters from measurements (docs/cli.md `identify`; seeds 000, 002):
-// nonlinear least squares (the fitting core, fit/damped_least_squares.hpp) on the residuals of
+// nonlinear least squares (the fitting core, fit/damped_least_squares.hpp: Gauss–Newton steps,
+// damped by Levenberg–Marquardt when one fails to decrease the cost) on the residuals of
 // residuals.hpp, Jacobians by automatic differentiation through the templated chain.
 //
 // 1. The Jacobian at the prior values (0 unless `fixed` gives one) is analysed for
@@ -33,6 +34,10 @@ struct IdentifyOptions {
   /// Weighted least squares: one weight per measurement set (1/σ of its noise, any common
   /// scale); empty = all equal. Residual statistics stay unweighted (µm).
   std::vector<double> set_weights;
+  /// Where the fit of each named parameter starts (e.g. a previous fit of a model it extends);
+  /// others start at their prior. The prior (0 or `fixed`) stays what the rank analysis and a
+  /// pinned parameter use: only the path to the minimum changes, not the minimum.
+  ErrorParameters start;
 
   /// Empty if valid, else what is wrong.
   std::string validate() const;
