@@ -68,10 +68,14 @@ Eigen::VectorXd residual_of(const Machine& m, const std::vector<MeasurementSet>&
   return prob.residuals(values);
 }
 
+/// The fit of `names` with `held` fixed; it starts from `start` (a fit of a model this one
+/// extends or retunes: a warm start, the same minimum in fewer iterations).
 IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets, const std::vector<std::string>& names,
-                         const ErrorParameters& held, const IdentifyOptions& base) {
+                         const ErrorParameters& held, const IdentifyOptions& base, const ErrorParameters& start = {}) {
   IdentifyOptions o = base;
   for (std::size_t i = 0; i < held.size(); ++i) o.fixed.set(held.names()[i], held.values()[i]);
+  for (std::size_t i = 0; i < start.size(); ++i)
+    if (!o.start.contains(start.names()[i])) o.start.set(start.names()[i], start.values()[i]);
   return identify(m, sets, names, o);
 }
 
@@ -112,7 +116,7 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
       if (log_tau < lo || log_tau > hi) return 1e300;
       Model trial = model;
       trial.held.set(name, std::exp(log_tau));
-      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+      trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify, model.fit.parameters);
       const double ssr = trial.fit.converged ? sum_of_squares(trial.fit, count) : 1e300;
       fits.emplace(j, std::make_pair(ssr, std::move(trial)));
       return ssr;
@@ -129,7 +133,7 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
       const double shift = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
       Model refined = model;
       refined.held.set(name, std::exp(origin + step * (best + shift)));
-      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify);
+      refined.fit = fit_model(m, sets, refined.names, refined.held, o.identify, model.fit.parameters);
       const double r = sum_of_squares(refined.fit, count);
       if (refined.fit.converged && r < chosen_ssr) chosen = std::move(refined), chosen_ssr = r;
     }
@@ -167,6 +171,57 @@ Eigen::MatrixXd range_of(const Eigen::MatrixXd& M) {
   Eigen::Index rank = 0;
   while (rank < sv.size() && sv[rank] > 1e-6 * std::max(sv[0], 1e-300)) ++rank;
   return svd.matrixU().leftCols(rank);
+}
+
+/// Could the other components of the same order explain what an added effect explains? Its
+/// columns and theirs (`alternatives`, pairs cos/sin, named `names`), both off the rest of the model
+/// (`Q`; `off` its own columns off it): the smallest canonical correlation over its directions,
+/// and the alternatives that carry it (correlation above 0.5).
+void alias_evidence(const Eigen::MatrixXd& J, const Eigen::MatrixXd& Q, const Eigen::MatrixXd& off,
+                    const std::vector<int>& alternatives, const std::vector<std::string>& names, AddedEffect& e) {
+  e.alias_correlation = 0.0;
+  e.alias_of.clear();
+  if (alternatives.empty()) return;
+  const Eigen::MatrixXd A = basis_of(J, alternatives);
+  const Eigen::MatrixXd alt_off = A - Q * (Q.transpose() * A);
+  const Eigen::MatrixXd QA = range_of(alt_off), QE = range_of(off);
+  Eigen::VectorXd rho;
+  if (QA.cols() > 0 && QE.cols() > 0) rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
+  // every direction of it, not just one: the smallest of its QE.cols() canonical correlations
+  e.alias_correlation = rho.size() >= QE.cols() && rho.size() ? rho.minCoeff() : 0.0;
+  // the alternatives that carry it: those whose own columns correlate most with it
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::vector<int> pair{alternatives[2 * k], alternatives[2 * k + 1]};
+    const Eigen::MatrixXd P = basis_of(J, pair);
+    const Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
+    const Eigen::MatrixXd QP = range_of(p_off);
+    const double r = QP.cols() && QE.cols() ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff() : 0.0;
+    if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", names[k], r));
+  }
+}
+
+/// The verdict on an added effect from its evidence: an alias of the other components of its
+/// order, an alias of the model, or real.
+std::string separation_text(const AddedEffect& e, bool has_alternatives) {
+  std::string with;
+  for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
+  std::string alts;
+  for (const auto& n : e.alias_of) alts += (alts.empty() ? "" : ", ") + n;
+  if (e.alias_correlation > 0.99)
+    return fmt::format("an alias of {}: what it explains, the same order of the other components explains as "
+                       "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
+                       "them apart — measure from a second sphere position (another height and radius)",
+                       alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
+  if (e.separation_sine < 0.05)
+    return fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
+                       "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
+  return fmt::format("real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
+                     "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
+                     !has_alternatives ? std::string()
+                                       : fmt::format("; the other components of its order reproduce it only to "
+                                                     "canonical correlation {:.4f}{}", e.alias_correlation,
+                                                     alts.empty() ? "" : " (" + alts + ")"),
+                     e.f_statistic);
 }
 
 /// Whether the data can tell each added effect from the rest of the final model (issue 17):
@@ -247,49 +302,8 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
       const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
       if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
     }
-    // could the other components of the same order explain what it explains? Its columns and
-    // theirs, both off the rest of the model: the largest canonical correlation
-    e.alias_correlation = 0.0;
-    e.alias_of.clear();
-    if (!alternatives[a].empty()) {
-      const Eigen::MatrixXd own_off = off;
-      const Eigen::MatrixXd A = basis_of(J, alternatives[a]);
-      Eigen::MatrixXd alt_off = A - Q * (Q.transpose() * A);
-      const Eigen::MatrixXd QA = range_of(alt_off), QE = range_of(own_off);
-      Eigen::VectorXd rho;
-      if (QA.cols() > 0 && QE.cols() > 0) rho = Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QA).singularValues();
-      // every direction of it, not just one: the smallest of its QE.cols() canonical correlations
-      e.alias_correlation = rho.size() >= QE.cols() && rho.size() ? rho.minCoeff() : 0.0;
-      // the alternatives that carry it: those whose own columns correlate most with it
-      for (std::size_t k = 0; k < alternative_names[a].size(); ++k) {
-        const std::vector<int> pair{alternatives[a][2 * k], alternatives[a][2 * k + 1]};
-        const Eigen::MatrixXd P = basis_of(J, pair);
-        Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
-        const Eigen::MatrixXd QP = range_of(p_off);
-        const double r = QP.cols() && QE.cols() ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff() : 0.0;
-        if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", alternative_names[a][k], r));
-      }
-    }
-    std::string with;
-    for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
-    std::string alts;
-    for (const auto& n : e.alias_of) alts += (alts.empty() ? "" : ", ") + n;
-    if (e.alias_correlation > 0.99)
-      e.separation = fmt::format("an alias of {}: what it explains, the same order of the other components explains as "
-                                 "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
-                                 "them apart — measure from a second sphere position (another height and radius)",
-                                 alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
-    else if (e.separation_sine < 0.05)
-      e.separation = fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
-                                 "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
-    else
-      e.separation = fmt::format("real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
-                                 "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
-                                 alternatives[a].empty() ? std::string()
-                                 : fmt::format("; the other components of its order reproduce it only to canonical "
-                                               "correlation {:.4f}{}", e.alias_correlation,
-                                               alts.empty() ? "" : " (" + alts + ")"),
-                                 e.f_statistic);
+    alias_evidence(J, Q, off, alternatives[a], alternative_names[a], e);
+    e.separation = separation_text(e, !alternatives[a].empty());
   }
 }
 
@@ -301,6 +315,33 @@ struct ScreenStep {
   int tested = 0;   ///< candidates not aliased with the model
   double s0 = 0.0;  ///< Σr² of the current model (mm²)
 };
+
+/// Candidates that act alike on these data (their bases span the same directions within `tol`)
+/// form one class, represented by the first in catalogue order (e.g. EXC:h1 and EYC:h1 once the
+/// location offsets of C are in); `screened` is sorted by drop, only its first 24 are compared.
+std::vector<Screened> merge_equivalent(std::vector<Screened> screened, double tol) {
+  std::vector<Screened> classes;
+  const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
+  std::vector<bool> merged(screened.size(), false);
+  for (std::size_t i = 0; i < screened.size(); ++i) {
+    if (merged[i]) continue;
+    std::vector<std::size_t> members{i};
+    if (i < compare)
+      for (std::size_t j = i + 1; j < compare; ++j)
+        if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, tol)) {
+          members.push_back(j);
+          merged[j] = true;
+        }
+    std::size_t lead = members.front();
+    for (std::size_t k : members)
+      if (screened[k].candidate < screened[lead].candidate) lead = k;
+    Screened c = screened[lead];
+    for (std::size_t k : members)
+      if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
+    classes.push_back(std::move(c));
+  }
+  return classes;
+}
 
 ScreenStep screen_step(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
                        const std::vector<Candidate>& catalogue, const DiagnoseOptions& o, const Eigen::VectorXd& times,
@@ -364,31 +405,7 @@ ScreenStep screen_step(const Machine& m, const std::vector<MeasurementSet>& sets
     screened.push_back(s);
   }
   std::sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) { return a.drop > b.drop; });
-  // candidates that act alike on these data form one class, represented by the first in
-  // catalogue order (e.g. EXC:h1 and EYC:h1 once the location offsets of C are in)
-  {
-    std::vector<Screened> classes;
-    const std::size_t compare = std::min<std::size_t>(screened.size(), 24);
-    std::vector<bool> merged(screened.size(), false);
-    for (std::size_t i = 0; i < screened.size(); ++i) {
-      if (merged[i]) continue;
-      std::vector<std::size_t> members{i};
-      if (i < compare)
-        for (std::size_t j = i + 1; j < compare; ++j)
-          if (!merged[j] && same_directions(screened[i].basis, screened[j].basis, 10.0 * o.alias_tolerance)) {
-            members.push_back(j);
-            merged[j] = true;
-          }
-      std::size_t lead = members.front();
-      for (std::size_t k : members)
-        if (screened[k].candidate < screened[lead].candidate) lead = k;
-      Screened c = screened[lead];
-      for (std::size_t k : members)
-        if (k != lead) c.equivalent.push_back(screened[k].spec.effect);
-      classes.push_back(std::move(c));
-    }
-    screened = std::move(classes);
-  }
+  screened = merge_equivalent(std::move(screened), 10.0 * o.alias_tolerance);
   return {std::move(screened), tested, s0};
 }
 
@@ -414,7 +431,7 @@ WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, 
     Model trial = model;
     for (const auto& p : s.spec.parameters) trial.names.push_back(p);
     for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
-    trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify);
+    trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify, model.fit.parameters);
     RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
     const double s1 = sum_of_squares(trial.fit, count);
     const int p1 = static_cast<int>(trial.fit.uncertainty.size());
@@ -531,10 +548,53 @@ void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet
     for (std::size_t h = 0; h < e.candidate.held.size(); ++h)
       refit.held.set(e.candidate.held.names()[h], model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
   }
-  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify);
+  if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify, model.fit.parameters);
   if (!refit.fit.converged) refit = Model{basic_names, {}, out.basic}, out.added.clear();
   model = std::move(refit);
 }
+/// The noise differs between sets (e.g. probing vs ballbar): the final model refitted by weighted
+/// least squares, each set weighted by 1/σ, σ its residual rms under the final model.
+void refit_weighted_by_set_noise(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o,
+                                 Model& model, DiagnoseResult& out) {
+  if (!o.weight_by_set_noise || sets.size() <= 1 || !model.fit.converged) return;
+  IdentifyOptions weighted = o.identify;
+  for (const auto& f : model.fit.files) weighted.set_weights.push_back(1.0 / std::max(f.rms_after_um, 1e-3));
+  IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted, model.fit.parameters);
+  if (refit.converged && refit.identifiability.pinned == model.fit.identifiability.pinned) {
+    model.fit = std::move(refit);
+    out.set_noise_um.clear();
+    for (const auto& f : model.fit.files) out.set_noise_um.push_back(f.rms_after_um);
+  }
+}
+
+/// The values of earlier effects move in later refits: the final ones into every added effect.
+void report_final_values(const Model& model, DiagnoseResult& out) {
+  for (auto& e : out.added) {
+    for (const auto& p : e.candidate.parameters) {
+      e.values.set(p, model.fit.parameters.value_or(p, 0.0));
+      e.uncertainty.set(p, model.fit.uncertainty.value_or(p, 0.0));
+    }
+    for (std::size_t h = 0; h < e.candidate.held.size(); ++h) {
+      const std::string& n = e.candidate.held.names()[h];
+      const double v = model.held.value_or(n, e.candidate.held.values()[h]);
+      e.candidate.held.set(n, v);
+      e.values.set(n, v);
+    }
+  }
+}
+/// The effect `added` out of the catalogue; a table holds every shape of its function: the
+/// harmonics of the same component and axis are then no longer separate candidates
+/// (E<c><axis>:t → E<c><axis>:h*).
+void drop_from_catalogue(std::vector<Candidate>& catalogue, const std::string& added) {
+  const bool table = added.size() > 2 && added.substr(added.size() - 2) == ":t";
+  const std::string family = added.substr(0, 3);
+  catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(),
+                                 [&](const Candidate& c) {
+                                   return c.effect == added || (table && c.effect.rfind(family + ":h", 0) == 0);
+                                 }),
+                  catalogue.end());
+}
+
 }  // namespace
 
 std::string DiagnoseOptions::validate() const {
@@ -603,17 +663,7 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     out.added.push_back(*best);
     model = best_model;
     retune_drift(m, sets, o, t_span, model, count);
-    const std::string added = best->candidate.effect;
-    // a table holds every shape of its function: the harmonics of the same component and axis
-    // are then no longer separate candidates (E<c><axis>:t → E<c><axis>:h*)
-    const bool table = added.size() > 2 && added.substr(added.size() - 2) == ":t";
-    const std::string family = added.substr(0, 3);
-    catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(),
-                                   [&](const Candidate& c) {
-                                     return c.effect == added ||
-                                            (table && c.effect.rfind(family + ":h", 0) == 0);
-                                   }),
-                    catalogue.end());
+    drop_from_catalogue(catalogue, best->candidate.effect);
     out.stop_reason = "max_effects reached";
   }
   // No false attribution (issue 17): an effect is found only if, with it, what is left is at the
@@ -623,31 +673,8 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
   // attributed, the others are kept and the model refitted with them; the structure is reported
   // (diagnosis.unexplained, with the measurement that would resolve it).
   if (!out.added.empty() && model.fit.converged) attribute_with_structure(m, sets, basic_names, o, model, out, say);
-  // The noise differs between sets (e.g. probing vs ballbar): refit the final model by weighted
-  // least squares, each set weighted by 1/σ, σ its residual rms under the final model.
-  if (o.weight_by_set_noise && sets.size() > 1 && model.fit.converged) {
-    IdentifyOptions weighted = o.identify;
-    for (const auto& f : model.fit.files) weighted.set_weights.push_back(1.0 / std::max(f.rms_after_um, 1e-3));
-    IdentifyResult refit = fit_model(m, sets, model.names, model.held, weighted);
-    if (refit.converged && refit.identifiability.pinned == model.fit.identifiability.pinned) {
-      model.fit = std::move(refit);
-      out.set_noise_um.clear();
-      for (const auto& f : model.fit.files) out.set_noise_um.push_back(f.rms_after_um);
-    }
-  }
-  // the values of earlier effects move in later refits: report the final ones
-  for (auto& e : out.added) {
-    for (const auto& p : e.candidate.parameters) {
-      e.values.set(p, model.fit.parameters.value_or(p, 0.0));
-      e.uncertainty.set(p, model.fit.uncertainty.value_or(p, 0.0));
-    }
-    for (std::size_t h = 0; h < e.candidate.held.size(); ++h) {
-      const std::string& n = e.candidate.held.names()[h];
-      const double v = model.held.value_or(n, e.candidate.held.values()[h]);
-      e.candidate.held.set(n, v);
-      e.values.set(n, v);
-    }
-  }
+  refit_weighted_by_set_noise(m, sets, o, model, out);
+  report_final_values(model, out);
   for (auto& e : out.added) apply_size(m, sets, o, e);
   out.final_fit = model.fit;
   out.final_names = model.names;

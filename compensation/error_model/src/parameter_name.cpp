@@ -81,6 +81,26 @@ bool carries(const Machine& m, int carrier, int carried) {
   return false;
 }
 
+/// E<c>0<carried>:<carrier>:p<order>: the location error of the carried axis (as its location
+/// name) changing with the rotary axis that carries it.
+ParseResult parse_coupled(ParameterSpec s, char component, char carried, char carrier, int order, const Machine& m) {
+  const std::string name = s.name;
+  ParseResult base = parse_parameter_name(fmt::format("E{}0{}", component, carried), m);
+  if (!base.spec) return base;
+  s = *base.spec;
+  s.name = name;
+  s.kind = ParameterKind::coupled;
+  s.order = order;
+  s.coupled_axis_index = m.index_of(carrier);
+  if (s.coupled_axis_index < 0) return refuse("the machine has no axis " + std::string(1, carrier));
+  if (!m.axes[static_cast<std::size_t>(s.coupled_axis_index)].is_rotary())
+    return refuse("a location error changes with a rotary axis here (" + std::string(1, carrier) + " is linear)");
+  if (!carries(m, s.coupled_axis_index, s.axis_index))
+    return refuse(fmt::format("{0}'s location can change with {1} only where {1} carries {0} (between the bed and {0} on "
+                              "the same side of the chain)", carried, carrier));
+  return accept(s);
+}
+
 }  // namespace
 
 bool ParameterSpec::is_angle() const {
@@ -110,24 +130,8 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
   s.name = name;
   auto axis = [&](char letter) { return m.index_of(letter); };
 
-  if (std::regex_match(name, g, coupled)) {
-    // the location error of the carried axis, as a location name, then the carrying axis
-    ParseResult base = parse_parameter_name(fmt::format("E{}0{}", g[1].str(), g[2].str()), m);
-    if (!base.spec) return base;
-    const char carried = g[2].str()[0], carrier = g[3].str()[0];
-    s = *base.spec;
-    s.name = name;
-    s.kind = ParameterKind::coupled;
-    s.order = std::stoi(g[4].str());
-    s.coupled_axis_index = axis(carrier);
-    if (s.coupled_axis_index < 0) return refuse("the machine has no axis " + std::string(1, carrier));
-    if (!m.axes[static_cast<std::size_t>(s.coupled_axis_index)].is_rotary())
-      return refuse("a location error changes with a rotary axis here (" + std::string(1, carrier) + " is linear)");
-    if (!carries(m, s.coupled_axis_index, s.axis_index))
-      return refuse(fmt::format("{0}'s location can change with {1} only where {1} carries {0} (between the bed and {0} on "
-                                "the same side of the chain)", carried, carrier));
-    return accept(s);
-  }
+  if (std::regex_match(name, g, coupled))
+    return parse_coupled(s, g[1].str()[0], g[2].str()[0], g[3].str()[0], std::stoi(g[4].str()), m);
   if (std::regex_match(name, g, location)) return parse_location(s, g[1].str()[0], g[2].str()[0], m);
   if (std::regex_match(name, g, harmonic)) {
     s.kind = ParameterKind::harmonic;

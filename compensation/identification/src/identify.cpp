@@ -3,42 +3,17 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "ncpost/compensation/fit/damped_least_squares.hpp"
+#include "ncpost/compensation/fit/scaled_svd.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/compensation/residuals.hpp"
 
 namespace ncpost::comp {
 namespace {
-
-double rho(Loss loss, double r, double k) {
-  const double a = std::abs(r);
-  switch (loss) {
-    case Loss::squared: return 0.5 * r * r;
-    case Loss::huber: return a <= k ? 0.5 * r * r : k * a - 0.5 * k * k;
-    case Loss::cauchy: return 0.5 * k * k * std::log1p((r / k) * (r / k));
-  }
-  return 0.5 * r * r;
-}
-
-double weight(Loss loss, double r, double k) {
-  const double a = std::abs(r);
-  switch (loss) {
-    case Loss::squared: return 1.0;
-    case Loss::huber: return a <= k ? 1.0 : k / a;
-    case Loss::cauchy: return 1.0 / (1.0 + (r / k) * (r / k));
-  }
-  return 1.0;
-}
-
-double cost_of(const Eigen::VectorXd& r, Loss loss, double k) {
-  double c = 0.0;
-  for (Eigen::Index i = 0; i < r.size(); ++i) c += rho(loss, r[i], k);
-  return c;
-}
 
 void stats(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
   rms_um = r.size() ? 1e3 * std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
@@ -47,7 +22,7 @@ void stats(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
 
 char letter_of(int component) { return "XYZABC"[component]; }
 
-/// A plausible size of a parameter (identifiability.hpp): 10 µm, 50 µrad, over 300 mm of travel
+/// A plausible size of a parameter (fit/rank.hpp): 10 µm, 50 µrad, over 300 mm of travel
 /// for polynomial terms, over an hour for drift rates.
 double typical_size(const Machine& m, const ParameterSpec& s) {
   const double base = s.is_angle() ? 5e-5 : 0.01;
@@ -67,20 +42,6 @@ double typical_size(const Machine& m, const ParameterSpec& s) {
   }
 }
 
-/// Levenberg–Marquardt: the damping starts at kInitialLambda, is divided by 10 after an accepted
-/// step (not below kMinLambda) and multiplied by 10 after a rejected one; at kMaxLambda no step
-/// decreases the cost.
-constexpr double kInitialLambda = 1e-3;
-constexpr double kMinLambda = 1e-12;
-constexpr double kMaxLambda = 1e16;
-/// Diagonal entries of JᵀWJ are floored at this fraction of the largest (a parameter without effect).
-constexpr double kDiagonalFloor = 1e-12;
-/// Converged when the cost decreases by at most this fraction ...
-constexpr double kCostTolerance = 1e-12;
-/// ... or the scaled step is at most this fraction of the residual norm ...
-constexpr double kStepTolerance = 1e-10;
-/// ... or, with no step accepted, the scaled gradient is at most this fraction of it.
-constexpr double kGradientTolerance = 1e-6;
 /// A null vector's component below this is left out of the null direction ...
 constexpr double kNullComponent = 1e-12;
 /// ... and below this out of the combinations reported for a pinned parameter.
@@ -101,83 +62,42 @@ Eigen::VectorXd row_weights(const std::vector<MeasurementSet>& sets, const Ident
   return row_weight;
 }
 
-/// The robust weights of the residuals.
-Eigen::VectorXd loss_weights(const Eigen::VectorXd& r, Loss loss, double k) {
-  Eigen::VectorXd w(r.size());
-  for (Eigen::Index i = 0; i < r.size(); ++i) w[i] = weight(loss, r[i], k);
-  return w;
+/// The fit of the `kept` parameters (layout indices) from `values` by the fitting core; the
+/// residuals weighted by `row_weight`.
+DampedSummary fit_kept(const ResidualProblem& prob, const std::vector<int>& kept, const Eigen::VectorXd& row_weight,
+                       const IdentifyOptions& o, const std::vector<double>& values, const Eigen::VectorXd& r0) {
+  auto full = [&](const Eigen::VectorXd& x) {
+    std::vector<double> v = values;
+    for (std::size_t i = 0; i < kept.size(); ++i) v[static_cast<std::size_t>(kept[i])] = x[static_cast<Eigen::Index>(i)];
+    return v;
+  };
+  LeastSquaresProblem p;
+  p.residuals = [&](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> {
+    return row_weight.cwiseProduct(prob.residuals(full(x)));
+  };
+  p.jacobian = [&](const Eigen::VectorXd& x) -> Eigen::MatrixXd { return row_weight.asDiagonal() * prob.jacobian(full(x), kept); };
+  Eigen::VectorXd x0(static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t i = 0; i < kept.size(); ++i) x0[static_cast<Eigen::Index>(i)] = values[static_cast<std::size_t>(kept[i])];
+  DampedOptions d;
+  d.loss = {o.loss, o.loss_scale_um * 1e-3};
+  d.max_iterations = o.max_iterations;
+  d.initial_damping = 0.0;  // Gauss–Newton first: the residuals are nearly linear in the errors
+  return levenberg_marquardt(p, x0, row_weight.cwiseProduct(r0), d);
 }
 
-/// The state of the fit: the values (layout order), the weighted residuals and their cost.
-struct Fit {
-  std::vector<double> values;
-  Eigen::VectorXd r;
-  double cost = 0.0;
-};
-
-/// Levenberg–Marquardt on the `kept` parameters from `fit`; the number of iterations in
-/// `iterations`; true if converged.
-bool levenberg_marquardt(const ResidualProblem& prob, const std::vector<int>& kept, const Eigen::VectorXd& row_weight,
-                         const IdentifyOptions& o, double k, Fit& fit, int& iterations) {
-  const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
-  double lambda = kInitialLambda;
-  bool converged = n == 0;
-  for (iterations = 0; !converged && iterations < o.max_iterations; ++iterations) {
-    const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(fit.values, kept);
-    const Eigen::VectorXd w = loss_weights(fit.r, o.loss, k);
-    const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
-    const Eigen::VectorXd g = J.transpose() * w.asDiagonal() * fit.r;
-    Eigen::VectorXd d = A.diagonal();
-    const double floor = kDiagonalFloor * std::max(1e-300, d.maxCoeff());
-    for (Eigen::Index i = 0; i < n; ++i) d[i] = std::max(d[i], floor);
-    bool accepted = false;
-    while (lambda < kMaxLambda) {
-      Eigen::MatrixXd M = A;
-      M.diagonal() += lambda * d;
-      const Eigen::VectorXd step = -M.ldlt().solve(g);
-      std::vector<double> trial = fit.values;
-      for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])] += step[i];
-      const Eigen::VectorXd rt = row_weight.cwiseProduct(prob.residuals(trial));
-      const double ct = cost_of(rt, o.loss, k);
-      if (std::isfinite(ct) && ct <= fit.cost) {
-        const double scaled_step = (step.array() * d.array().sqrt()).matrix().norm();
-        const double decrease = fit.cost - ct;
-        fit.values = trial;
-        fit.r = rt;
-        fit.cost = ct;
-        lambda = std::max(lambda / 10.0, kMinLambda);
-        accepted = true;
-        if (decrease <= kCostTolerance * fit.cost + 1e-30 ||
-            scaled_step <= kStepTolerance * std::sqrt(2.0 * fit.cost + 1e-30))
-          converged = true;
-        break;
-      }
-      lambda *= 10.0;
-    }
-    if (!accepted) {
-      // no decrease possible: at a minimum if the gradient is negligible
-      converged = (g.array() / d.array().sqrt()).matrix().norm() <= kGradientTolerance * std::sqrt(2.0 * fit.cost + 1e-30) + 1e-15;
-      break;
-    }
-  }
-  return converged;
-}
-
-/// The values and standard uncertainties of the kept parameters, and their covariance, into res.
-void kept_results(const ResidualProblem& prob, const std::vector<std::string>& names, const std::vector<int>& kept,
-                  const Eigen::VectorXd& row_weight, const IdentifyOptions& o, double k, const Fit& fit,
+/// The values and standard uncertainties of the kept parameters, and their covariance, into res:
+/// s²·(JᵀWJ)⁻¹ (scaled_svd.hpp), s² = Σ w r² / (m − n), W the robust weights at the solution.
+void kept_results(const std::vector<std::string>& names, const std::vector<int>& kept, const Eigen::MatrixXd& J_kept,
+                  const IdentifyOptions& o, const std::vector<double>& values, const Eigen::VectorXd& r_weighted,
                   IdentifyResult& res) {
   const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
-  const Eigen::Index m_count = fit.r.size();
-  const Eigen::MatrixXd J = row_weight.asDiagonal() * prob.jacobian(fit.values, kept);
-  const Eigen::VectorXd w = loss_weights(fit.r, o.loss, k);
-  const double dof = std::max<double>(1.0, double(m_count - n));
-  const double s2 = (w.array() * fit.r.array().square()).sum() / dof;
-  const Eigen::MatrixXd A = J.transpose() * w.asDiagonal() * J;
-  const Eigen::MatrixXd cov = s2 * A.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+  const Eigen::VectorXd w = RobustLoss{o.loss, o.loss_scale_um * 1e-3}.weights(r_weighted);
+  const double dof = std::max<double>(1.0, double(r_weighted.size() - n));
+  const double s2 = (w.array() * r_weighted.array().square()).sum() / dof;
+  const Eigen::MatrixXd cov = scaled_svd(w.cwiseSqrt().asDiagonal() * J_kept).covariance(s2);
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::string& name = names[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])];
-    res.parameters.set(name, fit.values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
+    res.parameters.set(name, values[static_cast<std::size_t>(kept[static_cast<std::size_t>(i)])]);
     res.uncertainty.set(name, std::sqrt(std::max(0.0, cov(i, i))));
   }
   res.covariance = cov;
@@ -288,18 +208,22 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
   for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
 
   // 2. Levenberg–Marquardt on the kept parameters (residuals weighted during the fit)
-  const double k = o.loss_scale_um * 1e-3;
-  Fit fit{values, row_weight.cwiseProduct(r0), 0.0};
-  fit.cost = cost_of(fit.r, o.loss, k);
-  const bool converged = levenberg_marquardt(prob, kept, row_weight, o, k, fit, res.iterations);
-  values = fit.values;
-  res.converged = converged;
-  res.message = converged ? fmt::format("converged in {} iterations", res.iterations)
-                          : fmt::format("did not converge in {} iterations", res.iterations);
+  std::vector<double> start = values;
+  for (int k : kept) start[static_cast<std::size_t>(k)] = o.start.value_or(names[static_cast<std::size_t>(k)], values[static_cast<std::size_t>(k)]);
+  const DampedSummary fit = fit_kept(prob, kept, row_weight, o, start, o.start.size() ? prob.residuals(start) : r0);
+  for (std::size_t i = 0; i < kept.size(); ++i) values[static_cast<std::size_t>(kept[i])] = fit.x[static_cast<Eigen::Index>(i)];
+  res.iterations = fit.iterations;
+  res.converged = fit.converged;
+  res.message = fit.converged ? fmt::format("converged in {} iterations", res.iterations)
+                              : fmt::format("did not converge in {} iterations", res.iterations);
 
-  // 3. results, uncertainty, identifiability at the solution
-  res.rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance, typical);
-  kept_results(prob, names, kept, row_weight, o, k, fit, res);
+  // 3. results, uncertainty, identifiability at the solution (one Jacobian: kept ⊂ free)
+  const Eigen::MatrixXd J_free = prob.jacobian(values, free);
+  res.rank = analyse_rank(J_free, o.rank_tolerance, typical);
+  Eigen::MatrixXd J_kept(J_free.rows(), static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t i = 0; i < prior_rank.kept.size(); ++i)
+    J_kept.col(static_cast<Eigen::Index>(i)) = row_weight.cwiseProduct(J_free.col(prior_rank.kept[i]));
+  kept_results(names, kept, J_kept, o, values, fit.r, res);
   for (const auto& f : o.fixed.names()) res.parameters.set(f, o.fixed.value_or(f, 0.0));
   describe_identifiability(prior_rank, names, free, values, res);
 

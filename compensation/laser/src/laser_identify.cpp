@@ -3,13 +3,13 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Cholesky>
-#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "ncpost/compensation/error_model.hpp"
+#include "ncpost/compensation/fit/damped_least_squares.hpp"
+#include "ncpost/compensation/fit/scaled_svd.hpp"
 #include "ncpost/compensation/laser_reading.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "laser_problem.hpp"
@@ -40,7 +40,7 @@ constexpr double kSameNodeMm = 1e-4;
 /// Typical size of a parameter, for the rank analysis: 50 µrad for an angle, 10 µm for a length.
 constexpr double kTypicalAngleRad = 5e-5;
 constexpr double kTypicalLengthMm = 0.01;
-/// Gauss–Newton stops when no step moves a value by more than this many units ...
+/// The fit stops when no step moves a value by more than this many units ...
 constexpr double kConvergedUnits = 1e-3;
 /// ... of 1 µrad (angles) and 0.1 µm (lengths).
 constexpr double kAngleUnitRad = 1e-6;
@@ -119,59 +119,53 @@ Eigen::VectorXd order_columns(Problem& pb, std::vector<Candidate> cand, LaserIde
   return typical;
 }
 
-/// The kept columns of `full`, each scaled to unit norm (`scale`: the norms).
-Eigen::MatrixXd kept_matrix(const Eigen::MatrixXd& full, const std::vector<int>& kept, Eigen::VectorXd& scale) {
-  Eigen::MatrixXd K(full.rows(), static_cast<Eigen::Index>(kept.size()));
-  scale.resize(static_cast<Eigen::Index>(kept.size()));
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    const double n = full.col(kept[i]).norm();
-    scale[static_cast<Eigen::Index>(i)] = n > 0 ? n : 1.0;
-    K.col(static_cast<Eigen::Index>(i)) = full.col(kept[i]) / scale[static_cast<Eigen::Index>(i)];
-  }
-  return K;
-}
-
-/// The fitted values and their standard uncertainties (layout order): Gauss–Newton on the columns
-/// the rank analysis keeps; sets res.rms/max nominal and fit, res.rank, res.iterations.
+/// The fitted values and their standard uncertainties (layout order): the fitting core
+/// (fit/damped_least_squares.hpp, Gauss–Newton first) on the columns the rank analysis keeps;
+/// sets res.rms/max nominal and fit, res.rank, res.iterations.
 struct Fit {
   std::vector<double> values, sigma;
 };
-Fit gauss_newton(const Problem& pb, const Eigen::VectorXd& typical, const LaserIdentifyOptions& o,
-                 LaserIdentifyResult& res) {
+Fit fit_tables(const Problem& pb, const Eigen::VectorXd& typical, const LaserIdentifyOptions& o,
+               LaserIdentifyResult& res) {
   Fit fit{std::vector<double>(pb.names.size(), 0.0), std::vector<double>(pb.names.size(), 0.0)};
-  std::vector<double>& values = fit.values;
-  Eigen::VectorXd r = pb.residual(values);
-  stats(r, res.rms_nominal_um, res.max_nominal_um);
-  Eigen::MatrixXd J = pb.jacobian(values);
-  res.rank = analyse_rank(J, o.rank_tolerance, typical);
-  const auto& kept = res.rank.kept;
-  Eigen::VectorXd scale;
-  for (res.iterations = 1; res.iterations <= o.max_iterations; ++res.iterations) {
-    const Eigen::MatrixXd K = kept_matrix(J, kept, scale);
-    const Eigen::VectorXd step = K.colPivHouseholderQr().solve(r).cwiseQuotient(scale);
-    double largest = 0.0;
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      const int p = pb.param_of[static_cast<std::size_t>(kept[i])];
-      values[static_cast<std::size_t>(p)] += step[static_cast<Eigen::Index>(i)];
-      const double unit = pb.layout.spec(p).is_angle() ? kAngleUnitRad : kLengthUnitMm;
-      largest = std::max(largest, std::abs(step[static_cast<Eigen::Index>(i)]) / unit);
-    }
-    r = pb.residual(values);
-    if (largest < kConvergedUnits) break;
-    J = pb.jacobian(values);
-  }
-  res.iterations = std::min(res.iterations, o.max_iterations);
-  stats(r, res.rms_fit_um, res.max_fit_um);
-  // uncertainty of the kept values: s²·(KᵀK)⁻¹ in scaled space
-  const Eigen::MatrixXd K = kept_matrix(J, kept, scale);
-  const double dof = double(K.rows() - K.cols());
+  const Eigen::VectorXd r0 = pb.residual(fit.values);
+  stats(r0, res.rms_nominal_um, res.max_nominal_um);
+  res.rank = analyse_rank(pb.jacobian(fit.values), o.rank_tolerance, typical);
+  const std::vector<int>& kept = res.rank.kept;
+  auto full = [&](const Eigen::VectorXd& x) {
+    std::vector<double> v(pb.names.size(), 0.0);
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      v[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] = x[static_cast<Eigen::Index>(i)];
+    return v;
+  };
+  // residual = measured − predicted: its Jacobian is −(d prediction / d value) of the kept columns
+  auto kept_jacobian = [&](const Eigen::VectorXd& x) -> Eigen::MatrixXd {
+    const Eigen::MatrixXd J = pb.jacobian(full(x));
+    Eigen::MatrixXd K(J.rows(), static_cast<Eigen::Index>(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) K.col(static_cast<Eigen::Index>(i)) = -J.col(kept[i]);
+    return K;
+  };
+  LeastSquaresProblem p;
+  p.residuals = [&](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> { return pb.residual(full(x)); };
+  p.jacobian = kept_jacobian;
+  DampedOptions d;
+  d.max_iterations = o.max_iterations;
+  d.initial_damping = 0.0;
+  d.step_tolerance.resize(static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    d.step_tolerance[static_cast<Eigen::Index>(i)] =
+        kConvergedUnits * (pb.layout.spec(pb.param_of[static_cast<std::size_t>(kept[i])]).is_angle() ? kAngleUnitRad : kLengthUnitMm);
+  const DampedSummary sol = levenberg_marquardt(p, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kept.size())), r0, d);
+  fit.values = full(sol.x);
+  res.iterations = sol.iterations;
+  stats(sol.r, res.rms_fit_um, res.max_fit_um);
+  // uncertainty of the kept values at the solution: s²·(KᵀK)⁻¹ (fit/scaled_svd.hpp)
+  const Eigen::Index dof = sol.r.size() - static_cast<Eigen::Index>(kept.size());
   if (dof > 0) {
-    const double s2 = r.squaredNorm() / dof;
-    const Eigen::MatrixXd cov = (K.transpose() * K).ldlt().solve(Eigen::MatrixXd::Identity(K.cols(), K.cols()));
+    const Eigen::MatrixXd cov = scaled_svd(kept_jacobian(sol.x)).covariance(sol.r.squaredNorm() / double(dof));
     for (std::size_t i = 0; i < kept.size(); ++i) {
       const auto ii = static_cast<Eigen::Index>(i);
-      fit.sigma[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] =
-          std::sqrt(std::max(0.0, s2 * cov(ii, ii))) / scale[ii];
+      fit.sigma[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] = std::sqrt(std::max(0.0, cov(ii, ii)));
     }
   }
   return fit;
@@ -321,7 +315,7 @@ LaserIdentifyResult identify_laser(const Machine& m, const std::vector<Measureme
     return res;
   }
   const Eigen::VectorXd typical = order_columns(pb, std::move(cand), res);
-  const Fit fit = gauss_newton(pb, typical, o, res);
+  const Fit fit = fit_tables(pb, typical, o, res);
   collect_functions(pb, fit, res);
   write_model(m, pb, res);
   describe_unseen(res);

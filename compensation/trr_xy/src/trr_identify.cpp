@@ -6,6 +6,9 @@
 #include <random>
 #include <stdexcept>
 
+#include "ncpost/compensation/fit/damped_least_squares.hpp"
+#include "ncpost/compensation/fit/scaled_svd.hpp"
+
 namespace ncpost::trr {
 namespace {
 
@@ -18,8 +21,6 @@ constexpr double kUnseenColumnShare = 1e-7;
 constexpr double kShownNullWeight = 0.05;
 /// A parameter with at least this share of its variance in the null space is not determined.
 constexpr double kUndeterminedNullShare = 1e-6;
-/// Halvings of a step that cannot be solved or makes the residual grow, before the fit stops.
-constexpr int kStepHalvings = 20;
 /// The fit has converged when no parameter moves by more than this (mm, rad).
 constexpr double kConvergedMm = 1e-8;
 constexpr double kConvergedRad = 1e-11;
@@ -49,117 +50,46 @@ struct Problem {
   Eigen::VectorXd residuals_at(const Errors& e) const { return residuals(machine, e, nominal, data); }
 };
 
-/// The Jacobian of the predicted deviations by central differences, its columns scaled to unit norm
-/// (`scale` holds the norms; an unseen column stays zero with scale 1: scaling it up would only
-/// magnify the differencing noise).
-struct ScaledJacobian {
-  Eigen::MatrixXd columns;
-  Eigen::VectorXd scale;
-};
-
-ScaledJacobian scaled_jacobian(const Problem& p, const Errors& e, Eigen::Index rows) {
+/// d residual / d parameter by central differences (the residual is measured − predicted).
+Eigen::MatrixXd jacobian(const Problem& p, const Errors& e, Eigen::Index rows) {
   Eigen::MatrixXd J(rows, kParameterCount);
-  Eigen::VectorXd scale(kParameterCount);
   for (int k = 0; k < kParameterCount; ++k) {
     const double h = Errors::is_angle(k) ? kDifferenceStepRad : kDifferenceStepMm;
     Errors ep = e, em = e;
     ep[k] += h;
     em[k] -= h;
-    // d(predicted)/dp = −d(residual)/dp
-    J.col(k) = (p.residuals_at(em) - p.residuals_at(ep)) / (2.0 * h);
-    scale[k] = J.col(k).norm();
+    J.col(k) = (p.residuals_at(ep) - p.residuals_at(em)) / (2.0 * h);
   }
-  const double floor = kUnseenColumnShare * scale.maxCoeff();
-  for (int k = 0; k < kParameterCount; ++k) {
-    if (scale[k] > floor) {
-      J.col(k) /= scale[k];
-    } else {
-      J.col(k).setZero();
-      scale[k] = 1.0;
-    }
-  }
-  return {std::move(J), std::move(scale)};
+  return J;
 }
 
-using Svd = Eigen::JacobiSVD<Eigen::MatrixXd>;
-
-/// The minimum-norm Gauss–Newton step in the scaled parameters through the directions above `cut`,
-/// and how many there are (the rank).
-Eigen::VectorXd truncated_step(const Svd& svd, const Eigen::VectorXd& r, double cut, int& rank) {
-  const Eigen::VectorXd& sv = svd.singularValues();
-  Eigen::VectorXd step_scaled = Eigen::VectorXd::Zero(kParameterCount);
-  rank = 0;
-  for (Eigen::Index i = 0; i < sv.size(); ++i) {
-    if (sv[i] <= cut) continue;
-    ++rank;
-    step_scaled += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(r) / sv[i]);
-  }
-  return step_scaled;
+Errors errors_of(const Eigen::VectorXd& x) {
+  Errors e;
+  for (int k = 0; k < kParameterCount; ++k) e[k] = x[k];
+  return e;
 }
 
-/// The directions the data cannot see (singular values at or below `cut`), in the column-scaled
-/// parameters (each parameter in units of equal effect).
-comp::Identifiability identifiability_of(const Svd& svd, double cut, int rank) {
-  comp::Identifiability id;
-  id.rank = rank;
+/// The directions the data cannot see, in the column-scaled parameters (each parameter in units
+/// of equal effect), and the standard deviations (mm, rad) from the residual `r` through the seen
+/// directions: −1 for a parameter with a share in the null space (it is not determined).
+void identifiability_and_uncertainty(const comp::ScaledSvd& svd, const Eigen::VectorXd& r, IdentifyResult& res) {
+  comp::Identifiability& id = res.identifiability;
+  id.rank = svd.rank;
   id.parameters = kParameterCount;
-  const Eigen::VectorXd& sv = svd.singularValues();
-  for (Eigen::Index i = 0; i < sv.size(); ++i) {
-    if (sv[i] > cut) continue;
-    const Eigen::VectorXd d = svd.matrixV().col(i);
+  for (const Eigen::VectorXd& d : svd.null_space()) {
     comp::NullDirection dir;
     for (int k = 0; k < kParameterCount; ++k)
       if (std::abs(d[k]) >= kShownNullWeight) dir.emplace_back(Errors::name(k), d[k]);
     id.null_space.push_back(dir);
   }
-  return id;
-}
-
-/// Standard deviations (mm, rad) from the residual `r` (noise estimate) through the seen directions;
-/// −1 for a parameter with a share in the null space (it is not determined).
-std::vector<double> uncertainty_of(const Svd& svd, double cut, const Eigen::VectorXd& scale, const Eigen::VectorXd& r,
-                                   int rank) {
-  const Eigen::VectorXd& sv = svd.singularValues();
-  const double dof = std::max<double>(1.0, static_cast<double>(r.size() - rank));
-  const double sigma2 = r.squaredNorm() / dof;
-  std::vector<double> out(kParameterCount, -1.0);
-  for (int k = 0; k < kParameterCount; ++k) {
-    double var = 0.0, null_share = 0.0;
-    for (Eigen::Index i = 0; i < sv.size(); ++i) {
-      const double v = svd.matrixV()(k, i);
-      if (sv[i] > cut) var += v * v / (sv[i] * sv[i]);
-      else null_share += v * v;
-    }
-    if (null_share < kUndeterminedNullShare) out[static_cast<std::size_t>(k)] = std::sqrt(sigma2 * var) / scale[k];
-  }
-  return out;
-}
-
-/// Takes `step` from `e` (residual `r`), halved while the model cannot be solved or the residual
-/// grows: the factor taken (e and r updated), or nullopt when no halving helps.
-std::optional<double> take_step(const Problem& p, const Eigen::VectorXd& step, Errors& e, Eigen::VectorXd& r) {
-  double factor = 1.0;
-  for (int tries = 0; tries < kStepHalvings; ++tries, factor *= 0.5) {
-    Errors trial = e;
-    for (int k = 0; k < kParameterCount; ++k) trial[k] += factor * step[k];
-    try {
-      const Eigen::VectorXd rt = p.residuals_at(trial);
-      if (rt.squaredNorm() <= r.squaredNorm() * (1.0 + 1e-12)) {
-        e = trial;
-        r = rt;
-        return factor;
-      }
-    } catch (const std::runtime_error&) {
-    }
-  }
-  return std::nullopt;
-}
-
-/// True when the step taken (`factor` of `step`) moves no parameter by more than the convergence bounds.
-bool converged(const Eigen::VectorXd& step, double factor) {
+  const double dof = std::max<double>(1.0, static_cast<double>(r.size() - svd.rank));
+  const Eigen::MatrixXd cov = svd.covariance(r.squaredNorm() / dof);
+  const Eigen::VectorXd null_share = svd.null_share();
+  res.uncertainty.assign(kParameterCount, -1.0);
   for (int k = 0; k < kParameterCount; ++k)
-    if (std::abs(factor * step[k]) > (Errors::is_angle(k) ? kConvergedRad : kConvergedMm)) return false;
-  return true;
+    if (null_share[k] < kUndeterminedNullShare) res.uncertainty[static_cast<std::size_t>(k)] = std::sqrt(std::max(0.0, cov(k, k)));
+  const Eigen::VectorXd& sv = svd.svd.singularValues();
+  res.singular_values.assign(sv.data(), sv.data() + sv.size());
 }
 
 }  // namespace
@@ -215,26 +145,30 @@ IdentifyResult identify(const Machine& m, const std::vector<ProbeMeasurement>& d
   IdentifyResult res;
   const Kinematics nominal(m);
   const Problem problem{m, nominal, data};
-  Errors e;
-  Eigen::VectorXd r = problem.residuals_at(e);
-  stats_um(r, res.rms_before_um, res.max_before_um);
-  for (int it = 0; it < o.max_iterations; ++it) {
-    const ScaledJacobian J = scaled_jacobian(problem, e, r.size());
-    const Svd svd(J.columns, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Eigen::VectorXd& sv = svd.singularValues();
-    const double cut = o.rank_tolerance * sv[0];
-    int rank = 0;
-    const Eigen::VectorXd step_scaled = truncated_step(svd, r, cut, rank);
-    res.iterations = it + 1;
-    res.singular_values.assign(sv.data(), sv.data() + sv.size());
-    res.identifiability = identifiability_of(svd, cut, rank);
-    res.uncertainty = uncertainty_of(svd, cut, J.scale, r, rank);  // at this iterate
-    const Eigen::VectorXd step = J.scale.cwiseInverse().asDiagonal() * step_scaled;
-    const std::optional<double> factor = take_step(problem, step, e, r);
-    if (!factor || converged(step, *factor)) break;
-  }
-  stats_um(r, res.rms_after_um, res.max_after_um);
-  res.errors = e;
+  const Eigen::VectorXd r0 = problem.residuals_at(Errors{});
+  stats_um(r0, res.rms_before_um, res.max_before_um);
+  comp::LeastSquaresProblem p;
+  p.residuals = [&](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> {
+    try {
+      return problem.residuals_at(errors_of(x));
+    } catch (const std::runtime_error&) {
+      return std::nullopt;  // a probing pose the trial model cannot solve: the step is rejected
+    }
+  };
+  p.jacobian = [&](const Eigen::VectorXd& x) { return jacobian(problem, errors_of(x), r0.size()); };
+  comp::DampedOptions d;
+  d.max_iterations = o.max_iterations;
+  d.initial_damping = 0.0;
+  d.unseen_share = kUnseenColumnShare;
+  d.relative_cut = o.rank_tolerance;
+  d.step_tolerance.resize(kParameterCount);
+  for (int k = 0; k < kParameterCount; ++k) d.step_tolerance[k] = Errors::is_angle(k) ? kConvergedRad : kConvergedMm;
+  const comp::DampedSummary sol = comp::levenberg_marquardt(p, Eigen::VectorXd::Zero(kParameterCount), r0, d);
+  res.errors = errors_of(sol.x);
+  res.iterations = sol.iterations;
+  stats_um(sol.r, res.rms_after_um, res.max_after_um);
+  identifiability_and_uncertainty(
+      comp::scaled_svd(jacobian(problem, res.errors, r0.size()), kUnseenColumnShare, o.rank_tolerance), sol.r, res);
   return res;
 }
 

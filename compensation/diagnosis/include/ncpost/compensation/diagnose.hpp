@@ -8,7 +8,7 @@
 //  1. Screening (linearised, cheap): the exact Jacobian (residuals.hpp, automatic
 //     differentiation) of every candidate's parameters at the current solution is projected off
 //     the span of the current model's fitted parameters. A column whose remaining part is below
-//     `alias_tolerance` of itself (the sine of its angle to that span, as identifiability.hpp)
+//     `alias_tolerance` of itself (the sine of its angle to that span, as fit/rank.hpp)
 //     is aliased: the candidate is not identifiable together with the model and is skipped. The
 //     residual's projection on the remaining part is the drop in the sum of squares Σr² the
 //     candidate would buy (exact for a linear model). Drift: lin, exp or both, the time
@@ -52,7 +52,7 @@ struct DiagnoseOptions {
   double significance = 1e-3;        ///< family-wise false-positive rate of one step
   int max_effects = 8;
   int refit_top = 3;                 ///< candidates refitted per step (by screened drop)
-  double alias_tolerance = 1e-3;     ///< identifiability.hpp's default
+  double alias_tolerance = 1e-3;     ///< fit/rank.hpp's default
   PlausibleSizes plausible;          ///< diagnose_effect_size.hpp
   bool weight_by_set_noise = true;   ///< final refit weighted by each set's noise (see below)
   std::function<void(const std::string&)> progress;  ///< one line per step (optional)
@@ -76,7 +76,7 @@ struct AddedEffect {
   int tested = 0;               ///< candidates screened in its step
   /// Can the data tell it from the other fitted parameters (issue 17, e.g. EXC:h2 beside
   /// EAC:h2 / EBC:h2)? The sine of its columns to the span of all others in the final model
-  /// (identifiability.hpp's measure; 1 = independent, 0 = an alias), and the added effects
+  /// (fit/rank.hpp's measure; 1 = independent, 0 = an alias), and the added effects
   /// whose columns correlate with its own above 0.9 (largest canonical correlation).
   double separation_sine = 1.0;
   std::vector<std::pair<std::string, double>> correlated;

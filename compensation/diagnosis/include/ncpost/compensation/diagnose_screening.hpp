@@ -6,7 +6,7 @@
 //
 //   added_basis      the orthonormal directions a candidate's columns add to span(Q); a column
 //                    keeping no more than `tol` of its norm (the sine of its angle to the span, as
-//                    identifiability.hpp) is aliased. The residual's projection on the added
+//                    fit/rank.hpp) is aliased. The residual's projection on the added
 //                    directions is the drop in Σr² the candidate buys (exact for a linear model).
 //   same_directions  two candidates adding the same directions: the data cannot tell them apart.
 //   screen_drift     drift along one axis: lin·t, exp·(1 − e^(−t/tau)) or both. Both columns are

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Identification of error parameters from measurements (docs/cli.md `identify`; seeds 000, 002):
-// nonlinear least squares (Levenberg–Marquardt with Marquardt scaling) on the residuals of
+// nonlinear least squares (the fitting core, fit/damped_least_squares.hpp: Gauss–Newton steps,
+// damped by Levenberg–Marquardt when one fails to decrease the cost) on the residuals of
 // residuals.hpp, Jacobians by automatic differentiation through the templated chain.
 //
 // 1. The Jacobian at the prior values (0 unless `fixed` gives one) is analysed for
-//    identifiability (identifiability.hpp); parameters the data cannot separate are pinned at
+//    identifiability (fit/rank.hpp); parameters the data cannot separate are pinned at
 //    their prior value and reported with their null-space direction — no invented values.
 // 2. The kept parameters are fitted; the rank is checked again at the solution.
 // 3. Uncertainty: standard deviations from s²·(JᵀJ)⁻¹ of the kept parameters, s² the residual
@@ -17,23 +18,26 @@
 #include <vector>
 
 #include "ncpost/compensation/error_parameters.hpp"
-#include "ncpost/compensation/identifiability.hpp"
+#include "ncpost/compensation/fit/rank.hpp"
+#include "ncpost/compensation/fit/robust_loss.hpp"
 #include "ncpost/compensation/measurement.hpp"
 #include "ncpost/compensation/model_json.hpp"
 
 namespace ncpost::comp {
 
-enum class Loss { squared, huber, cauchy };
-
 struct IdentifyOptions {
   Loss loss = Loss::squared;
   double loss_scale_um = 3.0;   ///< where the robust loss leaves the quadratic (µm)
   int max_iterations = 100;
-  double rank_tolerance = 1e-3;  ///< identifiability.hpp
+  double rank_tolerance = 1e-3;  ///< fit/rank.hpp
   ErrorParameters fixed;         ///< known values (e.g. measured separately): held, not fitted
   /// Weighted least squares: one weight per measurement set (1/σ of its noise, any common
   /// scale); empty = all equal. Residual statistics stay unweighted (µm).
   std::vector<double> set_weights;
+  /// Where the fit of each named parameter starts (e.g. a previous fit of a model it extends);
+  /// others start at their prior. The prior (0 or `fixed`) stays what the rank analysis and a
+  /// pinned parameter use: only the path to the minimum changes, not the minimum.
+  ErrorParameters start;
 
   /// Empty if valid, else what is wrong.
   std::string validate() const;

@@ -15,7 +15,7 @@
 // with the real Abbe offsets (tool length, reflector offset, positions of the other axes),
 // including the couplings a per-line formula misses (e.g. the yaw of Y at the line's Y position
 // turning the X motion). Jacobian by central differences over the nodes that carry each row.
-// Identifiability as identification (identifiability.hpp): columns scaled, a node whose column
+// Identifiability as identification (fit/rank.hpp): columns scaled, a node whose column
 // lies within `rank_tolerance` of the span of the earlier ones is pinned at 0 and reported, in
 // priority order positioning, reversal, straightness, pitch/yaw, roll — so that with a single
 // straightness line the roll is the one reported as unseen.
@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "ncpost/compensation/error_parameters.hpp"
-#include "ncpost/compensation/identifiability.hpp"
+#include "ncpost/compensation/fit/rank.hpp"
 #include "ncpost/compensation/laser_function.hpp"
 #include "ncpost/compensation/laser_iso230_2.hpp"
 #include "ncpost/compensation/measurement.hpp"
@@ -42,7 +42,7 @@
 namespace ncpost::comp {
 
 struct LaserIdentifyOptions {
-  double rank_tolerance = 1e-3;  ///< identifiability.hpp
+  double rank_tolerance = 1e-3;  ///< fit/rank.hpp
   int max_iterations = 4;        ///< Gauss–Newton steps
   bool fit_reversal = true;      ///< reversal:<axis> where both approach directions are present
 

@@ -7,7 +7,8 @@
 // −axis — reads the sphere centre deviation (dx, dy, dz) = −(P_true − P_nominal) in M (mm).
 // Two stylus lengths make the tool orientation visible.
 //
-// The fit: Gauss–Newton with the Jacobian by central differences (0.01 mm, 1e-5 rad), columns
+// The fit (the fitting core, fit/damped_least_squares.hpp): Gauss–Newton first (damped only when
+// a step fails) with the Jacobian by central differences (0.01 mm, 1e-5 rad), columns
 // scaled to unit norm; the step is the truncated-SVD (minimum norm) solution, so the directions
 // the data cannot see stay at zero and are reported as the null space (singular values below
 // `rank_tolerance` × the largest; null-space weights are in the column-scaled parameters, i.e.

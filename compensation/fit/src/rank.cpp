@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ncpost/compensation/identifiability.hpp"
+#include "ncpost/compensation/fit/rank.hpp"
 
 #include <Eigen/QR>
 #include <Eigen/SVD>

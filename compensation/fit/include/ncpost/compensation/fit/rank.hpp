@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+// The fitting core (compensation/fit/, docs/architecture.md), rank part: which parameters to fit.
 // Identifiability of parameters from a Jacobian (Ceres covariance.h discusses the same problem):
 // columns are scaled to unit norm (so that mm and rad parameters compare), the singular values
 // of the scaled Jacobian give the rank, and a maximal independent set of parameters is chosen in
@@ -15,6 +16,10 @@
 // less than 0.1 % of itself cannot be separated from them at any realistic noise (its
 // uncertainty would be ~1000 times its effect-to-noise ratio). Genuinely observable parameters
 // of the tests here stay above 0.05. A column shorter than 1e-9 of the longest counts as zero.
+//
+// This is the rule for callers with a priority order (ballbar/sphere and laser identification):
+// it pins whole parameters before the fit. A caller without one (TRR-XY) lets the solver
+// truncate the singular values of the same column-scaled Jacobian instead (scaled_svd.hpp).
 #include <string>
 #include <vector>
 
