@@ -141,7 +141,7 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
   if (number > Parameters::kLastUserNumber)
     throw ExpressionError(start, fmt::format("#{} is a system variable (work offsets, modal state, alarms, tool data, "
                                              "...): its meaning is the control's, so it is not read; set a parameter "
-                                             "#1 .. #999 instead", static_cast<long long>(number)));
+                                             "#1 .. #999 instead", fmt::format("{:.0f}", number)));
   ref.number = static_cast<int>(number);
   return ref;
 }
@@ -181,6 +181,7 @@ ParamValue Evaluator::value(std::string_view s, std::size_t& at) const {
     while (end < s.size() && is_digit(s[end])) ++end;
     if (end == at + 1 && c == '.') throw ExpressionError(at, "malformed number '.'");
     const double v = std::strtod(std::string(s.substr(at, end - at)).c_str(), nullptr);
+    if (!std::isfinite(v)) throw ExpressionError(at, "a number beyond the range of numbers");
     at = end;
     return v;
   }
@@ -207,6 +208,8 @@ ParamValue Evaluator::binary(std::string_view s, std::size_t& at, int level) con
     // ** binds to the right (2 ** 3 ** 2 = 2 ** 9)
     const ParamValue right = level == kTopLevel ? binary(s, at, level) : binary(s, at, level + 1);
     left = apply(*op, left, right, look);
+    if (left && !std::isfinite(*left))
+      throw ExpressionError(look, fmt::format("'{}' gives a value beyond the range of numbers", op->name));
     if (level == kTopLevel) return left;
   }
 }
