@@ -138,6 +138,10 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
   const double number = need(n, start, "a parameter number");
   if (!whole(number) || number < 0.0)
     throw ExpressionError(start, fmt::format("#{}: a parameter number is a whole number >= 0", number));
+  if (number > Parameters::kLastUserNumber && number < 1e6 && params_.system(static_cast<int>(number))) {
+    ref.number = static_cast<int>(number);
+    return ref;
+  }
   if (number > Parameters::kLastUserNumber)
     throw ExpressionError(start, fmt::format("#{} is a system variable (work offsets, modal state, alarms, tool data, "
                                              "...): its meaning is the control's, so it is not read; set a parameter "
@@ -149,6 +153,7 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
 ParamValue Evaluator::read(const ParamRef& ref, std::size_t) const {
   if (!ref.name.empty()) return params_.get(ref.name);
   if (ref.number == 0) return std::nullopt;
+  if (ref.number > Parameters::kLastUserNumber) return params_.system(ref.number);
   return params_.get(ref.number);
 }
 
