@@ -7,10 +7,10 @@
 # of tests/data/real/ cut into 40-line pieces (small inputs keep the executions fast). Findings (crash-*, leak-*, timeout-*)
 # land in build-fuzz/fuzz/findings/<target>/; the exit status is non-zero if any target fails.
 #   tests/fuzz/run.sh [SECONDS]        (from the repository root)
-# Environment: TARGETS (default: all four), FUZZ_FLAGS (extra libFuzzer flags, e.g.
+# Environment: TARGETS (default: all five), FUZZ_FLAGS (extra libFuzzer flags, e.g.
 # "-fork=1 -ignore_crashes=1" to keep going after a finding), JOBS (targets fuzzed at the same
-# time, default: the number of cores; each target runs its SECONDS on one core either way, so 4
-# targets on 2 cores take 2 x SECONDS instead of 4 x SECONDS).
+# time, default: the number of cores; each target runs its SECONDS on one core either way, so 5
+# targets on 2 cores take 3 x SECONDS instead of 5 x SECONDS).
 set -eu
 SECONDS_EACH=${1:-60}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -18,7 +18,7 @@ BUILD="$ROOT/build-fuzz"
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuzzer-no-link"
 
 # -O1 with line tables only (what OSS-Fuzz builds with): about 15 % less compile time than -O2 -g,
-# and the sanitizers' reports still name file and line. Only the four targets and the libraries
+# and the sanitizers' reports still name file and line. Only the five targets and the libraries
 # they link are built (not the ncpost executable, the tests or the benchmarks).
 if [ ! -f "$ROOT/build/tools/ncpost/libncpost_cli.a" ]; then
   cmake -S "$ROOT" -B "$ROOT/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -27,7 +27,7 @@ fi
 CC=clang-14 CXX=clang++-14 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DNCPOST_FUZZ_LIBS_FROM="$ROOT/build" \
   -DNCPOST_BUILD_FUZZ=ON -DNCPOST_BUILD_TESTS=OFF -DNCPOST_BUILD_BENCH=OFF -DNCPOST_FUZZ_SANITIZE="$SAN" >/dev/null
-TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_apt_reader fuzz_post_cli}
+TARGETS=${TARGETS:-fuzz_gcode_block fuzz_gcode_reader fuzz_gcode_expression fuzz_apt_reader fuzz_post_cli}
 FUZZ_FLAGS=${FUZZ_FLAGS:-}
 ninja -C "$BUILD" -j2 $TARGETS
 
@@ -39,6 +39,7 @@ prepare_corpus() {
   target=$1
   case $target in
     fuzz_apt*) seeds="$ROOT/tests/fuzz/corpus/apt"; pattern='*.apt* *.ncl *.txt' ;;
+    fuzz_gcode_expression) seeds="$ROOT/tests/fuzz/corpus/expression"; pattern='' ;;
     fuzz_post_cli) seeds="$ROOT/tests/fuzz/corpus/apt $ROOT/tests/fuzz/corpus/gcode"; pattern='*.apt* *.ncl *.nc' ;;
     *) seeds="$ROOT/tests/fuzz/corpus/gcode"; pattern='*.ngc *.nc *.gcode' ;;
   esac

@@ -126,6 +126,20 @@ TEST_CASE("gcode expression: parameters, vacancy and the refusals") {
   CHECK_THAT(eval_error("[1 + 2", p), Catch::Contains("']'"));
 }
 
+TEST_CASE("gcode expression: values beyond the range of numbers are refused (fuzz findings)") {
+  // a parameter number beyond a 64-bit integer is named as written, not converted (undefined
+  // behaviour before); sums, products and numbers that overflow to infinity never reach a word
+  const std::string digits(400, '9');
+  CHECK_THAT(eval_error("#1180591620717411303424"), Catch::Contains("#1180591620717411303424 is a system variable"));  // 2^70
+  CHECK_THAT(eval_error("[" + digits + "]"), Catch::Contains("beyond the range"));
+  const std::string big = "1" + std::string(200, '0');  // 1e200
+  CHECK_THAT(eval_error("[" + big + " * " + big + "]"), Catch::Contains("'*' gives a value beyond the range"));
+  const std::string near_max = "17" + std::string(307, '0');  // 1.7e308, a finite double
+  CHECK(number("[" + near_max + " - " + near_max + "]") == 0.0);
+  CHECK_THAT(eval_error("[" + near_max + " + " + near_max + "]"), Catch::Contains("'+' gives a value beyond the range"));
+  CHECK(number("[" + big + " / " + big + "]") == 1.0);
+}
+
 TEST_CASE("gcode macro line: assignments, word values and columns") {
   Parameters p;
   std::string out;

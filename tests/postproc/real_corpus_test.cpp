@@ -135,7 +135,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       std::snprintf(origin, sizeof origin, "%g,%g,%g", o[0], o[1], o[2]);
       const std::string out = dir + "/" + file + ".nc", log = dir + "/" + file + ".log";
       std::string args = "post --machine " + ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml") +
-                         " --workpiece-origin=" + origin + " --dialect " + manifest.at("dialect").get<std::string>() +
+                         " --workpiece-origin=" + origin + " --dialect " +
+                         (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() +
                          " --tolerance " + std::to_string(tolerance_mm) + " --verify -o " + out;
       if (e.contains("input_kind")) args += " --input-kind " + e.at("input_kind").get<std::string>();
       args += " " + ncpost::test::data("real/" + file);

@@ -10,7 +10,9 @@
 //
 // Words: G0 G1 (straight moves only), G90 G91, G54-G59, G59.1-G59.3, G54.1 P<n>, G10 L2 P<n>
 // (values), G10 L20 P<n> (Fanuc/Haas: G54.1 P<n>'s values; LinuxCNC: so that the current position
-// reads the words), M2 M30, N, F S T M3 M5 M6 H G17 G21 G40 G43 G49 G80 G94 (no effect here).
+// reads the words), G52 (a local shift: the words) and G92 (the local shift that makes the current
+// position read the words), both added in every offset, M2 M30, N, F S T M3 M5 M6 H G17 G21 G40
+// G43 G49 G80 G94 (no effect here).
 // Parameters: #1..#5399 numbered, `#n = expr`, `X#1`, `X[expr]` with + - * / and
 // EQ NE GT GE LT LE. Subprograms: Fanuc/Haas `M98 P<o> L<k>` to `O<o>` blocks (after M30 too),
 // Haas `M97 P<n> L<k>` to block N<n>, `M99` returns. LinuxCNC o-words: sub/endsub/call (with
@@ -37,6 +39,7 @@ struct ControlEnd {
   int line = 0;                     ///< 1-based line of the motion block
   std::map<char, double> machine;   ///< machine coordinates at its end (mm, deg)
   bool complete = true;             ///< every axis has been programmed (else where the machine stood before is in it)
+  bool rapid = false;               ///< a G0 block: its path between the ends is the control's own
 };
 
 class ControlInterpreter {
@@ -336,6 +339,16 @@ class ControlInterpreter {
 
   std::size_t block(std::size_t pc, const std::map<char, double>& w, const std::vector<int>& g, const std::vector<int>& m) {
     bool is_g10 = false;
+    for (int c : g)
+      if (c == 520 || c == 920) {
+        for (char a : spec_.axes) {
+          if (!w.count(a)) continue;
+          const double before = local_[a];
+          local_[a] = c == 520 ? w.at(a) : pos_[a] + local_[a] - w.at(a);
+          pos_[a] -= local_[a] - before;  // the machine stays where it is
+        }
+        return pc + 1;
+      }
     for (int c : g) {
       if (c == 0 || c == 10) motion_ = c;
       else if (c == 900) absolute_ = true;
@@ -359,10 +372,10 @@ class ControlInterpreter {
       }
     if (moves) {
       if (ends_.empty()) first_values_ = spec_.offsets;
-      ControlEnd e{static_cast<int>(pc + 1), {}, true};
+      ControlEnd e{static_cast<int>(pc + 1), {}, true, motion_ == 0};
       for (char a : spec_.axes) programmed_[a] = programmed_[a] || w.count(a) > 0;
       for (char a : spec_.axes) e.complete = e.complete && programmed_[a];
-      for (char a : spec_.axes) e.machine[a] = pos_[a] + offset(active_, a);
+      for (char a : spec_.axes) e.machine[a] = pos_[a] + offset(active_, a) + local_[a];
       ends_.push_back(e);
     }
     for (int c : m) {
@@ -397,6 +410,7 @@ class ControlInterpreter {
   std::vector<std::string> lines_;
   std::map<int, double> params_;
   std::map<char, double> pos_;  ///< program coordinates in the active offset
+  std::map<char, double> local_;  ///< the G52 / G92 shift
   std::map<char, bool> programmed_;  ///< the axis has had a word
   std::string active_ = "G54";
   int motion_ = 0;

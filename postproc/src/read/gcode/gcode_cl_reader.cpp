@@ -615,6 +615,7 @@ struct GcodeClReader::State {
     MacroFlow flow;
     if (may_hold_macro(line)) {
       if (options.block_delete && is_deleted(line)) return skip_deleted(line_number);
+      current_position_parameters();
       flow = apply_macro_line(line, parameters, macro_line, file, line_number);
       line = macro_line;
     }
@@ -677,6 +678,22 @@ struct GcodeClReader::State {
 
   // ---- macro statements: parameters, expressions, jumps and loops (gcode_macro.hpp)
   Parameters parameters;
+
+  // LinuxCNC's #5420-#5425: the current position (X Y Z in program units, A B C in degrees) in the
+  // active coordinate system with every offset (work offset, G52/G92) applied, where the blocks
+  // before this line left it; an axis not programmed yet has none (refused where read). Other
+  // controls number their position variables otherwise: none given.
+  void current_position_parameters() {
+    if (options.control != cl::ControlFamily::linuxcnc || interpreter.word_axes()) return;
+    const ModalState& st = interpreter.state();
+    const std::array<double, 6>& shift = interpreter.work_frames().shift();
+    constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+    for (std::size_t i = 0; i < 6; ++i) {
+      std::optional<double> v;
+      if (st.known[i]) v = (st.position[i] - shift[i]) * (i < 3 ? 1.0 / (st.inch ? kMmPerInch : 1.0) : kDegPerRad);
+      parameters.set_system(5420 + static_cast<int>(i), v);
+    }
+  }
   std::string macro_line;  ///< the line with its expressions evaluated
   ProgramFlow program_flow{source, file};
 

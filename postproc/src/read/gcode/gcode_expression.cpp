@@ -138,10 +138,14 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
   const double number = need(n, start, "a parameter number");
   if (!whole(number) || number < 0.0)
     throw ExpressionError(start, fmt::format("#{}: a parameter number is a whole number >= 0", number));
+  if (number > Parameters::kLastUserNumber && number < 1e6 && params_.system(static_cast<int>(number))) {
+    ref.number = static_cast<int>(number);
+    return ref;
+  }
   if (number > Parameters::kLastUserNumber)
     throw ExpressionError(start, fmt::format("#{} is a system variable (work offsets, modal state, alarms, tool data, "
                                              "...): its meaning is the control's, so it is not read; set a parameter "
-                                             "#1 .. #999 instead", static_cast<long long>(number)));
+                                             "#1 .. #999 instead", fmt::format("{:.0f}", number)));
   ref.number = static_cast<int>(number);
   return ref;
 }
@@ -149,6 +153,7 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
 ParamValue Evaluator::read(const ParamRef& ref, std::size_t) const {
   if (!ref.name.empty()) return params_.get(ref.name);
   if (ref.number == 0) return std::nullopt;
+  if (ref.number > Parameters::kLastUserNumber) return params_.system(ref.number);
   return params_.get(ref.number);
 }
 
@@ -181,6 +186,7 @@ ParamValue Evaluator::value(std::string_view s, std::size_t& at) const {
     while (end < s.size() && is_digit(s[end])) ++end;
     if (end == at + 1 && c == '.') throw ExpressionError(at, "malformed number '.'");
     const double v = std::strtod(std::string(s.substr(at, end - at)).c_str(), nullptr);
+    if (!std::isfinite(v)) throw ExpressionError(at, "a number beyond the range of numbers");
     at = end;
     return v;
   }
@@ -207,6 +213,8 @@ ParamValue Evaluator::binary(std::string_view s, std::size_t& at, int level) con
     // ** binds to the right (2 ** 3 ** 2 = 2 ** 9)
     const ParamValue right = level == kTopLevel ? binary(s, at, level) : binary(s, at, level + 1);
     left = apply(*op, left, right, look);
+    if (left && !std::isfinite(*left))
+      throw ExpressionError(look, fmt::format("'{}' gives a value beyond the range of numbers", op->name));
     if (level == kTopLevel) return left;
   }
 }

@@ -110,6 +110,9 @@ struct Rewriter {
     ++at;
     const ParamValue v = ev.expression(line, at);
     if (ref.name.empty() && ref.number == 0) fail(start, "#0 is always vacant: it cannot be set");
+    if (ref.name.empty() && ref.number > Parameters::kLastUserNumber)
+      fail(start, fmt::format("#{} is a system variable the program reads (the control sets it): it cannot be set",
+                              ref.number));
     assignments.emplace_back(ref, v);
     blank(start, at);
     return at;

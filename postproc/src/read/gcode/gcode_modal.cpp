@@ -60,7 +60,7 @@ enum GGroup : int {
 /// The modal group of a supported G code, or -1 with `why` naming what is not supported.
 int g_group(int code10, const char*& why) {
   switch (code10) {
-    case 40: case 100: case 280: case 300: case 530: return g_non_modal;
+    case 40: case 100: case 280: case 300: case 530: case 520: case 920: return g_non_modal;
     case 0: case 10: case 20: case 30: case 800: return g_motion;
     case 170: case 180: case 190: return g_plane;
     case 900: case 910: return g_distance;
@@ -80,7 +80,7 @@ int g_group(int code10, const char*& why) {
     case 382: case 383: case 384: case 385: why = "probing"; return -1;
     case 50: case 51: case 52: case 53: why = "splines"; return -1;
     case 70: case 80: why = "lathe diameter/radius mode"; return -1;
-    case 920: case 921: case 922: case 923: case 520: why = "coordinate offsets (G52/G92)"; return -1;
+    case 921: case 922: case 923: why = "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)"; return -1;
     case 680: case 690: case 681: why = "coordinate rotation"; return -1;
     case 500: case 510: why = "scaling"; return -1;
     case 150: case 160: why = "polar coordinates"; return -1;
@@ -553,11 +553,13 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
   apply_tool_length(cx, w, codes, fx);
   apply_rtcp(cx, codes);
   apply_work_offset(cx, w, codes);
-  if (codes.is(g_non_modal, 100)) apply_g10(cx, w, codes);
   if (codes.is(g_dynamic_offset, 2540))
     notice_once("G254", line_number, codes.of(g_dynamic_offset).column,
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (codes.in(g_distance)) st.incremental = codes.of(g_distance).code10 == 910;
+  // after G90/G91 of the same block: under G91 both are refused
+  if (codes.is(g_non_modal, 100)) apply_g10(cx, w, codes);
+  if (codes.is(g_non_modal, 520) || codes.is(g_non_modal, 920)) apply_local_offset(cx, w, codes);
   apply_arc_distance(cx, codes);
   if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
   apply_motion_mode(codes, fx);
@@ -713,6 +715,49 @@ void Interpreter::apply_g10(const Context& cx, const Words& w, const Codes& code
   const std::string why = reading ? frames_.set_reading(name, st.position, values) : frames_.set_value(name, values);
   if (!why.empty()) cx.fail(column, why);
   frames_.note_source(name, fmt::format("G10 at line {}", cx.line_number));
+}
+
+// G52 (the local shift is the words) and G92 (the local shift that makes the current position read
+// the words): added to every absolute coordinate after it, in every work offset (work_frames.hpp).
+// The posted program carries the shift in its coordinates and writes neither word.
+void Interpreter::apply_local_offset(const Context& cx, const Words& w, const Codes& codes) {
+  ModalState& st = state_;
+  const Code c = codes.of(g_non_modal);
+  const int code = c.code10 / 10;  // 52 or 92
+  if (st.incremental)
+    cx.fail(c.column, fmt::format("G{} under G91: write G90 before it (controls differ on incremental values)", code));
+  if (word_axes_)
+    cx.fail(c.column, fmt::format("G{} on the machine {}, whose words are no Cartesian frame: not supported", code,
+                                  axis_letters_));
+  const std::array<double, 6>& local = frames_.local();
+  const bool shifted = std::any_of(local.begin(), local.end(), [](double v) { return v != 0.0; });
+  if (shifted && local_code_ != 0 && local_code_ != code)
+    cx.fail(c.column, fmt::format("G{} while the shift of G{} (line {}) is in force: Fanuc keeps the two apart, "
+                                  "LinuxCNC shares one offset; cancel it first (G{} with zeros)",
+                                  code, local_code_, local_line_, local_code_));
+  const double length_scale = st.inch ? kMmPerInch : 1.0;
+  std::array<std::optional<double>, 6> values{};
+  std::string words;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const char L = slots_[i];
+    if (!L || !w.has(L)) continue;
+    values[i] = slot_angle_[i] ? deg_to_rad(w.get(L)) : w.get(L) * length_scale;
+    if (!(std::abs(*values[i]) <= kMaxCoordinate)) cx.fail(w.col(L), fmt::format("{} is out of range", L));
+    if (code == 92 && !st.known[i])
+      cx.fail(w.col(L), fmt::format("G92 makes the current position read {}{}, and where {} stands is not known yet "
+                                    "(no motion has programmed it)", L, w.get(L), L));
+    words += fmt::format(" {}{}", L, w.get(L));
+  }
+  if (words.empty()) cx.fail(c.column, fmt::format("G{} without axis words", code));
+  if (code == 52) frames_.set_local(values);
+  else frames_.set_local_reading(st.position, values);
+  local_code_ = code;
+  local_line_ = cx.line_number;
+  const std::array<double, 6>& d = frames_.local();
+  notice_once(fmt::format("G{}", code), cx.line_number, c.column,
+              fmt::format("G{}{}: the coordinates after it are shifted by X{:+.4f} Y{:+.4f} Z{:+.4f} mm into the "
+                          "posted program's frame (which writes the shift into its coordinates, not the G{}); "
+                          "later G{} blocks the same way", code, words, d[0], d[1], d[2], code, code));
 }
 
 // G43 H<n> (and G43.4, G43.5, G234): the tool's length from register n, which the post writes
@@ -898,7 +943,10 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
       if (!first_axis_column || w.col(L) < first_axis_column) first_axis_column = w.col(L);
     }
   const int axis_column = first_axis_column ? first_axis_column : cx.block.column;
-  if (codes.is(g_non_modal, 40) || codes.is(g_non_modal, 100)) return;  // G4: X is its time; G10: offset values
+  // G4: X is its time; G10, G52, G92: offset values
+  if (codes.is(g_non_modal, 40) || codes.is(g_non_modal, 100) || codes.is(g_non_modal, 520) ||
+      codes.is(g_non_modal, 920))
+    return;
   const bool home_return = codes.is(g_non_modal, 280) || codes.is(g_non_modal, 300);
   if (home_return) note_reference_return(cx, w, codes, fx);
   if (codes.is(g_non_modal, 530)) note_machine_coordinates(cx, w, codes, fx);

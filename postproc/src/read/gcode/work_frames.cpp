@@ -52,8 +52,26 @@ std::string WorkFrames::update_shift() {
                        "apart",
                        named(active_), named(base_), named(base_), given, unknown);
   }
-  shift_ = shift;
+  offset_shift_ = shift;
+  combine();
   return {};
+}
+
+void WorkFrames::combine() {
+  for (std::size_t i = 0; i < 6; ++i) shift_[i] = offset_shift_[i] + local_[i];
+}
+
+void WorkFrames::set_local(const std::array<std::optional<double>, 6>& shift) {
+  for (std::size_t i = 0; i < 6; ++i)
+    if (shift[i]) local_[i] = *shift[i];
+  combine();
+}
+
+void WorkFrames::set_local_reading(const std::array<double, 6>& position_base,
+                                   const std::array<std::optional<double>, 6>& reads) {
+  for (std::size_t i = 0; i < 6; ++i)
+    if (reads[i]) local_[i] = position_base[i] - *reads[i] - offset_shift_[i];
+  combine();
 }
 
 std::string WorkFrames::select(const std::string& name) {
@@ -70,7 +88,8 @@ void WorkFrames::moved() {
     if (values[i] && !values[i]->from_base) base_value_[i] = values[i]->v;
     else values[i] = Value{0.0, true};
   }
-  shift_ = {};
+  offset_shift_ = {};
+  combine();
 }
 
 std::string WorkFrames::set_value(const std::string& name, const std::array<std::optional<double>, 6>& machine_value) {

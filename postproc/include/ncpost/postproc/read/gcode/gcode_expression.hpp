@@ -7,7 +7,9 @@
 // LinuxCNC: numbered parameters), named `#<name>` and `#<_global>` (LinuxCNC: case and blanks
 // do not count), `#[expr]` and `##n` (the parameter whose number is a value). A parameter never
 // set, and `#0`, are vacant. System variables (`#1000` and up: `#3000` alarms, `#4001` modal
-// state, `#5221` work offsets, ...) are refused with their number: their meaning is the control's.
+// state, `#5221` work offsets, ...) are refused with their number: their meaning is the control's;
+// the reader may give the few whose value it knows (LinuxCNC's current position `#5420`-`#5425`),
+// which are read, never set.
 //
 // Expressions: `[ ... ]` with, from the lowest precedence, `OR XOR AND`, `EQ NE GT GE LT LE`,
 // `+ -`, `* / MOD`, `**`, unary `+ -`; functions `SIN COS TAN` (degrees) `ASIN ACOS` (result in
@@ -50,10 +52,20 @@ class Parameters {
   ParamValue get(const std::string& name) const;
   void set(const std::string& name, ParamValue v) { named_[name] = v; }
   bool exists(const std::string& name) const { return named_.count(name) > 0; }
+  /// A system variable whose value the reader knows (nullopt: forget it); read-only to programs.
+  void set_system(int number, std::optional<double> v) {
+    if (v) system_[number] = *v;
+    else system_.erase(number);
+  }
+  std::optional<double> system(int number) const {
+    const auto it = system_.find(number);
+    return it == system_.end() ? std::nullopt : std::optional<double>(it->second);
+  }
 
  private:
   std::array<ParamValue, kLastUserNumber + 1> numbered_{};
   std::map<std::string, ParamValue> named_;
+  std::map<int, double> system_;
 };
 
 /// Which parameter a `#...` reference names: a number or a normalized name.

@@ -163,6 +163,8 @@ class Interpreter {
   /// left out where the user gave the units (`units_given`).
   void power_on(const std::string& codes, const std::string& source, bool units_given);
   const WorkFrames& work_frames() const { return frames_; }
+  /// The machine's axis words are U V W ... (no X Y Z A B C slots).
+  bool word_axes() const { return word_axes_; }
 
  private:
   struct Words;    ///< the words of one block by letter
@@ -182,6 +184,7 @@ class Interpreter {
   void apply_arc_distance(const Context& cx, const Codes& codes);
   void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
   void apply_g10(const Context& cx, const Words& w, const Codes& codes);
+  void apply_local_offset(const Context& cx, const Words& w, const Codes& codes);
   void note_moved(const Context& cx);
   std::string g10_offset_name(const Context& cx, const Words& w, int kind, int column) const;
   void apply_tool_length(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
@@ -211,6 +214,8 @@ class Interpreter {
   ModalState state_;
   WorkFrames frames_{nullptr, {}};
   cl::ControlFamily control_ = cl::ControlFamily::unknown;
+  int local_code_ = 0;   ///< 52 or 92: the word that set the local shift in force
+  int local_line_ = 0;   ///< and its line
   Reframe reframe_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;

@@ -11,6 +11,12 @@
 // --work-offsets file and from the program's own G10 L2 (absolute) and LinuxCNC G10 L20 (so that
 // the current position reads the given value: value_k - value_base = p_base - given, known even
 // where the base's own value is not). A shift that needs a value nobody gave is refused.
+//
+// A local shift (G52, G92) is added on top, in every work offset alike (Fanuc: G52 and G92 shift
+// all of G54 .. G59; LinuxCNC: one offset for both, applied in every coordinate system):
+//   p_base = p_k + (value_k - value_base) + local
+// G52 sets `local` on the given axes; G92 sets it so that the current position reads the given
+// values. Axes not given keep theirs.
 #include <array>
 #include <map>
 #include <memory>
@@ -36,7 +42,8 @@ class WorkFrames {
   const std::string& base() const { return base_; }
   /// `name` for messages ("the control's active offset" for "").
   static std::string named(const std::string& name);
-  /// Added to absolute program coordinates (mm, rad): zero while the base is in force.
+  /// Added to absolute program coordinates (mm, rad): zero while the base is in force and no
+  /// local shift is set.
   const std::array<double, 6>& shift() const { return shift_; }
 
   /// Selects offset `name`. Returns "" or why its shift is not known.
@@ -49,6 +56,13 @@ class WorkFrames {
   /// `position_base` (base frame) reads `reads` in it. Only after the base is fixed. "" or why not.
   std::string set_reading(const std::string& name, const std::array<double, 6>& position_base,
                           const std::array<std::optional<double>, 6>& reads);
+  /// G52: the local shift (mm, rad) on the given axes.
+  void set_local(const std::array<std::optional<double>, 6>& shift);
+  /// G92: the local shift on the given axes such that the current position `position_base`
+  /// (base frame) reads `reads` (mm, rad) in the active offset.
+  void set_local_reading(const std::array<double, 6>& position_base, const std::array<std::optional<double>, 6>& reads);
+  /// The local shift in force (mm, rad): zero until a G52 or G92.
+  const std::array<double, 6>& local() const { return local_; }
   /// Where the shift of `name` came from, for notices ("work-offsets.toml", "G10 at line 12").
   std::string source_of(const std::string& name) const;
   void note_source(const std::string& name, std::string source) { sources_[name] = std::move(source); }
@@ -72,7 +86,11 @@ class WorkFrames {
   std::string base_;
   bool fixed_ = false;
   std::array<std::optional<double>, 6> base_value_{};  ///< the base's value at the first motion
-  std::array<double, 6> shift_{};
+  void combine();
+
+  std::array<double, 6> offset_shift_{};  ///< value_k - value_base
+  std::array<double, 6> local_{};         ///< G52 / G92
+  std::array<double, 6> shift_{};         ///< the sum of both
 };
 
 }  // namespace ncpost::gcode
