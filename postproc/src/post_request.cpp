@@ -27,6 +27,13 @@ std::string header_model_line(const PostRequest& r, bool has_model, const std::o
                                   : std::string("none"));
 }
 
+nonlinear::CompensationOptions compensation(const PostRequest& r, double tolerance_mm) {
+  nonlinear::CompensationOptions c;
+  c.method = r.nonlinear;
+  c.tolerance_mm = tolerance_mm;
+  return c;
+}
+
 std::string PostRequest::validate() const {
   if (!machine) return "no machine (serial_post_machine, trr_xy_post_machine)";
   if (const std::string why = machine->refuses(*this); !why.empty()) return why;

@@ -51,11 +51,10 @@ class SerialModels final : public PostModels {
     o.native_cycles = !model_;
     o.tilted_plane = r_.tilted_plane;
     if (tolerance_mm) {
-      nonlinear::CompensationOptions comp;
-      comp.method = r_.nonlinear;
-      comp.tolerance_mm = *tolerance_mm;
+      const nonlinear::CompensationOptions comp = compensation(r_, *tolerance_mm);
       o.take_up_reversal = true;
-      o.subdivide = make_tolerance_subdivider(machine_, r_.setup, solver(), actual_, comp, r_.dialect, r_.input_name);
+      o.subdivide = actual_ ? make_tolerance_subdivider(*actual_, comp, r_.dialect)
+                            : make_tolerance_subdivider(nominal_, comp, r_.dialect);
     }
     return o;
   }

@@ -42,7 +42,7 @@ class TrrModels final : public PostModels {
   }
   PostOptions options(const std::optional<double>& tolerance_mm) const override {
     PostOptions o = trr_post_options();
-    if (tolerance_mm) o.subdivide = make_trr_subdivider(solver_, r_.dialect, TrrSubdivision{*tolerance_mm, r_.nonlinear});
+    if (tolerance_mm) o.subdivide = make_tolerance_subdivider(solver_, compensation(r_, *tolerance_mm), r_.dialect);
     return o;
   }
   const KinematicModel& before_commands() const override { return reading_; }

@@ -2,8 +2,9 @@
 #pragma once
 // The steps of each subcommand that differ between machine kinds (machine_kind.hpp): what the
 // command gives them (its arguments, checked), what they give back (the contents of the files the
-// command then writes, all or none), and each kind's steps. The serial steps are in the command
-// files (cmd_*.cpp), the TRR-XY steps in trr_commands.cpp, trr_measure_commands.cpp, trr_export.cpp.
+// command then writes, all or none), and each kind's steps. Each section ends with the step of the
+// serial machines (machine.hpp), defined in the command's file (cmd_*.cpp); the TRR-XY steps are
+// at the end (trr_commands.cpp, trr_measure_commands.cpp, trr_export.cpp).
 #include <cstdint>
 #include <istream>
 #include <memory>
@@ -42,6 +43,8 @@ class PreviewMachine {
   virtual std::unique_ptr<cl::Reader> open_reader(std::istream& in, const std::string& name) const = 0;
 };
 
+std::unique_ptr<PreviewMachine> load_serial_preview(const PreviewArgs& args);
+
 // ---- plan ---------------------------------------------------------------------------------
 
 struct PlanArgs {
@@ -67,6 +70,8 @@ struct PlanOutput {
   std::string program;  ///< PLAN.nc
 };
 
+PlanOutput plan_serial(const PlanArgs& args);
+
 // ---- simulate -----------------------------------------------------------------------------
 
 struct SimulateArgs {
@@ -80,6 +85,8 @@ struct SimulateOutput {
   std::string csv;      ///< the measurement CSV
   std::string summary;  ///< "simulated N rows of ... on 'machine' (...)"
 };
+
+SimulateOutput simulate_serial(const SimulateArgs& args);
 
 // ---- identify -----------------------------------------------------------------------------
 
@@ -99,6 +106,8 @@ struct IdentifyOutput {
   std::string closing;      ///< printed once the files are written
 };
 
+IdentifyOutput identify_serial(const IdentifyArgs& args);
+
 // ---- post ---------------------------------------------------------------------------------
 
 struct PostJobArgs {
@@ -108,6 +117,8 @@ struct PostJobArgs {
   bool force_model = false;      ///< --force
 };
 
+void load_serial_post(const PostJobArgs& args, PostRequest& r);
+
 // ---- export -------------------------------------------------------------------------------
 
 struct ExportArgs {
@@ -115,13 +126,6 @@ struct ExportArgs {
   bool force = false;
 };
 
-// ---- the serial steps (serial chains: machine.hpp) ------------------------------------------
-
-std::unique_ptr<PreviewMachine> load_serial_preview(const PreviewArgs& args);
-PlanOutput plan_serial(const PlanArgs& args);
-SimulateOutput simulate_serial(const SimulateArgs& args);
-IdentifyOutput identify_serial(const IdentifyArgs& args);
-void load_serial_post(const PostJobArgs& args, PostRequest& r);
 int export_serial(const ExportArgs& args);
 
 // ---- the TRR-XY steps (docs/trr-xy.md) -----------------------------------------------------

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/kinematics/kinematic_model.hpp"
 #include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/read/cl_record.hpp"
@@ -64,6 +65,9 @@ class PostMachine {
   /// The models of one run of `r` (Infeasible when the machine's kinematics cannot be built).
   virtual std::unique_ptr<PostModels> models(const PostRequest& r, bool account) const = 0;
 };
+
+/// The nonlinear-error options of `r` with this tolerance (every kind's subdivider takes them).
+nonlinear::CompensationOptions compensation(const PostRequest& r, double tolerance_mm);
 
 /// The header's first comment ("ncpost VERSION from INPUT") and its model and tolerance line, the
 /// same on every machine.
