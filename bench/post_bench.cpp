@@ -79,7 +79,8 @@ struct Result {
 };
 
 Result run(const Machine& m, const Setup& setup, const std::string& cl, const std::string& out_path,
-           std::optional<nonlinear::Method> method, bool verify, const MotionSolver& solver, const ActualSolver* actual) {
+           std::optional<nonlinear::Method> method, bool verify, const NominalSolver& nominal, const ActualSolver* actual) {
+  const MotionSolver& solver = actual ? static_cast<const MotionSolver&>(*actual) : nominal;
   std::ifstream in(cl);
   cl::AptReader reader(in, cl);
   PostOptions options;
@@ -89,7 +90,7 @@ Result run(const Machine& m, const Setup& setup, const std::string& cl, const st
   const Dialect dialect = dialect_named("fanuc");
   if (method) {
     comp.method = *method;
-    options.subdivide = make_tolerance_subdivider(m, setup, solver, actual, comp, dialect, cl);
+    options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   }
   const auto t0 = std::chrono::steady_clock::now();
   AtomicFile out(out_path);
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
   const comp::ModelFile file = comp::read_model_json(scenario + "truth.json", &m);
   const comp::MachineModel model(m, file.parameters);
   const ActualSolver actual(model, setup);
-  report("adaptive, --model truth", run(m, setup, cl, dir + "/out_model.nc", nonlinear::Method::adaptive, verify, actual,
+  report("adaptive, --model truth", run(m, setup, cl, dir + "/out_model.nc", nonlinear::Method::adaptive, verify, nominal,
                                         &actual));
   return 0;
 }

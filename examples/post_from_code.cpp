@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
   const double tolerance_mm = argc > 4 ? std::atof(argv[4]) : 0.002;
   try {
     ncpost::PostRequest request;
-    request.machine = ncpost::load_machine(argv[1]);
+    const ncpost::Machine machine = ncpost::load_machine(argv[1]);
+    request.machine = ncpost::serial_post_machine(machine);  // nominal: no --model
     request.machine_source = argv[1];
     request.setup.workpiece_origin_mm = ncpost::Vec3d(0, 0, 80);  // as `--workpiece-origin 0,0,80`
     request.input_name = argv[2];
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
     request.tolerance_is_default = false;
     request.dialect = ncpost::dialect_named("fanuc");
     request.verify = true;  // the account: before and after
-    std::printf("ncpost %s, machine %s\n", ncpost::version().c_str(), request.machine.name.c_str());
+    std::printf("ncpost %s, machine %s\n", ncpost::version().c_str(), machine.name.c_str());
 
     std::ifstream in(argv[2], std::ios::binary);
     if (!in) throw ncpost::InputError({argv[2], 0, 0}, "cannot open the input file");

@@ -31,5 +31,7 @@
 #include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/verify/post_report.hpp"
 #include "ncpost/postproc/post_request.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
+#include "ncpost/postproc/machine/trr_xy_post_machine.hpp"
 #include "ncpost/postproc/solve/tolerance_subdivider.hpp"
 #include "ncpost/postproc/verify/verify.hpp"

@@ -16,6 +16,7 @@
 #include "ncpost/compensation/export_machine.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "test_paths.hpp"
 
@@ -80,11 +81,10 @@ std::vector<AxisPosition> commands_of(const std::string& program, const Machine&
 
 std::string post_program(const Machine& machine, const std::optional<ErrorParameters>& model, double tool_length_mm) {
   PostRequest r;
-  r.machine = machine;
+  r.machine = serial_post_machine(machine, model);
   r.machine_source = "machine.toml";
   r.setup.workpiece_origin_mm = Vec3d(0, 0, 80);
   r.setup.tool_length_mm = tool_length_mm;
-  r.model = model;
   r.tolerance_mm = std::nullopt;  // one block per CL motion: the same blocks both ways
   r.tolerance_is_default = false;
   r.threads = 1;

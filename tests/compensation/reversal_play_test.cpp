@@ -80,7 +80,7 @@ Cut post_on_truth(const Machine& m, const comp::MachineModel& model, const comp:
   options.threads = 1;
   options.verify = true;
   options.take_up_reversal = true;
-  options.subdivide = make_tolerance_subdivider(m, setup, actual, &actual, comp, dialect, "dome.cls");
+  options.subdivide = make_tolerance_subdivider(actual, comp, dialect);
   Cut c;
   AtomicFile out("reversal_play_test.nc");
   std::string letters;

@@ -76,7 +76,7 @@ Cut cut_on(const Machine& m, const comp::MachineModel* model, const comp::Machin
     nonlinear::CompensationOptions comp;
     comp.tolerance_mm = tolerance_mm;
     options.take_up_reversal = true;
-    options.subdivide = make_tolerance_subdivider(m, setup, actual, &actual, comp, dialect, "cut.cls");
+    options.subdivide = make_tolerance_subdivider(actual, comp, dialect);
   }
   Cut c;
   AtomicFile out("vmc_compensated_cut_test.nc");

@@ -19,6 +19,7 @@
 #include "klartext_interpreter.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
 #include "test_paths.hpp"
@@ -51,7 +52,7 @@ struct Case {
 
 std::string post_text(const std::string& text, const Case& c) {
   PostRequest r;
-  r.machine = load_machine(test::source("machines/" + c.machine_file));
+  r.machine = serial_post_machine(load_machine(test::source("machines/" + c.machine_file)));
   r.setup = c.setup;
   r.dialect = dialect_named("fanuc");
   r.threads = 1;

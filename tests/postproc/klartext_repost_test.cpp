@@ -18,6 +18,7 @@
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/read/cl_input.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "test_paths.hpp"
 
@@ -73,7 +74,7 @@ std::vector<Position> deduplicated(const std::vector<Position>& ps) {
 
 std::string post_klartext(const std::string& text, const Machine& machine, const Setup& setup) {
   PostRequest r;
-  r.machine = machine;
+  r.machine = serial_post_machine(machine);
   r.setup = setup;
   r.dialect = dialect_named("fanuc");
   r.threads = 1;

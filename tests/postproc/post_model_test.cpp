@@ -47,7 +47,7 @@ Outcome post_on_truth(const Machine& m, const Setup& setup, const std::string& c
   const Dialect dialect = dialect_named("fanuc");
   PostOptions options;
   options.verify = true;
-  options.subdivide = make_tolerance_subdivider(m, setup, commands, actual.get(), comp, dialect, cl_path);
+  options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   AtomicFile out("post_model_test_out.nc");
   NcWriter writer(out, dialect, "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
   Outcome o;

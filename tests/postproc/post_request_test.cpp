@@ -11,6 +11,7 @@
 #include "cli_run.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
@@ -40,7 +41,7 @@ FromCode post_from_string(const std::string& cl_path, const PostRequest& request
 
 PostRequest request_for(const std::string& machine_path, const std::string& input) {
   PostRequest r;
-  r.machine = load_machine(machine_path);
+  r.machine = serial_post_machine(load_machine(machine_path));
   r.machine_source = machine_path;
   r.setup.workpiece_origin_mm = Vec3d(0, 0, 80);
   r.input_name = input;
@@ -107,10 +108,10 @@ TEST_CASE("post from code: with a model, verify-on, and under RTCP: the CLI's pr
                                        machine, truth, truth, nc, input),
                            log) == 0);
   PostRequest r = request_for(machine, input);
-  const comp::ModelFile model = comp::read_model_json(truth, &r.machine);
-  r.model = model.parameters;
+  const Machine m = load_machine(machine);
+  const comp::ModelFile model = comp::read_model_json(truth, &m);
+  r.machine = serial_post_machine(m, model.parameters, model.parameters);
   r.model_source = truth;
-  r.verify_on = model.parameters;
   r.verify_on_source = truth;
   r.tolerance_mm = 0.005;
   r.tolerance_is_default = false;

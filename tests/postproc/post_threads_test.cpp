@@ -55,7 +55,7 @@ Posted post_text(const Machine& m, const Setup& setup, const std::string& cl, co
   options.threads = threads;
   if (tolerance_mm) {
     comp.tolerance_mm = *tolerance_mm;
-    options.subdivide = make_tolerance_subdivider(m, setup, solver, actual.get(), comp, dialect, name);
+    options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   }
   const std::string path = "post_threads_test_" + std::to_string(threads) + ".nc";
   Posted p;

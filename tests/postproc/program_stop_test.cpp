@@ -20,6 +20,7 @@
 #include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
 #include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
@@ -70,7 +71,7 @@ template <class T> std::size_t index_of(const std::vector<cl::Record>& records, 
 
 PostRequest request(const std::string& dialect) {
   PostRequest r;
-  r.machine = test::ac_trunnion();
+  r.machine = serial_post_machine(test::ac_trunnion());
   r.machine_source = "machines/ac-trunnion.toml";
   r.setup.workpiece_origin_mm = Vec3d(0, 0, 80);
   r.dialect = dialect_named(dialect);

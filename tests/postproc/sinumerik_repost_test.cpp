@@ -15,6 +15,7 @@
 #include "nc_executor.hpp"
 #include "shipped_machines.hpp"
 #include "sinumerik_mini.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
 #include "test_paths.hpp"
@@ -39,7 +40,7 @@ test::ExecJob exec_job() {
 
 std::string repost(const std::string& text, bool rtcp) {
   PostRequest r;
-  r.machine = test::ac_trunnion();
+  r.machine = serial_post_machine(test::ac_trunnion());
   r.setup = job_setup();
   r.dialect = dialect_named("fanuc");
   r.rtcp = rtcp;

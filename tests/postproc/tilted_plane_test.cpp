@@ -18,6 +18,7 @@
 #include "cli_run.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/write/tilted_plane.hpp"
 #include "ncpost/postproc/verify/verify.hpp"
@@ -33,7 +34,7 @@ const Vec3d kWorkpieceOrigin(0, 0, 80);  // P (M at home) = W + this on the AC t
 
 PostRequest request(const std::string& dialect, bool tilted) {
   PostRequest r;
-  r.machine = load_machine(test::source("machines/ac-trunnion.toml"));
+  r.machine = serial_post_machine(load_machine(test::source("machines/ac-trunnion.toml")));
   r.machine_source = "machines/ac-trunnion.toml";
   r.setup.workpiece_origin_mm = kWorkpieceOrigin;
   r.dialect = dialect_named(dialect);

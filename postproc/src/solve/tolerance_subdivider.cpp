@@ -179,9 +179,12 @@ double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint
   return reach;
 }
 
-Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const KinematicModel& solver,
-                                     const ActualSolver* actual, const nonlinear::CompensationOptions& options,
-                                     const Dialect& dialect, const std::string& /*input_name*/) {
+namespace {
+
+/// The subdivider on `machine`; `actual` is `solver` when it is the actual machine of a model.
+Subdivider subdivider_of(const Machine& machine, const Setup& setup, const KinematicModel& solver,
+                         const ActualSolver* actual, const nonlinear::CompensationOptions& options,
+                         const Dialect& dialect) {
   // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
   const bool with_play =
       actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive;
@@ -226,6 +229,18 @@ Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup,
     return actual ? cut(actual->errors_from(data.stands)) : cut(NominalErrors{});
   };
   return Subdivider(cut_block, with_play);
+}
+
+}  // namespace
+
+Subdivider make_tolerance_subdivider(const NominalSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect) {
+  return subdivider_of(solver.machine(), solver.setup(), solver, nullptr, options, dialect);
+}
+
+Subdivider make_tolerance_subdivider(const ActualSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect) {
+  return subdivider_of(solver.machine(), solver.setup(), solver, &solver, options, dialect);
 }
 
 }  // namespace ncpost

@@ -151,6 +151,11 @@ PostOptions trr_post_options() {
   return o;
 }
 
+Subdivider make_tolerance_subdivider(const TrrSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect) {
+  return make_trr_subdivider(solver, dialect, TrrSubdivision{options.tolerance_mm, options.method});
+}
+
 Subdivider make_trr_subdivider(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& options) {
   if (options.method == nonlinear::Method::harmonic) {
     auto cutter = std::make_shared<HarmonicCutter>(solver, dialect, options);

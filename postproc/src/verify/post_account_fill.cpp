@@ -5,11 +5,11 @@
 
 namespace ncpost::detail {
 
-PostAccount account_of(const PostRequest& r, const std::string& machine_name, bool has_model, bool has_verify_on,
-                       const std::optional<double>& tolerance_mm) {
+PostAccount account_of(const PostRequest& r, const std::optional<double>& tolerance_mm) {
+  const bool has_model = r.machine->has_model(), has_verify_on = r.machine->has_verify_on();
   PostAccount acc;
   acc.input_name = r.input_name;
-  acc.machine_name = fmt::format("{} ({})", machine_name, r.machine_source);
+  acc.machine_name = fmt::format("{} ({})", r.machine->name(), r.machine_source);
   acc.model_name = has_model ? r.model_source : std::string();
   acc.executed_on = has_verify_on ? "the machine of " + r.verify_on_source
                   : has_model     ? "the machine of " + r.model_source + " (as compensated)"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Filling the account of a post (PostAccount, post_report.hpp) the same way for every machine
-// (post_request.cpp, trr_post_request.cpp): the names of the job, the figures of the written
+// (post_request.cpp): the names of the job, the figures of the written
 // program, and the blocks of the "before" (the plain post executed on the same machine).
 #include <optional>
 #include <string>
@@ -11,11 +11,10 @@
 
 namespace ncpost::detail {
 
-/// The names of the job: input (with the files to hash), machine `machine_name` (its file is
-/// `r.machine_source`), model and verify-on model (whether the job has them: `has_model`,
-/// `has_verify_on`), the machine the program is executed on in words, dialect, method, tolerance.
-PostAccount account_of(const PostRequest& r, const std::string& machine_name, bool has_model, bool has_verify_on,
-                       const std::optional<double>& tolerance_mm);
+/// The names of the job: input (with the files to hash), machine (its file is `r.machine_source`),
+/// model and verify-on model (where `r.machine` has them), the machine the program is executed on
+/// in words, dialect, method, tolerance.
+PostAccount account_of(const PostRequest& r, const std::optional<double>& tolerance_mm);
 
 /// The written program's figures: motions in, blocks out, the re-executed program, the notices.
 void add_posted(PostAccount& account, const PostSummary& summary);

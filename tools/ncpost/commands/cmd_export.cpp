@@ -12,7 +12,7 @@
 
 #include "commands.hpp"
 #include "file_checks.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 #include "model_input.hpp"
 #include "ncpost/compensation/export_cycle800.hpp"
 #include "ncpost/compensation/export_heidenhain.hpp"
@@ -139,6 +139,8 @@ void print_landing(const comp::AxisExport& axis, const comp::LandingCheck& check
              check.with_file * to_micro, axis.rotary ? "µrad" : "µm", check.positions, check.model_only * to_micro);
 }
 
+}  // namespace
+
 int export_serial(const ExportArgs& args) {
   std::vector<NamedPath> inputs{{"MODEL", args.model}};
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
@@ -249,9 +251,9 @@ int export_serial(const ExportArgs& args) {
   }
 }
 
-const ByKind<ExportSteps> kExportSteps{{export_serial}, {export_trr_xy}};
+namespace {
 
-int run_export(const ExportArgs& args) { return kExportSteps[export_kind(args)].run(args); }
+int run_export(const ExportArgs& args) { return export_kind(args).export_model(args); }
 
 }  // namespace
 

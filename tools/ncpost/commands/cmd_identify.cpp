@@ -14,7 +14,7 @@
 #include "number_checks.hpp"
 #include "tolerance_option.hpp"
 #include "identify_laser.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/conditions_report.hpp"
 #include "ncpost/compensation/control_entries.hpp"
@@ -83,6 +83,8 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
   return out;
 }
 
+}  // namespace
+
 /// The serial machines: the basic model and --params fitted to ballbar, sphere or laser data, with
 /// the residual analysis unless --no-diagnose.
 IdentifyOutput identify_serial(const IdentifyArgs& a) {
@@ -130,10 +132,6 @@ IdentifyOutput identify_serial(const IdentifyArgs& a) {
   return out;
 }
 
-const ByKind<IdentifySteps> kIdentifySteps{{identify_serial}, {identify_trr_xy}};
-
-}  // namespace
-
 void add_identify(CLI::App& app, Action& action) {
   auto a = std::make_shared<IdentifyArgs>();
   CLI::App* sub = app.add_subcommand("identify", "Identify geometric errors from measurements");
@@ -172,7 +170,7 @@ void add_identify(CLI::App& app, Action& action) {
       check_files({{"-o", a->output}, {"--report", a->report},
                    {"--report (its summary)", a->report.empty() ? std::string() : comp::summary_path(a->report)}},
                   inputs);
-      const IdentifyOutput out = kIdentifySteps[machine_kind(a->machine)].fit(*a);
+      const IdentifyOutput out = machine_kind(a->machine).identify(*a);
       write_file_atomically(a->output, out.model_json);
       if (!a->report.empty()) write_file_atomically(a->report, out.report_html);
       if (!out.summary_html.empty()) write_file_atomically(comp::summary_path(a->report), out.summary_html);

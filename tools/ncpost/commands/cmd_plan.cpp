@@ -11,7 +11,7 @@
 #include "dialect_option.hpp"
 #include "file_checks.hpp"
 #include "number_checks.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
@@ -83,6 +83,8 @@ std::vector<comp::NamedPlan> make_plans(PlanArgs& a, const Machine& m, const com
   }
 }
 
+}  // namespace
+
 /// The serial machines' plans (plans.hpp, laser_plan.hpp), the program in the chosen dialect.
 PlanOutput plan_serial(const PlanArgs& given) {
   PlanArgs a = given;
@@ -109,7 +111,7 @@ PlanOutput plan_serial(const PlanArgs& given) {
   return out;
 }
 
-const ByKind<PlanSteps> kPlanSteps{{plan_serial}, {plan_trr_xy}};
+namespace {
 
 /// The options of `plan` into `a`.
 void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
@@ -178,7 +180,7 @@ void add_plan(CLI::App& app, Action& action) {
         if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
         check_files({{"-o (program)", stem + ".nc"}, {"-o (plan)", stem + ".csv"}}, {{"--machine", a->machine}});
       }
-      const PlanOutput plan = kPlanSteps[machine_kind(a->machine)].make(*a);
+      const PlanOutput plan = machine_kind(a->machine).plan(*a);
       std::string stem = a->output;
       if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".csv") stem.resize(stem.size() - 4);
       const auto csv_name = [&](const PlanOutput::Set& p) {

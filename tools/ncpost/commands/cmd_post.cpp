@@ -19,10 +19,24 @@
 #include "atomic_ostream.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/verify/post_report.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 
 namespace ncpost::cli {
+
+/// The serial machine of the job, and the models of --model and --verify-on checked against it.
+void load_serial_post(const PostJobArgs& a, PostRequest& r) {
+  LoadedJob job = load_job(a.job);
+  std::optional<comp::ErrorParameters> model, verify_on;
+  if (!a.model.empty()) model = read_model_for(a.model, job.machine, a.force_model).parameters;
+  if (!a.verify_on.empty()) verify_on = read_model_for(a.verify_on, job.machine, a.force_model).parameters;
+  r.machine = serial_post_machine(std::move(job.machine), std::move(model), std::move(verify_on));
+  r.setup = job.setup;
+  r.model_source = a.model;
+  r.verify_on_source = a.verify_on;
+}
+
 namespace {
 
 constexpr double kMaxToleranceMm = 10.0;  // a bound on the bow of a block: beyond it, a slip
@@ -57,22 +71,6 @@ std::optional<double> tolerance_of(const std::string& text) {
   return std::stod(text);  // checked by the option's validator
 }
 
-/// The serial machine of the job, and the models of --model and --verify-on checked against it.
-void load_serial_post(const PostJobArgs& a, PostRequest& r) {
-  LoadedJob job = load_job(a.job);
-  r.machine = std::move(job.machine);
-  r.setup = job.setup;
-  if (!a.model.empty()) {
-    r.model = read_model_for(a.model, r.machine, a.force_model).parameters;
-    r.model_source = a.model;
-  }
-  if (!a.verify_on.empty()) {
-    r.verify_on = read_model_for(a.verify_on, r.machine, a.force_model).parameters;
-    r.verify_on_source = a.verify_on;
-  }
-}
-
-const ByKind<PostSteps> kPostSteps{{load_serial_post}, {load_trr_xy_post}};
 
 /// Refuses combinations of options that cannot make a program, before anything is read.
 void check_post_args(const PostArgs& given) {
@@ -115,7 +113,7 @@ PostRequest post_request_of(const PostArgs& a) {
   r.branch_choice = a.branch_plan == "greedy" ? PostOptions::BranchChoice::greedy : PostOptions::BranchChoice::lookahead;
   r.threads = a.threads;
   r.verify = a.verify || !a.report.empty();
-  kPostSteps[machine_kind(a.job.machine)].load({a.job, a.model, a.verify_on, a.force_model}, r);
+  machine_kind(a.job.machine).load_post({a.job, a.model, a.verify_on, a.force_model}, r);
   return r;
 }
 
@@ -140,7 +138,7 @@ void print_post_result(const PostArgs& a, const PostRequest& r, const PostResult
   const PostSummary& summary = result.summary;
   if (a.output != "-")
     fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
-  if (r.verify || r.verify_on || (r.trr && r.trr->verify_on)) {
+  if (r.verify || r.machine->has_verify_on()) {
     if (a.rtcp)
       fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
     else

@@ -12,7 +12,7 @@
 #include "input_file.hpp"
 #include "model_input.hpp"
 #include "input_options.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
@@ -54,11 +54,13 @@ class SerialPreviewMachine final : public PreviewMachine {
   std::unique_ptr<preview::BlockEvaluator> evaluator_;
 };
 
+}  // namespace
+
 std::unique_ptr<PreviewMachine> load_serial_preview(const PreviewArgs& a) {
   return std::make_unique<SerialPreviewMachine>(a);
 }
 
-const ByKind<PreviewSteps> kPreviewSteps{{load_serial_preview}, {load_trr_xy_preview}};
+namespace {
 
 int run_preview(const PreviewArgs& given) {
   check_files({{"--csv", given.csv}, {"--html", given.html}},
@@ -67,7 +69,7 @@ int run_preview(const PreviewArgs& given) {
   PreviewArgs a = given;
   a.input = input.name();
   a.input_path = input.path();
-  const std::unique_ptr<PreviewMachine> machine = kPreviewSteps[machine_kind(a.job.machine)].load(a);
+  const std::unique_ptr<PreviewMachine> machine = machine_kind(a.job.machine).preview(a);
   const MotionSolver& solver = machine->solver();
   const preview::BlockEvaluator& evaluator = machine->evaluator();
   std::ifstream in(a.input_path, std::ios::binary);

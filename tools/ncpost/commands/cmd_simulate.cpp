@@ -8,7 +8,7 @@
 #include "file_checks.hpp"
 #include "number_checks.hpp"
 #include "model_input.hpp"
-#include "kind_steps.hpp"
+#include "machine_kind.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
@@ -16,8 +16,6 @@
 #include "ncpost/machines/machine_file.hpp"
 
 namespace ncpost::cli {
-
-namespace {
 
 /// A measurement plan on the serial machine of the model JSON (simulate.hpp).
 SimulateOutput simulate_serial(const SimulateArgs& a) {
@@ -29,10 +27,6 @@ SimulateOutput simulate_serial(const SimulateArgs& a) {
           fmt::format("simulated {} rows of {} on '{}' ({} parameters, noise {} µm)", data.rows.size(),
                       comp::to_string(data.type), m.name, model.parameters.size(), a.noise_um)};
 }
-
-const ByKind<SimulateSteps> kSimulateSteps{{simulate_serial}, {simulate_trr_xy}};
-
-}  // namespace
 
 void add_simulate(CLI::App& app, Action& action) {
   auto args = std::make_shared<SimulateArgs>();
@@ -48,7 +42,7 @@ void add_simulate(CLI::App& app, Action& action) {
   sub->callback([&action, args] {
     action = [args] {
       check_files({{"-o", args->output}}, {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
-      const SimulateOutput out = kSimulateSteps[machine_kind(args->machine)].run(*args);
+      const SimulateOutput out = machine_kind(args->machine).simulate(*args);
       write_file_atomically(args->output, out.csv);
       fmt::print("{} -> {}\n", out.summary, args->output);
       return 0;

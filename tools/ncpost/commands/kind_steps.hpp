@@ -2,8 +2,9 @@
 #pragma once
 // The steps of each subcommand that differ between machine kinds (machine_kind.hpp): what the
 // command gives them (its arguments, checked), what they give back (the contents of the files the
-// command then writes, all or none). Each command file holds its table ByKind<...Steps> with its
-// serial steps; the TRR-XY steps are in trr_commands.cpp and trr_measure_commands.cpp.
+// command then writes, all or none), and each kind's steps. Each section ends with the step of the
+// serial machines (machine.hpp), defined in the command's file (cmd_*.cpp); the TRR-XY steps are
+// at the end (trr_commands.cpp, trr_measure_commands.cpp, trr_export.cpp).
 #include <cstdint>
 #include <istream>
 #include <memory>
@@ -12,7 +13,6 @@
 #include <vector>
 
 #include "input_options.hpp"
-#include "machine_kind.hpp"
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/verify/preview_blocks.hpp"
@@ -43,9 +43,7 @@ class PreviewMachine {
   virtual std::unique_ptr<cl::Reader> open_reader(std::istream& in, const std::string& name) const = 0;
 };
 
-struct PreviewSteps {
-  std::unique_ptr<PreviewMachine> (*load)(const PreviewArgs& args);
-};
+std::unique_ptr<PreviewMachine> load_serial_preview(const PreviewArgs& args);
 
 // ---- plan ---------------------------------------------------------------------------------
 
@@ -72,10 +70,7 @@ struct PlanOutput {
   std::string program;  ///< PLAN.nc
 };
 
-struct PlanSteps {
-  /// Infeasible when the plan cannot be run on the machine; UsageError for a test it has not.
-  PlanOutput (*make)(const PlanArgs& args);
-};
+PlanOutput plan_serial(const PlanArgs& args);
 
 // ---- simulate -----------------------------------------------------------------------------
 
@@ -91,9 +86,7 @@ struct SimulateOutput {
   std::string summary;  ///< "simulated N rows of ... on 'machine' (...)"
 };
 
-struct SimulateSteps {
-  SimulateOutput (*run)(const SimulateArgs& args);
-};
+SimulateOutput simulate_serial(const SimulateArgs& args);
 
 // ---- identify -----------------------------------------------------------------------------
 
@@ -114,10 +107,7 @@ struct IdentifyOutput {
   std::string closing;      ///< printed once the files are written
 };
 
-struct IdentifySteps {
-  /// Prints the fit's text report on stdout; throws Infeasible when the fit fails (after the report).
-  IdentifyOutput (*fit)(const IdentifyArgs& args);
-};
+IdentifyOutput identify_serial(const IdentifyArgs& args);
 
 // ---- post ---------------------------------------------------------------------------------
 
@@ -128,11 +118,7 @@ struct PostJobArgs {
   bool force_model = false;      ///< --force
 };
 
-struct PostSteps {
-  /// Loads the machine and models of the job into `r`, whose program options (rtcp, tilted_plane,
-  /// nonlinear, tolerance) are already set: UsageError for an option the machine cannot take.
-  void (*load)(const PostJobArgs& args, PostRequest& r);
-};
+void load_serial_post(const PostJobArgs& args, PostRequest& r);
 
 // ---- export -------------------------------------------------------------------------------
 
@@ -141,14 +127,7 @@ struct ExportArgs {
   bool force = false;
 };
 
-struct ExportSteps {
-  /// Writes the export; returns the exit code. UsageError for a format the model's kind cannot hold.
-  int (*run)(const ExportArgs& args);
-};
-
-/// The kind of an export: the machine file's (--machine), else the model's own (a model whose
-/// parameters are all TRR-XY names is a TRR-XY model; machine_kind.hpp).
-MachineKind export_kind(const ExportArgs& args);
+int export_serial(const ExportArgs& args);
 
 // ---- the TRR-XY steps (docs/trr-xy.md) -----------------------------------------------------
 
@@ -162,5 +141,7 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& args);
 void load_trr_xy_post(const PostJobArgs& args, PostRequest& r);
 /// `export --format machine`: the model folded into the machine file ([trr_xy.calibration]).
 int export_trr_xy(const ExportArgs& args);
+/// A model whose parameters (`names`, not empty) are all TRR-XY names is a TRR-XY model.
+bool holds_trr_xy_parameters(const std::vector<std::string>& names);
 
 }  // namespace ncpost::cli

@@ -5,6 +5,7 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/postproc/machine/trr_xy_post_machine.hpp"
 #include "ncpost/postproc/solve/trr_preview_evaluator.hpp"
 #include "ncpost/postproc/solve/trr_solver.hpp"
 #include "trr_model_input.hpp"
@@ -82,11 +83,11 @@ void load_trr_xy_post(const PostJobArgs& a, PostRequest& r) {
     throw UsageError("--tilted-plane: the TRR-XY machine has no tilted work plane (its control has no rotary axes to "
                      "turn a plane with, only the table X Y and the sliders U V W); post without --tilted-plane");
   refuse_serial_options(a.job);
-  TrrJob job;
-  job.machine = load_trr_xy_machine(a.job.machine);
-  if (!a.model.empty()) job.model = read_trr_model(a.model, job.machine.name, a.force_model);
-  if (!a.verify_on.empty()) job.verify_on = read_trr_model(a.verify_on, job.machine.name, a.force_model);
-  r.trr = std::move(job);
+  trr::Machine machine = load_trr_xy_machine(a.job.machine);
+  std::optional<trr::Errors> model, verify_on;
+  if (!a.model.empty()) model = read_trr_model(a.model, machine.name, a.force_model);
+  if (!a.verify_on.empty()) verify_on = read_trr_model(a.verify_on, machine.name, a.force_model);
+  r.machine = trr_xy_post_machine(std::move(machine), std::move(model), std::move(verify_on));
   r.setup.workpiece_origin_mm = workpiece_origin_mm(a.job);
   r.model_source = a.model;
   r.verify_on_source = a.verify_on;

@@ -9,6 +9,7 @@
 #include "file_checks.hpp"
 #include "kind_steps.hpp"
 #include "ncpost/compensation/export_trr_machine.hpp"
+#include "ncpost/kinematics/trr_xy_geometry.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
@@ -52,6 +53,12 @@ int export_trr_xy(const ExportArgs& args) {
   fmt::print("exported {} parameter(s) of the model into the machine file '{}' ({})\n", out.applied.size(), args.output,
              out.corrected.name);
   return 0;
+}
+
+bool holds_trr_xy_parameters(const std::vector<std::string>& names) {
+  for (const std::string& n : names)
+    if (trr::Errors::index_of(n) < 0) return false;
+  return true;
 }
 
 }  // namespace ncpost::cli

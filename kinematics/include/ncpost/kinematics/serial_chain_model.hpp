@@ -34,6 +34,7 @@ class SerialChainModel final : public KinematicModel {
   /// execute() needs no data on the nominal machine.
   ToolPoseT<double> execute(const AxisPosition& q) const { return forward(machine_, q, setup_); }
   const Machine& machine() const override { return machine_; }
+  const Setup& setup() const { return setup_; }
   std::vector<AxisPosition> branches(const ClPoint& cl, const AxisPosition& previous, SolverData&) const override {
     const SmallList<AxisPosition, 2> all = admissible_solutions(machine_, cl, setup_, previous);
     return {all.begin(), all.end()};

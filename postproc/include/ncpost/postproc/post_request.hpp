@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The library entry point of `ncpost post` (docs/cli.md): CL data or G-code from a stream, the NC
-// program to a stream, with the policy of the command — the solver (nominal machine, or the actual
-// machine of an error model), the nonlinear-error tolerance (on by default, off under RTCP unless
+// program to a stream, with the policy of the command, one driver for every machine kind
+// (machine/post_machine.hpp) — the solver (nominal machine, or the actual machine of an error
+// model), the nonlinear-error tolerance (on by default, off under RTCP unless
 // asked for), native arcs and cycles only on the nominal machine, the program header, and the
 // before/after account of `--verify` (the plain post executed on the job's machine against the
 // written program re-executed on it). The `ncpost post` command only parses its arguments, reads
 // the files (machine, models) and calls `post`; a program from code gets the same program.
 //
+//   #include "ncpost/postproc/machine/serial_post_machine.hpp"
 //   ncpost::PostRequest r;
-//   r.machine = ncpost::load_machine("machines/ac-trunnion.toml");
+//   r.machine = ncpost::serial_post_machine(ncpost::load_machine("machines/ac-trunnion.toml"));
 //   r.machine_source = "machines/ac-trunnion.toml";
 //   r.setup.workpiece_origin_mm = {0, 0, 80};
 //   r.verify = true;
@@ -22,14 +24,14 @@
 #include <cstddef>
 #include <functional>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
 
-#include "ncpost/compensation/error_parameters.hpp"
 #include "ncpost/compensation/nonlinear_compensation.hpp"
 #include "ncpost/kinematics/machine.hpp"
-#include "ncpost/kinematics/trr_xy_geometry.hpp"
+#include "ncpost/postproc/machine/post_machine.hpp"
 #include "ncpost/postproc/read/cl_input.hpp"
 #include "ncpost/postproc/read/cl_record.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
@@ -48,29 +50,19 @@ struct PostProgress {
   std::function<void()> measured;                      ///< the "before" is measured
 };
 
-/// A TRR-XY job (docs/trr-xy.md): the machine, and the errors of `--model` / `--verify-on`.
-struct TrrJob {
-  trr::Machine machine;
-  std::optional<trr::Errors> model;      ///< the program compensates these (the machine of `--model`)
-  std::optional<trr::Errors> verify_on;  ///< re-executed on this machine instead
-};
-
 struct PostRequest {
   // the job
-  Machine machine;              ///< a serial machine (load_machine); unused with `trr`
-  /// A TRR-XY machine instead of the serial one: the same post (trr_solver.hpp), with the words
-  /// X Y U V W; `model`/`verify_on` are then unused (TrrJob has its own), as is the tool length
-  /// (the machine file's tool offset); no RTCP and no tilted plane (validate()).
-  std::optional<TrrJob> trr;
+  /// The machine of any kind, with the errors its program compensates (`--model`) and those of the
+  /// machine it is re-executed on (`--verify-on`): serial_post_machine.hpp, trr_xy_post_machine.hpp.
+  std::shared_ptr<const PostMachine> machine;
   std::string machine_source;   ///< where it came from (the machine file), named in the program header
-  Setup setup;                  ///< workpiece origin and tool length
+  Setup setup;                  ///< workpiece origin and tool length (TRR-XY: the machine file's tool offset)
   // the input
   std::string input_name = "<input>";  ///< the name in messages (file:line:col) and the program header
   std::string input_file;  ///< the file the input is read from, hashed in the report (empty: input_name)
   InputKind input_kind = InputKind::automatic;
   cl::ReaderOptions reader;     ///< units of a file that does not say, unterminated files, NX MSYS
-  // the machine the program is for
-  std::optional<comp::ErrorParameters> model;  ///< the identified errors: a compensated program (`--model`)
+  // the machine the program is for (its errors: `machine`)
   std::string model_source;     ///< the model file, named in the header and the account
   // the nonlinear error
   /// Bound on every block's nonlinear error (mm, in W); nullopt: one block per CL motion.
@@ -83,7 +75,7 @@ struct PostRequest {
   Dialect dialect = dialect_named("fanuc");
   bool rtcp = false;            ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
   /// 3+2 runs in tilted work planes (PostOptions::tilted_plane; the dialect's [tilted_plane]);
-  /// not with `rtcp` nor `model` (the control maps the plane's coordinates on its nominal kinematics).
+  /// not with `rtcp` nor a model (the control maps the plane's coordinates on its nominal kinematics).
   bool tilted_plane = false;
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
   double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
@@ -93,11 +85,9 @@ struct PostRequest {
   std::string program_name = "NCPOST";
   // verification
   /// Re-execute the written program and measure the plain post (one block per CL motion, nominal
-  /// commands) on the same machine: PostResult::account. Implied by `verify_on`.
+  /// commands) on the same machine: PostResult::account. Implied by a machine with `--verify-on`.
   bool verify = false;
-  /// Re-execute on this machine instead of the model's (`--verify-on`, e.g. a simulated truth).
-  std::optional<comp::ErrorParameters> verify_on;
-  std::string verify_on_source;  ///< its file, named in the account
+  std::string verify_on_source;  ///< the file of `--verify-on` (e.g. a simulated truth), named in the account
   PostProgress progress;
 
   /// Empty when the request can run, else what is wrong with it.

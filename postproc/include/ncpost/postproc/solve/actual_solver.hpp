@@ -79,6 +79,7 @@ class ActualSolver final : public KinematicModel {
   /// True when commands q, reached from `stands`, put the tool on `cl` within the IK's tolerances.
   bool reaches(const ClPoint& cl, const AxisPosition& q, const std::optional<AxisPosition>& stands) const;
   const comp::MachineModel& model() const { return model_; }
+  const Setup& setup() const { return setup_; }
 
  private:
   /// `guess` solves `guess_solves` nominally (nullopt: programmed angles).

@@ -25,12 +25,14 @@ constexpr double kDefaultTolerance_mm = 0.01;
 /// length: how far a rounded angle can move the tip.
 double rotary_reach_mm(const Machine& machine, const Setup& setup, const ClPoint& a, const ClPoint& b);
 
-/// The subdivider. `solver` is the post's solver; `actual` the same object when it is the actual
-/// machine of a model (else nullptr). A block that cannot be compensated throws Infeasible saying
-/// why (the post adds the file and CL line; `input_name` is not used). All references must outlive
+/// The subdivider of a post with `solver`'s commands: the nominal chain, or the actual machine of
+/// a model (with reversal: play_subdivision.hpp). One interface for every machine kind: the
+/// TRR-XY machine's is in trr_subdivider.hpp. A block that cannot be compensated throws
+/// Infeasible saying why (the post adds the file and CL line). `solver` and `dialect` must outlive
 /// the returned function.
-Subdivider make_tolerance_subdivider(const Machine& machine, const Setup& setup, const KinematicModel& solver,
-                                     const ActualSolver* actual, const nonlinear::CompensationOptions& options,
-                                     const Dialect& dialect, const std::string& input_name);
+Subdivider make_tolerance_subdivider(const NominalSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect);
+Subdivider make_tolerance_subdivider(const ActualSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect);
 
 }  // namespace ncpost

@@ -36,5 +36,9 @@ PostOptions trr_post_options();
 /// The subdivider; `solver` and `dialect` must outlive it. An inserted point out of reach throws
 /// Infeasible saying why (the post adds the file and CL line).
 Subdivider make_trr_subdivider(const TrrSolver& solver, const Dialect& dialect, const TrrSubdivision& options);
+/// The same with the options of every machine kind (tolerance_subdivider.hpp): the tolerance and
+/// the method, the cutting's own fractions at their defaults.
+Subdivider make_tolerance_subdivider(const TrrSolver& solver, const nonlinear::CompensationOptions& options,
+                                     const Dialect& dialect);
 
 }  // namespace ncpost
