@@ -100,6 +100,7 @@ PostOptions post_options(const PostRequest& r, const std::optional<double>& tole
   PostOptions options;
   options.rtcp = r.rtcp;
   options.tool_length_mm = r.setup.tool_length_mm;
+  options.tool_table = r.tool_table;
   options.retract_mm = r.retract_mm;
   options.branch_choice = r.branch_choice;
   options.native_arcs = !r.model;  // the actual machine would not follow the control's circle
