@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -559,6 +560,23 @@ struct KlartextReader::State {
     }
   }
 
+  /// CYCL DEF 9 (dwell time, active where it is defined): 9.0 is the header, 9.1 ends with the time
+  /// in s after a word in the control's language (DWELL 1.5, V.IDO2, V.ZEIT 0.5).
+  void dwell_cycle(const Block& b, const CycleDef& c) {
+    if (c.part == 0) return;
+    const std::string& t = c.rest;
+    std::size_t end = t.find_last_not_of(" \t\r");
+    std::size_t start = end == std::string::npos ? 0 : end + 1;
+    while (start > 0 && (std::isdigit(static_cast<unsigned char>(t[start - 1])) || t[start - 1] == '.')) --start;
+    const std::string number = end == std::string::npos ? "" : t.substr(start, end + 1 - start);
+    if (c.part != 1 || number.empty() || number == "." || number.find('.') != number.rfind('.'))
+      fail(b.column, fmt::format("CYCL DEF 9.{}: expected CYCL DEF 9.1 with the dwell time in s at its end (DWELL 1.5)",
+                                 c.part));
+    const double seconds = std::stod(number);
+    if (seconds > cl::kMaxDwellSeconds) fail(b.column, fmt::format("CYCL DEF 9.1: a dwell of {:g} s", seconds));
+    emit(cl::Dwell{at(b.column), seconds});
+  }
+
   /// CYCL DEF 7 (datum shift: X Y Z, absolute from the preset or I... from the last shift) and
   /// CYCL DEF 32 (the TNC's tolerance: noted); every other cycle is refused by name.
   void cycle_def(const Block& b) {
@@ -575,6 +593,10 @@ struct KlartextReader::State {
     if ((c.number == 332 || c.number == 392) && c.part < 0) {  // DMG's TUNING / ATC: servo dynamics, no motion
       notice_once("CYCL DEF 332", b.column, fmt::format("CYCL DEF {} (the machine's dynamics tuning) is noted, not "
                                                         "posted: it moves nothing", c.number));
+      return;
+    }
+    if (c.number == 9 && c.part >= 0) {
+      dwell_cycle(b, c);
       return;
     }
     if (c.number == 19)
