@@ -224,8 +224,8 @@ void add_post(CLI::App& app, Action& action) {
       ->check(dialect_name_or_path());
   sub->add_option("--tool-table", a->tool_table,
                   "Tools called by name in the input (TOOL CALL \"name\", T=\"name\"): their numbers (and lengths) "
-                  "for a dialect that calls tools by number (TOML, [tools] \"name\" = number or {number, length}; "
-                  "docs/formats.md, Tool tables); without it such a tool is refused. Heidenhain and Sinumerik "
+                  "for a dialect that calls tools by number (TOML: [tools] then \"name\" = number, or \"name\" = "
+                  "{ number = n, length = mm }); without it such a tool is refused. Heidenhain and Sinumerik "
                   "output keeps the name")
       ->check(CLI::ExistingFile);
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")
