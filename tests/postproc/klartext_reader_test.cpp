@@ -442,3 +442,32 @@ TEST_CASE("klartext: CYCL DEF 9 dwells where it is defined, its time at the end 
   CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n2 CYCL DEF 9.1 DWELL\n")),
              Catch::Contains("t.h:3:") && Catch::Contains("expected CYCL DEF 9.1 with the dwell time in s"));
 }
+
+TEST_CASE("klartext: a jump on a parameter the program does not set ends it where nothing can move after it") {
+  // hyperMILL for DMG: `/ M30` (skipped with block skip on), then tool-edge checks after it
+  const std::string tail =
+      "3 LBL \"CuttingEdgesCheck\"\n"
+      "4 FN 9: IF +Q1900 EQU +1 GOTO LBL \"CuttingEdges1\"\n"
+      "5 FN 9: IF +Q1900 EQU +2 GOTO LBL \"CuttingEdges2\"\n"
+      "6 LBL 0\n"
+      "7 ; ----\n"
+      "8 LBL \"CuttingEdges1\"\n"
+      "9 FN 0: Q1901=4\n"
+      "10 LBL 0\n"
+      "11 LBL \"CuttingEdges2\"\n"
+      "12 FN 0: Q1901=3\n"
+      "13 LBL 0\n";
+  const Read r = read(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n2 L X+5 FMAX\n/2 M30\n" + tail));
+  CHECK(only<cl::Motion>(r.records).size() == 2);
+  const auto ends = only<cl::End>(r.records);
+  REQUIRE(ends.size() == 1);
+  CHECK(ends[0].where.line == 6);  // the first jump on Q1900
+  CHECK(any_contains(r.notices, "t.h:6:") );
+  CHECK(any_contains(r.notices, "nothing moves whichever way it jumps"));
+  // a motion after it, or a jump back before it: refused as before
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n" + tail + "14 L X+5 FMAX\n")),
+             Catch::Contains("t.h:4:") && Catch::Contains("Q1900 is not set in this program"));
+  CHECK_THAT(error_of(program("1 LBL 7\n2 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                              "3 FN 9: IF +Q1900 EQU +1 GOTO LBL 7\n")),
+             Catch::Contains("Q1900 is not set in this program"));
+}

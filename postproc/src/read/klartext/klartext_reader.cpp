@@ -395,6 +395,11 @@ struct KlartextReader::State {
       if (!st) fail(b.column, fmt::format("{} {}: {}", s == "Q" ? "" : "FN", b.text, error.what));
       if (!st->target.empty()) {
         q.set(st->target, formula_value(b, st->formula));
+      } else if (unknown_condition(*st) && rest_is_inert()) {
+        notice(b.column, fmt::format("FN {}: its condition reads a Q parameter this program does not set, but from here "
+                                     "on the program holds only labels, Q parameters and jumps among them: nothing "
+                                     "moves whichever way it jumps, so the program ends here", b.text.substr(0, 1)));
+        end_program(at(b.column));
       } else if (compare_holds(st->compare, formula_value(b, st->formula), formula_value(b, st->right))) {
         flow.jump(st->label, line_number);
       }
@@ -411,6 +416,42 @@ struct KlartextReader::State {
       return true;
     }
     return false;
+  }
+
+  /// A jump whose condition reads a Q parameter not set in this program (the TNC's value from before).
+  bool unknown_condition(const QStatement& st) {
+    QError left, right;
+    return !q.evaluate(st.formula, left) || !q.evaluate(st.right, right);
+  }
+
+  /// From the current line to the end of the file only labels, Q assignments, jumps to labels among
+  /// them, comments and END PGM, outside any subprogram call: no way through them moves or
+  /// switches anything, whatever a parameter holds (hyperMILL's tool-edge checks after a skipped
+  /// /M30).
+  bool rest_is_inert() {
+    std::set<std::string> defined, targets;
+    const bool only_flow = flow.each_rest_line([&](std::string_view l, int n) {
+      Block b;
+      try {
+        b = parse_block(l, file, n);
+      } catch (const InputError&) {
+        return false;
+      }
+      const std::string& s = b.statement;
+      if (b.continued) return false;
+      if (s.empty() || s == "END PGM") return true;
+      if (s == "LBL") {
+        const auto key = label_of(b.text);
+        if (key) defined.insert(*key);
+        return key.has_value();
+      }
+      if (s != "Q" && s != "FN") return false;
+      QError e;
+      const auto st = s == "Q" ? q_assignment_of(b.text, e) : fn_statement_of(b.text, e);
+      if (st && st->target.empty()) targets.insert(st->label);
+      return st.has_value();
+    });
+    return only_flow && std::includes(defined.begin(), defined.end(), targets.begin(), targets.end());
   }
 
   double formula_value(const Block& b, const std::string& formula) {
