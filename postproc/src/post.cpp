@@ -16,6 +16,7 @@
 #include "ncpost/postproc/write/tilted_plane.hpp"
 #include "ncpost/postproc/verify/verify_arc.hpp"
 #include "write/post_cycle.hpp"
+#include "write/tool_call.hpp"
 #include "verify/read_back.hpp"
 #include "verify/record_blocks.hpp"
 
@@ -300,9 +301,16 @@ class Poster {
 
   /// Every tool runs with its own length: RTCP off around the change, the tool call, then the
   /// length (or RTCP with the length) of the new tool (the dialect's words).
-  void on(const cl::ToolChange& t) {
+  /// A tool called by name keeps it where the dialect calls tools by name, else takes its number
+  /// from the tool table (tool_call.hpp).
+  void on(const cl::ToolChange& change) {
     const Dialect& d = writer_.dialect();
-    if (t.length_mm) check_tool_length(t);
+    const detail::ToolCall call = detail::tool_call_of(change, d, options_.tool_table.get(),
+                                                       SourcePosition{input_, change.where.line, change.where.column});
+    cl::ToolChange t = change;
+    t.number = call.number.value_or(0);
+    t.length_mm = call.length_mm;
+    if (t.length_mm) check_tool_length(t, call);
     close_plane();
     last_rapid_.reset();
     last_was_feed_ = false;
@@ -312,14 +320,15 @@ class Poster {
     };
     if (rtcp_on_) add(d.rtcp_off);
     tool_ = t.number;
+    tool_numbered_ = call.number.has_value();
     length_register_ = t.number;
-    add(d.tool_call);
+    add(call.blocks);
     if (options_.rtcp) add(d.rtcp_on);
     else if (options_.tool_length_on_change) add(d.tool_length_on);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
     if (t.length_mm)
-      writer_.comment(fmt::format("T{} length {:.4f} mm from the CL data: {}", t.number, *t.length_mm,
+      writer_.comment(fmt::format("{} length {:.4f} mm from {}: {}", call.label, *t.length_mm, call.length_from,
                                   length_in_kinematics() ? "the axes are solved for it"
                                                          : "the control's length register applies it"));
   }
@@ -334,16 +343,18 @@ class Poster {
 
   /// LOADTL/n,LENGTH,l: on a machine whose axis positions depend on the tool length the post solves
   /// for one length (--tool-length); a tool of another length would cut off by the difference.
-  void check_tool_length(const cl::ToolChange& t) const {
+  void check_tool_length(const cl::ToolChange& t, const detail::ToolCall& call) const {
     if (!length_in_kinematics() || !options_.tool_length_mm) return;
     if (std::abs(*t.length_mm - *options_.tool_length_mm) <= 5e-4) return;
     throw InputError(SourcePosition{input_, t.where.line, t.where.column},
-                     fmt::format("LOADTL: tool {} is {:.4f} mm long (LENGTH), but the axes of {} are solved for a tool "
+                     fmt::format("{} is {:.4f} mm long ({}), but the axes of {} are solved for a tool "
                                  "length of {:.4f} mm (--tool-length): on this machine the axis positions depend on the "
                                  "tool length (rotary axes in the head), and the tool would cut {:.4f} mm off the path. "
                                  "Post with --tool-length {:.4f} (one run per tool length), or with --rtcp (the "
                                  "control applies each tool's length)",
-                                 t.number, *t.length_mm, machine_.name, *options_.tool_length_mm,
+                                 call.length_from == "the CL data" ? fmt::format("LOADTL: tool {}", t.number) : call.label,
+                                 *t.length_mm, call.length_from == "the CL data" ? "LENGTH" : call.length_from,
+                                 machine_.name, *options_.tool_length_mm,
                                  std::abs(*t.length_mm - *options_.tool_length_mm), *t.length_mm));
   }
 
@@ -1024,6 +1035,11 @@ class Poster {
                                        c.text, *c.offset_register, writer_.dialect().name, writer_.dialect().file,
                                        c.side == cl::CutterComp::Side::left ? "LEFT" : "RIGHT"),
                        "CUTCOM/" + c.text);
+    if (!words->register_letter.empty() && !c.offset_register && !tool_numbered_)
+      throw InputError(at, fmt::format("{}: the {} dialect names the radius register, by default the tool's number, "
+                                       "but the tool was called by name: give its number in a tool table "
+                                       "(--tool-table FILE; docs/formats.md, Tool tables)",
+                                       c.text, writer_.dialect().name), c.text);
     const int reg = c.offset_register.value_or(tool_);
     writer_.block((c.side == cl::CutterComp::Side::left ? words->left : words->right) +
                   (words->register_letter.empty() ? std::string() : " " + words->register_letter + std::to_string(reg)));
@@ -1074,6 +1090,7 @@ class Poster {
   bool have_position_ = false;
   bool rtcp_on_ = false;
   int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)
+  bool tool_numbered_ = true;  ///< false: the tool was called by name and has no number (tool_ is 0)
   std::optional<int> length_register_;  ///< the length register written (the tool's, or a G43 H of the input)
   RecordBlocks records_{writer_};
   bool default_feed_noticed_ = false;

@@ -63,6 +63,7 @@ void measure_before(std::istream& in, std::istream::pos_type start, const PostRe
 PostOptions post_options(const PostRequest& r, const std::optional<double>& tolerance_mm, bool account,
                          const PostModels& models, PostAccount& acc) {
   PostOptions options = models.options(tolerance_mm);
+  options.tool_table = r.tool_table;
   options.retract_mm = r.retract_mm;
   options.branch_choice = r.branch_choice;
   options.verify = account;

@@ -12,8 +12,10 @@
 
 #include "cl_records.hpp"
 #include "shipped_machines.hpp"
+#include "test_paths.hpp"
 #include "ncpost/kinematics/pose.hpp"
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/read/klartext/klartext_block.hpp"
 #include "ncpost/postproc/read/klartext/klartext_reader.hpp"
 
@@ -255,12 +257,15 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 L X+10 FQ1\n", "Q1 is not set");
   refused("3 L Z+10 R0 FMAX M91\n", "M91 Z10: machine coordinates count from the axis's reference point, which "
                                    "the machine file ac-trunnion does not give");
-  refused("3 L Z+10 R0 FMAX M92\n", "M92 with axis words");
+  refused("3 L Z+10 R0 FMAX M92\n", "M92 Z10: machine coordinates count from the axis's second reference point "
+                                   "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
+                                   "does not give; add [axes.Z] reference2");
   refused("3 L X+10 FMAX M99\n", "a cycle call without CYCL DEF 200 before it");
   refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "'CYCL DEF 203 UNIVERSAL DRILLING': this cycle");
   refused("3 M89\n", "M89: a modal cycle call");
   refused("3 M114\n", "M114");
-  refused("3 TOOL CALL \"D10\" Z S100\n", "a tool called by name");
+  refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");
+  refused("3 TOOL CALL 5 \"D10\" Z S100\n", "both a number and a name");
   refused("3 TOOL CALL 2 Z DL+0.5\n", "DL+0.5");
   refused("3 TOOL CALL 2 X S100\n", "tool axis X");
   refused("3 L B+10\n", "has no B axis");
@@ -387,4 +392,82 @@ TEST_CASE("klartext: CYCL DEF 200 drilled at M99 and CYCL CALL, the hole's top a
 TEST_CASE("klartext: machine limits make the program infeasible") {
   CHECK_THROWS_AS(read(program("1 L X+0 Y+0 Z+700 R0 FMAX\n")), Infeasible);
   CHECK_THROWS_AS(read(program("1 L X+0 Y+0 Z+0 A+130 R0 FMAX\n")), Infeasible);
+}
+
+TEST_CASE("klartext: M91 and M92 count from the machine file's reference and reference2 points") {
+  // tests/data/machines/ac-trunnion-references.toml: reference X -400 Y 450 Z 550, reference2 X 300
+  // Y -200 Z 400; at A = C = 0 with the origin of W at M's and no tool the tip is the machine's X Y Z
+  const Machine m = load_machine(test::data("machines/ac-trunnion-references.toml"));
+  std::istringstream in(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                                "2 L Z+5 R0 FMAX M92\n"
+                                "3 L X+0 Y+0 R0 FMAX M92\n"
+                                "4 L Z-100 R0 FMAX M91\n"
+                                "5 L X+1 Y+2 Z+3 FMAX\n"
+                                "6 M30\n"));
+  klartext::KlartextReader r(in, "t.h", m, Setup{}, {});
+  const auto ms = only<cl::Motion>(test::all_records(r));
+  REQUIRE(ms.size() == 5);
+  check_tip(ms[0], 0, 0, 10);
+  check_tip(ms[1], 0, 0, 400 + 5);
+  check_tip(ms[2], 300, -200, 405);
+  check_tip(ms[3], 300, -200, 550 - 100);
+  check_tip(ms[4], 1, 2, 3);
+  CHECK(any_contains(r.take_notices(), "M92: the block's X Y Z are machine coordinates"));
+}
+
+TEST_CASE("klartext: TOOL CALL \"name\" changes to the tool of that name, TOOL CALL n to tool n") {
+  const auto tools = only<cl::ToolChange>(
+      read(program("1 TOOL CALL \"FRA-P15251 D15.2\" Z S100 DL+0 DR+0\n2 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                   "3 TOOL CALL 4 Z S200\n4 M30\n")).records);
+  REQUIRE(tools.size() == 2);
+  CHECK(tools[0].name == "FRA-P15251 D15.2");  // as written: case and blanks kept
+  CHECK(tools[0].number == 0);
+  CHECK(tools[0].where.line == 2);
+  CHECK(tools[1].name.empty());
+  CHECK(tools[1].number == 4);
+}
+
+TEST_CASE("klartext: CYCL DEF 9 dwells where it is defined, its time at the end of 9.1 in any language") {
+  const Read r = read(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                              "2 CYCL DEF 9.0 DWELL TIME\n"
+                              "3 CYCL DEF 9.1 DWELL 1.5\n"
+                              "4 CYCL DEF9 .0 VARAKOZASI IDO\n"  // a Hungarian TNC, as hyperMILL writes it
+                              "5 CYCL DEF9.1 V.IDO2\n"
+                              "6 M30\n"));
+  const auto dwells = only<cl::Dwell>(r.records);
+  REQUIRE(dwells.size() == 2);
+  CHECK(dwells[0].seconds == 1.5);
+  CHECK(dwells[0].where.line == 4);
+  CHECK(dwells[1].seconds == 2.0);
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n2 CYCL DEF 9.1 DWELL\n")),
+             Catch::Contains("t.h:3:") && Catch::Contains("expected CYCL DEF 9.1 with the dwell time in s"));
+}
+
+TEST_CASE("klartext: a jump on a parameter the program does not set ends it where nothing can move after it") {
+  // hyperMILL for DMG: `/ M30` (skipped with block skip on), then tool-edge checks after it
+  const std::string tail =
+      "3 LBL \"CuttingEdgesCheck\"\n"
+      "4 FN 9: IF +Q1900 EQU +1 GOTO LBL \"CuttingEdges1\"\n"
+      "5 FN 9: IF +Q1900 EQU +2 GOTO LBL \"CuttingEdges2\"\n"
+      "6 LBL 0\n"
+      "7 ; ----\n"
+      "8 LBL \"CuttingEdges1\"\n"
+      "9 FN 0: Q1901=4\n"
+      "10 LBL 0\n"
+      "11 LBL \"CuttingEdges2\"\n"
+      "12 FN 0: Q1901=3\n"
+      "13 LBL 0\n";
+  const Read r = read(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n2 L X+5 FMAX\n/2 M30\n" + tail));
+  CHECK(only<cl::Motion>(r.records).size() == 2);
+  const auto ends = only<cl::End>(r.records);
+  REQUIRE(ends.size() == 1);
+  CHECK(ends[0].where.line == 6);  // the first jump on Q1900
+  CHECK(any_contains(r.notices, "t.h:6:") );
+  CHECK(any_contains(r.notices, "nothing moves whichever way it jumps"));
+  // a motion after it, or a jump back before it: refused as before
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n" + tail + "14 L X+5 FMAX\n")),
+             Catch::Contains("t.h:4:") && Catch::Contains("Q1900 is not set in this program"));
+  CHECK_THAT(error_of(program("1 LBL 7\n2 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                              "3 FN 9: IF +Q1900 EQU +1 GOTO LBL 7\n")),
+             Catch::Contains("Q1900 is not set in this program"));
 }

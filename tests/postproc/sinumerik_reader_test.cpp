@@ -339,7 +339,7 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
     int line;
   };
   const std::vector<Case> cases = {
-      {"G0 X0 Y0 Z0\nT=\"MILL_10\" M6\nM30\n", "T=\"MILL_10\": a tool by name is not read", 2},
+      {"G0 X0 Y0 Z0\nT=\"\" M6\nM30\n", "expected a tool name between quotes", 2},
       {"G0 X0 Y0 Z0\nMIRROR X0\nM30\n", "MIRROR is not read", 2},
       {"G0 X0 Y0 Z0\nCYCLE84(10,0,2,-5)\nM30\n", "CYCLE84 (rigid tapping) is not read", 2},
       {"G0 X0 Y0 Z0\nG505\nM30\n", "G505: a settable work offset beyond G57 is not read", 2},

@@ -12,7 +12,7 @@
 //     Trans(X0) Rx(A) Ry(B) Rz(C) Trans(X1); X Y Z after it are the tip in that frame, the tool
 //     axis its Z; CYCLE800() ends it;
 //   - TRANS X Y Z: a shift of the programmable frame.
-// Other words are skipped (S F T M D ...). Lengths mm, angles deg.
+// Other words are skipped (S F T M D ..., and text between quotes: T="name"). Lengths mm, angles deg.
 #include <cmath>
 #include <map>
 #include <optional>
@@ -61,8 +61,12 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
   int line_no = 0;
   for (std::string raw; std::getline(in, raw);) {
     ++line_no;
-    std::string line = raw.substr(0, raw.find(';'));
-    for (char& c : line) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    std::string line;
+    bool quoted = false;  // strings ("DRILL X8.5" of T=, MSG) are no words
+    for (char c : raw.substr(0, raw.find(';'))) {
+      if (c == '"') quoted = !quoted;
+      else if (!quoted) line += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
     if (line.find("TRAORI") != std::string::npos) traori = true;
     if (line.find("TRAFOOF") != std::string::npos) traori = false;
     if (line.find("TRANS ") != std::string::npos) {

@@ -371,14 +371,23 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   read_comments(Section(file, root, "comments"), d);
 
   const Section tool(file, root, "tool");
-  tool.known({"call", "length_on", "rtcp_on", "rtcp_off"});
+  tool.known({"call", "call_by_name", "length_on", "rtcp_on", "rtcp_off"});
   d.tool_call = tool.blocks("call", {"{tool}", "{rpm}"});
   tool.require("call", d.tool_call, "{tool}", "the tool number would not be written");
+  if (tool.has("call_by_name")) {  // optional: controls that call tools by name
+    d.tool_call_by_name = tool.blocks("call_by_name", {"{tool_name}", "{rpm}"});
+    tool.require("call_by_name", d.tool_call_by_name, "{tool_name}", "the tool's name would not be written");
+  }
   d.tool_length_on = tool.blocks("length_on", {"{tool}", "{length}"});
   d.rtcp_on = tool.blocks("rtcp_on", {"{tool}", "{length}"});
   d.rtcp_off = tool.blocks("rtcp_off", {"{tool}", "{length}"});
-  bool call_takes_speed = false;
-  for (const auto& b : d.tool_call) call_takes_speed = call_takes_speed || b.find("{rpm}") != std::string::npos;
+  auto takes_speed = [](const std::vector<std::string>& blocks) {
+    return std::any_of(blocks.begin(), blocks.end(), [](const std::string& b) { return b.find("{rpm}") != std::string::npos; });
+  };
+  const bool call_takes_speed = takes_speed(d.tool_call);
+  if (!d.tool_call_by_name.empty() && takes_speed(d.tool_call_by_name) != call_takes_speed)
+    throw tool.wrong(tool.node("call_by_name"), "call_by_name",
+                     call_takes_speed ? "{rpm}, as call names it" : "no {rpm}, as call names none");
   read_spindle(Section(file, root, "spindle"), d, call_takes_speed);
   read_coolant(Section(file, root, "coolant"), d);
 

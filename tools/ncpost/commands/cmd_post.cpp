@@ -21,6 +21,7 @@
 #include "ncpost/postproc/verify/post_report.hpp"
 #include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
+#include "ncpost/postproc/read/tool_table.hpp"
 #include "machine_kind.hpp"
 
 namespace ncpost::cli {
@@ -52,6 +53,7 @@ struct PostArgs {
   bool rtcp = false;
   bool tilted_plane = false;
   std::string dialect = "fanuc";
+  std::string tool_table;  ///< --tool-table: numbers of tools called by name ("" none)
   std::string feed_mode = "auto";
   bool verify = false;
   std::string report;
@@ -98,6 +100,7 @@ PostRequest post_request_of(const PostArgs& a) {
   r.input_file = a.input_path;
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
+  if (!a.tool_table.empty()) r.tool_table = std::make_shared<const ToolTable>(load_tool_table(a.tool_table));
   r.reader.control = r.dialect.input_control;
   r.reader.power_on = r.dialect.input_power_on;
   r.reader.power_on_source = fmt::format("the {} dialect's [input] power_on", r.dialect.name);
@@ -217,6 +220,12 @@ void add_post(CLI::App& app, Action& action) {
                   "dialect file (a copy of postproc/dialects/fanuc.toml, edited; docs/usage.md \"Dialect files\")")
       ->type_name("NAME|PATH")
       ->check(dialect_name_or_path());
+  sub->add_option("--tool-table", a->tool_table,
+                  "Tools called by name in the input (TOOL CALL \"name\", T=\"name\"): their numbers (and lengths) "
+                  "for a dialect that calls tools by number (TOML: [tools] then \"name\" = number, or \"name\" = "
+                  "{ number = n, length = mm }); without it such a tool is refused. Heidenhain and Sinumerik "
+                  "output keeps the name")
+      ->check(CLI::ExistingFile);
   sub->add_option("--feed-mode", a->feed_mode, "auto (G93 for simultaneous rotary moves, default), g93, g94")
       ->check(CLI::IsMember({"auto", "g93", "g94"}));
   sub->add_flag("--verify", a->verify,

@@ -8,12 +8,14 @@
 // axis positions (X Y Z of the TCP in M, rotary angles in degrees); with RTCP it holds the tool
 // tip in W and the rotary angles, and the control does the kinematics.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "ncpost/postproc/read/cl_record.hpp"
+#include "ncpost/postproc/read/tool_table.hpp"
 #include "ncpost/postproc/solve/motion_solver.hpp"
 #include "ncpost/postproc/write/nc_writer.hpp"
 #include "ncpost/postproc/verify/verify.hpp"
@@ -95,6 +97,9 @@ struct PostOptions {
   /// The tool length (mm) the solver places head pivots with (--tool-length): a LOADTL length
   /// that differs from it is refused where the axis positions depend on it (a head without RTCP).
   std::optional<double> tool_length_mm;
+  /// The tool table (--tool-table): the numbers (and lengths) of the tools a program calls by name,
+  /// for dialects that call tools by number (tool_table.hpp); null: none given.
+  std::shared_ptr<const ToolTable> tool_table;
   /// Machines with reversal (`--model` with `reversal:` terms): before a feed block that reverses
   /// an axis, a block that moves only the commands through the play (the tool stands still), so the
   /// block itself runs without lag. On with `--tolerance` (the lag would otherwise bow the tip by

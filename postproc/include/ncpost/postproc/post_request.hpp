@@ -62,6 +62,8 @@ struct PostRequest {
   std::string input_file;  ///< the file the input is read from, hashed in the report (empty: input_name)
   InputKind input_kind = InputKind::automatic;
   cl::ReaderOptions reader;     ///< units of a file that does not say, unterminated files, NX MSYS
+  /// The numbers of the tools the input calls by name (`--tool-table`; PostOptions::tool_table).
+  std::shared_ptr<const ToolTable> tool_table;
   // the machine the program is for (its errors: `machine`)
   std::string model_source;     ///< the model file, named in the header and the account
   // the nonlinear error

@@ -12,9 +12,11 @@ CycleDef cycle_def_of(const Block& b, const std::string& file, int line_number) 
   while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) ++p;
   if (p == 0) return c;
   c.number = std::stoi(t.substr(0, p));
-  if (p + 1 < t.size() && t[p] == '.' && std::isdigit(static_cast<unsigned char>(t[p + 1]))) {
-    c.part = t[p + 1] - '0';
-    p += 2;
+  std::size_t dot = p;
+  while (dot < t.size() && t[dot] == ' ') ++dot;  // "9 .0": a blank before the part (hyperMILL for DMG)
+  if (dot + 1 < t.size() && t[dot] == '.' && std::isdigit(static_cast<unsigned char>(t[dot + 1]))) {
+    c.part = t[dot + 1] - '0';
+    p = dot + 2;
   }
   c.rest = t.substr(p);
   // tokenize the rest as the words of an L block, then put the columns where they are in the line

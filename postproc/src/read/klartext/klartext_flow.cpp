@@ -33,6 +33,16 @@ bool ProgramFlow::next(std::string_view& line, int& line_number) {
   return true;
 }
 
+bool ProgramFlow::each_rest_line(const std::function<bool(std::string_view, int)>& fn) {
+  if (!frames_.empty()) return false;
+  keep_current();
+  std::string_view read;
+  while (source_.next(read)) lines_.push_back({std::string(read), source_.line_number()});
+  for (std::size_t i = play_ - 1; i < lines_.size(); ++i)
+    if (!fn(lines_[i].text, lines_[i].number)) return false;
+  return true;
+}
+
 void ProgramFlow::keep_current() {
   if (keeping_) return;
   keeping_ = true;

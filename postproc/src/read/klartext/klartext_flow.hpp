@@ -38,6 +38,9 @@ class ProgramFlow {
   void call(const std::string& key, int repeats, int line_number);
   /// FN 9 .. 12 GOTO LBL key in the current line, the condition holding.
   void jump(const std::string& key, int line_number);
+  /// Outside any subprogram call: reads the rest of the input and calls `fn` for every line from the
+  /// current one to the end, while it returns true; false when in a call or when `fn` said false.
+  bool each_rest_line(const std::function<bool(std::string_view, int)>& fn);
   /// The subprogram calls in progress, outermost first ("CALL LBL 1 (line 12) > CALL LBL 2 (line 40)").
   std::string chain() const;
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -394,6 +395,11 @@ struct KlartextReader::State {
       if (!st) fail(b.column, fmt::format("{} {}: {}", s == "Q" ? "" : "FN", b.text, error.what));
       if (!st->target.empty()) {
         q.set(st->target, formula_value(b, st->formula));
+      } else if (unknown_condition(*st) && rest_is_inert()) {
+        notice(b.column, fmt::format("FN {}: its condition reads a Q parameter this program does not set, but from here "
+                                     "on the program holds only labels, Q parameters and jumps among them: nothing "
+                                     "moves whichever way it jumps, so the program ends here", b.text.substr(0, 1)));
+        end_program(at(b.column));
       } else if (compare_holds(st->compare, formula_value(b, st->formula), formula_value(b, st->right))) {
         flow.jump(st->label, line_number);
       }
@@ -410,6 +416,42 @@ struct KlartextReader::State {
       return true;
     }
     return false;
+  }
+
+  /// A jump whose condition reads a Q parameter not set in this program (the TNC's value from before).
+  bool unknown_condition(const QStatement& st) {
+    QError left, right;
+    return !q.evaluate(st.formula, left) || !q.evaluate(st.right, right);
+  }
+
+  /// From the current line to the end of the file only labels, Q assignments, jumps to labels among
+  /// them, comments and END PGM, outside any subprogram call: no way through them moves or
+  /// switches anything, whatever a parameter holds (hyperMILL's tool-edge checks after a skipped
+  /// /M30).
+  bool rest_is_inert() {
+    std::set<std::string> defined, targets;
+    const bool only_flow = flow.each_rest_line([&](std::string_view l, int n) {
+      Block b;
+      try {
+        b = parse_block(l, file, n);
+      } catch (const InputError&) {
+        return false;
+      }
+      const std::string& s = b.statement;
+      if (b.continued) return false;
+      if (s.empty() || s == "END PGM") return true;
+      if (s == "LBL") {
+        const auto key = label_of(b.text);
+        if (key) defined.insert(*key);
+        return key.has_value();
+      }
+      if (s != "Q" && s != "FN") return false;
+      QError e;
+      const auto st = s == "Q" ? q_assignment_of(b.text, e) : fn_statement_of(b.text, e);
+      if (st && st->target.empty()) targets.insert(st->label);
+      return st.has_value();
+    });
+    return only_flow && std::includes(defined.begin(), defined.end(), targets.begin(), targets.end());
   }
 
   double formula_value(const Block& b, const std::string& formula) {
@@ -508,6 +550,7 @@ struct KlartextReader::State {
   // TOOL CALL n|"name" Z S.. F.. DL.. DR.. DR2..
   void tool_call(const Block& b) {
     std::optional<int> tool;
+    std::optional<std::string> name;
     std::optional<double> speed;
     bool dr_nonzero = false;
     for (const Word& w : b.words) {
@@ -517,8 +560,8 @@ struct KlartextReader::State {
           fail(w.column, "expected a tool number (an integer >= 0)");
         tool = static_cast<int>(*w.value);
       } else if (w.name == "\"") {
-        fail(w.column, fmt::format("TOOL CALL \"{}\": a tool called by name; the post writes tool numbers: call the "
-                                   "tool by its number", w.text));
+        if (w.text.empty()) fail(w.column, "TOOL CALL \"\": expected a tool name between the quotes");
+        name = w.text;
       } else if (w.name == "X" || w.name == "Y" || w.name == "Z") {
         if (w.value) fail(w.column, fmt::format("expected the tool axis alone ({} without a value)", w.name));
         if (w.name != "Z") fail(w.column, fmt::format("tool axis {}: only the tool axis Z is read", w.name));
@@ -543,14 +586,36 @@ struct KlartextReader::State {
       }
     }
     delta_radius = dr_nonzero;  // each TOOL CALL sets its own deltas
-    if (tool) {
-      emit(cl::ToolChange{at(b.column), *tool, std::nullopt});
+    if (tool && name) fail(b.column, "TOOL CALL with both a number and a name: call the tool by one of them");
+    if (tool || name) {
+      cl::ToolChange change;
+      change.where = at(b.column);
+      change.number = tool.value_or(0);
+      change.name = name.value_or("");
+      emit(change);
       spindle = cl::Spindle::Direction::off;  // the tool change stops the spindle; M3/M4 start it
     }
     if (speed) {
       rpm = *speed;
       if (spindle != cl::Spindle::Direction::off) emit(cl::Spindle{at(b.column), spindle, rpm});
     }
+  }
+
+  /// CYCL DEF 9 (dwell time, active where it is defined): 9.0 is the header, 9.1 ends with the time
+  /// in s after a word in the control's language (DWELL 1.5, V.IDO2, V.ZEIT 0.5).
+  void dwell_cycle(const Block& b, const CycleDef& c) {
+    if (c.part == 0) return;
+    const std::string& t = c.rest;
+    std::size_t end = t.find_last_not_of(" \t\r");
+    std::size_t start = end == std::string::npos ? 0 : end + 1;
+    while (start > 0 && (std::isdigit(static_cast<unsigned char>(t[start - 1])) || t[start - 1] == '.')) --start;
+    const std::string number = end == std::string::npos ? "" : t.substr(start, end + 1 - start);
+    if (c.part != 1 || number.empty() || number == "." || number.find('.') != number.rfind('.'))
+      fail(b.column, fmt::format("CYCL DEF 9.{}: expected CYCL DEF 9.1 with the dwell time in s at its end (DWELL 1.5)",
+                                 c.part));
+    const double seconds = std::stod(number);
+    if (seconds > cl::kMaxDwellSeconds) fail(b.column, fmt::format("CYCL DEF 9.1: a dwell of {:g} s", seconds));
+    emit(cl::Dwell{at(b.column), seconds});
   }
 
   /// CYCL DEF 7 (datum shift: X Y Z, absolute from the preset or I... from the last shift) and
@@ -569,6 +634,10 @@ struct KlartextReader::State {
     if ((c.number == 332 || c.number == 392) && c.part < 0) {  // DMG's TUNING / ATC: servo dynamics, no motion
       notice_once("CYCL DEF 332", b.column, fmt::format("CYCL DEF {} (the machine's dynamics tuning) is noted, not "
                                                         "posted: it moves nothing", c.number));
+      return;
+    }
+    if (c.number == 9 && c.part >= 0) {
+      dwell_cycle(b, c);
       return;
     }
     if (c.number == 19)
@@ -860,26 +929,32 @@ struct KlartextReader::State {
     return bw;
   }
 
-  /// M91: the block's X Y Z words are machine coordinates, counted from each axis's `reference` in
-  /// the machine file (as G53); the axes it does not name stay.
-  void machine_coordinates(const Block& b, BlockWords& bw, int column) {
+  /// M91 / M92: the block's X Y Z words are machine coordinates, counted from each axis's
+  /// `reference` (M91, the machine datum, as G53) or `reference2` (M92, the additional machine
+  /// datum the machine builder sets; G30's point) in the machine file; the axes it does not name stay.
+  void machine_coordinates(const Block& b, BlockWords& bw, int code, int column) {
     if (tip_mode())
-      fail(column, "M91 with axis words under M128 / FUNCTION TCPM or in a tilted plane is not read");
+      fail(column, fmt::format("M{} with axis words under M128 / FUNCTION TCPM or in a tilted plane is not read", code));
+    const char* key = code == 91 ? "reference" : "reference2";
     for (const Word& w : b.words) {
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
       if (slot < 0) continue;
       if (slot >= 3 || incremental)
-        fail(w.column, fmt::format("M91 with {}: only absolute X, Y and Z in machine coordinates are read", w.name));
+        fail(w.column, fmt::format("M{} with {}: only absolute X, Y and Z in machine coordinates are read", code, w.name));
       const Axis& axis = machine.axes[static_cast<std::size_t>(slot)];
-      if (!axis.reference)
-        fail(w.column, fmt::format("M91 {}{:g}: machine coordinates count from the axis's reference point, which the "
-                                   "machine file {} does not give; add [axes.{}] reference = ... (docs/formats.md)",
-                                   w.name, *w.value, machine.name, w.name));
-      bw.target[static_cast<std::size_t>(slot)] = *axis.reference + *w.value;
+      const std::optional<double>& datum = code == 91 ? axis.reference : axis.reference2;
+      if (!datum)
+        fail(w.column, fmt::format("M{} {}{:g}: machine coordinates count from the axis's {}, which the machine file "
+                                   "{} does not give; add [axes.{}] {} = ... (docs/formats.md)", code, w.name, *w.value,
+                                   code == 91 ? "reference point"
+                                              : "second reference point (the TNC's additional machine datum, M92)",
+                                   machine.name, w.name, key));
+      bw.target[static_cast<std::size_t>(slot)] = *datum + *w.value;
     }
-    notice_once("M91", column, "M91: the block's X Y Z are machine coordinates, counted from the axes' reference "
-                               "points in the machine file");
+    notice_once(fmt::format("M{}", code), column,
+                fmt::format("M{}: the block's X Y Z are machine coordinates, counted from the axes' {} in the machine "
+                            "file", code, code == 91 ? "reference points (reference)" : "second reference points (reference2)"));
   }
 
   int rotary_index(int slot) const {
@@ -893,7 +968,7 @@ struct KlartextReader::State {
   bool motion_block(const Block& b) {
     BlockWords bw = words_of(b);
     for (const auto& [code, column] : bw.m)
-      if (code == 91 && bw.any_axis) machine_coordinates(b, bw, column);
+      if ((code == 91 || code == 92) && bw.any_axis) machine_coordinates(b, bw, code, column);
     const cl::Location where = at(b.column);
     const bool path = b.statement != "M" && b.statement != "STOP";
     if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
@@ -932,14 +1007,8 @@ struct KlartextReader::State {
           break;
         }
         case 140: m140 = true; break;
-        case 91:
+        case 91: case 92:
           if (bw.any_axis) break;  // (machine coordinates: machine_coordinates() above)
-          [[fallthrough]];
-        case 92:
-          if (bw.any_axis && code == 92)
-            fail(column, "M92 with axis words: the block's coordinates count from a position the machine builder sets, "
-                         "which the machine file does not give; program the position in the workpiece frame, or "
-                         "M140 MB MAX to retract");
           [[fallthrough]];
         default:
           after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});

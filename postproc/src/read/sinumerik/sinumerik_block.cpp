@@ -94,11 +94,16 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
   if (n == "T" && !number && t.size() > 2 && t.front() == '"' && t.back() == '"' &&
       t.find_first_not_of("0123456789", 1) == t.size() - 1) {  // T="12": the tool number as a string
     w.iso.push_back("T" + t.substr(1, t.size() - 2));
+    w.tool_name = "";
     return;
   }
-  if (n == "T" && !number && !item.text.empty() && item.text.front() == '"')
-    fail(l, item.column, fmt::format("T={}: a tool by name is not read (the posted program selects tools by number); have "
-                                     "the CAM system write T=<number>, or post the CL data", item.text));
+  if (n == "T" && !number && !item.text.empty() && item.text.front() == '"') {  // T="name" (tool management)
+    if (t.size() < 3 || t.back() != '"' || t.find('"', 1) != t.size() - 1)
+      fail(l, item.column, fmt::format("T={}: expected a tool name between quotes (T=\"NAME\")", t));
+    w.iso.push_back("T0");
+    w.tool_name = t.substr(1, t.size() - 2);
+    return;
+  }
   if (n == "CR" || n == "F" || n == "S" || n == "T" || n == "D") {
     const double v = number ? *item.value : value(l, item.column, item.text);
     if (n == "F" && w.dwell_s) w.dwell_s = v;  // G4 F: the dwell in seconds
@@ -109,6 +114,7 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
     } else {
       if (n != "F" && (v < 0 || v != std::floor(v))) fail(l, item.column, fmt::format("{}: expected a whole number >= 0", n));
       w.iso.push_back(n + gcode::word_number(v));
+      if (n == "T") w.tool_name = "";
     }
     return;
   }
@@ -223,6 +229,7 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
     if (s.front() == ';') emit(l, s);
   if (!l.block.comment.empty()) iso += (iso.empty() ? ";" : " ;") + l.block.comment;
   if (!iso.empty()) emit(l, iso);
+  if (w.tool_name) out_.back().tool_name = w.tool_name;  // (T0 is in `iso`)
   if (mcall_ && w.any_linear() && !w.supa) drill(l, *mcall_);
   for (const Item* item : w.after) {
     if (item->name == "CYCLE800") cycle800(l, *item);

@@ -7,6 +7,8 @@
 
 #include <cctype>
 #include <exception>
+#include <iterator>
+#include <map>
 #include <streambuf>
 
 #include "ncpost/machines/input_error.hpp"
@@ -21,6 +23,7 @@ class IsoStream final : public std::streambuf {
  public:
   explicit IsoStream(Translator& t) : translator_(t) {}
   std::vector<int> source_line;
+  std::map<int, std::string> tool_selected;  ///< ISO line of a T word -> the tool's name ("" by number)
   std::exception_ptr failure;  ///< the translator's own error (already on a Sinumerik line)
 
  protected:
@@ -33,6 +36,7 @@ class IsoStream final : public std::streambuf {
         buffer_ += b.text;
         buffer_ += '\n';
         source_line.push_back(b.line);
+        if (b.tool_name) tool_selected[static_cast<int>(source_line.size())] = *b.tool_name;
       }
     } catch (...) {
       failure = std::current_exception();
@@ -78,6 +82,13 @@ struct SinumerikReader::State {
     const auto& lines = translator.program().lines;
     return line >= 1 && static_cast<std::size_t>(line) <= lines.size() ? lines[static_cast<std::size_t>(line - 1)].text : "";
   }
+  /// A tool change at ISO line `n` takes the name of the tool the last T word before it selected.
+  void name_tool(cl::ToolChange& t, int n) const {
+    auto it = buffer.tool_selected.upper_bound(n);
+    if (it == buffer.tool_selected.begin() || std::prev(it)->second.empty()) return;
+    t.name = std::prev(it)->second;
+    t.number = 0;
+  }
   /// "file:N[:C]: rest" with N an ISO line -> "file:M: rest" with M the Sinumerik line.
   std::string remap(const std::string& message) const {
     const std::string prefix = file + ":";
@@ -104,6 +115,7 @@ std::optional<cl::Record> SinumerikReader::next() {
   State& s = *state_;
   try {
     std::optional<cl::Record> r = s.gcode.next();
+    if (auto* t = r ? std::get_if<cl::ToolChange>(&*r) : nullptr) s.name_tool(*t, t->where.line);  // (ISO line)
     if (r) std::visit([&](auto& x) { x.where = cl::Location{s.source_of(x.where.line), 0}; }, *r);
     return r;
   } catch (const InputError& e) {

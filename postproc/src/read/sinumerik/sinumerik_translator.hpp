@@ -15,7 +15,9 @@
 //   - CYCLE800 positions the rotary axes (the solution for the plane's normal, _DIR choosing
 //     between two) and reads what follows as tool-tip positions in the swivelled plane;
 //   - CYCLE81/CYCLE82 (also under MCALL) become their motions;
-//   - SUPA blocks become G53 (machine coordinates); D0 becomes G49 (no tool length).
+//   - SUPA blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
+//   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
+//     puts into the tool change (cl::ToolChange::name).
 // Everything else is refused by name (InputError with file:line:column).
 #include <deque>
 #include <map>
@@ -43,6 +45,8 @@ struct TranslatorOptions {
 struct IsoBlock {
   std::string text;
   int line = 0;
+  /// The block selects a tool (its T word): by name (T="name": the ISO block says T0), "" by number.
+  std::optional<std::string> tool_name;
 };
 
 /// A drilling cycle (CYCLE81/82) with its values (program unit, absolute along the frame's Z).

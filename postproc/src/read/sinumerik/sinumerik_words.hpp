@@ -26,6 +26,7 @@ struct Translator::Words {
   std::optional<double> radius;               ///< CR=
   std::array<std::optional<double>, 3> orientation;  ///< A3 B3 C3
   std::optional<double> dwell_s;              ///< G4 F (s)
+  std::optional<std::string> tool_name;       ///< a T word: T="name" (its name), T<n> ("")
   bool supa = false;
   bool program_end = false;                   ///< M2 / M30
   bool unit_end = false;                      ///< M17 / RET

@@ -58,10 +58,15 @@ struct Coolant {
   std::string mode;            ///< FLOOD, MIST, THRU, ... as written
 };
 
+/// A tool change: to tool `number`, or, where `name` is not empty, to the tool the control's tool
+/// table names so (Klartext `TOOL CALL "name"`, Sinumerik `T="name"`; `number` is then 0): the
+/// post writes the name where its dialect calls tools by name, else the number `--tool-table`
+/// gives it (tool_table.hpp), else it refuses.
 struct ToolChange {
   Location where;
   int number = 0;
   std::optional<double> length_mm;  ///< from LOADTL/n,LENGTH,l or TLDATA where given
+  std::string name;                 ///< the tool's name as written, "" when called by number
 };
 
 /// G43 H<n> of G-code input: the tool's length from register n (the post writes it where n is not

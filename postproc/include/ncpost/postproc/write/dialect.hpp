@@ -118,6 +118,9 @@ struct Dialect {
   std::vector<std::string> program_stop{"M0"};  ///< a program stop (the operator resumes with cycle start)
   std::vector<std::string> program_optional_stop{"M1"};  ///< a stop only where the optional-stop switch is on
   std::vector<std::string> tool_call{"T{tool} M6"};  ///< blocks of a tool change
+  /// blocks of a change to a tool called by name ("{tool_name}"); empty: the control calls tools by
+  /// number only (a named tool takes its number from --tool-table)
+  std::vector<std::string> tool_call_by_name;
   std::vector<std::string> tool_length_on;  ///< after the tool call without RTCP (empty: the call does it)
   std::vector<std::string> rtcp_on;         ///< RTCP/TCPM on with the tool's length
   std::vector<std::string> rtcp_off;        ///< RTCP/TCPM and the length off (before a tool change, at the end)

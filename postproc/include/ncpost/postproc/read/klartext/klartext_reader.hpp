@@ -12,18 +12,19 @@
 // (as G43.4 in the G-code reader). cl::Motion::rotary_rad carries the programmed angles.
 //
 // Read: BEGIN PGM name MM / END PGM, block numbers, ';' comments and '*' structure blocks
-// (cl::Comment), block skip '/', BLK FORM and TOOL DEF (noted), TOOL CALL n Z S F DL DR (tool
-// change, spindle speed, the FAUTO feed), L with X Y Z and the machine's rotary words (I...:
+// (cl::Comment), block skip '/', BLK FORM and TOOL DEF (noted), TOOL CALL n|"name" Z S F DL DR (tool
+// change, by number or by name: cl::ToolChange::name; spindle speed, the FAUTO feed), L with X Y Z and the machine's rotary words (I...:
 // incremental), R0 / RL / RR (cl::CutterComp: the post writes it or refuses), F / FMAX / F MAX /
 // FAUTO (FMAX only for its block, as the TNC), M3 M4 M5 M8 M9 M13 M14 M0 M1 M2 M30, M126 (shortest
 // rotary path) / M127, M128 / M129, FUNCTION TCPM / FUNCTION RESET TCPM, M140 MB MAX|n (a rapid
-// along the tool axis: the machine Z, on a machine without a tilting head), STOP, and the paths
+// along the tool axis: the machine Z, on a machine without a tilting head), M91 / M92 beside X Y Z
+// (machine coordinates from the machine file's reference / reference2), STOP, and the paths
 // CC, C, CR, CT, CP (klartext_arc.hpp): a cl::Circle and its end motion for a single-turn arc,
 // else points within `arc_chord_tolerance_mm`; CYCL DEF 7 (datum shift), 32 (noted), 200 (drilling,
 // klartext_drilling.hpp) called by CYCL CALL or M99; PLANE RESET STAY (noted).
 // Refused by name with file:line:column and what to do: everything else (other cycles, PLANE, RND, CHF,
-// LP, APPR/DEP, Q parameters, FN, LBL / CALL, M91 / M92 beside axis words, M89, M114, M116, M94,
-// TOOL CALL by name, DL, INCH programs, FUNCTION TCPM with AXIS SPAT / F CONT / REFPNT other than
+// LP, APPR/DEP, Q parameters, FN, LBL / CALL, M91 / M92 without the machine file's reference data,
+// M89, M114, M116, M94, DL, INCH programs, FUNCTION TCPM with AXIS SPAT / F CONT / REFPNT other than
 // TIP-TIP / PATHCTRL VECTOR).
 // Start: rapids before X, Y and Z are all programmed are held and take those axes' first
 // programmed values; a cutting motion before that is refused (where the tool starts is not known).
