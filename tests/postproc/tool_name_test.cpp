@@ -19,6 +19,7 @@
 #include "sinumerik_mini.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
 #include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/read/tool_table.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
@@ -90,7 +91,7 @@ std::shared_ptr<const ToolTable> table_of(const std::string& toml) {
 std::string repost(const std::string& text, const std::string& name, const std::string& dialect,
                    std::shared_ptr<const ToolTable> table) {
   PostRequest r;
-  r.machine = load_machine(test::source(std::string("machines/") + kMachine));
+  r.machine = serial_post_machine(load_machine(test::source(std::string("machines/") + kMachine)));
   r.setup = names_setup();
   r.dialect = dialect_named(dialect);
   r.tool_table = std::move(table);
@@ -250,7 +251,7 @@ TEST_CASE("the real Sinumerik program with T=\"DRILL 8.5\": numbered from the ta
   for (std::string l; std::getline(lines, l);)
     if (++n >= 18 && n <= 992) body += l + "\n";
   PostRequest r;
-  r.machine = load_machine(test::source("machines/ac-trunnion.toml"));
+  r.machine = serial_post_machine(load_machine(test::source("machines/ac-trunnion.toml")));
   r.setup.workpiece_origin_mm = Vec3d(0, 0, -400);
   r.tool_table = table_of("[tools]\n\"DRILL 8.5\" = 5\n");
   r.threads = 1;

@@ -5,6 +5,7 @@
 // refused (exit 1, nothing written), and --nonlinear harmonic measured by re-executing the program.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -135,6 +136,9 @@ TEST_CASE("TRR-XY plan, simulate and identify through the common writers and mes
   REQUIRE(run("identify --machine " + machine_path() + " -o tc_id.json tc_data.csv", &out) == 0);
   CHECK(out.find("TRR-XY identification from 222 probed points: rank 24 of 30") != std::string::npos);
   CHECK(out.ends_with("model -> tc_id.json\n"));  // said once the file is written
+  // without --report, nothing is written beside the model (no one-page summary of a report not asked for)
+  for (const auto& e : std::filesystem::directory_iterator("."))
+    CHECK_FALSE(e.path().filename().string().ends_with("summary.html"));
   CHECK(trr::read_errors_json("tc_id.json").chain[2].ar == Approx(1e-4).margin(1e-7));
 
   // what the TRR-XY machine has not: exit 1 naming it, nothing written

@@ -173,7 +173,7 @@ void add_identify(CLI::App& app, Action& action) {
       const IdentifyOutput out = machine_kind(a->machine).identify(*a);
       write_file_atomically(a->output, out.model_json);
       if (!a->report.empty()) write_file_atomically(a->report, out.report_html);
-      if (!out.summary_html.empty()) write_file_atomically(comp::summary_path(a->report), out.summary_html);
+      if (!a->report.empty() && !out.summary_html.empty()) write_file_atomically(comp::summary_path(a->report), out.summary_html);
       fmt::print("{}", out.closing);
       return 0;
     };

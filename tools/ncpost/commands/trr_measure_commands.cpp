@@ -148,7 +148,7 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
     for (const auto& [name, w] : dir) s += fmt::format(" {}{:+.3f}", name, w);
     fmt::print("  {}\n", s);
   }
-  return {comp::format_model_json(file), {}, fmt::format("model -> {}\n", a.output)};
+  return {.model_json = comp::format_model_json(file), .closing = fmt::format("model -> {}\n", a.output)};
 }
 
 }  // namespace ncpost::cli
