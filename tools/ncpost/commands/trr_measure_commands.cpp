@@ -148,7 +148,8 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
     for (const auto& [name, w] : dir) s += fmt::format(" {}{:+.3f}", name, w);
     fmt::print("  {}\n", s);
   }
-  return {.model_json = comp::format_model_json(file), .closing = fmt::format("model -> {}\n", a.output)};
+  return {.model_json = comp::format_model_json(file), .report_html = {}, .summary_html = {},
+          .closing = fmt::format("model -> {}\n", a.output)};
 }
 
 }  // namespace ncpost::cli

@@ -24,12 +24,8 @@ class InputError : public std::runtime_error {
   /// The offending line of input, if known (for a caret display).
   const std::string& source_line() const { return source_line_; }
 
-  static std::string format(const SourcePosition& w, const std::string& what) {
-    std::string s = w.file;
-    if (w.line > 0) s += ":" + std::to_string(w.line);
-    if (w.column > 0) s += ":" + std::to_string(w.column);
-    return s + ": " + what;
-  }
+  /// "file:line:column: what" (line and column left out where unknown); input_error.cpp.
+  static std::string format(const SourcePosition& w, const std::string& what);
 
  private:
   SourcePosition where_;
