@@ -55,16 +55,15 @@ Iso230Figures iso230_2_figures(const MeasurementSet& set) {
     mean_and_s(v.second, t.mean_down_um, t.s_down_um);
     t.runs_up = static_cast<int>(v.first.size());
     t.runs_down = static_cast<int>(v.second.size());
-    const double b = t.mean_up_um - t.mean_down_um;
+    const double b = t.reversal_um();
     bsum += b;
     f.reversal_B_um = std::max(f.reversal_B_um, std::abs(b));
-    const double r = std::max({2.0 * t.s_up_um + 2.0 * t.s_down_um + std::abs(b), 4.0 * t.s_up_um, 4.0 * t.s_down_um});
-    f.repeatability_R_um = std::max(f.repeatability_R_um, r);
+    f.repeatability_R_um = std::max(f.repeatability_R_um, t.repeatability_um());
     hi = std::max({hi, t.mean_up_um + 2.0 * t.s_up_um, t.mean_down_um + 2.0 * t.s_down_um});
     lo = std::min({lo, t.mean_up_um - 2.0 * t.s_up_um, t.mean_down_um - 2.0 * t.s_down_um});
     ehi = std::max({ehi, t.mean_up_um, t.mean_down_um});
     elo = std::min({elo, t.mean_up_um, t.mean_down_um});
-    const double mean = 0.5 * (t.mean_up_um + t.mean_down_um);
+    const double mean = t.mean_bidirectional_um();
     mhi = std::max(mhi, mean);
     mlo = std::min(mlo, mean);
     f.targets.push_back(t);
@@ -79,6 +78,10 @@ Iso230Figures iso230_2_figures(const MeasurementSet& set) {
   f.mean_reversal_um = bsum / double(f.targets.size());
   f.ok = true;
   return f;
+}
+
+double Iso230Target::repeatability_um() const {
+  return std::max({2.0 * s_up_um + 2.0 * s_down_um + std::abs(reversal_um()), 4.0 * s_up_um, 4.0 * s_down_um});
 }
 
 }  // namespace ncpost::comp

@@ -3,9 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
-
 #include "ncpost/report/html_page.hpp"
 
 namespace ncpost::comp {
@@ -21,11 +18,11 @@ std::vector<Iso230TargetRow> iso230_2_target_rows(const Iso230Figures& g) {
     r.mean_down_um = t.mean_down_um;
     r.two_s_up_um = 2.0 * t.s_up_um;
     r.two_s_down_um = 2.0 * t.s_down_um;
-    r.reversal_um = t.mean_up_um - t.mean_down_um;
-    r.mean_bidirectional_um = 0.5 * (t.mean_up_um + t.mean_down_um);
+    r.reversal_um = t.reversal_um();
+    r.mean_bidirectional_um = t.mean_bidirectional_um();
     r.repeat_up_um = 4.0 * t.s_up_um;
     r.repeat_down_um = 4.0 * t.s_down_um;
-    r.repeat_um = std::max({r.two_s_up_um + r.two_s_down_um + std::abs(r.reversal_um), r.repeat_up_um, r.repeat_down_um});
+    r.repeat_um = t.repeatability_um();
     rows.push_back(r);
   }
   return rows;

@@ -55,7 +55,7 @@ std::string iso230_plot(const Iso230Figures& g) {
     up.lo.push_back(t.mean_up_um - 2 * t.s_up_um), up.hi.push_back(t.mean_up_um + 2 * t.s_up_um);
     down.x.push_back(t.target_mm), down.y.push_back(t.mean_down_um);
     down.lo.push_back(t.mean_down_um - 2 * t.s_down_um), down.hi.push_back(t.mean_down_um + 2 * t.s_down_um);
-    reversal.x.push_back(t.target_mm), reversal.y.push_back(t.mean_up_um - t.mean_down_um);
+    reversal.x.push_back(t.target_mm), reversal.y.push_back(t.reversal_um());
   }
   report::XyFrame fr;
   fr.title = fmt::format("{}: axis {}, A {:.2f} R {:.2f} B {:.2f} E {:.2f} M {:.2f} µm", report::base_name(g.file), g.axis,

@@ -24,6 +24,11 @@ struct Iso230Target {
   double mean_up_um = 0.0, mean_down_um = 0.0;
   double s_up_um = 0.0, s_down_um = 0.0;
   int runs_up = 0, runs_down = 0;
+
+  double reversal_um() const { return mean_up_um - mean_down_um; }                   ///< B_i
+  double mean_bidirectional_um() const { return 0.5 * (mean_up_um + mean_down_um); }  ///< x̄_i
+  /// R_i = max(2s↑_i + 2s↓_i + |B_i|, R↑_i, R↓_i) with R↑_i = 4s↑_i, R↓_i = 4s↓_i.
+  double repeatability_um() const;
 };
 
 struct Iso230Figures {
