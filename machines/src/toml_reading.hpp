@@ -13,12 +13,12 @@
 
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/toml_input.hpp"
 
 namespace ncpost::toml_reading {
 
-inline SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
+using toml_input::at;
+using toml_input::parse_toml;
 
 /// InputError at the first key of `t` not in `known`, listing the expected keys.
 inline void reject_unknown_keys(const std::string& file, const toml::table& t, const std::set<std::string>& known,
@@ -40,15 +40,6 @@ inline std::string read_text(const std::string& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-/// The TOML document; a syntax error becomes an InputError at its position.
-inline toml::table parse_toml(const std::string& text, const std::string& file) {
-  try {
-    return toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file, e.source()), std::string(e.description()));
-  }
 }
 
 /// `limits = [min, max]` times `scale`; `unit` is appended to the messages (e.g. " (mm)").

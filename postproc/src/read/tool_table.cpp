@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/toml_input.hpp"
 
 namespace ncpost {
 namespace {
@@ -17,9 +18,7 @@ namespace {
 constexpr long long kMaxToolNumber = 999999999;  ///< as the readers' T words
 constexpr double kMaxToolLengthMm = 2000.0;      ///< as --tool-length: beyond, a typing slip
 
-SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
+using toml_input::at;
 
 int number_of(const toml::node& n, const std::string& file, const std::string& name) {
   const std::optional<int64_t> v = n.value_exact<int64_t>();
@@ -60,12 +59,7 @@ ToolTableEntry entry_of(const toml::node& n, const std::string& file, const std:
 }  // namespace
 
 ToolTable parse_tool_table(const std::string& text, const std::string& file) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file, e.source()), std::string(e.description()));
-  }
+  const toml::table root = toml_input::parse_toml(text, file);
   for (const auto& [key, node] : root)
     if (key.str() != "tools")
       throw InputError(at(file, key.source()), fmt::format("unknown key '{}' (expected [tools])", key.str()));

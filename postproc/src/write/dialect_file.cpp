@@ -9,14 +9,13 @@
 #include <set>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/toml_input.hpp"
 #include "ncpost/postproc/write/dialect.hpp"
 
 namespace ncpost {
 namespace {
 
-SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
+using toml_input::at;
 
 /// One [section] of the file: typed reads that name the key, its section and what was expected.
 class Section {
@@ -333,12 +332,7 @@ void read_stop(const Section& program, const char* key, std::vector<std::string>
 }
 
 Dialect parse_dialect(const std::string& text, const std::string& file) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file, e.source()), std::string(e.description()));
-  }
+  const toml::table root = toml_input::parse_toml(text, file);
   const std::vector<std::string> sections{"dialect", "program", "blocks",  "motion", "arcs",         "comments",
                                           "tool",    "spindle", "coolant", "cycles", "dwell", "compensation", "tilted_plane", "input"};
   for (const auto& [key, node] : root)

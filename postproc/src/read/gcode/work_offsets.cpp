@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/toml_input.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -33,9 +34,7 @@ std::string upper(std::string_view s) {
   return out;
 }
 
-SourcePosition at(const std::string& file, const toml::source_region& r) {
-  return {file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-}
+using toml_input::at;
 
 /// One offset's table: X Y Z (mm or inch) and A B C (deg).
 OffsetValues read_values(const toml::table& t, double length_scale, const std::string& file, const std::string& name) {
@@ -56,12 +55,7 @@ OffsetValues read_values(const toml::table& t, double length_scale, const std::s
 }
 
 WorkOffsetTable parse_toml(const std::string& text, const std::string& file) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(at(file, e.source()), std::string(e.description()));
-  }
+  const toml::table root = toml_input::parse_toml(text, file);
   double length_scale = 1.0;
   if (const toml::node* u = root.get("units")) {
     const std::optional<std::string> units = u->value<std::string>();
