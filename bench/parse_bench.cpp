@@ -48,7 +48,8 @@ void generate(const std::string& path, long blocks) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw std::runtime_error("cannot write " + path);
   fmt::memory_buffer out;
-  fmt::format_to(std::back_inserter(out), "%\nO1000 (NCPOST PARSE BENCH, {} BLOCKS)\nG90 G21 G94 G17\nT1 M6\nS12000 M3\n", blocks);
+  fmt::format_to(std::back_inserter(out),
+                 "%\nO1000 (NCPOST PARSE BENCH, {} BLOCKS)\nG90 G21 G94 G17\nT1 M6\nS12000 M3\n", blocks);
   fmt::format_to(std::back_inserter(out), "G0 X0 Y0 Z50 A0 C0\n");
   for (long i = 0; i < blocks; ++i) {
     const double t = static_cast<double>(i) * 1e-3;
@@ -83,9 +84,7 @@ void report(const char* stage, const Figures& r, double megabytes) {
              static_cast<double>(r.blocks) / r.seconds);
 }
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 Figures lex(const std::string& path) {
   const auto start = Clock::now();
@@ -197,11 +196,16 @@ int main(int argc, char** argv) {
   std::string stage = "all";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--blocks" && i + 1 < argc) blocks = std::stol(argv[++i]);
-    else if (a == "--file" && i + 1 < argc) path = argv[++i];
-    else if (a == "--keep") keep = true;
-    else if (a == "--generate-only") generate_only = keep = true;
-    else if (a == "--stage" && i + 1 < argc) stage = argv[++i];
+    if (a == "--blocks" && i + 1 < argc)
+      blocks = std::stol(argv[++i]);
+    else if (a == "--file" && i + 1 < argc)
+      path = argv[++i];
+    else if (a == "--keep")
+      keep = true;
+    else if (a == "--generate-only")
+      generate_only = keep = true;
+    else if (a == "--stage" && i + 1 < argc)
+      stage = argv[++i];
     else {
       std::cerr << "usage: parse_bench [--blocks N] [--file PATH] [--keep] [--generate-only] "
                    "[--stage lex|to-cl|re-post|re-post-ik|post|all]\n";

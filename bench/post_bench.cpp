@@ -37,11 +37,12 @@ void write_path(const std::string& path, long n) {
   const double radius = 60.0, turns = 40.0;
   for (long i = 0; i < n; ++i) {
     const double s = static_cast<double>(i) / static_cast<double>(n - 1);
-    const double polar = 0.08 + 0.95 * s;          // from near the pole down to ~60 deg
+    const double polar = 0.08 + 0.95 * s;  // from near the pole down to ~60 deg
     const double azimuth = 2.0 * kPi * turns * s;
     const Vec3d normal(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
     const Vec3d tip = radius * normal - Vec3d(0, 0, 20);
-    std::fprintf(f, "GOTO/%.4f,%.4f,%.4f,%.6f,%.6f,%.6f\n", tip.x(), tip.y(), tip.z(), normal.x(), normal.y(), normal.z());
+    std::fprintf(f, "GOTO/%.4f,%.4f,%.4f,%.6f,%.6f,%.6f\n", tip.x(), tip.y(), tip.z(), normal.x(), normal.y(),
+                 normal.z());
     if (i == 0) std::fputs("FEDRAT/MMPM,2000.0\n", f);
   }
   std::fputs("END\n", f);
@@ -79,7 +80,8 @@ struct Result {
 };
 
 Result run(const Machine& m, const Setup& setup, const std::string& cl, const std::string& out_path,
-           std::optional<nonlinear::Method> method, bool verify, const NominalSolver& nominal, const ActualSolver* actual) {
+           std::optional<nonlinear::Method> method, bool verify, const NominalSolver& nominal,
+           const ActualSolver* actual) {
   const MotionSolver& solver = actual ? static_cast<const MotionSolver&>(*actual) : nominal;
   std::ifstream in(cl);
   cl::AptReader reader(in, cl);
@@ -90,7 +92,8 @@ Result run(const Machine& m, const Setup& setup, const std::string& cl, const st
   const Dialect dialect = dialect_named("fanuc");
   if (method) {
     comp.method = *method;
-    options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
+    options.subdivide =
+        actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   }
   const auto t0 = std::chrono::steady_clock::now();
   AtomicFile out(out_path);
@@ -103,7 +106,8 @@ Result run(const Machine& m, const Setup& setup, const std::string& cl, const st
 
 /// The compensation alone (no NC writing), in batches of 4096 blocks on `threads` threads: what a
 /// pipeline that solves motions in order and compensates batches in parallel would spend on it.
-double batch_seconds(const Machine& m, const Setup& setup, const std::string& cl, int threads, std::size_t& out_blocks) {
+double batch_seconds(const Machine& m, const Setup& setup, const std::string& cl, int threads,
+                     std::size_t& out_blocks) {
   std::ifstream in(cl);
   cl::AptReader reader(in, cl);
   const nonlinear::NominalSolver solver{m, setup};
@@ -153,8 +157,10 @@ int main(int argc, char** argv) {
   Setup setup;
   setup.workpiece_origin_mm = Vec3d(0, 0, 80);
   const std::string cl = dir + "/bench_path.cls";
-  if (kind == "dome") write_dome_copies(cl, scenario + "path.cls", n);
-  else write_path(cl, n);
+  if (kind == "dome")
+    write_dome_copies(cl, scenario + "path.cls", n);
+  else
+    write_path(cl, n);
   if (write_only) {
     fmt::print("post_bench: wrote {} CL points ({}) to {}\n", n, kind, cl);
     return 0;
@@ -167,8 +173,10 @@ int main(int argc, char** argv) {
                r.blocks, r.max_contour_mm, peak_rss_kb() / 1024);
   };
   report("one block per motion", run(m, setup, cl, dir + "/out_plain.nc", std::nullopt, verify, nominal, nullptr));
-  report("adaptive", run(m, setup, cl, dir + "/out_adaptive.nc", nonlinear::Method::adaptive, verify, nominal, nullptr));
-  report("harmonic", run(m, setup, cl, dir + "/out_harmonic.nc", nonlinear::Method::harmonic, verify, nominal, nullptr));
+  report("adaptive",
+         run(m, setup, cl, dir + "/out_adaptive.nc", nonlinear::Method::adaptive, verify, nominal, nullptr));
+  report("harmonic",
+         run(m, setup, cl, dir + "/out_harmonic.nc", nonlinear::Method::harmonic, verify, nominal, nullptr));
   for (int threads : {1, 2}) {
     std::size_t blocks = 0;
     const double seconds = batch_seconds(m, setup, cl, threads, blocks);
@@ -179,7 +187,7 @@ int main(int argc, char** argv) {
   const comp::ModelFile file = comp::read_model_json(scenario + "truth.json", &m);
   const comp::MachineModel model(m, file.parameters);
   const ActualSolver actual(model, setup);
-  report("adaptive, --model truth", run(m, setup, cl, dir + "/out_model.nc", nonlinear::Method::adaptive, verify, nominal,
-                                        &actual));
+  report("adaptive, --model truth",
+         run(m, setup, cl, dir + "/out_model.nc", nonlinear::Method::adaptive, verify, nominal, &actual));
   return 0;
 }

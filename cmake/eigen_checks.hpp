@@ -10,7 +10,8 @@
 
 /// A failed Eigen check: says which and where, then stops (abort: no output file is completed).
 [[noreturn]] inline void ncpost_eigen_check_failed(const char* check, const char* file, int line) {
-  std::fprintf(stderr, "ncpost: internal error: Eigen check '%s' failed at %s:%d; no program was written\n", check, file, line);
+  std::fprintf(stderr, "ncpost: internal error: Eigen check '%s' failed at %s:%d; no program was written\n", check,
+               file, line);
   std::abort();
 }
 

@@ -43,13 +43,14 @@ int main(int argc, char** argv) {
     std::ostringstream program;  // the whole program in memory here; any std::ostream will do
     const ncpost::PostResult result = ncpost::post(in, program, request);
     const ncpost::PostAccount& a = result.account;
-    std::printf("before (one block per CL motion): %zu blocks, largest contour error %.4f mm (CL line %d), "
-                "mean %.4f mm\n",
-                a.before_blocks, a.before_max_mm, a.before_worst_line, a.before_mean_mm);
-    std::printf("after  (--tolerance %g mm):        %zu CL motions -> %zu blocks, largest contour error %.4f mm "
-                "(CL line %d), block ends within %.4f mm\n",
-                tolerance_mm, a.motions_in, a.blocks_out, a.after.max_contour_mm, a.after.worst_line,
-                a.after.max_endpoint_mm);
+    std::printf(
+        "before (one block per CL motion): %zu blocks, largest contour error %.4f mm (CL line %d), "
+        "mean %.4f mm\n",
+        a.before_blocks, a.before_max_mm, a.before_worst_line, a.before_mean_mm);
+    std::printf(
+        "after  (--tolerance %g mm):        %zu CL motions -> %zu blocks, largest contour error %.4f mm "
+        "(CL line %d), block ends within %.4f mm\n",
+        tolerance_mm, a.motions_in, a.blocks_out, a.after.max_contour_mm, a.after.worst_line, a.after.max_endpoint_mm);
     for (const std::string& n : result.summary.notices) std::printf("notice: %s\n", n.c_str());
     ncpost::write_file_atomically(output, program.str());
     std::printf("written to %s\n", output.c_str());

@@ -87,11 +87,14 @@ SmallList<RotarySolution, 2> single_axis_solutions(const Axis& axis, const Vec3d
   SmallList<RotarySolution, 2> out;
   if (std::abs(u.dot(d) - ez.dot(d)) > std::sqrt(tolerance)) return out;
   const double free_tol = 1e-9;
-  const std::optional<double> q = axis.side == Side::tool ? angle_about(d, ez, u, free_tol) : angle_about(d, u, ez, free_tol);
+  const std::optional<double> q =
+      axis.side == Side::tool ? angle_about(d, ez, u, free_tol) : angle_about(d, u, ez, free_tol);
   RotarySolution s;
   s.rotary_rad = RotaryAngles::Zero(1);
-  if (q) s.rotary_rad[0] = wrap_pi(*q);
-  else s.free_axis = 0;
+  if (q)
+    s.rotary_rad[0] = wrap_pi(*q);
+  else
+    s.free_axis = 0;
   out.push_back(s);
   return out;
 }
@@ -114,11 +117,17 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   Vec3d from2, to1, plane2_vec, plane1_vec;
   switch (l.kind) {
     case RotaryLayout::table_table:  // R1 R2 u = e_z ; v = R2 u = R1^T e_z
-      plane2_vec = u; plane1_vec = ez; break;
-    case RotaryLayout::head_head:    // R1 R2 e_z = u ; v = R2 e_z = R1^T u
-      plane2_vec = ez; plane1_vec = u; break;
-    case RotaryLayout::head_table:   // Rt e_z = Rw u ; v = Rt e_z = Rw u (outer = head, inner = table)
-      plane2_vec = u; plane1_vec = ez; break;
+      plane2_vec = u;
+      plane1_vec = ez;
+      break;
+    case RotaryLayout::head_head:  // R1 R2 e_z = u ; v = R2 e_z = R1^T u
+      plane2_vec = ez;
+      plane1_vec = u;
+      break;
+    case RotaryLayout::head_table:  // Rt e_z = Rw u ; v = Rt e_z = Rw u (outer = head, inner = table)
+      plane2_vec = u;
+      plane1_vec = ez;
+      break;
   }
   const auto vs = sphere_plane_plane(d2, plane2_vec.dot(d2), d1, plane1_vec.dot(d1), tolerance);
   const double free_tol = 1e-9;
@@ -184,7 +193,8 @@ std::optional<double> unlimited_rotary_travel(const Machine& m, const Vec3d& axi
     if (s.free_axis >= 0) return std::nullopt;
     double travel = 0.0;
     for (int k = 0; k < m.rotary_count(); ++k) {
-      const double nearest = s.rotary_rad[k] + 2.0 * kPi * std::round((previous_rad[k] - s.rotary_rad[k]) / (2.0 * kPi));
+      const double nearest =
+          s.rotary_rad[k] + 2.0 * kPi * std::round((previous_rad[k] - s.rotary_rad[k]) / (2.0 * kPi));
       travel += std::abs(nearest - previous_rad[k]);
     }
     if (!best || travel < *best) best = travel;

@@ -12,7 +12,8 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
-template <class... A> std::string format(const char* f, A... args) {
+template <class... A>
+std::string format(const char* f, A... args) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, args...);
   return buf;
@@ -44,8 +45,10 @@ std::string link_reach_failure(const Geometry& g, const std::array<ChainFrame, 3
     const Vec3d link = c.pin_mm(slider_mm[i]) - machine_T_plate.apply(c.ball_in_plate_mm);  // from S up to B
     const double angle = std::acos(std::clamp(link.normalized().dot(c.screw_down), -1.0, 1.0));
     if (link.dot(c.screw_down) <= 0.0 || angle > g.max_link_angle_rad)
-      return format("link of chain %c at %.2f deg from its screw line (reach: hanging below its pin joint within "
-                    "%.1f deg)", "abc"[i], rad_to_deg(angle), rad_to_deg(g.max_link_angle_rad));
+      return format(
+          "link of chain %c at %.2f deg from its screw line (reach: hanging below its pin joint within "
+          "%.1f deg)",
+          "abc"[i], rad_to_deg(angle), rad_to_deg(g.max_link_angle_rad));
     if (link.dot(c.radial) <= 0.0)
       return format("link of chain %c leans outward (its ball joint is outside the screw line)", "abc"[i]);
   }
@@ -75,7 +78,7 @@ PlateOutcome solve_plate(const Geometry& g, const std::array<ChainFrame, 3>& cha
   }
   if (!converged) {
     out.failure = format("forward kinematics: Newton-Raphson did not converge for sliders %.4f %.4f %.4f mm",
-                              slider_mm[0], slider_mm[1], slider_mm[2]);
+                         slider_mm[0], slider_mm[1], slider_mm[2]);
     return out;
   }
   // re-orthonormalise the rotation (accumulated products of exact rotations drift slowly)
@@ -94,7 +97,8 @@ Kinematics::Kinematics(Machine machine, Errors errors)
       errors_(errors),
       actual_errors_(machine_.calibration + errors_),
       chains_(chain_frames(machine_.geometry, actual_errors_)) {
-  const PlateOutcome home = solve_plate(machine_.geometry, chains_, Vec3d::Zero(), nominal_home_plate(machine_.geometry));
+  const PlateOutcome home =
+      solve_plate(machine_.geometry, chains_, Vec3d::Zero(), nominal_home_plate(machine_.geometry));
   if (!home.ok()) throw std::runtime_error("TRR-XY: the home pose cannot be solved: " + home.failure);
   home_plate_ = *home.machine_T_plate;
   home_inverse_ = home_plate_.inverse();

@@ -11,10 +11,9 @@ constexpr const char* kFields[kPerChain] = {"dr", "dt", "ar", "at", "ds", "gp", 
 constexpr const char kChains[3] = {'a', 'b', 'c'};
 
 double ChainErrors::*field_ptr(int f) {
-  static double ChainErrors::*const p[kPerChain] = {&ChainErrors::dr, &ChainErrors::dt, &ChainErrors::ar,
-                                                    &ChainErrors::at, &ChainErrors::ds, &ChainErrors::gp,
-                                                    &ChainErrors::dl, &ChainErrors::drs, &ChainErrors::dts,
-                                                    &ChainErrors::dzs};
+  static double ChainErrors::*const p[kPerChain] = {
+      &ChainErrors::dr, &ChainErrors::dt, &ChainErrors::ar,  &ChainErrors::at,  &ChainErrors::ds,
+      &ChainErrors::gp, &ChainErrors::dl, &ChainErrors::drs, &ChainErrors::dts, &ChainErrors::dzs};
   return p[f];
 }
 
@@ -73,7 +72,8 @@ std::array<ChainFrame, 3> chain_frames(const Geometry& g, const Errors& e) {
     f.radial = Vec3d(std::cos(theta), std::sin(theta), 0.0);
     f.tangential = Vec3d(-std::sin(theta), std::cos(theta), 0.0);
     f.pin_at_zero_mm = (g.base_radius_mm + ce.dr) * f.radial + ce.dt * f.tangential + Vec3d(0, 0, H);
-    f.screw_down = rotation_about<double>(f.radial, -ce.at) * rotation_about<double>(f.tangential, ce.ar) * Vec3d::UnitZ();
+    f.screw_down =
+        rotation_about<double>(f.radial, -ce.at) * rotation_about<double>(f.tangential, ce.ar) * Vec3d::UnitZ();
     f.slider_zero_mm = ce.ds;
     f.pin_axis = rotation_about<double>(f.radial, ce.gp) * f.tangential;
     f.link_length_mm = g.link_length_mm + ce.dl;

@@ -7,7 +7,8 @@
 namespace ncpost::trr {
 namespace {
 
-template <class... A> std::string format(const char* f, A... args) {
+template <class... A>
+std::string format(const char* f, A... args) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, args...);
   return buf;
@@ -65,8 +66,9 @@ std::optional<Vec3d> nominal_sliders_for(const Geometry& g, const Rigidd& machin
     const Vec3d h = S - g.base_radius_mm * c.radial;
     const double h2 = h.x() * h.x() + h.y() * h.y();
     if (h2 >= l * l) {
-      if (why) *why = format("link of chain %c cannot reach its screw line (ball joint %.1f mm from it, link %.1f mm)",
-                             "abc"[i], std::sqrt(h2), l);
+      if (why)
+        *why = format("link of chain %c cannot reach its screw line (ball joint %.1f mm from it, link %.1f mm)",
+                      "abc"[i], std::sqrt(h2), l);
       return std::nullopt;
     }
     s[i] = H - S.z() - std::sqrt(l * l - h2);  // the root with the pin joint above the ball joint

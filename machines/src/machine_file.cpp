@@ -43,13 +43,17 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   Axis axis;
   axis.letter = letter;
   auto type = t["type"].value<std::string>();
-  if (!type) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'type' (\"linear\" or \"rotary\")", section));
+  if (!type)
+    throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'type' (\"linear\" or \"rotary\")", section));
   if (*type == "linear") {
     axis.kind = AxisKind::linear;
     if (letter != 'X' && letter != 'Y' && letter != 'Z')
-      fail(file, *t.get("type"), fmt::format("linear axis '{}': a serial machine's linear axes are X, Y and Z", letter));
+      fail(file, *t.get("type"),
+           fmt::format("linear axis '{}': a serial machine's linear axes are X, Y and Z", letter));
     if (t.contains("direction") || t.contains("pivot"))
-      throw InputError(at(file, t.source()), fmt::format("[{}]: a linear axis takes no direction or pivot (X, Y, Z are the axes of M)", section));
+      throw InputError(
+          at(file, t.source()),
+          fmt::format("[{}]: a linear axis takes no direction or pivot (X, Y, Z are the axes of M)", section));
     axis.direction = Vec3d::Unit(letter - 'X');
     if (const toml::node* n = t.get("limits")) axis.limits = toml_reading::read_limits(file, *n, 1.0, "");
   } else if (*type == "rotary") {
@@ -61,7 +65,9 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
       fail(file, *d, fmt::format("direction: expected a unit vector, its length is {:.9g}", axis.direction.norm()));
     axis.direction.normalize();
     const toml::node* p = t.get("pivot");
-    if (!p) throw InputError(at(file, t.source()), fmt::format("[{}]: missing key 'pivot' (mm, a point of the axis line)", section));
+    if (!p)
+      throw InputError(at(file, t.source()),
+                       fmt::format("[{}]: missing key 'pivot' (mm, a point of the axis line)", section));
     axis.pivot_mm = read_vector(file, *p, "pivot");
     if (const toml::node* n = t.get("limits")) axis.limits = toml_reading::read_limits(file, *n, kPi / 180.0, "");
   } else {
@@ -73,10 +79,12 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
     const toml::node* n = t.get(key);
     if (!n) continue;
     const auto v = n->value<double>();
-    if (!v || !std::isfinite(*v)) fail(file, *n, fmt::format("{}: expected a finite number ({})", key, axis.is_rotary() ? "deg" : "mm"));
+    if (!v || !std::isfinite(*v))
+      fail(file, *n, fmt::format("{}: expected a finite number ({})", key, axis.is_rotary() ? "deg" : "mm"));
     if (axis.limits && !axis.limits->contains(*v * scale, 1e-9))
-      fail(file, *n, fmt::format("{}: {} lies outside the axis's limits [{}, {}]", key, *v, axis.limits->min / scale,
-                                 axis.limits->max / scale));
+      fail(file, *n,
+           fmt::format("{}: {} lies outside the axis's limits [{}, {}]", key, *v, axis.limits->min / scale,
+                       axis.limits->max / scale));
     (std::string_view(key) == "reference" ? axis.reference : axis.reference2) = *v * scale;
   }
   return axis;
@@ -101,7 +109,8 @@ void assign_chain(Machine& m, const std::string& chain, const SourcePosition& wh
     const bool primed = tok.size() == 2 && tok[1] == '\'';
     if (tok.empty() || tok.size() > 2 || (tok.size() == 2 && !primed)) bad(fmt::format("bad axis token '{}'", tok));
     if (primed != primed_expected)
-      bad(fmt::format("axis '{}' {} the bed must {}be primed", tok, primed_expected ? "before" : "after", primed_expected ? "" : "not "));
+      bad(fmt::format("axis '{}' {} the bed must {}be primed", tok, primed_expected ? "before" : "after",
+                      primed_expected ? "" : "not "));
     const char letter = tok[0];
     if (!seen.insert(letter).second) bad(fmt::format("axis '{}' appears twice", letter));
     const int idx = m.index_of(letter);
@@ -118,7 +127,8 @@ void assign_chain(Machine& m, const std::string& chain, const SourcePosition& wh
     bool rotary_seen = false;
     for (int i : *side) {
       const Axis& a = m.axes[static_cast<std::size_t>(i)];
-      if (a.is_rotary()) rotary_seen = true;
+      if (a.is_rotary())
+        rotary_seen = true;
       else if (rotary_seen)
         bad(fmt::format("linear axis '{}' is carried by a rotary axis; linear axes must be nearer the bed", a.letter));
     }
@@ -141,11 +151,13 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
   if (!name) throw InputError(at(file_name, mt->source()), "[machine]: missing key 'name' (a string)");
   m.name = *name;
   if (auto kind = (*mt)["kind"].value<std::string>(); kind && *kind != "serial") {
-    throw InputError(at(file_name, mt->get("kind")->source()),
-                     fmt::format("[machine] kind = \"{}\": this loader reads serial machines (kind \"serial\" or no kind)", *kind));
+    throw InputError(
+        at(file_name, mt->get("kind")->source()),
+        fmt::format("[machine] kind = \"{}\": this loader reads serial machines (kind \"serial\" or no kind)", *kind));
   }
   const toml::node* chain = mt->get("chain");
-  if (!chain || !chain->is_string()) throw InputError(at(file_name, mt->source()), "[machine]: missing key 'chain' (a string)");
+  if (!chain || !chain->is_string())
+    throw InputError(at(file_name, mt->source()), "[machine]: missing key 'chain' (a string)");
 
   const toml::table* axes = root["axes"].as_table();
   if (!axes || axes->empty()) throw InputError(at(file_name, root.source()), "missing [axes.*] tables");
@@ -159,18 +171,20 @@ Machine parse_machine(const std::string& text, const std::string& file_name) {
     by_letter[k[0]] = read_axis(file_name, k[0], *t);
   }
   for (char c : {'X', 'Y', 'Z'}) {
-    if (!by_letter.count(c)) throw InputError(at(file_name, axes->source()), fmt::format("missing linear axis [axes.{}]", c));
+    if (!by_letter.count(c))
+      throw InputError(at(file_name, axes->source()), fmt::format("missing linear axis [axes.{}]", c));
     m.axes.push_back(by_letter[c]);
   }
   for (auto& [letter, axis] : by_letter)
     if (axis.is_rotary()) m.axes.push_back(axis);
   assign_chain(m, *chain->value<std::string>(), at(file_name, chain->source()));
   if (m.rotary_count() > kMaxSerialRotaryAxes)
-    throw InputError(at(file_name, axes->source()),
-                     fmt::format("{} rotary axes: a serial machine has none, one (four-axis) or two (five-axis)",
-                                 m.rotary_count()));
+    throw InputError(
+        at(file_name, axes->source()),
+        fmt::format("{} rotary axes: a serial machine has none, one (four-axis) or two (five-axis)", m.rotary_count()));
   if (m.rotary_count() == 2 && m.rotary(0).direction.cross(m.rotary(1).direction).norm() < 1e-6)
-    throw InputError(at(file_name, axes->source()), "the two rotary axes are parallel: the tool axis cannot be oriented");
+    throw InputError(at(file_name, axes->source()),
+                     "the two rotary axes are parallel: the tool axis cannot be oriented");
   return m;
 }
 

@@ -26,7 +26,8 @@ MachineRecord parse_machine_record(const std::string& text, const std::string& f
     r.owner = string_key(file_name, *mt, "owner");
   }
   if (const toml::node* t = root.get("tolerances"); t && !t->is_table())
-    throw InputError(toml_reading::at(file_name, t->source()), "tolerances: expected a table [tolerances] (G = 10, A = 8, ...)");
+    throw InputError(toml_reading::at(file_name, t->source()),
+                     "tolerances: expected a table [tolerances] (G = 10, A = 8, ...)");
   if (const toml::table* tt = root["tolerances"].as_table()) {
     toml_reading::reject_unknown_keys(file_name, *tt, {"A", "B", "E", "M", "R", "G"}, "tolerances");
     for (const auto& [key, node] : *tt) {

@@ -38,9 +38,11 @@ trr::Errors read_calibration(const std::string& file, const toml::table& t, cons
     const std::string name(key.str());
     const int k = trr::Errors::index_of(name);
     if (k < 0)
-      throw InputError(at(file, key.source()),
-                       fmt::format("[trr_xy.calibration] {}: not a TRR-XY parameter (expected <param>_<chain> with param "
-                                   "dr, dt, ar, at, ds, gp, dl, drs, dts or dzs and chain a, b or c)", name));
+      throw InputError(
+          at(file, key.source()),
+          fmt::format("[trr_xy.calibration] {}: not a TRR-XY parameter (expected <param>_<chain> with param "
+                      "dr, dt, ar, at, ds, gp, dl, drs, dts or dzs and chain a, b or c)",
+                      name));
     auto v = node.value<double>();
     if (!v || !std::isfinite(*v))
       throw InputError(at(file, node.source()), fmt::format("[trr_xy.calibration] {}: expected a finite number ({})",
@@ -54,7 +56,8 @@ trr::Errors read_calibration(const std::string& file, const toml::table& t, cons
     (void)trr::Kinematics(probe);
   } catch (const std::runtime_error& ex) {
     throw InputError(at(file, t.source()), fmt::format("[trr_xy.calibration]: {}; the calibration is far too large "
-                                                       "for this machine's dimensions", ex.what()));
+                                                       "for this machine's dimensions",
+                                                       ex.what()));
   }
   return e;
 }
@@ -85,11 +88,13 @@ trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& fi
     throw InputError(at(file, kind->source()), "[machine] kind: expected \"trr-xy\"");
 
   const toml::table* g = root["trr_xy"].as_table();
-  if (!g) throw InputError(at(file, root.source()), "missing table [trr_xy] (base_radius, platform_radius, link_length, "
-                                                    "ball_joint_height, tool_offset)");
+  if (!g)
+    throw InputError(at(file, root.source()),
+                     "missing table [trr_xy] (base_radius, platform_radius, link_length, "
+                     "ball_joint_height, tool_offset)");
   reject_unknown_keys(file, *g,
-                      {"base_radius", "platform_radius", "link_length", "ball_joint_height", "tool_offset", "max_link_angle",
-                       "calibration"},
+                      {"base_radius", "platform_radius", "link_length", "ball_joint_height", "tool_offset",
+                       "max_link_angle", "calibration"},
                       "trr_xy");
   trr::Geometry& geo = m.geometry;
   geo.base_radius_mm = positive_length(file, *g, "base_radius");
@@ -132,8 +137,10 @@ trr::Machine parse_trr_xy_machine(const std::string& text, const std::string& fi
     std::optional<AxisLimits> lim;
     if (const toml::node* n = t->get("limits")) lim = toml_reading::read_limits(file, *n, 1.0, " (mm)");
     const auto idx = letters.find(k[0]);
-    if (idx < 2) m.table_limits[idx] = lim;
-    else m.slider_limits[idx - 2] = lim;
+    if (idx < 2)
+      m.table_limits[idx] = lim;
+    else
+      m.slider_limits[idx - 2] = lim;
   }
   for (char c : letters)
     if (!axes->contains(std::string(1, c)))

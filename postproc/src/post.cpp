@@ -37,7 +37,12 @@ class Poster {
  public:
   Poster(const std::string& input, const KinematicModel& solver, SolverData& data, NcWriter& writer,
          const PostOptions& options)
-      : input_(input), solver_(solver), data_(data), writer_(writer), options_(options), machine_(solver.machine()),
+      : input_(input),
+        solver_(solver),
+        data_(data),
+        writer_(writer),
+        options_(options),
+        machine_(solver.machine()),
         words_(solver.words()) {
     previous_.q = words_.home();  // the program starts from home, sized for the model's axes
     last_executed_ = words_.home();
@@ -114,8 +119,8 @@ class Poster {
   /// True when `item` (read from the input, not planned yet) opens a run of feed motions to plan:
   /// a two-rotary serial machine whose solver depends on nothing the post's progress changes.
   bool starts_run(const detail::AheadItem& item) const {
-    if (options_.branch_choice != PostOptions::BranchChoice::lookahead || !words_.serial ||
-        words_.rotary_count != 2 || !solver_.concurrent() || item.error || !item.record)
+    if (options_.branch_choice != PostOptions::BranchChoice::lookahead || !words_.serial || words_.rotary_count != 2 ||
+        !solver_.concurrent() || item.error || !item.record)
       return false;
     const auto* m = std::get_if<cl::Motion>(&*item.record);
     return m && (plannable(*m) || free_start(*m)) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;
@@ -144,7 +149,8 @@ class Poster {
   /// Reads the run that `first` (a feed motion, or a rapid that leads to feed motions) opens: up to
   /// kPlanWindow motions, and the record that ends it (a rapid that ends it opens the next run),
   /// chooses the solution of each motion, and queues the records with the choice.
-  template <class Fetch> void plan_run(detail::AheadItem first, Fetch& fetch) {
+  template <class Fetch>
+  void plan_run(detail::AheadItem first, Fetch& fetch) {
     std::deque<detail::AheadItem>& items = pending_;  // (empty: a run opens once all before it is posted)
     std::vector<std::size_t> motions{0};
     items.push_back(std::move(first));
@@ -153,8 +159,10 @@ class Poster {
       bool stop = item.error || !item.record;
       bool motion = false;
       if (!stop) {
-        if (const auto* m = std::get_if<cl::Motion>(&*item.record)) (plannable(*m) ? motion : stop) = true;
-        else stop = !passes(*item.record);
+        if (const auto* m = std::get_if<cl::Motion>(&*item.record))
+          (plannable(*m) ? motion : stop) = true;
+        else
+          stop = !passes(*item.record);
       }
       if (stop && !item.error && item.record && starts_run(item)) {
         carry_ = std::move(item);  // a rapid: it opens the next run
@@ -204,8 +212,8 @@ class Poster {
       if (greedy_changes > 0)
         summary_.notices.push_back(fmt::format(
             "{}:{}: a run of more than {} feed motions is not planned ahead (--branch-plan lookahead): its solutions "
-            "are chosen motion by motion", input_, std::get<cl::Motion>(*items[motions.front()].record).where.line,
-            kPlanWindow));
+            "are chosen motion by motion",
+            input_, std::get<cl::Motion>(*items[motions.front()].record).where.line, kPlanWindow));
       return;
     }
     if (greedy_changes == 0) return;  // nothing to improve: the greedy program
@@ -221,7 +229,8 @@ class Poster {
       }
       for (const AxisPosition& b : branches)
         for (const RotaryAngles& turned : turns(b.rotary_rad))
-          if (std::none_of(list.begin(), list.end(), [&](const RotaryAngles& c) { return max_abs_step(c, turned) < 1e-9; }))
+          if (std::none_of(list.begin(), list.end(),
+                           [&](const RotaryAngles& c) { return max_abs_step(c, turned) < 1e-9; }))
             list.push_back(turned);
     }
     // the free travel from one candidate to the next point, computed once for all its candidates
@@ -240,14 +249,14 @@ class Poster {
     const BranchPlan plan = plan_branches(previous_.q.rotary_rad, candidates, forced, kPlanWindow);
     // (no retract allowed: the post fails at the first change either way, the greedy one names it)
     if (plan.changes >= greedy_changes || (plan.changes > 0 && options_.retract_mm <= 0.0)) return;
-    for (std::size_t k = 0; k < motions.size(); ++k) items[motions[k]].planned_rotary_rad = candidates[k][plan.choice[k]];
+    for (std::size_t k = 0; k < motions.size(); ++k)
+      items[motions[k]].planned_rotary_rad = candidates[k][plan.choice[k]];
     const int first_line = std::get<cl::Motion>(*items[motions.front()].record).where.line;
     const int last_line = std::get<cl::Motion>(*items[motions.back()].record).where.line;
     summary_.notices.push_back(fmt::format(
         "{}:{}: the rotary solutions of lines {} to {} are planned ahead: the axis limits force {} change{} of "
         "solution there instead of {} (--branch-plan greedy){}",
-        input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes,
-        ""));
+        input_, first_line, first_line, last_line, plan.changes, plan.changes == 1 ? "" : "s", greedy_changes, ""));
     ++summary_.planned_runs;
   }
 
@@ -323,14 +332,16 @@ class Poster {
     tool_numbered_ = call.number.has_value();
     length_register_ = t.number;
     add(call.blocks);
-    if (options_.rtcp) add(d.rtcp_on);
-    else if (options_.tool_length_on_change) add(d.tool_length_on);
+    if (options_.rtcp)
+      add(d.rtcp_on);
+    else if (options_.tool_length_on_change)
+      add(d.tool_length_on);
     rtcp_on_ = options_.rtcp;
     writer_.tool_change(blocks);
     if (t.length_mm)
-      writer_.comment(fmt::format("{} length {:.4f} mm from {}: {}", call.label, *t.length_mm, call.length_from,
-                                  length_in_kinematics() ? "the axes are solved for it"
-                                                         : "the control's length register applies it"));
+      writer_.comment(fmt::format(
+          "{} length {:.4f} mm from {}: {}", call.label, *t.length_mm, call.length_from,
+          length_in_kinematics() ? "the axes are solved for it" : "the control's length register applies it"));
   }
 
   /// True when the axis positions the post writes depend on the tool length: a rotary axis on the
@@ -346,16 +357,16 @@ class Poster {
   void check_tool_length(const cl::ToolChange& t, const detail::ToolCall& call) const {
     if (!length_in_kinematics() || !options_.tool_length_mm) return;
     if (std::abs(*t.length_mm - *options_.tool_length_mm) <= 5e-4) return;
-    throw InputError(SourcePosition{input_, t.where.line, t.where.column},
-                     fmt::format("{} is {:.4f} mm long ({}), but the axes of {} are solved for a tool "
-                                 "length of {:.4f} mm (--tool-length): on this machine the axis positions depend on the "
-                                 "tool length (rotary axes in the head), and the tool would cut {:.4f} mm off the path. "
-                                 "Post with --tool-length {:.4f} (one run per tool length), or with --rtcp (the "
-                                 "control applies each tool's length)",
-                                 call.length_from == "the CL data" ? fmt::format("LOADTL: tool {}", t.number) : call.label,
-                                 *t.length_mm, call.length_from == "the CL data" ? "LENGTH" : call.length_from,
-                                 machine_.name, *options_.tool_length_mm,
-                                 std::abs(*t.length_mm - *options_.tool_length_mm), *t.length_mm));
+    throw InputError(
+        SourcePosition{input_, t.where.line, t.where.column},
+        fmt::format("{} is {:.4f} mm long ({}), but the axes of {} are solved for a tool "
+                    "length of {:.4f} mm (--tool-length): on this machine the axis positions depend on the "
+                    "tool length (rotary axes in the head), and the tool would cut {:.4f} mm off the path. "
+                    "Post with --tool-length {:.4f} (one run per tool length), or with --rtcp (the "
+                    "control applies each tool's length)",
+                    call.length_from == "the CL data" ? fmt::format("LOADTL: tool {}", t.number) : call.label,
+                    *t.length_mm, call.length_from == "the CL data" ? "LENGTH" : call.length_from, machine_.name,
+                    *options_.tool_length_mm, std::abs(*t.length_mm - *options_.tool_length_mm), *t.length_mm));
   }
 
   /// The length register in force: the program's (G43 H), else the tool's own.
@@ -370,7 +381,8 @@ class Poster {
     if (!options_.rtcp && !options_.tool_length_on_change) return;  // (TRR-XY: the machine's lengths)
     const Dialect& d = writer_.dialect();
     const std::vector<std::string>& words = options_.rtcp ? d.rtcp_on : d.tool_length_on;
-    if (std::none_of(words.begin(), words.end(), [](const std::string& b) { return b.find("{length}") != std::string::npos; }))
+    if (std::none_of(words.begin(), words.end(),
+                     [](const std::string& b) { return b.find("{length}") != std::string::npos; }))
       throw InputError(SourcePosition{input_, l.where.line, l.where.column},
                        fmt::format("H{}: the tool length of register {} {}cannot be written in the {} dialect (its "
                                    "[tool] {} words name no register: {{length}}); program the tool's own register "
@@ -467,11 +479,13 @@ class Poster {
         previous_ = still;
       }
     }
-    if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
+    if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 &&
+        branch_changed(cl, next.q)) {
       if (options_.retract_mm <= 0.0)
-        throw Infeasible(fmt::format("{}:{}: the axis limits force a change of solution (rotary {} -> {} deg) and "
-                                     "no retract is allowed", input_, line, degrees_list(previous_.q.rotary_rad, 4),
-                                     degrees_list(next.q.rotary_rad, 4)));
+        throw Infeasible(
+            fmt::format("{}:{}: the axis limits force a change of solution (rotary {} -> {} deg) and "
+                        "no retract is allowed",
+                        input_, line, degrees_list(previous_.q.rotary_rad, 4), degrees_list(next.q.rotary_rad, 4)));
       retract_and_reorient(next, line);
     }
     // (in a tilted plane the tool axis and the rotary axes are still: a straight line, nothing to bound)
@@ -511,10 +525,12 @@ class Poster {
       throw Infeasible(unreachable_message(
           input_, line, solver_, data_, !a.ok() ? up_here : up_there, !a.ok() ? previous_.q : next.q,
           fmt::format("the axis limits force a change of solution, and the retract point {} mm along the tool axis "
-                      "is out of reach: {}", d, !a.ok() ? a.failure.message : b.failure.message)));
+                      "is out of reach: {}",
+                      d, !a.ok() ? a.failure.message : b.failure.message)));
     summary_.notices.push_back(fmt::format(
         "{}:{}: the axis limits force a change of solution (rotary {} -> {} deg): retract {} mm along the tool "
-        "axis, reorient, re-engage", input_, line, degrees_list(previous_.q.rotary_rad, 3), degrees_list(next.q.rotary_rad, 3), d));
+        "axis, reorient, re-engage",
+        input_, line, degrees_list(previous_.q.rotary_rad, 3), degrees_list(next.q.rotary_rad, 3), d));
     ++summary_.retracts;
     writer_.comment("retract, reorient, re-engage (axis limits)");
     const SolvedPoint p1{up_here, *a.position}, p2{up_there, *b.position};
@@ -544,7 +560,7 @@ class Poster {
     } else {
       for (int i = 0; i < words_.count; ++i)
         executed[i] = words_.angle[static_cast<std::size_t>(i)] ? deg_to_rad(writer_.rounded(i, rad_to_deg(to.q[i])))
-                                                                 : writer_.rounded(i, to.q[i]);
+                                                                : writer_.rounded(i, to.q[i]);
     }
     const double feed = records_.feed_mm_min(options_.default_feed_mm_min);
     const double rotary_travel_deg =
@@ -645,7 +661,8 @@ class Poster {
 
   /// --verify of the blocks written for one CL motion: their words, feeds and (rapids) their lines.
   void check_written(const SolvedPoint& from, const SolvedPoint& to, int line, bool rapid, const NcMotion& m,
-                     const std::optional<detail::ReadBackBlock>& first, const std::optional<detail::ReadBackBlock>& block) {
+                     const std::optional<detail::ReadBackBlock>& first,
+                     const std::optional<detail::ReadBackBlock>& block) {
     const detail::ExecuteWords execute = [this](const WrittenState& a, const WrittenState& b, double t) {
       return execute_words(a, b, t);
     };
@@ -664,9 +681,11 @@ class Poster {
           (to.cl.tip_mm - from.cl.tip_mm).dot(from.cl.axis.normalized()) > tol) {
         const double off = detail::rapid_off_line_mm(*leaving, true, execute);
         if (off > tol)
-          detail::add_defect(summary_.verify, leaving->program_line, line,
-                             fmt::format("the rapid out of the cut leaves the tool axis line (and the straight CL rapid) "
-                                         "by {:.4f} mm: the tool is dragged sideways", off));
+          detail::add_defect(
+              summary_.verify, leaving->program_line, line,
+              fmt::format("the rapid out of the cut leaves the tool axis line (and the straight CL rapid) "
+                          "by {:.4f} mm: the tool is dragged sideways",
+                          off));
       }
       last_rapid_ = block ? block : first;
       last_was_feed_ = false;
@@ -676,18 +695,20 @@ class Poster {
         (last_rapid_->cl_from_mm - from.cl.tip_mm).dot(from.cl.axis.normalized()) > tol) {
       const double off = detail::rapid_off_line_mm(*last_rapid_, false, execute);
       if (off > tol)
-        detail::add_defect(summary_.verify, last_rapid_->program_line, last_rapid_->cl_line,
-                           fmt::format("the rapid into the cut of CL line {} leaves the tool axis line (and the straight "
-                                       "CL rapid) by {:.4f} mm: the tool comes in sideways", line, off));
+        detail::add_defect(
+            summary_.verify, last_rapid_->program_line, last_rapid_->cl_line,
+            fmt::format("the rapid into the cut of CL line {} leaves the tool axis line (and the straight "
+                        "CL rapid) by {:.4f} mm: the tool comes in sideways",
+                        line, off));
     }
     last_rapid_.reset();
     last_was_feed_ = true;
     if (!block) return;
     check_feed_word(*block, from, to, line, m);
     if (options_.rtcp || !have_position_) return;  // under RTCP the control does the kinematics
-    const double contour_mm = verify_block(solver_, data_, from.cl, commands_of(words_at(block->from, block->to, 0.0)),
-                                           to.cl, commands_of(words_at(block->from, block->to, 1.0)), line,
-                                           summary_.verify);
+    const double contour_mm =
+        verify_block(solver_, data_, from.cl, commands_of(words_at(block->from, block->to, 0.0)), to.cl,
+                     commands_of(words_at(block->from, block->to, 1.0)), line, summary_.verify);
     if (options_.on_verified) options_.on_verified(line, contour_mm);
   }
 
@@ -703,7 +724,9 @@ class Poster {
     if (b.to.inverse_time != inverse || !b.to.feed) {
       detail::add_defect(summary_.verify, b.program_line, line,
                          fmt::format("'{}' runs {}, the block needs {}", b.text,
-                                     !b.to.feed ? "with no feed in force" : b.to.inverse_time ? "in inverse time" : "per minute",
+                                     !b.to.feed          ? "with no feed in force"
+                                     : b.to.inverse_time ? "in inverse time"
+                                                         : "per minute",
                                      inverse ? "inverse time (G93: it turns a rotary axis)" : "a feed per minute"));
       return;
     }
@@ -732,14 +755,15 @@ class Poster {
     if (b.to.motion != meant)
       detail::add_defect(summary_.verify, b.program_line, b.cl_line,
                          fmt::format("'{}' turns the arc {}: the CL circle runs {} in the program's plane", b.text,
-                                     b.to.motion == Motion::clockwise ? "clockwise" : b.to.motion == Motion::counter_clockwise
-                                                                                           ? "counter-clockwise"
-                                                                                           : "not as an arc",
+                                     b.to.motion == Motion::clockwise           ? "clockwise"
+                                     : b.to.motion == Motion::counter_clockwise ? "counter-clockwise"
+                                                                                : "not as an arc",
                                      arc.clockwise ? "clockwise" : "counter-clockwise"));
     const double allowed = 0.5 * std::pow(10.0, -writer_.dialect().motion.feed_decimals) + 1e-9;
     if (b.to.inverse_time || !b.to.feed || std::abs(*b.to.feed - arc.feed_mm_min) > allowed)
-      detail::add_defect(summary_.verify, b.program_line, b.cl_line,
-                         fmt::format("the feed of '{}' is not the CL feed {:.1f} mm/min per minute", b.text, arc.feed_mm_min));
+      detail::add_defect(
+          summary_.verify, b.program_line, b.cl_line,
+          fmt::format("the feed of '{}' is not the CL feed {:.1f} mm/min per minute", b.text, arc.feed_mm_min));
   }
 
   /// The model the program's times are computed on: the post's (under --verify-on, not the
@@ -779,13 +803,15 @@ class Poster {
     if (plane_) return Vec3d::UnitZ();
     if (options_.rtcp) return cl.axis.normalized();
     const Vec3d tip = solver_.with_rotary(cl, rotary_rad, data_).linear_mm;
-    const Vec3d above = solver_.with_rotary(ClPoint{cl.tip_mm + cl.axis.normalized(), cl.axis}, rotary_rad, data_).linear_mm;
+    const Vec3d above =
+        solver_.with_rotary(ClPoint{cl.tip_mm + cl.axis.normalized(), cl.axis}, rotary_rad, data_).linear_mm;
     return above - tip;
   }
 
   /// The length (mm) of the tool tip's path in W while the axes run linearly from `q0` to `q1`.
   double executed_tip_path_mm(const AxisPosition& q0, const AxisPosition& q1) const {
-    return tip_path_length_mm([&](double t) { return feed_solver().execute(nonlinear::lerp(q0, q1, t), data_).tip_mm; });
+    return tip_path_length_mm(
+        [&](double t) { return feed_solver().execute(nonlinear::lerp(q0, q1, t), data_).tip_mm; });
   }
 
   void move_along_arc(const cl::Circle& c, const cl::Motion& end, bool rapid) {
@@ -812,8 +838,9 @@ class Poster {
     for (int i = 1; i <= n_steps; ++i) {
       const double t = static_cast<double>(i) / n_steps;
       ClPoint p;
-      p.tip_mm = i == n_steps ? stop
-                              : c.center_mm + rotation_about<double>(n, t * angle) * r0 + (along0 + t * (along1 - along0)) * n;
+      p.tip_mm = i == n_steps
+                     ? stop
+                     : c.center_mm + rotation_about<double>(n, t * angle) * r0 + (along0 + t * (along1 - along0)) * n;
       p.axis = nonlinear::slerp(axis0, end.point.axis, t);  // a great circle also between opposite axes
       move_to(p, end.where.line, rapid);
     }
@@ -869,7 +896,8 @@ class Poster {
       for (int k = 0; k < 3; ++k) (*last_values_)[static_cast<std::size_t>(k)] = writer_.rounded(k, xe[k]);
     SolvedPoint next{end.point, plane_ ? solver_.with_rotary(end.point, plane_->rotary_rad, data_) : *ik.position};
     AxisPosition executed = next.q;
-    if (plane_) executed = plane_executed(xe);
+    if (plane_)
+      executed = plane_executed(xe);
     else
       for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
     if (written && !options_.rtcp) verify_native_arc(*written, arc, start_words, normal, angle, c, end, executed);
@@ -924,8 +952,9 @@ class Poster {
     if (cycle_.feed) feed = cycle_.feed_per_rev ? *cycle_.feed * rpm : *cycle_.feed;
     if (cycle_.kind == cl::Cycle::Kind::tap) {
       if (!(rpm > 0.0))
-        throw InputError(at, "a tapped hole before any spindle speed: the tapping feed (pitch x rpm) is unknown "
-                             "(give SPINDL/rpm before the cycle)");
+        throw InputError(at,
+                         "a tapped hole before any spindle speed: the tapping feed (pitch x rpm) is unknown "
+                         "(give SPINDL/rpm before the cycle)");
       feed = cycle_.pitch_mm * rpm;
     }
     if (native_hole(p, feed, m.where.line)) return;
@@ -961,7 +990,9 @@ class Poster {
     // in a tilted plane its Z (rounded angles) is within ~1e-6 rad of the hole: the hole is native
     // where that leaves its top within half the words' resolution of the bottom's X Y
     const double across = plane_ ? 0.5 * std::pow(10.0, -writer_.dialect().linear_decimals) : 1e-7;
-    auto on_axis = [&](const Vec3d& a) { return std::abs(a.x() - xb.x()) < across && std::abs(a.y() - xb.y()) < across; };
+    auto on_axis = [&](const Vec3d& a) {
+      return std::abs(a.x() - xb.x()) < across && std::abs(a.y() - xb.y()) < across;
+    };
     if (!on_axis(xt) || !on_axis(xr) || !(xb.z() < xr.z()) || xt.z() < xr.z() - 1e-9) return false;
     std::string note;
     const auto nc = detail::native_hole(cycle_, *words, xr, xb, p.retract_to_r, feed, records_.spindle_rpm(),
@@ -976,7 +1007,8 @@ class Poster {
     if (have_position_ && same_rotary && writer_.continues(*nc, p.retract_to_r ? xr.z() : xt.z())) {
       // the modal cycle travels there itself: the tool stands at the return level over the hole
       AxisPosition executed = at_retract.q;
-      if (plane_) executed = plane_executed(xt);
+      if (plane_)
+        executed = plane_executed(xt);
       else
         for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
       solver_.advance(executed, data_);
@@ -1011,16 +1043,21 @@ class Poster {
   void on(const cl::CutterComp& c) {
     const SourcePosition at{input_, c.where.line, c.where.column};
     if (!words_.serial && c.side != cl::CutterComp::Side::off)
-      throw InputError(at, fmt::format("cutter radius compensation is not posted on the {} machine (its control "
-                                       "compensates in no plane of these axes): post the tool centre path without "
-                                       "CUTCOM", machine_.name), "CUTCOM/" + c.text);
+      throw InputError(at,
+                       fmt::format("cutter radius compensation is not posted on the {} machine (its control "
+                                   "compensates in no plane of these axes): post the tool centre path without "
+                                   "CUTCOM",
+                                   machine_.name),
+                       "CUTCOM/" + c.text);
     if (!words_.serial) return;  // CUTCOM/OFF: nothing was on
     const auto words = comp_words(writer_.dialect());
     if (!words)
-      throw InputError(at, fmt::format("CUTCOM: the {} dialect writes no radius compensation ([compensation] native "
-                                       "= false in {}); post with a dialect that has it, or post the path without "
-                                       "CUTCOM",
-                                       writer_.dialect().name, writer_.dialect().file), "CUTCOM/" + c.text);
+      throw InputError(at,
+                       fmt::format("CUTCOM: the {} dialect writes no radius compensation ([compensation] native "
+                                   "= false in {}); post with a dialect that has it, or post the path without "
+                                   "CUTCOM",
+                                   writer_.dialect().name, writer_.dialect().file),
+                       "CUTCOM/" + c.text);
     comp_ = c;
     if (c.side == cl::CutterComp::Side::off) {
       writer_.block(words->off);
@@ -1028,21 +1065,25 @@ class Poster {
     }
     if (words->register_letter.empty() && c.offset_register && *c.offset_register != tool_)
       // (Sinumerik: G41/G42 take the radius of the edge the tool call selected, D1)
-      throw InputError(at, fmt::format("CUTCOM/{}: radius register {} cannot be written in the {} dialect (G41/G42 "
-                                       "take the radius of the active tool's edge: [compensation] register_letter is "
-                                       "empty in {}); give the tool's own radius (CUTCOM/{} without a register), or "
-                                       "post with a dialect that writes one (fanuc, haas, linuxcnc)",
-                                       c.text, *c.offset_register, writer_.dialect().name, writer_.dialect().file,
-                                       c.side == cl::CutterComp::Side::left ? "LEFT" : "RIGHT"),
+      throw InputError(at,
+                       fmt::format("CUTCOM/{}: radius register {} cannot be written in the {} dialect (G41/G42 "
+                                   "take the radius of the active tool's edge: [compensation] register_letter is "
+                                   "empty in {}); give the tool's own radius (CUTCOM/{} without a register), or "
+                                   "post with a dialect that writes one (fanuc, haas, linuxcnc)",
+                                   c.text, *c.offset_register, writer_.dialect().name, writer_.dialect().file,
+                                   c.side == cl::CutterComp::Side::left ? "LEFT" : "RIGHT"),
                        "CUTCOM/" + c.text);
     if (!words->register_letter.empty() && !c.offset_register && !tool_numbered_)
-      throw InputError(at, fmt::format("{}: the {} dialect names the radius register, by default the tool's number, "
-                                       "but the tool was called by name: give its number in a tool table "
-                                       "(--tool-table FILE; docs/formats.md, Tool tables)",
-                                       c.text, writer_.dialect().name), c.text);
+      throw InputError(at,
+                       fmt::format("{}: the {} dialect names the radius register, by default the tool's number, "
+                                   "but the tool was called by name: give its number in a tool table "
+                                   "(--tool-table FILE; docs/formats.md, Tool tables)",
+                                   c.text, writer_.dialect().name),
+                       c.text);
     const int reg = c.offset_register.value_or(tool_);
-    writer_.block((c.side == cl::CutterComp::Side::left ? words->left : words->right) +
-                  (words->register_letter.empty() ? std::string() : " " + words->register_letter + std::to_string(reg)));
+    writer_.block(
+        (c.side == cl::CutterComp::Side::left ? words->left : words->right) +
+        (words->register_letter.empty() ? std::string() : " " + words->register_letter + std::to_string(reg)));
   }
 
   /// With G41/G42 active the motion must keep the tool axis and have it along Z of the program
@@ -1057,10 +1098,14 @@ class Poster {
                                        "path without CUTCOM (the CL data are then the tool centre path)",
                                        side, comp_->where.line));
     if (plane_) return;  // the plane's Z is the tool axis: G41/G42 compensate in its XY
-    const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad, data_).linear_mm;
-    const Vec3d up = options_.rtcp ? Vec3d(previous_.cl.tip_mm + previous_.cl.axis)
-                                   : solver_.with_rotary(ClPoint{previous_.cl.tip_mm + previous_.cl.axis, previous_.cl.axis},
-                                                         previous_.q.rotary_rad, data_).linear_mm;
+    const Vec3d tip = options_.rtcp ? previous_.cl.tip_mm
+                                    : solver_.with_rotary(previous_.cl, previous_.q.rotary_rad, data_).linear_mm;
+    const Vec3d up = options_.rtcp
+                         ? Vec3d(previous_.cl.tip_mm + previous_.cl.axis)
+                         : solver_
+                               .with_rotary(ClPoint{previous_.cl.tip_mm + previous_.cl.axis, previous_.cl.axis},
+                                            previous_.q.rotary_rad, data_)
+                               .linear_mm;
     if ((up - tip - Vec3d::UnitZ()).norm() > 1e-6)
       throw InputError(at, fmt::format("CUTCOM/{} (line {}): the tool axis is not along Z of the program frame here, "
                                        "and G41/G42 compensate in the XY plane; post the path without CUTCOM",
@@ -1070,10 +1115,11 @@ class Poster {
   const std::string& input_;
   const detail::AheadSolve* ahead_ = nullptr;  ///< the current record's motion solved ahead
   std::optional<RotaryAngles> planned_rotary_;
-  bool unplanned_run_ = false;  ///< in a run too long to plan (continues_unplanned_run)  ///< the current record's rotary angles chosen by the branch plan
-  std::deque<detail::AheadItem> pending_;          ///< records read and planned, not posted yet
-  std::optional<detail::AheadItem> carry_;         ///< a rapid read by the last plan: it opens the next run
-  SolverData plan_data_;                            ///< the solver's working data of the branch plan
+  bool unplanned_run_ = false;  ///< in a run too long to plan (continues_unplanned_run)  ///< the current record's
+                                ///< rotary angles chosen by the branch plan
+  std::deque<detail::AheadItem> pending_;   ///< records read and planned, not posted yet
+  std::optional<detail::AheadItem> carry_;  ///< a rapid read by the last plan: it opens the next run
+  SolverData plan_data_;                    ///< the solver's working data of the branch plan
   const KinematicModel& solver_;
   SolverData& data_;  ///< the solver's working data on the post's thread
   NcWriter& writer_;
@@ -1083,14 +1129,14 @@ class Poster {
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
-  std::optional<PerAxis<double>> last_values_;  ///< words of the last motion block (mm, deg)
-  std::optional<WrittenBlockReader> read_back_;  ///< --verify: the blocks as written, read back
+  std::optional<PerAxis<double>> last_values_;       ///< words of the last motion block (mm, deg)
+  std::optional<WrittenBlockReader> read_back_;      ///< --verify: the blocks as written, read back
   std::optional<detail::ReadBackBlock> last_rapid_;  ///< the last rapid written (an approach if a feed follows)
-  bool last_was_feed_ = false;                     ///< the last motion written was a feed move
+  bool last_was_feed_ = false;                       ///< the last motion written was a feed move
   bool have_position_ = false;
   bool rtcp_on_ = false;
-  int tool_ = 1;  ///< the tool whose length is active (1 until the first tool change)
-  bool tool_numbered_ = true;  ///< false: the tool was called by name and has no number (tool_ is 0)
+  int tool_ = 1;                        ///< the tool whose length is active (1 until the first tool change)
+  bool tool_numbered_ = true;           ///< false: the tool was called by name and has no number (tool_ is 0)
   std::optional<int> length_register_;  ///< the length register written (the tool's, or a G43 H of the input)
   RecordBlocks records_{writer_};
   bool default_feed_noticed_ = false;
@@ -1104,7 +1150,7 @@ class Poster {
   /// the rotary axes (the tool along the plane's Z).
   struct Plane {
     TiltedPlane words;
-    Vec3d axis_W = Vec3d::UnitZ();        ///< the CL tool axis of the run
+    Vec3d axis_W = Vec3d::UnitZ();     ///< the CL tool axis of the run
     RotaryAngles rotary_rad;           ///< the post's solution (limits, continuity)
     RotaryAngles executed_rotary_rad;  ///< the control's: the tool along the words' Z, nearest it
   };
@@ -1117,7 +1163,8 @@ class Poster {
   /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
   /// first motion, to a tool axis other than +Z of W).
   void update_plane(const cl::Motion& m, bool rapid) {
-    if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 || !words_.serial) return;
+    if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 || !words_.serial)
+      return;
     const Vec3d k = m.point.axis.normalized();
     if (plane_ && (k - plane_->axis_W).norm() <= 1e-9) return;
     close_plane();
@@ -1133,7 +1180,8 @@ class Poster {
     // the program frame's axes seen from the tilted part (W) at this solution
     const Vec3d o = solver_.with_rotary(ClPoint{Vec3d::Zero(), cl.axis}, rotary, data_).linear_mm;
     Mat3d P_from_W;
-    for (int i = 0; i < 3; ++i) P_from_W.col(i) = solver_.with_rotary(ClPoint{Vec3d::Unit(i), cl.axis}, rotary, data_).linear_mm - o;
+    for (int i = 0; i < 3; ++i)
+      P_from_W.col(i) = solver_.with_rotary(ClPoint{Vec3d::Unit(i), cl.axis}, rotary, data_).linear_mm - o;
     const Mat3d R = plane_frame(cl.axis, P_from_W.row(0).transpose(), P_from_W.row(1).transpose());
     Plane p;
     p.words.convention = tw.angles;
@@ -1151,7 +1199,8 @@ class Poster {
     int dir = 1;
     for (const RotarySolution& s : rotary_solutions(machine_, cl.axis)) {
       double apart = 0.0;
-      for (Eigen::Index k = 0; k < rotary.size(); ++k) apart += std::abs(std::remainder(s.rotary_rad[k] - rotary[k], 2.0 * kPi));
+      for (Eigen::Index k = 0; k < rotary.size(); ++k)
+        apart += std::abs(std::remainder(s.rotary_rad[k] - rotary[k], 2.0 * kPi));
       const double d0 = rotary.size() > 0 ? std::remainder(s.rotary_rad[0] - rotary[0], 2.0 * kPi) : 0.0;
       if (apart > 1e-6 && d0 > 0.0) dir = -1;  // the other solution is larger
     }
@@ -1179,7 +1228,8 @@ class Poster {
       AxisPosition q = last_executed_;
       q.rotary_rad = p.executed_rotary_rad;
       const Vec3d at = p.words.to_plane(solver_.execute(q, data_).tip_mm + home_offset_);
-      last_values_ = PerAxis<double>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z())};
+      last_values_ =
+          PerAxis<double>{writer_.rounded(0, at.x()), writer_.rounded(1, at.y()), writer_.rounded(2, at.z())};
     } else {
       last_values_.reset();
     }

@@ -21,10 +21,10 @@ std::string header_origin_line(const PostRequest& r) {
 
 std::string header_model_line(const PostRequest& r, bool has_model, const std::optional<double>& tolerance_mm) {
   const char* method = r.nonlinear == nonlinear::Method::harmonic ? "harmonic" : "adaptive";
-  return fmt::format("model {}, tolerance {}", has_model ? r.model_source : std::string("none (nominal machine)"),
-                     tolerance_mm ? fmt::format("{} mm ({}{})", *tolerance_mm, method,
-                                                r.tolerance_is_default ? ", the default" : "")
-                                  : std::string("none"));
+  return fmt::format(
+      "model {}, tolerance {}", has_model ? r.model_source : std::string("none (nominal machine)"),
+      tolerance_mm ? fmt::format("{} mm ({}{})", *tolerance_mm, method, r.tolerance_is_default ? ", the default" : "")
+                   : std::string("none"));
 }
 
 nonlinear::CompensationOptions compensation(const PostRequest& r, double tolerance_mm) {
@@ -39,7 +39,8 @@ std::string PostRequest::validate() const {
   if (const std::string why = machine->refuses(*this); !why.empty()) return why;
   if (tolerance_mm && !(*tolerance_mm > 0 && std::isfinite(*tolerance_mm)))
     return fmt::format("tolerance_mm: expected a finite number above 0, got {}", *tolerance_mm);
-  if (!(retract_mm >= 0 && std::isfinite(retract_mm))) return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
+  if (!(retract_mm >= 0 && std::isfinite(retract_mm)))
+    return fmt::format("retract_mm: expected 0 or more, got {}", retract_mm);
   if (threads < 1 || threads > 2) return fmt::format("threads: expected 1 or 2, got {}", threads);
   if (tilted_plane && rtcp) return "tilted_plane: not with rtcp (the tilted plane carries the tool tip itself)";
   return {};
@@ -97,9 +98,10 @@ PostSummary write_program(cl::Reader& reader, std::ostream& program, const PostR
   if (!summary.verify.defects.empty()) {
     std::string list;
     for (const std::string& d : summary.verify.defects) list += "\n  " + d;
-    throw VerifyFailed(fmt::format("{}: --verify: the written program does not do what the input means ({} defect{}); "
-                                   "no program is written:{}", r.input_name, summary.verify.defects.size(),
-                                   summary.verify.defects.size() == 1 ? "" : "s", list));
+    throw VerifyFailed(
+        fmt::format("{}: --verify: the written program does not do what the input means ({} defect{}); "
+                    "no program is written:{}",
+                    r.input_name, summary.verify.defects.size(), summary.verify.defects.size() == 1 ? "" : "s", list));
   }
   out.commit();  // flushes `program`
   return summary;
@@ -130,7 +132,8 @@ PostResult post(std::istream& input, std::ostream& program, const PostRequest& r
   if (r.tilted_plane && !r.dialect.tilted_plane)
     result.summary.notices.push_back(fmt::format(
         "--tilted-plane: the {} dialect ({}) has no tilted work plane ([tilted_plane] native = false or absent): the "
-        "3+2 runs are written with the machine's axes, as without the option", r.dialect.name, r.dialect.file));
+        "3+2 runs are written with the machine's axes, as without the option",
+        r.dialect.name, r.dialect.file));
   if (r.progress.posted) r.progress.posted(result.summary);
   detail::add_posted(acc, result.summary);
   models->add_figures(data, acc);

@@ -44,7 +44,8 @@ using Curve = std::vector<std::pair<double, double>>;
 double interpolate(const Curve& c, double a, bool& inside) {
   inside = false;
   if (c.size() < 2) return 0.0;
-  auto it = std::lower_bound(c.begin(), c.end(), a, [](const std::pair<double, double>& e, double v) { return e.first < v; });
+  auto it =
+      std::lower_bound(c.begin(), c.end(), a, [](const std::pair<double, double>& e, double v) { return e.first < v; });
   if (it == c.end() || it == c.begin()) return 0.0;
   const auto& hi = *it;
   const auto& lo = *(it - 1);
@@ -103,8 +104,10 @@ CircularityFigures iso230_4_circularity(const std::vector<double>& ang, const st
     f.F_min_um = std::min(f.F_min_um, r[k]);
     // the direction of a point: of the move that reaches it (the first point: of the move that leaves it)
     const double step = k > 0 ? ang[k] - ang[k - 1] : ang[1] - ang[0];
-    if (step > 0) ccw.push_back({wrap(ang[k]), d});
-    else if (step < 0) cw.push_back({wrap(ang[k]), d});
+    if (step > 0)
+      ccw.push_back({wrap(ang[k]), d});
+    else if (step < 0)
+      cw.push_back({wrap(ang[k]), d});
   }
   f.G_um = dmax - dmin;
   if (f.direction == 0 && ccw.size() >= 2 && cw.size() >= 2) {
@@ -133,8 +136,10 @@ CircularityByDirection iso230_4_by_direction(const std::vector<double>& ang, con
   std::vector<double> a_ccw, r_ccw, a_cw, r_cw;
   for (std::size_t k = 0; k < n; ++k) {
     const double step = k > 0 ? ang[k] - ang[k - 1] : (n > 1 ? ang[1] - ang[0] : 0.0);
-    if (step > 0) a_ccw.push_back(ang[k]), r_ccw.push_back(r[k]);
-    else if (step < 0) a_cw.push_back(ang[k]), r_cw.push_back(r[k]);
+    if (step > 0)
+      a_ccw.push_back(ang[k]), r_ccw.push_back(r[k]);
+    else if (step < 0)
+      a_cw.push_back(ang[k]), r_cw.push_back(r[k]);
   }
   out.ccw = iso230_4_circularity(a_ccw, r_ccw);
   out.cw = iso230_4_circularity(a_cw, r_cw);

@@ -16,12 +16,23 @@ std::string escape(const std::string& text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -48,11 +59,14 @@ std::string utc_now() {
 
 std::string provenance_table(const Provenance& p) {
   std::string t = "<table class=\"provenance\">\n";
-  auto row = [&](const std::string& k, const std::string& v) { t += fmt::format("<tr><th>{}</th><td class=n>{}</td></tr>\n", k, v); };
+  auto row = [&](const std::string& k, const std::string& v) {
+    t += fmt::format("<tr><th>{}</th><td class=n>{}</td></tr>\n", k, v);
+  };
   for (const InputFile& f : p.inputs) {
     const auto hash = file_sha256_hex(f.path);
-    row(escape(f.role), fmt::format("{} <span class=\"hash\">SHA-256 {}</span>", escape(f.shown.empty() ? f.path : f.shown),
-                                    hash ? *hash : std::string("(not a file: not hashed)")));
+    row(escape(f.role),
+        fmt::format("{} <span class=\"hash\">SHA-256 {}</span>", escape(f.shown.empty() ? f.path : f.shown),
+                    hash ? *hash : std::string("(not a file: not hashed)")));
   }
   row("machine", escape(p.machine));
   row("model", p.model.empty() ? std::string("none (nominal machine)") : escape(p.model));
@@ -71,7 +85,8 @@ std::string page_start(const Provenance& p) {
        "td.n,th.n{text-align:left}.hash{font-family:monospace;font-size:11px;color:#555;margin-left:1em}"
        ".note{color:#555;font-size:13px}.plots{display:flex;flex-wrap:wrap;gap:12px}"
        ".plot{border:1px solid #e4e4e4;padding:6px}.pass{color:#0a7a2a;font-weight:bold}"
-       ".fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;font-weight:bold}pre{background:#f6f6f6;padding:.5em}"
+       ".fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;font-weight:bold}pre{background:#f6f6f6;padding:."
+       "5em}"
        "canvas{border:1px solid #ccc;cursor:grab}</style>\n</head><body>\n";
   h += "<h1>" + escape(p.title) + "</h1>\n" + provenance_table(p);
   return h;

@@ -151,14 +151,17 @@ std::string path_view_3d(const std::vector<PathView3d>& views, const ColourScale
       c += fmt::format("{}{},{},{}", c.empty() ? "" : ",", rgb[0], rgb[1], rgb[2]);
     }
     data += fmt::format("{}{{\"id\":\"{}\",\"p\":[{}],\"c\":[{}]}}", i ? "," : "", v.id, p, c);
-    html += fmt::format("<div class=\"plot\"><div>{}</div><canvas class=\"path3d\" id=\"{}\" width=\"460\" height=\"400\">"
-                        "</canvas></div>",
-                        escape(v.title), escape(v.id));
+    html += fmt::format(
+        "<div class=\"plot\"><div>{}</div><canvas class=\"path3d\" id=\"{}\" width=\"460\" height=\"400\">"
+        "</canvas></div>",
+        escape(v.title), escape(v.id));
   }
   data += "]";
   html += "<div class=\"plot\">" + colour_bar_svg(scale, 400, bar_title) + "</div></div>\n";
-  html += "<p class=\"note\">Drag to turn both views, wheel to zoom. Axes at the lower corner: X red, Y green, Z blue "
-          "(workpiece frame W). " + fmt::format("{:.4g} mm across the frame.", 2 * radius) + "</p>\n";
+  html +=
+      "<p class=\"note\">Drag to turn both views, wheel to zoom. Axes at the lower corner: X red, Y green, Z blue "
+      "(workpiece frame W). " +
+      fmt::format("{:.4g} mm across the frame.", 2 * radius) + "</p>\n";
   std::string script = kScript;
   script.replace(script.find("NCPOST_VIEWS"), 12, data);
   std::string corner = "[";

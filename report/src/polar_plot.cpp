@@ -45,10 +45,11 @@ std::string polar_plot(const PolarFrame& f, const std::vector<PolarTrace>& trace
   for (double t : nice_ticks(-span, span, 4)) {
     const double rr = r0 + gain * t;
     if (rr <= 1) continue;
-    s += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>", c, cy,
-                     rr, t == 0 ? "#999" : "#d4d4d4", t == 0 ? 1.2 : 0.7);
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#777\" font-size=\"10\">{}{}</text>", c + 3,
-                     cy - rr - 2, t > 0 ? "+" : "", format_tick(t) + (t == span ? " " + escape(f.unit) : std::string()));
+    s += fmt::format(
+        "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>", c, cy, rr,
+        t == 0 ? "#999" : "#d4d4d4", t == 0 ? 1.2 : 0.7);
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#777\" font-size=\"10\">{}{}</text>", c + 3, cy - rr - 2,
+                     t > 0 ? "+" : "", format_tick(t) + (t == span ? " " + escape(f.unit) : std::string()));
   }
   for (const auto& t : traces) {
     std::string d;
@@ -63,16 +64,19 @@ std::string polar_plot(const PolarFrame& f, const std::vector<PolarTrace>& trace
   }
   double lx = 6;
   for (const auto& t : traces) {
-    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
-                     "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>",
-                     lx, height - 12, lx + 18, t.colour, t.dashed ? " stroke-dasharray=\"5,3\"" : "", lx + 22, height - 8,
-                     escape(t.label));
+    s += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
+        "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>",
+        lx, height - 12, lx + 18, t.colour, t.dashed ? " stroke-dasharray=\"5,3\"" : "", lx + 22, height - 8,
+        escape(t.label));
     lx += 34 + 6.2 * static_cast<double>(t.label.size());
   }
-  s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" fill=\"#777\" font-size=\"10\">{} per ring</text>",
-                   size - 6, height - 24, format_tick(nice_ticks(-span, span, 4).size() >= 2
-                                                          ? nice_ticks(-span, span, 4)[1] - nice_ticks(-span, span, 4)[0]
-                                                          : span) + " " + escape(f.unit));
+  s += fmt::format(
+      "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" fill=\"#777\" font-size=\"10\">{} per ring</text>", size - 6,
+      height - 24,
+      format_tick(nice_ticks(-span, span, 4).size() >= 2 ? nice_ticks(-span, span, 4)[1] - nice_ticks(-span, span, 4)[0]
+                                                         : span) +
+          " " + escape(f.unit));
   return s + "</svg>";
 }
 

@@ -44,10 +44,12 @@ std::string xy_chart(const XyFrame& f, const std::vector<XySeries>& series) {
     s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>", L - 4, Y(t) + 4, format_tick(t));
   }
   for (double t : nice_ticks(x0, x1, 6)) {
-    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#888\"/>", X(t), T + H, T + H + 4);
+    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#888\"/>", X(t), T + H,
+                     T + H + 4);
     s += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>", X(t), T + H + 16, format_tick(t));
   }
-  s += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>", L + W / 2, f.height - 6, escape(f.x_label));
+  s += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>", L + W / 2, f.height - 6,
+                   escape(f.x_label));
   s += fmt::format("<text transform=\"translate(14,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>", T + H / 2,
                    escape(f.y_label));
   double lx = L;
@@ -56,18 +58,21 @@ std::string xy_chart(const XyFrame& f, const std::vector<XySeries>& series) {
     for (std::size_t i = 0; i < line.x.size() && i < line.y.size(); ++i) {
       pts += fmt::format("{:.1f},{:.1f} ", X(line.x[i]), Y(line.y[i]));
       if (i < line.lo.size() && i < line.hi.size())
-        s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-width=\"1\"/>"
-                         "<line x1=\"{4:.1f}\" y1=\"{1:.1f}\" x2=\"{5:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\"/>"
-                         "<line x1=\"{4:.1f}\" y1=\"{2:.1f}\" x2=\"{5:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>",
-                         X(line.x[i]), Y(line.lo[i]), Y(line.hi[i]), line.colour, X(line.x[i]) - 3, X(line.x[i]) + 3);
+        s += fmt::format(
+            "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-width=\"1\"/>"
+            "<line x1=\"{4:.1f}\" y1=\"{1:.1f}\" x2=\"{5:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\"/>"
+            "<line x1=\"{4:.1f}\" y1=\"{2:.1f}\" x2=\"{5:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>",
+            X(line.x[i]), Y(line.lo[i]), Y(line.hi[i]), line.colour, X(line.x[i]) - 3, X(line.x[i]) + 3);
       if (line.markers)
-        s += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2.4\" fill=\"{}\"/>", X(line.x[i]), Y(line.y[i]), line.colour);
+        s += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2.4\" fill=\"{}\"/>", X(line.x[i]), Y(line.y[i]),
+                         line.colour);
     }
     s += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"{}/>", pts, line.colour,
                      line.dashed ? " stroke-dasharray=\"5,3\"" : "");
-    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"32\" x2=\"{1:.1f}\" y2=\"32\" stroke=\"{2}\" stroke-width=\"2\"{3}/>"
-                     "<text x=\"{4:.1f}\" y=\"36\">{5}</text>",
-                     lx, lx + 16, line.colour, line.dashed ? " stroke-dasharray=\"5,3\"" : "", lx + 20, escape(line.label));
+    s += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"32\" x2=\"{1:.1f}\" y2=\"32\" stroke=\"{2}\" stroke-width=\"2\"{3}/>"
+        "<text x=\"{4:.1f}\" y=\"36\">{5}</text>",
+        lx, lx + 16, line.colour, line.dashed ? " stroke-dasharray=\"5,3\"" : "", lx + 20, escape(line.label));
     lx += 30 + 6.0 * static_cast<double>(line.label.size());
   }
   return s + "</svg>";

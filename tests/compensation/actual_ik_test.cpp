@@ -23,7 +23,8 @@ double check_hits(const MachineModel& model, const ClPoint& cl, const Setup& set
   const ActualIkOutcome r = solve_actual(model, cl, setup, *nominal.position, o);
   INFO(r.message);
   REQUIRE(r.ok());
-  const ToolPoseT<double> p = model.tool_pose(*r.position, setup, reversal_state(model, *r.position, o.previous_actual));
+  const ToolPoseT<double> p =
+      model.tool_pose(*r.position, setup, reversal_state(model, *r.position, o.previous_actual));
   CHECK((p.tip_mm - cl.tip_mm).norm() <= 1e-6);
   CHECK(std::atan2(p.axis.cross(cl.axis).norm(), p.axis.dot(cl.axis)) <= 1e-8);
   const ToolPoseT<double> miss = model.tool_pose(*nominal.position, setup);
@@ -95,9 +96,15 @@ TEST_CASE("solve_actual with reversal follows the direction of the command") {
 TEST_CASE("solve_actual on a BC head") {
   const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/gantry-bc-head.toml");
   ErrorParameters p;
-  for (const auto& [n, v] : std::vector<std::pair<std::string, double>>{{"EX0C", 0.01}, {"EY0C", -0.015}, {"EA0C", 2e-5},
-                                                                        {"EB0C", -3e-5}, {"EX0B", 0.02}, {"EZ0B", -0.01},
-                                                                        {"EA0B", 4e-5}, {"EC0B", 2e-5}, {"EB0B", 1e-5}})
+  for (const auto& [n, v] : std::vector<std::pair<std::string, double>>{{"EX0C", 0.01},
+                                                                        {"EY0C", -0.015},
+                                                                        {"EA0C", 2e-5},
+                                                                        {"EB0C", -3e-5},
+                                                                        {"EX0B", 0.02},
+                                                                        {"EZ0B", -0.01},
+                                                                        {"EA0B", 4e-5},
+                                                                        {"EC0B", 2e-5},
+                                                                        {"EB0B", 1e-5}})
     p.set(n, v);
   const MachineModel model(m, p);
   Setup setup;

@@ -24,7 +24,8 @@ TEST_CASE("compensate_blocks: two threads, same result", "[adaptive][batch]") {
       NominalSolver local = solver;
       const SplitBlock one = compensate_block(m, s, blocks[i], NominalErrors{}, local, o);
       REQUIRE(one.nodes.size() == parallel[i].nodes.size());
-      for (std::size_t k = 0; k < one.nodes.size(); ++k) CHECK(one.nodes[k].q.linear_mm == parallel[i].nodes[k].q.linear_mm);
+      for (std::size_t k = 0; k < one.nodes.size(); ++k)
+        CHECK(one.nodes[k].q.linear_mm == parallel[i].nodes[k].q.linear_mm);
       CHECK(one.max_error_mm == parallel[i].max_error_mm);
     }
   }

@@ -44,8 +44,11 @@ TEST_CASE("a block passing near the singular orientation (u = +Z on an AC table)
   AdaptiveOptions o;
   o.tolerance_mm = 0.005;
   const SplitBlock split = subdivide_adaptive(m, s, block, o);
-  fmt::print("near-singular block: A {:.3f} -> {:.3f} deg, C travels {:.1f} deg, error {:.3f} mm -> {} output blocks, "
-             "{:.5f} mm {}\n", rad_to_deg(block.from.rotary_rad[0]), rad_to_deg(block.to.rotary_rad[0]), rad_to_deg(c_travel), split.input_error_mm, split.output_blocks(), split.max_error_mm, split.failure);
+  fmt::print(
+      "near-singular block: A {:.3f} -> {:.3f} deg, C travels {:.1f} deg, error {:.3f} mm -> {} output blocks, "
+      "{:.5f} mm {}\n",
+      rad_to_deg(block.from.rotary_rad[0]), rad_to_deg(block.to.rotary_rad[0]), rad_to_deg(c_travel),
+      split.input_error_mm, split.output_blocks(), split.max_error_mm, split.failure);
   REQUIRE(split.ok());
   CHECK(split.max_error_mm <= o.tolerance_mm);
   CHECK(split.rotary_kept_nodes == split.inserted_blocks());  // end points on different branches

@@ -37,7 +37,8 @@ DomeRun subdivide_dome(const Machine& m, const Setup& s, const Errors& errors, c
   for (std::size_t i = 0; i < path.size(); ++i) {
     const IkOutcome ik = solver(path[i].point, previous);
     REQUIRE(ik.ok());
-    r.endpoint = std::max(r.endpoint, (tool_pose<double>(m, *ik.position, s, errors).tip_mm - path[i].point.tip_mm).norm());
+    r.endpoint =
+        std::max(r.endpoint, (tool_pose<double>(m, *ik.position, s, errors).tip_mm - path[i].point.tip_mm).norm());
     if (i > 0 && !path[i].rapid) {
       const ClBlock b{path[i - 1].point, path[i].point, previous, *ik.position};
       const SplitBlock split = subdivide_adaptive(m, s, b, errors, solver, o);
@@ -62,8 +63,10 @@ TEST_CASE("adaptive subdivision with an error model (dome path)", "[adaptive][mo
   const test::LocationErrors errors;
   const test::ModelSolver<test::LocationErrors> solver{m, s, errors};
   const DomeRun r = subdivide_dome(m, s, errors, solver);
-  fmt::print("adaptive on the machine with errors, dome, 0.005 mm: {} -> {} blocks, largest error {:.4f} -> {:.5f} mm, "
-             "block ends {:.2e} mm\n", r.blocks, r.output, r.before, r.after, r.endpoint);
+  fmt::print(
+      "adaptive on the machine with errors, dome, 0.005 mm: {} -> {} blocks, largest error {:.4f} -> {:.5f} mm, "
+      "block ends {:.2e} mm\n",
+      r.blocks, r.output, r.before, r.after, r.endpoint);
   CHECK(r.endpoint < 1e-8);
   CHECK(r.after <= r.tolerance);
 }
@@ -88,8 +91,10 @@ TEST_CASE("adaptive subdivision with the project's error model and compensated I
     return o;
   };
   const DomeRun r = subdivide_dome(m, s, errors, solver);
-  fmt::print("adaptive with truth.json and solve_actual, dome, 0.005 mm: {} -> {} blocks, largest error {:.4f} -> "
-             "{:.5f} mm (block ends {:.2e} mm)\n", r.blocks, r.output, r.before, r.after, r.endpoint);
+  fmt::print(
+      "adaptive with truth.json and solve_actual, dome, 0.005 mm: {} -> {} blocks, largest error {:.4f} -> "
+      "{:.5f} mm (block ends {:.2e} mm)\n",
+      r.blocks, r.output, r.before, r.after, r.endpoint);
   CHECK(r.endpoint < 1e-5);  // solve_actual converges to well below the 0.1 µm word resolution
   CHECK(r.after <= r.tolerance);
 }

@@ -49,10 +49,11 @@ PostSummary post_dome(nonlinear::Method method, double tolerance_mm, const std::
 
 TEST_CASE("post --tolerance 0.005 (adaptive) on the dome path: verified within 5 um", "[adaptive][post]") {
   const PostSummary s = post_dome(nonlinear::Method::adaptive, 0.005, "adaptive_post_test_out.nc");
-  fmt::print("post, dome, adaptive 0.005 mm: {} motions -> {} blocks; verify: contour {:.5f} mm (line {}), "
-             "orientation {:.4f} deg, block ends {:.6f} mm\n",
-             s.motions_in, s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line,
-             rad_to_deg(s.verify.max_orientation_rad), s.verify.max_endpoint_mm);
+  fmt::print(
+      "post, dome, adaptive 0.005 mm: {} motions -> {} blocks; verify: contour {:.5f} mm (line {}), "
+      "orientation {:.4f} deg, block ends {:.6f} mm\n",
+      s.motions_in, s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line,
+      rad_to_deg(s.verify.max_orientation_rad), s.verify.max_endpoint_mm);
   CHECK(s.verify.max_contour_mm <= 0.005);
   CHECK(s.blocks_out > s.motions_in);
 }

@@ -52,10 +52,11 @@ TEST_CASE("adaptive subdivision of the seed 001 segment", "[adaptive][seed001]")
     REQUIRE(split.ok());
     const int ideal = ideal_block_count(m, s, b, NominalErrors{}, NominalSolver{m, s}, tolerance);
     const double check = reexecute(m, s, b, split, 2000);
-    fmt::print("adaptive, seed 001, tolerance {} mm: {} output blocks ({} added; ideal {}, 1/n² law {}), largest "
-               "remaining error {:.5f} mm (re-executed {:.5f})\n",
-               tolerance, split.output_blocks(), split.inserted_blocks(), ideal,
-               square_law_blocks(split.input_error_mm, tolerance), split.max_error_mm, check);
+    fmt::print(
+        "adaptive, seed 001, tolerance {} mm: {} output blocks ({} added; ideal {}, 1/n² law {}), largest "
+        "remaining error {:.5f} mm (re-executed {:.5f})\n",
+        tolerance, split.output_blocks(), split.inserted_blocks(), ideal,
+        square_law_blocks(split.input_error_mm, tolerance), split.max_error_mm, check);
     CHECK(split.max_error_mm <= tolerance);
     CHECK(check <= tolerance * 1.001);
     CHECK(split.output_blocks() <= 1.25 * ideal);
@@ -83,10 +84,11 @@ TEST_CASE("adaptive subdivision of the dome path to 5 um", "[adaptive][dome]") {
     after = std::max(after, split.max_error_mm);
     check = std::max(check, reexecute(m, s, b, split, 200));
   }
-  fmt::print("adaptive, dome path, tolerance 0.005 mm: {} blocks -> {} ({} added); ideal {} (ratio {:.3f}), 1/n² law {} "
-             "(ratio {:.3f}); largest error {:.4f} -> {:.5f} mm (re-executed {:.5f})\n",
-             blocks.size(), output, output - int(blocks.size()), ideal, double(output) / ideal, square_law,
-             double(output) / square_law, before, after, check);
+  fmt::print(
+      "adaptive, dome path, tolerance 0.005 mm: {} blocks -> {} ({} added); ideal {} (ratio {:.3f}), 1/n² law {} "
+      "(ratio {:.3f}); largest error {:.4f} -> {:.5f} mm (re-executed {:.5f})\n",
+      blocks.size(), output, output - int(blocks.size()), ideal, double(output) / ideal, square_law,
+      double(output) / square_law, before, after, check);
   CHECK(before == Approx(1.0).epsilon(0.2));
   CHECK(after <= o.tolerance_mm);
   CHECK(check <= o.tolerance_mm * 1.001);

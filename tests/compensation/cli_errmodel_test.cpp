@@ -36,8 +36,8 @@ TEST_CASE("plan, simulate and identify on the command line") {
     REQUIRE(run("simulate " + machine + " --model " + clean + "truth.json --noise-um 0.5 --seed 4 -o " + d + f +
                     "_data.csv " + d + f + ".csv",
                 d + "log") == 0);
-  REQUIRE(run("identify " + machine + " --report " + d + "r.html -o " + d + "model.json " + d + "bb_h250_data.csv " + d +
-                  "bb_h300_data.csv " + d + "sph_data.csv",
+  REQUIRE(run("identify " + machine + " --report " + d + "r.html -o " + d + "model.json " + d + "bb_h250_data.csv " +
+                  d + "bb_h300_data.csv " + d + "sph_data.csv",
               d + "log") == 0);
   const std::string report = read(d + "log");
   CHECK(report.find("rank 8 of 10") != std::string::npos);
@@ -51,7 +51,8 @@ TEST_CASE("plan, simulate and identify on the command line") {
     CHECK(run("identify " + machine + " -o " + d + "keep.json " + d + "missing.csv", d + "log") == 2);
     CHECK(read(d + "keep.json") == "good");
     std::ofstream(d + "bad.json") << "{\"parameters\": {\"EQ0C\": 1}}";
-    CHECK(run("simulate " + machine + " --model " + d + "bad.json -o " + d + "keep.json " + d + "bb_h250.csv", d + "log") == 2);
+    CHECK(run("simulate " + machine + " --model " + d + "bad.json -o " + d + "keep.json " + d + "bb_h250.csv",
+              d + "log") == 2);
     CHECK(read(d + "log").find("bad.json:1") != std::string::npos);
     CHECK(read(d + "keep.json") == "good");
     CHECK(run("identify " + machine + " --bogus -o x.json a.csv", d + "log") == 1);

@@ -58,8 +58,10 @@ const FigureTrend& trend(const Comparison& c, const std::string& name) {
 /// A C-axis ballbar run: counter-clockwise C = 0…350°, then clockwise 350…0° (step 10°), with
 /// ΔL = d cos 2C, the clockwise run lifted by h (the hysteresis).
 MeasurementSet c_ballbar(double d_um, double h_um, double bar_mm) {
-  std::string csv = fmt::format("# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: {}\n"
-                                "# instrument_uncertainty: 0.2\nt,X,Y,Z,A,C,L\n", bar_mm);
+  std::string csv = fmt::format(
+      "# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: {}\n"
+      "# instrument_uncertainty: 0.2\nt,X,Y,Z,A,C,L\n",
+      bar_mm);
   int t = 0;
   const auto row = [&](int c_deg, double lift_um) {
     const double dl_um = d_um * std::cos(2.0 * c_deg * M_PI / 180.0) + lift_um;
@@ -186,7 +188,8 @@ TEST_CASE("compare: the command line, its page, and what it refuses", "[compare]
   const std::string args = "compare --machine " + machine + " --tolerance A=10 ";
   REQUIRE(test::run_ncpost(args + "--html " + html + " " + before + " " + after, log) == 0);
   const std::string out = test::read_text_file(log);
-  CHECK(out.find("A (µm): 15.657 ± 2.915 [FAIL]; 1.566 ± 0.762 [PASS]; -14.091 ± 3.013: better (proven)") != std::string::npos);
+  CHECK(out.find("A (µm): 15.657 ± 2.915 [FAIL]; 1.566 ± 0.762 [PASS]; -14.091 ± 3.013: better (proven)") !=
+        std::string::npos);
   CHECK(test::read_text_file(html).find("<svg") != std::string::npos);
   // in the wrong order by date, another test, models mixed with data, one session: nothing compared
   CHECK(test::run_ncpost(args + after + " " + before, log) == 2);
@@ -195,6 +198,8 @@ TEST_CASE("compare: the command line, its page, and what it refuses", "[compare]
   other.replace(other.find("# tool_point: 0, 0, 0"), 21, "# tool_point: 0, 0, 50");  // another point measured
   CHECK(test::run_ncpost(args + before + " " + test::write_text_file(dir + "/other.csv", other), log) == 2);
   CHECK(test::read_text_file(log).find("not the same test") != std::string::npos);
-  CHECK(test::run_ncpost(args + before + " " + std::string(NCPOST_SOURCE_DIR) + "/samples/measurements/vmcl600/model.json", log) == 1);
+  CHECK(test::run_ncpost(
+            args + before + " " + std::string(NCPOST_SOURCE_DIR) + "/samples/measurements/vmcl600/model.json", log) ==
+        1);
   CHECK(test::run_ncpost(args + before, log) == 1);
 }

@@ -52,19 +52,22 @@ std::string warm_ballbar(const std::string& sample, double temperature_c, double
 TEST_CASE("identify: conditions shown, lengths corrected to 20 °C, temperatures compared", "[conditions][cli]") {
   const std::string d = ncpost::test::make_temp_dir("ncpost_conditions_cli") + "/";
   std::string machine_text = read_text_file(source("machines/ac-trunnion.toml"));
-  machine_text.replace(machine_text.find("[machine]\n"), 10, "[machine]\nserial = \"AC-0815\"\nowner = \"Werkzeugbau Nord\"\n");
+  machine_text.replace(machine_text.find("[machine]\n"), 10,
+                       "[machine]\nserial = \"AC-0815\"\nowner = \"Werkzeugbau Nord\"\n");
   const std::string machine = ncpost::test::write_text_file(d + "ac.toml", machine_text);
   const std::string dir = source("samples/measurements/ac-trunnion/");
   const double alpha = 11.5e-6;
-  const std::string header = "# temperature: 23.5\n# material_expansion: 11.5e-6\n# instrument: QC20-W\n# serial: B1234\n"
-                             "# operator: A. Meier\n# date: 2026-11-20T09:30\n# humidity: 45\n";
+  const std::string header =
+      "# temperature: 23.5\n# material_expansion: 11.5e-6\n# instrument: QC20-W\n# serial: B1234\n"
+      "# operator: A. Meier\n# date: 2026-11-20T09:30\n# humidity: 45\n";
   ncpost::test::write_text_file(d + "h250.csv", warm_ballbar(dir + "ballbar_h250_data.csv", 23.5, alpha, header));
   ncpost::test::write_text_file(d + "h300.csv", warm_ballbar(dir + "ballbar_h300_data.csv", 23.5, alpha,
                                                              "# temperature: 23.5\n# material_expansion: 11.5e-6\n"));
   const std::string at_20 = dir + "ballbar_h250_data.csv " + dir + "ballbar_h300_data.csv " + dir + "sphere_data.csv";
-  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "m20.json " + at_20, d + "log20") == 0);
-  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "warm.json --report " + d +
-                                       "r.html " + d + "h250.csv " + d + "h300.csv " + dir + "sphere_data.csv",
+  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "m20.json " + at_20,
+                                   d + "log20") == 0);
+  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "warm.json --report " +
+                                       d + "r.html " + d + "h250.csv " + d + "h300.csv " + dir + "sphere_data.csv",
                                    d + "log") == 0);
   const std::string log = read_text_file(d + "log");
   INFO(log);
@@ -93,10 +96,11 @@ TEST_CASE("identify: conditions shown, lengths corrected to 20 °C, temperatures
   CHECK(contains(html, "largest change 4.03 µm"));
 
   // a file at 21.0 °C beside files at 23.5 °C: warned on stderr and in the report
-  ncpost::test::write_text_file(d + "h300_cold.csv", warm_ballbar(dir + "ballbar_h300_data.csv", 21.0, alpha,
-                                                                  "# temperature: 21.0\n# material_expansion: 11.5e-6\n"));
-  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "w2.json --report " + d +
-                                       "r2.html " + d + "h250.csv " + d + "h300_cold.csv",
+  ncpost::test::write_text_file(
+      d + "h300_cold.csv",
+      warm_ballbar(dir + "ballbar_h300_data.csv", 21.0, alpha, "# temperature: 21.0\n# material_expansion: 11.5e-6\n"));
+  REQUIRE(ncpost::test::run_ncpost("identify --no-diagnose --machine " + machine + " -o " + d + "w2.json --report " +
+                                       d + "r2.html " + d + "h250.csv " + d + "h300_cold.csv",
                                    d + "log2") == 0);
   const std::string log2 = read_text_file(d + "log2");
   CHECK(contains(log2, "ncpost: warning: the files of this identification were measured 2.5 K apart"));
@@ -114,7 +118,8 @@ double number_after(const std::string& html, const std::string& label) {
 
 }  // namespace
 
-TEST_CASE("identify: ISO 14253-1 verdicts with U and their budgets; tolerances by option and machine file", "[decision][cli]") {
+TEST_CASE("identify: ISO 14253-1 verdicts with U and their budgets; tolerances by option and machine file",
+          "[decision][cli]") {
   const std::string d = ncpost::test::make_temp_dir("ncpost_decision_cli") + "/";
   const std::string machine = ncpost::test::write_text_file(
       d + "ac.toml", read_text_file(source("machines/ac-trunnion.toml")) + "\n[tolerances]\nG = 0.001\n");
@@ -138,15 +143,17 @@ TEST_CASE("identify: ISO 14253-1 verdicts with U and their budgets; tolerances b
   CHECK(by_file.find("U = 1 µm (k = 2) per reading; G is the difference of two readings") != std::string::npos);
   CHECK(by_file.find("Verdicts by the ISO 14253-1 decision rule") != std::string::npos);
   // --tolerance overrides the machine file: G + U within 1000 µm → PASS
-  REQUIRE(ncpost::test::run_ncpost(base + "--tolerance G=1000 --report " + d + "wide.html " + d + "h250.csv", d + "log") == 0);
+  REQUIRE(ncpost::test::run_ncpost(base + "--tolerance G=1000 --report " + d + "wide.html " + d + "h250.csv",
+                                   d + "log") == 0);
   const std::string wide = read_text_file(d + "wide.html");
   CHECK(wide.find(measured + fmt::format("{:.2f} ± 1.41 (U lacks repeatability)</td>", g_um)) != std::string::npos);
   const auto row = wide.find(measured);
   REQUIRE(row != std::string::npos);
   CHECK(wide.substr(row, wide.find("</tr>", row) - row).find("<td class=\"pass\">PASS</td>") != std::string::npos);
   // a tolerance equal to G itself: G − U < T < G + U, neither proven
-  REQUIRE(ncpost::test::run_ncpost(base + fmt::format("--tolerance G={:.2f} --report ", g_um) + d + "edge.html " + d + "h250.csv",
-                                   d + "log") == 0);
+  REQUIRE(ncpost::test::run_ncpost(
+              base + fmt::format("--tolerance G={:.2f} --report ", g_um) + d + "edge.html " + d + "h250.csv",
+              d + "log") == 0);
   const std::string edge = read_text_file(d + "edge.html");
   const auto edge_row = edge.find(measured);
   REQUIRE(edge_row != std::string::npos);
@@ -154,14 +161,15 @@ TEST_CASE("identify: ISO 14253-1 verdicts with U and their budgets; tolerances b
         std::string::npos);
   // a kind that is no ISO figure is a usage error
   CHECK(ncpost::test::run_ncpost(base + "--tolerance Q=3 " + d + "h250.csv", d + "bad") == 1);
-  CHECK(read_text_file(d + "bad").rfind("ncpost: error: --tolerance: unknown figure kind 'Q'", 0) == 0);  // before any reading
+  CHECK(read_text_file(d + "bad").rfind("ncpost: error: --tolerance: unknown figure kind 'Q'", 0) ==
+        0);  // before any reading
 }
 
 TEST_CASE("identify: the tool-tip claims name the region the data cover", "[decision][cli]") {
   const std::string d = ncpost::test::make_temp_dir("ncpost_region_cli") + "/";
   const std::string dir = source("samples/measurements/ac-trunnion/");
-  REQUIRE(ncpost::test::run_ncpost("identify --machine " + source("machines/ac-trunnion.toml") + " -o " + d + "m.json " + dir +
-                                       "ballbar_h250_data.csv",
+  REQUIRE(ncpost::test::run_ncpost("identify --machine " + source("machines/ac-trunnion.toml") + " -o " + d +
+                                       "m.json " + dir + "ballbar_h250_data.csv",
                                    d + "log") == 0);
   const std::string log = read_text_file(d + "log");
   INFO(log);

@@ -45,7 +45,8 @@ std::vector<std::string> value_lines(const std::string& file) {
   std::istringstream in(file);
   std::string line;
   while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#' && line[0] != ';' && line != "%_N_AX_EEC_INI" && line != "CHANDATA(1)" && line != "M17")
+    if (!line.empty() && line[0] != '#' && line[0] != ';' && line != "%_N_AX_EEC_INI" && line != "CHANDATA(1)" &&
+        line != "M17")
       lines.push_back(line);
   return lines;
 }
@@ -65,7 +66,8 @@ void check_in_report(const std::string& html, const std::vector<std::string>& li
 
 }  // namespace
 
-TEST_CASE("control entries: EXX:p1 = 100 µm/m in the report as the linuxcnc, siemens and isg files have it", "[report][export]") {
+TEST_CASE("control entries: EXX:p1 = 100 µm/m in the report as the linuxcnc, siemens and isg files have it",
+          "[report][export]") {
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
   ErrorParameters p;
   p.set("EXX:p1", 1e-4);  // X goes 30 µm too far at X = 300
@@ -98,7 +100,8 @@ TEST_CASE("control entries: EXX:p1 = 100 µm/m in the report as the linuxcnc, si
   }
 }
 
-TEST_CASE("control entries: EY0C = 20 µm in the report as the corrected machine file has it (the default)", "[report][export]") {
+TEST_CASE("control entries: EY0C = 20 µm in the report as the corrected machine file has it (the default)",
+          "[report][export]") {
   const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
   ErrorParameters p;
   p.set("EY0C", 0.020);
@@ -119,7 +122,8 @@ TEST_CASE("control entries: EY0C = 20 µm in the report as the corrected machine
   CHECK(isg.find("location errors EY0C: a one-axis table cannot move an axis line") != std::string::npos);
 }
 
-TEST_CASE("identify --control: the reports hold what ncpost export writes from the model file", "[report][export][cli]") {
+TEST_CASE("identify --control: the reports hold what ncpost export writes from the model file",
+          "[report][export][cli]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("ncpost_control_entries_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -127,14 +131,17 @@ TEST_CASE("identify --control: the reports hold what ncpost export writes from t
   // laser data of the VMCL600, ISG lists of X Y Z
   const std::string vmc = " --machine " + test::source("machines/vmcl600.toml");
   std::string laser;
-  for (const auto& e : fs::directory_iterator(test::source("samples/measurements/vmcl600/data"))) laser += " " + e.path().string();
-  REQUIRE(test::run_ncpost("identify --control isg" + vmc + " --report " + d + "laser.html -o " + d + "laser.json" + laser,
-                           d + "log") == 0);
+  for (const auto& e : fs::directory_iterator(test::source("samples/measurements/vmcl600/data")))
+    laser += " " + e.path().string();
+  REQUIRE(
+      test::run_ncpost("identify --control isg" + vmc + " --report " + d + "laser.html -o " + d + "laser.json" + laser,
+                       d + "log") == 0);
   const std::string laser_html = test::read_text_file(d + "laser.html");
   for (const char* axis : {"X", "Y", "Z"}) {
     INFO("axis " << axis);
-    REQUIRE(test::run_ncpost(std::string("export --format isg --axis ") + axis + vmc + " -o " + d + "a.lis " + d + "laser.json",
-                             d + "log") == 0);
+    REQUIRE(test::run_ncpost(
+                std::string("export --format isg --axis ") + axis + vmc + " -o " + d + "a.lis " + d + "laser.json",
+                d + "log") == 0);
     check_in_report(laser_html, value_lines(test::read_text_file(d + "a.lis")));
   }
   // ballbar and sphere data of a five-axis machine, default entries: the corrected machine file
@@ -158,7 +165,8 @@ TEST_CASE("identify --control: the reports hold what ncpost export writes from t
   }
   CHECK(rotary.size() == 9);  // [axes.A] type direction pivot limits, [axes.C] type direction pivot
   check_in_report(test::read_text_file(d + "r.html"), rotary);
-  CHECK(test::run_ncpost("identify --control heidenhain --machine " + s + "machine.toml -o " + d + "m2.json " + s + "sphere.csv",
-                         d + "log") == 1);
+  CHECK(test::run_ncpost(
+            "identify --control heidenhain --machine " + s + "machine.toml -o " + d + "m2.json " + s + "sphere.csv",
+            d + "log") == 1);
   fs::remove_all(dir);
 }

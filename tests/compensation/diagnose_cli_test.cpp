@@ -33,11 +33,13 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 }  // namespace
 
-TEST_CASE("identify on the command line: effects found, before / after, measuring-only effects marked", "[diagnose][cli]") {
+TEST_CASE("identify on the command line: effects found, before / after, measuring-only effects marked",
+          "[diagnose][cli]") {
   const fs::path dir = fs::temp_directory_path() / ("ncpost_diagnose_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string d = dir.string() + "/";
-  const std::string machine = "--machine " + std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml";
+  const std::string machine =
+      "--machine " + std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml";
   std::ofstream(d + "truth.json") << R"({"machine": "public-clean", "parameters": {
     "EY0A": 0.018, "EZ0A": -0.012, "EB0A": 4e-05, "EC0A": -2.5e-05,
     "EX0C": 0.015, "EY0C": -0.022, "EA0C": 3e-05, "EB0C": -3.5e-05,
@@ -45,8 +47,8 @@ TEST_CASE("identify on the command line: effects found, before / after, measurin
   REQUIRE(run("plan " + machine + " ballbar-4axis --height 250 --height 300 -o " + d + "ballbar", d + "log") == 0);
   REQUIRE(run("plan " + machine + " sphere --t0 619 -o " + d + "sphere", d + "log") == 0);
   for (const char* f : {"ballbar_h250", "ballbar_h300", "sphere"})
-    REQUIRE(run("simulate " + machine + " --model " + d + "truth.json --noise-um 0.5 --seed 11 -o " + d + f + "_data.csv " +
-                    d + f + ".csv",
+    REQUIRE(run("simulate " + machine + " --model " + d + "truth.json --noise-um 0.5 --seed 11 -o " + d + f +
+                    "_data.csv " + d + f + ".csv",
                 d + "log") == 0);
   const std::string data = d + "ballbar_h250_data.csv " + d + "ballbar_h300_data.csv " + d + "sphere_data.csv";
 
@@ -83,8 +85,8 @@ TEST_CASE("identify on the command line: effects found, before / after, measurin
   double ends_final = 0.0, ends_basic = 0.0;
   const double cut_final = ncpost::test::compensated_cut_mm(m, model.parameters, truth, d + "final.nc", &ends_final);
   const double cut_basic = ncpost::test::compensated_cut_mm(m, basic.parameters, truth, d + "basic.nc", &ends_basic);
-  std::printf("dome on the truth: basic model %.4f mm (block ends %.4f), final model %.4f mm (block ends %.4f)\n", cut_basic,
-              ends_basic, cut_final, ends_final);
+  std::printf("dome on the truth: basic model %.4f mm (block ends %.4f), final model %.4f mm (block ends %.4f)\n",
+              cut_basic, ends_basic, cut_final, ends_final);
   CHECK(cut_final <= 0.006);
   CHECK(ends_final < 0.5e-3);
   CHECK(cut_basic > cut_final);

@@ -18,7 +18,8 @@ using namespace ncpost::comp;
 namespace {
 
 const Machine& machine() {
-  static const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
+  static const Machine m =
+      load_machine(std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/machine.toml");
   return m;
 }
 
@@ -93,7 +94,8 @@ TEST_CASE("reversal is a play: a position approached from above reads command + 
 }
 
 TEST_CASE("drift is zero at t = 0 and follows lin·t + exp·(1 − e^(−t/tau))", "[diagnose][conventions]") {
-  const MeasurementSet s = sphere_set({row({0, 0, 0}, 0, 0, 0.0), row({0, 0, 0}, 0, 0, 900.0), row({0, 0, 0}, 0, 0, 1800.0)});
+  const MeasurementSet s =
+      sphere_set({row({0, 0, 0}, 0, 0, 0.0), row({0, 0, 0}, 0, 0, 900.0), row({0, 0, 0}, 0, 0, 1800.0)});
   ErrorParameters p;
   p.set("drift:Z:t:lin", 1e-6);
   p.set("drift:Z:t:exp", 0.012);

@@ -119,10 +119,12 @@ TEST_CASE("C's tilt growing with A is found by name, at the noise, and the compe
   const double ends_mm = compensated_ends_mm(m, d.final_fit.parameters, truth);
   const double basic_ends_mm = compensated_ends_mm(m, d.basic.parameters, truth);
   double cut_ends_mm = 0.0;
-  const double cut_mm = compensated_cut_mm(m, d.final_fit.parameters, truth, "diagnose_coupled.nc", &cut_ends_mm, 0.002);
-  std::printf("  tool tip at the CL points on the truth: basic model %.2f um, final model %.2f um; written program: "
-              "contour %.2f um, block ends %.2f um\n",
-              1e3 * basic_ends_mm, 1e3 * ends_mm, 1e3 * cut_mm, 1e3 * cut_ends_mm);
+  const double cut_mm =
+      compensated_cut_mm(m, d.final_fit.parameters, truth, "diagnose_coupled.nc", &cut_ends_mm, 0.002);
+  std::printf(
+      "  tool tip at the CL points on the truth: basic model %.2f um, final model %.2f um; written program: "
+      "contour %.2f um, block ends %.2f um\n",
+      1e3 * basic_ends_mm, 1e3 * ends_mm, 1e3 * cut_mm, 1e3 * cut_ends_mm);
   CHECK(ends_mm < 2.5e-3);
   CHECK(cut_ends_mm < 2.5e-3);
   CHECK(cut_mm < 2.5e-3);  // the written program subdivided to 2 µm, executed on the truth

@@ -40,12 +40,14 @@ void check_case(const Case& c, std::uint64_t seed) {
     // the measuring time, and the time constant
     const std::string e = c.effect;
     auto law = [&](const ErrorParameters& p, double t) {
-      return p.value_or(e + ":lin", 0.0) * t + p.value_or(e + ":exp", 0.0) * (1.0 - std::exp(-t / p.value_or(e + ":tau", 600.0)));
+      return p.value_or(e + ":lin", 0.0) * t +
+             p.value_or(e + ":exp", 0.0) * (1.0 - std::exp(-t / p.value_or(e + ":tau", 600.0)));
     };
     double worst_um = 0.0, t_end = 0.0;
     for (const auto& s : sets)
       for (const auto& row : s.rows) {
-        worst_um = std::max(worst_um, 1e3 * std::abs(law(d.final_fit.parameters, row.time_s) - law(c.extra, row.time_s)));
+        worst_um =
+            std::max(worst_um, 1e3 * std::abs(law(d.final_fit.parameters, row.time_s) - law(c.extra, row.time_s)));
         t_end = std::max(t_end, row.time_s);
       }
     std::printf("  drift law within %.3f um of the truth over 0..%.0f s (truth %.3f um at the end)\n", worst_um, t_end,

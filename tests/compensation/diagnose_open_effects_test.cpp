@@ -41,7 +41,8 @@ TEST_CASE("ECC six per revolution is found by name, at the noise, nothing else a
   no_false_attribution(d);
 }
 
-TEST_CASE("A local bump of ECC is modelled as C's table, at the noise, no harmonics or cross terms", "[diagnose][open]") {
+TEST_CASE("A local bump of ECC is modelled as C's table, at the noise, no harmonics or cross terms",
+          "[diagnose][open]") {
   const Machine m = public_machine();
   const comp::ErrorParameters truth = truth_with(m, ecc_bump(40e-6, 120.0, 12.0));
   const auto sets = simulate_plan(m, open_plan(m), truth, 0.5, 11);
@@ -62,6 +63,7 @@ TEST_CASE("A local bump of ECC is modelled as C's table, at the noise, no harmon
   comp::ErrorParameters model = d.final_fit.parameters;
   double truth_error = 0.0;
   const double off_um = worst_prediction_um(m, truth, model, &truth_error);
-  std::printf("  identified table vs the truth over the working space: %.3f um (truth off nominal %.1f um)\n", off_um, truth_error);
+  std::printf("  identified table vs the truth over the working space: %.3f um (truth off nominal %.1f um)\n", off_um,
+              truth_error);
   CHECK(off_um < 0.1 * truth_error);
 }

@@ -53,7 +53,8 @@ TEST_CASE("A rotary table is interpolated linearly round the turn", "[diagnose][
   CHECK(f2(c, deg_to_rad(180.0), false).motion_rad[2] == Approx(3e-6));
 }
 
-TEST_CASE("The model JSON carries ECC:h6 and C's table; the machine built from it uses them", "[diagnose][open][names]") {
+TEST_CASE("The model JSON carries ECC:h6 and C's table; the machine built from it uses them",
+          "[diagnose][open][names]") {
   const Machine m = public_machine();
   comp::ModelFile file;
   file.machine = "public-clean";

@@ -38,7 +38,8 @@ TEST_CASE("False-attribution rate over noise-only sets", "[diagnose][open][rate]
     const comp::DiagnoseResult d = comp::diagnose(m, sets, comp::basic_parameters(m));
     if (!d.added.empty()) {
       ++false_sets;
-      std::printf("  seed %d: added %s (p %.3g)\n", 1000 + 37 * k, d.added.front().candidate.effect.c_str(), d.added.front().p_value);
+      std::printf("  seed %d: added %s (p %.3g)\n", 1000 + 37 * k, d.added.front().candidate.effect.c_str(),
+                  d.added.front().p_value);
     }
     if (!d.unexplained.empty()) {
       ++unexplained_sets;
@@ -47,8 +48,8 @@ TEST_CASE("False-attribution rate over noise-only sets", "[diagnose][open][rate]
     }
   }
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("noise-only: %d of %d sets with an effect added, %d with structure reported unexplained (%.1f s)\n", false_sets,
-              seeds, unexplained_sets, sec);
+  std::printf("noise-only: %d of %d sets with an effect added, %d with structure reported unexplained (%.1f s)\n",
+              false_sets, seeds, unexplained_sets, sec);
   CHECK(false_sets + unexplained_sets <= 1);
 }
 
@@ -64,7 +65,8 @@ struct Counts {
 /// for an error of C growing with A: its mean amplitude; "" for noise-only data); an effect added
 /// outside it is a false attribution (`wrong`).
 template <class Make>
-Counts count_attributions(const char* kind, int n, const Make& make, bool verbose, const std::string& truth_family = "") {
+Counts count_attributions(const char* kind, int n, const Make& make, bool verbose,
+                          const std::string& truth_family = "") {
   Counts c;
   for (int k = 0; k < n; ++k) {
     const auto sets = make(k);
@@ -83,13 +85,14 @@ Counts count_attributions(const char* kind, int n, const Make& make, bool verbos
       for (const auto& e : d.not_attributed) std::printf(" %s", e.c_str());
       std::printf(" ]");
       if (!d.unexplained.empty())
-        std::printf(", unexplained: %s %s vs %c: %s", d.unexplained.front().file.c_str(), d.unexplained.front().value.c_str(),
-                    d.unexplained.front().axis, d.unexplained.front().shape.c_str());
+        std::printf(", unexplained: %s %s vs %c: %s", d.unexplained.front().file.c_str(),
+                    d.unexplained.front().value.c_str(), d.unexplained.front().axis,
+                    d.unexplained.front().shape.c_str());
       std::printf("\n");
     }
   }
-  std::printf("%s: %d of %d sets with an effect added, %d with a false one, %d with structure reported unexplained\n", kind,
-              c.added, c.sets, c.wrong, c.unexplained);
+  std::printf("%s: %d of %d sets with an effect added, %d with a false one, %d with structure reported unexplained\n",
+              kind, c.added, c.sets, c.wrong, c.unexplained);
   return c;
 }
 
@@ -103,7 +106,9 @@ TEST_CASE("Wrong-model sets: an error of C whose amplitude grows with A is repor
   // 30 µrad of ECC:h3 per rad of A: 47 µrad at A = 90°
   const Counts c = count_attributions(
       "ECC:h3 growing with A", 3,
-      [&](int k) { return simulate_h3_growing_with_a(m, plans, truth, 30e-6, 0.5, 500 + 11 * static_cast<std::uint64_t>(k)); },
+      [&](int k) {
+        return simulate_h3_growing_with_a(m, plans, truth, 30e-6, 0.5, 500 + 11 * static_cast<std::uint64_t>(k));
+      },
       true, "ECC:h3");
   // measured (3 seeds): ECC:h3 at the mean amplitude in 3 of 3, structure reported in 1 of 3; an
   // effect of another component or axis (a false attribution) in none
@@ -142,20 +147,25 @@ TEST_CASE("False-attribution sweep over many noise-only and wrong-model sets", "
   const comp::ErrorParameters truth = truth_with(m, {});
   const auto t0 = std::chrono::steady_clock::now();
   const Counts noise = count_attributions(
-      "noise-only", n, [&](int k) { return simulate_plan(m, plans, truth, 0.5, 7000 + 37 * static_cast<std::uint64_t>(k)); },
-      false);
+      "noise-only", n,
+      [&](int k) { return simulate_plan(m, plans, truth, 0.5, 7000 + 37 * static_cast<std::uint64_t>(k)); }, false);
   const Counts wrong = count_attributions(
       "ECC:h3 growing with A", n,
-      [&](int k) { return simulate_h3_growing_with_a(m, plans, truth, 30e-6, 0.5, 9000 + 11 * static_cast<std::uint64_t>(k)); },
+      [&](int k) {
+        return simulate_h3_growing_with_a(m, plans, truth, 30e-6, 0.5, 9000 + 11 * static_cast<std::uint64_t>(k));
+      },
       false, "ECC:h3");
   const Counts coupled = count_attributions(
       "C tilt growing with A (in the model: EA0C:A:p1)", n,
-      [&](int k) { return simulate_coupled_tilt(m, plans, truth, 40e-6, 0.5, 11000 + 13 * static_cast<std::uint64_t>(k)); },
+      [&](int k) {
+        return simulate_coupled_tilt(m, plans, truth, 40e-6, 0.5, 11000 + 13 * static_cast<std::uint64_t>(k));
+      },
       false, "EA0C:A:p1");
-  std::printf("sweep of %d sets each (%.0f s): noise-only %d added / %d unexplained; ECC:h3 growing with A %d added "
-              "(%d false) / %d unexplained; coupled tilt %d added (%d false) / %d unexplained\n",
-              n, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), noise.added, noise.unexplained,
-              wrong.added, wrong.wrong, wrong.unexplained, coupled.added, coupled.wrong, coupled.unexplained);
+  std::printf(
+      "sweep of %d sets each (%.0f s): noise-only %d added / %d unexplained; ECC:h3 growing with A %d added "
+      "(%d false) / %d unexplained; coupled tilt %d added (%d false) / %d unexplained\n",
+      n, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), noise.added, noise.unexplained,
+      wrong.added, wrong.wrong, wrong.unexplained, coupled.added, coupled.wrong, coupled.unexplained);
   CHECK(noise.added + noise.unexplained <= std::max(2, n / 25));
   CHECK(wrong.wrong == 0);
   CHECK(coupled.wrong == 0);

@@ -9,8 +9,8 @@
 namespace ncpost::test {
 
 /// Ballbar-4axis at 250 and 300 mm, then the sphere every `sphere_step_deg` of C (t0 619 s).
-inline std::vector<comp::MeasurementSet> open_plan(const Machine& m, double sphere_step_deg = 10.0, int ballbar_points = 500,
-                                                   bool two_ballbars = true) {
+inline std::vector<comp::MeasurementSet> open_plan(const Machine& m, double sphere_step_deg = 10.0,
+                                                   int ballbar_points = 500, bool two_ballbars = true) {
   comp::BallbarPlanOptions b;
   b.heights_mm = two_ballbars ? std::vector<double>{250.0, 300.0} : std::vector<double>{250.0};
   b.points = ballbar_points;
@@ -45,7 +45,8 @@ inline comp::ErrorParameters ecc_bump(double amplitude_rad, double at_deg, doubl
   for (int deg = 0; deg < 360; deg += 2) {
     double d = std::abs(deg - at_deg);
     d = std::min(d, 360.0 - d);
-    p.set(comp::table_parameter_name('C', 'C', deg), amplitude_rad * std::exp(-0.5 * (d / width_deg) * (d / width_deg)));
+    p.set(comp::table_parameter_name('C', 'C', deg),
+          amplitude_rad * std::exp(-0.5 * (d / width_deg) * (d / width_deg)));
   }
   return p;
 }
@@ -54,7 +55,8 @@ inline comp::ErrorParameters ecc_bump(double amplitude_rad, double at_deg, doubl
 /// of `truth` for that row (effects that depend on more than one axis, outside the model's
 /// families: an independent simulation of them).
 template <class Vary>
-inline std::vector<comp::MeasurementSet> simulate_row_by_row(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+inline std::vector<comp::MeasurementSet> simulate_row_by_row(const Machine& m,
+                                                             const std::vector<comp::MeasurementSet>& plans,
                                                              const comp::ErrorParameters& truth, const Vary& vary,
                                                              double noise_um, std::uint64_t seed) {
   (void)m;
@@ -79,7 +81,8 @@ inline std::vector<comp::MeasurementSet> simulate_row_by_row(const Machine& m, c
 
 /// The plan simulated on a truth whose tilt of C about X grows with A (EA0C = base + per_rad · A,
 /// an effect coupling two axes): row by row, each with its own truth.
-inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m,
+                                                               const std::vector<comp::MeasurementSet>& plans,
                                                                const comp::ErrorParameters& truth, double per_rad,
                                                                double noise_um, std::uint64_t seed) {
   const int a = m.index_of('A');
@@ -94,7 +97,8 @@ inline std::vector<comp::MeasurementSet> simulate_coupled_tilt(const Machine& m,
 /// The plan simulated on a truth with an effect outside every family of the model: a
 /// three-per-revolution angular error of C whose amplitude grows with A (ECC:h3:sin = per_rad ·
 /// A, rad per rad of A): wrong-model data for the false-attribution rate.
-inline std::vector<comp::MeasurementSet> simulate_h3_growing_with_a(const Machine& m, const std::vector<comp::MeasurementSet>& plans,
+inline std::vector<comp::MeasurementSet> simulate_h3_growing_with_a(const Machine& m,
+                                                                    const std::vector<comp::MeasurementSet>& plans,
                                                                     const comp::ErrorParameters& truth, double per_rad,
                                                                     double noise_um, std::uint64_t seed) {
   const int a = m.index_of('A');

@@ -72,16 +72,19 @@ void check_wobble_alone(PlanSize size) {
 // and EBC:h2 explain as well (canonical correlation 1.0000 off the rest of the model, measured):
 // the fit reaches the noise with EZC:h1, EYC:h2, EXC:h2 and no tilt at all. The report must say
 // so — EXC:h2 is named an alias of the tilts, with that evidence — rather than call it real.
-TEST_CASE("Wobble with EXC:h2: added, and reported as an alias of the tilts these data cannot separate", "[diagnose][open]") {
+TEST_CASE("Wobble with EXC:h2: added, and reported as an alias of the tilts these data cannot separate",
+          "[diagnose][open]") {
   check_wobble_with_exc(kLight);
 }
-TEST_CASE("Wobble with EXC:h2 on the full plan: added, and reported as an alias of the tilts", "[.][full][diagnose][open]") {
+TEST_CASE("Wobble with EXC:h2 on the full plan: added, and reported as an alias of the tilts",
+          "[.][full][diagnose][open]") {
   check_wobble_with_exc(kFull);
 }
 
 TEST_CASE("Wobble alone: no radial EXC:h2 attributed, or if added it is named an alias", "[diagnose][open]") {
   check_wobble_alone(kLight);
 }
-TEST_CASE("Wobble alone on the full plan: no radial EXC:h2 attributed, or if added it is named an alias", "[.][full][diagnose][open]") {
+TEST_CASE("Wobble alone on the full plan: no radial EXC:h2 attributed, or if added it is named an alias",
+          "[.][full][diagnose][open]") {
   check_wobble_alone(kFull);
 }

@@ -24,7 +24,8 @@ namespace {
 
 std::vector<MeasurementSet> read_sets(const std::string& dir, const Machine& m) {
   std::vector<MeasurementSet> sets;
-  for (const char* f : {"ballbar_h250.csv", "ballbar_h300.csv", "sphere.csv"}) sets.push_back(read_measurement_csv(dir + f, m));
+  for (const char* f : {"ballbar_h250.csv", "ballbar_h300.csv", "sphere.csv"})
+    sets.push_back(read_measurement_csv(dir + f, m));
   return sets;
 }
 
@@ -87,8 +88,10 @@ void check_job_and_measurements() {
     for (std::size_t r = 0; r < set.rows.size(); ++r)
       measured_um = std::max(measured_um, 1e3 * (exact.rows[r].value - fitted.rows[r].value).cwiseAbs().maxCoeff());
   }
-  printf("public-ezc: at the %zu poses of path.cls the final model is off the truth by %.3f um (basic model %.3f um); "
-         "its predictions of the measurements by %.3f um\n", poses, on_path_um, basic_on_path_um, measured_um);
+  printf(
+      "public-ezc: at the %zu poses of path.cls the final model is off the truth by %.3f um (basic model %.3f um); "
+      "its predictions of the measurements by %.3f um\n",
+      poses, on_path_um, basic_on_path_um, measured_um);
   CHECK(on_path_um < 1.0);
   CHECK(measured_um < 1.0);
   CHECK(basic_on_path_um > 10.0 * on_path_um);
@@ -116,10 +119,14 @@ void check_wider_box() {
 // The three checks of public-ezc look at one diagnosis (ezc_result, computed once per process):
 // sections of one test case, so that ctest, which runs each test case in its own process, runs
 // that diagnosis once rather than three times (issue 26).
-TEST_CASE("diagnose public-ezc: EZC:h1 found; the final model predicts the truth on the job, the measurements and a wider box",
-          "[diagnose]") {
+TEST_CASE(
+    "diagnose public-ezc: EZC:h1 found; the final model predicts the truth on the job, the measurements and a wider "
+    "box",
+    "[diagnose]") {
   SECTION("EZC:h1 found, the basic model's 33 um prediction error removed") { check_found_and_removed(); }
-  SECTION("the final model predicts the job's tool tip and the measurements within 1 um") { check_job_and_measurements(); }
+  SECTION("the final model predicts the job's tool tip and the measurements within 1 um") {
+    check_job_and_measurements();
+  }
   SECTION("predictions within 1.5 um (2 sigma) of the truth over a wider box") { check_wider_box(); }
 }
 
@@ -135,9 +142,9 @@ TEST_CASE("diagnose public-clean: nothing added", "[diagnose]") {
   double truth_error_um = 0.0;
   const double off_final = test::worst_prediction_um(m, truth.parameters, d.final_fit.parameters, &truth_error_um);
   const double off_basic = test::worst_prediction_um(m, truth.parameters, d.basic.parameters, nullptr);
-  printf("public-clean: truth's tool-tip error up to %.1f um; basic model off by %.3f um, final (weighted) by %.3f um\n",
-         truth_error_um, off_basic, off_final);
+  printf(
+      "public-clean: truth's tool-tip error up to %.1f um; basic model off by %.3f um, final (weighted) by %.3f um\n",
+      truth_error_um, off_basic, off_final);
   CHECK(off_final < 1.0);
   CHECK(to_model_file(m, d).effects_added.empty());
 }
-

@@ -66,7 +66,7 @@ TEST_CASE("screen_drift chooses the law the data follow", "[diagnose][screening]
   const int m = 600;
   Eigen::VectorXd t(m), g(m);
   for (int i = 0; i < m; ++i) {
-    t[i] = 2.0 * i;                                     // 0 .. 1198 s
+    t[i] = 2.0 * i;                                         // 0 .. 1198 s
     g[i] = std::cos(0.01 * i) + 0.3 * std::sin(0.037 * i);  // d r / d drift of each value
   }
   Eigen::MatrixXd model(m, 1);
@@ -96,8 +96,8 @@ TEST_CASE("screen_drift chooses the law the data follow", "[diagnose][screening]
     CHECK(*s.held.get("drift:Z:t:tau") == Approx(150.0).epsilon(0.15));
   }
   SECTION("no time stamps: aliased") {
-    const DriftScreen s = screen_drift("drift:Z:t", Q, Eigen::VectorXd::Zero(m), data(0, 0, 1), Eigen::VectorXd::Zero(m),
-                                       60.0, 1e-3, 1e-3);
+    const DriftScreen s = screen_drift("drift:Z:t", Q, Eigen::VectorXd::Zero(m), data(0, 0, 1),
+                                       Eigen::VectorXd::Zero(m), 60.0, 1e-3, 1e-3);
     CHECK(s.aliased);
   }
 }

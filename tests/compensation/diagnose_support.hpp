@@ -59,15 +59,17 @@ inline std::vector<comp::MeasurementSet> simulated_sets(const Machine& m, const 
   return sets;
 }
 
-inline comp::DiagnoseResult run_diagnose(const char* title, const Machine& m, const std::vector<comp::MeasurementSet>& sets) {
+inline comp::DiagnoseResult run_diagnose(const char* title, const Machine& m,
+                                         const std::vector<comp::MeasurementSet>& sets) {
   const auto t0 = std::chrono::steady_clock::now();
   comp::DiagnoseResult d = comp::diagnose(m, sets, comp::basic_parameters(m));
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%s: basic rms %.3f max %.3f um -> final rms %.3f max %.3f um (noise from data %.3f um), %.1f s\n", title,
-              d.basic.rms_after_um, d.basic.max_after_um, d.final_fit.rms_after_um, d.final_fit.max_after_um, d.noise_um, sec);
+              d.basic.rms_after_um, d.basic.max_after_um, d.final_fit.rms_after_um, d.final_fit.max_after_um,
+              d.noise_um, sec);
   for (const auto& e : d.added) {
-    std::printf("  + %-16s size %.4g +- %.2g (rms %.3f -> %.3f um, F %.4g, p %.3g)\n", e.candidate.effect.c_str(), e.size,
-                e.size_sigma, e.rms_before_um, e.rms_after_um, e.f_statistic, e.p_value);
+    std::printf("  + %-16s size %.4g +- %.2g (rms %.3f -> %.3f um, F %.4g, p %.3g)\n", e.candidate.effect.c_str(),
+                e.size, e.size_sigma, e.rms_before_um, e.rms_after_um, e.f_statistic, e.p_value);
     for (const auto& q : e.equivalent) std::printf("      (equivalent on these data: %s)\n", q.c_str());
     for (std::size_t i = 0; i < e.values.size(); ++i)
       std::printf("      %-18s %.6g +- %.2g\n", e.values.names()[i].c_str(), e.values.values()[i],
@@ -87,8 +89,8 @@ inline comp::DiagnoseResult run_diagnose(const char* title, const Machine& m, co
 /// out) over the working space of identify_clean_test.cpp (X, Y +-250, Z -150..350 mm, A
 /// -10..100 deg, C any; 2000 poses, workpiece origin of job.json); `truth_error_um` gets the
 /// largest deviation of the first machine from the nominal.
-inline double worst_prediction_um(const Machine& m, const comp::ErrorParameters& truth, const comp::ErrorParameters& model,
-                                  double* truth_error_um) {
+inline double worst_prediction_um(const Machine& m, const comp::ErrorParameters& truth,
+                                  const comp::ErrorParameters& model, double* truth_error_um) {
   const comp::MachineModel actual(m, truth), identified(m, model);
   const Setup setup = dome_setup();
   unsigned state = 12345u;
@@ -127,7 +129,8 @@ inline double worst_prediction_on_path_um(const Machine& m, const comp::ErrorPar
     const IkOutcome ik = solve(m, motion->point, setup, previous);
     if (!ik.ok()) continue;
     previous = *ik.position;
-    worst = std::max(worst, 1e3 * (actual.tool_pose(previous, setup).tip_mm - identified.tool_pose(previous, setup).tip_mm).norm());
+    worst = std::max(
+        worst, 1e3 * (actual.tool_pose(previous, setup).tip_mm - identified.tool_pose(previous, setup).tip_mm).norm());
     ++n;
   }
   if (poses) *poses = n;
@@ -147,7 +150,9 @@ class CompensatedOnTruth final : public KinematicModel {
   AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& r, SolverData& data) const override {
     return compensated_.with_rotary(cl, r, data);
   }
-  ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override { return truth_.tool_pose(q, setup_); }
+  ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override {
+    return truth_.tool_pose(q, setup_);
+  }
   const Machine& machine() const override { return truth_.machine(); }
 
  private:
@@ -176,7 +181,9 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
   PostOptions options;
   options.verify = true;
   options.subdivide = [&](const SolvedPoint& a, const SolvedPoint& b, SolverData& data) {
-    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) { return on_model.solve_quiet(cl, previous, data, nullptr); };
+    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) {
+      return on_model.solve_quiet(cl, previous, data, nullptr);
+    };
     const nonlinear::SplitBlock split = nonlinear::compensate_block(m, setup, {a.cl, b.cl, a.q, b.q}, errors, ik, comp);
     if (!split.ok()) throw std::runtime_error(split.failure);
     std::vector<SolvedPoint> points;
@@ -189,8 +196,10 @@ inline double compensated_cut_mm(const Machine& m, const comp::ErrorParameters& 
   NcWriter writer(out, dialect_named("fanuc"), "XYZAC");
   const PostSummary s = post_program(reader, "path.cls", solver, writer, options);
   out.commit();
-  std::printf("  compensated cut on the truth: %zu motions -> %zu blocks, contour error %.4f mm (line %d), block ends "
-              "%.4f mm\n", s.motions_in, s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line, s.verify.max_endpoint_mm);
+  std::printf(
+      "  compensated cut on the truth: %zu motions -> %zu blocks, contour error %.4f mm (line %d), block ends "
+      "%.4f mm\n",
+      s.motions_in, s.blocks_out, s.verify.max_contour_mm, s.verify.worst_line, s.verify.max_endpoint_mm);
   if (endpoint_mm) *endpoint_mm = s.verify.max_endpoint_mm;
   return s.verify.max_contour_mm;
 }
@@ -223,8 +232,10 @@ inline double compensated_cut_with_reversal_mm(const Machine& m, const comp::Err
       comp::ActualIkOptions ao;
       ao.previous_actual = actual_identified;
       const comp::ActualIkOutcome a = comp::solve_actual(identified, cl, s, *n.position, ao);
-      if (!a.ok()) n.position.reset();
-      else n.position = a.position;
+      if (!a.ok())
+        n.position.reset();
+      else
+        n.position = a.position;
       return n;
     };
     const IkOutcome end = ik(path[i].point, previous);

@@ -174,13 +174,16 @@ Residual residual(const MachineModel& model, char letter, const Applied& applied
   const int axis = model.machine().index_of(letter);
   const Axis& a = model.machine().axes[axis];
   const double lo = a.limits ? a.limits->min : 0.0, hi = a.limits ? a.limits->max : 2.0 * kHalfTurnRad;
-  auto off = [&](double actual, double n) { return std::abs(a.is_rotary() ? std::remainder(actual - n, 2.0 * kHalfTurnRad) : actual - n); };
+  auto off = [&](double actual, double n) {
+    return std::abs(a.is_rotary() ? std::remainder(actual - n, 2.0 * kHalfTurnRad) : actual - n);
+  };
   Residual r;
   for (int k = 0; k < 1000; ++k) {
     const double n = lo + (hi - lo) * (k + 0.371) / 1000.0;
     for (bool falling : {false, true}) {
       if (falling && !applied.both_directions) continue;
-      r.with_file = std::max(r.with_file, off(test::actual_position(model, axis, applied.motor(n, falling), falling), n));
+      r.with_file =
+          std::max(r.with_file, off(test::actual_position(model, axis, applied.motor(n, falling), falling), n));
       r.model_only = std::max(r.model_only, off(test::actual_position(model, axis, n, falling), n));
     }
   }
@@ -264,12 +267,18 @@ std::vector<Family> families() {
     p.set("ECC:h1:sin", 30e-6);
     p.set("EC0C:A:p1", 20e-6);  // the zero of C changes with A: not a table of C
     p.set("EA0C:A:p1", 15e-6);
-    f.push_back({"coupled terms (left out) with a harmonic", &test::ac_trunnion(), 'C', p, {"ECC:h1"}, {"EC0C:A:p1", "EA0C:A:p1"}});
+    f.push_back({"coupled terms (left out) with a harmonic",
+                 &test::ac_trunnion(),
+                 'C',
+                 p,
+                 {"ECC:h1"},
+                 {"EC0C:A:p1", "EA0C:A:p1"}});
   }
   return f;
 }
 
-void check_notes(const std::string& text, const Family& f, const std::vector<std::string>& left_out_too, const std::string& comment) {
+void check_notes(const std::string& text, const Family& f, const std::vector<std::string>& left_out_too,
+                 const std::string& comment) {
   const std::string held = note_line(text, comment + " Held: ");
   INFO(held);
   for (const std::string& h : f.held) CHECK(held.find(h) != std::string::npos);
@@ -286,7 +295,8 @@ void check_notes(const std::string& text, const Family& f, const std::vector<std
 
 }  // namespace
 
-TEST_CASE("export families: every format holds every family within 0.05 µm (µrad), read back independently", "[export]") {
+TEST_CASE("export families: every format holds every family within 0.05 µm (µrad), read back independently",
+          "[export]") {
   for (const Family& f : families()) {
     const MachineModel model(*f.machine, f.p);
     const bool rotary = f.machine->axes[f.machine->index_of(f.axis)].is_rotary();
@@ -316,8 +326,9 @@ TEST_CASE("export families: every format holds every family within 0.05 µm (µr
     const Residual ir = residual(model, f.axis, read_isg(ifile, rotary));
     check_notes(ifile, f, {}, "#");
 
-    fmt::print("{:<45} model {:8.3f} | linuxcnc {:.4f} | siemens {:.4f} | isg {:.4f} {}\n", f.name, lr.model_only * micro,
-               lr.with_file * micro, sr.with_file * micro, ir.with_file * micro, rotary ? "µrad" : "µm");
+    fmt::print("{:<45} model {:8.3f} | linuxcnc {:.4f} | siemens {:.4f} | isg {:.4f} {}\n", f.name,
+               lr.model_only * micro, lr.with_file * micro, sr.with_file * micro, ir.with_file * micro,
+               rotary ? "µrad" : "µm");
     CHECK(lr.model_only > 100.0 * bound);  // the model's own error is there to compensate
     CHECK(lr.with_file <= bound);
     CHECK(sr.with_file <= bound);
@@ -342,7 +353,8 @@ TEST_CASE("export families: the model of ECC:t is the documented periodic interp
           Approx(hand(deg)).margin(1e-12));
 }
 
-TEST_CASE("export ECC:t on the command line: the table in all three files and in the report's entries", "[export][cli]") {
+TEST_CASE("export ECC:t on the command line: the table in all three files and in the report's entries",
+          "[export][cli]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("ncpost_export_ecct_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -361,10 +373,11 @@ TEST_CASE("export ECC:t on the command line: the table in all three files and in
   const std::string machine = " --machine " + test::source("machines/ac-trunnion.toml");
   for (const std::string format : {"linuxcnc", "siemens", "isg"}) {
     INFO(format);
-    REQUIRE(test::run_ncpost("export --format " + format + " --axis C" + machine + " -o " + d + format + " " + d + "model.json",
-                             d + "log") == 0);
+    REQUIRE(test::run_ncpost(
+                "export --format " + format + " --axis C" + machine + " -o " + d + format + " " + d + "model.json",
+                d + "log") == 0);
     const std::string text = test::read_text_file(d + format);
-    const Applied applied = format == "linuxcnc" ? read_linuxcnc(text, true)
+    const Applied applied = format == "linuxcnc"  ? read_linuxcnc(text, true)
                             : format == "siemens" ? read_siemens(text, true)
                                                   : read_isg(text, true);
     const Residual r = residual(model, 'C', applied);
@@ -423,8 +436,8 @@ TEST_CASE("export: a linear table is held at its end values beyond its nodes, sa
     std::fputs(format_model_json(file).c_str(), out);
     std::fclose(out);
   }
-  REQUIRE(test::run_ncpost("export --format isg --axis X --machine " + test::source("machines/vmcl600.toml") + " -o " + d +
-                               "x.lis " + d + "model.json",
+  REQUIRE(test::run_ncpost("export --format isg --axis X --machine " + test::source("machines/vmcl600.toml") + " -o " +
+                               d + "x.lis " + d + "model.json",
                            d + "log") == 0);
   const std::string log = test::read_text_file(d + "log");
   CHECK(log.find("note: beyond the measured travel: EXX:t: from 250 to 300 mm") != std::string::npos);

@@ -46,8 +46,10 @@ std::vector<Row> entry_rows(const std::string& text) {
   std::istringstream in(text);
   for (std::string s; std::getline(in, s);) {
     std::smatch m;
-    if (std::regex_match(s, m, with_coord)) rows.push_back({m[1], m[2].str()[0], std::stod(m[3])});
-    else if (std::regex_match(s, m, machine)) rows.push_back({m[1], m[2].length() ? m[2].str()[0] : ' ', 0.0});
+    if (std::regex_match(s, m, with_coord))
+      rows.push_back({m[1], m[2].str()[0], std::stod(m[3])});
+    else if (std::regex_match(s, m, machine))
+      rows.push_back({m[1], m[2].length() ? m[2].str()[0] : ' ', 0.0});
   }
   return rows;
 }
@@ -170,8 +172,10 @@ TEST_CASE("ncpost export --format heidenhain: exit codes, and docs/exports/ac-tr
   REQUIRE(test::run_ncpost("export --format heidenhain --machine " + machine + " -o " + out + " " + model, log) == 0);
   const std::string written = test::read_text_file(out);
   CHECK(entry_lines(written).size() > 500);
-  CHECK(entry_lines(written) == entry_lines(test::read_text_file(test::source("docs/exports/ac-trunnion-heidenhain.txt"))));
-  CHECK(test::run_ncpost("export --format heidenhain --axis C --machine " + machine + " -o " + dir + "/x " + model, log) == 1);
+  CHECK(entry_lines(written) ==
+        entry_lines(test::read_text_file(test::source("docs/exports/ac-trunnion-heidenhain.txt"))));
+  CHECK(test::run_ncpost("export --format heidenhain --axis C --machine " + machine + " -o " + dir + "/x " + model,
+                         log) == 1);
   CHECK(test::run_ncpost("export --format heidenhain -o " + dir + "/x " + model, log) == 1);
   CHECK_FALSE(std::ifstream(dir + "/x").good());  // refused before anything is written
 }

@@ -35,7 +35,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The list as the control reads it: `key value` lines, `#` comment lines and `/* */` comments skipped.
 struct Lsec {
-  std::map<std::string, double> header;  ///< kopf.* and kw.ssfk.* other than the table
+  std::map<std::string, double> header;    ///< kopf.* and kw.ssfk.* other than the table
   std::vector<double> setpoint, pos, neg;  ///< counts (0.1 µm or 0.0001°)
 };
 
@@ -82,15 +82,16 @@ double lsec_value(const Lsec& l, double x, bool positive) {
   }
   if (x <= l.setpoint.front()) return v.front();
   for (std::size_t i = 0; i + 1 < l.setpoint.size(); ++i)
-    if (x < l.setpoint[i + 1]) return v[i] + (v[i + 1] - v[i]) * (x - l.setpoint[i]) / (l.setpoint[i + 1] - l.setpoint[i]);
+    if (x < l.setpoint[i + 1])
+      return v[i] + (v[i + 1] - v[i]) * (x - l.setpoint[i]) / (l.setpoint[i + 1] - l.setpoint[i]);
   return v.back();
 }
 
 using test::actual_position;
 
 struct Residual {
-  double max_compensated = 0.0;  ///< mm or rad
-  double max_model = 0.0;        ///< the model's own error without the list
+  double max_compensated = 0.0;   ///< mm or rad
+  double max_model = 0.0;         ///< the model's own error without the list
   double max_sign_flipped = 0.0;  ///< the list applied with the other sign
 };
 
@@ -104,7 +105,9 @@ Residual apply_list(const MachineModel& model, char letter, const Lsec& l) {
     programmed.push_back(l.setpoint[i]);
     if (i + 1 < l.setpoint.size()) programmed.push_back(0.5 * (l.setpoint[i] + l.setpoint[i + 1]));
   }
-  auto off = [&](double actual, double n) { return std::abs(rotary ? std::remainder(actual - n, 2.0 * kPi) : actual - n); };
+  auto off = [&](double actual, double n) {
+    return std::abs(rotary ? std::remainder(actual - n, 2.0 * kPi) : actual - n);
+  };
   Residual r;
   for (double p : programmed)
     for (bool positive : {true, false}) {
@@ -143,7 +146,7 @@ TEST_CASE("isg export: +30 µm EXX at X=300 (EXX:p1 = 100 µm/m) is pos = +300 x
   CHECK(text.find("kw.ssfk.table[0].pos -300\n") != std::string::npos);
   const Residual r = apply_list(model, 'X', l);
   CHECK(r.max_model == Approx(0.030).margin(1e-9));
-  CHECK(r.max_compensated < 0.06e-3);  // the 0.1 µm counts' rounding and e'·e = 3 nm
+  CHECK(r.max_compensated < 0.06e-3);                       // the 0.1 µm counts' rounding and e'·e = 3 nm
   CHECK(r.max_sign_flipped == Approx(0.060).margin(1e-5));  // a sign error doubles the error
   CHECK(text.find("Sign: each value is the model's positioning error of X") != std::string::npos);
   CHECK(text.find("113439115.html") != std::string::npos);  // the documentation cited
@@ -171,7 +174,8 @@ TEST_CASE("isg export: the VMCL600 laser model, X Y Z within 0.5 µm at every po
   const MachineModel model(m, file.parameters);
   for (char letter : {'X', 'Y', 'Z'}) {
     const IsgLsecTable table = isg_lsec_table(model, letter);
-    const Residual r = apply_list(model, letter, read_like_isg(format_isg_lsec(table, model, {"model.json", "", "test"})));
+    const Residual r =
+        apply_list(model, letter, read_like_isg(format_isg_lsec(table, model, {"model.json", "", "test"})));
     INFO("axis " << letter << ": model " << r.max_model * 1e3 << " µm, compensated " << r.max_compensated * 1e3
                  << " µm, sign flipped " << r.max_sign_flipped * 1e3 << " µm, " << table.setpoints.size() << " points");
     CHECK(r.max_model > 0.005);
@@ -200,7 +204,8 @@ TEST_CASE("isg export: rotary axes (continuous C modulo, A within its limits) in
     CHECK(l.setpoint.front() == (letter == 'C' ? 0 : -1200000));
     CHECK(l.setpoint.back() == (letter == 'C' ? 3600000 : 1200000));
     const Residual r = apply_list(model, letter, l);
-    INFO("axis " << letter << ": model " << r.max_model * 1e6 << " µrad, compensated " << r.max_compensated * 1e6 << " µrad");
+    INFO("axis " << letter << ": model " << r.max_model * 1e6 << " µrad, compensated " << r.max_compensated * 1e6
+                 << " µrad");
     CHECK(r.max_model > (letter == 'C' ? 50e-6 : 15e-6));
     // 0.0001° counts are 1.75 µrad: rounding within 0.9 µrad, 0.22 µm at a radius of 250 mm
     CHECK(r.max_compensated * 250.0 < 0.5e-3);
@@ -219,7 +224,8 @@ TEST_CASE("isg export on the command line: the list and --help", "[export][cli]"
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
   const MachineModel mm(m, read_model_json(model, &m).parameters);
   const std::string text = test::read_text_file(d + "z.lis");
-  for (const std::string& line : isg_lsec_lines(isg_lsec_table(mm, 'Z'))) CHECK(text.find(line + "\n") != std::string::npos);
+  for (const std::string& line : isg_lsec_lines(isg_lsec_table(mm, 'Z')))
+    CHECK(text.find(line + "\n") != std::string::npos);
   CHECK(test::read_text_file(d + "log").find("EXZ:t (") != std::string::npos);  // left-out terms on stderr
   REQUIRE(test::run_ncpost("export --help", d + "help") == 0);
   CHECK(test::read_text_file(d + "help").find("isg: ISG-kernel / Beckhoff TwinCAT CNC") != std::string::npos);

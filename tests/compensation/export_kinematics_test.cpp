@@ -59,7 +59,8 @@ std::map<std::string, double> hal_pins(const std::string& text) {
 }
 
 /// LinuxCNC's trt forward kinematics: joints (mm, deg) -> world point (mm).
-Vec3d trt_world(const std::map<std::string, double>& pin, char tilt, const Vec3d& joint, double tilt_deg, double c_deg) {
+Vec3d trt_world(const std::map<std::string, double>& pin, char tilt, const Vec3d& joint, double tilt_deg,
+                double c_deg) {
   const double s = pin.count("conventional-directions") && pin.at("conventional-directions") == 1.0 ? -1.0 : 1.0;
   const Vec3d c_point(pin.at("x-rot-point"), pin.at("y-rot-point"), pin.at("z-rot-point"));
   const Vec3d tilt_point = tilt == 'A' ? Vec3d(0.0, c_point.y() + pin.at("y-offset"), c_point.z() + pin.at("z-offset"))
@@ -147,8 +148,10 @@ std::map<std::string, double> reported_effects(const std::string& text) {
   std::istringstream in(text);
   for (std::string s; std::getline(in, s);) {
     std::smatch m;
-    if (std::regex_match(s, m, together)) out["together"] = std::stod(m[1]);
-    else if (std::regex_match(s, m, term)) out[m[1]] = std::stod(m[2]);
+    if (std::regex_match(s, m, together))
+      out["together"] = std::stod(m[1]);
+    else if (std::regex_match(s, m, term))
+      out[m[1]] = std::stod(m[2]);
   }
   return out;
 }
@@ -214,7 +217,8 @@ TEST_CASE("linuxcnc-trt: the bundled AC-trunnion identification, tilts left out 
   REQUIRE(poses.size() == 96);
   double together_um = 0.0;
   for (const AxisPosition& q : poses)
-    together_um = std::max(together_um, (trt_world(pin, 'A', q.linear_mm, q[3] / kDeg, q[4] / kDeg) - model_tip(model, q)).norm() * 1e3);
+    together_um = std::max(
+        together_um, (trt_world(pin, 'A', q.linear_mm, q[3] / kDeg, q[4] / kDeg) - model_tip(model, q)).norm() * 1e3);
   REQUIRE(reported.count("together"));
   CHECK(reported.at("together") == Approx(together_um).margin(0.002));
   CHECK(together_um > 10.0);  // tilts of 25..44 µrad at a few hundred mm: tens of µm, not a rounding
@@ -223,7 +227,8 @@ TEST_CASE("linuxcnc-trt: the bundled AC-trunnion identification, tilts left out 
     without.erase(tilt);
     const MachineModel other(m, without);
     double effect_um = 0.0;
-    for (const AxisPosition& q : poses) effect_um = std::max(effect_um, (model_tip(model, q) - model_tip(other, q)).norm() * 1e3);
+    for (const AxisPosition& q : poses)
+      effect_um = std::max(effect_um, (model_tip(model, q) - model_tip(other, q)).norm() * 1e3);
     INFO(tilt);
     REQUIRE(reported.count(tilt));
     CHECK(reported.at(tilt) == Approx(effect_um).margin(0.002));
@@ -233,8 +238,10 @@ TEST_CASE("linuxcnc-trt: the bundled AC-trunnion identification, tilts left out 
 
 TEST_CASE("linuxcnc-trt: xyzbc with the conventional directions (Haas-like B C table), zero errors left out") {
   const Machine m = shipped("haas-umc750");  // B along -Y, C along -Z: conventional-directions = 1
-  const MachineModel model(m, params({{"EX0B", 0.027}, {"EZ0B", -0.013}, {"EX0C", -0.019}, {"EY0C", 0.033},
-                                      {"EB0B", 40e-6}, {"EC0C", -30e-6}}));
+  const MachineModel model(
+      m,
+      params(
+          {{"EX0B", 0.027}, {"EZ0B", -0.013}, {"EX0C", -0.019}, {"EY0C", 0.033}, {"EB0B", 40e-6}, {"EC0C", -30e-6}}));
   const TrtKinematics k = linuxcnc_trt_kinematics(model);
   CHECK(k.module == "xyzbc-trt-kins");
   const std::string text = format_linuxcnc_trt(k, model, kSource);
@@ -265,8 +272,11 @@ TEST_CASE("siemens-cycle800: the record holds offsets, tilts and zero errors (ty
     } else {
       p = params({{"EX0B", 0.021}, {"EZ0B", -0.015}, {"EA0B", 35e-6}, {"EC0B", -28e-6}, {"EB0B", 22e-6}});
     }
-    for (const auto& [n, v] : {std::pair<const char*, double>{"EX0C", -0.012}, {"EY0C", 0.019}, {"EA0C", -25e-6},
-                               {"EB0C", 44e-6}, {"EC0C", 17e-6}})
+    for (const auto& [n, v] : {std::pair<const char*, double>{"EX0C", -0.012},
+                               {"EY0C", 0.019},
+                               {"EA0C", -25e-6},
+                               {"EB0C", 44e-6},
+                               {"EC0C", 17e-6}})
       p.set(n, v);
     const MachineModel model(m, p);
     const Cycle800Record r = cycle800_record(model);
@@ -317,8 +327,10 @@ TEST_CASE("the README's example files (docs/exports/) are the bundled AC-trunnio
   REQUIRE(carr.size() == 18);
   double trt_um = 0.0, cycle800_um = 0.0;
   for (const AxisPosition& q : random_poses(m, 100, 29)) {
-    trt_um = std::max(trt_um, (trt_world(pin, 'A', q.linear_mm, q[3] / kDeg, q[4] / kDeg) - model_tip(held, q)).norm() * 1e3);
-    cycle800_um = std::max(cycle800_um, (cycle800_tip(carr, q.linear_mm, q[3], q[4]) - model_tip(model, q)).norm() * 1e3);
+    trt_um = std::max(trt_um,
+                      (trt_world(pin, 'A', q.linear_mm, q[3] / kDeg, q[4] / kDeg) - model_tip(held, q)).norm() * 1e3);
+    cycle800_um =
+        std::max(cycle800_um, (cycle800_tip(carr, q.linear_mm, q[3], q[4]) - model_tip(model, q)).norm() * 1e3);
   }
   std::cout << "docs/exports round trip at 100 random poses: xyzac-trt " << trt_um << " um (held terms), CYCLE800 "
             << cycle800_um << " um (whole model)\n";
@@ -335,21 +347,25 @@ std::string body_of(const std::string& text) {
   return out;
 }
 
-TEST_CASE("ncpost export --format linuxcnc-trt | siemens-cycle800: exit codes, and the docs/exports files are current") {
+TEST_CASE(
+    "ncpost export --format linuxcnc-trt | siemens-cycle800: exit codes, and the docs/exports files are current") {
   const std::string dir = test::make_temp_dir("export_kinematics");
   const std::string model = test::source("samples/measurements/ac-trunnion/model.json");
   const std::string machine = test::source("machines/ac-trunnion.toml");
   const std::string log = dir + "/log.txt";
-  for (const auto& [format, docs_file] : {std::pair<std::string, std::string>{"linuxcnc-trt", "ac-trunnion-xyzac-trt.hal"},
-                                         {"siemens-cycle800", "ac-trunnion-cycle800.spf"}}) {
+  for (const auto& [format, docs_file] :
+       {std::pair<std::string, std::string>{"linuxcnc-trt", "ac-trunnion-xyzac-trt.hal"},
+        {"siemens-cycle800", "ac-trunnion-cycle800.spf"}}) {
     const std::string out = dir + "/" + docs_file;
-    REQUIRE(test::run_ncpost("export --format " + format + " --machine " + machine + " -o " + out + " " + model, log) == 0);
+    REQUIRE(test::run_ncpost("export --format " + format + " --machine " + machine + " -o " + out + " " + model, log) ==
+            0);
     const std::string written = text_of(out);
     INFO(format);
     CHECK(!body_of(written).empty());
     CHECK(body_of(written) == body_of(text_of(test::source("docs/exports/" + docs_file))));
     // --axis belongs to the one-axis tables; no --machine: refused before anything is written
-    CHECK(test::run_ncpost("export --format " + format + " --axis C --machine " + machine + " -o " + dir + "/x " + model, log) == 1);
+    CHECK(test::run_ncpost(
+              "export --format " + format + " --axis C --machine " + machine + " -o " + dir + "/x " + model, log) == 1);
     CHECK(test::run_ncpost("export --format " + format + " -o " + dir + "/x " + model, log) == 1);
     CHECK_FALSE(std::ifstream(dir + "/x").good());
   }

@@ -48,7 +48,8 @@ double linuxcnc_trim(const std::vector<std::array<double, 3>>& rows, double n, b
   const int c = forward ? 1 : 2;
   if (n < rows.front()[0]) return rows.front()[c];
   for (std::size_t i = 0; i + 1 < rows.size(); ++i)
-    if (n < rows[i + 1][0]) return rows[i][c] + (rows[i + 1][c] - rows[i][c]) * (n - rows[i][0]) / (rows[i + 1][0] - rows[i][0]);
+    if (n < rows[i + 1][0])
+      return rows[i][c] + (rows[i + 1][c] - rows[i][c]) * (n - rows[i][0]) / (rows[i + 1][0] - rows[i][0]);
   return rows.back()[c];
 }
 
@@ -116,7 +117,8 @@ TEST_CASE("linuxcnc export: +10 µm EXX at X=100 gives a trim of -10 µm and the
   const int x = 0;
   CHECK(actual_position(model, x, 100.0, false) - 100.0 == Approx(0.010).margin(1e-9));
   CHECK(actual_position(model, x, 100.0 + linuxcnc_trim(rows, 100.0, true), false) - 100.0 == Approx(0.0).margin(1e-7));
-  CHECK(actual_position(model, x, 100.0 - linuxcnc_trim(rows, 100.0, true), false) - 100.0 == Approx(0.020).margin(3e-6));
+  CHECK(actual_position(model, x, 100.0 - linuxcnc_trim(rows, 100.0, true), false) - 100.0 ==
+        Approx(0.020).margin(3e-6));
   const Residual r = apply_file(model, 'X', text);
   CHECK(r.max_model > 0.012);
   CHECK(r.max_compensated < 0.5e-3);
@@ -138,9 +140,9 @@ TEST_CASE("linuxcnc export: the VMCL600 laser model, X Y Z within 0.5 µm at eve
     const LinuxcncCompTable table = linuxcnc_comp_table(model, letter);
     const std::string text = format_linuxcnc_comp(table, model, {"model.json", "", "test"});
     const Residual r = apply_file(model, letter, text);
-    CHECK(r.max_model > 0.005);          // the model's error is micrometres ...
-    CHECK(r.max_compensated < 0.5e-3);   // ... the table takes it below 0.5 µm
-    CHECK(table.axis.reversal > 0.0);    // the laser model's reversal is in the reverse column
+    CHECK(r.max_model > 0.005);         // the model's error is micrometres ...
+    CHECK(r.max_compensated < 0.5e-3);  // ... the table takes it below 0.5 µm
+    CHECK(table.axis.reversal > 0.0);   // the laser model's reversal is in the reverse column
     CHECK(table.axis.left_out.size() >= 5);
   }
 }
@@ -180,7 +182,8 @@ TEST_CASE("linuxcnc export on the command line: refusals and the file", "[export
   const std::string d = dir.string() + "/";
   const std::string model = test::source("samples/measurements/vmcl600/model.json");
   const std::string machine = " --machine " + test::source("machines/vmcl600.toml");
-  REQUIRE(test::run_ncpost("export --format linuxcnc --axis X" + machine + " -o " + d + "x.comp " + model, d + "log") == 0);
+  REQUIRE(test::run_ncpost("export --format linuxcnc --axis X" + machine + " -o " + d + "x.comp " + model, d + "log") ==
+          0);
   const std::string text = test::read_text_file(d + "x.comp");
   CHECK(text.rfind("-300.000000 ", 0) == 0);  // a row first: no comment before the rows
   CHECK(test::read_text_file(d + "log").find("EZX:t (") != std::string::npos);  // left-out terms on stderr
@@ -189,13 +192,16 @@ TEST_CASE("linuxcnc export on the command line: refusals and the file", "[export
   // several axes have tables: --axis is needed (usage)
   CHECK(test::run_ncpost("export --format linuxcnc" + machine + " -o " + d + "z.comp " + model, d + "log") == 1);
   // the axis the machine lacks; an axis without a table: bad input, naming the model file
-  CHECK(test::run_ncpost("export --format linuxcnc --axis C" + machine + " -o " + d + "c.comp " + model, d + "log") == 2);
+  CHECK(test::run_ncpost("export --format linuxcnc --axis C" + machine + " -o " + d + "c.comp " + model, d + "log") ==
+        2);
   CHECK(test::read_text_file(d + "log").find(model + ": the machine 'vmcl600' has no axis C (its axes: XYZ)") !=
         std::string::npos);
-  CHECK(test::run_ncpost("export --format linuxcnc --axis Q" + machine + " -o " + d + "c.comp " + model, d + "log") == 1);
+  CHECK(test::run_ncpost("export --format linuxcnc --axis Q" + machine + " -o " + d + "c.comp " + model, d + "log") ==
+        1);
   const std::string ac = test::source("samples/measurements/ac-trunnion/model.json");
   const std::string ac_machine = " --machine " + test::source("machines/ac-trunnion.toml");
-  CHECK(test::run_ncpost("export --format linuxcnc --axis X" + ac_machine + " -o " + d + "x2.comp " + ac, d + "log") == 2);
+  CHECK(test::run_ncpost("export --format linuxcnc --axis X" + ac_machine + " -o " + d + "x2.comp " + ac, d + "log") ==
+        2);
   const std::string log = test::read_text_file(d + "log");
   CHECK(log.find(ac + ": the model has no positioning error (EXX) and no reversal (reversal:X)") != std::string::npos);
   CHECK(!fs::exists(d + "x2.comp"));
@@ -206,12 +212,13 @@ TEST_CASE("linuxcnc export on the command line: refusals and the file", "[export
   fs::remove_all(dir);
 }
 
-TEST_CASE("linuxcnc export: a polynomial error is sampled over the limits, within 0.5 µm between rows too", "[export]") {
+TEST_CASE("linuxcnc export: a polynomial error is sampled over the limits, within 0.5 µm between rows too",
+          "[export]") {
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
   ErrorParameters p;
-  p.set("EXY:p1", 20e-6);    // straightness of Y in X: left out of the Y table
-  p.set("EYY:p1", 40e-6);    // 40 µm/m scale error
-  p.set("EYY:p2", 1.5e-7);   // a bow: 6.6 µm at the ends
+  p.set("EXY:p1", 20e-6);   // straightness of Y in X: left out of the Y table
+  p.set("EYY:p1", 40e-6);   // 40 µm/m scale error
+  p.set("EYY:p2", 1.5e-7);  // a bow: 6.6 µm at the ends
   p.set("EYY:p3", -2e-10);
   p.set("reversal:Y", 0.002);
   const MachineModel model(m, p);

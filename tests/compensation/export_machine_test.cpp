@@ -130,10 +130,11 @@ TEST_CASE("machine export: the AC trunnion's identified location errors as a cal
   }
   CHECK(pose < 0.5e-3);
   CHECK(tool_axis < 5e-6);  // the 4-decimal words: 1e-4° is 1.7 µrad
-  CHECK(plain > 0.02);       // what the location errors amount to (the plain post would be off by this)
+  CHECK(plain > 0.02);      // what the location errors amount to (the plain post would be off by this)
 }
 
-TEST_CASE("machine export: zero errors of an outer axis turn the lines it carries; head pivots with a tool", "[export]") {
+TEST_CASE("machine export: zero errors of an outer axis turn the lines it carries; head pivots with a tool",
+          "[export]") {
   SECTION("AC trunnion: EA0A turns the C line about A") {
     const Machine m = load_machine(test::source("machines/ac-trunnion.toml"));
     ErrorParameters p;
@@ -190,14 +191,16 @@ TEST_CASE("machine export on the command line", "[export][cli]") {
   const Machine corrected = load_machine(out);
   CHECK(corrected.name == "ac-trunnion-calibrated");
   // the model made for the original machine is refused with the calibrated one (not applied twice)
-  CHECK(test::run_ncpost("post --machine " + out + " --model " + model + " -o x.nc " +
-                             test::source("samples/hemisphere_5axis.cls"),
-                         "export_machine.log") == 2);
+  CHECK(test::run_ncpost(
+            "post --machine " + out + " --model " + model + " -o x.nc " + test::source("samples/hemisphere_5axis.cls"),
+            "export_machine.log") == 2);
   // without --machine: usage
   CHECK(test::run_ncpost("export --format machine -o y.toml " + model, "export_machine.log") == 1);
   // a model without location errors: bad input naming the model
   const std::string vmc = test::source("samples/measurements/vmcl600/model.json");
-  CHECK(test::run_ncpost("export --format machine --machine " + test::source("machines/vmcl600.toml") + " -o z.toml " + vmc,
-                         "export_machine.log") == 2);
-  CHECK(test::read_text_file("export_machine.log").find(vmc + ": the model has no location error") != std::string::npos);
+  CHECK(test::run_ncpost(
+            "export --format machine --machine " + test::source("machines/vmcl600.toml") + " -o z.toml " + vmc,
+            "export_machine.log") == 2);
+  CHECK(test::read_text_file("export_machine.log").find(vmc + ": the model has no location error") !=
+        std::string::npos);
 }

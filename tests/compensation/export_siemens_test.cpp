@@ -41,9 +41,12 @@ Lec read_lec(const std::string& text, const std::string& axis_name) {
     if (std::regex_match(line, m, value)) values[std::stoi(m[1])] = std::stod(m[2]);
     if (std::regex_match(line, m, param)) {
       const double v = std::stod(m[2]);
-      if (m[1] == "STEP") lec.step = v;
-      else if (m[1] == "MIN") lec.min = v;
-      else lec.max = v;
+      if (m[1] == "STEP")
+        lec.step = v;
+      else if (m[1] == "MIN")
+        lec.min = v;
+      else
+        lec.max = v;
     }
   }
   for (int n = 0; n < static_cast<int>(values.size()); ++n) {
@@ -122,7 +125,8 @@ TEST_CASE("siemens export: the VMCL600 laser model, X Y Z within 0.5 µm at ever
   for (char letter : {'X', 'Y', 'Z'}) {
     INFO("axis " << letter);
     const SiemensLecTable table = siemens_lec_table(model, letter);
-    const Lec lec = read_lec(format_siemens_lec(table, model, {"model.json", "", "test"}), std::string(1, letter) + "1");
+    const Lec lec =
+        read_lec(format_siemens_lec(table, model, {"model.json", "", "test"}), std::string(1, letter) + "1");
     const auto [with, without] = apply_lec(model, m.index_of(letter), lec);
     CHECK(without > 0.005);
     CHECK(with < 0.5e-3);

@@ -86,15 +86,18 @@ TEST_CASE("TRR-XY machine export: the corrected machine moves as the original wi
   const comp::TrrMachineExport out = comp::corrected_trr_machine(m, model);
   CHECK(out.corrected.name == "trr-xy-calibrated");
   CHECK(out.applied == std::vector<std::string>{"ds_a", "gp_a", "dl_a", "dr_b", "at_b", "drs_b", "ar_c", "dts_c"});
-  const trr::Machine read_back = parse_trr_xy_machine(comp::format_trr_machine_toml(out.corrected, {"test"}), "calibrated.toml");
+  const trr::Machine read_back =
+      parse_trr_xy_machine(comp::format_trr_machine_toml(out.corrected, {"test"}), "calibrated.toml");
   for (int k = 0; k < kParameterCount; ++k) CHECK(read_back.calibration[k] == model[k]);  // 17 digits: exact
   CHECK(read_back.slider_limits[2]->max == 600.0);
 
   const Kinematics corrected(read_back), original_with_model(m, model), original(m);
   const Gap same = compare_forward(corrected, original_with_model);
   const Gap plain = compare_forward(original, original_with_model);
-  WARN("corrected vs original + model: " << same.tcp_mm << " mm, " << same.axis_rad << " rad; original vs original + "
-       "model: " << plain.tcp_mm << " mm, " << plain.axis_rad << " rad");
+  WARN("corrected vs original + model: " << same.tcp_mm << " mm, " << same.axis_rad
+                                         << " rad; original vs original + "
+                                            "model: "
+                                         << plain.tcp_mm << " mm, " << plain.axis_rad << " rad");
   CHECK(same.tcp_mm < 1e-8);
   CHECK(same.axis_rad < 1e-10);
   CHECK(plain.tcp_mm > 0.02);  // what the model amounts to
@@ -133,7 +136,7 @@ TEST_CASE("TRR-XY machine export on the command line: posted for it = posted wit
     words_plain = std::max(words_plain, (plain[i].words() - b[i].words()).cwiseAbs().maxCoeff());
   }
   WARN(a.size() << " blocks; largest word difference " << words << " mm in " << differing
-       << " blocks (the plain post differs by " << words_plain << " mm)");
+                << " blocks (the plain post differs by " << words_plain << " mm)");
   CHECK(words <= 1.0001e-4);  // at most one unit of the 4th decimal, where a value sits on a rounding boundary
   CHECK(words_plain > 0.01);
   // run on the machine of the model, the calibrated program follows the path as the compensated one
@@ -176,11 +179,13 @@ TEST_CASE("TRR-XY export: formats a TRR-XY model cannot fill are usage errors na
 }
 
 TEST_CASE("TRR-XY machine file: [trr_xy.calibration] names and values checked with their line", "[export][trr]") {
-  const std::string head = "[machine]\nname = \"t\"\nkind = \"trr-xy\"\n\n[trr_xy]\nbase_radius = 495.0\n"
-                           "platform_radius = 200.0\nlink_length = 1020.0\nball_joint_height = 142.0\ntool_offset = 270.0\n"
-                           "\n[trr_xy.calibration]\n";
-  const std::string axes = "\n[axes.X]\ntype = \"linear\"\n[axes.Y]\ntype = \"linear\"\n[axes.U]\ntype = \"linear\"\n"
-                           "[axes.V]\ntype = \"linear\"\n[axes.W]\ntype = \"linear\"\n";
+  const std::string head =
+      "[machine]\nname = \"t\"\nkind = \"trr-xy\"\n\n[trr_xy]\nbase_radius = 495.0\n"
+      "platform_radius = 200.0\nlink_length = 1020.0\nball_joint_height = 142.0\ntool_offset = 270.0\n"
+      "\n[trr_xy.calibration]\n";
+  const std::string axes =
+      "\n[axes.X]\ntype = \"linear\"\n[axes.Y]\ntype = \"linear\"\n[axes.U]\ntype = \"linear\"\n"
+      "[axes.V]\ntype = \"linear\"\n[axes.W]\ntype = \"linear\"\n";
   const trr::Machine ok = parse_trr_xy_machine(head + "dl_b = 0.25\nat_c = -1e-4\n" + axes, "m.toml");
   CHECK(ok.calibration.chain[1].dl == 0.25);
   CHECK(ok.calibration.chain[2].at == -1e-4);

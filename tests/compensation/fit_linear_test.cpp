@@ -17,7 +17,9 @@ namespace {
 /// The linear problem r(x) = A·x − y.
 LeastSquaresProblem linear_problem(const Eigen::MatrixXd& A, const Eigen::VectorXd& y) {
   LeastSquaresProblem p;
-  p.residuals = [A, y](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> { return Eigen::VectorXd(A * x - y); };
+  p.residuals = [A, y](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> {
+    return Eigen::VectorXd(A * x - y);
+  };
   p.jacobian = [A](const Eigen::VectorXd&) { return A; };
   return p;
 }

@@ -20,10 +20,11 @@ TEST_CASE("harmonic compensation of the seed 001 segment", "[harmonic][seed001]"
     o.tolerance_mm = tolerance;
     const SplitBlock split = harmonic_compensate(m, s, b, NominalErrors{}, o);
     REQUIRE(split.ok());
-    fmt::print("harmonic, seed 001, tolerance {} mm: {} output blocks ({} added), largest remaining error {:.4f} mm, "
-               "orientation {:.4f} deg\n",
-               tolerance, split.output_blocks(), split.inserted_blocks(), split.max_error_mm,
-               rad_to_deg(split.max_orientation_rad));
+    fmt::print(
+        "harmonic, seed 001, tolerance {} mm: {} output blocks ({} added), largest remaining error {:.4f} mm, "
+        "orientation {:.4f} deg\n",
+        tolerance, split.output_blocks(), split.inserted_blocks(), split.max_error_mm,
+        rad_to_deg(split.max_orientation_rad));
     CHECK(split.max_error_mm < 0.15);
     CHECK(split.nodes.back().q.rotary_rad == b.to.rotary_rad);
   }

@@ -89,8 +89,10 @@ TEST_CASE("identify public-clean: truth recovered, tool-tip prediction within 1 
     largest_error_um = std::max(largest_error_um, 1e3 * (pt.tip_mm - pn.tip_mm).norm());
   }
   INFO("largest tool-tip error of the truth " << largest_error_um << " um; prediction error " << worst_um
-                                               << " um, axis " << worst_urad << " urad");
-  printf("public-clean: tool-tip error of the truth up to %.1f um; identified model off by at most %.3f um, "
-         "%.3f urad\n", largest_error_um, worst_um, worst_urad);
+                                              << " um, axis " << worst_urad << " urad");
+  printf(
+      "public-clean: tool-tip error of the truth up to %.1f um; identified model off by at most %.3f um, "
+      "%.3f urad\n",
+      largest_error_um, worst_um, worst_urad);
   CHECK(worst_um < 1.0);
 }

@@ -18,9 +18,10 @@ using namespace ncpost::comp;
 namespace {
 
 MeasurementSet one_way_ballbar(const Machine& m) {
-  std::string csv = "# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: 100\n"
-                    "# instrument_uncertainty: 0.2\n# date: 2026-11-20T09:30\n# temperature: 20.4\n"
-                    "# operator: A. Metrologist\nt,X,Y,Z,A,C,L\n";
+  std::string csv =
+      "# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: 100\n"
+      "# instrument_uncertainty: 0.2\n# date: 2026-11-20T09:30\n# temperature: 20.4\n"
+      "# operator: A. Metrologist\nt,X,Y,Z,A,C,L\n";
   for (int c = 0; c < 360; c += 10)
     csv += fmt::format("{},0,0,0,0,{},{:.9f}\n", c, c, 100.0 + 6e-3 * std::cos(2.0 * c * M_PI / 180.0));
   return parse_measurement_csv(csv, "ballbar_c.csv", m);
@@ -34,9 +35,9 @@ TEST_CASE("identification summary: machine, conditions, figures with U and verdi
   const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/ac-trunnion.toml");
   const std::vector<MeasurementSet> sets{one_way_ballbar(m)};
   IdentifyResult r;
-  r.parameters.set("EY0A", 0.025);   // mm: 25 µm, u 0.05 µm → U 0.1 µm
+  r.parameters.set("EY0A", 0.025);  // mm: 25 µm, u 0.05 µm → U 0.1 µm
   r.uncertainty.set("EY0A", 5e-5);
-  r.parameters.set("EB0A", 30e-6);   // rad: 30 µrad, u 0.3 µrad → U 0.6 µrad
+  r.parameters.set("EB0A", 30e-6);  // rad: 30 µrad, u 0.3 µrad → U 0.6 µrad
   r.uncertainty.set("EB0A", 3e-7);
   r.files.push_back({"ballbar_c.csv", MeasurementType::ballbar, 36, 20.0, 46.0, 0.5, 1.4});
   IdentifyReportInputs in;
@@ -92,7 +93,8 @@ TEST_CASE("laser identification summary: one row per positioning line, the worst
   const std::string html = summary_page_html(laser_identification_summary(m, {set}, r, in, "laser.html"));
   // U of A: 2 √((√2 × 0.2)² + (√2 × 0.5 / √5)²) = 2 √(0.08 + 0.1) = 0.85; 12 − 0.85 > 10: FAIL;
   // B: 3 + 2 √(0.08 + 0.1) ≤ 5: PASS; the row shows the worse
-  CHECK(has(html, "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85; B 3.00 ± 0.85; E 10.00 ± 0.85; M 8.00 ± 0.85; R 4.00 ± "));
+  CHECK(has(html,
+            "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85; B 3.00 ± 0.85; E 10.00 ± 0.85; M 8.00 ± 0.85; R 4.00 ± "));
   CHECK(has(html, " µm (U lacks temperature)</td>"));  // said once for the row
   CHECK(has(html, "A ≤ 10, B ≤ 5 µm</td><td class=\"fail\">FAIL"));
 }

@@ -39,14 +39,33 @@ MeasurementSet laser_run(const Machine& m) {
 TEST_CASE("AD Jacobian matches finite differences") {
   const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/ac-trunnion.toml");
   ErrorParameters p;
-  const std::vector<std::pair<std::string, double>> values = {
-      {"EY0A", 0.018},        {"EZ0A", -0.012},      {"EB0A", 4e-5},         {"EC0A", -2.5e-5},
-      {"EX0C", 0.015},        {"EY0C", -0.022},      {"EA0C", 3e-5},         {"EB0C", -3.5e-5},
-      {"EA0A", 1e-5},         {"EC0C", 2e-5},        {"EC0Y", 2e-5},         {"EB0Z", -1e-5},
-      {"EA0Z", 3e-5},         {"ECC:h2:cos", 4e-5},  {"ECC:h2:sin", -3e-5},  {"EZC:h1:cos", 0.008},
-      {"EXA:h3:sin", 0.002},  {"EXX:p1", 2e-5},      {"EZX:p2", 1e-7},       {"EBY:p1", 1e-7},
-      {"reversal:A", 3e-5},   {"reversal:C", -2e-5}, {"drift:Z:t:lin", 1e-6}, {"drift:X:t:exp", 0.004},
-      {"drift:X:t:tau", 400}, {"ballbar:length", 0.002}, {"sphere:position:y", 0.003}};
+  const std::vector<std::pair<std::string, double>> values = {{"EY0A", 0.018},
+                                                              {"EZ0A", -0.012},
+                                                              {"EB0A", 4e-5},
+                                                              {"EC0A", -2.5e-5},
+                                                              {"EX0C", 0.015},
+                                                              {"EY0C", -0.022},
+                                                              {"EA0C", 3e-5},
+                                                              {"EB0C", -3.5e-5},
+                                                              {"EA0A", 1e-5},
+                                                              {"EC0C", 2e-5},
+                                                              {"EC0Y", 2e-5},
+                                                              {"EB0Z", -1e-5},
+                                                              {"EA0Z", 3e-5},
+                                                              {"ECC:h2:cos", 4e-5},
+                                                              {"ECC:h2:sin", -3e-5},
+                                                              {"EZC:h1:cos", 0.008},
+                                                              {"EXA:h3:sin", 0.002},
+                                                              {"EXX:p1", 2e-5},
+                                                              {"EZX:p2", 1e-7},
+                                                              {"EBY:p1", 1e-7},
+                                                              {"reversal:A", 3e-5},
+                                                              {"reversal:C", -2e-5},
+                                                              {"drift:Z:t:lin", 1e-6},
+                                                              {"drift:X:t:exp", 0.004},
+                                                              {"drift:X:t:tau", 400},
+                                                              {"ballbar:length", 0.002},
+                                                              {"sphere:position:y", 0.003}};
   for (const auto& [n, v] : values) p.set(n, v);
   std::vector<MeasurementSet> sets;
   BallbarPlanOptions bo;

@@ -36,10 +36,11 @@ TEST_CASE("laser: plan, simulate and identify on the command line", "[laser][cli
   // (axis words are modal in the NC writer's output: Y and Z stay on the line)
   CHECK(nc.find("G0 X-300.0000 Y-105.0000 Z-90.0000\n") != std::string::npos);
   CHECK(nc.find("(run 2 forward pass)\nX-300.0000\nX-295.0000\n") != std::string::npos);
-  CHECK(nc.find("X-305") == std::string::npos);                              // never beyond the travel
+  CHECK(nc.find("X-305") == std::string::npos);  // never beyond the travel
   std::string data;
   int seed = 1;
-  for (const char* s : {"X1_pos", "X1_strY", "X1_strZ", "X2_pos", "X2_strY", "X2_strZ", "X3_pos", "X3_strY", "X3_strZ"}) {
+  for (const char* s :
+       {"X1_pos", "X1_strY", "X1_strZ", "X2_pos", "X2_strY", "X2_strZ", "X3_pos", "X3_strY", "X3_strZ"}) {
     REQUIRE(fs::exists(d + "l_" + s + ".csv"));
     REQUIRE(run("simulate " + machine + " --model " + truth + " --noise-um 0.2 --seed " + std::to_string(seed++) +
                     " -o " + d + s + ".csv " + d + "l_" + s + ".csv",
@@ -50,7 +51,8 @@ TEST_CASE("laser: plan, simulate and identify on the command line", "[laser][cli
   const std::string out = read(d + "out");
   CHECK(out.find("ISO 230-2") != std::string::npos);
   // the six functions of X are seen; squareness needs the straightness of Y and Z too
-  for (const char* f : {"EXX (", "EYX (", "EZX (", "EAX (", "EBX (", "ECX ("}) CHECK(out.find(std::string("  ") + f) == std::string::npos);
+  for (const char* f : {"EXX (", "EYX (", "EZX (", "EAX (", "EBX (", "ECX ("})
+    CHECK(out.find(std::string("  ") + f) == std::string::npos);
   CHECK(out.find("EC0Y: needs the straightness EYX and EXY") != std::string::npos);
   const ncpost::Machine m = ncpost::load_machine(ncpost::test::source("machines/vmcl600.toml"));
   const ncpost::comp::ModelFile model = ncpost::comp::read_model_json(d + "model.json", &m);
@@ -59,8 +61,9 @@ TEST_CASE("laser: plan, simulate and identify on the command line", "[laser][cli
   CHECK(std::abs(*model.parameters.get("reversal:X") - 0.004) < 0.0005);
   CHECK(model.extra.contains("laser"));
   // positioning lines only on X: straightness (and roll) reported as not seen, exit 0
-  REQUIRE(run("identify " + machine + " -o " + d + "pos.json " + d + "X1_pos.csv " + d + "X2_pos.csv " + d + "X3_pos.csv",
-              d + "out2") == 0);
+  REQUIRE(
+      run("identify " + machine + " -o " + d + "pos.json " + d + "X1_pos.csv " + d + "X2_pos.csv " + d + "X3_pos.csv",
+          d + "out2") == 0);
   CHECK(read(d + "out2").find("EYX (straightness in Y of X)") != std::string::npos);
   // bad input: a laser row off its line is refused with exit 2
   std::string bad = read(d + "X1_pos.csv");

@@ -24,7 +24,7 @@ TEST_CASE("laser: table parameter names", "[laser][format]") {
   CHECK(comp::table_parameter_name('X', 'X', -275.0) == "EXX:t:-275");
   CHECK(comp::table_parameter_name('B', 'Z', 12.5) == "EBZ:t:12.5");
   CHECK(comp::table_parameter_name('Y', 'X', -1e-7) == "EYX:t:0");
-  CHECK_FALSE(comp::parse_parameter_name("EXA:t:10", m).spec);   // no A axis
+  CHECK_FALSE(comp::parse_parameter_name("EXA:t:10", m).spec);  // no A axis
   CHECK_FALSE(comp::parse_parameter_name("EXX:t:abc", m).spec);
   CHECK_THROWS_AS(comp::ModelLayout(m, {"EXX:t:10", "EXX:t:10.0"}), std::invalid_argument);
 }
@@ -77,7 +77,8 @@ TEST_CASE("laser: plan CSV round trip with axis, line and approach; bad rows ref
   auto with_field = [&](int index, const std::string& value) {
     std::vector<std::string> f;
     std::size_t at = 0;
-    for (std::size_t comma; (comma = row.find(',', at)) != std::string::npos; at = comma + 1) f.push_back(row.substr(at, comma - at));
+    for (std::size_t comma; (comma = row.find(',', at)) != std::string::npos; at = comma + 1)
+      f.push_back(row.substr(at, comma - at));
     f.push_back(row.substr(at));
     f[static_cast<std::size_t>(index)] = value;
     std::string joined;

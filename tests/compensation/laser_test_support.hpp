@@ -56,23 +56,23 @@ inline LaserTruth vmcl600_truth(const Machine& m, const comp::LaserPlanOptions& 
       {"EXX", {6.0e-5, 4.0e-8, -1.5e-10}},  // ~ 18 + 3.6 − 4 µm at the ends
       {"EYX", {0.0, 2.5e-8, 6.0e-11}},      // a few µm
       {"EZX", {0.0, -3.0e-8, 4.0e-11}},
-      {"EAX", {4.0e-8, 1.5e-10, 0.0}},      // roll up to ~25 µrad
-      {"EBX", {-7.0e-8, 0.0, 3.0e-13}},     // pitch ~ 30 µrad
-      {"ECX", {5.0e-8, -2.0e-10, 0.0}},     // yaw ~ 33 µrad
+      {"EAX", {4.0e-8, 1.5e-10, 0.0}},   // roll up to ~25 µrad
+      {"EBX", {-7.0e-8, 0.0, 3.0e-13}},  // pitch ~ 30 µrad
+      {"ECX", {5.0e-8, -2.0e-10, 0.0}},  // yaw ~ 33 µrad
       // Y (saddle, ±200 mm)
       {"EYY", {-8.0e-5, 6.0e-8, 2.0e-10}},  // ~ 16 + 2.4 + 1.6 µm
       {"EXY", {8.0e-6, -4.0e-8, 0.0}},      // straightness 1.6 µm + a slope of 8 µrad
       {"EZY", {0.0, 5.0e-8, -5.0e-11}},
-      {"EAY", {9.0e-8, 0.0, 5.0e-13}},      // pitch ~ 22 µrad
-      {"EBY", {-6.0e-8, 3.0e-10, 0.0}},     // roll ~ 24 µrad
-      {"ECY", {1.0e-7, 2.0e-10, 0.0}},      // yaw ~ 28 µrad
+      {"EAY", {9.0e-8, 0.0, 5.0e-13}},   // pitch ~ 22 µrad
+      {"EBY", {-6.0e-8, 3.0e-10, 0.0}},  // roll ~ 24 µrad
+      {"ECY", {1.0e-7, 2.0e-10, 0.0}},   // yaw ~ 28 µrad
       // Z (head, −500 … 50 mm)
-      {"EZZ", {5.0e-5, 3.0e-8, 1.0e-11}},   // ~ 25 − 7.5 − 1.3 µm at −500
-      {"EXZ", {-1.0e-5, 1.5e-8, 0.0}},      // straightness 3.7 µm + a slope of −10 µrad
+      {"EZZ", {5.0e-5, 3.0e-8, 1.0e-11}},  // ~ 25 − 7.5 − 1.3 µm at −500
+      {"EXZ", {-1.0e-5, 1.5e-8, 0.0}},     // straightness 3.7 µm + a slope of −10 µrad
       {"EYZ", {6.0e-6, -1.2e-8, 0.0}},
-      {"EAZ", {-6.0e-8, -5.0e-11, 0.0}},    // ~ 42 µrad at −500
-      {"EBZ", {4.0e-8, 6.0e-11, 0.0}},      // ~ 35 µrad
-      {"ECZ", {3.0e-8, 0.0, 1.0e-13}},      // roll ~ 28 µrad
+      {"EAZ", {-6.0e-8, -5.0e-11, 0.0}},  // ~ 42 µrad at −500
+      {"EBZ", {4.0e-8, 6.0e-11, 0.0}},    // ~ 35 µrad
+      {"ECZ", {3.0e-8, 0.0, 1.0e-13}},    // roll ~ 28 µrad
   };
   // ISO 230-1 reference: no slope in EYX, EZX (X defines x̂) nor EZY (Y defines the XY plane)
   for (const char* f : {"EYX", "EZX", "EZY"}) {
@@ -82,7 +82,8 @@ inline LaserTruth vmcl600_truth(const Machine& m, const comp::LaserPlanOptions& 
   }
   for (const auto& [f, c] : t.functions)
     for (int k = 0; k < 3; ++k)
-      if (c[static_cast<std::size_t>(k)] != 0.0) t.parameters.set(f + ":p" + std::to_string(k + 1), c[static_cast<std::size_t>(k)]);
+      if (c[static_cast<std::size_t>(k)] != 0.0)
+        t.parameters.set(f + ":p" + std::to_string(k + 1), c[static_cast<std::size_t>(k)]);
   t.parameters.set("EC0Y", 30e-6);
   t.parameters.set("EB0Z", -25e-6);
   t.parameters.set("EA0Z", 40e-6);
@@ -94,7 +95,7 @@ inline LaserTruth vmcl600_truth(const Machine& m, const comp::LaserPlanOptions& 
 
 /// Plans and simulated data of every set (noise in µm, one seed per set).
 inline std::vector<comp::MeasurementSet> simulate_laser(const Machine& m, const comp::ErrorParameters& truth,
-                                                         const comp::LaserPlanOptions& plan, double noise_um) {
+                                                        const comp::LaserPlanOptions& plan, double noise_um) {
   std::vector<comp::MeasurementSet> out;
   std::uint64_t seed = 7;
   for (const auto& p : comp::plan_laser(m, plan)) out.push_back(comp::simulate(m, p.set, truth, {noise_um, seed++}));

@@ -78,8 +78,10 @@ TEST_CASE("laser: a single line gives neither pitch, yaw nor roll; positioning o
     pos.straightness = false;
     const comp::LaserIdentifyResult r = comp::identify_laser(m, test::simulate_laser(m, truth.parameters, pos, 0.3));
     REQUIRE(r.ok);
-    for (const char* unseen : {"EYX", "EZX", "EXY", "EZY", "EXZ", "EYZ", "EAX", "EBY", "ECZ"}) CHECK(reported(r, unseen));
-    for (const char* seen : {"EXX", "EBX", "ECX", "EYY", "EAY", "ECY", "EZZ", "EAZ", "EBZ"}) CHECK_FALSE(reported(r, seen));
+    for (const char* unseen : {"EYX", "EZX", "EXY", "EZY", "EXZ", "EYZ", "EAX", "EBY", "ECZ"})
+      CHECK(reported(r, unseen));
+    for (const char* seen : {"EXX", "EBX", "ECX", "EYY", "EAY", "ECY", "EZZ", "EAZ", "EBZ"})
+      CHECK_FALSE(reported(r, seen));
     CHECK(r.squareness.empty());
     CHECK(r.squareness_unseen.size() == 3);
     check_unseen_are_zero(r);

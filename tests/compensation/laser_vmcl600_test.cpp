@@ -60,7 +60,8 @@ std::string test_path(double max_step_mm = 0.0) {
     for (double y = -175.0; y <= 175.0 + 1e-9; y += 50.0, ++row)
       for (int i = 0; i <= 10; ++i) {
         const Vec3d p(row % 2 == 0 ? -250.0 + 50.0 * i : 250.0 - 50.0 * i, y, z);
-        const int pieces = last && max_step_mm > 0.0 ? static_cast<int>(std::ceil((p - *last).norm() / max_step_mm)) : 1;
+        const int pieces =
+            last && max_step_mm > 0.0 ? static_cast<int>(std::ceil((p - *last).norm() / max_step_mm)) : 1;
         for (int k = 1; k <= pieces; ++k) {
           const Vec3d q = last ? Vec3d(*last + (p - *last) * (double(k) / pieces)) : p;
           cl += fmt::format("GOTO/{:.3f},{:.3f},{:.3f}\n", q.x(), q.y(), q.z());
@@ -100,8 +101,10 @@ std::vector<AxisPosition> post_and_read(const MotionSolver& solver, const Setup&
   {
     std::istringstream in(gcode_in.empty() ? cl_path : gcode_in);
     std::unique_ptr<cl::Reader> owned;
-    if (gcode_in.empty()) owned = std::make_unique<cl::AptReader>(in, "laser_volume.cls");
-    else owned = std::make_unique<gcode::GcodeClReader>(in, "laser_volume.nc", solver.machine(), setup);
+    if (gcode_in.empty())
+      owned = std::make_unique<cl::AptReader>(in, "laser_volume.cls");
+    else
+      owned = std::make_unique<gcode::GcodeClReader>(in, "laser_volume.nc", solver.machine(), setup);
     cl::Reader& reader = *owned;
     AtomicFile out(out_path);
     NcWriter writer(out, dialect_named("fanuc"), "XYZ");
@@ -148,7 +151,8 @@ Volumetric execute_on(const comp::MachineModel& truth, const std::vector<AxisPos
       for (int a = 0; a < 3; ++a) mid[a] = 0.5 * (program[k - 1][a] + program[k][a]);
       const Vec3d cl_mid = 0.5 * (cl[k - 1].tip_mm + cl[k].tip_mm);
       const comp::RowState<double> at_mid = comp::reversal_state(truth, mid, actual);
-      v.mid_block_max_um = std::max(v.mid_block_max_um, 1e3 * (truth.tool_pose(mid, setup, at_mid).tip_mm - cl_mid).norm());
+      v.mid_block_max_um =
+          std::max(v.mid_block_max_um, 1e3 * (truth.tool_pose(mid, setup, at_mid).tip_mm - cl_mid).norm());
     }
     const comp::RowState<double> state = comp::reversal_state(truth, program[k], actual);
     actual = program[k];
@@ -196,18 +200,21 @@ TEST_CASE("laser: the 21 errors of a VMCL600 identified from three lines per axi
                f.is_angle() ? "µrad" : "µm");
     (f.is_angle() ? worst_rad : worst_mm) = std::max(f.is_angle() ? worst_rad : worst_mm, worst);
   }
-  CHECK(worst_mm < 0.001);   // 1 µm
-  CHECK(worst_rad < 3e-6);   // 3 µrad
+  CHECK(worst_mm < 0.001);  // 1 µm
+  CHECK(worst_rad < 3e-6);  // 3 µrad
   // squareness: the truth's, plus the slopes of EXY, EXZ, EYZ moved into it (ISO 230-1)
   const auto& p = id.truth.parameters;
-  auto slope = [&](const char* f) { return test::ls_slope_of(id.truth.functions.at(f), function_named(r, f).nodes_mm); };
+  auto slope = [&](const char* f) {
+    return test::ls_slope_of(id.truth.functions.at(f), function_named(r, f).nodes_mm);
+  };
   const double ec0y = *p.get("EC0Y") - slope("EXY") - slope("EYX");
   const double eb0z = *p.get("EB0Z") + slope("EXZ") + slope("EZX");
   const double ea0z = *p.get("EA0Z") - slope("EYZ") - slope("EZY");
   REQUIRE(r.squareness.size() == 3);
-  fmt::print("squareness identified (ISO truth): EC0Y {:.2f} ({:.2f}), EB0Z {:.2f} ({:.2f}), EA0Z {:.2f} ({:.2f}) µrad\n",
-             *r.squareness.get("EC0Y") * 1e6, ec0y * 1e6, *r.squareness.get("EB0Z") * 1e6, eb0z * 1e6,
-             *r.squareness.get("EA0Z") * 1e6, ea0z * 1e6);
+  fmt::print(
+      "squareness identified (ISO truth): EC0Y {:.2f} ({:.2f}), EB0Z {:.2f} ({:.2f}), EA0Z {:.2f} ({:.2f}) µrad\n",
+      *r.squareness.get("EC0Y") * 1e6, ec0y * 1e6, *r.squareness.get("EB0Z") * 1e6, eb0z * 1e6,
+      *r.squareness.get("EA0Z") * 1e6, ea0z * 1e6);
   CHECK(std::abs(*r.squareness.get("EC0Y") - ec0y) < 2e-6);
   CHECK(std::abs(*r.squareness.get("EB0Z") - eb0z) < 2e-6);
   CHECK(std::abs(*r.squareness.get("EA0Z") - ea0z) < 2e-6);
@@ -244,34 +251,41 @@ TEST_CASE("laser: the identified model compensates a 3D path over the working vo
   const std::vector<AxisPosition> program = post_and_read(compensated, setup, "laser_volume_compensated.nc");
   const Volumetric after = execute_on(truth, program, cl, setup);
   const Volumetric predicted = execute_on(model, program, cl, setup);  // the same program on the identified model
-  fmt::print("volumetric error over X ±250, Y ±175, Z 0..400 above the table ({} points after the first, tool "
-             "150 mm): uncompensated max {:.2f} µm rms {:.2f} µm; compensated max {:.3f} µm rms {:.3f} µm; "
-             "ratio max {:.1f}x rms {:.1f}x; first block (from home) {:.2f} -> {:.2f} µm\n",
-             cl.size() - 1, before.max_um, before.rms_um, after.max_um, after.rms_um, before.max_um / after.max_um,
-             before.rms_um / after.rms_um, before.first_um, after.first_um);
-  fmt::print("halfway along the blocks (not cut to a tolerance): uncompensated max {:.2f} µm, compensated max {:.2f} µm "
-             "(the identified model predicts {:.2f} µm there)\n",
-             before.mid_block_max_um, after.mid_block_max_um, predicted.mid_block_max_um);
+  fmt::print(
+      "volumetric error over X ±250, Y ±175, Z 0..400 above the table ({} points after the first, tool "
+      "150 mm): uncompensated max {:.2f} µm rms {:.2f} µm; compensated max {:.3f} µm rms {:.3f} µm; "
+      "ratio max {:.1f}x rms {:.1f}x; first block (from home) {:.2f} -> {:.2f} µm\n",
+      cl.size() - 1, before.max_um, before.rms_um, after.max_um, after.rms_um, before.max_um / after.max_um,
+      before.rms_um / after.rms_um, before.first_um, after.first_um);
+  fmt::print(
+      "halfway along the blocks (not cut to a tolerance): uncompensated max {:.2f} µm, compensated max {:.2f} µm "
+      "(the identified model predicts {:.2f} µm there)\n",
+      before.mid_block_max_um, after.mid_block_max_um, predicted.mid_block_max_um);
   CHECK(before.max_um > 20.0);
   CHECK(after.max_um * 10.0 <= before.max_um);
   CHECK(after.rms_um * 10.0 <= before.rms_um);
   // G-code in, G-code out: the uncompensated program re-posted with the model
   const Volumetric regcode = execute_on(
-      truth, post_and_read(compensated, setup, "laser_volume_regcode.nc", test::read_text_file("laser_volume_nominal.nc")), cl, setup);
-  fmt::print("G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm; first block {:.2f} µm\n",
-             regcode.max_um, regcode.rms_um, regcode.first_um);
+      truth,
+      post_and_read(compensated, setup, "laser_volume_regcode.nc", test::read_text_file("laser_volume_nominal.nc")), cl,
+      setup);
+  fmt::print(
+      "G-code in (the uncompensated program) -> compensated: max {:.3f} µm rms {:.3f} µm; first block {:.2f} µm\n",
+      regcode.max_um, regcode.rms_um, regcode.first_um);
   CHECK(regcode.max_um * 10.0 <= before.max_um);
   CHECK(regcode.rms_um * 10.0 <= before.rms_um);
   // the same path stepped every 10 mm: between the CL points too the error falls ≥ 10x
   const std::string fine = test_path(10.0);
   const std::vector<ClPoint> cl_fine = cl_points(fine);
-  const Volumetric fine_before = execute_on(truth, post_and_read(nominal, setup, "laser_fine_nominal.nc", "", fine), cl_fine, setup);
+  const Volumetric fine_before =
+      execute_on(truth, post_and_read(nominal, setup, "laser_fine_nominal.nc", "", fine), cl_fine, setup);
   const Volumetric fine_after =
       execute_on(truth, post_and_read(compensated, setup, "laser_fine_compensated.nc", "", fine), cl_fine, setup);
-  fmt::print("path stepped every 10 mm ({} points): uncompensated max {:.2f} µm rms {:.2f} µm, halfway {:.2f} µm; "
-             "compensated max {:.3f} µm rms {:.3f} µm, halfway {:.3f} µm\n",
-             cl_fine.size(), fine_before.max_um, fine_before.rms_um, fine_before.mid_block_max_um, fine_after.max_um,
-             fine_after.rms_um, fine_after.mid_block_max_um);
+  fmt::print(
+      "path stepped every 10 mm ({} points): uncompensated max {:.2f} µm rms {:.2f} µm, halfway {:.2f} µm; "
+      "compensated max {:.3f} µm rms {:.3f} µm, halfway {:.3f} µm\n",
+      cl_fine.size(), fine_before.max_um, fine_before.rms_um, fine_before.mid_block_max_um, fine_after.max_um,
+      fine_after.rms_um, fine_after.mid_block_max_um);
   CHECK(fine_after.max_um * 10.0 <= fine_before.max_um);
   CHECK(fine_after.mid_block_max_um * 10.0 <= fine_before.mid_block_max_um);
 }

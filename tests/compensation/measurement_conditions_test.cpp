@@ -24,7 +24,8 @@ const std::string kConditions =
     "# operator: A. Meier\n# date: 2026-11-20T09:30\n";
 
 /// A ballbar file on the AC trunnion: keys, then `extra` header lines, then two rows with L given.
-std::string ballbar(const std::string& extra, const std::string& l1 = "100.004025", const std::string& l2 = "100.000000") {
+std::string ballbar(const std::string& extra, const std::string& l1 = "100.004025",
+                    const std::string& l2 = "100.000000") {
   return "# type: ballbar\n# table_ball: 0, -100, 250\n# tool_ball: 0, 0, 0\n# bar_length: 100.0\n" + extra +
          "t,X,Y,Z,A,C,L\n0.00,0,0,250,0,0," + l1 + "\n0.50,0,-1.57709,249.99503,0.36145,0.72289," + l2 + "\n";
 }
@@ -55,7 +56,8 @@ TEST_CASE("the six condition keys are read and kept", "[conditions]") {
   CHECK(s.notices.empty());
   // written back with the file (simulate writes the plan's header)
   const std::string out = format_measurement_csv(s, ac());
-  for (const char* line : {"# temperature: 23.5", "# material_expansion: 11.5e-6", "# serial: B1234", "# date: 2026-11-20T09:30"})
+  for (const char* line :
+       {"# temperature: 23.5", "# material_expansion: 11.5e-6", "# serial: B1234", "# date: 2026-11-20T09:30"})
     CHECK(contains(out, line));
 }
 
@@ -79,15 +81,18 @@ TEST_CASE("no correction without the coefficient, and none for a file at 20 °C"
   correct_to_20c(only_t);
   CHECK_FALSE(only_t.corrected_to_20c);
   CHECK(only_t.rows[0].value[0] == 100.004025);
-  MeasurementSet at_20 = parse_measurement_csv(ballbar("# temperature: 20\n# material_expansion: 11.5e-6\n"), "f.csv", ac());
+  MeasurementSet at_20 =
+      parse_measurement_csv(ballbar("# temperature: 20\n# material_expansion: 11.5e-6\n"), "f.csv", ac());
   correct_to_20c(at_20);
   CHECK(at_20.corrected_to_20c);
   CHECK(at_20.rows[0].value[0] == 100.004025);  // f = 1 exactly
 }
 
 TEST_CASE("laser positioning lines corrected to 20 °C, straightness lines not: hand calculation", "[conditions]") {
-  const std::string head = "# type: laser\n# axis: X\n# tool_point: 0, 0, 0\n# temperature: 25\n# material_expansion: 10e-6\n";
-  const std::string rows = "t,run,X,Y,Z,e_um\n0,1,0,0,0,0.0\n1,1,100,0,0,5.0\n2,1,200,0,0,12.0\n3,2,0,0,0,1.0\n4,2,100,0,0,6.0\n";
+  const std::string head =
+      "# type: laser\n# axis: X\n# tool_point: 0, 0, 0\n# temperature: 25\n# material_expansion: 10e-6\n";
+  const std::string rows =
+      "t,run,X,Y,Z,e_um\n0,1,0,0,0,0.0\n1,1,100,0,0,5.0\n2,1,200,0,0,12.0\n3,2,0,0,0,1.0\n4,2,100,0,0,6.0\n";
   MeasurementSet pos = parse_measurement_csv(head + "# component: X\n" + rows, "p.csv", vmc());
   correct_to_20c(pos);
   REQUIRE(pos.corrected_to_20c);
@@ -109,9 +114,10 @@ TEST_CASE("laser positioning lines corrected to 20 °C, straightness lines not: 
 }
 
 TEST_CASE("sphere probing is not corrected (read through the machine's own scales)", "[conditions]") {
-  MeasurementSet s = parse_measurement_csv("# type: sphere\n# sphere: 120, 40, 80\n# temperature: 24\n"
-                                           "# material_expansion: 11.5e-6\nt,X,Y,Z,A,C,dx,dy,dz\n0,120,40,80,0,0,0.001,0.002,0.003\n",
-                                           "s.csv", ac());
+  MeasurementSet s = parse_measurement_csv(
+      "# type: sphere\n# sphere: 120, 40, 80\n# temperature: 24\n"
+      "# material_expansion: 11.5e-6\nt,X,Y,Z,A,C,dx,dy,dz\n0,120,40,80,0,0,0.001,0.002,0.003\n",
+      "s.csv", ac());
   correct_to_20c(s);
   CHECK_FALSE(s.corrected_to_20c);
   CHECK(s.rows[0].value[2] == 0.003);
@@ -148,12 +154,14 @@ TEST_CASE("condition keys that cannot be honoured are refused at their line", "[
   CHECK(contains(error_of(ballbar("# temperature: warm\n")), "f.csv:5: expected a number for temperature"));
   CHECK(contains(error_of(ballbar("# temperature: 22\n# material_expansion: 11.5\n")),
                  "f.csv:6: material_expansion 11.5 is not a linear expansion coefficient"));
-  CHECK(contains(error_of(ballbar("# material_expansion: 11.5e-6\n")), "f.csv:5: material_expansion without '# temperature:'"));
+  CHECK(contains(error_of(ballbar("# material_expansion: 11.5e-6\n")),
+                 "f.csv:5: material_expansion without '# temperature:'"));
   CHECK(contains(error_of(ballbar("# date: 20.11.2026\n")), "f.csv:5: date '20.11.2026' is not ISO 8601"));
   CHECK(contains(error_of(ballbar("# date: 2026-02-29\n")), "is not ISO 8601"));  // 2026 is no leap year
   CHECK(error_of(ballbar("# date: 2028-02-29T23:59:60Z\n")) == "no error");
   CHECK(error_of(ballbar("# date: 2026-11-20T09:30+01:00\n")) == "no error");
-  CHECK(contains(error_of(ballbar("# temperature: 22\n# temperature: 23\n")), "f.csv:6: '# temperature:' given twice (first on line 5)"));
+  CHECK(contains(error_of(ballbar("# temperature: 22\n# temperature: 23\n")),
+                 "f.csv:6: '# temperature:' given twice (first on line 5)"));
   CHECK(contains(error_of(ballbar("# Temperature: 22\n")), "f.csv:5: key 'Temperature': header keys are lower case"));
 }
 

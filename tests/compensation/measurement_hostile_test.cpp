@@ -74,8 +74,9 @@ TEST_CASE("measurement CSV: no rows, time backwards, a reading out of range") {
         "s.csv:6:53: dx = 1e9 is 1e+09 mm from zero, beyond what the instrument can read (at most 5 mm): a typing or "
         "export error; correct or delete the row");
   // the ballbar's reading is the bar length: 102.5 on a 100 mm bar is 2.5 mm off (range ±2 mm)
-  const std::string bb = "# type: ballbar\n# table_ball: 0, -100, 250\n# tool_ball: 0, 0, 0\n# bar_length: 100\n"
-                         "t,X,Y,Z,A,C,L\n0,0,0,250,0,0,100.0001\n0.5,0,-1.57709,249.99503,0.36145,0.72289,";
+  const std::string bb =
+      "# type: ballbar\n# table_ball: 0, -100, 250\n# tool_ball: 0, 0, 0\n# bar_length: 100\n"
+      "t,X,Y,Z,A,C,L\n0,0,0,250,0,0,100.0001\n0.5,0,-1.57709,249.99503,0.36145,0.72289,";
   CHECK_NOTHROW(comp::parse_measurement_csv(bb + "101.9\n", "b.csv", m));
   CHECK(message_of(bb + "102.5\n", "b.csv", m) ==
         "b.csv:7:42: L = 102.5 is 2.5 mm from the bar length, beyond what the instrument can read (at most 2 mm): a "

@@ -63,8 +63,9 @@ TEST_CASE("CSV errors name file and line") {
 
 TEST_CASE("model JSON: names checked against the machine, round trip") {
   const Machine m = ac();
-  const std::string text = "{\n \"machine\": \"ac-trunnion\",\n \"parameters\": {\n  \"EY0C\": -0.02,\n  \"ECC:h2:cos\": 4e-5,\n"
-                           "  \"reversal:A\": 1e-5\n },\n \"effects_added\": [\"ECC:h2\"],\n \"note\": \"kept\"\n}\n";
+  const std::string text =
+      "{\n \"machine\": \"ac-trunnion\",\n \"parameters\": {\n  \"EY0C\": -0.02,\n  \"ECC:h2:cos\": 4e-5,\n"
+      "  \"reversal:A\": 1e-5\n },\n \"effects_added\": [\"ECC:h2\"],\n \"note\": \"kept\"\n}\n";
   const ModelFile f = parse_model_json(text, "m.json", &m);
   CHECK(f.parameters.size() == 3);
   CHECK(*f.parameters.get("ECC:h2:cos") == 4e-5);
@@ -96,7 +97,7 @@ TEST_CASE("reversal dead band") {
   CHECK(off[2] == Approx(0.0));
   CHECK(off[3] == Approx(0.01));  // stands at 2
   CHECK(off[4] == Approx(0.05));
-  CHECK(off[5] == Approx(0.1));   // band crossed: command + b
+  CHECK(off[5] == Approx(0.1));  // band crossed: command + b
   CHECK(off[6] == Approx(0.1));
   CHECK(off[7] == Approx(-0.1 + 0.2 - 0.1 + 0.0).margin(1e-12));  // 1.1 actual stays until 1.2 > 1.1 → 0
   CHECK(off[8] == Approx(0.0));

@@ -26,8 +26,8 @@ namespace {
 const std::string kClean = std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/";
 
 std::string model(const std::string& machine_line, const std::string& parameter_line) {
-  return "{\n" + machine_line + " \"parameters\": {\n  \"EY0A\": 0.025,\n" + parameter_line + "  \"EX0C\": -0.012\n },\n" +
-         " \"effects_added\": []\n}\n";
+  return "{\n" + machine_line + " \"parameters\": {\n  \"EY0A\": 0.025,\n" + parameter_line +
+         "  \"EX0C\": -0.012\n },\n" + " \"effects_added\": []\n}\n";
 }
 
 std::string error_of(const std::string& text, const Machine& m) {
@@ -71,12 +71,17 @@ TEST_CASE("model JSON: every value plausible for its kind, 1e400 a clear error")
   CHECK(error_of(model(name, "  \"EZ0A\": 25,\n"), m).find("'EZ0A' = 25 acts by 25 mm") != std::string::npos);
   CHECK(error_of(model(name, "  \"EZ0A\": -1.5,\n"), m).find("(at most 1 mm)") != std::string::npos);
   // a polynomial term by its effect at 1000 mm of travel: 2e-3·1000 = 2 mm; 5e-4 gives 0.5 mm
-  CHECK(error_of(model(name, "  \"EXX:p1\": 2e-3,\n"), m).find("acts by 2 mm at 1000 mm of travel") != std::string::npos);
-  CHECK(error_of(model(name, "  \"EXX:p1\": 5e-4,\n"), m) == "(no error)");
-  CHECK(error_of(model(name, "  \"drift:Z:t:tau\": 0,\n"), m).find("outside the plausible time constants 1 .. 86400 s") !=
+  CHECK(error_of(model(name, "  \"EXX:p1\": 2e-3,\n"), m).find("acts by 2 mm at 1000 mm of travel") !=
         std::string::npos);
-  CHECK(error_of(model(name, "  \"drift:Z:t:lin\": 1e-3,\n"), m).find("acts by 28.8 mm after 28800 s") != std::string::npos);
-  CHECK(error_of(model(name, "  \"EB0A\": 1e400,\n"), m).rfind("m.json:5:11: a number beyond the range of a double", 0) == 0);
+  CHECK(error_of(model(name, "  \"EXX:p1\": 5e-4,\n"), m) == "(no error)");
+  CHECK(
+      error_of(model(name, "  \"drift:Z:t:tau\": 0,\n"), m).find("outside the plausible time constants 1 .. 86400 s") !=
+      std::string::npos);
+  CHECK(error_of(model(name, "  \"drift:Z:t:lin\": 1e-3,\n"), m).find("acts by 28.8 mm after 28800 s") !=
+        std::string::npos);
+  CHECK(
+      error_of(model(name, "  \"EB0A\": 1e400,\n"), m).rfind("m.json:5:11: a number beyond the range of a double", 0) ==
+      0);
   CHECK(error_of("{\"machine\": \"public-clean\", \"parameters\": {}, \"fit\": {\"rms_after_um\": \"x\"}}", m)
             .find("'fit' has a value of the wrong type") != std::string::npos);
 
@@ -100,16 +105,18 @@ TEST_CASE("post --model: another machine's or an implausible model is exit 2; --
   std::ofstream(d + "other.json") << model(" \"machine\": \"other\",\n", "");
   std::ofstream(d + "eb0a.json") << model(" \"machine\": \"public-clean\",\n", "  \"EB0A\": 1000,\n");
   CHECK(test::run_ncpost(post + "--model " + d + "other.json -o " + d + "o.nc " + kClean + "path.cls", d + "log") == 2);
-  CHECK(test::read_text_file(d + "log").find(d + "other.json:2:3: the model is of machine 'other'") != std::string::npos);
+  CHECK(test::read_text_file(d + "log").find(d + "other.json:2:3: the model is of machine 'other'") !=
+        std::string::npos);
   CHECK_FALSE(fs::exists(d + "o.nc"));
   CHECK(test::run_ncpost(post + "--model " + d + "eb0a.json -o " + d + "o.nc " + kClean + "path.cls", d + "log") == 2);
   CHECK(test::read_text_file(d + "log").find(d + "eb0a.json:5:4: 'EB0A' = 1000") != std::string::npos);
   CHECK(test::run_ncpost("simulate --machine " + kClean + "machine.toml --model " + d + "other.json -o " + d +
                              "s.csv " + kClean + "sphere.csv",
                          d + "log") == 2);
-  CHECK(test::run_ncpost(post + "--force --model " + d + "other.json -o " + d + "o.nc " + kClean + "path.cls", d + "log") == 0);
-  CHECK(test::read_text_file(d + "log").find("ncpost: warning: " + d + "other.json:2:3: the model is of machine 'other'") !=
-        std::string::npos);
+  CHECK(test::run_ncpost(post + "--force --model " + d + "other.json -o " + d + "o.nc " + kClean + "path.cls",
+                         d + "log") == 0);
+  CHECK(test::read_text_file(d + "log").find("ncpost: warning: " + d +
+                                             "other.json:2:3: the model is of machine 'other'") != std::string::npos);
   CHECK(fs::exists(d + "o.nc"));
   fs::remove_all(dir);
 }

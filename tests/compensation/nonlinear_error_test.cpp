@@ -20,7 +20,8 @@ namespace {
 /// Independent simulation: the public `tool_pose` at many points, distance to the segment by
 /// its own projection, then a fine grid around the best sample.
 template <class Errors>
-std::pair<double, double> dense_max(const Machine& m, const Setup& s, const ClBlock& b, const Errors& errors, int samples) {
+std::pair<double, double> dense_max(const Machine& m, const Setup& s, const ClBlock& b, const Errors& errors,
+                                    int samples) {
   auto position_error = [&](double t) {
     AxisPosition q = home_of(m);
     q.linear_mm = (1 - t) * b.from.linear_mm + t * b.to.linear_mm;
@@ -99,11 +100,14 @@ void check_random_blocks(const std::string& machine, const Errors& errors, int c
     CHECK(exact.max_error_mm >= dense * (1 - 1e-6) - 1e-9);  // a maximisation never reports less
     if (options.orientation) CHECK(exact.max_orientation_rad == Approx(dense_o).epsilon(0.03).margin(1e-9));
     if (dense > 1e-6) worst_relative = std::max(worst_relative, std::abs(exact.max_error_mm - dense) / dense);
-    if (dense_o > 1e-9) worst_orientation = std::max(worst_orientation, std::abs(exact.max_orientation_rad - dense_o) / dense_o);
+    if (dense_o > 1e-9)
+      worst_orientation = std::max(worst_orientation, std::abs(exact.max_orientation_rad - dense_o) / dense_o);
   }
-  fmt::print("nonlinear_error{} vs dense simulation, {} ({} blocks): worst relative difference {:.2e} (position), "
-             "{:.2e} (orientation), {:.1f} FK evaluations per block\n",
-             options.orientation ? "" : " (fast options)", machine, count, worst_relative, worst_orientation, double(evaluations) / count);
+  fmt::print(
+      "nonlinear_error{} vs dense simulation, {} ({} blocks): worst relative difference {:.2e} (position), "
+      "{:.2e} (orientation), {:.1f} FK evaluations per block\n",
+      options.orientation ? "" : " (fast options)", machine, count, worst_relative, worst_orientation,
+      double(evaluations) / count);
 }
 
 }  // namespace

@@ -55,10 +55,10 @@ TEST_CASE("seed 001 harmonic model: Emax·sin(πt) within about 0.1 mm of the ex
   double sampled = 0;
   for (int k = 0; k <= 22; ++k)
     sampled = std::max(sampled, std::abs(executed.at(k / 22.0).error_mm() - peak.magnitude_at(k / 22.0)));
-  fmt::print("seed 001 harmonic: Emax midpoint {:.4f} mm, peak {:.4f} mm; |e|-L: {:.4f} mm at t = {:.3f} (23 points: "
-             "{:.4f} mm, paper 0.0961), vector residual {:.4f} mm\n",
-             midpoint.amplitude_mm, peak.amplitude_mm, r_peak.magnitude_mm, r_peak.magnitude_at_t, sampled,
-             r_peak.vector_mm);
+  fmt::print(
+      "seed 001 harmonic: Emax midpoint {:.4f} mm, peak {:.4f} mm; |e|-L: {:.4f} mm at t = {:.3f} (23 points: "
+      "{:.4f} mm, paper 0.0961), vector residual {:.4f} mm\n",
+      midpoint.amplitude_mm, peak.amplitude_mm, r_peak.magnitude_mm, r_peak.magnitude_at_t, sampled, r_peak.vector_mm);
   CHECK(midpoint.amplitude_mm == Approx(1.7214).margin(1e-3));
   CHECK(peak.amplitude_mm == Approx(1.7214).margin(5e-4));
   CHECK(sampled == Approx(0.0961).margin(0.005));

@@ -21,7 +21,8 @@ inline Machine machine_file(const std::string& name) {
 /// Location errors of both rotary axes and a command-dependent error motion (mm, rad), about the
 /// size of tests/data/scenarios/public-clean/truth.json.
 struct LocationErrors {
-  template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool /*at_home*/) const {
+  template <class S>
+  AxisErrorTerms<S> operator()(int axis_index, const S& q, bool /*at_home*/) const {
     AxisErrorTerms<S> e;
     using std::sin;
     if (axis_index == 3) {
@@ -83,7 +84,9 @@ inline std::vector<ClLine> read_gotos(const std::string& path) {
   return out;
 }
 
-inline std::string dome_path() { return std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/path.cls"; }
+inline std::string dome_path() {
+  return std::string(NCPOST_SOURCE_DIR) + "/tests/data/scenarios/public-clean/path.cls";
+}
 inline Setup dome_setup() {
   Setup s;
   s.workpiece_origin_mm = Vec3d(0, 0, 80);  // job.json
@@ -106,7 +109,8 @@ inline std::vector<nonlinear::ClBlock> blocks_of(const Machine& m, const Setup& 
 
 /// Inverse kinematics of the actual machine for tests: the nominal solution, then Gauss-Newton on
 /// the forward chain with `Errors` (tip and axis residual, finite-difference Jacobian).
-template <class Errors> struct ModelSolver {
+template <class Errors>
+struct ModelSolver {
   const Machine& machine;
   Setup setup;
   Errors errors;

@@ -44,11 +44,11 @@ std::string text_of(const Machine& m, const PlanProgram& program, const Words& w
 
 struct Execution {
   int sets_mounted = 0;
-  int reads = 0;              ///< G4 (static) or G1 (continuous) blocks with the instrument on
-  int reads_off_plan = 0;     ///< G4 reads not at their row's pose
-  int violations = 0;         ///< samples breaking the instrument's rule
-  double worst_bar_mm = 0.0;  ///< largest change of the ballbar length
-  double nearest_turn_mm = 1e9;  ///< nearest the stylus came to the sphere centre while a rotary axis moved
+  int reads = 0;                   ///< G4 (static) or G1 (continuous) blocks with the instrument on
+  int reads_off_plan = 0;          ///< G4 reads not at their row's pose
+  int violations = 0;              ///< samples breaking the instrument's rule
+  double worst_bar_mm = 0.0;       ///< largest change of the ballbar length
+  double nearest_turn_mm = 1e9;    ///< nearest the stylus came to the sphere centre while a rotary axis moved
   double worst_off_line_mm = 0.0;  ///< farthest off the probe axis line while moving with the rotary axes still
   bool moved_after_last_stop = false;
 };
@@ -201,7 +201,8 @@ TEST_CASE("sphere program: retract along the probe axis, turn at the clearance, 
     PlanProgramOptions o;
     o.clearance_mm = 30.0;
     const std::string program = text_of(m, plan_program(m, plans, "test", o), w);
-    const Execution ex = execute(m, plans, program, false, o.clearance_mm, w.rounding.linear_mm, w.dialect.program_end.front());
+    const Execution ex =
+        execute(m, plans, program, false, o.clearance_mm, w.rounding.linear_mm, w.dialect.program_end.front());
     CHECK(ex.sets_mounted == 1);
     CHECK(ex.reads == static_cast<int>(rows_of(plans)));
     CHECK(ex.reads_off_plan == 0);

@@ -126,8 +126,7 @@ TEST_CASE("compensated IK at the kink of the play: tiny moves either way, standi
       const comp::ActualIkOutcome r = comp::solve_actual(model, cl, setup, *nominal.position, o);
       INFO(r.message);
       REQUIRE(r.ok());
-      const ToolPoseT<double> p =
-          model.tool_pose(*r.position, setup, comp::reversal_state(model, *r.position, stands));
+      const ToolPoseT<double> p = model.tool_pose(*r.position, setup, comp::reversal_state(model, *r.position, stands));
       CHECK((p.tip_mm - cl.tip_mm).norm() <= ActualSolver::kPostTipToleranceMm);
       CHECK(std::atan2(p.axis.cross(cl.axis).norm(), p.axis.dot(cl.axis)) <= ActualSolver::kPostAxisToleranceRad);
       const double need = (*free.position)[3] - stands[3];
@@ -172,7 +171,8 @@ TEST_CASE("post --model --tolerance 0.002 with reversal of A or C cuts within 2 
   }
 }
 
-TEST_CASE("three-axis VMC with reversal of X, Y, Z: a dome posted with --tolerance 0.002 cuts within 2 µm", "[reversal]") {
+TEST_CASE("three-axis VMC with reversal of X, Y, Z: a dome posted with --tolerance 0.002 cuts within 2 µm",
+          "[reversal]") {
   // the laser-identified model of samples/measurements/vmcl600 and its truth (21 errors, plays of
   // 3 to 5 µm); a hemisphere of radius 120 mm in rings every 10 deg, points every 10 deg
   const std::string dir = test::source("samples/measurements/vmcl600/");

@@ -20,7 +20,7 @@ namespace {
 const std::string kMachine = std::string(NCPOST_SOURCE_DIR) + "/machines/tsutsumi-zxfyac.toml";
 // The seed's eight deviations in ISO 230-1 names (docs/conventions.md), with the seed's own names.
 const std::vector<std::pair<std::string, std::string>> kSeed = {
-    {"EA0C", "alphaAY"}, {"EB0A", "betaAY"}, {"EC0A", "gammaAY"}, {"EB0C", "betaCA"},
+    {"EA0C", "alphaAY"},  {"EB0A", "betaAY"},   {"EC0A", "gammaAY"},  {"EB0C", "betaCA"},
     {"EX0C", "deltaxAY"}, {"EY0A", "deltayAY"}, {"EZ0A", "deltazAY"}, {"EY0C", "deltayCA"}};
 const double kAngle = deg_to_rad(0.005);
 const double kOffset = 0.01;

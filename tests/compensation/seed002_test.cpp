@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Seed 002 (Gao et al.): ballbar tests of a BC swivel head. With the two positioning errors
 // (zero errors of B and C) given, the remaining eight location errors of B and C are unique when
-// the C test is read at two tool lengths and the B test also along Y; with the seed's single tool length, the offset and the
-// tilt of the C line are seen only as the combination at the ball (as seed 000's heights).
-// The seed's αSB + αBC: in the home-referenced model the spindle is the reference (the tool
-// axis is +Z at home), so the tilt of the B line about X relative to the spindle is one
-// parameter, EA0B — the sum — and it is identified.
+// the C test is read at two tool lengths and the B test also along Y; with the seed's single tool length, the offset
+// and the tilt of the C line are seen only as the combination at the ball (as seed 000's heights). The seed's αSB +
+// αBC: in the home-referenced model the spindle is the reference (the tool axis is +Z at home), so the tilt of the B
+// line about X relative to the spindle is one parameter, EA0B — the sum — and it is identified.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -22,8 +21,8 @@ using namespace ncpost::comp;
 namespace {
 
 const std::vector<std::pair<std::string, double>> kTruth = {
-    {"EX0C", 0.012}, {"EY0C", -0.018}, {"EA0C", 2.5e-5}, {"EB0C", -3e-5}, {"EX0B", 0.02},
-    {"EZ0B", -0.015}, {"EA0B", 4e-5},  {"EC0B", -2e-5},  {"EB0B", 3e-5},  {"EC0C", -2e-5}};
+    {"EX0C", 0.012},  {"EY0C", -0.018}, {"EA0C", 2.5e-5}, {"EB0C", -3e-5}, {"EX0B", 0.02},
+    {"EZ0B", -0.015}, {"EA0B", 4e-5},   {"EC0B", -2e-5},  {"EB0B", 3e-5},  {"EC0C", -2e-5}};
 const std::vector<std::string> kEight = {"EX0C", "EY0C", "EA0C", "EB0C", "EX0B", "EZ0B", "EA0B", "EC0B"};
 
 std::vector<MeasurementSet> measure(const Machine& m, const BcHeadPlanOptions& o) {
@@ -83,4 +82,3 @@ TEST_CASE("seed 002: read along X and Z only, the B test does not see the tilts 
   CHECK(r.identifiability.rank == 6);
   CHECK(r.identifiability.pinned == std::vector<std::string>{"EA0B", "EC0B"});
 }
-

@@ -37,7 +37,8 @@ TEST_CASE("plan sphere, simulate, identify on the TRR-XY machine") {
   std::ofstream("trr_truth.json") << comp::format_model_json(model_from_errors(truth, "trr-xy"));
 
   REQUIRE(run("plan --machine " + machine + " sphere -o trr_plan") == 0);
-  REQUIRE(run("simulate --machine " + machine + " --model trr_truth.json --noise-um 0.2 --seed 3 -o trr_data.csv trr_plan.csv") == 0);
+  REQUIRE(run("simulate --machine " + machine +
+              " --model trr_truth.json --noise-um 0.2 --seed 3 -o trr_data.csv trr_plan.csv") == 0);
   REQUIRE(run("identify --machine " + machine + " -o trr_identified.json trr_data.csv") == 0);
 
   std::ifstream in("trr_identified.json");
@@ -63,7 +64,8 @@ TEST_CASE("plan sphere, simulate, identify on the TRR-XY machine") {
 
 TEST_CASE("bad probing data: file and line") {
   const std::string machine = test::source("machines/trr-xy.toml");
-  std::ofstream("trr_bad.csv") << "# type: sphere\nt,X,Y,U,V,W,stylus,dx,dy,dz\n0,0,0,170,170,170,0,0,0,0\n1,0,0,abc,170,170,0,0,0,0\n";
+  std::ofstream("trr_bad.csv")
+      << "# type: sphere\nt,X,Y,U,V,W,stylus,dx,dy,dz\n0,0,0,170,170,170,0,0,0,0\n1,0,0,abc,170,170,0,0,0,0\n";
   std::string err;
   CHECK(run("identify --machine " + machine + " -o trr_never.json trr_bad.csv", &err) == 2);
   CHECK(err.find("trr_bad.csv:4:") != std::string::npos);

@@ -31,7 +31,6 @@ Errors random_truth(unsigned seed) {
   return e;
 }
 
-
 /// A finishing path on the spec's test hemisphere (R 120 mm, tool normal, polar 5-30 deg): rings
 /// of 72 points, as APT CL source.
 std::string hemisphere_cl(std::vector<ClPoint>& points) {
@@ -146,7 +145,7 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
     }
   }
   WARN("validation poses: true machine vs nominal up to " << worst_nominal_um << " um, vs identified model up to "
-       << worst_um << " um");
+                                                          << worst_um << " um");
   CHECK(worst_um < 1.5);
   CHECK(worst_nominal_um > 30.0);
 
@@ -162,11 +161,13 @@ TEST_CASE("identify the 30 TRR-XY parameters from sphere probing, then compensat
   const std::string base = std::string(NCPOST_BINARY) + " post --machine " + machine_file +
                            " --workpiece-origin 0,0,-300 --tolerance none ";  // one block per CL point
   REQUIRE(std::system((base + "-o trr_before.nc trr_hemisphere.cls 2>/dev/null").c_str()) == 0);
-  REQUIRE(std::system((base + "--model trr_identified.json -o trr_after.nc trr_hemisphere.cls 2>/dev/null").c_str()) == 0);
+  REQUIRE(std::system((base + "--model trr_identified.json -o trr_after.nc trr_hemisphere.cls 2>/dev/null").c_str()) ==
+          0);
   const Execution before = execute(actual, test::read_trr_program("trr_before.nc"), cl);
   const Execution after = execute(actual, test::read_trr_program("trr_after.nc"), cl);
   WARN("hemisphere on the true machine: before " << before.max_end_mm * 1000 << " um (normal " << before.max_normal_um
-       << " um), after compensation " << after.max_end_mm * 1000 << " um (normal " << after.max_normal_um << " um)");
+                                                 << " um), after compensation " << after.max_end_mm * 1000
+                                                 << " um (normal " << after.max_normal_um << " um)");
   CHECK(before.max_end_mm > 0.02);
   CHECK(after.max_end_mm < 0.0015);
   CHECK(after.max_end_mm < before.max_end_mm / 20.0);

@@ -44,8 +44,10 @@ TEST_CASE("angular errors dominate the position and length errors (seed 004, tab
   const SensitivityResult& r = result();
   double smallest_angle = 1e300, largest_length = 0.0;
   for (int k = 0; k < kParameterCount; ++k) {
-    if (Errors::is_angle(k)) smallest_angle = std::min(smallest_angle, largest(r.maps[static_cast<std::size_t>(k)]));
-    else largest_length = std::max(largest_length, largest(r.maps[static_cast<std::size_t>(k)]));
+    if (Errors::is_angle(k))
+      smallest_angle = std::min(smallest_angle, largest(r.maps[static_cast<std::size_t>(k)]));
+    else
+      largest_length = std::max(largest_length, largest(r.maps[static_cast<std::size_t>(k)]));
   }
   WARN("smallest angular effect " << smallest_angle << " um, largest length effect " << largest_length << " um");
   CHECK(smallest_angle > largest_length);
@@ -75,7 +77,8 @@ TEST_CASE("chains b and c repeat chain a turned by 120 and 240 deg") {
   }
 }
 
-TEST_CASE("chain a's maps are mirror-symmetric about its radial plane (XZ), or antisymmetric for the tangential errors") {
+TEST_CASE(
+    "chain a's maps are mirror-symmetric about its radial plane (XZ), or antisymmetric for the tangential errors") {
   // the seed: the error pattern lies along the line through screw a and the midpoint of b-c
   const SensitivityResult& r = result();
   const int sectors = 360;
@@ -95,7 +98,9 @@ TEST_CASE("chain a's maps are mirror-symmetric about its radial plane (XZ), or a
   }
 }
 
-TEST_CASE("first order: twice the error, twice the deviation; a ball-joint offset along the plate normal is absorbed by the set-up at home") {
+TEST_CASE(
+    "first order: twice the error, twice the deviation; a ball-joint offset along the plate normal is absorbed by the "
+    "set-up at home") {
   const trr::Machine m = load_trr_xy_machine(test::source("machines/trr-xy.toml"));
   SensitivityOptions o;
   o.polar_step_deg = 5.0;
@@ -121,7 +126,8 @@ TEST_CASE("first order: twice the error, twice the deviation; a ball-joint offse
 }
 
 TEST_CASE("ncpost sensitivity: JSON of the spec and a self-contained HTML page") {
-  const std::string cmd = std::string(NCPOST_BINARY) + " sensitivity --machine " + test::source("machines/trr-xy.toml") +
+  const std::string cmd = std::string(NCPOST_BINARY) + " sensitivity --machine " +
+                          test::source("machines/trr-xy.toml") +
                           " --json trr_sens.json --html trr_sens.html >trr_sens.out 2>&1";
   REQUIRE(std::system(cmd.c_str()) == 0);
   std::ifstream in("trr_sens.json");
@@ -144,7 +150,8 @@ TEST_CASE("ncpost sensitivity: JSON of the spec and a self-contained HTML page")
   CHECK(svgs == 60);  // a map and its colour bar per parameter
   // dzs has no first-order effect: its three maps are drawn as zero (white), not saturated noise
   std::size_t no_effect = 0;
-  for (auto p = html.find(">no effect</text>"); p != std::string::npos; p = html.find(">no effect</text>", p + 1)) ++no_effect;
+  for (auto p = html.find(">no effect</text>"); p != std::string::npos; p = html.find(">no effect</text>", p + 1))
+    ++no_effect;
   CHECK(no_effect == 3);
   CHECK(html.find("<script") == std::string::npos);
   CHECK(html.find("http") == std::string::npos);  // nothing fetched

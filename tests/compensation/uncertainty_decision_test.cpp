@@ -20,9 +20,10 @@ Machine ac() { return load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/a
 Machine vmc() { return load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/vmcl600.toml"); }
 
 MeasurementSet ballbar(const std::string& extra) {
-  return parse_measurement_csv("# type: ballbar\n# table_ball: 0, -100, 250\n# tool_ball: 0, 0, 0\n# bar_length: 100.0\n" +
-                                   extra + "t,X,Y,Z,A,C,L\n0.00,0,0,250,0,0,100.001\n",
-                               "b.csv", ac());
+  return parse_measurement_csv(
+      "# type: ballbar\n# table_ball: 0, -100, 250\n# tool_ball: 0, 0, 0\n# bar_length: 100.0\n" + extra +
+          "t,X,Y,Z,A,C,L\n0.00,0,0,250,0,0,100.001\n",
+      "b.csv", ac());
 }
 
 const BudgetLine& line(const UncertaintyBudget& b, const std::string& source) {
@@ -34,12 +35,12 @@ const BudgetLine& line(const UncertaintyBudget& b, const std::string& source) {
 }  // namespace
 
 TEST_CASE("ISO 14253-1: pass only when value + U is within the tolerance", "[decision]") {
-  CHECK(decide(8.0, 1.0, 10.0) == Verdict::pass);          // 9 ≤ 10
-  CHECK(decide(9.0, 1.0, 10.0) == Verdict::pass);          // 10 ≤ 10: on the limit, still proven
-  CHECK(decide(9.5, 1.0, 10.0) == Verdict::not_proven);    // 10.5 > 10 but 8.5 ≤ 10
-  CHECK(decide(11.0, 1.0, 10.0) == Verdict::not_proven);   // 10 is not beyond 10
-  CHECK(decide(11.5, 1.0, 10.0) == Verdict::fail);         // 10.5 > 10
-  CHECK(decide(10.0, 0.0, 10.0) == Verdict::pass);         // no uncertainty: the plain comparison
+  CHECK(decide(8.0, 1.0, 10.0) == Verdict::pass);         // 9 ≤ 10
+  CHECK(decide(9.0, 1.0, 10.0) == Verdict::pass);         // 10 ≤ 10: on the limit, still proven
+  CHECK(decide(9.5, 1.0, 10.0) == Verdict::not_proven);   // 10.5 > 10 but 8.5 ≤ 10
+  CHECK(decide(11.0, 1.0, 10.0) == Verdict::not_proven);  // 10 is not beyond 10
+  CHECK(decide(11.5, 1.0, 10.0) == Verdict::fail);        // 10.5 > 10
+  CHECK(decide(10.0, 0.0, 10.0) == Verdict::pass);        // no uncertainty: the plain comparison
   CHECK(std::string(to_string(Verdict::not_proven)) == "NOT PROVEN");
 }
 
@@ -58,8 +59,9 @@ TEST_CASE("tolerances per figure kind from text", "[decision]") {
 }
 
 TEST_CASE("budget of one reading: instrument and the 20 °C correction's uncertainty", "[budget]") {
-  const MeasurementSet s = ballbar("# temperature: 23.5\n# material_expansion: 11.5e-6\n# instrument_uncertainty: 1.0\n"
-                                   "# temperature_uncertainty: 0.2\n# expansion_uncertainty: 1e-6\n");
+  const MeasurementSet s = ballbar(
+      "# temperature: 23.5\n# material_expansion: 11.5e-6\n# instrument_uncertainty: 1.0\n"
+      "# temperature_uncertainty: 0.2\n# expansion_uncertainty: 1e-6\n");
   const UncertaintyBudget b = reading_budget(s);
   CHECK(b.complete());
   // instrument: U 1.0 µm (k = 2) → u = 0.5 µm
@@ -100,7 +102,8 @@ TEST_CASE("budget of the ballbar G: √2 × instrument, repeatability from repea
 
 TEST_CASE("budget of the ISO 230-2 figures of a positioning line", "[budget]") {
   const MeasurementSet s = parse_measurement_csv(
-      "# type: laser\n# axis: X\n# component: X\n# tool_point: 0, 0, 0\n# temperature: 22\n# material_expansion: 10e-6\n"
+      "# type: laser\n# axis: X\n# component: X\n# tool_point: 0, 0, 0\n# temperature: 22\n# material_expansion: "
+      "10e-6\n"
       "# temperature_uncertainty: 0.1\n# expansion_uncertainty: 2e-6\n# instrument_uncertainty: 0.6\n"
       "t,run,X,Y,Z,e_um\n0,1,0,0,0,0\n1,1,100,0,0,1\n2,1,200,0,0,2\n",
       "x.csv", vmc());

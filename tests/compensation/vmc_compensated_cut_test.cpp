@@ -39,8 +39,8 @@ std::string dome_cl(int step) {
   for (int lat = step; lat < 90; lat += step)
     for (int lon = 0; lon <= 360; lon += step) {
       const double t = lat * kPi / 180, p = lon * kPi / 180;
-      cl += fmt::format("GOTO/{:.4f},{:.4f},{:.4f}\n", 120 * std::sin(t) * std::cos(p),
-                        120 * std::sin(t) * std::sin(p), 120 * std::cos(t));
+      cl += fmt::format("GOTO/{:.4f},{:.4f},{:.4f}\n", 120 * std::sin(t) * std::cos(p), 120 * std::sin(t) * std::sin(p),
+                        120 * std::cos(t));
     }
   return cl + "END\n";
 }
@@ -91,8 +91,10 @@ Cut cut_on(const Machine& m, const comp::MachineModel* model, const comp::Machin
 
 struct Vmc {
   Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  comp::MachineModel model{m, comp::read_model_json(test::source("samples/measurements/vmcl600/model.json"), &m).parameters};
-  comp::MachineModel truth{m, comp::read_model_json(test::source("samples/measurements/vmcl600/truth.json"), &m).parameters};
+  comp::MachineModel model{
+      m, comp::read_model_json(test::source("samples/measurements/vmcl600/model.json"), &m).parameters};
+  comp::MachineModel truth{
+      m, comp::read_model_json(test::source("samples/measurements/vmcl600/truth.json"), &m).parameters};
 };
 
 }  // namespace
@@ -100,8 +102,8 @@ struct Vmc {
 TEST_CASE("VMC dome, laser model: >= 10x on the true machine with the default tolerance, within 2 µm", "[vmc]") {
   const Vmc v;
   const std::string dome = dome_cl(5);  // 17 rings x 73 points = 1241 CL points, blocks of 0.9 to 10.5 mm
-  const Cut before = cut_on(v.m, nullptr, v.truth, dome, -1);          // nominal commands, one block per point
-  const Cut plain = cut_on(v.m, &v.model, v.truth, dome, -1);          // --tolerance none
+  const Cut before = cut_on(v.m, nullptr, v.truth, dome, -1);         // nominal commands, one block per point
+  const Cut plain = cut_on(v.m, &v.model, v.truth, dome, -1);         // --tolerance none
   const Cut by_default = cut_on(v.m, &v.model, v.truth, dome, 0.01);  // the CLI's default
   const Cut tight = cut_on(v.m, &v.model, v.truth, dome, 0.002);
   for (const Cut* c : {&before, &plain, &by_default, &tight}) {

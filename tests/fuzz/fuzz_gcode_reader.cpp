@@ -16,7 +16,8 @@
 namespace {
 
 const ncpost::Machine& machine() {
-  static const ncpost::Machine m = ncpost::parse_machine(ncpost::testing::ac_trunnion_toml("fuzz-ac", "[10, 25, 45]", "[10, 20, 30]"), "fuzz-ac.toml");
+  static const ncpost::Machine m = ncpost::parse_machine(
+      ncpost::testing::ac_trunnion_toml("fuzz-ac", "[10, 25, 45]", "[10, 20, 30]"), "fuzz-ac.toml");
   return m;
 }
 

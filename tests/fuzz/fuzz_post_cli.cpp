@@ -26,10 +26,10 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* const kMachines[] = {
-    NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml",       NCPOST_SOURCE_DIR "/machines/haas-umc750.toml",
-    NCPOST_SOURCE_DIR "/machines/gantry-bc-head.toml",    NCPOST_SOURCE_DIR "/machines/linuxcnc-xyzac-trt.toml",
-    NCPOST_SOURCE_DIR "/machines/tsutsumi-zxfyac.toml",   NCPOST_SOURCE_DIR "/machines/vmcl600.toml",
-    NCPOST_SOURCE_DIR "/machines/trr-xy.toml",            NCPOST_SOURCE_DIR "/machines/bv100.toml",
+    NCPOST_SOURCE_DIR "/machines/ac-trunnion.toml",     NCPOST_SOURCE_DIR "/machines/haas-umc750.toml",
+    NCPOST_SOURCE_DIR "/machines/gantry-bc-head.toml",  NCPOST_SOURCE_DIR "/machines/linuxcnc-xyzac-trt.toml",
+    NCPOST_SOURCE_DIR "/machines/tsutsumi-zxfyac.toml", NCPOST_SOURCE_DIR "/machines/vmcl600.toml",
+    NCPOST_SOURCE_DIR "/machines/trr-xy.toml",          NCPOST_SOURCE_DIR "/machines/bv100.toml",
 };
 
 struct Option {
@@ -45,7 +45,9 @@ const std::vector<Option>& options() {
       {"--input-kind", {"auto", "cl", "machine", "rtcp", "x"}},
       {"--allow-unterminated", {}},
       {"--msys", {"ignore", "apply"}},
-      {"--model", {NCPOST_SOURCE_DIR "/samples/measurements/ac-trunnion/model.json", NCPOST_SOURCE_DIR "/samples/measurements/vmcl600/model.json", "@file"}},
+      {"--model",
+       {NCPOST_SOURCE_DIR "/samples/measurements/ac-trunnion/model.json",
+        NCPOST_SOURCE_DIR "/samples/measurements/vmcl600/model.json", "@file"}},
       {"--force", {}},
       {"--tolerance", {"0.01", "0.001", "none", "0", "-1", "1e-9", "nan", "100"}},
       {"--nonlinear", {"adaptive", "harmonic"}},
@@ -103,7 +105,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     args.push_back(value);
   }
   switch (fdp.ConsumeIntegralInRange(0, 15)) {
-    case 0: break;  // no machine: a usage error
+    case 0:
+      break;  // no machine: a usage error
     case 1:
       args.insert(args.end(), {"--machine", second.string()});
       break;

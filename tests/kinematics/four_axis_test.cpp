@@ -26,7 +26,8 @@ const Machine& hmc() {
 
 }  // namespace
 
-TEST_CASE("a four-axis machine has X Y Z and one rotary axis: positions, words and home are sized by it", "[four-axis]") {
+TEST_CASE("a four-axis machine has X Y Z and one rotary axis: positions, words and home are sized by it",
+          "[four-axis]") {
   const Machine& m = hmc();
   REQUIRE(m.rotary_count() == 1);
   CHECK(m.rotary(0).letter == 'B');
@@ -71,14 +72,17 @@ TEST_CASE("four-axis inverse: the B angle that turns the tool axis onto the spin
   CHECK_THAT(out.failure.message, Catch::Contains("out of the reach"));
 }
 
-TEST_CASE("ncpost post on a four-axis HMC writes X Y Z B, re-executes within the tolerance, refuses a Y tilt (exit 3)", "[four-axis][cli]") {
+TEST_CASE("ncpost post on a four-axis HMC writes X Y Z B, re-executes within the tolerance, refuses a Y tilt (exit 3)",
+          "[four-axis][cli]") {
   const std::string dir = test::make_temp_dir("four_axis_cli");
   const std::string machine = "--machine '" + test::source("machines/hmc-b-table.toml") + "' ";
-  const std::string apt = test::write_text_file(dir + "/index.apt",
-                                                "UNITS/MM\nLOADTL/1\nSPINDL/3000,CLW\nRAPID\nGOTO/0,0,50,0,0,1\n"
-                                                "RAPID\nGOTO/80,10,0,1,0,0\nFEDRAT/500\nGOTO/50,10,0,1,0,0\nGOTO/50,-10,0,1,0,0\n"
-                                                "GOTO/40,-10,10,0.5,0,0.8660254038\nFINI\n");
-  REQUIRE(test::run_ncpost("post " + machine + "--verify -o '" + dir + "/index.nc' '" + apt + "'", dir + "/log.txt") == 0);
+  const std::string apt =
+      test::write_text_file(dir + "/index.apt",
+                            "UNITS/MM\nLOADTL/1\nSPINDL/3000,CLW\nRAPID\nGOTO/0,0,50,0,0,1\n"
+                            "RAPID\nGOTO/80,10,0,1,0,0\nFEDRAT/500\nGOTO/50,10,0,1,0,0\nGOTO/50,-10,0,1,0,0\n"
+                            "GOTO/40,-10,10,0.5,0,0.8660254038\nFINI\n");
+  REQUIRE(test::run_ncpost("post " + machine + "--verify -o '" + dir + "/index.nc' '" + apt + "'", dir + "/log.txt") ==
+          0);
   const std::string nc = test::read_text_file(dir + "/index.nc");
   // the rapid to (80, 10, 0) along +X: Z first (away from the part), then Y and B (R_Y(-90) turns
   // the point to (0, 10, 80)); the cut to x = 50 is Z50, then Y-10; the last point (40, -10, 10)
@@ -102,9 +106,11 @@ TEST_CASE("ncpost post on a four-axis HMC writes X Y Z B, re-executes within the
   for (const char* other : {" A", " C"}) CHECK(nc.find(other) == std::string::npos);  // no other rotary word
   const std::string log = test::read_text_file(dir + "/log.txt");
   CHECK_THAT(log, Catch::Contains("after  (the written program re-executed"));
-  const std::string tilted_y = test::write_text_file(dir + "/tilt_y.apt", "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,50,0,0.6,0.8\nFINI\n");
+  const std::string tilted_y =
+      test::write_text_file(dir + "/tilt_y.apt", "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,50,0,0.6,0.8\nFINI\n");
   CHECK(test::run_ncpost("post " + machine + "-o '" + dir + "/tilt_y.nc' '" + tilted_y + "'", dir + "/log2.txt") == 3);
-  CHECK_THAT(test::read_text_file(dir + "/log2.txt"),
-             Catch::Contains("tilt_y.apt:4: tool orientation is out of the reach of the rotary axes (tip 0.0000, 0.0000, "
-                             "50.0000 mm, axis 0.000000, 0.600000, 0.800000)"));
+  CHECK_THAT(
+      test::read_text_file(dir + "/log2.txt"),
+      Catch::Contains("tilt_y.apt:4: tool orientation is out of the reach of the rotary axes (tip 0.0000, 0.0000, "
+                      "50.0000 mm, axis 0.000000, 0.600000, 0.800000)"));
 }

@@ -59,7 +59,8 @@ RoundTrip round_trip(const Kinematics& k, std::mt19937& rng, int n, double max_t
     REQUIRE(tp);
     const Vec3d tip = Kinematics::tip_in_workpiece(*tp, *ik.command, origin);
     r.worst_tip_mm = std::max(r.worst_tip_mm, (tip - cl.tip_mm).norm());
-    r.worst_axis_rad = std::max(r.worst_axis_rad, std::atan2(tp->axis.cross(cl.axis.normalized()).norm(), tp->axis.dot(cl.axis.normalized())));
+    r.worst_axis_rad = std::max(
+        r.worst_axis_rad, std::atan2(tp->axis.cross(cl.axis.normalized()).norm(), tp->axis.dot(cl.axis.normalized())));
     ++r.solved;
   }
   return r;
@@ -85,7 +86,8 @@ TEST_CASE("parasitic motion: a tilted axis moves the plate sideways and spins it
   const InverseOutcome ik = inverse(k, cl, Vec3d(0, 0, -250.0));
   REQUIRE(ik.ok());
   // the pin-plane constraints hold on the nominal machine
-  for (const ChainFrame& c : k.chains()) CHECK(std::abs(ik.machine_T_plate.apply(c.ball_in_plate_mm).dot(c.tangential)) < 1e-9);
+  for (const ChainFrame& c : k.chains())
+    CHECK(std::abs(ik.machine_T_plate.apply(c.ball_in_plate_mm).dot(c.tangential)) < 1e-9);
   // a tilt toward +X (toward chain a) in the plane of chain a: no spin, plate shifted in x only
   const Vec3d tcp = ik.machine_T_plate.t - k.geometry().tip_offset_mm() * cl.axis;
   CHECK(std::abs(tcp.x()) > 1.0);  // the parasitic translation is not small
@@ -96,7 +98,8 @@ TEST_CASE("parasitic motion: a tilted axis moves the plate sideways and spins it
   // a general tilt: the pin-plane constraints leave no torsion (in tilt-and-torsion angles: the
   // plate is the level plate turned about e_z × u), but x, y move with the azimuth
   const double az = deg_to_rad(40.0);
-  const ClPoint cl2{Vec3d(0, 0, 0), Vec3d(std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt))};
+  const ClPoint cl2{Vec3d(0, 0, 0),
+                    Vec3d(std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt))};
   const InverseOutcome ik2 = inverse(k, cl2, Vec3d(0, 0, -250.0));
   REQUIRE(ik2.ok());
   const Mat3d no_torsion = Eigen::AngleAxisd(tilt, Vec3d::UnitZ().cross(cl2.axis).normalized()).toRotationMatrix();
@@ -109,7 +112,8 @@ TEST_CASE("forward(inverse(x)) = x over the workspace, nominal machine") {
   const Kinematics k(seed_machine());
   std::mt19937 rng(7);
   const RoundTrip r = round_trip(k, rng, 3000, 30.0);
-  WARN("nominal round trip: " << r.solved << " poses, tip " << r.worst_tip_mm << " mm, axis " << r.worst_axis_rad << " rad");
+  WARN("nominal round trip: " << r.solved << " poses, tip " << r.worst_tip_mm << " mm, axis " << r.worst_axis_rad
+                              << " rad");
   CHECK(r.worst_tip_mm < 1e-9);
   CHECK(r.worst_axis_rad < 1e-11);
 }
@@ -119,7 +123,8 @@ TEST_CASE("forward(inverse(x)) = x with errors of 0.05 mm / 0.05 mrad and of 0.5
     std::mt19937 rng(11 + static_cast<int>(scale * 100));
     const Kinematics k(seed_machine(), random_errors(rng, scale));
     const RoundTrip r = round_trip(k, rng, 500, 30.0);
-    WARN("round trip with errors " << scale << ": tip " << r.worst_tip_mm << " mm, axis " << r.worst_axis_rad << " rad");
+    WARN("round trip with errors " << scale << ": tip " << r.worst_tip_mm << " mm, axis " << r.worst_axis_rad
+                                   << " rad");
     CHECK(r.worst_tip_mm < 1e-8);
     CHECK(r.worst_axis_rad < 1e-11);
   }
@@ -163,7 +168,8 @@ TEST_CASE("out of reach: a clear failure naming the cause") {
     const Kinematics ku(narrow);
     CHECK(inverse(ku, ClPoint{Vec3d(0, 0, 0), Vec3d::UnitZ()}, Vec3d(0, 0, -300)).ok());
     const double tilt = deg_to_rad(30.0);
-    const InverseOutcome ik = inverse(ku, ClPoint{Vec3d(0, 0, 0), Vec3d(std::sin(tilt), 0, std::cos(tilt))}, Vec3d(0, 0, -300));
+    const InverseOutcome ik =
+        inverse(ku, ClPoint{Vec3d(0, 0, 0), Vec3d(std::sin(tilt), 0, std::cos(tilt))}, Vec3d(0, 0, -300));
     CHECK_FALSE(ik.ok());
     INFO(ik.failure);
     CHECK(ik.failure.find("link of chain") != std::string::npos);

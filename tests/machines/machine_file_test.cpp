@@ -62,8 +62,9 @@ TEST_CASE("bad machine files name the line and what was expected") {
              Catch::Contains("m.toml:14") && Catch::Contains("unknown key 'limit'"));
   CHECK_THAT(error_of(replaced(kGood, "chain = \"w C' A' Y' b X Z t\"", "chain = \"w C' A Y' b X Z t\"")),
              Catch::Contains("m.toml:3") && Catch::Contains("must be primed"));
-  CHECK_THAT(error_of(replaced(kGood, "type = \"rotary\"\ndirection = [0, 0, 1]", "type = \"rotory\"\ndirection = [0, 0, 1]")),
-             Catch::Contains("\"linear\" or \"rotary\""));
+  CHECK_THAT(
+      error_of(replaced(kGood, "type = \"rotary\"\ndirection = [0, 0, 1]", "type = \"rotory\"\ndirection = [0, 0, 1]")),
+      Catch::Contains("\"linear\" or \"rotary\""));
   CHECK_THAT(error_of(replaced(kGood, "direction = [0, 0, 1]", "direction = [1, 0, 0]")), Catch::Contains("parallel"));
   CHECK_THAT(error_of("[machine\nname=1"), Catch::Contains("m.toml:1"));
   CHECK_THAT(error_of(replaced(kGood, "chain = \"w C' A' Y' b X Z t\"", "chain = \"w Y' C' A' b X Z t\"")),

@@ -23,7 +23,8 @@ std::string with_identity(const std::string& text, const std::string& lines) {
 }  // namespace
 
 TEST_CASE("serial and owner of a machine file are read and shown, not refused", "[identity]") {
-  const std::string text = with_identity(testing::ac_trunnion_toml("ac"), "serial = \"AC-0815\"\nowner = \"Werkzeugbau Nord\"\n");
+  const std::string text =
+      with_identity(testing::ac_trunnion_toml("ac"), "serial = \"AC-0815\"\nowner = \"Werkzeugbau Nord\"\n");
   const Machine with = parse_machine(text, "m.toml");
   const Machine without = parse_machine(testing::ac_trunnion_toml("ac"), "m.toml");
   CHECK(with.name == without.name);
@@ -34,7 +35,8 @@ TEST_CASE("serial and owner of a machine file are read and shown, not refused", 
   const MachineRecord none = parse_machine_record(testing::ac_trunnion_toml("ac"), "m.toml");
   CHECK(none.serial.empty());
   CHECK(none.owner.empty());
-  const std::string trr = with_identity(test::read_text_file(test::source("machines/trr-xy.toml")), "serial = \"T-1\"\n");
+  const std::string trr =
+      with_identity(test::read_text_file(test::source("machines/trr-xy.toml")), "serial = \"T-1\"\n");
   CHECK_NOTHROW(parse_trr_xy_machine(trr, "t.toml"));
   CHECK(parse_machine_record(trr, "t.toml").serial == "T-1");
 }
@@ -67,7 +69,8 @@ TEST_CASE("[tolerances] gives one acceptance tolerance per figure kind", "[ident
   };
   CHECK(error_of(testing::ac_trunnion_toml("ac") + "[tolerances]\nQ = 3\n").find("unknown key 'Q' in [tolerances]") !=
         std::string::npos);
-  CHECK(error_of(testing::ac_trunnion_toml("ac") + "[tolerances]\nG = -3\n").find("[tolerances] G: expected a number of µm") !=
+  CHECK(error_of(testing::ac_trunnion_toml("ac") + "[tolerances]\nG = -3\n")
+            .find("[tolerances] G: expected a number of µm") != std::string::npos);
+  CHECK(error_of(testing::ac_trunnion_toml("ac") + "[tolerances]\nG = \"ten\"\n").find("[tolerances] G:") !=
         std::string::npos);
-  CHECK(error_of(testing::ac_trunnion_toml("ac") + "[tolerances]\nG = \"ten\"\n").find("[tolerances] G:") != std::string::npos);
 }

@@ -70,13 +70,19 @@ TEST_CASE("bad TRR-XY files: file, line and what was expected") {
   const std::string good = shipped_text();
   CHECK(error_of(good).empty());
   CHECK(error_of(replaced(good, "link_length = 1020.0", "link_length = -1")).find("m.toml:13:") != std::string::npos);
-  CHECK(error_of(replaced(good, "link_length = 1020.0", "link_length = -1")).find("expected a positive number") != std::string::npos);
+  CHECK(error_of(replaced(good, "link_length = 1020.0", "link_length = -1")).find("expected a positive number") !=
+        std::string::npos);
   CHECK(error_of(replaced(good, "link_length = 1020.0\n", "")).find("missing key 'link_length'") != std::string::npos);
-  CHECK(error_of(replaced(good, "tool_offset = 270.0", "tool_offset = 270.0\nspindle = 1")).find("unknown key 'spindle' in [trr_xy]") != std::string::npos);
+  CHECK(error_of(replaced(good, "tool_offset = 270.0", "tool_offset = 270.0\nspindle = 1"))
+            .find("unknown key 'spindle' in [trr_xy]") != std::string::npos);
   CHECK(error_of(replaced(good, "[axes.W]", "[axes.Z]")).find("axis 'Z'") != std::string::npos);
-  CHECK(error_of(replaced(good, "[axes.W]\ntype = \"linear\"\nlimits = [0, 600]\n", "")).find("missing axis [axes.W]") != std::string::npos);
+  CHECK(
+      error_of(replaced(good, "[axes.W]\ntype = \"linear\"\nlimits = [0, 600]\n", "")).find("missing axis [axes.W]") !=
+      std::string::npos);
   CHECK(error_of(replaced(good, "limits = [0, 600]", "limits = [600, 0]")).find("min < max") != std::string::npos);
-  CHECK(error_of(replaced(good, "kind = \"trr-xy\"", "kind = \"serial\"\nchain = \"w b X t\"")).find("unknown key 'chain'") != std::string::npos);
-  CHECK(error_of(replaced(good, "platform_radius = 200.0", "platform_radius = 600.0")).find("base_radius") != std::string::npos);
+  CHECK(error_of(replaced(good, "kind = \"trr-xy\"", "kind = \"serial\"\nchain = \"w b X t\""))
+            .find("unknown key 'chain'") != std::string::npos);
+  CHECK(error_of(replaced(good, "platform_radius = 200.0", "platform_radius = 600.0")).find("base_radius") !=
+        std::string::npos);
   CHECK(error_of("[machine\nname=1").find("m.toml:1:") != std::string::npos);
 }

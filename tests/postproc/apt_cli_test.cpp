@@ -42,7 +42,8 @@ TEST_CASE("ncpost post: a CL file must end with FINI; empty and over-long input 
   CHECK_THAT(read_text_file(log), Catch::Contains("cut.apt:4: file ends without FINI: truncated?"));
   CHECK_FALSE(fs::exists(d.at("out.nc")));
   CHECK(run_ncpost(post + "--allow-unterminated " + cut, log) == 0);
-  CHECK_THAT(read_text_file(d.at("out.nc")), Catch::Contains("X-100.0000 Y-100.0000 Z-90.0000") && Catch::Contains("X-90.0000\n"));
+  CHECK_THAT(read_text_file(d.at("out.nc")),
+             Catch::Contains("X-100.0000 Y-100.0000 Z-90.0000") && Catch::Contains("X-90.0000\n"));
   fs::remove(d.at("out.nc"));
 
   CHECK(run_ncpost(post + d.file("empty.apt", ""), log) == 2);
@@ -57,7 +58,8 @@ TEST_CASE("ncpost post: a CL file must end with FINI; empty and over-long input 
   CHECK_FALSE(fs::exists(d.at("out.nc")));
 
   // CR-only line ends and a byte order mark: read like LF, no BOM in the program
-  CHECK(run_ncpost(post + d.file("cr.apt", "\xEF\xBB\xBFUNITS/MM\rFEDRAT/500\rGOTO/0,0,10\rGOTO/10,0,10\rFINI\r"), log) == 0);
+  CHECK(run_ncpost(post + d.file("cr.apt", "\xEF\xBB\xBFUNITS/MM\rFEDRAT/500\rGOTO/0,0,10\rGOTO/10,0,10\rFINI\r"),
+                   log) == 0);
   const std::string nc = read_text_file(d.at("out.nc"));
   CHECK(nc.find("\xEF\xBB\xBF") == std::string::npos);
   CHECK_THAT(nc, Catch::Contains("X-100.0000 Y-100.0000 Z-90.0000") && Catch::Contains("X-90.0000\n"));
@@ -72,8 +74,8 @@ TEST_CASE("ncpost post: an NX MSYS that flips the MCS") {
                                  "TOOL PATH/OP1,TOOL,MILL\nMSYS/0,0,0,1,0,0,0,-1,0\nFEDRAT/MMPM,500\n"
                                  "GOTO/10,-20,-5,0,0,-1\nGOTO/30,-20,-5,0,0,-1\nEND-OF-PATH\n");
   CHECK(run_ncpost(post + cls, log) == 3);  // as written the tool points down: the message names MSYS
-  CHECK_THAT(read_text_file(log), Catch::Contains("flip.cls:2: the file's MSYS rotates the MCS") &&
-                                      Catch::Contains("--msys apply"));
+  CHECK_THAT(read_text_file(log),
+             Catch::Contains("flip.cls:2: the file's MSYS rotates the MCS") && Catch::Contains("--msys apply"));
   CHECK(run_ncpost(post + "--msys apply " + cls, log) == 0);
   const std::string nc = read_text_file(d.at("out.nc"));
   // (10,-20,-5) in the flipped MCS is (10,20,5) absolute: machine X-90 Y-80 Z-95 with the origin at -100

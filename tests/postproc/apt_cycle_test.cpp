@@ -25,8 +25,10 @@ cl::AptStatement statement(std::initializer_list<const char*> tokens, int line =
     a.column = column;
     char* end = nullptr;
     const double v = std::strtod(t, &end);
-    if (end && *end == '\0' && end != t) a.is_number = true, a.number = v;
-    else a.word = t;
+    if (end && *end == '\0' && end != t)
+      a.is_number = true, a.number = v;
+    else
+      a.word = t;
     st.arguments.push_back(a);
     st.raw_arguments += (st.raw_arguments.empty() ? "" : ",") + std::string(t);
     column += static_cast<int>(std::string(t).size()) + 1;
@@ -54,7 +56,8 @@ std::string error_of(std::initializer_list<const char*> tokens) {
 }  // namespace
 
 TEST_CASE("SOLIDWORKS CAM: DRILL and DEEP2 with FEDTO, RAPTO, RTRCTO, 1STPECK, SUBPECK") {
-  const cl::Cycle d = read({"DRILL", "FEDTO", "7.85788", "MMPM", "326.770115", "RAPTO", "3.", "RTRCTO", "25.", "DWELL", "0"});
+  const cl::Cycle d =
+      read({"DRILL", "FEDTO", "7.85788", "MMPM", "326.770115", "RAPTO", "3.", "RTRCTO", "25.", "DWELL", "0"});
   CHECK(d.kind == cl::Cycle::Kind::drill);
   CHECK(d.depth_mm == 7.85788);
   CHECK(d.rapid_to_mm == 3.0);
@@ -65,15 +68,16 @@ TEST_CASE("SOLIDWORKS CAM: DRILL and DEEP2 with FEDTO, RAPTO, RTRCTO, 1STPECK, S
   CHECK_FALSE(d.feed_per_rev);
   CHECK(d.dwell_s == 0.0);
 
-  const cl::Cycle p = read({"DEEP2", "FEDTO", "42.01108", "1STPECK", "5.", "SUBPECK", "2.", "MMPM", "432.1", "RAPTO", "3.",
-                            "RTRCTO", "25."});
+  const cl::Cycle p = read({"DEEP2", "FEDTO", "42.01108", "1STPECK", "5.", "SUBPECK", "2.", "MMPM", "432.1", "RAPTO",
+                            "3.", "RTRCTO", "25."});
   CHECK(p.kind == cl::Cycle::Kind::deep);
   CHECK(p.kind_word == "DEEP2");
   CHECK(p.first_peck_mm == 5.0);
   CHECK(p.peck_mm == 2.0);
   CHECK(p.depth_mm == 42.01108);
 
-  const cl::Cycle i = read({"DEEP", "FEDTO", "3.301", "INCR", "10.", "MMPM", "791.67", "RAPTO", "29.", "RTRCTO", "49."});
+  const cl::Cycle i =
+      read({"DEEP", "FEDTO", "3.301", "INCR", "10.", "MMPM", "791.67", "RAPTO", "29.", "RTRCTO", "49."});
   CHECK(i.first_peck_mm == 10.0);
   CHECK(i.peck_mm == 10.0);
   CHECK(i.rapid_to_mm == 29.0);
@@ -85,7 +89,8 @@ TEST_CASE("SOLIDWORKS CAM: DRILL and DEEP2 with FEDTO, RAPTO, RTRCTO, 1STPECK, S
 }
 
 TEST_CASE("NX: FEDTO signed along the tool axis, RTRCTO AUTO, DRILL DEEP and BRKCHP, inch units") {
-  const cl::Cycle d = read({"DRILL", "RAPTO", "3.0000", "FEDTO", "-33.0043", "RTRCTO", "AUTO", "MMPM", "250.0000"}, true);
+  const cl::Cycle d =
+      read({"DRILL", "RAPTO", "3.0000", "FEDTO", "-33.0043", "RTRCTO", "AUTO", "MMPM", "250.0000"}, true);
   CHECK(d.kind == cl::Cycle::Kind::drill);
   CHECK(d.depth_mm == Approx(33.0043));
   CHECK_FALSE(d.retract_mm.has_value());  // back to the R plane
@@ -119,7 +124,8 @@ TEST_CASE("Creo: TAP with TPI, DEPTH and CLEAR; BORE, REAM, BORE DRAG; feed per 
 }
 
 TEST_CASE("a cycle kind or word the post does not know stops it naming the line") {
-  CHECK_THAT(error_of({"CSINK", "DEPTH", "3", "CLEAR", "2"}), Catch::Contains("t.apt:7:7:") && Catch::Contains("CSINK"));
+  CHECK_THAT(error_of({"CSINK", "DEPTH", "3", "CLEAR", "2"}),
+             Catch::Contains("t.apt:7:7:") && Catch::Contains("CSINK"));
   CHECK_THAT(error_of({"BORE", "BACK", "DEPTH", "3"}), Catch::Contains("BORE,BACK") && Catch::Contains("not known"));
   CHECK_THAT(error_of({"DRILL", "DEPTH", "3", "ORIENT", "90"}), Catch::Contains("'ORIENT' is not known"));
   CHECK_THAT(error_of({"DEEP", "DEPTH", "3", "CLEAR", "2"}), Catch::Contains("peck"));

@@ -51,13 +51,15 @@ TEST_CASE("words that start with a digit are names; free text is never read as n
   CHECK(st.arguments[3].word == "1STPECK");
   CHECK(st.arguments[4].number == 5.0);
   // still malformed numbers: no character a name has
-  CHECK_THROWS_WITH(cl::parse_apt_statement("GOTO/1,2.5.3,4", "t.cls", {1, 1}), Catch::Contains("malformed number '2.5.3'"));
+  CHECK_THROWS_WITH(cl::parse_apt_statement("GOTO/1,2.5.3,4", "t.cls", {1, 1}),
+                    Catch::Contains("malformed number '2.5.3'"));
   CHECK_THROWS_WITH(cl::parse_apt_statement("GOTO/1,1.5E,4", "t.cls", {1, 1}), Catch::Contains("malformed number"));
 }
 
 TEST_CASE("CIRCLE with six values: the radius from the start point, the end checked") {
   // a quarter arc of radius 5 about (10,0,0), then a full circle (start = end)
-  const auto rs = read_all("GOTO/15,0,0\nCIRCLE/10,0,0,0,0,1\nGOTO/10,5,0\nCIRCLE/10.,0.,0.,0.,0.,1.\nGOTO/10,5,0\nFINI\n");
+  const auto rs =
+      read_all("GOTO/15,0,0\nCIRCLE/10,0,0,0,0,1\nGOTO/10,5,0\nCIRCLE/10.,0.,0.,0.,0.,1.\nGOTO/10,5,0\nFINI\n");
   const auto c = only<cl::Circle>(rs);
   REQUIRE(c.size() == 2);
   CHECK(c[0].radius_mm == Approx(5.0).epsilon(1e-12));
@@ -137,7 +139,8 @@ TEST_CASE("huge numbers are refused with a short message") {
 
 TEST_CASE("MSYS: ignore posts GOTOs as written; apply maps them into the absolute frame") {
   // MCS at (100, 0, 50), turned upside down (X stays, Y and Z flip)
-  const std::string file = "MSYS/100,0,50,1,0,0,0,-1,0\nGOTO/1,2,3,0,0,-1\nGODLTA/0,0,1\nCIRCLE/0,0,0,0,0,1,5\nGOTO/1,2,3\nFINI\n";
+  const std::string file =
+      "MSYS/100,0,50,1,0,0,0,-1,0\nGOTO/1,2,3,0,0,-1\nGODLTA/0,0,1\nCIRCLE/0,0,0,0,0,1,5\nGOTO/1,2,3\nFINI\n";
   const auto as_written = only<cl::Motion>(read_all(file));
   REQUIRE(as_written.size() == 3);
   CHECK(as_written[0].point.tip_mm == Vec3d(1, 2, 3));
@@ -170,9 +173,11 @@ TEST_CASE("MSYS: ignore posts GOTOs as written; apply maps them into the absolut
   }
   CHECK(r2.failure_hint().empty());
   // operations in different MCSs: refused under ignore, posted under apply
-  const std::string two = "MSYS/0,0,0,1,0,0,0,1,0\nGOTO/1,2,3\nMSYS/0,0,0,1,0,0,0,1,0\nGOTO/1,2,3\nMSYS/0,0,0,0,1,0,-1,0,0\n"
-                          "GOTO/1,2,3\nFINI\n";
-  CHECK_THAT(error_of(two).first, Catch::Contains("t.cls:5:1") && Catch::Contains("line 1") && Catch::Contains("--msys apply"));
+  const std::string two =
+      "MSYS/0,0,0,1,0,0,0,1,0\nGOTO/1,2,3\nMSYS/0,0,0,1,0,0,0,1,0\nGOTO/1,2,3\nMSYS/0,0,0,0,1,0,-1,0,0\n"
+      "GOTO/1,2,3\nFINI\n";
+  CHECK_THAT(error_of(two).first,
+             Catch::Contains("t.cls:5:1") && Catch::Contains("line 1") && Catch::Contains("--msys apply"));
   const auto m2 = only<cl::Motion>(read_all(two, apply));
   REQUIRE(m2.size() == 3);
   CHECK((m2[2].point.tip_mm - Vec3d(-2, 1, 3)).norm() < 1e-12);

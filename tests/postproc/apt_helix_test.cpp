@@ -18,8 +18,9 @@ using namespace ncpost::test;
 TEST_CASE("an NX helix of 3 turns is posted as 2 turns and the 270 deg arc to the GOTO, at one pitch", "[apt][helix]") {
   // start (5, 0, 10); centre (0, 0, 4) at the end's level; axis +Z, NX: clockwise about it; the end
   // (0, 5, 4) is 270 deg clockwise from the start: 2 x 360 + 270 = 990 deg for 6 mm of depth
-  const std::string cl = "TOOL PATH/HELIX,TOOL,MILL\nUNITS/MM\nLOADTL/1\nRAPID\nGOTO/5,0,10\nFEDRAT/MMPM,400\n"
-                         "CIRCLE/0,0,4,0,0,1,5,0.01,0.5,6,0,TIMES,3\nGOTO/0,5,4\nFINI\n";
+  const std::string cl =
+      "TOOL PATH/HELIX,TOOL,MILL\nUNITS/MM\nLOADTL/1\nRAPID\nGOTO/5,0,10\nFEDRAT/MMPM,400\n"
+      "CIRCLE/0,0,4,0,0,1,5,0.01,0.5,6,0,TIMES,3\nGOTO/0,5,4\nFINI\n";
   const std::string dir = make_temp_dir("apt_helix");
   const std::string in = write_text_file(dir + "/h.cls", cl), out = dir + "/h.nc", log = dir + "/h.log";
   REQUIRE(run_ncpost("post --machine " + source("machines/vmcl600.toml") + " -o " + out + " " + in, log) == 0);

@@ -65,7 +65,7 @@ TEST_CASE("a quarter circle as a rational spline: every point on the circle, eve
       CHECK(b.z() == 0.0);
       const double angle = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
       worst = std::max(worst, 50.0 * (1.0 - std::cos(0.5 * angle)));  // the exact sagitta of the chord
-      CHECK(std::atan2(b.y(), b.x()) > std::atan2(a.y(), a.x()));  // in order, counter-clockwise
+      CHECK(std::atan2(b.y(), b.x()) > std::atan2(a.y(), a.x()));     // in order, counter-clockwise
     }
     CHECK(worst <= tol);
     CHECK(worst > 0.25 * tol);  // not needlessly fine
@@ -125,10 +125,12 @@ TEST_CASE("NURBS: bad curves are refused naming the line") {
              Catch::Contains("n.cls:2:1") && Catch::Contains("5 knots for 2 control points of degree 1 (expected 4)"));
   CHECK_THAT(error_of("GOTO/5,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
              Catch::Contains("n.cls:2:1") && Catch::Contains("starts 5.0000 mm away"));
-  CHECK_THAT(error_of("GOTO/0,0,0\nKNOT/0,0,1,1\nFINI\n"), Catch::Contains("n.cls:2:1") && Catch::Contains("outside a NURBS"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nKNOT/0,0,1,1\nFINI\n"),
+             Catch::Contains("n.cls:2:1") && Catch::Contains("outside a NURBS"));
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,1,0,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"),
              Catch::Contains("less than the one before"));
-  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,0\nCNTRL/10,0,0,1\nFINI\n"), Catch::Contains("weight"));
+  CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,0\nCNTRL/10,0,0,1\nFINI\n"),
+             Catch::Contains("weight"));
   CHECK_THAT(error_of("NURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0\nCNTRL/10,0,0\nFINI\n"), Catch::Contains("before any motion"));
   // a degree that is no whole number of a sensible size (found by fuzz_apt_reader: 1.7e17 overflowed the int cast)
   CHECK_THAT(error_of("GOTO/0,0,0\nNURBS/DEGREE,170710678118654757\nKNOT/0,0,1,1\nFINI\n"),
@@ -154,7 +156,8 @@ TEST_CASE("NURBS: NX's short form (knots after 0, the first control point is the
   // degree 3 with an interior knot at 0.5: 4 control points after the start, 1 interior knot; a
   // straight line with the control points evenly spaced in pieces: the curve stays on the X axis
   // and ends at the last control point
-  const auto line = motions("GOTO/0,0,0\nNURBS/\nKNOT/0.5,1\nCNTRL/1,0,0\nCNTRL/2,0,0\nCNTRL/3,0,0\nCNTRL/4,0,0\nGOTO/4,0,0\nFINI\n");
+  const auto line =
+      motions("GOTO/0,0,0\nNURBS/\nKNOT/0.5,1\nCNTRL/1,0,0\nCNTRL/2,0,0\nCNTRL/3,0,0\nCNTRL/4,0,0\nGOTO/4,0,0\nFINI\n");
   REQUIRE(line.size() >= 2);
   CHECK(line.back().point.tip_mm == Vec3d(4, 0, 0));
   for (const auto& x : line) CHECK(x.point.tip_mm.y() == 0.0);

@@ -46,7 +46,8 @@ TEST_CASE("numbers as CAM systems write them") {
 }
 
 TEST_CASE("$ continuation may split a number (CATIA)") {
-  const auto m = only<cl::Motion>(read_all("FROM  / -26.370000,   0.000000,  46.745000,  -1.000000,   0.000000,   0$\n.000000\n"));
+  const auto m =
+      only<cl::Motion>(read_all("FROM  / -26.370000,   0.000000,  46.745000,  -1.000000,   0.000000,   0$\n.000000\n"));
   REQUIRE(m.size() == 1);
   CHECK(m[0].from);
   CHECK(m[0].point.tip_mm.x() == Approx(-26.37));
@@ -62,7 +63,8 @@ TEST_CASE("spaces around / and , , CRLF, trailing commas, UNITS and UNIT") {
 }
 
 TEST_CASE("a 3-value GOTO keeps the last tool axis; RAPID and RAPID/ mark one motion") {
-  const auto m = only<cl::Motion>(read_all("RAPID\nGOTO/0,0,0,0,0.6,0.8\nGOTO/1,1,1\nRAPID/\nGOTO/2,2,2\nGOTO/3,3,3\n"));
+  const auto m =
+      only<cl::Motion>(read_all("RAPID\nGOTO/0,0,0,0,0.6,0.8\nGOTO/1,1,1\nRAPID/\nGOTO/2,2,2\nGOTO/3,3,3\n"));
   REQUIRE(m.size() == 4);
   CHECK(m[0].rapid);
   CHECK_FALSE(m[1].rapid);
@@ -73,7 +75,8 @@ TEST_CASE("a 3-value GOTO keeps the last tool axis; RAPID and RAPID/ mark one mo
 }
 
 TEST_CASE("FEDRAT in both argument orders and units") {
-  const auto f = only<cl::Feed>(read_all("UNITS/MM\nFEDRAT/MMPM,250\nFEDRAT/ 1000.0,MMPM\nFEDRAT/IPM,10.0000\nFEDRAT/0.1,MMPR\n"));
+  const auto f =
+      only<cl::Feed>(read_all("UNITS/MM\nFEDRAT/MMPM,250\nFEDRAT/ 1000.0,MMPM\nFEDRAT/IPM,10.0000\nFEDRAT/0.1,MMPR\n"));
   REQUIRE(f.size() == 4);
   CHECK(f[0].value == 250.0);
   CHECK(f[1].value == 1000.0);
@@ -82,8 +85,9 @@ TEST_CASE("FEDRAT in both argument orders and units") {
 }
 
 TEST_CASE("NX: TOOL PATH with a space, listing headers, MSYS as information, END-OF-PATH") {
-  const auto rs = read_all("\nInformation listing created by\tphill\nTOOL PATH/NORM_PART,TOOL,BALL_MILL_1.00\n"
-                           "MSYS/3.0,3.0,0.0,1,0,0,0,1,0\nGOTO/1,2,3\nEND-OF-PATH\n");
+  const auto rs = read_all(
+      "\nInformation listing created by\tphill\nTOOL PATH/NORM_PART,TOOL,BALL_MILL_1.00\n"
+      "MSYS/3.0,3.0,0.0,1,0,0,0,1,0\nGOTO/1,2,3\nEND-OF-PATH\n");
   CHECK(only<cl::Unsupported>(rs).size() == 1);  // the listing header, passed through
   CHECK(only<cl::Comment>(rs).size() == 2);
   CHECK(only<cl::End>(rs).size() == 1);
@@ -93,8 +97,9 @@ TEST_CASE("NX: TOOL PATH with a space, listing headers, MSYS as information, END
 }
 
 TEST_CASE("Creo: CIRCLE over two lines, $$-> comments, CYCLE/DEEP, FINI") {
-  const auto rs = read_all("$$-> CSYS / 1,0,0,0,  $\n  0,1,0,0\nCIRCLE / -16.7, -22.9, -0.24,  $\n0.0, 0.0, 1.0,  0.896\n"
-                           "GOTO / 1, 2, 3\nCYCLE / DEEP, DEPTH, 3.5, STEP, 1.0, MMPM, 50.0, CLEAR,$\n 1.0\nCYCLE / OFF\nFINI\n");
+  const auto rs = read_all(
+      "$$-> CSYS / 1,0,0,0,  $\n  0,1,0,0\nCIRCLE / -16.7, -22.9, -0.24,  $\n0.0, 0.0, 1.0,  0.896\n"
+      "GOTO / 1, 2, 3\nCYCLE / DEEP, DEPTH, 3.5, STEP, 1.0, MMPM, 50.0, CLEAR,$\n 1.0\nCYCLE / OFF\nFINI\n");
   const auto c = only<cl::Circle>(rs);
   REQUIRE(c.size() == 1);
   CHECK(c[0].radius_mm == Approx(0.896));
@@ -125,12 +130,14 @@ TEST_CASE("unknown statements pass through with a notice and do not abort") {
 }
 
 TEST_CASE("bad input: file:line:column and what was expected") {
-  CHECK_THAT(error_of("GOTO/1,2,3\nGOTO/1,2.5.3,4\n"), Catch::Contains("t.cls:2:") && Catch::Contains("malformed number"));
+  CHECK_THAT(error_of("GOTO/1,2,3\nGOTO/1,2.5.3,4\n"),
+             Catch::Contains("t.cls:2:") && Catch::Contains("malformed number"));
   CHECK_THAT(error_of("GOTO/1,nan,3\n"), Catch::Contains("t.cls:1:8") && Catch::Contains("finite"));
   CHECK_THAT(error_of("GOTO/1,2,3,0,0,0\n"), Catch::Contains("t.cls:1:1") && Catch::Contains("zero"));
   CHECK_THAT(error_of("GOTO/1,2\n"), Catch::Contains("3 or 6 numbers"));
   CHECK_THAT(error_of("GOTO/1,,2\n"), Catch::Contains("empty argument"));
-  CHECK_THAT(error_of(std::string("GOTO/1,2,3\n\x01\x02\x7f\n", 14)), Catch::Contains("t.cls:2") && Catch::Contains("binary"));
+  CHECK_THAT(error_of(std::string("GOTO/1,2,3\n\x01\x02\x7f\n", 14)),
+             Catch::Contains("t.cls:2") && Catch::Contains("binary"));
   CHECK_THAT(error_of("GOTO/1e999,2,3\n"), Catch::Contains("finite") || Catch::Contains("malformed"));
   CHECK_THAT(error_of("LOADTL/9E9\n"), Catch::Contains("t.cls:1:1") && Catch::Contains("out of range"));
 }
@@ -156,8 +163,9 @@ TEST_CASE("every real CL file reads completely") {
 TEST_CASE("INSERT/STOP and INSERT/OPSTOP are program stops; other INSERT text is a comment (SOLIDWORKS CAM)") {
   // swcam basemach.apt: "INSERT/STOP  change fixture" between two setups; the CAM's own post
   // writes a program stop there. As a comment the machine would run on into the next setup.
-  const auto rs = read_all("INSERT/8MM CRB 4FL 20 LOC\nINSERT/STOP  change fixture\nINSERT/stop\nINSERT/OPSTOP,(check)\n"
-                           "INSERT/STOPWATCH\n");
+  const auto rs = read_all(
+      "INSERT/8MM CRB 4FL 20 LOC\nINSERT/STOP  change fixture\nINSERT/stop\nINSERT/OPSTOP,(check)\n"
+      "INSERT/STOPWATCH\n");
   const auto stops = only<cl::Stop>(rs);
   REQUIRE(stops.size() == 3);
   CHECK_FALSE(stops[0].optional);
@@ -176,10 +184,12 @@ TEST_CASE("INSERT/STOP and INSERT/OPSTOP are program stops; other INSERT text is
 TEST_CASE("a tool change or a CIRCLE while a CYCLE is in force is refused (SOLIDWORKS CAM file without CYCLE/OFF)") {
   // swcam RotateThin.apt: CYCLE/DRILL for a drill, no CYCLE/OFF, LOAD/TOOL,2 (an end mill), RAPID,
   // FEDRAT, CIRCLE: its milling went out as G81 holes 7.65 mm deep.
-  const std::string head = "UNIT/MM\nLOAD/TOOL,15\nRAPID/\nGOTO/10,20,100\nCYCLE/INIT\n"
-                           "CYCLE/DRILL,FEDTO,7.65,MMPM,125.,RAPTO,3.,RTRCTO,100.,DWELL,0\nGOTO/10,20,0\n";
+  const std::string head =
+      "UNIT/MM\nLOAD/TOOL,15\nRAPID/\nGOTO/10,20,100\nCYCLE/INIT\n"
+      "CYCLE/DRILL,FEDTO,7.65,MMPM,125.,RAPTO,3.,RTRCTO,100.,DWELL,0\nGOTO/10,20,0\n";
   const std::string tool = error_of(head + "LOAD/TOOL,2\nRAPID/\nGOTO/10,20,2.5\n");
-  CHECK(tool.find("t.cls:8:1: a tool change while the CYCLE of line 6 is in force (no CYCLE/OFF since)") != std::string::npos);
+  CHECK(tool.find("t.cls:8:1: a tool change while the CYCLE of line 6 is in force (no CYCLE/OFF since)") !=
+        std::string::npos);
   const std::string arc = error_of(head + "CIRCLE/10,20,0,0,0,1,5\nGOTO/15,20,0\n");
   CHECK(arc.find("t.cls:8:1: a CIRCLE (arc motion) while the CYCLE of line 6 is in force") != std::string::npos);
   // with CYCLE/OFF both read
@@ -189,8 +199,9 @@ TEST_CASE("a tool change or a CIRCLE while a CYCLE is in force is refused (SOLID
 TEST_CASE("GOHOME/x,y,z is a rapid move there; GOHOME alone returns to FROM (NX drilling, HumMan CLSF samples)") {
   // nx 9_SVERL_63_N2.cls ends "GOTO/297.5,-393,471 / GOHOME/297.5,-393,483 / END-OF-PATH": the last
   // retract was lost as a comment.
-  const auto m = only<cl::Motion>(read_all("FROM/1,2,50,0,0,1\nFEDRAT/MMPM,120\nGOTO/1,2,3\nGOHOME/297.5,-393.0,483.0\n"
-                                           "GOTO/5,6,7\nGOHOME\n"));
+  const auto m =
+      only<cl::Motion>(read_all("FROM/1,2,50,0,0,1\nFEDRAT/MMPM,120\nGOTO/1,2,3\nGOHOME/297.5,-393.0,483.0\n"
+                                "GOTO/5,6,7\nGOHOME\n"));
   REQUIRE(m.size() == 5);
   CHECK(m[2].point.tip_mm == Vec3d(297.5, -393.0, 483.0));
   CHECK(m[2].rapid);
@@ -221,7 +232,8 @@ TEST_CASE("NX inch files without UNITS: FEDRAT/IPM is refused until --units says
   // UNITS/MM, --units (default_inch or units_given) or IPR likewise
   CHECK(error_of("UNITS/MM\nFEDRAT/IPM,10\nGOTO/1,2,3\n").empty());
   CHECK(error_of("UNITS/INCHES\nFEDRAT/IPM,10\nGOTO/1,2,3\n").empty());
-  CHECK_THAT(error_of("GOTO/1,2,3\nFEDRAT/0.004,IPR\n"), Catch::Contains("t.cls:2:1: FEDRAT/0.004,IPR gives the feed in inches"));
+  CHECK_THAT(error_of("GOTO/1,2,3\nFEDRAT/0.004,IPR\n"),
+             Catch::Contains("t.cls:2:1: FEDRAT/0.004,IPR gives the feed in inches"));
   cl::ReaderOptions mm;
   mm.units_given = true;  // --units mm
   REQUIRE(only<cl::Feed>(read_all("FEDRAT/IPM,10\n", mm)).size() == 1);
@@ -251,6 +263,7 @@ TEST_CASE("NX CIRCLE/...,TIMES,n: n turns in all, the last one the arc to the ne
   // outside an NX file the count's convention is not known: refused
   CHECK(error_of("UNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2\nGOTO/5,0,0\n")
             .find("t.cls:3:1: CIRCLE ...,TIMES,2: a helix of several turns outside an NX file") != std::string::npos);
-  CHECK(error_of("TOOL PATH/A,TOOL,B\nUNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2.5\nGOTO/5,0,0\n")
-            .find("a whole number from 1") != std::string::npos);
+  CHECK(
+      error_of("TOOL PATH/A,TOOL,B\nUNITS/MM\nGOTO/0,5,1\nCIRCLE/0,0,0,0,0,1,5,0.006,0.5,10,0,TIMES,2.5\nGOTO/5,0,0\n")
+          .find("a whole number from 1") != std::string::npos);
 }

@@ -92,7 +92,8 @@ TEST_CASE("branch plan in the post: the rapid takes the solution that avoids eve
   CHECK(post_bc(cl, Choice::lookahead, 2, 40).program == planned.program);
 }
 
-TEST_CASE("branch plan in the post: the hemisphere on the BC head, 2 retracts instead of 10, both threads", "[post][branch]") {
+TEST_CASE("branch plan in the post: the hemisphere on the BC head, 2 retracts instead of 10, both threads",
+          "[post][branch]") {
   const std::string cl = test::read_text_file(test::source("samples/hemisphere_5axis.cls"));
   using Choice = PostOptions::BranchChoice;
   const Posted greedy = post_bc(cl, Choice::greedy, 1, 40);

@@ -163,7 +163,8 @@ TEST_CASE("SIGTERM, SIGINT, SIGHUP remove the temporary file; the previous outpu
   write(f / "out.nc", "PREVIOUS\n");
   // (the writer is killed at the end: a `sleep 30` left behind holds ctest's pipes for 30 s)
   script(f, "export TMPDIR=$PWD; mkfifo in.fifo\n(cat big.cls; exec sleep 30) > in.fifo 2>/dev/null & w=$!\n" +
-                std::string(NCPOST_BINARY) + " post --machine " + kMachine + " -o out.nc - < in.fifo 2>/dev/null & p=$!\n" +
+                std::string(NCPOST_BINARY) + " post --machine " + kMachine +
+                " -o out.nc - < in.fifo 2>/dev/null & p=$!\n" +
                 "for i in $(seq 300); do ls | grep -q ncpost-input && break; sleep 0.1; done\n" +
                 "ls | grep -c ncpost-input > during.txt; kill -TERM $p; wait $p; echo $? > rc.txt\n" +
                 "kill $w; wait $w 2>/dev/null; true");
@@ -203,9 +204,9 @@ TEST_CASE("numeric options: finite and in range, the message names the option an
   Folder f("numbers");
   std::string err;
   const std::string post = "post --machine " + kMachine + " ";
-  for (const std::string bad : {"--tool-length nan", "--tool-length -500", "--tool-length 1e308", "--tolerance 1e400",
-                                "--tolerance 0", "--tolerance inf", "--retract -1", "--workpiece-origin 1e308,0,0",
-                                "--workpiece-origin nan,0,0"}) {
+  for (const std::string bad :
+       {"--tool-length nan", "--tool-length -500", "--tool-length 1e308", "--tolerance 1e400", "--tolerance 0",
+        "--tolerance inf", "--retract -1", "--workpiece-origin 1e308,0,0", "--workpiece-origin nan,0,0"}) {
     INFO(bad);
     CHECK(run(f, post + bad + " -o x.nc " + kCl, &err) == 1);
     CHECK_THAT(err, Catch::Contains(bad.substr(0, bad.find(' ')) + ":"));
@@ -233,7 +234,9 @@ TEST_CASE("messages: misspelt options get a suggestion, control characters are e
   CHECK_THAT(err, Catch::Contains("\\x1B[2Jfanuc"));
   CHECK(err.find('\x1b') == std::string::npos);
   // a CL line with an escape sequence in a bad number: escaped, and the caret under the character
-  write(f / "esc.cls", "GOTO/1,2,3\nGOTO/1,\xc2\x9b" "2,3\n");
+  write(f / "esc.cls",
+        "GOTO/1,2,3\nGOTO/1,\xc2\x9b"
+        "2,3\n");
   CHECK(run(f, "post --machine " + kMachine + " esc.cls", &err) == 2);
   CHECK_THAT(err, Catch::StartsWith("ncpost: error: esc.cls:2:"));
   CHECK(err.find("\xc2\x9b") == std::string::npos);  // the C1 control (CSI) never reaches the terminal

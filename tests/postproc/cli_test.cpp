@@ -80,20 +80,24 @@ TEST_CASE("post writes a program in each dialect") {
     s << in.rdbuf();
     const std::string text = s.str();
     CHECK(text.size() > 10000);
-    if (std::string(d) == "heidenhain") CHECK_THAT(text, Catch::Contains("BEGIN PGM") && Catch::Contains("L X"));
-    else CHECK_THAT(text, Catch::Contains("G1") && Catch::Contains("G93"));
+    if (std::string(d) == "heidenhain")
+      CHECK_THAT(text, Catch::Contains("BEGIN PGM") && Catch::Contains("L X"));
+    else
+      CHECK_THAT(text, Catch::Contains("G1") && Catch::Contains("G93"));
   }
 }
 
 TEST_CASE("post --model --tolerance --verify-on --report: before/after printed, program and report written") {
   const std::string d = data("scenarios/public-clean/");
   std::string err;
-  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model.json " + d + "ballbar_h250.csv " + d +
-              "ballbar_h300.csv " + d + "sphere.csv") == 0);
+  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model.json " + d + "ballbar_h250.csv " +
+              d + "ballbar_h300.csv " + d + "sphere.csv") == 0);
   std::remove("cli_post_model.nc");
   std::remove("cli_post_report.html");
-  CHECK(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --model cli_model.json --tolerance 0.005 "
-            "--verify-on " + d + "truth.json --report cli_post_report.html -o cli_post_model.nc " + d + "path.cls",
+  CHECK(run("post --machine " + d +
+                "machine.toml --workpiece-origin 0,0,80 --model cli_model.json --tolerance 0.005 "
+                "--verify-on " +
+                d + "truth.json --report cli_post_report.html -o cli_post_model.nc " + d + "path.cls",
             &err) == 0);
   CHECK_THAT(err, Catch::Contains("before") && Catch::Contains("after") && Catch::Contains("truth.json"));
   CHECK(exists("cli_post_model.nc"));
@@ -112,7 +116,8 @@ TEST_CASE("post --model --tolerance --verify-on --report: before/after printed, 
   write("cli_bad_model.json", "{\"machine\":\"x\",\"parameters\":{\"EX0B\":0.01}}");
   write("cli_keep.nc", "GOOD OLD PROGRAM\n");
   CHECK(run("post --machine " + d + "machine.toml --model cli_bad_model.json --tolerance 0.005 -o cli_keep.nc " + d +
-            "path.cls", &err) == 2);
+                "path.cls",
+            &err) == 2);
   CHECK_THAT(err, Catch::Contains("cli_bad_model.json"));
   std::ifstream kept("cli_keep.nc");
   std::string first;
@@ -162,12 +167,15 @@ TEST_CASE("post: a limit-forced change of solution retracts, or fails with --ret
     CHECK_FALSE(exists("cli_bc.nc"));
   }
 
-  CHECK(run(args + "--branch-plan greedy --retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 0);
+  CHECK(run(args + "--branch-plan greedy --retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) ==
+        0);
   CHECK(retract_lines(err) == std::vector<int>{83, 119, 155, 191, 227, 263, 299, 335, 371, 407});
   CHECK(after_contour_mm(err) < 1.0);
-  CHECK(run(args + "--branch-plan lookahead --retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"), &err) == 0);
+  CHECK(run(args + "--branch-plan lookahead --retract 40 -o cli_bc.nc " + source("samples/hemisphere_5axis.cls"),
+            &err) == 0);
   CHECK_THAT(err, Catch::Contains("hemisphere_5axis.cls:155: the axis limits force a change of solution"));
-  CHECK_THAT(err, Catch::Contains("lines 8 to 442 are planned ahead") && Catch::Contains("2 changes of solution there instead of 10"));
+  CHECK_THAT(err, Catch::Contains("lines 8 to 442 are planned ahead") &&
+                      Catch::Contains("2 changes of solution there instead of 10"));
   CHECK(retract_lines(err) == std::vector<int>{155, 299});
   std::ifstream in("cli_bc.nc");
   std::stringstream s;
@@ -180,13 +188,17 @@ TEST_CASE("post: a limit-forced change of solution retracts, or fails with --ret
 TEST_CASE("post --model re-posts a machine-axis G-code program the same way") {
   const std::string d = data("scenarios/public-clean/");
   std::string err;
-  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model2.json " + d + "ballbar_h250.csv " + d +
-              "ballbar_h300.csv " + d + "sphere.csv") == 0);
+  REQUIRE(run("identify --machine " + d + "machine.toml --no-diagnose -o cli_model2.json " + d + "ballbar_h250.csv " +
+              d + "ballbar_h300.csv " + d + "sphere.csv") == 0);
   // the nominal program of the dome (machine axes), then that program re-posted for the actual machine
-  REQUIRE(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --tolerance 0.002 -o cli_dome_nominal.nc " +
-              d + "path.cls") == 0);
-  REQUIRE(run("post --machine " + d + "machine.toml --workpiece-origin 0,0,80 --model cli_model2.json --tolerance 0.002 "
-              "--verify-on " + d + "truth.json -o cli_dome_repost.nc cli_dome_nominal.nc", &err) == 0);
+  REQUIRE(run("post --machine " + d +
+              "machine.toml --workpiece-origin 0,0,80 --tolerance 0.002 -o cli_dome_nominal.nc " + d + "path.cls") ==
+          0);
+  REQUIRE(run("post --machine " + d +
+                  "machine.toml --workpiece-origin 0,0,80 --model cli_model2.json --tolerance 0.002 "
+                  "--verify-on " +
+                  d + "truth.json -o cli_dome_repost.nc cli_dome_nominal.nc",
+              &err) == 0);
   // the "after" line (the notice on the program end's G28 also says "after")
   const auto after = err.find("\nafter ");
   REQUIRE(after != std::string::npos);

@@ -33,7 +33,8 @@ int post(const std::string& dir, const std::string& dialect, std::string* progra
          const std::string& env = "") {
   const std::string cl = test::write_text_file(dir + "/part.cls", kCl);
   const std::string cmd = env + NCPOST_BINARY + " post --machine '" + test::source("machines/vmcl600.toml") +
-                          "' --dialect '" + dialect + "' -o '" + dir + "/out.nc' '" + cl + "' > '" + dir + "/log.txt' 2>&1";
+                          "' --dialect '" + dialect + "' -o '" + dir + "/out.nc' '" + cl + "' > '" + dir +
+                          "/log.txt' 2>&1";
   const int status = std::system(cmd.c_str());
   const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   *program = rc == 0 ? test::read_text_file(dir + "/out.nc") : "";
@@ -45,7 +46,8 @@ int post(const std::string& dir, const std::string& dialect, std::string* progra
 
 TEST_CASE("a user's copy of fanuc.toml with M99 and a header line writes that program", "[dialect][file]") {
   const std::string dir = test::make_temp_dir("dialect_file");
-  std::string text = replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M5\", \"M99\"]");
+  std::string text =
+      replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M5\", \"M99\"]");
   text = replaced(text, "start = [\"O0001 ({program})\", ", "start = [\"O0001 ({program})\", \"(SHOP: CELL 4)\", ");
   const std::string mine = test::write_text_file(dir + "/my-fanuc.toml", text);
   std::string program, log, fanuc;
@@ -68,34 +70,42 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
     std::string from, to, message;
   };
   const Case cases[] = {
-      {"line_numbers = false", "line_numbers = false\nblock_skip = true", ":18:1: unknown key 'block_skip' in [blocks]"},
+      {"line_numbers = false", "line_numbers = false\nblock_skip = true",
+       ":18:1: unknown key 'block_skip' in [blocks]"},
       {"linear_decimals = 4", "linear_decimals = \"4\"", ":22:19: linear_decimals in [blocks]: expected an integer"},
       {"angle_decimals = 4", "angle_decimals = 12", ":23:18: angle_decimals in [blocks] is 12: expected 0 to 6"},
       {"end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = \"M30\"",
        ":14:7: end in [program]: expected a list of blocks"},
       {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 H{length}\"]", ":53:9: unknown placeholder '{length}'"},
       {"replaced = \"()%;\"        # characters that must not appear in a comment ...\nreplacements = \"[]  \"",
-       "replaced = \"(%;\"\nreplacements = \"[  \"", ":47:12: replaced in [comments]: expected ')' among the characters"},
+       "replaced = \"(%;\"\nreplacements = \"[  \"",
+       ":47:12: replaced in [comments]: expected ')' among the characters"},
       {"\n[dwell]", "\n[dwel]", ":87:2: unknown section [dwel]"},  // (line 87 since [cycles] tap_before)
       {"style = \"parentheses\"", "style = \"braces\"", "expected \"parentheses\" or \"semicolon\""},
       // the words that were C++ before: motion, feed, block numbers, arcs, spindle, cycles
       {"feed_modal = true", "feed_modal = \"yes\"", ":33:14: feed_modal in [motion]: expected true or false"},
       {"rapid_feed = \"\"", "rapid_feed = \"\"\nrapid_word = \"G00\"", ":31:1: unknown key 'rapid_word' in [motion]"},
-      {"rapid = \"G0\"", "rapid = \"G1\"", ":29:9: modal in [motion]: expected false when rapid and linear are the same"},
+      {"rapid = \"G0\"", "rapid = \"G1\"",
+       ":29:9: modal in [motion]: expected false when rapid and linear are the same"},
       {"feed_letter = \"F\"", "feed_letter = \"\"", ":31:15: feed_letter in [motion]: expected a word"},
-      {"number_format = \"N{n} \"", "number_format = \"N \"", ":18:17: number_format in [blocks]: expected the number's place"},
-      {"number_format = \"N{n} \"", "number_format = \"N{line} \"", ":18:17: unknown placeholder '{line}' in number_format"},
-      {"planes = [\"G17\", \"G18\", \"G19\"]", "planes = [\"G17\", \"G18\"]", ":42:10: planes in [arcs]: expected three words"},
+      {"number_format = \"N{n} \"", "number_format = \"N \"",
+       ":18:17: number_format in [blocks]: expected the number's place"},
+      {"number_format = \"N{n} \"", "number_format = \"N{line} \"",
+       ":18:17: unknown placeholder '{line}' in number_format"},
+      {"planes = [\"G17\", \"G18\", \"G19\"]", "planes = [\"G17\", \"G18\"]",
+       ":42:10: planes in [arcs]: expected three words"},
       {"cancel = \"G80\"", "cancel = 80", ":82:10: cancel in [cycles]: expected a string"},
       // a missing placeholder would lose a word of the program
-      {"call = [\"T{tool} M6\"]", "call = [\"M6\"]", ":53:8: call in [tool] names no {tool}: the tool number would not be written"},
+      {"call = [\"T{tool} M6\"]", "call = [\"M6\"]",
+       ":53:8: call in [tool] names no {tool}: the tool number would not be written"},
       {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} M3\"]", ":59:9: start in [spindle] names no {turn}"},
       {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} {turn}\"]\nafter_call = [\"{turn}\"]",
        ":60:14: after_call in [spindle]: expected no such key: [tool] call names no {rpm}"},
       // a tool call that takes the speed (Klartext TOOL CALL 6 Z S2000) needs the blocks after it
       {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 S{rpm}\"]", ":58:1: missing key 'after_call' in [spindle]"},
-      {"inverse_time = \"G93\"     # inverse-time feed of simultaneous moves (\"\": none; such a cut then needs --rtcp)\n", "",
-       ":26:1: missing key 'inverse_time' in [motion]"},
+      {"inverse_time = \"G93\"     # inverse-time feed of simultaneous moves (\"\": none; such a cut then needs "
+       "--rtcp)\n",
+       "", ":26:1: missing key 'inverse_time' in [motion]"},
   };
   for (const Case& c : cases) {
     INFO(c.to);
@@ -122,8 +132,9 @@ TEST_CASE("built-in dialects: the embedded copies, or an edited copy in $NCPOST_
           d.program_end);
   }
   const std::string dir = test::make_temp_dir("dialect_env");
-  test::write_text_file(dir + "/fanuc.toml",
-                        replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M99\"]"));
+  test::write_text_file(
+      dir + "/fanuc.toml",
+      replaced(kFanuc, "end = [\"M5\", \"M9\", \"G91 G28 Z0\", \"G90\", \"M30\"]", "end = [\"M99\"]"));
   std::string program, log;
   REQUIRE(post(dir, "fanuc", &program, &log, "NCPOST_DIALECT_DIR='" + dir + "' ") == 0);
   CHECK_THAT(program, Catch::EndsWith("\nM99\n%\n"));

@@ -78,7 +78,7 @@ TEST_CASE("Klartext: the speed in TOOL CALL, M3 after it, CYCL DEF 9 dwell, L bl
         "12 L X+20.0000 Z+25.0000 F500\n"
         "13 M5\n"
         "14 M9\n"
-        "15 TOOL CALL 2 Z S1500\n"  // a motion before the next SPINDL: the speed in force
+        "15 TOOL CALL 2 Z S1500\n"                   // a motion before the next SPINDL: the speed in force
         "16 L X+20.0000 Y+30.0000 Z+25.0000 FMAX\n"  // after the change every word again
         "17 TOOL CALL Z S3000\n"
         "18 M3\n"
@@ -134,11 +134,14 @@ TEST_CASE("a user's dialect: its own block numbers, motion word on every block, 
 
 TEST_CASE("no inverse-time word in the dialect: a simultaneous cut is refused, with RTCP it is posted",
           "[dialect][words]") {
-  const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\nGOTO/0,0,50,0,0,1\nFEDRAT/MMPM,800\n"
-                         "GOTO/0,10,50,0,0.5,0.8660254\nFINI\n";
-  const Dialect no_g93 = parse_dialect(replaced(kFanuc, "inverse_time = \"G93\"", "inverse_time = \"\""), "no-g93.toml");
+  const std::string cl =
+      "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\nGOTO/0,0,50,0,0,1\nFEDRAT/MMPM,800\n"
+      "GOTO/0,10,50,0,0.5,0.8660254\nFINI\n";
+  const Dialect no_g93 =
+      parse_dialect(replaced(kFanuc, "inverse_time = \"G93\"", "inverse_time = \"\""), "no-g93.toml");
   CHECK_THROWS_WITH(post_apt(cl, no_g93, "ac-trunnion"),
-                    Catch::Contains("t.apt:7:") && Catch::Contains("the fanuc dialect has no inverse-time feed (G93)") &&
+                    Catch::Contains("t.apt:7:") &&
+                        Catch::Contains("the fanuc dialect has no inverse-time feed (G93)") &&
                         Catch::Contains("[motion] inverse_time is empty in no-g93.toml") && Catch::Contains("--rtcp"));
   CHECK_THAT(post_apt(cl, no_g93, "ac-trunnion", true), Catch::Contains("\nG94 G1 Y10.0000 A30.0000 F800.0\n"));
   // the built-in fanuc file has G93

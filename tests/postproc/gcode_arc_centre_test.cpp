@@ -72,8 +72,8 @@ OneArc one_arc(const std::string& text, ArcCentre arc_centre) {
 TEST_CASE("gcode arc centre: each reading of I J, checked on a hand-worked arc") {
   SECTION("incremental (the default): I J from the start to the centre") {
     // start (10, 0); I-10 J0 -> centre (0, 0), radius 10; G3 ends at (0, 10)
-    const OneArc a = one_arc("G21 G90 G17\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I-10 J0\nM30\n",
-                             ArcCentre::incremental);
+    const OneArc a =
+        one_arc("G21 G90 G17\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I-10 J0\nM30\n", ArcCentre::incremental);
     CHECK((a.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
     CHECK(a.circle.radius_mm == Approx(10.0));
     CHECK((a.circle.axis - Vec3d(0, 0, 1)).norm() < 1e-12);
@@ -81,15 +81,15 @@ TEST_CASE("gcode arc centre: each reading of I J, checked on a hand-worked arc")
   }
   SECTION("centre-to-start: I J from the centre to the start") {
     // start (10, 0); I10 J0 -> centre (10 - 10, 0 - 0) = (0, 0); the same arc as above
-    const OneArc a = one_arc("G21 G90 G17\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I10 J0\nM30\n",
-                             ArcCentre::centre_to_start);
+    const OneArc a =
+        one_arc("G21 G90 G17\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I10 J0\nM30\n", ArcCentre::centre_to_start);
     CHECK((a.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
     CHECK(a.circle.radius_mm == Approx(10.0));
     CHECK((a.end_mm - Vec3d(0, 10, 0)).norm() < 1e-12);
     // G18 (Z X plane, a1 = Z, a2 = X): start Z10 X0; K10 I0 -> centre Z0 X0; G3 turns from +Z
     // toward +X (counter-clockwise about +Y) to X10 Z0
-    const OneArc zx = one_arc("G21 G90 G18\nG0 X0 Y0 Z20 A0 C0\nG1 Z10 F100\nG3 X10 Z0 I0 K10\nM30\n",
-                              ArcCentre::centre_to_start);
+    const OneArc zx =
+        one_arc("G21 G90 G18\nG0 X0 Y0 Z20 A0 C0\nG1 Z10 F100\nG3 X10 Z0 I0 K10\nM30\n", ArcCentre::centre_to_start);
     CHECK((zx.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
     CHECK(zx.circle.radius_mm == Approx(10.0));
     CHECK((zx.circle.axis - Vec3d(0, 1, 0)).norm() < 1e-12);
@@ -105,9 +105,10 @@ TEST_CASE("gcode arc centre: each reading of I J, checked on a hand-worked arc")
     // (within the reader's 0.01 mm: a slight spiral, so points, not a Circle), at 55.1 deg
     GcodeReaderOptions o = reading(ArcCentre::centre_to_start);
     o.circles = false;
-    const auto ms = test::only<cl::Motion>(read_all("G20 G90 G17\nG0 X-.3937 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\n"
-                                                    "Y2.1654\nG03 X-.5118 Y2.3915 I.2756 J0\nM30\n",
-                                                    o));
+    const auto ms =
+        test::only<cl::Motion>(read_all("G20 G90 G17\nG0 X-.3937 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\n"
+                                        "Y2.1654\nG03 X-.5118 Y2.3915 I.2756 J0\nM30\n",
+                                        o));
     REQUIRE(ms.size() > 4);
     const Vec3d centre(-17.00022, 55.00116, 0);
     CHECK((ms.back().point.tip_mm - Vec3d(-12.99972, 60.7441, 0)).norm() < 1e-9);
@@ -121,8 +122,8 @@ TEST_CASE("gcode arc centre: each reading of I J, checked on a hand-worked arc")
   }
   SECTION("absolute: I J the centre's coordinates") {
     // start (15, 5); I5 J5 -> centre (5, 5), radius 10; G3 ends at (5, 15)
-    const OneArc a = one_arc("G21 G90 G17\nG0 X15 Y5 Z5 A0 C0\nG1 Z0 F100\nG3 X5 Y15 I5 J5\nM30\n",
-                             ArcCentre::absolute);
+    const OneArc a =
+        one_arc("G21 G90 G17\nG0 X15 Y5 Z5 A0 C0\nG1 Z0 F100\nG3 X5 Y15 I5 J5\nM30\n", ArcCentre::absolute);
     CHECK((a.circle.center_mm - Vec3d(5, 5, 0)).norm() < 1e-12);
     CHECK(a.circle.radius_mm == Approx(10.0));
     CHECK((a.end_mm - Vec3d(5, 15, 0)).norm() < 1e-12);
@@ -160,8 +161,8 @@ TEST_CASE("gcode arc centre: an arc that does not fit names the readings it fits
     // start (10, 0), I5 J0, G3 to (5, 5): incremental centre (15, 0), radius 5 at the start, 10
     // at the end; centre-to-start (10 - 5, 0) and absolute (5, 0) are the same centre, radius 5
     const InputError e = error_of("G21 G90\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X5 Y5 I5 J0\nM30\n", incremental);
-    CHECK_THAT(e.detail(), Catch::EndsWith(
-                               "; it fits if I and J are the vector from the centre to the start (--arc-centre "
+    CHECK_THAT(e.detail(),
+               Catch::EndsWith("; it fits if I and J are the vector from the centre to the start (--arc-centre "
                                "centre-to-start), or if I and J are the centre's coordinates (--arc-centre absolute): "
                                "post with the one the program's control uses"));
   }
@@ -182,8 +183,8 @@ TEST_CASE("gcode arc centre: an arc that does not fit names the readings it fits
                                            "coordinates, radius 20.0000 mm at the start, 15.6205 mm at the end)"));
   }
   SECTION("the program's G90.1 is named, not --arc-centre") {
-    const InputError e = error_of("G21 G90 G90.1\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I-10 J0\nM30\n",
-                                  incremental);
+    const InputError e =
+        error_of("G21 G90 G90.1\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I-10 J0\nM30\n", incremental);
     CHECK_THAT(e.detail(), Catch::EndsWith("; it fits if I and J are the vector from the start to the centre, but "
                                            "G90.1 at line 1 says I and J are the centre's coordinates"));
   }
@@ -200,9 +201,10 @@ TEST_CASE("gcode arc centre: G90.1 and G91.1 beside a --arc-centre they contradi
   const InputError g91 = error_of("G21 G90 G91.1\n" + arc, reading(ArcCentre::centre_to_start));
   CHECK(g91.where().line == 1);
   CHECK(g91.where().column == 9);
-  CHECK(g91.detail() == "G91.1 says I, J and K are the vector from the start to the centre (incremental), which "
-                        "contradicts --arc-centre centre-to-start: post without --arc-centre centre-to-start (the "
-                        "program says how it writes arc centres)");
+  CHECK(g91.detail() ==
+        "G91.1 says I, J and K are the vector from the start to the centre (incremental), which "
+        "contradicts --arc-centre centre-to-start: post without --arc-centre centre-to-start (the "
+        "program says how it writes arc centres)");
   CHECK_THAT(error_of("G21 G90 G90.1\n" + arc, reading(ArcCentre::centre_to_start)).detail(),
              Catch::StartsWith("G90.1 says I, J and K are the centre's coordinates (absolute), which contradicts "
                                "--arc-centre centre-to-start"));
@@ -234,16 +236,19 @@ TEST_CASE("gcode arc centre: ncpost post --arc-centre centre-to-start writes the
 TEST_CASE("gcode arc centre: I J and R are not modal; one omitted centre word is 0") {
   const GcodeReaderOptions o = reading(ArcCentre::incremental);
   // nxpost_Mori_Seiki_Dura_Vert5100 lines 32-33: a full circle with I J, then an arc without them
-  const InputError ij = error_of("G20 G90\nG0 X1.1811 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG17 G03 I.7874 J0\nX1.2056 Y1.7737\n"
-                                 "M30\n",
-                                 o);
+  const InputError ij = error_of(
+      "G20 G90\nG0 X1.1811 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG17 G03 I.7874 J0\nX1.2056 Y1.7737\n"
+      "M30\n",
+      o);
   CHECK(ij.where().line == 5);
-  CHECK(ij.detail() == "an arc needs I and J (its centre) or R; they are not modal: the I and J of the arc at line 4 "
-                       "are not carried over (write the centre or R on every arc)");
+  CHECK(ij.detail() ==
+        "an arc needs I and J (its centre) or R; they are not modal: the I and J of the arc at line 4 "
+        "are not carried over (write the centre or R on every arc)");
   // nxpost_LeBlond_Makino_KE_55 lines 322-324: an R arc, a line, an arc without R
-  const InputError r = error_of("G20 G90\nG0 X0 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG02X0.0Y2.1329R.1644\nG01X1.9685\n"
-                                "G02X2.1329Y1.9685\nM30\n",
-                                o);
+  const InputError r = error_of(
+      "G20 G90\nG0 X0 Y1.9685 Z.1 A0 C0\nG1 Z0 F10\nG02X0.0Y2.1329R.1644\nG01X1.9685\n"
+      "G02X2.1329Y1.9685\nM30\n",
+      o);
   CHECK(r.where().line == 6);
   CHECK_THAT(r.detail(), Catch::EndsWith("the R of the arc at line 4 is not carried over (write the centre or R on "
                                          "every arc)"));

@@ -79,7 +79,7 @@ TEST_CASE("gcode block shapes: ';' comments, block skip before N, a leading blan
   CHECK(blank.words[1].column == 6);
 
   const Block dense = parsed("N130G0G90G54X1.255Y-1.378S12000M3");
-  const std::vector<std::pair<char, double>> expected = {{'N', 130},  {'G', 0},      {'G', 90},    {'G', 54},
+  const std::vector<std::pair<char, double>> expected = {{'N', 130},   {'G', 0},      {'G', 90},    {'G', 54},
                                                          {'X', 1.255}, {'Y', -1.378}, {'S', 12000}, {'M', 3}};
   REQUIRE(dense.words.size() == expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {

@@ -225,22 +225,26 @@ TEST_CASE("gcode block: ':' is the ISO program number address O (NX's Fadal and 
   const InputError inside = error_of("G0 :5 X1");
   CHECK(inside.where().column == 4);
   CHECK(inside.detail() == "expected a word (letter and number), a comment or the end of the line, found ':'");
-  CHECK(error_of(":").detail() == "O-word subroutines and control flow (sub, call, if, while, ...) are not supported; "
-                                  "expected a program number");
+  CHECK(error_of(":").detail() ==
+        "O-word subroutines and control flow (sub, call, if, while, ...) are not supported; "
+        "expected a program number");
 }
 
 TEST_CASE("gcode block: a line that starts with a number says what it is") {
   // Heidenhain conversational (nxpost_Bridgeport_412 line 1, nxpost_DMG_DMC_100_MILLPLUS line 1)
   const InputError pgm = error_of("0010 BEGIN PGM 100 IN");
   CHECK(pgm.where().column == 1);
-  CHECK(pgm.detail() == "'0010 BEGIN PGM...' is a Heidenhain conversational (plain-language) block, not G-code: "
-                        "ncpost reads ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or "
-                        "have the CAM post the part for an ISO control");
-  CHECK_THAT(error_of("21 L X+.6079 Y+4.6458 Z+11.9106 FMAX M3").detail(), Catch::StartsWith("'21 L...' is a Heidenhain"));
+  CHECK(pgm.detail() ==
+        "'0010 BEGIN PGM...' is a Heidenhain conversational (plain-language) block, not G-code: "
+        "ncpost reads ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or "
+        "have the CAM post the part for an ISO control");
+  CHECK_THAT(error_of("21 L X+.6079 Y+4.6458 Z+11.9106 FMAX M3").detail(),
+             Catch::StartsWith("'21 L...' is a Heidenhain"));
   CHECK_THAT(error_of("  9 CYCL DEF 7.0 DATUM SHIFT").detail(), Catch::StartsWith("'9 CYCL DEF...' is a Heidenhain"));
   // a block number without its N
-  CHECK(error_of("0010 G1 X5").detail() == "a block that starts with the number '0010' (expected a word: a letter and "
-                                           "its number, such as N0010 for a block number)");
+  CHECK(error_of("0010 G1 X5").detail() ==
+        "a block that starts with the number '0010' (expected a word: a letter and "
+        "its number, such as N0010 for a block number)");
   // binary data (a compressed file named .nc)
   const InputError bin = error_of(std::string("6=\xd0\x34") + "O_");
   CHECK(bin.where().column == 1);
@@ -251,9 +255,10 @@ TEST_CASE("gcode block: a Heidenhain ISO program's '%' line is refused; other '%
   // nxpost_Micron_WF21D line 1
   const InputError e = error_of("% 123 G71");
   CHECK(e.where().column == 1);
-  CHECK(e.detail() == "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J "
-                      "K are absolute centres and M91/M92 move in machine coordinates, so ncpost does not read it as "
-                      "RS274 G-code; post the CL data");
+  CHECK(e.detail() ==
+        "a Heidenhain ISO program ('%' with its name and G70/G71): its T calls the tool without M6, I J "
+        "K are absolute centres and M91/M92 move in machine coordinates, so ncpost does not read it as "
+        "RS274 G-code; post the CL data");
   CHECK_THROWS_AS(parse("%PART1 G70 *"), InputError);
   CHECK(parse("%_N_PART1_MPF").percent);  // Sinumerik
   CHECK(parse("% 123").percent);

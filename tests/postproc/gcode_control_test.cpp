@@ -93,7 +93,9 @@ TEST_CASE("gcode control: G41/G42 with D and G40 become CutterComp records befor
   CHECK_THAT(input_error("G41.1 D6 G1 X1 F1\n").detail(), Catch::Contains("dynamic cutter radius compensation"));
 }
 
-TEST_CASE("gcode control: the real LinuxCNC cutter-compensation sample reads its two G41 (lines 37, 77) and two G40 (lines 11, 52)") {
+TEST_CASE(
+    "gcode control: the real LinuxCNC cutter-compensation sample reads its two G41 (lines 37, 77) and two G40 (lines "
+    "11, 52)") {
   GcodeReaderOptions o;
   o.kind = InputKind::rtcp;
   Setup s;
@@ -124,8 +126,9 @@ TEST_CASE("gcode control: look-ahead mode words are dropped with a notice, splin
 // Safe-start lines cancel modes the reader refuses (G15 G50 G50.1 G69); Haas writes G187 P E and
 // G103 P in every program: none of them moves anything (they were refused as scaling, rotation, E)
 TEST_CASE("gcode control: cancel words and Haas smoothing words are read, G76 fine boring refused as such") {
-  const Read r = read_all("G21 G90\nG0 G17 G40 G49 G50 G69 G80 G15 G50.1\nG187 P1 E0.002\nG103 P1\nG0 X1 Y2 Z3\n"
-                          "G97 S1200 M3\nG1 X4 F100\nM30\n");
+  const Read r = read_all(
+      "G21 G90\nG0 G17 G40 G49 G50 G69 G80 G15 G50.1\nG187 P1 E0.002\nG103 P1\nG0 X1 Y2 Z3\n"
+      "G97 S1200 M3\nG1 X4 F100\nM30\n");
   const auto ms = only<cl::Motion>(r.records);
   REQUIRE(ms.size() == 2);
   CHECK(ms[1].point.tip_mm.isApprox(Vec3d(4, 2, 3)));
@@ -268,9 +271,10 @@ TEST_CASE("gcode control: motions beyond the machine's axis limits are Infeasibl
     const std::string what = infeasible(program, kind);
     INFO(what);
     // the rotary axis first: the linear commands of an RTCP program follow from it
-    CHECK(what == "t.ngc:3:1: A 150.000 deg, beyond the A axis limit 120.000 deg (travel -120.000 .. 120.000 deg) of "
-                  "machine ac-trunnion: the program does not fit the machine; check the program's angles against the "
-                  "machine file");
+    CHECK(what ==
+          "t.ngc:3:1: A 150.000 deg, beyond the A axis limit 120.000 deg (travel -120.000 .. 120.000 deg) of "
+          "machine ac-trunnion: the program does not fit the machine; check the program's angles against the "
+          "machine file");
   }
   CHECK(infeasible("G0 X0 Y0 Z10 A0 C0\nG1 X10 Z5000 F100\n", InputKind::machine) ==
         "t.ngc:2:1: Z 5000.000 mm, beyond the Z axis limit 600.000 mm (travel -600.000 .. 600.000 mm) of machine "
@@ -391,11 +395,13 @@ TEST_CASE("gcode control: a rollover C turns the short way across 0, and G93 blo
 // A program without G20/G21 runs in the control's default units: read as mm unless it speaks
 // inches (it was posted as mm with at most a notice: a part 25.4 times too small, exit 0)
 TEST_CASE("gcode control: a program without G20/G21 that looks or speaks inch is refused unless --units says") {
-  const std::string square = "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
+  const std::string square =
+      "G90\nG0 X0.1250 Y0.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\nY0.2500\nM30\n";
   const InputError e = input_error(square);
-  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and looks like inches (8 of 8 X/Y/Z "
-                                       "words with 4 decimals, all positions within 1.125 x 0.5 x 1.1)") &&
-                           Catch::Contains("post with --units inch or --units mm"));
+  CHECK_THAT(e.what(),
+             Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and looks like inches (8 of 8 X/Y/Z "
+                             "words with 4 decimals, all positions within 1.125 x 0.5 x 1.1)") &&
+                 Catch::Contains("post with --units inch or --units mm"));
   CHECK(only<cl::Motion>(read_all("G21\n" + square).records)[1].point.tip_mm.z() == Approx(-0.1));
   CHECK(only<cl::Motion>(read_all("G20\n" + square).records)[1].point.tip_mm.z() == Approx(-2.54));
   GcodeReaderOptions inch;
@@ -406,12 +412,15 @@ TEST_CASE("gcode control: a program without G20/G21 that looks or speaks inch is
   CHECK(only<cl::Motion>(read_all(square, mm).records)[1].point.tip_mm.z() == Approx(-0.1));
   // mm-sized positions, or 3-decimal words: read as mm
   CHECK(only<cl::Motion>(read_all("G0 X10.1250 Y80.2500 Z1.0000\nG1 Z-0.1000 F10.\nX1.2500\nY0.7500\nX0.1250\n"
-                                  "Y0.2500\nM30\n").records).size() == 6);
+                                  "Y0.2500\nM30\n")
+                             .records)
+            .size() == 6);
   CHECK(only<cl::Motion>(read_all("G0 X0.125 Y0.25 Z1.0\nG1 Z-0.1 F10.\nX1.25\nY0.75\nX0.125\nY0.25\nM30\n").records)
             .size() == 6);
   // comments that speak inches and never millimetres (a Haas program written by hand)
-  const std::string haas = "%\nO01000\n(TOOL 1 = .500IN ENDMILL)\nT1 M6\nG90 G54 G0 X1. Y-.5\nS2000 M3\nG43 H1 Z1.\n"
-                           "G1 Z-.75 F16.\nX3.\nG0 Z1.\nM30\n%\n";
+  const std::string haas =
+      "%\nO01000\n(TOOL 1 = .500IN ENDMILL)\nT1 M6\nG90 G54 G0 X1. Y-.5\nS2000 M3\nG43 H1 Z1.\n"
+      "G1 Z-.75 F16.\nX3.\nG0 Z1.\nM30\n%\n";
   const InputError h = input_error(haas);
   CHECK(h.where().line == 3);
   CHECK_THAT(h.what(), Catch::Contains("its comments speak inches ('.500IN' at line 3"));
@@ -430,9 +439,10 @@ TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) 
   o.kind = InputKind::rtcp;
   Setup s;
   s.workpiece_origin_mm = Vec3d(0, 0, 80);
-  const Read r = read_all("G21 G90 G17\nG0 X0 Y0 Z10 A0 C0\nG1 Z0 F100\nG2 I-45\nG3 X20 Y20 I10 J10\n"
-                          "G3 X0 Y0 Z-1 I-10 J-10\nM30\n",
-                          o, s);
+  const Read r = read_all(
+      "G21 G90 G17\nG0 X0 Y0 Z10 A0 C0\nG1 Z0 F100\nG2 I-45\nG3 X20 Y20 I10 J10\n"
+      "G3 X0 Y0 Z-1 I-10 J-10\nM30\n",
+      o, s);
   const auto circles = only<cl::Circle>(r.records);
   REQUIRE(circles.size() == 3);  // the helix too: its centre at the start's height, the end motion gives Z
   CHECK(circles[0].where.line == 4);
@@ -448,7 +458,7 @@ TEST_CASE("gcode control: with `circles`, a single-turn arc (planar or helical) 
   const auto ms = only<cl::Motion>(r.records);
   REQUIRE(ms.size() == 5);
   CHECK((ms[4].point.tip_mm - Vec3d(0, 0, -1)).norm() < 1e-12);  // the helix ends 1 mm lower
-  CHECK(ms[2].where.line == 4);  // the full circle's end motion, back at the start
+  CHECK(ms[2].where.line == 4);                                  // the full circle's end motion, back at the start
   CHECK(ms[2].point.tip_mm.norm() < 1e-12);
   CHECK((ms[3].point.tip_mm - Vec3d(20, 20, 0)).norm() < 1e-12);
   // without the option (the default) every arc is points
@@ -517,7 +527,8 @@ TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before th
   CHECK(e.where().line == 4);
   CHECK_THAT(e.what(), Catch::Contains("X stands at its reference point since line 3"));
   // programmed absolutely: posted
-  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 X1 Y2 Z20\nM30\n").records).size() == 2);
+  CHECK(only<cl::Motion>(read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG91 G28 X0 Y0\nG90 G0 X1 Y2 Z20\nM30\n").records)
+            .size() == 2);
   // G53 Z0 and G28 before any programmed position: the first programmed values place the tool
   const Read r = read_all("G21 G90\nG53 G0 Z0\nG91 G28 Z0\nG90 G0 X10 Y10 Z5\nM30\n");
   const auto m = only<cl::Motion>(r.records);
@@ -531,7 +542,8 @@ TEST_CASE("G-code: after G28 X Y the next motion must program X and Y; before th
 // A time without a decimal point is ms on Fanuc and Haas, s on LinuxCNC: guessed only where the
 // other reading is absurd (P2000 as seconds: 33 min), else refused unless the user says which.
 TEST_CASE("G-code: G4 dwells in X or P; a time without a decimal point is ms, s, or refused") {
-  const Read r = read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG1 Z-2 F100\nG04 X1.5\nG4 P0.5\nG4 P2000\nG4 P0\nG1 Z5\nM30\n");
+  const Read r =
+      read_all("G21 G90\nG0 X10 Y10 Z5 A0 C0\nG1 Z-2 F100\nG04 X1.5\nG4 P0.5\nG4 P2000\nG4 P0\nG1 Z5\nM30\n");
   const auto m = only<cl::Motion>(r.records);
   REQUIRE(m.size() == 3);
   CHECK(m[1].point.tip_mm.isApprox(Vec3d(10, 10, -2)));
@@ -551,8 +563,9 @@ TEST_CASE("G-code: G4 dwells in X or P; a time without a decimal point is ms, s,
   const InputError refused = input_error(ambiguous);
   CHECK(refused.where().line == 3);
   CHECK(refused.where().column == 4);
-  CHECK_THAT(refused.what(), Catch::Contains("G4 P5 (no decimal point) is 5 ms on Fanuc and Haas but 5 s on LinuxCNC") &&
-                                 Catch::Contains("--dwell-p ms or --dwell-p s"));
+  CHECK_THAT(refused.what(),
+             Catch::Contains("G4 P5 (no decimal point) is 5 ms on Fanuc and Haas but 5 s on LinuxCNC") &&
+                 Catch::Contains("--dwell-p ms or --dwell-p s"));
   GcodeReaderOptions ms;
   ms.integer_dwell = IntegerDwell::milliseconds;
   const auto in_ms = only<cl::Dwell>(read_all(ambiguous, ms).records);
@@ -577,7 +590,8 @@ TEST_CASE("G-code: G4 dwells in X or P; a time without a decimal point is ms, s,
 // was read as 500 s and written back as P500000)
 TEST_CASE("G-code: the dwell P of G82 and G89 is read by the G4 rule") {
   const std::string head = "G21 G90 G94\nG0 X10 Y10 Z20 A0 C0\nS1000 M3\n";
-  const auto c = only<cl::Cycle>(read_all(head + "G99 G82 X10 Y10 Z-5 R2 P500 F100\nX20 P1.5\nX30\nG80\nM30\n").records);
+  const auto c =
+      only<cl::Cycle>(read_all(head + "G99 G82 X10 Y10 Z-5 R2 P500 F100\nX20 P1.5\nX30\nG80\nM30\n").records);
   REQUIRE(c.size() == 4);
   CHECK(c[3].kind == cl::Cycle::Kind::off);  // G80
   CHECK(c[0].dwell_s == Approx(0.5));
@@ -595,10 +609,11 @@ TEST_CASE("gcode control: a metric design written in inches without G20/G21 is r
   const std::string strips =
       "G90 G0 X0.0 Y3.937 Z1.9685\nG1 Z.9843 F9.8\nY3.5433\nY3.1496\nY2.7559\nY2.3622\nY1.9685\nG0 Z1.9685\nM30\n";
   const InputError e = input_error(strips);
-  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and its positions look like a metric "
-                                       "design written in inches (9 of its 9 X/Y/Z words with 3 or 4 decimals are whole "
-                                       "half-millimetres divided by 25.4, e.g. Y3.937 at line 1 = 100.000 mm)") &&
-                           Catch::Contains("post with --units inch or --units mm"));
+  CHECK_THAT(e.what(),
+             Catch::Contains("t.ngc:1: the program has no G20/G21 (units) and its positions look like a metric "
+                             "design written in inches (9 of its 9 X/Y/Z words with 3 or 4 decimals are whole "
+                             "half-millimetres divided by 25.4, e.g. Y3.937 at line 1 = 100.000 mm)") &&
+                 Catch::Contains("post with --units inch or --units mm"));
   GcodeReaderOptions inch;
   inch.default_inch = inch.units_given = true;
   const auto ms = only<cl::Motion>(read_all(strips, inch).records);
@@ -607,7 +622,8 @@ TEST_CASE("gcode control: a metric design written in inches without G20/G21 is r
   CHECK(ms[1].point.tip_mm.z() == Approx(25.0).margin(0.002));   // .9843 in
   // millimetres with 3 decimals that are no such fractions: read as mm, no refusal
   const auto mm = only<cl::Motion>(
-      read_all("G90 G0 X0.0 Y12.345 Z5.0\nG1 Z-1.234 F300\nY17.891\nY23.456\nY31.017\nY40.123\nG0 Z5.0\nM30\n").records);
+      read_all("G90 G0 X0.0 Y12.345 Z5.0\nG1 Z-1.234 F300\nY17.891\nY23.456\nY31.017\nY40.123\nG0 Z5.0\nM30\n")
+          .records);
   REQUIRE(mm.size() == 7);
   CHECK(mm[2].point.tip_mm.y() == Approx(17.891));
 }
@@ -618,9 +634,10 @@ TEST_CASE("gcode control: a metric design written in inches without G20/G21 is r
 // (a plasma cutter's) stays at Z0 as before.
 TEST_CASE("gcode control: a rapid before Z is known, released by a cut that programs Z, is refused") {
   const InputError e = input_error("G21 G90 G0 X10 Y10\nG1 X20 Y10 Z-1 F100\nM30\n");
-  CHECK_THAT(e.what(), Catch::Contains("t.ngc:1:") &&
-                           Catch::Contains("this rapid does not say where Z goes, and Z is first programmed by the "
-                                           "cutting motion at line 2: taken as Z0 it would run to the work offset's zero"));
+  CHECK_THAT(e.what(),
+             Catch::Contains("t.ngc:1:") &&
+                 Catch::Contains("this rapid does not say where Z goes, and Z is first programmed by the "
+                                 "cutting motion at line 2: taken as Z0 it would run to the work offset's zero"));
   const auto plasma = only<cl::Motion>(read_vmc("G21 G90\nG0 X10 Y10\nG1 X20 F500\nY20\nM30\n"));
   REQUIRE(plasma.size() == 3);
   check_tip(plasma[0], 10, 10, 0);
@@ -650,7 +667,8 @@ TEST_CASE("gcode control: axis words before any motion mode stay refused, saying
   const InputError e = input_error("G21 G90\nG43 Z100. H1\nG0 X0 Y0 A0 C0\nM30\n");
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 5);
-  CHECK(e.detail() == "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode (G0 "
-                      "or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or post "
-                      "with a dialect whose [input] power_on names it (fanuc, haas: G0)");
+  CHECK(e.detail() ==
+        "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode (G0 "
+        "or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or post "
+        "with a dialect whose [input] power_on names it (fanuc, haas: G0)");
 }

@@ -66,17 +66,17 @@ InputError reader_error(const std::string& text) {
 TEST_CASE("gcode expression: operators and their precedence") {
   CHECK(number("[1 + 2 * 3]") == 7.0);
   CHECK(number("[[1 + 2] * 3]") == 9.0);
-  CHECK(number("[10 - 4 - 3]") == 3.0);                 // left to right
-  CHECK(number("[2 ** 3 ** 2]") == 512.0);              // ** to the right: 2 ** 9
-  CHECK(number("[-2 ** 2]") == 4.0);                    // the sign binds its value: (-2) ** 2
+  CHECK(number("[10 - 4 - 3]") == 3.0);     // left to right
+  CHECK(number("[2 ** 3 ** 2]") == 512.0);  // ** to the right: 2 ** 9
+  CHECK(number("[-2 ** 2]") == 4.0);        // the sign binds its value: (-2) ** 2
   CHECK(number("[7 MOD 3]") == 1.0);
   CHECK(number("[7 / 2]") == 3.5);
-  CHECK(number("[1 + 2 EQ 3]") == 1.0);                 // arithmetic before comparison
-  CHECK(number("[2 GT 3 OR 4 LE 4]") == 1.0);           // comparison before logic
+  CHECK(number("[1 + 2 EQ 3]") == 1.0);        // arithmetic before comparison
+  CHECK(number("[2 GT 3 OR 4 LE 4]") == 1.0);  // comparison before logic
   CHECK(number("[1 AND 0 OR 1]") == 1.0);
   CHECK(number("[1 XOR 1]") == 0.0);
   CHECK(number("[3 NE 3]") == 0.0);
-  CHECK(number("[2 ge 2]") == 1.0);                     // case does not count
+  CHECK(number("[2 ge 2]") == 1.0);  // case does not count
   CHECK(number("[1 LT 2 AND 3 LT 2]") == 0.0);
 }
 
@@ -107,10 +107,10 @@ TEST_CASE("gcode expression: parameters, vacancy and the refusals") {
   p.set(7, 510.0);
   p.set("_global", 3.0);
   CHECK(number("[#510 + 1]", p) == 3.0);
-  CHECK(number("##7", p) == 2.0);               // the parameter whose number #7 holds
+  CHECK(number("##7", p) == 2.0);  // the parameter whose number #7 holds
   CHECK(number("#[#1 + 505]", p) == 2.0);
-  CHECK(number("#<_Glo Bal>", p) == 3.0);        // LinuxCNC names: case and blanks do not count
-  CHECK(number("[#2 EQ #0]", p) == 1.0);         // #2 was never set: vacant
+  CHECK(number("#<_Glo Bal>", p) == 3.0);  // LinuxCNC names: case and blanks do not count
+  CHECK(number("[#2 EQ #0]", p) == 1.0);   // #2 was never set: vacant
   CHECK(number("[#1 EQ #0]", p) == 0.0);
   CHECK_FALSE(eval("#0", p));
   CHECK_THAT(eval_error("[#2 + 1]", p), Catch::Contains("vacant"));
@@ -130,13 +130,15 @@ TEST_CASE("gcode expression: values beyond the range of numbers are refused (fuz
   // a parameter number beyond a 64-bit integer is named as written, not converted (undefined
   // behaviour before); sums, products and numbers that overflow to infinity never reach a word
   const std::string digits(400, '9');
-  CHECK_THAT(eval_error("#1180591620717411303424"), Catch::Contains("#1180591620717411303424 is a system variable"));  // 2^70
+  CHECK_THAT(eval_error("#1180591620717411303424"),
+             Catch::Contains("#1180591620717411303424 is a system variable"));  // 2^70
   CHECK_THAT(eval_error("[" + digits + "]"), Catch::Contains("beyond the range"));
   const std::string big = "1" + std::string(200, '0');  // 1e200
   CHECK_THAT(eval_error("[" + big + " * " + big + "]"), Catch::Contains("'*' gives a value beyond the range"));
   const std::string near_max = "17" + std::string(307, '0');  // 1.7e308, a finite double
   CHECK(number("[" + near_max + " - " + near_max + "]") == 0.0);
-  CHECK_THAT(eval_error("[" + near_max + " + " + near_max + "]"), Catch::Contains("'+' gives a value beyond the range"));
+  CHECK_THAT(eval_error("[" + near_max + " + " + near_max + "]"),
+             Catch::Contains("'+' gives a value beyond the range"));
   CHECK(number("[" + big + " / " + big + "]") == 1.0);
 }
 
@@ -179,8 +181,9 @@ TEST_CASE("gcode macro line: assignments, word values and columns") {
 }
 
 TEST_CASE("gcode macro program: parameters place the motions (X[#510+1], X#24)") {
-  const auto ms = motions("%\nG21 G90 G94\n#24 = 12.5\n#510 = 4\n#<depth> = -[#510 / 2]\n"
-                          "G0 X#24 Y[#510+1] Z10\nG1 Z#<depth> F100\nX[#24 * 2]\nM30\n%\n");
+  const auto ms = motions(
+      "%\nG21 G90 G94\n#24 = 12.5\n#510 = 4\n#<depth> = -[#510 / 2]\n"
+      "G0 X#24 Y[#510+1] Z10\nG1 Z#<depth> F100\nX[#24 * 2]\nM30\n%\n");
   REQUIRE(ms.size() == 3);
   CHECK(ms[0].point.tip_mm.isApprox(Vec3d(12.5, 5, 10)));
   CHECK(ms[1].point.tip_mm.isApprox(Vec3d(12.5, 5, -2)));
@@ -213,7 +216,8 @@ TEST_CASE("gcode macro program: WHILE loops, IF GOTO and GOTO, as a control runs
   CHECK(back[2].point.tip_mm.x() == 2.0);
   CHECK(back[3].point.tip_mm.x() == 3.0);
   // IF THEN: a conditional assignment
-  const auto then = motions("G21 G90\n#3 = 1\nIF [#3 GT 0] THEN #3 = 7\nIF [#3 GT 100] THEN #3 = 0\nG0 X#3 Y0 Z5\nM30\n");
+  const auto then =
+      motions("G21 G90\n#3 = 1\nIF [#3 GT 0] THEN #3 = 7\nIF [#3 GT 100] THEN #3 = 0\nG0 X#3 Y0 Z5\nM30\n");
   REQUIRE(then.size() == 1);
   CHECK(then[0].point.tip_mm.x() == 7.0);
 }

@@ -50,8 +50,7 @@ Vec3d linuxcnc_xyzac_joints(const TrtParams& k, const Vec3d& world, double a_deg
   const double sc = std::sin(c_deg * kDeg), cc = std::cos(c_deg * kDeg);
   const double px = world.x() - k.x_rot, py = world.y() - k.y_rot, pz = world.z() - k.z_rot;
   const double dy = k.y_offset, dz = k.z_offset;
-  return {cc * px + s * sc * py + k.x_rot,
-          ca * (-s * sc * px + cc * py - dy) + s * sa * (pz - dz) + dy + k.y_rot,
+  return {cc * px + s * sc * py + k.x_rot, ca * (-s * sc * px + cc * py - dy) + s * sa * (pz - dz) + dy + k.y_rot,
           sa * (sc * px - s * cc * py + s * dy) + ca * (pz - dz) + dz + k.z_rot};
 }
 
@@ -86,12 +85,23 @@ std::vector<ProgrammedMotion> read_motions_independently(const std::string& path
       char* end = nullptr;
       const double v = std::strtod(line.c_str() + i + 1, &end);
       switch (c) {
-        case 'X': current.world.x() = v; break;
-        case 'Y': current.world.y() = v; break;
-        case 'Z': current.world.z() = v; break;
-        case 'A': current.a_deg = v; break;
-        case 'C': current.c_deg = v; break;
-        default: break;  // F
+        case 'X':
+          current.world.x() = v;
+          break;
+        case 'Y':
+          current.world.y() = v;
+          break;
+        case 'Z':
+          current.world.z() = v;
+          break;
+        case 'A':
+          current.a_deg = v;
+          break;
+        case 'C':
+          current.c_deg = v;
+          break;
+        default:
+          break;  // F
       }
       i = static_cast<std::size_t>(end - line.c_str()) - 1;
     }
@@ -154,7 +164,8 @@ TEST_CASE("LinuxCNC peer: impeller (TCP on) gives LinuxCNC's xyzac-trt joints, b
       const Vec3d peer = linuxcnc_xyzac_joints(k, p.world, p.a_deg, p.c_deg);
       max_joint_dev = std::max(max_joint_dev, (ours - peer).cwiseAbs().maxCoeff());
       // tool axis of the CL point vs LinuxCNC's forward map
-      max_axis_dev = std::max(max_axis_dev, (motion->point.axis - linuxcnc_xyzac_tool_axis(k, p.a_deg, p.c_deg)).norm());
+      max_axis_dev =
+          std::max(max_axis_dev, (motion->point.axis - linuxcnc_xyzac_tool_axis(k, p.a_deg, p.c_deg)).norm());
       // closed-form IK from the CL point alone (nearest the programmed angles, as a post would
       // keep continuity) reaches the same joints
       AxisPosition near = home_of(m);

@@ -60,8 +60,9 @@ TEST_CASE("local offsets: G92 X0 between tiles, each tile cut by one subprogram 
 }
 
 TEST_CASE("local offsets: Fanuc G52 shifts the work offset in force and G52 X0 Y0 cancels it") {
-  const std::string input = "G21 G90 G17 G94\nG54 G0 X0 Y0 Z5\nG1 Z0 F100\nX10\nG52 X100 Y-20\nG0 X0 Y0\nG1 X10\n"
-                            "Y10\nG52 X0 Y0\nG0 X5 Y5\nM30\n";
+  const std::string input =
+      "G21 G90 G17 G94\nG54 G0 X0 Y0 Z5\nG1 Z0 F100\nX10\nG52 X100 Y-20\nG0 X0 Y0\nG1 X10\n"
+      "Y10\nG52 X0 Y0\nG0 X5 Y5\nM30\n";
   const Posted p = post_local(input, "fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
@@ -104,10 +105,10 @@ TEST_CASE("local offsets: refused where the shift is not known or the controls d
     const char* message;
   };
   const Case cases[] = {
-      {"G21 G90\nG92 X0 Y0\nG0 X10 Y10 Z5\nM30\n", "in.nc:2:"},                      // the position is not known yet
-      {"G21 G90\nG0 X0 Y0 Z5\nG91 G52 X10\nM30\n", "under G91"},                     // incremental values differ
-      {"G21 G90\nG0 X0 Y0 Z5\nG52 X10\nG92 X0\nM30\n", "while the shift of G52"},    // Fanuc keeps them apart
-      {"G21 G90\nG0 X0 Y0 Z5\nG92.1\nM30\n", "G92.1"},                                // cancel/restore: not read
+      {"G21 G90\nG92 X0 Y0\nG0 X10 Y10 Z5\nM30\n", "in.nc:2:"},                    // the position is not known yet
+      {"G21 G90\nG0 X0 Y0 Z5\nG91 G52 X10\nM30\n", "under G91"},                   // incremental values differ
+      {"G21 G90\nG0 X0 Y0 Z5\nG52 X10\nG92 X0\nM30\n", "while the shift of G52"},  // Fanuc keeps them apart
+      {"G21 G90\nG0 X0 Y0 Z5\nG92.1\nM30\n", "G92.1"},                             // cancel/restore: not read
       {"G21 G90\nG0 X0 Y0 Z5\nG52\nM30\n", "G52 without axis words"},
       {"G21 G90\nG0 X0 Y0 Z5\nG91 G10 L2 P2 X10\nM30\n", "G10 under G91"},  // G91 in the same block
   };

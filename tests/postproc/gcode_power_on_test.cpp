@@ -47,16 +47,17 @@ std::vector<cl::Motion> motions(const std::string& text, const gcode::GcodeReade
 
 // NX posts for Mori Seiki and Okuma: the tool's first positioning and its length call carry no
 // motion word; the control's power-on G00 moves them
-const char* const kNoMotionWord = "%\nO0001\nG21 G90 G17\nT8 M6\nX10. Y10. Z40. S1000 M3\nG43 Z30. H8\nG1 Z0 F200\n"
-                                  "X40.\nG0 Z30.\nM30\n%\n";
+const char* const kNoMotionWord =
+    "%\nO0001\nG21 G90 G17\nT8 M6\nX10. Y10. Z40. S1000 M3\nG43 Z30. H8\nG1 Z0 F200\n"
+    "X40.\nG0 Z30.\nM30\n%\n";
 
 }  // namespace
 
 TEST_CASE("power-on: G43 Z30. H8 before any motion word posts on Fanuc, and the header says why") {
   const std::string dir = make_temp_dir("power_on");
   const std::string in = write_text_file(dir + "/in.nc", kNoMotionWord);
-  const int rc = run_ncpost("post --machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect fanuc -o " +
-                                dir + "/out.nc " + in,
+  const int rc = run_ncpost("post --machine " + source("machines/vmcl600.toml") +
+                                " --tolerance none --dialect fanuc -o " + dir + "/out.nc " + in,
                             dir + "/log");
   INFO(read_text_file(dir + "/log"));
   REQUIRE(rc == 0);

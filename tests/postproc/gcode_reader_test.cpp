@@ -175,7 +175,8 @@ TEST_CASE("gcode reader: RTCP programs keep the tip and take the axis from the a
   GcodeReaderOptions machine_kind;
   machine_kind.kind = InputKind::machine;
   CHECK((motions("M428\nG1 X1 Y2 Z3 A30 C90 F1\n", machine_kind)[0].point.tip_mm -
-         forward(test::ac_trunnion(), q, Setup{}).tip_mm).norm() < 1e-12);
+         forward(test::ac_trunnion(), q, Setup{}).tip_mm)
+            .norm() < 1e-12);
   GcodeReaderOptions rtcp_kind;
   rtcp_kind.kind = InputKind::rtcp;
   check_tip(motions("G1 X1 Y2 Z3 A30 C90 F1\n", rtcp_kind)[0], 1, 2, 3);
@@ -270,7 +271,8 @@ TEST_CASE("gcode reader: arcs expand within the chord tolerance") {
 TEST_CASE("gcode reader: comments, tool, spindle, coolant, stops and the program end") {
   std::vector<std::string> notices;
   const auto rs = read_all(
-      "%\nO0042 (DEMO)\n(first)\nN10 T3 M6 ; change\nN20 S1200 M3\nN30 M8 G0 X1\nS1500\nG4 P2.\nM0\nM5 M9\nM30\nG0 X99\n%\n",
+      "%\nO0042 (DEMO)\n(first)\nN10 T3 M6 ; change\nN20 S1200 M3\nN30 M8 G0 X1\nS1500\nG4 P2.\nM0\nM5 M9\nM30\nG0 "
+      "X99\n%\n",
       {}, {}, &notices);
   const auto comments = only<cl::Comment>(rs);
   REQUIRE(comments.size() == 3);
@@ -338,12 +340,13 @@ TEST_CASE("gcode reader: block delete and percent framing") {
   // a leader before the opening % (lines that do not move; NX's information listing:
   // gcode_leader_test.cpp), and G-code before % is kept when nothing moves after it
   std::vector<std::string> notices;
-  const auto led = only<cl::Motion>(read_all("PowerMill title\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
+  const auto led =
+      only<cl::Motion>(read_all("PowerMill title\nDate\t28-Nov-2021\n\n%\nG0 X4\nM30\n%\n", {}, {}, &notices));
   REQUIRE(led.size() == 1);
   check_tip(led[0], 4, 0, 0);
   REQUIRE_FALSE(notices.empty());
   CHECK_THAT(notices[0], Catch::Contains("3 line(s) before the opening '%'"));
-  CHECK(motions("G0 X1\nM30\n%\nG0 X2\n").size() == 1);  // a '%' after the program's end closes it
+  CHECK(motions("G0 X1\nM30\n%\nG0 X2\n").size() == 1);    // a '%' after the program's end closes it
   CHECK(error_of("G0 X1\n%\nG0 X2\n").where().line == 2);  // motions on both sides: refused
   // a UTF-8 byte order mark (NX writes one)
   check_tip(motions("\xEF\xBB\xBF%\nG0 X3\nM30\n%\n").at(0), 3, 0, 0);
@@ -388,7 +391,8 @@ TEST_CASE("gcode reader: G80 beside G0/G1 in one block cancels the cycle and set
   // the safe-start line of Fanuc-style posts: G80 is its own group there, G00 the motion mode
   // (the first rapid says its Z: a rapid before any Z, released by the cut that programs Z first,
   // is refused — gcode_control_test)
-  const auto start = motions("N1 G00 G17 G21 G40 G49 G80 G90\nN3 X-75. Y-93.703 Z5.\nG1 Z-6. F300\nG80 G1 X75.\n", input_only());
+  const auto start =
+      motions("N1 G00 G17 G21 G40 G49 G80 G90\nN3 X-75. Y-93.703 Z5.\nG1 Z-6. F300\nG80 G1 X75.\n", input_only());
   REQUIRE(start.size() == 3);
   CHECK(start[0].rapid);
   check_tip(start[0], -75, -93.703, 5);

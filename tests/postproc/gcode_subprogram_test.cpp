@@ -73,8 +73,7 @@ TEST_CASE("subprograms: Fanuc M98 P1000 L3 runs O1000 (after M30) three times, i
 
 TEST_CASE("subprograms: Fanuc M98 P21000 is O1000 twice; Haas M97 P<n> L<k> runs from block N<n>") {
   CHECK(posted_and_compared("G21 G90\nG0 X0 Y0 Z10\nM98 P21000\nM30\nO1000\nG91 G0 X7 Y-3\nG90\nM99\n") == 3);
-  CHECK(posted_and_compared("G21 G90\nG0 X0 Y0 Z10\nM97 P100 L2\nG0 X1\nM30\nN100 G91 G1 X2 F100\nY2\nG90 M99\n") ==
-        6);
+  CHECK(posted_and_compared("G21 G90\nG0 X0 Y0 Z10\nM97 P100 L2\nG0 X1\nM30\nN100 G91 G1 X2 F100\nY2\nG90 M99\n") == 6);
 }
 
 TEST_CASE("subprograms: LinuxCNC o<name> sub with parameters #1 #2, called twice; numbered o100 sub") {
@@ -126,8 +125,9 @@ TEST_CASE("subprograms: recursion, depth, missing targets and M99 in the main pr
 
 TEST_CASE("subprograms: an error inside a subprogram names the call chain") {
   // the o<inner> sub's line 2 has an axis the machine lacks; called from o<outer> at line 4, from line 8
-  const InputError e = error_of("o<inner> sub\n  G0 B5\no<inner> endsub\no<outer> sub\n  o<inner> call\no<outer> endsub\n"
-                                "G21 G90\nG0 X0 Y0 Z10\no<outer> call\nM2\n");
+  const InputError e = error_of(
+      "o<inner> sub\n  G0 B5\no<inner> endsub\no<outer> sub\n  o<inner> call\no<outer> endsub\n"
+      "G21 G90\nG0 X0 Y0 Z10\no<outer> call\nM2\n");
   CHECK(e.where().line == 2);
   CHECK_THAT(e.detail(), Catch::Contains("no B axis"));
   CHECK_THAT(e.detail(), Catch::EndsWith("via o<inner> call at t.nc:5 via o<outer> call at t.nc:9"));
@@ -135,8 +135,9 @@ TEST_CASE("subprograms: an error inside a subprogram names the call chain") {
 
 TEST_CASE("subprograms: M98 P L under a modal canned cycle: P and L are the call's, the holes the subprogram's") {
   // Peter Smid's pattern: the cycle is set in the main program, the hole positions are a subprogram
-  const std::string text = "G21 G90 G94\nG0 X0 Y0 Z20\nG99 G82 R2 Z-5 P500 F100\nM98 P1002 L2\nG80\nG0 Z20\nM30\n"
-                           "O1002\nX10 Y10\nX20 Y10\nM99\n";
+  const std::string text =
+      "G21 G90 G94\nG0 X0 Y0 Z20\nG99 G82 R2 Z-5 P500 F100\nM98 P1002 L2\nG80\nG0 Z20\nM30\n"
+      "O1002\nX10 Y10\nX20 Y10\nM99\n";
   std::istringstream in(text);
   gcode::GcodeClReader r(in, "t.nc", vmc(), Setup{});
   const std::vector<cl::Record> records = all_records(r);

@@ -107,7 +107,8 @@ TEST_CASE("G-code: G43 H is a length record after the tool change; H0 and G49 ca
     CHECK(test::only<cl::Motion>(rs).back().point.tip_mm.z() == Approx(60.0));
   }
   CHECK(std::any_of(notices.begin(), notices.end(), [](const std::string& n) {
-    return n.find("t.nc:7:4: a rapid in Z with the tool length cancelled (G49 or H0 at line 6) is posted") != std::string::npos;
+    return n.find("t.nc:7:4: a rapid in Z with the tool length cancelled (G49 or H0 at line 6) is posted") !=
+           std::string::npos;
   }));
   CHECK_THAT(input_error_of([&] { read_all(head + "G81 X5. Y5. Z-3. R2. F50.\nM30\n"); }),
              Catch::Contains("t.nc:7:5: a cutting motion with the tool length cancelled"));
@@ -115,8 +116,9 @@ TEST_CASE("G-code: G43 H is a length record after the tool change; H0 and G49 ca
              Catch::Contains("(G49 or H0 at line 3)"));
   // ... but a return to the reference point is a machine move; rapids in X Y and the rotary axes
   // position the next tool (the safety line of the next operation), and G43 restores the length
-  const auto next_op = read_all(head + "G91 G28 Z0\nG90\nT2 M6\nG0 G90 G40 G49 G80\nG0 X20. Y5.\n"
-                                       "G43 H2 Z30.\nG1 Z-1.\nM30\n");
+  const auto next_op = read_all(head +
+                                "G91 G28 Z0\nG90\nT2 M6\nG0 G90 G40 G49 G80\nG0 X20. Y5.\n"
+                                "G43 H2 Z30.\nG1 Z-1.\nM30\n");
   const auto m = test::only<cl::Motion>(next_op);
   REQUIRE(m.size() >= 3);
   CHECK(m.back().point.tip_mm.z() == Approx(-1.0).margin(1e-9));
@@ -134,7 +136,8 @@ TEST_CASE("post: the length register of G43 H is written as programmed (fanuc, h
   }
   CHECK(h23 > 0);
   CHECK(h23 < first_motion);
-  CHECK(starting_with(post_blocks(kTwoTools, "haas"), "G43") == std::vector<std::string>{"G43 H3", "G43 H23", "G43 H4"});
+  CHECK(starting_with(post_blocks(kTwoTools, "haas"), "G43") ==
+        std::vector<std::string>{"G43 H3", "G43 H23", "G43 H4"});
   // with RTCP the length comes with TCP on: the program's register
   const auto rtcp = post_blocks(kTwoTools, "fanuc", true);
   CHECK(starting_with(rtcp, "G43.4") == std::vector<std::string>{"G43.4 H3", "G43.4 H23", "G43.4 H4"});
@@ -151,7 +154,8 @@ TEST_CASE("post: a length register the dialect cannot write is refused (heidenha
     CAPTURE(d);
     const std::string e = input_error_of([&] { post_blocks(kTwoTools, d); });
     CHECK_THAT(e, Catch::Contains("t.nc:4:8: H23: the tool length of register 23 (the tool in the spindle is T3) "
-                                  "cannot be written in the " + std::string(d) + " dialect"));
+                                  "cannot be written in the " +
+                                  std::string(d) + " dialect"));
     // the tool's own register is what its call activates: posted
     CHECK_NOTHROW(post_blocks("G21 G90\nT2 M6\nS1000 M3\nG0 G43 H2 Z50.\nG0 X10. Y10. A0 C0\nM30\n", d));
   }

@@ -108,9 +108,10 @@ TEST_CASE("work offsets: G54, G55 and G58 from a TOML file, each operation in it
 
 TEST_CASE("work offsets: a LinuxCNC var file gives G54 .. G59.3 (5221 .. 5389)") {
   // G55 (5241..) and G59.1 (5341..): X Y Z; 5220 (the active system) and U V W are not read
-  const std::string var = "5220\t1.000000\n5221\t-250.0\n5222\t-120.0\n5223\t-310.0\n5227\t99\n"
-                          "5241\t-100.000000\n5242\t-120.000000\n5243\t-310.000000\n"
-                          "5341\t12.5\n5342\t-7.25\n5343\t-300.0\n";
+  const std::string var =
+      "5220\t1.000000\n5221\t-250.0\n5222\t-120.0\n5223\t-310.0\n5227\t99\n"
+      "5241\t-100.000000\n5242\t-120.000000\n5243\t-310.000000\n"
+      "5341\t12.5\n5342\t-7.25\n5343\t-300.0\n";
   const std::string input = "G21 G90 G17 G94\nG54 G0 X10 Y10 Z20\nG1 Z0 F200\nG55 G1 X20\nG59.1 G1 Y5\nG0 Z20\nM2\n";
   const Posted p = post_program(input, "vmcl600.toml", var, "--dialect linuxcnc", "linuxcnc.var");
   INFO(p.log);
@@ -127,8 +128,9 @@ TEST_CASE("work offsets: a LinuxCNC var file gives G54 .. G59.3 (5221 .. 5389)")
 }
 
 TEST_CASE("work offsets: G54.1 P<n> and G59.3 from the file; inch values converted") {
-  const std::string toml = "units = \"inch\"\n[G57]\nX = 1\nY = 2\nZ = -10\n[\"G54.1 P7\"]\nX = 3\nY = 2\nZ = -10\n"
-                           "[\"g59.3\"]\nX = -1\nY = 0.5\nZ = -9.5\n";
+  const std::string toml =
+      "units = \"inch\"\n[G57]\nX = 1\nY = 2\nZ = -10\n[\"G54.1 P7\"]\nX = 3\nY = 2\nZ = -10\n"
+      "[\"g59.3\"]\nX = -1\nY = 0.5\nZ = -9.5\n";
   const std::string input = "G21 G90 G17 G94\nG57 G0 X0 Y0 Z10\nG1 Z0 F100\nG54.1 P7 G1 X5\nG59.3 G1 Y5\nG0 Z10\nM30\n";
   const Posted p = post_program(input, "vmcl600.toml", toml, "");
   INFO(p.log);
@@ -155,8 +157,9 @@ TEST_CASE("work offsets: the program's own G10 L2 (Mastercam's #501 = 1 / G10 L2
 
 TEST_CASE("work offsets: LinuxCNC G10 L20 makes the current position read the words") {
   // G55's zero put where the tool stands (X30 Y20 of G54), without knowing G54's value
-  const std::string input = "G21 G90 G17 G94\nG54 G0 X30 Y20 Z10\nG10 L20 P2 X0 Y0 Z10\nG55 G1 X5 F100\nY5\n"
-                            "G10 L20 P0 X100\nG1 X110\nG54 G0 X0 Y0\nM2\n";
+  const std::string input =
+      "G21 G90 G17 G94\nG54 G0 X30 Y20 Z10\nG10 L20 P2 X0 Y0 Z10\nG55 G1 X5 F100\nY5\n"
+      "G10 L20 P0 X100\nG1 X110\nG54 G0 X0 Y0\nM2\n";
   const Posted p = post_program(input, "vmcl600.toml", "", "--dialect linuxcnc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
@@ -169,8 +172,9 @@ TEST_CASE("work offsets: LinuxCNC G10 L20 makes the current position read the wo
 }
 
 TEST_CASE("work offsets: Fanuc G10 L20 P<n> sets G54.1 P<n>") {
-  const std::string input = "G21 G90 G17 G94\nG10 L20 P3 X-40 Y-50 Z-200\nG10 L2 P1 X-90 Y-50 Z-200\n"
-                            "G54 G0 X0 Y0 Z10\nG1 Z0 F100\nG54.1 P3 G1 X0\nG0 Z10\nM30\n";
+  const std::string input =
+      "G21 G90 G17 G94\nG10 L20 P3 X-40 Y-50 Z-200\nG10 L2 P1 X-90 Y-50 Z-200\n"
+      "G54 G0 X0 Y0 Z10\nG1 Z0 F100\nG54.1 P3 G1 X0\nG0 Z10\nM30\n";
   const Posted p = post_program(input, "vmcl600.toml", "", "--dialect fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
@@ -179,15 +183,15 @@ TEST_CASE("work offsets: Fanuc G10 L20 P<n> sets G54.1 P<n>") {
 
 TEST_CASE("work offsets: a five-axis program with a rotary value in the offset (AC trunnion, machine axes)") {
   const std::string toml = "[G54]\nX = 0\nY = 0\nZ = 0\nA = 0\nC = 0\n[G55]\nX = 12\nY = -8\nZ = 5\nA = 0\nC = 30\n";
-  const std::string input = "G21 G90 G17 G94\nG54 G0 X10 Y0 Z60 A0 C0\nG1 Z50 F500\nA20 C45\n"
-                            "G55 G1 X10 Y0 Z50 A15 C10\nX20 C-20\nG0 Z80\nM30\n";
+  const std::string input =
+      "G21 G90 G17 G94\nG54 G0 X10 Y0 Z60 A0 C0\nG1 Z50 F500\nA20 C45\n"
+      "G55 G1 X10 Y0 Z50 A15 C10\nX20 C-20\nG0 Z80\nM30\n";
   const Posted p = post_program(input, "ac-trunnion.toml", toml, "");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
-  const ControlSpec spec =
-      spec_of({{"G54", {{'X', 0}, {'Y', 0}, {'Z', 0}, {'A', 0}, {'C', 0}}},
-               {"G55", {{'X', 12}, {'Y', -8}, {'Z', 5}, {'A', 0}, {'C', 30}}}},
-              false, "XYZAC");
+  const ControlSpec spec = spec_of({{"G54", {{'X', 0}, {'Y', 0}, {'Z', 0}, {'A', 0}, {'C', 0}}},
+                                    {"G55", {{'X', 12}, {'Y', -8}, {'Z', 5}, {'A', 0}, {'C', 30}}}},
+                                   false, "XYZAC");
   CHECK(compare_tips(input, spec, "G54", "ac-trunnion.toml", p.program) == 6);
 }
 
@@ -202,7 +206,8 @@ TEST_CASE("work offsets: refusals name --work-offsets, the axis and the line") {
   const InputError missing = reader_error(two, partial);
   CHECK_THAT(missing.detail(), Catch::Contains("the work offsets file o.toml does not give Z"));
   // the control decides G10 L20 and G10 L2 P0: unknown, they are refused naming --dialect
-  const InputError l20 = reader_error("G21 G90\nG0 X0 Y0 Z0\nG10 L20 P2 X0\nM30\n", nullptr, cl::ControlFamily::unknown);
+  const InputError l20 =
+      reader_error("G21 G90\nG0 X0 Y0 Z0\nG10 L20 P2 X0\nM30\n", nullptr, cl::ControlFamily::unknown);
   CHECK(l20.where().line == 3);
   CHECK_THAT(l20.detail(), Catch::Contains("--dialect"));
   const InputError p0 = reader_error("G21 G90\nG10 L2 P0 X0\nM30\n", nullptr, cl::ControlFamily::unknown);

@@ -30,12 +30,9 @@ struct ClElement {
 /// holes at (10, 20) and (30, 20) from the R plane (3 above) to 5 deep at 100, then at 800
 /// (30, 20, 40) -> (30, 20, 30) -> (30, 0, 30).
 std::vector<ClElement> sample_path() {
-  return {{V3(20, 0, 50), V3(20, 0, 0), false, 500},
-          {V3(20, 0, 0), V3(0, 20, 0), true, 500},
-          {V3(10, 20, 3), V3(10, 20, -5), false, 100},
-          {V3(30, 20, 3), V3(30, 20, -5), false, 100},
-          {V3(30, 20, 40), V3(30, 20, 30), false, 800},
-          {V3(30, 20, 30), V3(30, 0, 30), false, 800}};
+  return {{V3(20, 0, 50), V3(20, 0, 0), false, 500},    {V3(20, 0, 0), V3(0, 20, 0), true, 500},
+          {V3(10, 20, 3), V3(10, 20, -5), false, 100},  {V3(30, 20, 3), V3(30, 20, -5), false, 100},
+          {V3(30, 20, 40), V3(30, 20, 30), false, 800}, {V3(30, 20, 30), V3(30, 0, 30), false, 800}};
 }
 
 double distance_to(const ClElement& e, const V3& p) {

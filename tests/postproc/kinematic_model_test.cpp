@@ -57,8 +57,8 @@ TEST_CASE("kinematic model: the serial chain gives both branches, each on the CL
 TEST_CASE("kinematic model: the chain with an error model compensates every branch; its error hook",
           "[kinematic_model]") {
   const Machine m = load_machine(test::data("scenarios/public-clean/machine.toml"));
-  const comp::MachineModel truth(
-      m, comp::read_model_json(test::data("scenarios/public-clean/truth.json"), &m).parameters);
+  const comp::MachineModel truth(m,
+                                 comp::read_model_json(test::data("scenarios/public-clean/truth.json"), &m).parameters);
   const Setup setup{Vec3d(0, 0, 80), 0.0};
   const ActualSolver actual(truth, setup);
   const SerialChainModel nominal(m, setup);
@@ -71,7 +71,7 @@ TEST_CASE("kinematic model: the chain with an error model compensates every bran
   REQUIRE(actual_branches.size() == nominal_branches.size());
   for (std::size_t i = 0; i < actual_branches.size(); ++i) {
     const AxisPosition& q = actual_branches[i];
-    CHECK(actual.reaches(cl, q, std::nullopt));  // on the CL point on the actual machine
+    CHECK(actual.reaches(cl, q, std::nullopt));                        // on the CL point on the actual machine
     CHECK_FALSE(nominal.execute(q).tip_mm.isApprox(cl.tip_mm, 1e-9));  // not on the nominal one
     // near its nominal branch: the compensation is tens of µm, not another solution
     CHECK((q.linear_mm - nominal_branches[i].linear_mm).norm() < 1.0);
@@ -99,7 +99,8 @@ TEST_CASE("kinematic model: the TRR-XY machine's one branch and its error hook",
   CHECK_FALSE(k.words().serial);
 }
 
-TEST_CASE("kinematic model: kinematics/ includes nothing of postproc/ or compensation/", "[kinematic_model][layering]") {
+TEST_CASE("kinematic model: kinematics/ includes nothing of postproc/ or compensation/",
+          "[kinematic_model][layering]") {
   int files = 0;
   for (const char* dir : {"kinematics/include", "kinematics/src"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(test::source(dir))) {

@@ -55,18 +55,18 @@ std::vector<cl::Motion> of_line(const std::vector<cl::Motion>& ms, int line) {
 
 TEST_CASE("klartext arcs: C about CC, CR R+ and R-, CT, CP helix and CP PA") {
   const auto rs = read(
-      "0 BEGIN PGM ARCS MM\n"                      // line 1
-      "1 TOOL CALL 1 Z S1000\n"                    // 2
-      "2 L X+10 Y+0 Z+0 A+0 C+0 R0 FMAX M3\n"      // 3
-      "3 CC X+0 Y+0\n"                             // 4
-      "4 C X+0 Y+10 DR+ F100\n"                    // 5: quarter circle counter-clockwise
-      "5 C X+10 Y+0 DR-\n"                         // 6: back clockwise
-      "6 CR X+30 Y+0 R+10 DR+\n"                   // 7: half circle, centre (20, 0)
-      "7 CR X+40 Y+10 R-10 DR-\n"                  // 8: 270 deg clockwise, centre (30, 10)
-      "8 CT X+30 Y+20\n"                           // 9: leaves (40, 10) downwards: centre (30, 10), clockwise
-      "9 CC X+30 Y+10\n"                           // 10
-      "10 CP IPA+720 IZ-4 DR+\n"                   // 11: two turns down 4 mm
-      "11 CP PA+0 DR-\n"                           // 12: from 90 deg clockwise to 0 deg
+      "0 BEGIN PGM ARCS MM\n"                  // line 1
+      "1 TOOL CALL 1 Z S1000\n"                // 2
+      "2 L X+10 Y+0 Z+0 A+0 C+0 R0 FMAX M3\n"  // 3
+      "3 CC X+0 Y+0\n"                         // 4
+      "4 C X+0 Y+10 DR+ F100\n"                // 5: quarter circle counter-clockwise
+      "5 C X+10 Y+0 DR-\n"                     // 6: back clockwise
+      "6 CR X+30 Y+0 R+10 DR+\n"               // 7: half circle, centre (20, 0)
+      "7 CR X+40 Y+10 R-10 DR-\n"              // 8: 270 deg clockwise, centre (30, 10)
+      "8 CT X+30 Y+20\n"                       // 9: leaves (40, 10) downwards: centre (30, 10), clockwise
+      "9 CC X+30 Y+10\n"                       // 10
+      "10 CP IPA+720 IZ-4 DR+\n"               // 11: two turns down 4 mm
+      "11 CP PA+0 DR-\n"                       // 12: from 90 deg clockwise to 0 deg
       "12 END PGM ARCS MM\n");
   const auto circles = only<cl::Circle>(rs);
   const auto ms = only<cl::Motion>(rs);
@@ -129,6 +129,8 @@ TEST_CASE("klartext arcs: what the TNC refuses is refused with the line") {
   CHECK_THAT(error_of(head + "3 C X+0 Y+10\n4 END PGM A MM\n"), Catch::Contains("without DR+ or DR-"));
   CHECK_THAT(error_of(head + "3 CP IPA-90 DR+\n4 END PGM A MM\n"), Catch::Contains("signs of IPA and DR differ"));
   CHECK_THAT(error_of(head + "3 L X+20\n4 CT X+30 Y+0\n5 END PGM A MM\n"), Catch::Contains("a line, not an arc"));
-  CHECK_THAT(error_of(head + "3 C X+0 Y+10 Z+5 DR+\n4 END PGM A MM\n"), Catch::Contains("a helix is programmed with CP"));
-  CHECK_THAT(error_of("0 BEGIN PGM A MM\n1 CT X+1 Y+1\n2 END PGM A MM\n"), Catch::Contains("arcs.h:2:3: CT before X, Y and Z"));
+  CHECK_THAT(error_of(head + "3 C X+0 Y+10 Z+5 DR+\n4 END PGM A MM\n"),
+             Catch::Contains("a helix is programmed with CP"));
+  CHECK_THAT(error_of("0 BEGIN PGM A MM\n1 CT X+1 Y+1\n2 END PGM A MM\n"),
+             Catch::Contains("arcs.h:2:3: CT before X, Y and Z"));
 }

@@ -106,9 +106,11 @@ TEST_CASE("klartext program flow refusals name the statement and the chain of ca
   const std::string e = error_of(deep);
   CHECK_THAT(e, Catch::Contains("CALL LBL 1: subprograms nested deeper than 19"));
   CHECK_THAT(e, Catch::Contains("CALL LBL 1 (line 3) > CALL LBL 1 (line 6)"));
-  CHECK_THAT(error_of("1 LBL 5\n2 FN 9: IF +0 EQU +0 GOTO LBL 5\n"), Catch::Contains("GOTO LBL 5: more than 1000000 jumps"));
+  CHECK_THAT(error_of("1 LBL 5\n2 FN 9: IF +0 EQU +0 GOTO LBL 5\n"),
+             Catch::Contains("GOTO LBL 5: more than 1000000 jumps"));
   CHECK_THAT(error_of("1 LBL 5\n2 LBL 5\n"), Catch::Contains("LBL 5 is defined twice (lines 2 and 3)"));
-  CHECK_THAT(error_of("1 FN 9: IF +1 EQU +1 GOTO LBL 8\n"), Catch::Contains("t.h:2: GOTO LBL 8: LBL 8 is not in the program"));
+  CHECK_THAT(error_of("1 FN 9: IF +1 EQU +1 GOTO LBL 8\n"),
+             Catch::Contains("t.h:2: GOTO LBL 8: LBL 8 is not in the program"));
   CHECK_THAT(error_of("1 L X+0 Y+0 Z+5 R0 FMAX\n2 Q1 = 1 / 0\n"), Catch::Contains("Q1 = 1 / 0"));
   CHECK_THAT(error_of("1 Q1 = (2 + 3\n"), Catch::Contains("a '(' without its ')'"));
   CHECK_THAT(error_of("1 L X+0 Y+0 Z+5 R0 FMAX\n2 L X+Q121 FMAX\n"), Catch::Contains("Q121 is not set"));
@@ -128,7 +130,9 @@ TEST_CASE("klartext PLANE: the angles of the plane in Q120 .. Q122, refusals by 
   CHECK(std::abs(std::remainder((*ms[1].rotary_rad)[1], 2 * M_PI)) < 1e-9);
   // the tip of line 4 is (-30, 0, 10) in the plane: in W Rx(30) (x, y, z)
   const double y = 0.0, a = 30 * M_PI / 180;
-  CHECK((ms[2].point.tip_mm - Vec3d(-30, y * std::cos(a) - 10 * std::sin(a), y * std::sin(a) + 10 * std::cos(a))).norm() < 1e-9);
+  CHECK(
+      (ms[2].point.tip_mm - Vec3d(-30, y * std::cos(a) - 10 * std::sin(a), y * std::sin(a) + 10 * std::cos(a))).norm() <
+      1e-9);
   CHECK((ms[2].point.axis - Vec3d(0, -std::sin(a), std::cos(a))).norm() < 1e-12);
   CHECK_THAT(error_of("1 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX\n2 PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY\n3 L X+5 F100\n"),
              Catch::Contains("L in a tilted plane (PLANE ...) with the rotary axes not at the plane's angles"));
@@ -141,8 +145,9 @@ TEST_CASE("klartext PLANE: the angles of the plane in Q120 .. Q122, refusals by 
   // TABLE ROT with the tool axis along C: the table takes SPC. R_w = Rz(c) and the tool frame R_wᵀ = Rz(-c)
   // must be Rz(30): C = -30. COORD ROT leaves C where it is (here 10) and rotates the coordinates.
   for (const char* rot : {"TABLE ROT", "COORD ROT"}) {
-    const auto turned = motions(std::string("1 L X+0 Y+0 Z+50 A+0 C+10 R0 FMAX\n2 PLANE SPATIAL SPA+0 SPB+0 SPC+30 STAY ") +
-                                rot + "\n3 L A+Q120 C+Q122 FMAX\n4 L X+10 Y+0 Z+5 FMAX\n");
+    const auto turned =
+        motions(std::string("1 L X+0 Y+0 Z+50 A+0 C+10 R0 FMAX\n2 PLANE SPATIAL SPA+0 SPB+0 SPC+30 STAY ") + rot +
+                "\n3 L A+Q120 C+Q122 FMAX\n4 L X+10 Y+0 Z+5 FMAX\n");
     REQUIRE(turned.size() == 3);
     CHECK((*turned[1].rotary_rad)[1] == Approx((std::string(rot) == "TABLE ROT" ? -30 : 10) * M_PI / 180));
     // either way X of the plane is Rz(30) e_x in W
@@ -150,7 +155,8 @@ TEST_CASE("klartext PLANE: the angles of the plane in Q120 .. Q122, refusals by 
   }
 }
 
-TEST_CASE("klartext in a tilted plane: CYCL DEF 200 drills along the plane's Z; a datum shift there holds every motion") {
+TEST_CASE(
+    "klartext in a tilted plane: CYCL DEF 200 drills along the plane's Z; a datum shift there holds every motion") {
   // PLANE SPATIAL SPA+0 SPB+0 SPC+90: the plane's X is W's Y; the hole at X+10 Y+0 of the plane is at
   // W (0, 10), its top at the plane's Z+1 = W Z+1 (Q203); Q206=Q7 takes the feed from Q7
   const auto ms = motions(
@@ -180,7 +186,8 @@ TEST_CASE("klartext in a tilted plane: CYCL DEF 200 drills along the plane's Z; 
       "2 PLANE SPATIAL SPA+0 SPB+0 SPC+0 STAY\n"
       "3 CYCL DEF 7.0 DATUM SHIFT\n"
       "4 CYCL DEF 7.1 X+5\n";
-  CHECK_THAT(error_of(shifted + "5 L X+1 FMAX\n"), Catch::Contains("a motion after CYCL DEF 7 changed the datum shift inside"));
+  CHECK_THAT(error_of(shifted + "5 L X+1 FMAX\n"),
+             Catch::Contains("a motion after CYCL DEF 7 changed the datum shift inside"));
   const auto after = motions(shifted + "5 PLANE RESET STAY\n6 L X+1 Y+0 Z+50 FMAX\n");
   REQUIRE(after.size() == 2);
   CHECK((after[1].point.tip_mm - Vec3d(6, 0, 50)).norm() < 1e-9);

@@ -79,7 +79,8 @@ std::vector<test::ExecPose> check_reposted(const std::string& text, const Case& 
   std::size_t next = 0;
   for (const test::KlartextEnd& e : want) {
     INFO("input line " << e.line << " tip " << e.tip_W.transpose());
-    while (next < got.size() && ((got[next].tip_W - e.tip_W).norm() > 1e-3 || (got[next].axis_W - e.axis_W).norm() > 2e-5))
+    while (next < got.size() &&
+           ((got[next].tip_W - e.tip_W).norm() > 1e-3 || (got[next].axis_W - e.axis_W).norm() > 2e-5))
       ++next;
     REQUIRE(next < got.size());
     CHECK((got[next].tip_W - e.tip_W).norm() < 1e-3);
@@ -107,8 +108,12 @@ std::string plane_program(const std::string& plane, const std::string& rotary_wo
   return "0 BEGIN PGM PLANE MM\n"
          "1 TOOL CALL 1 Z S5000\n"
          "2 L X+0 Y+0 Z+150 R0 FMAX M3\n"
-         "3 " + plane + "\n"
-         "4 L " + rotary_words + " R0 FMAX\n"
+         "3 " +
+         plane +
+         "\n"
+         "4 L " +
+         rotary_words +
+         " R0 FMAX\n"
          "5 L X+10 Y+5 Z+20 FMAX\n"
          "6 L Z+0 F500\n"
          "7 L X+40 F800\n"
@@ -123,15 +128,19 @@ std::string plane_program(const std::string& plane, const std::string& rotary_wo
 
 }  // namespace
 
-TEST_CASE("klartext PLANE SPATIAL ... STAY + L A+Q120 C+Q122 on the AC trunnion: the control's angles, the tip on the plane") {
+TEST_CASE(
+    "klartext PLANE SPATIAL ... STAY + L A+Q120 C+Q122 on the AC trunnion: the control's angles, the tip on the "
+    "plane") {
   const Case ac{"ac-trunnion.toml", setup_of(100.0, Vec3d(0, 0, 0)), ac_angles};
   for (const char* seq : {"SEQ+", "SEQ-"}) {
     INFO(seq);
-    const std::string text = plane_program(std::string("PLANE SPATIAL SPA+30 SPB+0 SPC+45 STAY ") + seq, "A+Q120 C+Q122");
+    const std::string text =
+        plane_program(std::string("PLANE SPATIAL SPA+30 SPB+0 SPC+45 STAY ") + seq, "A+Q120 C+Q122");
     check_reposted(text, ac);
     // the angles of the block after the PLANE, by the closed form: u = Rz(45) Rx(30) e_z
-    const test::M3 R = (Eigen::AngleAxisd(45 * kDeg, test::V3::UnitZ()) * Eigen::AngleAxisd(30 * kDeg, test::V3::UnitX()))
-                           .toRotationMatrix();
+    const test::M3 R =
+        (Eigen::AngleAxisd(45 * kDeg, test::V3::UnitZ()) * Eigen::AngleAxisd(30 * kDeg, test::V3::UnitX()))
+            .toRotationMatrix();
     const auto want = ac_angles(R, std::string(seq) == "SEQ+" ? 1 : -1);
     CHECK(std::abs(want.at('A')) == Approx(30.0));  // the tilt of the plane
     bool found = false;
@@ -143,7 +152,8 @@ TEST_CASE("klartext PLANE SPATIAL ... STAY + L A+Q120 C+Q122 on the AC trunnion:
 
 TEST_CASE("klartext PLANE SPATIAL on the head-table machine (B head, C table): Q121 and Q122 are the control's") {
   const Case bc{"head-table-bc.toml", setup_of(120.0, Vec3d(0, 0, -300)), bc_head_table_angles};
-  for (const char* plane : {"PLANE SPATIAL SPA+0 SPB+40 SPC+30 STAY SEQ+", "PLANE SPATIAL SPA-25 SPB+10 SPC+0 STAY SEQ-"}) {
+  for (const char* plane :
+       {"PLANE SPATIAL SPA+0 SPB+40 SPC+30 STAY SEQ+", "PLANE SPATIAL SPA-25 SPB+10 SPC+0 STAY SEQ-"}) {
     INFO(plane);
     check_reposted(plane_program(plane, "B+Q121 C+Q122"), bc);
   }

@@ -139,9 +139,9 @@ TEST_CASE("klartext: tool call, held start, FMAX per block, FAUTO, incremental w
   check_tip(ms[3], 15, 17, -2);
   CHECK(*ms[3].feed == 600);  // FAUTO: the TOOL CALL's F
   check_tip(ms[4], 0, 17, -2);
-  CHECK(ms[4].rapid);         // FMAX acts in its block only:
+  CHECK(ms[4].rapid);  // FMAX acts in its block only:
   check_tip(ms[5], 0, 0, -2);
-  CHECK_FALSE(ms[5].rapid);   // the next block cuts at the feed in force
+  CHECK_FALSE(ms[5].rapid);  // the next block cuts at the feed in force
   CHECK(ms[0].point.axis.isApprox(Vec3d::UnitZ()));
   REQUIRE(ms[0].rotary_rad);
   CHECK(ms[0].rotary_rad->norm() == 0.0);
@@ -165,7 +165,8 @@ TEST_CASE("klartext: tool call, held start, FMAX per block, FAUTO, incremental w
       if (!first_motion_at) first_motion_at = i;
       last_motion_at = i;
     }
-    if (auto* s = std::get_if<cl::Spindle>(&r.records[i]); s && s->direction == cl::Spindle::Direction::off) spindle_off_at = i;
+    if (auto* s = std::get_if<cl::Spindle>(&r.records[i]); s && s->direction == cl::Spindle::Direction::off)
+      spindle_off_at = i;
   }
   CHECK(tool_at < first_motion_at);
   CHECK(spindle_off_at > last_motion_at);
@@ -181,7 +182,8 @@ TEST_CASE("klartext: tool call, held start, FMAX per block, FAUTO, incremental w
 
 TEST_CASE("klartext: RL / RR / R0 are cutter compensation records") {
   const auto rs = read(program("1 TOOL CALL 1 Z S100\n2 L X+0 Y+0 Z+0 R0 FMAX\n3 L X+10 RL F100\n4 L Y+10\n"
-                               "5 L X+0 RR\n6 L X-5 R0\n")).records;
+                               "5 L X+0 RR\n6 L X-5 R0\n"))
+                      .records;
   const auto comp = only<cl::CutterComp>(rs);
   REQUIRE(comp.size() == 3);
   CHECK(comp[0].side == cl::CutterComp::Side::left);
@@ -191,15 +193,15 @@ TEST_CASE("klartext: RL / RR / R0 are cutter compensation records") {
 }
 
 TEST_CASE("klartext: M128 and FUNCTION TCPM programs give the tool tip in W; M129 machine axes again") {
-  const auto ms = motions(program(
-      "1 TOOL CALL 1 Z S1000\n"
-      "2 L X+0 Y+0 Z+100 A+0 C+0 R0 FMAX\n"
-      "3 L X+10 Y+20 Z+30 A+30 C+90 F500 M128\n"
-      "4 M129\n"
-      "5 L X+10 Y+20 Z+30 F500\n"
-      "6 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
-      "7 L X+1 Y+2 Z+3 A+90 C+0 F100\n"
-      "8 FUNCTION RESET TCPM\n"));
+  const auto ms =
+      motions(program("1 TOOL CALL 1 Z S1000\n"
+                      "2 L X+0 Y+0 Z+100 A+0 C+0 R0 FMAX\n"
+                      "3 L X+10 Y+20 Z+30 A+30 C+90 F500 M128\n"
+                      "4 M129\n"
+                      "5 L X+10 Y+20 Z+30 F500\n"
+                      "6 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+                      "7 L X+1 Y+2 Z+3 A+90 C+0 F100\n"
+                      "8 FUNCTION RESET TCPM\n"));
   REQUIRE(ms.size() == 4);
   check_tip(ms[1], 10, 20, 30);
   CHECK((ms[1].point.axis - ac_axis(30, 90)).norm() < 1e-12);
@@ -215,8 +217,9 @@ TEST_CASE("klartext: M128 and FUNCTION TCPM programs give the tool tip in W; M12
 }
 
 TEST_CASE("klartext: M140 MB MAX retracts machine Z to the top of its travel; MB d by d") {
-  const auto ms = motions(program("1 TOOL CALL 1 Z S100\n2 L X+10 Y+0 Z+5 R0 FMAX\n3 M140 MB+50\n4 L Z+5 FMAX\n"
-                                  "5 L Z+5 FMAX M140 MB MAX\n"));
+  const auto ms =
+      motions(program("1 TOOL CALL 1 Z S100\n2 L X+10 Y+0 Z+5 R0 FMAX\n3 M140 MB+50\n4 L Z+5 FMAX\n"
+                      "5 L Z+5 FMAX M140 MB MAX\n"));
   REQUIRE(ms.size() == 5);
   check_tip(ms[1], 10, 0, 55);
   CHECK(ms[1].rapid);
@@ -225,7 +228,8 @@ TEST_CASE("klartext: M140 MB MAX retracts machine Z to the top of its travel; MB
 }
 
 TEST_CASE("klartext: M126 turns a continuous rotary axis the short way") {
-  const auto ms = motions(program("1 L X+0 Y+0 Z+50 A+0 C+350 R0 FMAX\n2 M126\n3 L C+10 FMAX\n4 M127\n5 L C+350 FMAX\n"));
+  const auto ms =
+      motions(program("1 L X+0 Y+0 Z+50 A+0 C+350 R0 FMAX\n2 M126\n3 L C+10 FMAX\n4 M127\n5 L C+350 FMAX\n"));
   REQUIRE(ms.size() == 3);
   CHECK((*ms[1].rotary_rad)[1] == Approx(deg_to_rad(370)));
   CHECK((*ms[2].rotary_rad)[1] == Approx(deg_to_rad(350)));
@@ -255,13 +259,16 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 CALL PGM SUB.H\n", "a program call is not read");
   refused("3 L X+Q1\n", "X+Q1: Q1 is not set in this program");
   refused("3 L X+10 FQ1\n", "Q1 is not set");
-  refused("3 L Z+10 R0 FMAX M91\n", "M91 Z10: machine coordinates count from the axis's reference point, which "
-                                   "the machine file ac-trunnion does not give");
-  refused("3 L Z+10 R0 FMAX M92\n", "M92 Z10: machine coordinates count from the axis's second reference point "
-                                   "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
-                                   "does not give; add [axes.Z] reference2");
+  refused("3 L Z+10 R0 FMAX M91\n",
+          "M91 Z10: machine coordinates count from the axis's reference point, which "
+          "the machine file ac-trunnion does not give");
+  refused("3 L Z+10 R0 FMAX M92\n",
+          "M92 Z10: machine coordinates count from the axis's second reference point "
+          "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
+          "does not give; add [axes.Z] reference2");
   refused("3 L X+10 FMAX M99\n", "a cycle call without CYCL DEF 200 before it");
-  refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "'CYCL DEF 203 UNIVERSAL DRILLING': this cycle");
+  refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n",
+          "'CYCL DEF 203 UNIVERSAL DRILLING': this cycle");
   refused("3 M89\n", "M89: a modal cycle call");
   refused("3 M114\n", "M114");
   refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");
@@ -288,24 +295,24 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
 }
 
 TEST_CASE("klartext: CYCL DEF 7 shifts the datum (absolute from the preset, I... from the last shift); 32 is noted") {
-  const Read r = read(program(
-      "1 TOOL CALL 1 Z S100\n"
-      "2 CYCL DEF 7.0 DATUM SHIFT\n"
-      "3 CYCL DEF 7.1 X+10\n"
-      "4 CYCL DEF 7.2 Y-5\n"
-      "5 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
-      "6 CYCL DEF 7.1 IX+2\n"
-      "7 L X+1 F100\n"
-      "8 L IY+1\n"
-      "9 CC X+0 Y+1\n"            // the pole at (12, -4) in the preset's coordinates
-      "10 C X+0 Y+2 DR+\n"        // a quarter circle from (13, -4) to (12, -3)
-      "11 CYCL DEF 7.0 DATUM SHIFT\n"
-      "12 CYCL DEF 7.1 X+0\n"
-      "13 CYCL DEF 7.2 Y+0\n"
-      "14 L X+1 Y+1\n"
-      "15 CYCL DEF 32.0 TOLERANCE\n"
-      "16 CYCL DEF 32.1 T0.02\n"
-      "17 PLANE RESET STAY\n"));
+  const Read r =
+      read(program("1 TOOL CALL 1 Z S100\n"
+                   "2 CYCL DEF 7.0 DATUM SHIFT\n"
+                   "3 CYCL DEF 7.1 X+10\n"
+                   "4 CYCL DEF 7.2 Y-5\n"
+                   "5 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                   "6 CYCL DEF 7.1 IX+2\n"
+                   "7 L X+1 F100\n"
+                   "8 L IY+1\n"
+                   "9 CC X+0 Y+1\n"      // the pole at (12, -4) in the preset's coordinates
+                   "10 C X+0 Y+2 DR+\n"  // a quarter circle from (13, -4) to (12, -3)
+                   "11 CYCL DEF 7.0 DATUM SHIFT\n"
+                   "12 CYCL DEF 7.1 X+0\n"
+                   "13 CYCL DEF 7.2 Y+0\n"
+                   "14 L X+1 Y+1\n"
+                   "15 CYCL DEF 32.0 TOLERANCE\n"
+                   "16 CYCL DEF 32.1 T0.02\n"
+                   "17 PLANE RESET STAY\n"));
   const auto ms = only<cl::Motion>(r.records);
   REQUIRE(ms.size() == 5);
   check_tip(ms[0], 10, -5, 10);
@@ -341,7 +348,7 @@ TEST_CASE("klartext: CYCL DEF 200 drilled at M99 and CYCL CALL, the hole's top a
   REQUIRE(ms.size() == 6);
   check_tip(ms[1], 30, 20, 50);
   CHECK(ms[1].rapid);
-  check_tip(ms[2], 30, 20, 1);   // the hole: its top, the surface Q203
+  check_tip(ms[2], 30, 20, 1);  // the hole: its top, the surface Q203
   CHECK_FALSE(ms[2].rapid);
   CHECK(ms[2].where.line == 14);
   check_tip(ms[3], 40, 20, 21);  // the TNC left the tool at the 2nd set-up clearance, 20 above the surface
@@ -398,12 +405,13 @@ TEST_CASE("klartext: M91 and M92 count from the machine file's reference and ref
   // tests/data/machines/ac-trunnion-references.toml: reference X -400 Y 450 Z 550, reference2 X 300
   // Y -200 Z 400; at A = C = 0 with the origin of W at M's and no tool the tip is the machine's X Y Z
   const Machine m = load_machine(test::data("machines/ac-trunnion-references.toml"));
-  std::istringstream in(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
-                                "2 L Z+5 R0 FMAX M92\n"
-                                "3 L X+0 Y+0 R0 FMAX M92\n"
-                                "4 L Z-100 R0 FMAX M91\n"
-                                "5 L X+1 Y+2 Z+3 FMAX\n"
-                                "6 M30\n"));
+  std::istringstream in(
+      program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+              "2 L Z+5 R0 FMAX M92\n"
+              "3 L X+0 Y+0 R0 FMAX M92\n"
+              "4 L Z-100 R0 FMAX M91\n"
+              "5 L X+1 Y+2 Z+3 FMAX\n"
+              "6 M30\n"));
   klartext::KlartextReader r(in, "t.h", m, Setup{}, {});
   const auto ms = only<cl::Motion>(test::all_records(r));
   REQUIRE(ms.size() == 5);
@@ -418,7 +426,8 @@ TEST_CASE("klartext: M91 and M92 count from the machine file's reference and ref
 TEST_CASE("klartext: TOOL CALL \"name\" changes to the tool of that name, TOOL CALL n to tool n") {
   const auto tools = only<cl::ToolChange>(
       read(program("1 TOOL CALL \"FRA-P15251 D15.2\" Z S100 DL+0 DR+0\n2 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
-                   "3 TOOL CALL 4 Z S200\n4 M30\n")).records);
+                   "3 TOOL CALL 4 Z S200\n4 M30\n"))
+          .records);
   REQUIRE(tools.size() == 2);
   CHECK(tools[0].name == "FRA-P15251 D15.2");  // as written: case and blanks kept
   CHECK(tools[0].number == 0);
@@ -428,12 +437,13 @@ TEST_CASE("klartext: TOOL CALL \"name\" changes to the tool of that name, TOOL C
 }
 
 TEST_CASE("klartext: CYCL DEF 9 dwells where it is defined, its time at the end of 9.1 in any language") {
-  const Read r = read(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
-                              "2 CYCL DEF 9.0 DWELL TIME\n"
-                              "3 CYCL DEF 9.1 DWELL 1.5\n"
-                              "4 CYCL DEF9 .0 VARAKOZASI IDO\n"  // a Hungarian TNC, as hyperMILL writes it
-                              "5 CYCL DEF9.1 V.IDO2\n"
-                              "6 M30\n"));
+  const Read r =
+      read(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n"
+                   "2 CYCL DEF 9.0 DWELL TIME\n"
+                   "3 CYCL DEF 9.1 DWELL 1.5\n"
+                   "4 CYCL DEF9 .0 VARAKOZASI IDO\n"  // a Hungarian TNC, as hyperMILL writes it
+                   "5 CYCL DEF9.1 V.IDO2\n"
+                   "6 M30\n"));
   const auto dwells = only<cl::Dwell>(r.records);
   REQUIRE(dwells.size() == 2);
   CHECK(dwells[0].seconds == 1.5);
@@ -462,7 +472,7 @@ TEST_CASE("klartext: a jump on a parameter the program does not set ends it wher
   const auto ends = only<cl::End>(r.records);
   REQUIRE(ends.size() == 1);
   CHECK(ends[0].where.line == 6);  // the first jump on Q1900
-  CHECK(any_contains(r.notices, "t.h:6:") );
+  CHECK(any_contains(r.notices, "t.h:6:"));
   CHECK(any_contains(r.notices, "nothing moves whichever way it jumps"));
   // a motion after it, or a jump back before it: refused as before
   CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX\n" + tail + "14 L X+5 FMAX\n")),

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Real Klartext programs (tests/data/real/heidenhain_aptpp_*.h, GPL-3.0, see SOURCES.md: written by
 // the AptPostProcessor project's own post from SOLIDWORKS CAM APT, and by hand for its TNC 310).
-// Each is read by the Klartext reader (machines/head-table-bc.toml) and must post, or be refused at the line whose statement
-// the reader does not take, with a message naming it. The expected line is found here in the file
-// itself (the first line holding that statement), not taken from the reader's output.
+// Each is read by the Klartext reader (machines/head-table-bc.toml) and must post, or be refused at the line whose
+// statement the reader does not take, with a message naming it. The expected line is found here in the file itself (the
+// first line holding that statement), not taken from the reader's output.
 #include <catch2/catch.hpp>
 
 #include <fstream>

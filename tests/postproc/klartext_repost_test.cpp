@@ -102,14 +102,15 @@ TEST_CASE("klartext re-post: a three-axis program on the VMCL600 keeps its machi
       "10 L X+0 Y+0 FMAX M5\n"
       "11 M30\n"
       "12 END PGM REPOST MM\n";
-  const std::string nc = post_klartext(text, load_machine(test::source("machines/vmcl600.toml")), test::vmcl600_setup());
+  const std::string nc =
+      post_klartext(text, load_machine(test::source("machines/vmcl600.toml")), test::vmcl600_setup());
   INFO(nc);
   const Written w = positions_of(nc);
   const std::vector<Position> expected = {
       {-20, -10, 20, 0, 0},  // block 2, held: X Y from block 3
-      {-20, -10, -5, 0, 0}, {40, -10, -5, 0, 0}, {40, 20, -5, 0, 0},
-      {60, 40, -5, 0, 0},    // the quarter circle about (40, 40)
-      {60, 40, 20, 0, 0},    {0, 0, 20, 0, 0},
+      {-20, -10, -5, 0, 0}, {40, -10, -5, 0, 0},
+      {40, 20, -5, 0, 0},   {60, 40, -5, 0, 0},  // the quarter circle about (40, 40)
+      {60, 40, 20, 0, 0},   {0, 0, 20, 0, 0},
   };
   const auto got = deduplicated(w.positions);
   REQUIRE(got.size() == expected.size());
@@ -146,7 +147,7 @@ TEST_CASE("klartext re-post: a five-axis machine-axis program on the AC trunnion
   const std::string nc = post_klartext(text, test::ac_trunnion(), setup);
   INFO(nc);
   const auto got = deduplicated(positions_of(nc).positions);
-  const std::vector<Position> ends = {{0, 0, 100, 0, 0},   {10, 20, 50, 0, 0}, {10, 20, 30, 0, 0},
+  const std::vector<Position> ends = {{0, 0, 100, 0, 0},    {10, 20, 50, 0, 0}, {10, 20, 30, 0, 0},
                                       {20, 20, 30, 10, 15}, {20, 0, 30, 5, 15}, {20, 0, 100, 5, 15}};
   // every block end, in order (the tolerance may add points between them)
   std::size_t at = 0;
@@ -173,7 +174,8 @@ TEST_CASE("klartext re-post: CYCL DEF 200 becomes G83 with the planes of its Q p
       "4 L X+30 Y+20 R0 FMAX M99\n"
       "5 L Z+50 FMAX M5\n"
       "6 END PGM DRILL MM\n";
-  const std::string nc = post_klartext(text, load_machine(test::source("machines/vmcl600.toml")), test::vmcl600_setup());
+  const std::string nc =
+      post_klartext(text, load_machine(test::source("machines/vmcl600.toml")), test::vmcl600_setup());
   INFO(nc);
   // the surface Z1: the R plane 2 above it (R3), the bottom 15 below it (Z-14), pecks of 5
   const Written w = positions_of(nc);
@@ -208,6 +210,7 @@ TEST_CASE("klartext input: detected by its BEGIN PGM, or named with --input-kind
     open_cl_reader(in, "d.h", InputKind::machine, cl::ReaderOptions{}, test::ac_trunnion(), Setup{});
     FAIL("a Klartext program read as G-code");
   } catch (const InputError& e) {
-    CHECK_THAT(e.what(), Catch::Contains("d.h:1: a Heidenhain Klartext program") && Catch::Contains("--input-kind klartext"));
+    CHECK_THAT(e.what(),
+               Catch::Contains("d.h:1: a Heidenhain Klartext program") && Catch::Contains("--input-kind klartext"));
   }
 }

@@ -79,11 +79,13 @@ TEST_CASE("G2/G3 from NX CIRCLE records: NX's own post's directions") {
   const std::string theirs = test::read_text_file(test::data("real/nx_PostProcessed_SimpleMillPlane.txt"));
   CHECK(arc_directions(ours) == arc_directions(theirs));
   CHECK(arc_directions(ours) == std::vector<int>{3, 3});
-  CHECK_THAT(ours, Catch::Contains("G3 X-265.0000 Y164.9997 Z100.0000 I7.5000 J0.0000"));  // NX: G03 X-10.4331 Y6.4961 I.2953
+  CHECK_THAT(ours,
+             Catch::Contains("G3 X-265.0000 Y164.9997 Z100.0000 I7.5000 J0.0000"));  // NX: G03 X-10.4331 Y6.4961 I.2953
 
   // Zig-zag: 35 CIRCLE records; NX writes the 0.85-degree one (chord 0.036 mm) as a line, we as an arc
   std::vector<int> zz = arc_directions(post("nx_APT_Zig_Zag_Smoothed.txt", m, true));
-  const std::vector<int> nx = arc_directions(test::read_text_file(test::data("real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
+  const std::vector<int> nx =
+      arc_directions(test::read_text_file(test::data("real/nx_PostProcessed_Zig_Zag_Smoothed.txt")));
   REQUIRE(zz.size() == 35);
   REQUIRE(nx.size() == 34);
   zz.erase(zz.begin() + 2);  // the tiny arc, third in the file
@@ -102,7 +104,8 @@ TEST_CASE("G2/G3 output follows the same path as the expanded points (NX and Cre
     std::size_t n_native = 0, n_points = 0;
     const double l_native = path_length_mm(native, m, &n_native);
     const double l_points = path_length_mm(points, m, &n_points);
-    std::printf("%-28s %zu arcs as G2/G3: path %.3f mm vs points %.3f mm\n", file, with_arcs.arcs_out, l_native, l_points);
+    std::printf("%-28s %zu arcs as G2/G3: path %.3f mm vs points %.3f mm\n", file, with_arcs.arcs_out, l_native,
+                l_points);
     CHECK(with_arcs.arcs_out > 0);
     CHECK(std::abs(l_native - l_points) < 1e-4 * l_points);  // a wrong direction goes the other way round
   }

@@ -61,14 +61,13 @@ TEST_CASE("nc_comment_text: the rules of each dialect") {
     CHECK(s.find(';') == std::string::npos);
     if (d.comments == Dialect::Comments::parentheses) CHECK(s.find_first_of("()") == std::string::npos);
     // one '?' per non-ASCII character: µ, the dash, the C1 control (DEL becomes a space)
-    CHECK(s == (d.comments == Dialect::Comments::parentheses
-                    ? "part] G0 Z-500 [ G0 Z-500  M30     x?m ? ?  end"
-                    : "part) G0 Z-500 ( G0 Z-500  M30     x?m ? ?  end"));
+    CHECK(s == (d.comments == Dialect::Comments::parentheses ? "part] G0 Z-500 [ G0 Z-500  M30     x?m ? ?  end"
+                                                             : "part) G0 Z-500 ( G0 Z-500  M30     x?m ? ?  end"));
     const std::string long_text = "from /a/very/long/folder/" + std::string(300, 'f') + "/part.cls";
     const std::string cut = nc_comment_text(long_text, d);
     CHECK(cut.size() == d.comment_rules.max_chars);
-    CHECK_THAT(cut, Catch::StartsWith("from /a/very/long/folder/") && Catch::EndsWith("/part.cls") &&
-                        Catch::Contains("..."));
+    CHECK_THAT(
+        cut, Catch::StartsWith("from /a/very/long/folder/") && Catch::EndsWith("/part.cls") && Catch::Contains("..."));
     CHECK(nc_program_name("my part\n%1", d) == "MYPART1");
     CHECK(nc_program_name("\xc2\xb5\n", d) == "NCPOST");
   }
@@ -98,10 +97,13 @@ TEST_CASE("NcWriter: hostile comments and program names stay comments in every d
     const auto lines = lines_of(text);
     int comments = 0, percent = 0;
     for (const auto& l : lines) {
-      if (l == "%") ++percent;
-      else CHECK(l.find('%') == std::string::npos);
+      if (l == "%")
+        ++percent;
+      else
+        CHECK(l.find('%') == std::string::npos);
       if (is_comment_line(l, d)) ++comments;
-      const bool in_comment = l.find("G0 Z-500") == std::string::npos || is_comment_line(l, d) || l.rfind("O0001 (", 0) == 0;
+      const bool in_comment =
+          l.find("G0 Z-500") == std::string::npos || is_comment_line(l, d) || l.rfind("O0001 (", 0) == 0;
       CHECK(in_comment);
     }
     CHECK(comments == 3);  // the two header comments and the comment: no line of them became a block
@@ -119,15 +121,16 @@ TEST_CASE("post: a file name with a newline and a hostile PARTNO never become bl
   const std::string cl = (dir / "part\nG0 Z-500\n%.cls").string();
   {
     std::ofstream out(cl);
-    out << "PARTNO/ab) G0 Z-500 (% \xc3\xbc\nPPRINT/x) M30 (\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/10,0,10,0,0,1\nFINI\n";
+    out << "PARTNO/ab) G0 Z-500 (% \xc3\xbc\nPPRINT/x) M30 "
+           "(\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/10,0,10,0,0,1\nFINI\n";
   }
   for (const char* name : kDialects) {
     INFO(name);
     const Dialect d = dialect_named(name);
     const std::string nc = (dir / "out.nc").string();
     const std::string cmd = std::string(NCPOST_BINARY) + " post --machine '" +
-                            test::source("machines/ac-trunnion.toml") + "' --dialect " + name + " -o '" + nc +
-                            "' '" + cl + "' 2>/dev/null";
+                            test::source("machines/ac-trunnion.toml") + "' --dialect " + name + " -o '" + nc + "' '" +
+                            cl + "' 2>/dev/null";
     REQUIRE(WEXITSTATUS(std::system(cmd.c_str())) == 0);
     const std::string text = slurp(nc);
     for (const char c : text) CHECK(bool((c >= 0x20 && c < 0x7F) || c == '\n'));

@@ -44,7 +44,8 @@ Posted post_cl(const std::string& cl, const std::string& args, const std::string
 /// "GOTO/x,y,z,i,j,k" of a CL point.
 std::string fmt_point(const V3& tip, const V3& axis) {
   const V3 u = axis.normalized();
-  return fmt::format("GOTO/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", tip.x(), tip.y(), tip.z(), u.x(), u.y(), u.z());
+  return fmt::format("GOTO/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", tip.x(), tip.y(), tip.z(), u.x(), u.y(),
+                     u.z());
 }
 
 /// The tilted hole of the issue: tool axis 20 deg from Z in XZ, top at (10, 0, 0) of W, R plane
@@ -81,8 +82,9 @@ std::pair<double, int> worst_rapid_off_axis(const Executor& ex, const V3& top, c
 }  // namespace
 
 TEST_CASE("a drill leaves and enters a tilted hole along its axis (RTCP, AC table)", "[post][retract]") {
-  const Posted p = post_cl(kTiltedHole, "--machine " + source("machines/ac-trunnion.toml") +
-                                            " --workpiece-origin 0,0,50 --rtcp", "hole_rtcp");
+  const Posted p =
+      post_cl(kTiltedHole, "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50 --rtcp",
+              "hole_rtcp");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const Executor ex(source("machines/ac-trunnion.toml"), ExecJob{V3(0, 0, 50), 0.0}, p.program);
@@ -91,16 +93,19 @@ TEST_CASE("a drill leaves and enters a tilted hole along its axis (RTCP, AC tabl
   // the feed reaches the bottom 12 mm down the axis
   bool bottom_reached = false;
   for (const ExecBlock& b : ex.blocks)
-    if (b.kind == ExecBlock::Kind::linear && (ex.at(b, 1.0).tip_W - (top - 12.0 * axis)).norm() < 1e-3) bottom_reached = true;
+    if (b.kind == ExecBlock::Kind::linear && (ex.at(b, 1.0).tip_W - (top - 12.0 * axis)).norm() < 1e-3)
+      bottom_reached = true;
   CHECK(bottom_reached);
   const auto [off, seen] = worst_rapid_off_axis(ex, top, axis, 12.0, 3.0);
-  CHECK(seen >= 1);        // the retract from the bottom (the approach ends at the R plane)
-  CHECK(off < 2e-3);       // 4.8 mm sideways before the fix
+  CHECK(seen >= 1);   // the retract from the bottom (the approach ends at the R plane)
+  CHECK(off < 2e-3);  // 4.8 mm sideways before the fix
 }
 
 TEST_CASE("a drill leaves a tilted hole along its axis on a head machine (machine axes)", "[post][retract]") {
-  const Posted p = post_cl(kTiltedHole, "--machine " + source("machines/gantry-bc-head.toml") +
-                                            " --workpiece-origin 0,0,0 --tool-length 100", "hole_head");
+  const Posted p =
+      post_cl(kTiltedHole,
+              "--machine " + source("machines/gantry-bc-head.toml") + " --workpiece-origin 0,0,0 --tool-length 100",
+              "hole_head");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const Executor ex(source("machines/gantry-bc-head.toml"), ExecJob{V3::Zero(), 100.0}, p.program);
@@ -119,8 +124,9 @@ TEST_CASE("a rapid retract along a tilted tool axis stays on the axis line (head
                          fmt_point(50 * V3(s, 0, c), V3(s, 0, c)) + "FINI\n";
   for (const bool rtcp : {false, true}) {
     // (W 300 mm below the tip at home: the positioning from home comes from far above the part)
-    const Posted p = post_cl(cl, "--machine " + source("machines/gantry-bc-head.toml") + " --tool-length 100" +
-                                     " --workpiece-origin 0,0,-300" + (rtcp ? " --rtcp" : "") + " --tolerance none",
+    const Posted p = post_cl(cl,
+                             "--machine " + source("machines/gantry-bc-head.toml") + " --tool-length 100" +
+                                 " --workpiece-origin 0,0,-300" + (rtcp ? " --rtcp" : "") + " --tolerance none",
                              rtcp ? "head_rtcp" : "head_axes");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
@@ -136,8 +142,8 @@ TEST_CASE("inverse time: a G93 block runs for its tip path length over the feed"
   // 30 deg, C stays; by the rule the block takes (executed tip path) / 500 min, about 10/500
   const double a0 = 10 * M_PI / 180, a1 = 40 * M_PI / 180;
   const V3 u0(std::sin(a0), 0, std::cos(a0)), u1(std::sin(a1), 0, std::cos(a1));
-  const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), u0) +
-                         "FEDRAT/MMPM,500\n" + fmt_point(V3(0, 0, 0), u0) + fmt_point(V3(10, 0, 0), u1) + "FINI\n";
+  const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), u0) + "FEDRAT/MMPM,500\n" +
+                         fmt_point(V3(0, 0, 0), u0) + fmt_point(V3(10, 0, 0), u1) + "FINI\n";
   const Posted p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93");
   INFO(p.log);
   INFO(p.program);
@@ -148,7 +154,7 @@ TEST_CASE("inverse time: a G93 block runs for its tip path length over the feed"
     if (b.kind == ExecBlock::Kind::rapid || !b.inverse_time) continue;
     ++g93_blocks;
     const double path_mm = ex.tip_path_mm(b);
-    CHECK(path_mm == Approx(10.0).epsilon(0.05));      // about the 10 mm of the CL (the tip bows a little)
+    CHECK(path_mm == Approx(10.0).epsilon(0.05));            // about the 10 mm of the CL (the tip bows a little)
     CHECK(b.feed == Approx(500.0 / path_mm).epsilon(2e-5));  // 1/min; F16.6667 (30 deg / 500) before
   }
   CHECK(g93_blocks == 1);
@@ -159,8 +165,8 @@ TEST_CASE("inverse time: a pure reorientation runs its rotary travel at the feed
   const V3 u0(0, 0, 1), u1(std::sin(a1), 0, std::cos(a1));
   // (start tilted a little so that C is determined; the tip stands still while the tool turns)
   const V3 us(std::sin(0.1), 0, std::cos(0.1));
-  const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), us) +
-                         "FEDRAT/MMPM,400\n" + fmt_point(V3(0, 0, 0), us) + fmt_point(V3(0, 0, 0), u1) + "FINI\n";
+  const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), us) + "FEDRAT/MMPM,400\n" +
+                         fmt_point(V3(0, 0, 0), us) + fmt_point(V3(0, 0, 0), u1) + "FINI\n";
   (void)u0;
   const Posted p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93_turn");
   INFO(p.log);
@@ -211,11 +217,13 @@ TEST_CASE("LOADTL lengths: used where they agree with the solved length, refused
     CHECK(p.program.find("T2 length 100.0000 mm from the CL data: the axes are solved for it") != std::string::npos);
   }
   SECTION("a table machine: the control's register applies the length, said in the program") {
-    const Posted p = post_cl(two_tools(100, 150), "--machine " + source("machines/ac-trunnion.toml") +
-                                                      " --workpiece-origin 0,0,50", "table_lengths");
+    const Posted p =
+        post_cl(two_tools(100, 150), "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50",
+                "table_lengths");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
-    CHECK(p.program.find("T2 length 150.0000 mm from the CL data: the control's length register applies it") != std::string::npos);
+    CHECK(p.program.find("T2 length 150.0000 mm from the CL data: the control's length register applies it") !=
+          std::string::npos);
   }
 }
 
@@ -226,8 +234,8 @@ TEST_CASE("small tilts away from a vertical tool axis are posted, the tip held o
     const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(20, 0, 30), V3(0, 0, 1)) +
                            "FEDRAT/MMPM,500\n" + fmt_point(V3(20, 0, 0), V3(0, 0, 1)) + fmt_point(V3(20, 0, 0), u) +
                            "FINI\n";
-    const Posted p = post_cl(cl, "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50",
-                             "small_tilt");
+    const Posted p =
+        post_cl(cl, "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50", "small_tilt");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
     const Executor ex(source("machines/ac-trunnion.toml"), ExecJob{V3(0, 0, 50), 0.0}, p.program);
@@ -244,8 +252,9 @@ TEST_CASE("small tilts away from a vertical tool axis are posted, the tip held o
 }
 
 TEST_CASE("a CUTCOM radius register that the dialect cannot write is refused, not dropped", "[post][cutcom]") {
-  const std::string cl = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,10\nFEDRAT/MMPM,300\nGOTO/0,0,-1\n"
-                         "CUTCOM/LEFT,14\nGOTO/10,0,-1\nGOTO/10,10,-1\nCUTCOM/OFF\nFINI\n";
+  const std::string cl =
+      "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,10\nFEDRAT/MMPM,300\nGOTO/0,0,-1\n"
+      "CUTCOM/LEFT,14\nGOTO/10,0,-1\nGOTO/10,10,-1\nCUTCOM/OFF\nFINI\n";
   const std::string machine = "--machine " + source("machines/vmcl600.toml");
   SECTION("sinumerik: G41 takes the edge of the tool call (D1): register 14 would be lost") {
     const Posted p = post_cl(cl, machine + " --dialect sinumerik", "cutcom_sinumerik");
@@ -261,15 +270,17 @@ TEST_CASE("a CUTCOM radius register that the dialect cannot write is refused, no
   }
 }
 
-TEST_CASE("a G-code move that ends at the singular pose with another free angle posts: it arrives, then turns", "[post][singular]") {
+TEST_CASE("a G-code move that ends at the singular pose with another free angle posts: it arrives, then turns",
+          "[post][singular]") {
   // from A10 C15 to A0 C0: the tool axis reaches +Z on the great circle of azimuth C15, where C is
   // free; the source programs C0 there, so C turns in place at the end (was: exit 3, 'error at t = 1')
-  const std::string source_nc = "%\nO0001\nG90 G21 G94 G17\nT1 M6\nG43 H1\nG0 X10 Y0 Z60 A10 C15\nG1 Z50 F500\n"
-                                "Y5 A0 C0\nM30\n%\n";
+  const std::string source_nc =
+      "%\nO0001\nG90 G21 G94 G17\nT1 M6\nG43 H1\nG0 X10 Y0 Z60 A10 C15\nG1 Z50 F500\n"
+      "Y5 A0 C0\nM30\n%\n";
   const std::string dir = make_temp_dir("singular_end");
   const std::string in = write_text_file(dir + "/s.nc", source_nc), out = dir + "/o.nc", log = dir + "/o.log";
-  const int rc = run_ncpost("post --machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50 -o " +
-                                out + " " + in, log);
+  const int rc = run_ncpost(
+      "post --machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50 -o " + out + " " + in, log);
   INFO(read_text_file(log));
   REQUIRE(rc == 0);
   const ExecJob job{V3(0, 0, 50), 0.0};

@@ -222,8 +222,9 @@ TEST_CASE("plan --dialect: the program in the dialect, the plan rounded to its d
     fanuc.replace(at + key.size() - 1, 1, "2");
   }
   test::write_text_file(d + "two.toml", fanuc);
-  REQUIRE(test::run_ncpost("plan " + machine + " sphere --step 90 --levels 30 --dialect " + d + "two.toml -o " + d + "f",
-                           d + "log") == 0);
+  REQUIRE(
+      test::run_ncpost("plan " + machine + " sphere --step 90 --levels 30 --dialect " + d + "two.toml -o " + d + "f",
+                       d + "log") == 0);
   std::istringstream csv(test::read_text_file(d + "f.csv"));
   std::string line;
   int numbers = 0, beyond = 0;  // numbers of the data rows; with a third decimal that is not 0

@@ -44,9 +44,8 @@ TEST_CASE("play take-up: a move within one word step of where the axis stands sh
   nonlinear::CompensationOptions options;
   options.tolerance_mm = 0.002;
   std::string failure;
-  const std::vector<SolvedPoint> points =
-      subdivide_with_play(m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, WordSteps{},
-                          failure);
+  const std::vector<SolvedPoint> points = subdivide_with_play(
+      m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, WordSteps{}, failure);
   INFO(failure);
   REQUIRE(!points.empty());
   // Y is never taken toward the falling edge of its play (3 µm below): it rises through the block
@@ -62,8 +61,8 @@ TEST_CASE("play take-up: a move within one word step of where the axis stands sh
   // to its falling edge (what the rounded program did before)
   WordSteps fine;
   fine.linear_mm = 1e-6;
-  const std::vector<SolvedPoint> fine_points =
-      subdivide_with_play(m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, fine, failure);
+  const std::vector<SolvedPoint> fine_points = subdivide_with_play(
+      m, setup, actual, data, SolvedPoint{a, q0}, SolvedPoint{b, *end.position}, options, fine, failure);
   REQUIRE(!fine_points.empty());
   CHECK(fine_points.front().q.linear_mm.y() < q0.linear_mm.y() - 2e-3);
 }

@@ -83,7 +83,8 @@ TEST_CASE("peck cycles: G83 Q, G73 Q; first and next peck as Haas I J K, the sma
   CHECK_THAT(post_apt(deep2, "fanuc"), Catch::Contains("G98 G83 X10.0000 Y20.0000 Z-20.0000 R3.0000 Q4.0000 F100.0\n"));
   CHECK_THAT(post_apt(kHead + "CYCLE/DRILL,BRKCHP,FEDTO,20.,STEP,4.,MMPM,100.,RAPTO,3.\n" + kHoles, "fanuc"),
              Catch::Contains("G99 G73 X10.0000 Y20.0000 Z-20.0000 R3.0000 Q4.0000 F100.0\n"));
-  const std::string first = kHead + "CYCLE/DEEP,FEDTO,20.,1STPECK,5.,SUBPECK,2.,MMPM,100.,RAPTO,3.,RTRCTO,25.\n" + kHoles;
+  const std::string first =
+      kHead + "CYCLE/DEEP,FEDTO,20.,1STPECK,5.,SUBPECK,2.,MMPM,100.,RAPTO,3.,RTRCTO,25.\n" + kHoles;
   bool lexed = true;  // digit-first minor words (1STPECK) need the lexer of issue 13 item 4
   try {
     cl::parse_apt_statement("CYCLE/DEEP,1STPECK,5.", "t.apt", {1, 1});
@@ -106,9 +107,11 @@ TEST_CASE("no native cycle: explicit moves (Sinumerik pecks, LinuxCNC tap with t
   const std::string s = post_apt(deep, "sinumerik");
   CHECK_THAT(s, !Catch::Contains("G83"));
   // R plane 3, bottom -5: pecks to -1 (4 mm), out to R, back to -0.5, on to the bottom, out
-  CHECK_THAT(s, Catch::Contains("Z3.0000\nG94 G1 Z-1.0000 F100.0\nG0 Z3.0000\nZ-0.5000\nG1 Z-5.0000\nG0 Z25.0000\nX30.0000\n"));
+  CHECK_THAT(s, Catch::Contains(
+                    "Z3.0000\nG94 G1 Z-1.0000 F100.0\nG0 Z3.0000\nZ-0.5000\nG1 Z-5.0000\nG0 Z25.0000\nX30.0000\n"));
   const std::string tap = post_apt(kHead + "CYCLE / TAP, DEPTH, 10, TPI, 20, CLEAR, 2\n" + kHoles, "linuxcnc");
-  CHECK_THAT(tap, Catch::Contains("Z2.0000\nG94 G1 Z-10.0000 F1270.0\nM4\nZ2.0000\nM3\nG0 X30.0000\nG1 Z-10.0000\nM4\n"));
+  CHECK_THAT(tap,
+             Catch::Contains("Z2.0000\nG94 G1 Z-10.0000 F1270.0\nM4\nZ2.0000\nM3\nG0 X30.0000\nG1 Z-10.0000\nM4\n"));
 }
 
 TEST_CASE("a tilted hole on a table-table machine is native in machine axes (3+2)") {
@@ -126,8 +129,9 @@ TEST_CASE("a tilted hole on a table-table machine is native in machine axes (3+2
 
 TEST_CASE("G-code input canned cycles re-posted as cycles") {
   const Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  std::istringstream in("G21 G90 G17\nT1 M6\nS1000 M3\nG0 X10 Y20 Z25\nG98 G83 X10 Y20 Z-20 R3 Q4 F100\nX30\nG80\n"
-                        "G0 Z50\nM30\n");
+  std::istringstream in(
+      "G21 G90 G17\nT1 M6\nS1000 M3\nG0 X10 Y20 Z25\nG98 G83 X10 Y20 Z-20 R3 Q4 F100\nX30\nG80\n"
+      "G0 Z50\nM30\n");
   gcode::GcodeReaderOptions ro;
   ro.kind = gcode::InputKind::machine;
   gcode::GcodeClReader reader(in, "in.nc", m, Setup{}, ro);
@@ -138,24 +142,28 @@ TEST_CASE("G-code input canned cycles re-posted as cycles") {
     CHECK(s.cycles_out == 2);
     out.commit();
   }
-  CHECK_THAT(test::read_text_file("post_cycle_gcode.nc"),
-             Catch::Contains("G98 G83 X10.0000 Y20.0000 Z-20.0000 R3.0000 Q4.0000 F100.0\nX30.0000\nG80\nG0 Z50.0000\n"));
+  CHECK_THAT(
+      test::read_text_file("post_cycle_gcode.nc"),
+      Catch::Contains("G98 G83 X10.0000 Y20.0000 Z-20.0000 R3.0000 Q4.0000 F100.0\nX30.0000\nG80\nG0 Z50.0000\n"));
 }
 
 TEST_CASE("CUTCOM: G41/G42 D<tool> and G40; Heidenhain and simultaneous five-axis moves refused") {
-  const std::string cl = "UNITS/MM\nLOADTL/4\nFEDRAT/MMPM,500\nGOTO/0,0,0\nCUTCOM/LEFT\nGOTO/10,0,0\nGOTO/10,10,0\n"
-                         "CUTCOM/OFF\nCUTCOM/RIGHT,7\nGOTO/0,10,0\nCUTCOM/OFF\nFINI\n";
+  const std::string cl =
+      "UNITS/MM\nLOADTL/4\nFEDRAT/MMPM,500\nGOTO/0,0,0\nCUTCOM/LEFT\nGOTO/10,0,0\nGOTO/10,10,0\n"
+      "CUTCOM/OFF\nCUTCOM/RIGHT,7\nGOTO/0,10,0\nCUTCOM/OFF\nFINI\n";
   const std::string p = post_apt(cl, "fanuc");
   CHECK_THAT(p, Catch::Contains("G41 D4\nX10.0000\nY10.0000\nG40\n"));
   CHECK_THAT(p, Catch::Contains("G40\nG42 D7\nX0.0000"));
   // Sinumerik: G41/G42 take the radius of the edge the tool call selected; the register 7 of
   // CUTCOM/RIGHT,7 cannot be written, so it is refused (it was dropped: a bare G42, issue 27)
   CHECK_THROWS_WITH(post_apt(cl, "sinumerik"), Catch::Contains("t.apt:9:") && Catch::Contains("radius register 7"));
-  const std::string own = "UNITS/MM\nLOADTL/4\nFEDRAT/MMPM,500\nGOTO/0,0,0\nCUTCOM/LEFT\nGOTO/10,0,0\nCUTCOM/OFF\nFINI\n";
+  const std::string own =
+      "UNITS/MM\nLOADTL/4\nFEDRAT/MMPM,500\nGOTO/0,0,0\nCUTCOM/LEFT\nGOTO/10,0,0\nCUTCOM/OFF\nFINI\n";
   CHECK_THAT(post_apt(own, "sinumerik"), Catch::Contains("G41\n"));
   CHECK_THROWS_WITH(post_apt(cl, "heidenhain"), Catch::Contains("t.apt:5:") && Catch::Contains("CUTCOM"));
-  const std::string five = "UNITS/MM\nLOADTL/4\nMULTAX/ON\nFEDRAT/MMPM,500\nGOTO/0,0,0,0,0,1\nCUTCOM/LEFT\n"
-                           "GOTO/10,0,0,0.1,0,0.99498744\nFINI\n";
+  const std::string five =
+      "UNITS/MM\nLOADTL/4\nMULTAX/ON\nFEDRAT/MMPM,500\nGOTO/0,0,0,0,0,1\nCUTCOM/LEFT\n"
+      "GOTO/10,0,0,0.1,0,0.99498744\nFINI\n";
   CHECK_THROWS_WITH(post_apt(five, "fanuc", "ac-trunnion"),
                     Catch::Contains("t.apt:7:") && Catch::Contains("simultaneous five-axis"));
 }

@@ -47,7 +47,8 @@ Outcome post_on_truth(const Machine& m, const Setup& setup, const std::string& c
   const Dialect dialect = dialect_named("fanuc");
   PostOptions options;
   options.verify = true;
-  options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
+  options.subdivide =
+      actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   AtomicFile out("post_model_test_out.nc");
   NcWriter writer(out, dialect, "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
   Outcome o;
@@ -75,10 +76,11 @@ TEST_CASE("public-clean: identified model, dome path at 0.002 mm, executed on th
 
   const Outcome plain = post_on_truth(m, setup, dir + "path.cls", nullptr, truth, 0.002);
   const Outcome comp = post_on_truth(m, setup, dir + "path.cls", &identified, truth, 0.002);
-  std::printf("public-clean dome, tolerance 0.002 mm, executed on the truth: uncompensated %.4f mm (%zu blocks), "
-              "compensated %.4f mm (%zu blocks, line %d); tip error at the CL points before compensation %.4f mm\n",
-              plain.summary.verify.max_contour_mm, plain.summary.blocks_out, comp.summary.verify.max_contour_mm,
-              comp.summary.blocks_out, comp.summary.verify.worst_line, comp.uncompensated_tip_max_mm);
+  std::printf(
+      "public-clean dome, tolerance 0.002 mm, executed on the truth: uncompensated %.4f mm (%zu blocks), "
+      "compensated %.4f mm (%zu blocks, line %d); tip error at the CL points before compensation %.4f mm\n",
+      plain.summary.verify.max_contour_mm, plain.summary.blocks_out, comp.summary.verify.max_contour_mm,
+      comp.summary.blocks_out, comp.summary.verify.worst_line, comp.uncompensated_tip_max_mm);
   CHECK(plain.summary.verify.max_contour_mm > 0.05);  // the geometric errors: about 80 um
   CHECK(comp.summary.verify.max_contour_mm < 0.005);
   CHECK(comp.summary.verify.max_endpoint_mm < 0.002);
@@ -87,9 +89,16 @@ TEST_CASE("public-clean: identified model, dome path at 0.002 mm, executed on th
 TEST_CASE("BC head (seed 002): plan, simulate, identify, compensated post executed on the truth", "[model][post]") {
   const Machine m = load_machine(test::source("machines/gantry-bc-head.toml"));
   comp::ErrorParameters truth_values;
-  for (const auto& [n, v] : std::vector<std::pair<std::string, double>>{
-           {"EX0C", 0.012}, {"EY0C", -0.018}, {"EA0C", 2.5e-5}, {"EB0C", -3e-5}, {"EX0B", 0.02},
-           {"EZ0B", -0.015}, {"EA0B", 4e-5}, {"EC0B", -2e-5}, {"EB0B", 3e-5}, {"EC0C", -2e-5}})
+  for (const auto& [n, v] : std::vector<std::pair<std::string, double>>{{"EX0C", 0.012},
+                                                                        {"EY0C", -0.018},
+                                                                        {"EA0C", 2.5e-5},
+                                                                        {"EB0C", -3e-5},
+                                                                        {"EX0B", 0.02},
+                                                                        {"EZ0B", -0.015},
+                                                                        {"EA0B", 4e-5},
+                                                                        {"EC0B", -2e-5},
+                                                                        {"EB0B", 3e-5},
+                                                                        {"EC0C", -2e-5}})
     truth_values.set(n, v);
   std::vector<comp::MeasurementSet> sets;
   std::uint64_t seed = 21;
@@ -98,8 +107,8 @@ TEST_CASE("BC head (seed 002): plan, simulate, identify, compensated post execut
   comp::IdentifyOptions o;  // the two positioning errors are given (seed 002), measured by other means
   o.fixed.set("EB0B", 3e-5);
   o.fixed.set("EC0C", -2e-5);
-  const comp::IdentifyResult r = comp::identify(
-      m, sets, {"EX0C", "EY0C", "EA0C", "EB0C", "EX0B", "EZ0B", "EA0B", "EC0B"}, o);
+  const comp::IdentifyResult r =
+      comp::identify(m, sets, {"EX0C", "EY0C", "EA0C", "EB0C", "EX0B", "EZ0B", "EA0B", "EC0B"}, o);
   REQUIRE(r.converged);
   comp::ErrorParameters model_values = r.parameters;
   model_values.set("EB0B", 3e-5);
@@ -112,9 +121,10 @@ TEST_CASE("BC head (seed 002): plan, simulate, identify, compensated post execut
   const std::string path = test::source("samples/hemisphere_5axis.cls");
   const Outcome plain = post_on_truth(m, setup, path, nullptr, truth, 0.002);
   const Outcome comp = post_on_truth(m, setup, path, &identified, truth, 0.002);
-  std::printf("BC head, hemisphere sample, tolerance 0.002 mm, executed on the truth: uncompensated %.4f mm, "
-              "compensated %.4f mm (%zu blocks)\n",
-              plain.summary.verify.max_contour_mm, comp.summary.verify.max_contour_mm, comp.summary.blocks_out);
+  std::printf(
+      "BC head, hemisphere sample, tolerance 0.002 mm, executed on the truth: uncompensated %.4f mm, "
+      "compensated %.4f mm (%zu blocks)\n",
+      plain.summary.verify.max_contour_mm, comp.summary.verify.max_contour_mm, comp.summary.blocks_out);
   CHECK(plain.summary.verify.max_contour_mm > 0.02);
   CHECK(comp.summary.verify.max_contour_mm < 0.005);
 }

@@ -55,9 +55,9 @@ TEST_CASE("post from code: hemisphere, default tolerance, --verify: the CLI's pr
   const std::string machine = test::source("machines/ac-trunnion.toml");
   const std::string input = test::source("samples/hemisphere_5axis.cls");
   const std::string nc = dir + "/cli.nc", log = dir + "/cli.log";
-  REQUIRE(test::run_ncpost(fmt::format("post --machine {} --workpiece-origin 0,0,80 --verify -o {} {}", machine, nc,
-                                       input),
-                           log) == 0);
+  REQUIRE(test::run_ncpost(
+              fmt::format("post --machine {} --workpiece-origin 0,0,80 --verify -o {} {}", machine, nc, input), log) ==
+          0);
   PostRequest r = request_for(machine, input);
   r.verify = true;
   const FromCode code = post_from_string(input, r);
@@ -94,7 +94,8 @@ TEST_CASE("post from code: a stream that starts after what the caller read, tole
   const FromCode code = post_from_string(input, r, "not part of the input\n");
   CHECK(code.program == test::read_text_file(dir + "/cli.nc"));
   CHECK_FALSE(code.result.verified);
-  CHECK(code.result.summary.blocks_out >= code.result.summary.motions_in);  // one block per CL motion, plus rapids split
+  CHECK(code.result.summary.blocks_out >=
+        code.result.summary.motions_in);  // one block per CL motion, plus rapids split
 }
 
 TEST_CASE("post from code: with a model, verify-on, and under RTCP: the CLI's programs", "[post][entry]") {

@@ -55,7 +55,8 @@ Posted post_text(const Machine& m, const Setup& setup, const std::string& cl, co
   options.threads = threads;
   if (tolerance_mm) {
     comp.tolerance_mm = *tolerance_mm;
-    options.subdivide = actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
+    options.subdivide =
+        actual ? make_tolerance_subdivider(*actual, comp, dialect) : make_tolerance_subdivider(nominal, comp, dialect);
   }
   const std::string path = "post_threads_test_" + std::to_string(threads) + ".nc";
   Posted p;
@@ -110,15 +111,18 @@ TEST_CASE("read-ahead: real files with arcs, cycles and programmed angles post t
     for (int threads : {1, 2}) {
       std::ifstream in(test::data(std::string("real/") + c.file), std::ios::binary);
       std::unique_ptr<cl::Reader> reader;
-      if (c.gcode) reader = std::make_unique<gcode::GcodeClReader>(in, c.file, m, setup);
-      else reader = std::make_unique<cl::AptReader>(in, c.file);
+      if (c.gcode)
+        reader = std::make_unique<gcode::GcodeClReader>(in, c.file, m, setup);
+      else
+        reader = std::make_unique<cl::AptReader>(in, c.file);
       const NominalSolver solver(m, setup);
       PostOptions options;
       options.threads = threads;
       const std::string path = "post_threads_test_real_" + std::to_string(threads) + ".nc";
       {
         AtomicFile out(path);
-        NcWriter writer(out, dialect_named("fanuc"), "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
+        NcWriter writer(out, dialect_named("fanuc"),
+                        "XYZ" + std::string(1, m.axes[3].letter) + std::string(1, m.axes[4].letter));
         post_program(*reader, c.file, solver, writer, options);
         out.commit();
       }

@@ -78,7 +78,8 @@ TEST_CASE("ncpost preview --csv on the dome path", "[preview]") {
 TEST_CASE("ncpost preview: exit codes", "[preview]") {
   const std::string scenario = test::data("scenarios/public-clean/");
   auto run = [](const std::string& args) {
-    return WEXITSTATUS(std::system((std::string(NCPOST_BINARY) + " preview " + args + " > preview_rc.out 2>&1").c_str()));
+    return WEXITSTATUS(
+        std::system((std::string(NCPOST_BINARY) + " preview " + args + " > preview_rc.out 2>&1").c_str()));
   };
   CHECK(run("--bogus") == 1);
   CHECK(run("--machine " + scenario + "machine.toml") == 1);  // no INPUT
@@ -91,7 +92,8 @@ TEST_CASE("ncpost preview --model: the blocks of the compensated program on the 
   const std::string scenario = test::data("scenarios/public-clean/");
   const std::string cmd = std::string(NCPOST_BINARY) + " preview --machine " + scenario +
                           "machine.toml --workpiece-origin 0,0,80 --model " + scenario +
-                          "truth.json --csv preview_model_test.csv " + scenario + "path.cls > preview_model_test.out 2>&1";
+                          "truth.json --csv preview_model_test.csv " + scenario +
+                          "path.cls > preview_model_test.out 2>&1";
   REQUIRE(WEXITSTATUS(std::system(cmd.c_str())) == 0);
   std::string header;
   const auto rows = read_csv("preview_model_test.csv", header);

@@ -27,8 +27,8 @@ TEST_CASE("ncpost preview --html renders in headless Chromium", "[preview][html]
   const std::string html = ncpost::test::read_text_file("preview_html_test.html");
   CHECK(html.find("<svg") != std::string::npos);
   CHECK(html.find("Worst blocks") != std::string::npos);
-  CHECK(html.find("GOTO/") != std::string::npos);       // source lines of the worst blocks
-  CHECK(html.find("<script") == std::string::npos);     // no scripts
+  CHECK(html.find("GOTO/") != std::string::npos);                          // source lines of the worst blocks
+  CHECK(html.find("<script") == std::string::npos);                        // no scripts
   CHECK(html.find("http://") == html.find("http://www.w3.org/2000/svg"));  // only the SVG namespace
   CHECK(html.find("https://") == std::string::npos);
 

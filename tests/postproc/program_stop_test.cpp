@@ -63,7 +63,8 @@ std::string apt_error(const std::string& text) {
 }
 
 /// Index of the first record of `line` that holds a T (or records.size()).
-template <class T> std::size_t index_of(const std::vector<cl::Record>& records, int line) {
+template <class T>
+std::size_t index_of(const std::vector<cl::Record>& records, int line) {
   for (std::size_t i = 0; i < records.size(); ++i)
     if (const T* x = std::get_if<T>(&records[i]); x && x->where.line == line) return i;
   return records.size();
@@ -132,8 +133,8 @@ const std::string kStops =
 
 // (M60, a pallet change with a stop, is refused: gcode_control_test)
 TEST_CASE("G-code: M0 and M1 are program stops after the block's motion", "[stop]") {
-  const auto rs = gcode_records(
-      "G21 G90\nG0 X0 Y0 Z10 A0 C0\nG1 Z-1 F100 M0\nM1 (CHECK THE DEPTH)\nG2 X10 Y0 I5 J0 M00\nM30\n");
+  const auto rs =
+      gcode_records("G21 G90\nG0 X0 Y0 Z10 A0 C0\nG1 Z-1 F100 M0\nM1 (CHECK THE DEPTH)\nG2 X10 Y0 I5 J0 M00\nM30\n");
   const auto stops = only<cl::Stop>(rs);
   REQUIRE(stops.size() == 3);
   CHECK(stops[0].where.line == 3);
@@ -217,11 +218,13 @@ TEST_CASE("APT: what cannot be posted as the CAM meant it is refused with its li
              Catch::StartsWith("t.cls:2:1: SPINDL/200,SMM: surface speed needs the tool diameter (CUTTER/...)"));
   CHECK_THAT(apt_error("UNITS/MM\nDELAY/REV,5\nFINI\n"),
              Catch::StartsWith("t.cls:2:1: DELAY/REV: a dwell in spindle revolutions needs the spindle turning"));
-  CHECK_THAT(apt_error("SPINDL/RPM,800,CLW\nSPINDL/OFF\nDELAY/REV,5\nFINI\n"), Catch::StartsWith("t.cls:3:1: DELAY/REV"));
+  CHECK_THAT(apt_error("SPINDL/RPM,800,CLW\nSPINDL/OFF\nDELAY/REV,5\nFINI\n"),
+             Catch::StartsWith("t.cls:3:1: DELAY/REV"));
   CHECK_THAT(apt_error("DELAY/-1\nFINI\n"), Catch::StartsWith("t.cls:1:1: DELAY: expected a dwell from 0 to 86400 s"));
   CHECK_THAT(apt_error("DELAY/2,3\nFINI\n"), Catch::StartsWith("t.cls:1:1: DELAY expects a time in seconds"));
-  CHECK_THAT(apt_error("AUXFUN/3\nFINI\n"),
-             Catch::StartsWith("t.cls:1:1: AUXFUN/3 (M3, spindle on) before any spindle speed: give SPINDL/n,CLW instead"));
+  CHECK_THAT(
+      apt_error("AUXFUN/3\nFINI\n"),
+      Catch::StartsWith("t.cls:1:1: AUXFUN/3 (M3, spindle on) before any spindle speed: give SPINDL/n,CLW instead"));
   CHECK_THAT(apt_error("UNITS/MM\nAUXFUN/13\nFINI\n"),
              Catch::StartsWith("t.cls:2:1: AUXFUN/13 (M13) is not posted: its meaning depends on the machine"));
   CHECK_THAT(apt_error("AUXFUN/8.5\nFINI\n"), Catch::StartsWith("t.cls:1:1: AUXFUN expects one M function number"));
@@ -249,7 +252,7 @@ TEST_CASE("stops, dwells and machine functions in the Fanuc and Heidenhain progr
         "M8\n"
         "X20.0000\n"
         "M0\n"
-        "M9\n"        // AUXFUN/9: the coolant stays off
+        "M9\n"  // AUXFUN/9: the coolant stays off
         "S1000 M3\n"
         "X30.0000\n"
         "G4 P600\n"
@@ -293,16 +296,19 @@ TEST_CASE("stops, dwells and machine functions in the Fanuc and Heidenhain progr
 }
 
 TEST_CASE("after a stop the spindle and coolant start before a dwell (its run-up), not after it", "[stop][post]") {
-  const std::string cl = "UNITS/MM\nLOADTL/1\nSPINDL/RPM,2000,CCLW\nCOOLNT/MIST\nRAPID\nGOTO/0,0,10\nSTOP\nDELAY/1.5\n"
-                         "FEDRAT/MMPM,300\nGOTO/0,0,-1\nFINI\n";
+  const std::string cl =
+      "UNITS/MM\nLOADTL/1\nSPINDL/RPM,2000,CCLW\nCOOLNT/MIST\nRAPID\nGOTO/0,0,10\nSTOP\nDELAY/1.5\n"
+      "FEDRAT/MMPM,300\nGOTO/0,0,-1\nFINI\n";
   CHECK_THAT(post_text(cl, request("fanuc")),
-             Catch::Contains("G0 X0.0000 Y0.0000 Z90.0000 A0.0000 C0.0000\nM0\nS2000 M4\nM7\nG4 P1500\nG94 G1 Z79.0000 F300.0\n"));
+             Catch::Contains(
+                 "G0 X0.0000 Y0.0000 Z90.0000 A0.0000 C0.0000\nM0\nS2000 M4\nM7\nG4 P1500\nG94 G1 Z79.0000 F300.0\n"));
   CHECK_THAT(post_text(cl, request("heidenhain")),
              Catch::Contains("FMAX\n10 M0\n11 TOOL CALL Z S2000\n12 M4\n13 M7\n14 CYCL DEF 9.0 DWELL TIME\n"
                              "15 CYCL DEF 9.1 DWELL 1.500\n16 L Z+79.0000 F300\n"));
 }
 
-TEST_CASE("G-code M0 (Fusion manual tool change) posted: the stop, then the program's own spindle start", "[stop][post]") {
+TEST_CASE("G-code M0 (Fusion manual tool change) posted: the stop, then the program's own spindle start",
+          "[stop][post]") {
   const std::string nc =
       "%\nO0004\nG90 G94 G17\nG21\n(2D Contour)\nM0\n(MANUAL TOOL CHANGE TO T14)\nS6000 M3\nG54\nG0 X-1.3 Y-4.85\nZ15\n"
       "G1 Z-1.35 F300\nM1\nX-45.5 F600\nZ15\nM5\nM30\n%\n";
@@ -332,11 +338,14 @@ TEST_CASE("G-code M0 (Fusion manual tool change) posted: the stop, then the prog
         "%\n");
   r.dialect = dialect_named("heidenhain");
   const std::string klartext = post_text(nc, r);
-  CHECK_THAT(klartext, Catch::Contains("6 ; 2D Contour\n7 M0\n8 ; MANUAL TOOL CHANGE TO T14\n9 TOOL CALL Z S6000\n10 M3\n"));
-  CHECK_THAT(klartext, Catch::Contains("13 L Z-1.3500 F300\n14 M1\n15 TOOL CALL Z S6000\n16 M3\n17 L X-45.5000 F600\n"));
+  CHECK_THAT(klartext,
+             Catch::Contains("6 ; 2D Contour\n7 M0\n8 ; MANUAL TOOL CHANGE TO T14\n9 TOOL CALL Z S6000\n10 M3\n"));
+  CHECK_THAT(klartext,
+             Catch::Contains("13 L Z-1.3500 F300\n14 M1\n15 TOOL CALL Z S6000\n16 M3\n17 L X-45.5000 F600\n"));
 }
 
-TEST_CASE("a stop in a tilted work plane is written inside it; --verify and branch planning accept it", "[stop][post]") {
+TEST_CASE("a stop in a tilted work plane is written inside it; --verify and branch planning accept it",
+          "[stop][post]") {
   std::string cl = test::read_text_file(test::data("tilted/two_planes.cls"));
   cl = test::replaced(cl, "GOTO/25,-20,30,0,-0.5,0.866025\n", "GOTO/25,-20,30,0,-0.5,0.866025\nOPSTOP\n");
   PostRequest r = request("fanuc");
@@ -384,7 +393,8 @@ TEST_CASE("a stop inside a run of five-axis feed motions: branch planning and th
   CHECK(g93 > 100);
   // TRR-XY (X Y U V W), re-executed with --verify
   REQUIRE(test::run_ncpost("post --machine '" + test::source("machines/trr-xy.toml") +
-                               "' --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o '" + dir + "/trr.nc' '" + cl + "'",
+                               "' --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o '" + dir + "/trr.nc' '" +
+                               cl + "'",
                            dir + "/log.txt") == 0);
   CHECK_THAT(test::read_text_file(dir + "/trr.nc"),
              Catch::Contains("X40.4310 Y6.9233 U279.9080 V255.6136 W250.3464\nM1\nS10000 M3\nM8\nX40.2590 Y10.4810"));
@@ -392,8 +402,8 @@ TEST_CASE("a stop inside a run of five-axis feed motions: branch planning and th
 
 TEST_CASE("dialect files: [program] stop and optional_stop are data, and never empty", "[stop][dialect]") {
   const std::string fanuc = test::read_text_file(test::source("postproc/dialects/fanuc.toml"));
-  const Dialect d = parse_dialect(test::replaced(fanuc, "optional_stop = [\"M1\"]", "optional_stop = [\"M01\", \"M05\"]"),
-                                  "mine.toml");
+  const Dialect d = parse_dialect(
+      test::replaced(fanuc, "optional_stop = [\"M1\"]", "optional_stop = [\"M01\", \"M05\"]"), "mine.toml");
   CHECK(d.program_stop == std::vector<std::string>{"M0"});
   CHECK(d.program_optional_stop == std::vector<std::string>{"M01", "M05"});
   for (const char* name : {"fanuc", "haas", "linuxcnc", "sinumerik", "heidenhain"}) {
@@ -415,9 +425,11 @@ TEST_CASE("dialect files: [program] stop and optional_stop are data, and never e
   }
 }
 
-TEST_CASE("ncpost post: a surface speed without CUTTER exits 2 naming the line; M0 posts with --verify", "[stop][cli]") {
+TEST_CASE("ncpost post: a surface speed without CUTTER exits 2 naming the line; M0 posts with --verify",
+          "[stop][cli]") {
   const std::string dir = test::make_temp_dir("program_stop_cli");
-  const std::string apt = test::write_text_file(dir + "/smm.apt", "UNITS/MM\nLOADTL/1\nSPINDL/200,SMM,CLW\nRAPID\nGOTO/0,0,10\nFINI\n");
+  const std::string apt =
+      test::write_text_file(dir + "/smm.apt", "UNITS/MM\nLOADTL/1\nSPINDL/200,SMM,CLW\nRAPID\nGOTO/0,0,10\nFINI\n");
   const std::string machine = "--machine '" + test::source("machines/ac-trunnion.toml") + "' ";
   CHECK(test::run_ncpost("post " + machine + "-o '" + dir + "/smm.nc' '" + apt + "'", dir + "/log.txt") == 2);
   CHECK_THAT(test::read_text_file(dir + "/log.txt"),
@@ -425,7 +437,9 @@ TEST_CASE("ncpost post: a surface speed without CUTTER exits 2 naming the line; 
   const std::string nc = test::write_text_file(
       dir + "/stop.nc", "G21 G90\nT1 M6\nS5000 M3\nG0 X0 Y0 Z10 A0 C0\nG1 Z-1 F500\nM0\nX10\nG0 Z10\nM30\n");
   CHECK(test::run_ncpost("post " + machine + "--verify -o '" + dir + "/out.nc' '" + nc + "'", dir + "/log2.txt") == 0);
-  CHECK_THAT(test::read_text_file(dir + "/out.nc"), Catch::Contains("\nG94 G1 Z-1.0000 F500.0\nM0\nS5000 M3\nX10.0000\nG0 Z10.0000\n"));
-  CHECK_THAT(test::read_text_file(dir + "/log2.txt"), Catch::Contains("after  (the written program re-executed, 2 blocks)"));
+  CHECK_THAT(test::read_text_file(dir + "/out.nc"),
+             Catch::Contains("\nG94 G1 Z-1.0000 F500.0\nM0\nS5000 M3\nX10.0000\nG0 Z10.0000\n"));
+  CHECK_THAT(test::read_text_file(dir + "/log2.txt"),
+             Catch::Contains("after  (the written program re-executed, 2 blocks)"));
   CHECK(test::run_ncpost("preview " + machine + "'" + nc + "'", dir + "/log3.txt") == 0);
 }

@@ -62,6 +62,6 @@ TEST_CASE("public-clean dome path: the written program re-executes onto the CL p
   CHECK(s.verify.max_contour_mm > 0.1);
   CHECK(s.verify.max_contour_mm < 3.0);
   WARN("dome path untoleranced: largest nonlinear error " << s.verify.max_contour_mm << " mm at CL line "
-       << s.verify.worst_line);
+                                                          << s.verify.worst_line);
   std::remove(out_path.c_str());
 }

@@ -75,8 +75,10 @@ TEST_CASE("README, worked example: measure, identify, post compensated, cut on t
   // residual 43.5 -> 0.62 µm rms over all sets
   CHECK_THAT(identified, Catch::Matches("[\\s\\S]*\\n  all +43\\.5\\d / [0-9.]+ +0\\.6[12]\\d / [\\s\\S]*"));
 
-  const std::string post = "post --machine " + S + "machine.toml --workpiece-origin 0,0,80 --tolerance 0.002 "
-                           "--verify-on " + S + "truth.json ";
+  const std::string post = "post --machine " + S +
+                           "machine.toml --workpiece-origin 0,0,80 --tolerance 0.002 "
+                           "--verify-on " +
+                           S + "truth.json ";
   REQUIRE(run_ncpost(post + "--model " + model + " -o " + dir + "/dome.nc " + S + "path.cls", log) == 0);
   const std::string compensated = read_text_file(log);
   INFO(compensated);

@@ -40,9 +40,12 @@ std::vector<Word> words_of(const std::string& line) {
   int depth = 0;
   for (char c : line) {
     if (c == ';') break;
-    if (c == '(') ++depth;
-    else if (c == ')') depth = depth > 0 ? depth - 1 : 0;
-    else if (depth == 0) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (c == '(')
+      ++depth;
+    else if (c == ')')
+      depth = depth > 0 ? depth - 1 : 0;
+    else if (depth == 0)
+      s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   }
   static const std::regex word(R"(([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+)))");
   std::vector<Word> out;
@@ -53,10 +56,10 @@ std::vector<Word> words_of(const std::string& line) {
 
 /// What a posted Fanuc-dialect program contains, counted the way expected.json counts the source.
 struct ProgramRecords {
-  std::vector<int> tools;                               ///< T<n> with M6, repeats collapsed
-  std::map<int, int> cycle_holes;                       ///< G-code (73, 81..89) -> blocks with an axis word
-  std::map<int, std::map<char, double>> first_cycle;    ///< G-code -> the words of its first block
-  int g2 = 0, g3 = 0, g41 = 0, g42 = 0, linear = 0;     ///< arcs, compensation words, G0/G1 moves
+  std::vector<int> tools;                             ///< T<n> with M6, repeats collapsed
+  std::map<int, int> cycle_holes;                     ///< G-code (73, 81..89) -> blocks with an axis word
+  std::map<int, std::map<char, double>> first_cycle;  ///< G-code -> the words of its first block
+  int g2 = 0, g3 = 0, g41 = 0, g42 = 0, linear = 0;   ///< arcs, compensation words, G0/G1 moves
   bool g20 = false, g21 = false;
 };
 
@@ -73,13 +76,20 @@ ProgramRecords read_program(const std::string& text) {
     for (const Word& w : ws) {
       if (w.letter == 'G') {
         const int g = static_cast<int>(std::lround(w.value * 10));  // G43.4 -> 434
-        if (g == 0 || g == 10 || g == 20 || g == 30) motion = g / 10;
-        else if (g == 730 || (g >= 810 && g <= 890)) motion = g / 10, new_cycle = true;
-        else if (g == 800) motion = -1;
-        else if (g == 410) ++r.g41;
-        else if (g == 420) ++r.g42;
-        else if (g == 200) r.g20 = true;
-        else if (g == 210) r.g21 = true;
+        if (g == 0 || g == 10 || g == 20 || g == 30)
+          motion = g / 10;
+        else if (g == 730 || (g >= 810 && g <= 890))
+          motion = g / 10, new_cycle = true;
+        else if (g == 800)
+          motion = -1;
+        else if (g == 410)
+          ++r.g41;
+        else if (g == 420)
+          ++r.g42;
+        else if (g == 200)
+          r.g20 = true;
+        else if (g == 210)
+          r.g21 = true;
       } else if (w.letter == 'M' && std::lround(w.value) == 6) {
         m6 = true;
       } else if (w.letter == 'T') {
@@ -134,10 +144,11 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       char origin[96];
       std::snprintf(origin, sizeof origin, "%g,%g,%g", o[0], o[1], o[2]);
       const std::string out = dir + "/" + file + ".nc", log = dir + "/" + file + ".log";
-      std::string args = "post --machine " + ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml") +
+      std::string args = "post --machine " +
+                         ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml") +
                          " --workpiece-origin=" + origin + " --dialect " +
-                         (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() +
-                         " --tolerance " + std::to_string(tolerance_mm) + " --verify -o " + out;
+                         (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() + " --tolerance " +
+                         std::to_string(tolerance_mm) + " --verify -o " + out;
       if (e.contains("input_kind")) args += " --input-kind " + e.at("input_kind").get<std::string>();
       args += " " + ncpost::test::data("real/" + file);
       const int rc = ncpost::test::run_ncpost(args, log);
@@ -145,7 +156,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       std::printf("%-40s %-12s expect %-6s exit %d\n", file.c_str(), e.at("machine").get<std::string>().c_str(),
                   e.at("expect").get<std::string>().c_str(), rc);
       INFO(file << " on " << e.at("machine").get<std::string>() << " (" << e.at("system").get<std::string>()
-                << "): exit " << rc << "\n" << messages.substr(0, 600));
+                << "): exit " << rc << "\n"
+                << messages.substr(0, 600));
 
       if (e.at("expect") == "refuse") {
         CHECK((rc == 2 || rc == 3));
@@ -186,7 +198,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
         int got = 0;
         for (int code : codes)
           if (p.cycle_holes.count(code)) got += p.cycle_holes.at(code);
-        INFO("cycle holes in G" << join(std::vector<int>(codes.begin(), codes.end())) << ": expected " << n << ", program " << got);
+        INFO("cycle holes in G" << join(std::vector<int>(codes.begin(), codes.end())) << ": expected " << n
+                                << ", program " << got);
         CHECK(got == n);
         expected_all += n;
       }
@@ -198,7 +211,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
         const json& f = c.at("first");
         std::optional<std::map<char, double>> block;
         for (const auto& w : c.at("nc"))
-          if (p.first_cycle.count(gnumber(w.get<std::string>()))) block = p.first_cycle.at(gnumber(w.get<std::string>()));
+          if (p.first_cycle.count(gnumber(w.get<std::string>())))
+            block = p.first_cycle.at(gnumber(w.get<std::string>()));
         INFO("first " << c.at("kind").get<std::string>() << " hole (CL line " << f.at("line").get<int>() << ")");
         REQUIRE(block.has_value());
         const std::map<char, double> want = {{'X', f.at("x").get<double>() + o[0]},
@@ -216,8 +230,8 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       // slightly spiral G-code arcs are written as lines within the chord tolerance); compensation as
       // the source asks
       const json& arcs = e.contains("arcs_as_arcs") ? e.at("arcs_as_arcs") : e.at("arcs");
-      INFO("G2 expected " << arcs.at("cw") << ", program " << p.g2 << "; G3 expected " << arcs.at("ccw")
-                          << ", program " << p.g3);
+      INFO("G2 expected " << arcs.at("cw") << ", program " << p.g2 << "; G3 expected " << arcs.at("ccw") << ", program "
+                          << p.g3);
       CHECK(p.g2 == arcs.at("cw").get<int>());
       CHECK(p.g3 == arcs.at("ccw").get<int>());
       CHECK(p.g41 == e.at("cutcom").at("left").get<int>());

@@ -95,8 +95,10 @@ TEST_CASE("every real file posts with one output motion per input motion") {
                 c.machine, s.motions_in, s.blocks_out, dup, s.rapid_splits);
     CHECK(s.motions_in > 0);
     const std::size_t motions_out = s.blocks_out - s.rapid_splits;
-    if (c.expands) CHECK(motions_out >= s.motions_in - dup);
-    else CHECK(motions_out + dup == s.motions_in);
+    if (c.expands)
+      CHECK(motions_out >= s.motions_in - dup);
+    else
+      CHECK(motions_out + dup == s.motions_in);
   }
 }
 

@@ -61,9 +61,9 @@ TEST_CASE("sinumerik: DEF, R parameters, expressions, X=IC()/AC(), G91, comments
       "%_N_VARS_MPF\n"
       ";$PATH=/_N_MPF_DIR\n"
       "N10 DEF REAL _DEPTH=-2.5, _W\n"
-      "N20 DEF INT COUNT=2.6\n"          // INT rounds: 3
+      "N20 DEF INT COUNT=2.6\n"  // INT rounds: 3
       "N30 R1=10 R2=R1*2+SIN(30)*2 ; R2 = 21\n"
-      "N40 _W=(R2-R1)/2\n"               // 5.5
+      "N40 _W=(R2-R1)/2\n"  // 5.5
       "N50 G17 G90 G71 G94 T1 M6\n"
       "N60 G0 X=R1 Y=R2 Z=50 A0 C0 S1000 M3\n"
       "N70 G1 Z=_DEPTH F=100*COUNT\n"
@@ -128,14 +128,15 @@ TEST_CASE("sinumerik: IF/ELSE, FOR, WHILE, REPEAT, LOOP with GOTOF, GOTOB and la
   expected.push_back({30, 5, 10});
   expected.push_back({30, 5, 9});
   expected.push_back({30, 5, 8});
-  expected.push_back({4, 5, 8});   // REPEAT until K reaches 4
-  expected.push_back({4, 6, 8});   // LOOP leaves at K = 6
+  expected.push_back({4, 5, 8});  // REPEAT until K reaches 4
+  expected.push_back({4, 6, 8});  // LOOP leaves at K = 6
   expected.push_back({300, 6, 8});
   REQUIRE(m.size() == expected.size());
   for (std::size_t i = 0; i < m.size(); ++i) check_tip(m[i], expected[i][0], expected[i][1], expected[i][2]);
 }
 
-TEST_CASE("sinumerik: subprograms in the same file: L<n>, PROC with parameters, CALL, RET, M17; the chain in messages") {
+TEST_CASE(
+    "sinumerik: subprograms in the same file: L<n>, PROC with parameters, CALL, RET, M17; the chain in messages") {
   const std::string text =
       "%_N_MAIN_MPF\n"
       "G0 G90 X0 Y0 Z5 A0 C0\n"
@@ -158,8 +159,8 @@ TEST_CASE("sinumerik: subprograms in the same file: L<n>, PROC with parameters, 
   check_tip(m[0], 0, 0, 5);
   check_tip(m[1], 7, 0, 5);
   check_tip(m[2], 7, 23, 5);
-  check_tip(m[3], 7, 0, 5);   // CALL without arguments: SIDE and TIMES are 0
-  check_tip(m[4], 3, 0, 5);   // R1 set in L100 stays (R parameters are global)
+  check_tip(m[3], 7, 0, 5);  // CALL without arguments: SIDE and TIMES are 0
+  check_tip(m[4], 3, 0, 5);  // R1 set in L100 stays (R parameters are global)
   CHECK(m[1].where.line == 10);
 
   const std::string deep =
@@ -182,17 +183,17 @@ TEST_CASE("sinumerik: TRANS, ATRANS, ROT, AROT and SCALE frames place the progra
   const std::string text =
       "G0 G90 X0 Y0 Z20 A0 C0\n"
       "TRANS X10 Y5\n"
-      "G1 X1 Y1 F100\n"            // (11, 6)
-      "AROT Z90\n"                 // rotated about Z by 90 deg around (10, 5)
-      "X2 Y0\n"                    // (10, 7)
-      "ATRANS X1\n"                // shift along the rotated X: (10, 6) is the new origin
-      "X0 Y0\n"                    // (10, 6)
-      "ROT Z-90\n"                 // replaces the frame: only the rotation
-      "X0 Y3\n"                    // (3, 0)
+      "G1 X1 Y1 F100\n"  // (11, 6)
+      "AROT Z90\n"       // rotated about Z by 90 deg around (10, 5)
+      "X2 Y0\n"          // (10, 7)
+      "ATRANS X1\n"      // shift along the rotated X: (10, 6) is the new origin
+      "X0 Y0\n"          // (10, 6)
+      "ROT Z-90\n"       // replaces the frame: only the rotation
+      "X0 Y3\n"          // (3, 0)
       "SCALE X2 Y2 Z2\n"
-      "X1 Y1 Z5\n"                 // (2, 2, 10)
+      "X1 Y1 Z5\n"  // (2, 2, 10)
       "TRANS\n"
-      "X0 Y0\n"                    // no frame: (0, 0, 10)
+      "X0 Y0\n"  // no frame: (0, 0, 10)
       "M30\n";
   const auto m = motions(text);
   REQUIRE(m.size() == 7);
@@ -211,8 +212,8 @@ TEST_CASE("sinumerik: G2/G3 with I J, AC() centres and CR=, in a frame rotated a
       "G2 X10 Y0 I=AC(0) J=AC(0)\n"
       "G3 X0 Y10 CR=10\n"
       "ROT Z90\n"
-      "G1 X10 Y0\n"                   // (0, 10) in W
-      "G2 X0 Y-10 CR=10\n"            // in W: to (10, 0) clockwise about (0, 0)
+      "G1 X10 Y0\n"         // (0, 10) in W
+      "G2 X0 Y-10 CR=10\n"  // in W: to (10, 0) clockwise about (0, 0)
       "M30\n";
   const Read r = read(text);
   const auto m = only<cl::Motion>(r.records);
@@ -248,7 +249,8 @@ TEST_CASE("sinumerik: an arc in a frame tilted out of its plane becomes points o
   check_tip(m.back(), 0, 0, 10);
 }
 
-TEST_CASE("sinumerik: D0 (no tool offset) before a cut is refused; the G-code reader's messages name the Sinumerik line") {
+TEST_CASE(
+    "sinumerik: D0 (no tool offset) before a cut is refused; the G-code reader's messages name the Sinumerik line") {
   const std::string e = error_of("R1=5\nG0 X0 Y0 Z10 A0 C0\nD0\nR2=1\nG1 X=R1 F100\nM30\n");
   CHECK_THAT(e, Catch::Contains("t.mpf:5:"));
   CHECK_THAT(e, Catch::Contains("D0"));
@@ -294,7 +296,7 @@ TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands, as 
       "MCALL\n"
       "X0 Y0\n"
       "G0 Z50\n"
-      "CYCLE81(20, 0, 2, -5)\n"   // the tool above RTP: straight down to Z2, not to RTP first
+      "CYCLE81(20, 0, 2, -5)\n"  // the tool above RTP: straight down to Z2, not to RTP first
       "M30\n";
   const Read r = read(text);
   struct Hole {
@@ -303,11 +305,13 @@ TEST_CASE("sinumerik: CYCLE81 and MCALL CYCLE82 drill where the tool stands, as 
   std::vector<Hole> holes;
   std::optional<cl::Cycle> cycle;
   for (const auto& rec : r.records) {
-    if (const auto* c = std::get_if<cl::Cycle>(&rec)) cycle = c->kind == cl::Cycle::Kind::off ? std::nullopt : std::optional(*c);
+    if (const auto* c = std::get_if<cl::Cycle>(&rec))
+      cycle = c->kind == cl::Cycle::Kind::off ? std::nullopt : std::optional(*c);
     const auto* m = std::get_if<cl::Motion>(&rec);
     if (!m || !cycle) continue;
     const Vec3d& p = m->point.tip_mm;
-    holes.push_back({p.x(), p.y(), p.z() - cycle->depth_mm, p.z() + cycle->retract_mm.value_or(cycle->rapid_to_mm), cycle->dwell_s});
+    holes.push_back({p.x(), p.y(), p.z() - cycle->depth_mm, p.z() + cycle->retract_mm.value_or(cycle->rapid_to_mm),
+                     cycle->dwell_s});
     cycle.reset();
   }
   const std::vector<Hole> expected = {{0, 0, -5, 20, 0}, {10, 0, -3, 20, 0.5}, {10, 10, -3, 20, 0.5}};

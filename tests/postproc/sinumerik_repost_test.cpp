@@ -160,7 +160,9 @@ TEST_CASE("sinumerik re-post: CYCLE800 tilts the plane 30 deg about X; the outpu
   if (positive_exists) CHECK(got.at('A') > 0);  // _DIR = +1: the reference axis A on its plus side
 }
 
-TEST_CASE("sinumerik re-post: CYCLE800 about Y with a retract and _DIR=-1, then TRAORI with rotary words, on a machine-axis output") {
+TEST_CASE(
+    "sinumerik re-post: CYCLE800 about Y with a retract and _DIR=-1, then TRAORI with rotary words, on a machine-axis "
+    "output") {
   const std::string text =
       "G17 G90 G94 G54\n"
       "T1 D1 M6\n"
@@ -171,7 +173,7 @@ TEST_CASE("sinumerik re-post: CYCLE800 about Y with a retract and _DIR=-1, then 
       "G1 Y40 F700\n"
       "G0 Z60\n"
       "CYCLE800()\n"
-      "G0 X0 Y0 Z100 A45 C180\n"   // machine axes again: every word given (the linear axes stood still)
+      "G0 X0 Y0 Z100 A45 C180\n"  // machine axes again: every word given (the linear axes stood still)
       "TRAORI\n"
       "G0 X40 Y-28 Z50\n"
       "G1 Z-2 F600\n"

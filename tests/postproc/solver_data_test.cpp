@@ -58,9 +58,7 @@ Run run(const KinematicModel& solver, const std::vector<ClPoint>& points) {
   return r;
 }
 
-bool same(const AxisPosition& a, const AxisPosition& b) {
-  return a == b;
-}
+bool same(const AxisPosition& a, const AxisPosition& b) { return a == b; }
 
 /// Bit-for-bit equal commands, poses and figures.
 void require_same(const Run& a, const Run& b) {
@@ -135,7 +133,7 @@ TEST_CASE("solver data: a model with reversal keeps where the axes stand in the 
   // each thread follows its own program: the reversal state is the data's, not the solver's
   check_two_threads(solver, job.points);
   const Run one = run(solver, job.points);
-  REQUIRE(one.data.stands.has_value());  // the data followed the program
+  REQUIRE(one.data.stands.has_value());       // the data followed the program
   const Run again = run(solver, job.points);  // fresh data: the same program, not one that continues
   require_same(again, one);
 }
@@ -153,7 +151,8 @@ TEST_CASE("solver data: solving through a const reference twice with fresh data 
   const comp::MachineModel model(job.machine, job.truth());
   const ActualSolver actual(model, job.setup);
   const NominalSolver nominal(job.machine, job.setup);
-  for (const KinematicModel* s : {static_cast<const KinematicModel*>(&nominal), static_cast<const KinematicModel*>(&actual)}) {
+  for (const KinematicModel* s :
+       {static_cast<const KinematicModel*>(&nominal), static_cast<const KinematicModel*>(&actual)}) {
     const KinematicModel& solver = *s;
     const Run first = run(solver, job.points);
     const Run again = run(solver, job.points);

@@ -82,8 +82,8 @@ Mat3d rx(double d) { return Eigen::AngleAxisd(d * kDeg, Vec3d::UnitX()).toRotati
 struct ReadFrame {
   Vec3d origin = Vec3d::Zero();
   Mat3d R = Mat3d::Identity();
-  std::vector<Vec3d> ends_W;      ///< every block end in the plane, mapped to W
-  std::vector<Vec3d> feed_ends_W; ///< the feed blocks' ends (G1/G2/G3/cycle, L .. F)
+  std::vector<Vec3d> ends_W;       ///< every block end in the plane, mapped to W
+  std::vector<Vec3d> feed_ends_W;  ///< the feed blocks' ends (G1/G2/G3/cycle, L .. F)
 };
 
 double number_after(const std::string& line, const std::string& word) {
@@ -200,7 +200,8 @@ TEST_CASE("tilted planes: the angles give the rotation back, nearest the previou
       const auto back = plane_angles(convention, R, std::nullopt);
       CHECK((plane_rotation(convention, back) - R).norm() < 1e-12);
       const auto near = plane_angles(convention, R, t);  // the triple itself is the nearest
-      for (int i = 0; i < 3; ++i) CHECK(near[static_cast<std::size_t>(i)] == Approx(t[static_cast<std::size_t>(i)]).margin(1e-9));
+      for (int i = 0; i < 3; ++i)
+        CHECK(near[static_cast<std::size_t>(i)] == Approx(t[static_cast<std::size_t>(i)]).margin(1e-9));
     }
   }
   // across ±180: continuous, not the principal value
@@ -302,8 +303,9 @@ TEST_CASE("tilted planes: Fanuc G68.2 / G53.1 / G69, the reviewed program") {
 }
 
 TEST_CASE("tilted planes: a vertical tool axis opens no plane; LinuxCNC writes machine axes") {
-  const std::string vertical = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\nRAPID\nGOTO/10,5,20,0,0,1\n"
-                               "FEDRAT/MMPM,300\nGOTO/10,5,0,0,0,1\nGOTO/30,5,0,0,0,1\nRAPID\nGOTO/30,5,100,0,0,1\nFINI\n";
+  const std::string vertical =
+      "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\nRAPID\nGOTO/10,5,20,0,0,1\n"
+      "FEDRAT/MMPM,300\nGOTO/10,5,0,0,0,1\nGOTO/30,5,0,0,0,1\nRAPID\nGOTO/30,5,100,0,0,1\nFINI\n";
   PostResult with;
   const std::string a = post_text(vertical, request("fanuc", true), &with);
   CHECK(with.summary.tilted_planes == 0);
@@ -318,10 +320,11 @@ TEST_CASE("tilted planes: a vertical tool axis opens no plane; LinuxCNC writes m
 
 TEST_CASE("tilted planes: the Euler angles stay continuous across ±180 degrees") {
   // two planes whose first Euler angle is 177.71 and -177.71 as principal values
-  const std::string cl = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\n"
-                         "RAPID\nGOTO/5,5,20,0.02,0.5,0.8657945\nFEDRAT/MMPM,300\nGOTO/5,5,10,0.02,0.5,0.8657945\n"
-                         "RAPID\nGOTO/-5,5,20,-0.02,0.5,0.8657945\nFEDRAT/MMPM,300\nGOTO/-5,5,10,-0.02,0.5,0.8657945\n"
-                         "RAPID\nGOTO/0,0,100,0,0,1\nFINI\n";
+  const std::string cl =
+      "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\n"
+      "RAPID\nGOTO/5,5,20,0.02,0.5,0.8657945\nFEDRAT/MMPM,300\nGOTO/5,5,10,0.02,0.5,0.8657945\n"
+      "RAPID\nGOTO/-5,5,20,-0.02,0.5,0.8657945\nFEDRAT/MMPM,300\nGOTO/-5,5,10,-0.02,0.5,0.8657945\n"
+      "RAPID\nGOTO/0,0,100,0,0,1\nFINI\n";
   PostRequest r = request("fanuc", true);
   r.verify = true;
   PostResult result;
@@ -352,14 +355,16 @@ TEST_CASE("tilted planes: verify measures where the plane's words put the tool")
   plane.origin_P_mm = a.tip_mm + kWorkpieceOrigin;
   const Eigen::Vector2d rotary = ik.position->rotary_rad;
   SolverData data;
-  const AxisPosition qa = executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(a.tip_mm + kWorkpieceOrigin));
-  const AxisPosition qb = executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin));
+  const AxisPosition qa =
+      executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(a.tip_mm + kWorkpieceOrigin));
+  const AxisPosition qb =
+      executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin));
   VerifyReport good;
   CHECK(verify_block(solver, data, a, qa, b, qb, 1, good) < 1e-9);
   CHECK(good.max_endpoint_mm < 1e-9);
   // words that would not land on the CL point: 0.05 mm off in the plane's Y
-  const AxisPosition wrong =
-      executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary, plane.to_plane(b.tip_mm + kWorkpieceOrigin) + Vec3d(0, 0.05, 0));
+  const AxisPosition wrong = executed_in_plane(solver, data, plane, kWorkpieceOrigin, rotary,
+                                               plane.to_plane(b.tip_mm + kWorkpieceOrigin) + Vec3d(0, 0.05, 0));
   VerifyReport bad;
   CHECK(verify_block(solver, data, a, qa, b, wrong, 1, bad) == Approx(0.05).margin(1e-6));
   CHECK(bad.max_endpoint_mm == Approx(0.05).margin(1e-6));
@@ -384,10 +389,12 @@ TEST_CASE("tilted planes: [tilted_plane] of a dialect file is checked") {
     }
     return std::string("no error");
   };
-  CHECK_THAT(error_of("angles = \"euler_zxz\"", "angles = \"zyz\""), Catch::Contains("euler_zxz") && Catch::Contains("mine.toml:"));
+  CHECK_THAT(error_of("angles = \"euler_zxz\"", "angles = \"zyz\""),
+             Catch::Contains("euler_zxz") && Catch::Contains("mine.toml:"));
   CHECK_THAT(error_of(" K{c}\"", "\""), Catch::Contains("{c} is missing"));
   CHECK_THAT(error_of("G53.1\"]", "G53.1 {tool}\"]"), Catch::Contains("unknown placeholder '{tool}'"));
-  CHECK_THAT(error_of("native = true\nangles", "native = true\nangle_words = 1\nangles"), Catch::Contains("unknown key 'angle_words'"));
+  CHECK_THAT(error_of("native = true\nangles", "native = true\nangle_words = 1\nangles"),
+             Catch::Contains("unknown key 'angle_words'"));
   // a file without the section (an older copy) has no tilted plane
   const std::string old = fanuc.substr(0, fanuc.find("\n[tilted_plane]"));
   CHECK_FALSE(parse_dialect(old, "old.toml").tilted_plane);
@@ -397,8 +404,8 @@ TEST_CASE("tilted planes: the command line") {
   const std::string dir = test::make_temp_dir("tilted_plane_cli");
   CHECK(test::run_ncpost("post --help", dir + "/help.txt") == 0);
   CHECK_THAT(test::read_text_file(dir + "/help.txt"), Catch::Contains("--tilted-plane") && Catch::Contains("G68.2"));
-  const std::string base = "post --machine '" + test::source("machines/ac-trunnion.toml") +
-                           "' --workpiece-origin 0,0,80 --tilted-plane ";
+  const std::string base =
+      "post --machine '" + test::source("machines/ac-trunnion.toml") + "' --workpiece-origin 0,0,80 --tilted-plane ";
   const std::string cl = "'" + test::data("tilted/two_planes.cls") + "'";
   CHECK(test::run_ncpost(base + "--rtcp -o '" + dir + "/a.nc' " + cl, dir + "/rtcp.txt") == 1);
   CHECK_THAT(test::read_text_file(dir + "/rtcp.txt"), Catch::Contains("--tilted-plane: not with --rtcp"));
@@ -406,13 +413,15 @@ TEST_CASE("tilted planes: the command line") {
   const std::string log = test::read_text_file(dir + "/verify.txt");
   INFO(log);
   CHECK_THAT(log, Catch::Contains("block ends 0.0000 mm"));
-  CHECK_THAT(test::read_text_file(dir + "/b.nc"), Catch::Contains("G68.2 X10.0000 Y-40.0000 Z144.6410 I0.0000 J30.0000 K0.0000\nG53.1\n"));
+  CHECK_THAT(test::read_text_file(dir + "/b.nc"),
+             Catch::Contains("G68.2 X10.0000 Y-40.0000 Z144.6410 I0.0000 J30.0000 K0.0000\nG53.1\n"));
 }
 
 TEST_CASE("tilted planes: a point out of the travel in the plane ends it and is refused as without it") {
   // X 600 mm: beyond the AC trunnion's X travel (±500) on both rotary solutions
-  const std::string cl = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\nRAPID\nGOTO/10,-40,64.641016,0,-0.5,0.866025\n"
-                         "FEDRAT/MMPM,300\nGOTO/10,-20,30,0,-0.5,0.866025\nGOTO/600,-20,30,0,-0.5,0.866025\nFINI\n";
+  const std::string cl =
+      "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,100,0,0,1\nRAPID\nGOTO/10,-40,64.641016,0,-0.5,0.866025\n"
+      "FEDRAT/MMPM,300\nGOTO/10,-20,30,0,-0.5,0.866025\nGOTO/600,-20,30,0,-0.5,0.866025\nFINI\n";
   std::string with, without;
   try {
     post_text(cl, request("fanuc", true));

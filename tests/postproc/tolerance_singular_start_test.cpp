@@ -64,8 +64,9 @@ TEST_CASE("--tolerance where the tool leaves vertical on a table-table machine: 
   std::istringstream in(p.program);
   std::vector<std::string> turn;
   for (std::string line; std::getline(in, line);)
-    if (line.find('C') != std::string::npos && line.find('A') == std::string::npos && line.find('Z') == std::string::npos &&
-        line.find("G90") == std::string::npos && line[0] != '(' && line[0] != 'O')
+    if (line.find('C') != std::string::npos && line.find('A') == std::string::npos &&
+        line.find('Z') == std::string::npos && line.find("G90") == std::string::npos && line[0] != '(' &&
+        line[0] != 'O')
       turn.push_back(line);
   // 2.0424° of C keeps a 30 mm chord within the tolerance less the rounding room (4.76 µm): 45 steps of 2°
   REQUIRE(turn.size() == 45);

@@ -215,7 +215,8 @@ TEST_CASE("TOOL CALL by name for a dialect of tool numbers: refused at the call 
   CHECK_THAT(e, Catch::StartsWith("names.h:" + std::to_string(second_call) + ":"));
   CHECK_THAT(e, Catch::Contains("add \"G12R6\" = <number> to [tools] in tools.toml"));
   // a length in the table that differs from the one the head's axes are solved for
-  e = refusal(kKlartext, "names.h", table_of("[tools]\n\"FRA-X12 D15.2\" = { number = 12, length = 80 }\n\"G12R6\" = 7\n"));
+  e = refusal(kKlartext, "names.h",
+              table_of("[tools]\n\"FRA-X12 D15.2\" = { number = 12, length = 80 }\n\"G12R6\" = 7\n"));
   CHECK_THAT(e, Catch::StartsWith("names.h:2:") && Catch::Contains("is 80.0000 mm long (the tool table tools.toml)"));
 }
 

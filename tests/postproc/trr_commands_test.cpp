@@ -66,14 +66,15 @@ TEST_CASE("TRR-XY preview through the common preview: the CSV, the summary and t
                  "mean 0.0808 mm, largest orientation error 0.0268 deg; blocks over 5 µm: 416") != std::string::npos);
   const std::vector<std::string> csv = lines_of("tc_preview.csv");
   REQUIRE(csv.size() == 434);
-  CHECK(csv[0] == "block,line,max_error_mm,at_t,harmonic_mm,orientation_error_deg,orientation_at_t,harmonic_residual_mm");
+  CHECK(csv[0] ==
+        "block,line,max_error_mm,at_t,harmonic_mm,orientation_error_deg,orientation_at_t,harmonic_residual_mm");
   const std::vector<std::string> last = fields(csv.back());
   REQUIRE(last.size() == 8);
   CHECK(last[0] == "433");
   CHECK(last[1] == "442");
   CHECK(std::stod(last[2]) == Approx(0.270964).margin(2e-6));
-  CHECK(std::stod(last[3]) == Approx(0.5).margin(0.002));       // a half sine: the peak mid-block
-  CHECK(std::stod(last[4]) == Approx(0.270964).margin(2e-6));   // the midpoint fit is the peak here
+  CHECK(std::stod(last[3]) == Approx(0.5).margin(0.002));      // a half sine: the peak mid-block
+  CHECK(std::stod(last[4]) == Approx(0.270964).margin(2e-6));  // the midpoint fit is the peak here
   CHECK(std::stod(last[5]) == Approx(0.0268).margin(1e-4));
   // the common HTML report, naming this machine, with the worst blocks' source lines
   const std::string html = test::read_text_file("tc_preview.html");
@@ -146,7 +147,8 @@ TEST_CASE("TRR-XY plan, simulate and identify through the common writers and mes
   CHECK(out.find("plan laser: the TRR-XY machine has the sphere-probing plan only") != std::string::npos);
   CHECK_FALSE(std::ifstream("tc_never.csv").good());
   CHECK_FALSE(std::ifstream("tc_never.nc").good());
-  CHECK(run("identify --machine " + machine_path() + " --report tc_never.html -o tc_never.json tc_data.csv", &out) == 1);
+  CHECK(run("identify --machine " + machine_path() + " --report tc_never.html -o tc_never.json tc_data.csv", &out) ==
+        1);
   CHECK(out.find("--report: not available for the TRR-XY machine") != std::string::npos);
   CHECK_FALSE(std::ifstream("tc_never.json").good());
   CHECK_FALSE(std::ifstream("tc_never.html").good());
@@ -165,7 +167,8 @@ TEST_CASE("TRR-XY post --nonlinear harmonic: the paper's shift, error before and
   const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   std::string out;
   REQUIRE(run("post " + job() + "--tolerance none -o tc_h_plain.nc " + sample_path()) == 0);
-  REQUIRE(run("post " + job() + "--tolerance 0.005 --nonlinear harmonic --verify -o tc_h.nc " + sample_path(), &out) == 0);
+  REQUIRE(run("post " + job() + "--tolerance 0.005 --nonlinear harmonic --verify -o tc_h.nc " + sample_path(), &out) ==
+          0);
   REQUIRE(run("post " + job() + "--tolerance 0.005 -o tc_a.nc " + sample_path()) == 0);
   const auto plain = test::trr_executed_deviation(nominal, test::read_trr_program("tc_h_plain.nc"), path, kOrigin);
   const std::vector<trr::Command> harmonic_program = test::read_trr_program("tc_h.nc");
@@ -173,9 +176,9 @@ TEST_CASE("TRR-XY post --nonlinear harmonic: the paper's shift, error before and
   const std::vector<trr::Command> adaptive_program = test::read_trr_program("tc_a.nc");
   REQUIRE(plain);
   REQUIRE(harmonic);
-  WARN("TRR-XY hemisphere, executed at 100 points per block: one block per motion " << *plain << " mm; harmonic 0.005: "
-       << harmonic_program.size() << " blocks, " << *harmonic << " mm; adaptive 0.005: " << adaptive_program.size()
-       << " blocks");
+  WARN("TRR-XY hemisphere, executed at 100 points per block: one block per motion "
+       << *plain << " mm; harmonic 0.005: " << harmonic_program.size() << " blocks, " << *harmonic
+       << " mm; adaptive 0.005: " << adaptive_program.size() << " blocks");
   CHECK(*plain == Approx(0.271).margin(0.001));
   // the half-sine model removes ~94 % of the bow; what is left is the part that is not a half sine
   // (as on the serial machines, README "Nonlinear error"): not bounded by the tolerance
@@ -184,5 +187,6 @@ TEST_CASE("TRR-XY post --nonlinear harmonic: the paper's shift, error before and
   CHECK(harmonic_program.size() < adaptive_program.size());
   CHECK(account_figure(out, "after") == Approx(*harmonic).margin(0.001));
   CHECK(out.find("notice: --nonlinear harmonic") == std::string::npos);  // no longer replaced by adaptive
-  CHECK(test::read_text_file("tc_h.nc").find("(model none [nominal machine], tolerance 0.005 mm [harmonic])") != std::string::npos);
+  CHECK(test::read_text_file("tc_h.nc").find("(model none [nominal machine], tolerance 0.005 mm [harmonic])") !=
+        std::string::npos);
 }

@@ -62,7 +62,8 @@ TEST_CASE("TRR-XY through the common post: --tolerance 0.005 --verify --report")
   const Kinematics nominal(load_trr_xy_machine(machine_path()));
   const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   std::string err;
-  REQUIRE(run(post_args() + "--tolerance 0.005 --verify --report trr_pipe.html -o trr_pipe.nc " + sample_path(), &err) == 0);
+  REQUIRE(run(post_args() + "--tolerance 0.005 --verify --report trr_pipe.html -o trr_pipe.nc " + sample_path(),
+              &err) == 0);
   const std::vector<Command> program = test::read_trr_program("trr_pipe.nc");
   const double executed = executed_deviation(nominal, program, path);
   const double before = figure(err, "before"), after = figure(err, "after ");
@@ -74,7 +75,7 @@ TEST_CASE("TRR-XY through the common post: --tolerance 0.005 --verify --report")
   CHECK(after <= 0.005);
   CHECK(after > 0.0);
   const std::string nc = text_of("trr_pipe.nc");
-  CHECK(nc.find(" Z") == std::string::npos);  // the words are X Y U V W
+  CHECK(nc.find(" Z") == std::string::npos);   // the words are X Y U V W
   CHECK(nc.find("G43") == std::string::npos);  // the tool length is in the kinematics
   const std::string html = text_of("trr_pipe.html");
   CHECK(html.find("<svg") != std::string::npos);
@@ -89,13 +90,17 @@ TEST_CASE("TRR-XY: --verify-on a machine with errors, and --model of the same ma
   e.chain[1].dr = -0.02;
   std::ofstream("trr_pipe_truth.json") << comp::format_model_json(model_from_errors(e, "trr-xy"));
   std::string err;
-  REQUIRE(run(post_args() + "--tolerance 0.005 --verify-on trr_pipe_truth.json -o trr_nominal.nc " + sample_path(), &err) == 0);
+  REQUIRE(run(post_args() + "--tolerance 0.005 --verify-on trr_pipe_truth.json -o trr_nominal.nc " + sample_path(),
+              &err) == 0);
   const double nominal_on_truth = figure(err, "after ");
   CHECK(err.find("the machine of trr_pipe_truth.json") != std::string::npos);
-  REQUIRE(run(post_args() + "--tolerance 0.005 --model trr_pipe_truth.json --verify-on trr_pipe_truth.json -o trr_comp.nc " +
-              sample_path(), &err) == 0);
+  REQUIRE(run(post_args() +
+                  "--tolerance 0.005 --model trr_pipe_truth.json --verify-on trr_pipe_truth.json -o trr_comp.nc " +
+                  sample_path(),
+              &err) == 0);
   const double compensated_on_truth = figure(err, "after ");
-  WARN("on the machine with errors: nominal program " << nominal_on_truth << " mm, compensated " << compensated_on_truth);
+  WARN("on the machine with errors: nominal program " << nominal_on_truth << " mm, compensated "
+                                                      << compensated_on_truth);
   CHECK(nominal_on_truth > 0.02);
   CHECK(compensated_on_truth <= 0.005);
   // the independent check agrees

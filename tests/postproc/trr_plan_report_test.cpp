@@ -76,7 +76,8 @@ TEST_CASE("TRR-XY plan sphere --dialect: the dialect's words only, the same posi
   CHECK(fanuc[1] == "O0001 (TRRPROBE)");
   CHECK(shop[1] == "O0002 (TRRPROBE)");  // the start sequence's own text
   CHECK(shop[4] == "G54");
-  CHECK(std::vector<std::string>(fanuc.end() - 5, fanuc.end()) == std::vector<std::string>{"M5", "M9", "G90", "M30", "%"});
+  CHECK(std::vector<std::string>(fanuc.end() - 5, fanuc.end()) ==
+        std::vector<std::string>{"M5", "M9", "G90", "M30", "%"});
   CHECK(std::vector<std::string>(shop.end() - 3, shop.end()) == std::vector<std::string>{"M5", "M99", "%"});
   // between them, line for line: the same blocks, the comments in the other style
   const std::size_t fanuc_start = 4, shop_start = 5, fanuc_end = 5, shop_end = 3;
@@ -120,8 +121,10 @@ TEST_CASE("TRR-XY plan sphere --dialect: the dialect's words only, the same posi
 }
 
 TEST_CASE("TRR-XY post --report: the tool path coloured by the contour error before and after", "[post][trr][report]") {
-  REQUIRE(run("post --machine " + test::trr_machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --verify "
-              "--report trr_report.html -o trr_report.nc " + test::hemisphere_sample_path()) == 0);
+  REQUIRE(run("post --machine " + test::trr_machine_path() +
+              " --workpiece-origin 0,0,-300 --tolerance 0.005 --verify "
+              "--report trr_report.html -o trr_report.nc " +
+              test::hemisphere_sample_path()) == 0);
   const std::string html = test::read_text_file("trr_report.html");
   CHECK(html.find("No path to show") == std::string::npos);
   // both maps, each with one point per feed motion of the hemisphere (435 CL motions, 2 of them rapids:

@@ -112,16 +112,18 @@ TEST_CASE("--tolerance 0.005: the executed tip stays within 5 um of the CL path"
   const double plain = executed_deviation(nominal, read_program("trr_plain.nc"), path, &end_plain);
 
   std::string err;
-  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o trr_tol.nc " +
-              sample_path(), &err) == 0);
+  REQUIRE(run("post --machine " + machine_path() +
+                  " --workpiece-origin 0,0,-300 --tolerance 0.005 --verify -o trr_tol.nc " + sample_path(),
+              &err) == 0);
   const std::vector<Command> program = read_program("trr_tol.nc");
   double end_tol = 0.0;
   const double tol = executed_deviation(nominal, program, path, &end_tol);
   WARN("one block per CL motion: " << read_program("trr_plain.nc").size() << " blocks, largest deviation " << plain
-       << " mm; --tolerance 0.005: " << program.size() << " blocks, largest deviation " << tol << " mm, block ends "
-       << end_tol << " mm\n" << err);
-  CHECK(plain > 0.05);         // the nonlinear error is large on this machine
-  CHECK(end_plain < 5e-4);     // but the block ends are on the path (4-decimal words)
+                                   << " mm; --tolerance 0.005: " << program.size() << " blocks, largest deviation "
+                                   << tol << " mm, block ends " << end_tol << " mm\n"
+                                   << err);
+  CHECK(plain > 0.05);      // the nonlinear error is large on this machine
+  CHECK(end_plain < 5e-4);  // but the block ends are on the path (4-decimal words)
   CHECK(tol <= 0.005);
   CHECK(program.size() < 8 * 435);  // adaptive, not uniform dense output
   CHECK(err.find("after  (the written program re-executed") != std::string::npos);  // the common post's account
@@ -139,21 +141,24 @@ TEST_CASE("--model: the commands make the machine with errors follow the CL path
   const std::vector<Vec3d> path = test::read_cl_tips(sample_path());
   REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 -o trr_nom.nc " +
               sample_path()) == 0);
-  REQUIRE(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 0.005 --model trr_model.json "
-              "-o trr_comp.nc " + sample_path()) == 0);
+  REQUIRE(run("post --machine " + machine_path() +
+              " --workpiece-origin 0,0,-300 --tolerance 0.005 --model trr_model.json "
+              "-o trr_comp.nc " +
+              sample_path()) == 0);
   double end_nominal = 0.0, end_comp = 0.0;
   const double nominal = executed_deviation(actual, read_program("trr_nom.nc"), path, &end_nominal);
   const double compensated = executed_deviation(actual, read_program("trr_comp.nc"), path, &end_comp);
   WARN("on the machine with errors: nominal program " << nominal << " mm (block ends " << end_nominal
-       << "), compensated " << compensated << " mm (block ends " << end_comp << ")");
+                                                      << "), compensated " << compensated << " mm (block ends "
+                                                      << end_comp << ")");
   CHECK(end_nominal > 0.02);
   CHECK(end_comp < 5e-4);  // the 4-decimal words: up to 0.05 um each, through the head's gain
   CHECK(compensated <= 0.005);
 }
 
 TEST_CASE("preview --csv and --html on the TRR-XY machine: one row per feed block") {
-  REQUIRE(run("preview --machine " + machine_path() + " --workpiece-origin 0,0,-300 --csv trr_preview.csv --html trr_preview.html " +
-              sample_path()) == 0);
+  REQUIRE(run("preview --machine " + machine_path() +
+              " --workpiece-origin 0,0,-300 --csv trr_preview.csv --html trr_preview.html " + sample_path()) == 0);
   std::ifstream h("trr_preview.html");
   std::stringstream hs;
   hs << h.rdbuf();
@@ -178,7 +183,8 @@ TEST_CASE("preview --csv and --html on the TRR-XY machine: one row per feed bloc
 TEST_CASE("a CL point out of reach: exit 3 naming the line and the axis") {
   std::string err;
   CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_far.nc " +
-            test::data("scenarios/public-clean/path.cls"), &err) == 3);
+                test::data("scenarios/public-clean/path.cls"),
+            &err) == 3);
   CHECK(err.find("path.cls:729: V623.8594 is outside the limits [0, 600]") != std::string::npos);
   CHECK_FALSE(std::ifstream("trr_far.nc").good());
   std::ofstream("trr_bad_model.json") << "{\n \"machine\": \"trr-xy\",\n \"parameters\": {\"EX0C\": 0.01}\n}\n";
@@ -209,7 +215,8 @@ TEST_CASE("a TRR-XY model for another machine, or with an implausible value, is 
 TEST_CASE("a tolerance finer than the words can follow: exit 3 naming the line, at once (fuzz finding: 2^24 blocks)") {
   std::string err;
   CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 --tolerance 1e-9 -o trr_nm.nc " +
-            sample_path(), &err) == 3);
+                sample_path(),
+            &err) == 3);
   CHECK(err.find("the move cannot be cut within the tolerance 1e-09 mm") != std::string::npos);
   CHECK(err.find("raise --tolerance") != std::string::npos);
   CHECK_FALSE(std::ifstream("trr_nm.nc").good());
@@ -220,7 +227,8 @@ TEST_CASE("CUTCOM on the TRR-XY machine: exit 2 naming the line, no program") {
   std::string err;
   std::ofstream("trr_cutcom.cls") << "UNITS/MM\nFEDRAT/MMPM,200\nGOTO/0,0,20,0,0,1\nCUTCOM/LEFT\nGOTO/10,0,0\n"
                                      "CUTCOM/OFF\nFINI\n";
-  CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_cutcom.nc trr_cutcom.cls", &err) == 2);
+  CHECK(run("post --machine " + machine_path() + " --workpiece-origin 0,0,-300 -o trr_cutcom.nc trr_cutcom.cls",
+            &err) == 2);
   CHECK(err.find("trr_cutcom.cls:4:") != std::string::npos);
   CHECK(err.find("cutter radius compensation is not posted") != std::string::npos);
   CHECK_FALSE(std::ifstream("trr_cutcom.nc").good());

@@ -25,7 +25,10 @@ std::vector<std::pair<double, double>> nx_rotary_per_block(const std::string& pa
   bool started = false;
   const std::regex word(R"(([XYZBC])(-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)))");
   for (std::string line; std::getline(in, line);) {
-    if (line.find("G234") != std::string::npos) { started = true; continue; }
+    if (line.find("G234") != std::string::npos) {
+      started = true;
+      continue;
+    }
     if (line.find("G53") != std::string::npos || line.find("G28") != std::string::npos) continue;
     bool motion = false;
     for (std::sregex_iterator it(line.begin(), line.end(), word), end; it != end; ++it) {
@@ -59,7 +62,8 @@ TEST_CASE("UMC-750: B and C of every GOTO equal NX's post output") {
     REQUIRE(ik.ok());
     REQUIRE(i < nx.size());
     const double b = rad_to_deg(ik.position->rotary_rad[0]), c = rad_to_deg(ik.position->rotary_rad[1]);
-    INFO("GOTO on line " << mo->where.line << ": ours B" << b << " C" << c << ", NX B" << nx[i].first << " C" << nx[i].second);
+    INFO("GOTO on line " << mo->where.line << ": ours B" << b << " C" << c << ", NX B" << nx[i].first << " C"
+                         << nx[i].second);
     CHECK(std::abs(b - nx[i].first) < 1e-3 + 5e-4);  // NX prints 3 decimals
     CHECK(std::abs(c - nx[i].second) < 1e-3 + 5e-4);
     worst_deg = std::max({worst_deg, std::abs(b - nx[i].first), std::abs(c - nx[i].second)});
@@ -69,7 +73,7 @@ TEST_CASE("UMC-750: B and C of every GOTO equal NX's post output") {
   }
   CHECK(i == nx.size());
   CHECK(i == 348);
-  CHECK(c_swings > 5);  // the near-singular stretch is in the data
+  CHECK(c_swings > 5);        // the near-singular stretch is in the data
   CHECK(worst_deg < 0.0007);  // the README's figure (worked example: 0.00065 deg, rounded)
   WARN("largest B/C difference to NX: " << worst_deg << " deg over " << i << " GOTOs");
 }

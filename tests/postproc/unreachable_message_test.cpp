@@ -42,9 +42,10 @@ TEST_CASE("no solution within the limits: the linear axis, its value and its lim
     const Run r = run(command, "ac-trunnion", kTooHigh);
     CHECK(r.rc == 3);
     // Z of M = 700 mm in W + 80 mm origin; ac-trunnion Z travel is ±600 mm
-    CHECK_THAT(r.messages, Catch::Contains("p.apt:5: no solution within the axis limits: with A 0.000° C 0.000°: Z would "
-                                           "be 780.000 mm (limits -600.000 to 600.000 mm) (tip 0.0000, 0.0000, "
-                                           "700.0000 mm, axis 0.000000, 0.000000, 1.000000)"));
+    CHECK_THAT(r.messages,
+               Catch::Contains("p.apt:5: no solution within the axis limits: with A 0.000° C 0.000°: Z would "
+                               "be 780.000 mm (limits -600.000 to 600.000 mm) (tip 0.0000, 0.0000, "
+                               "700.0000 mm, axis 0.000000, 0.000000, 1.000000)"));
     CHECK_THAT(r.messages, Catch::Contains("check --workpiece-origin and the tool length"));
   }
 }
@@ -52,8 +53,9 @@ TEST_CASE("no solution within the limits: the linear axis, its value and its lim
 TEST_CASE("no solution within the limits: the rotary axis of each solution", "[post][limits]") {
   const Run r = run("post", "haas-umc750", kTooTilted);
   CHECK(r.rc == 3);
-  CHECK_THAT(r.messages, Catch::Contains("p.apt:5: no solution within the axis limits: "
-                                         "with B -130.000° C -180.000°: B would be -130.000° (limits -35.000 to 120.000°); "
-                                         "with B 130.000° C 0.000°: B would be 130.000° (limits -35.000 to 120.000°)"));
+  CHECK_THAT(r.messages,
+             Catch::Contains("p.apt:5: no solution within the axis limits: "
+                             "with B -130.000° C -180.000°: B would be -130.000° (limits -35.000 to 120.000°); "
+                             "with B 130.000° C 0.000°: B would be 130.000° (limits -35.000 to 120.000°)"));
   CHECK_THAT(r.messages, !Catch::Contains("check --workpiece-origin"));
 }

@@ -15,7 +15,6 @@ using namespace ncpost;
 
 namespace {
 
-
 struct Case {
   Machine machine = load_machine(test::source("machines/vmcl600.toml"));
   Setup setup;
@@ -68,12 +67,12 @@ TEST_CASE("ClArc::distance: on, inside, beyond the sweep") {
   const ClArc cl{Vec3d(10, 0, 0), Vec3d::Zero(), Vec3d(0, 10, 0), Vec3d::UnitZ(), Vec3d::UnitZ(), kPi / 2.0};
   CHECK(cl.distance(Vec3d(10 * std::cos(0.3), 10 * std::sin(0.3), 0)) == Approx(0.0).margin(1e-12));
   CHECK(cl.distance(Vec3d(5 * std::cos(0.3), 5 * std::sin(0.3), 0)) == Approx(5.0));
-  CHECK(cl.distance(Vec3d(0, -10, 0)) == Approx((Vec3d(0, -10, 0) - Vec3d(10, 0, 0)).norm()));  // nearer: the start
+  CHECK(cl.distance(Vec3d(0, -10, 0)) == Approx((Vec3d(0, -10, 0) - Vec3d(10, 0, 0)).norm()));      // nearer: the start
   CHECK(cl.distance(Vec3d(-10, 0.5, 0)) == Approx((Vec3d(-10, 0.5, 0) - Vec3d(0, 10, 0)).norm()));  // nearer: the end
 }
 
 TEST_CASE("ClArc::distance: a full-circle helix ends one pitch below its start") {
   const ClArc cl{Vec3d(0.1, 0, 0), Vec3d::Zero(), Vec3d(0.1, 0, -0.2), Vec3d::UnitZ(), Vec3d::UnitZ(), 2.0 * kPi};
-  CHECK(cl.distance(Vec3d(0.1, 0, -0.2)) == Approx(0.0).margin(1e-12));  // the end, not the start
+  CHECK(cl.distance(Vec3d(0.1, 0, -0.2)) == Approx(0.0).margin(1e-12));   // the end, not the start
   CHECK(cl.distance(Vec3d(-0.1, 0, -0.1)) == Approx(0.0).margin(1e-12));  // half way down
 }

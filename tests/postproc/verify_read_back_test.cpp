@@ -19,7 +19,8 @@ namespace {
 /// `text` with every `from` replaced by `to` (REQUIREs at least one).
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   std::size_t n = 0;
-  for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size(), ++n) text.replace(at, from.size(), to);
+  for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size(), ++n)
+    text.replace(at, from.size(), to);
   REQUIRE(n > 0);
   return text;
 }

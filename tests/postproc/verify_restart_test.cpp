@@ -21,7 +21,8 @@ struct Verified {
   std::string messages;
 };
 
-Verified verify(const std::string& name, const std::string& text, const std::string& machine, const std::string& origin) {
+Verified verify(const std::string& name, const std::string& text, const std::string& machine,
+                const std::string& origin) {
   static const std::string dir = ncpost::test::make_temp_dir("ncpost_verify_restart");
   const std::string input = ncpost::test::write_text_file(dir + "/" + name, text);
   Verified v;
@@ -41,9 +42,9 @@ Verified verify(const std::string& name, const std::string& text, const std::str
 }  // namespace
 
 TEST_CASE("--verify after a split rapid that keeps Z: no false alarm", "[post][verify]") {
-  const Verified v = verify("rapid.apt",
-                            "UNITS/MM\nFEDRAT/500\nRAPID\nGOTO/0,0,10\nRAPID\nGOTO/10,0,10\nGOTO/10,0,0\nGOTO/20,0,0\nFINI\n",
-                            "ac-trunnion", "0,0,80");
+  const Verified v = verify(
+      "rapid.apt", "UNITS/MM\nFEDRAT/500\nRAPID\nGOTO/0,0,10\nRAPID\nGOTO/10,0,10\nGOTO/10,0,0\nGOTO/20,0,0\nFINI\n",
+      "ac-trunnion", "0,0,80");
   INFO(v.messages);
   REQUIRE(v.rc == 0);
   CHECK(v.after_mm == Approx(0.0).margin(1e-4));  // was 10 mm
@@ -51,10 +52,11 @@ TEST_CASE("--verify after a split rapid that keeps Z: no false alarm", "[post][v
 }
 
 TEST_CASE("--verify on helices after rapids: CIRCLE with a Z change and G2/G3 with Z", "[post][verify]") {
-  const Verified apt = verify("helix.apt",
-                              "UNITS/MM\nFEDRAT/500\nRAPID\nGOTO/0,0,20\nRAPID\nGOTO/10,0,20\nGOTO/10,0,5\n"
-                              "CIRCLE/0,0,5,0,0,1,10\nGOTO/-10,0,3\nCIRCLE/0,0,3,0,0,1,10\nGOTO/10,0,1\nGOTO/20,0,1\nFINI\n",
-                              "vmcl600", "0,0,-100");
+  const Verified apt =
+      verify("helix.apt",
+             "UNITS/MM\nFEDRAT/500\nRAPID\nGOTO/0,0,20\nRAPID\nGOTO/10,0,20\nGOTO/10,0,5\n"
+             "CIRCLE/0,0,5,0,0,1,10\nGOTO/-10,0,3\nCIRCLE/0,0,3,0,0,1,10\nGOTO/10,0,1\nGOTO/20,0,1\nFINI\n",
+             "vmcl600", "0,0,-100");
   INFO(apt.messages);
   REQUIRE(apt.rc == 0);
   CHECK(apt.after_mm <= 0.0002);  // 1 µm chords, 4-decimal words

@@ -29,7 +29,8 @@ namespace {
 
 std::string goto_of(const V3& tip, const V3& axis) {
   const V3 u = axis.normalized();
-  return fmt::format("GOTO/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", tip.x(), tip.y(), tip.z(), u.x(), u.y(), u.z());
+  return fmt::format("GOTO/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", tip.x(), tip.y(), tip.z(), u.x(), u.y(),
+                     u.z());
 }
 
 /// A CL feed segment and its feed.
@@ -53,8 +54,9 @@ std::vector<Case> cases() {
   const V3 u(std::sin(t), 0, std::cos(t));
   std::vector<Case> out;
   {  // a drilled hole 20 deg off Z: R plane 3 above the top, 12 deep
-    Case c{"tilted drill", "UNITS/MM\nMULTAX/ON\nLOADTL/2\nSPINDL/RPM,1500,CLW\nRAPID\n" + goto_of(V3(10, 0, 0) + 50 * u, u) +
-                               "CYCLE/DRILL,RAPTO,3,FEDTO,-12,MMPM,120\n" + goto_of(V3(10, 0, 0), u) + "CYCLE/OFF\nFINI\n"};
+    Case c{"tilted drill", "UNITS/MM\nMULTAX/ON\nLOADTL/2\nSPINDL/RPM,1500,CLW\nRAPID\n" +
+                               goto_of(V3(10, 0, 0) + 50 * u, u) + "CYCLE/DRILL,RAPTO,3,FEDTO,-12,MMPM,120\n" +
+                               goto_of(V3(10, 0, 0), u) + "CYCLE/OFF\nFINI\n"};
     c.feeds = {{V3(10, 0, 0) + 3 * u, V3(10, 0, 0) - 12 * u, 120}};
     c.top = V3(10, 0, 0), c.axis = u, c.depth = 12, c.clear = 3;
     out.push_back(c);
@@ -68,9 +70,10 @@ std::vector<Case> cases() {
     out.push_back(c);
   }
   {  // two tools with CL lengths 100 and 150 (the post solves for 100)
-    const std::string cut = "RAPID\n" + goto_of(V3(0, 0, 0) + 40 * u, u) + "FEDRAT/MMPM,300\n" + goto_of(V3(0, 0, 0), u) +
-                            "RAPID\n" + goto_of(40 * u, u);
-    Case c{"tool lengths", "UNITS/MM\nMULTAX/ON\nLOADTL/1,LENGTH,100\n" + cut + "LOADTL/2,LENGTH,150\n" + cut + "FINI\n"};
+    const std::string cut = "RAPID\n" + goto_of(V3(0, 0, 0) + 40 * u, u) + "FEDRAT/MMPM,300\n" +
+                            goto_of(V3(0, 0, 0), u) + "RAPID\n" + goto_of(40 * u, u);
+    Case c{"tool lengths",
+           "UNITS/MM\nMULTAX/ON\nLOADTL/1,LENGTH,100\n" + cut + "LOADTL/2,LENGTH,150\n" + cut + "FINI\n"};
     c.feeds = {{40 * u, V3(0, 0, 0), 300}};
     c.axis = u, c.depth = 0, c.clear = 40;
     c.lengths_differ = true;
@@ -91,14 +94,18 @@ std::vector<Case> cases() {
 struct Machine {
   const char* name;
   V3 origin;
-  bool head = false;   ///< rotary axes in the head (the axis positions depend on the tool length)
-  bool tilts = true;   ///< reaches a tool axis tilted in XZ
+  bool head = false;  ///< rotary axes in the head (the axis positions depend on the tool length)
+  bool tilts = true;  ///< reaches a tool axis tilted in XZ
 };
 
-const Machine kMachines[] = {
-    {"ac-trunnion", V3(0, 0, 50)},        {"tsutsumi-zxfyac", V3(0, 0, 50)}, {"bv100", V3(0, 0, 50)},
-    {"linuxcnc-xyzac-trt", V3(0, 0, 50)}, {"haas-umc750", V3(0, 0, 50)},     {"hmc-b-table", V3(0, 0, 50)},
-    {"gantry-bc-head", V3(0, 0, -300), true}, {"vmcl600", V3(0, 0, 50), false, false}};
+const Machine kMachines[] = {{"ac-trunnion", V3(0, 0, 50)},
+                             {"tsutsumi-zxfyac", V3(0, 0, 50)},
+                             {"bv100", V3(0, 0, 50)},
+                             {"linuxcnc-xyzac-trt", V3(0, 0, 50)},
+                             {"haas-umc750", V3(0, 0, 50)},
+                             {"hmc-b-table", V3(0, 0, 50)},
+                             {"gantry-bc-head", V3(0, 0, -300), true},
+                             {"vmcl600", V3(0, 0, 50), false, false}};
 
 /// What the executed program does other than the CL data mean (empty: right).
 std::string wrong_in(const Executor& ex, const Case& c, bool rtcp) {
@@ -123,7 +130,8 @@ std::string wrong_in(const Executor& ex, const Case& c, bool rtcp) {
     if (worst > 0.01 + 1e-6) return fmt::format("line {} '{}': {:.4f} mm off the CL path", b.line, b.text, worst);
     const double path = ex.tip_path_mm(b);
     if (b.inverse_time && std::abs(b.feed * path - on->feed) > 2e-4 * on->feed)
-      return fmt::format("line {} '{}': G93 F x path = {:.3f}, the CL feed is {}", b.line, b.text, b.feed * path, on->feed);
+      return fmt::format("line {} '{}': G93 F x path = {:.3f}, the CL feed is {}", b.line, b.text, b.feed * path,
+                         on->feed);
     if (!b.inverse_time && std::abs(b.feed - on->feed) > 0.05)
       return fmt::format("line {} '{}': F{} where the CL feed is {}", b.line, b.text, b.feed, on->feed);
   }

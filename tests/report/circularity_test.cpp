@@ -37,7 +37,8 @@ TEST_CASE("circular deviation G of an off-centre circle with a 2-lobe form error
 }
 
 TEST_CASE("circular hysteresis H between the two directions", "[report][circularity]") {
-  // counter-clockwise 0→359°, then clockwise back (every angle once each way), the clockwise path 2 µm further out at every angle
+  // counter-clockwise 0→359°, then clockwise back (every angle once each way), the clockwise path 2 µm further out at
+  // every angle
   std::vector<double> a, r;
   for (int k = 0; k < 360; ++k) {
     a.push_back(2 * kPi * k / 360.0);
@@ -61,7 +62,8 @@ TEST_CASE("a short arc or too few points gives no figures", "[report][circularit
   CHECK_FALSE(iso230_4_circularity({0, 1, 2}, {0, 0, 0}).ok);
 }
 
-TEST_CASE("ISO 230-4 G of each direction: counter-clockwise and clockwise runs with their own G", "[report][circularity]") {
+TEST_CASE("ISO 230-4 G of each direction: counter-clockwise and clockwise runs with their own G",
+          "[report][circularity]") {
   // counter-clockwise 0 → 359°: r = 2 cos 2θ (G_ccw = 4 µm about the LSC centre, which the 2θ lobe
   // does not move); then clockwise 359° → 0: r = 3 cos 2θ + 10 cos θ (a centre 10 µm off in x that
   // the clockwise LSC removes: G_cw = 6 µm). Both together: neither centre fits both, G > 6.

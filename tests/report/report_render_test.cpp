@@ -46,9 +46,9 @@ Rendered render(const std::string& html, int width, int height) {
   const std::string png = html + ".png";
   const std::string dom = html + ".dom";
   std::remove(png.c_str());
-  std::system((std::string(kChromium) + "--virtual-time-budget=5000 --dump-dom --screenshot=" + png + " --window-size=" +
-               std::to_string(width) + "," + std::to_string(height) + " file://" + cwd() + "/" + html + " > " + dom +
-               " 2> " + html + ".chromium.log")
+  std::system((std::string(kChromium) + "--virtual-time-budget=5000 --dump-dom --screenshot=" + png +
+               " --window-size=" + std::to_string(width) + "," + std::to_string(height) + " file://" + cwd() + "/" +
+               html + " > " + dom + " 2> " + html + ".chromium.log")
                   .c_str());
   return {read_text_file(dom), ncpost::test::decode_png(read_text_file(png))};
 }
@@ -104,8 +104,11 @@ void check_header(const std::string& html) {
 TEST_CASE("identify.html: provenance, verdict, control values, ballbar polar plots, sphere table", "[report][html]") {
   const std::string s = ncpost::test::data("scenarios/public-clean/");
   const std::string files = s + "ballbar_h250.csv " + s + "ballbar_h300.csv " + s + "sphere.csv";
-  REQUIRE(ncpost::test::run_ncpost("identify --machine " + s + "machine.toml -o id_model.json --report identify.html "
-                                   "--pass-tolerance-um 5 " + files, "identify.log") == 0);
+  REQUIRE(ncpost::test::run_ncpost("identify --machine " + s +
+                                       "machine.toml -o id_model.json --report identify.html "
+                                       "--pass-tolerance-um 5 " +
+                                       files,
+                                   "identify.log") == 0);
   const std::string html = read_text_file("identify.html");
   check_header(html);
   check_hashed(html, s + "machine.toml");
@@ -113,12 +116,16 @@ TEST_CASE("identify.html: provenance, verdict, control values, ballbar polar plo
   check_hashed(html, s + "ballbar_h300.csv");
   check_hashed(html, s + "sphere.csv");
   // the machine deviates by up to 93 µm from nominal (FAIL at 5 µm); the model leaves 1.6 µm at most (PASS)
-  CHECK(html.find("Machine as it is (largest deviation from the nominal machine): <span class=\"fail\">FAIL</span>") != std::string::npos);
-  CHECK(html.find("with the identified compensation (largest residual the model leaves): <span class=\"pass\">PASS</span>") !=
+  CHECK(html.find("Machine as it is (largest deviation from the nominal machine): <span class=\"fail\">FAIL</span>") !=
+        std::string::npos);
+  CHECK(html.find(
+            "with the identified compensation (largest residual the model leaves): <span class=\"pass\">PASS</span>") !=
         std::string::npos);
   // the eight location errors in µm / µrad for the control (EY0A = 17.96 µm, EB0C = −35.47 µrad as identified)
-  CHECK(html.find("<td class=n>EY0A</td><td class=n>axis A location: offset Y</td><td>+17.96</td>") != std::string::npos);
-  CHECK(html.find("<td class=n>EB0C</td><td class=n>axis C location: tilt about Y</td><td>-35.47</td>") != std::string::npos);
+  CHECK(html.find("<td class=n>EY0A</td><td class=n>axis A location: offset Y</td><td>+17.96</td>") !=
+        std::string::npos);
+  CHECK(html.find("<td class=n>EB0C</td><td class=n>axis C location: tilt about Y</td><td>-35.47</td>") !=
+        std::string::npos);
   // two polar plots per ballbar file, labelled with the turning axis and the axes moved, and the ISO 230-4 table
   CHECK(count(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"polar\"") == 4);
   CHECK(count(html, "C 0°</text>") == 4);
@@ -130,8 +137,9 @@ TEST_CASE("identify.html: provenance, verdict, control values, ballbar polar plo
                   "given)</td>") != std::string::npos);
   CHECK(html.find("<td class=n>residual after identification (left by the model)</td><td>2.95 (U unknown") !=
         std::string::npos);
-  CHECK(html.find("<td>93.08 (U unknown: instrument, temperature not given)</td><td class=\"fail\">FAIL</td><td>1.35 (U "
-                  "unknown: instrument, temperature not given)</td><td class=\"pass\">PASS</td>") != std::string::npos);
+  CHECK(
+      html.find("<td>93.08 (U unknown: instrument, temperature not given)</td><td class=\"fail\">FAIL</td><td>1.35 (U "
+                "unknown: instrument, temperature not given)</td><td class=\"pass\">PASS</td>") != std::string::npos);
   // sphere: dispersion per axis, before and after
   CHECK(html.find("<th class=n>dispersion per axis (µm)</th>") != std::string::npos);
   CHECK(count(html, "<tr><td class=n>d") >= 3);
@@ -154,7 +162,7 @@ TEST_CASE("laser report: ISO 230-2 bidirectional plots with tick values", "[repo
   std::string files;
   for (const char* f : {"X1_pos", "X2_pos", "X3_pos", "X1_strY", "X1_strZ"}) files += d + "data/" + f + ".csv ";
   REQUIRE(ncpost::test::run_ncpost("identify --machine " + ncpost::test::source("machines/vmcl600.toml") +
-                                   " -o laser_model.json --report laser.html --pass-tolerance-um 10 " + files,
+                                       " -o laser_model.json --report laser.html --pass-tolerance-um 10 " + files,
                                    "laser.log") == 0);
   const std::string html = read_text_file("laser.html");
   check_header(html);
@@ -176,11 +184,14 @@ TEST_CASE("laser report: ISO 230-2 bidirectional plots with tick values", "[repo
 
 TEST_CASE("post_report.html: provenance and the WebGL path view before and after", "[report][html][post]") {
   const std::string s = ncpost::test::data("scenarios/public-clean/");
-  REQUIRE(ncpost::test::run_ncpost("identify --machine " + s + "machine.toml -o post_model.json " + s + "ballbar_h250.csv " + s +
-                                   "ballbar_h300.csv " + s + "sphere.csv", "post_identify.log") == 0);
-  REQUIRE(ncpost::test::run_ncpost("post --machine " + s + "machine.toml --workpiece-origin 0,0,80 --model post_model.json "
-                                   "--tolerance 0.002 --verify-on " + s + "truth.json --report post_report.html -o dome.nc " +
-                                   s + "path.cls", "post.log") == 0);
+  REQUIRE(ncpost::test::run_ncpost("identify --machine " + s + "machine.toml -o post_model.json " + s +
+                                       "ballbar_h250.csv " + s + "ballbar_h300.csv " + s + "sphere.csv",
+                                   "post_identify.log") == 0);
+  REQUIRE(ncpost::test::run_ncpost("post --machine " + s +
+                                       "machine.toml --workpiece-origin 0,0,80 --model post_model.json "
+                                       "--tolerance 0.002 --verify-on " +
+                                       s + "truth.json --report post_report.html -o dome.nc " + s + "path.cls",
+                                   "post.log") == 0);
   const std::string html = read_text_file("post_report.html");
   check_header(html);
   check_hashed(html, s + "path.cls");
@@ -205,5 +216,5 @@ TEST_CASE("post_report.html: provenance and the WebGL path view before and after
   CHECK(views == 3);
   // the canvases sit below the tables (y > 600): coloured path pixels and the colour bars
   CHECK(coloured_pixels(img, 600, 1700) > 5000);
-  CHECK(pixels_near(img, 0x1e328c, 20) > 500);   // the colour of 0 µm: the "after" path on the shared scale
+  CHECK(pixels_near(img, 0x1e328c, 20) > 500);  // the colour of 0 µm: the "after" path on the shared scale
 }

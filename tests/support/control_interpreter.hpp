@@ -30,16 +30,16 @@
 namespace ncpost::test {
 
 struct ControlSpec {
-  bool linuxcnc = false;                                   ///< G10 L20's LinuxCNC meaning
-  std::map<std::string, std::map<char, double>> offsets;   ///< "G54" -> X Y Z (mm) and rotary (deg)
-  std::string axes = "XYZ";                                ///< the program's axis letters
+  bool linuxcnc = false;                                  ///< G10 L20's LinuxCNC meaning
+  std::map<std::string, std::map<char, double>> offsets;  ///< "G54" -> X Y Z (mm) and rotary (deg)
+  std::string axes = "XYZ";                               ///< the program's axis letters
 };
 
 struct ControlEnd {
-  int line = 0;                     ///< 1-based line of the motion block
-  std::map<char, double> machine;   ///< machine coordinates at its end (mm, deg)
-  bool complete = true;             ///< every axis has been programmed (else where the machine stood before is in it)
-  bool rapid = false;               ///< a G0 block: its path between the ends is the control's own
+  int line = 0;                    ///< 1-based line of the motion block
+  std::map<char, double> machine;  ///< machine coordinates at its end (mm, deg)
+  bool complete = true;            ///< every axis has been programmed (else where the machine stood before is in it)
+  bool rapid = false;              ///< a G0 block: its path between the ends is the control's own
 };
 
 class ControlInterpreter {
@@ -63,7 +63,8 @@ class ControlInterpreter {
   /// The value of offset `name` when the first motion was executed (the posted frame's zero).
   std::map<char, double> value_at_first_motion(const std::string& name) const {
     const auto it = first_values_.find(name);
-    if (it == first_values_.end()) throw std::runtime_error("test interpreter: " + name + " had no value at the first motion");
+    if (it == first_values_.end())
+      throw std::runtime_error("test interpreter: " + name + " had no value at the first motion");
     return it->second;
   }
 
@@ -80,8 +81,10 @@ class ControlInterpreter {
     int depth = 0;
     for (char c : raw) {
       if (c == ';' && depth == 0) break;
-      if (c == '(') ++depth;
-      else if (c == ')') --depth;
+      if (c == '(')
+        ++depth;
+      else if (c == ')')
+        --depth;
       else if (depth == 0 && c != ' ' && c != '\t' && c != '\r')
         s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     }
@@ -141,8 +144,14 @@ class ControlInterpreter {
       k += 2;
       const double b = sum(s, k, pc);
       const std::string o(op);
-      return (o == "EQ" ? a == b : o == "NE" ? a != b : o == "GT" ? a > b : o == "GE" ? a >= b : o == "LT" ? a < b : a <= b)
-                 ? 1.0 : 0.0;
+      return (o == "EQ"   ? a == b
+              : o == "NE" ? a != b
+              : o == "GT" ? a > b
+              : o == "GE" ? a >= b
+              : o == "LT" ? a < b
+                          : a <= b)
+                 ? 1.0
+                 : 0.0;
     }
     return a;
   }
@@ -152,7 +161,8 @@ class ControlInterpreter {
   static std::optional<std::pair<std::string, std::string>> o_word(const std::string& s) {
     if (s.size() < 2 || s[0] != 'O') return std::nullopt;
     std::size_t k = 1;
-    if (s[1] == '<') k = s.find('>') + 1;
+    if (s[1] == '<')
+      k = s.find('>') + 1;
     else
       while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
     if (k <= 1 || k >= s.size() || !std::isalpha(static_cast<unsigned char>(s[k]))) return std::nullopt;
@@ -204,7 +214,8 @@ class ControlInterpreter {
       for (int n = 1; n <= 30; ++n) f.saved[n] = params_[n];
       std::vector<double> args;
       for (std::size_t k = after; k < s.size();) args.push_back(number(s, k, pc));
-      for (int n = 1; n <= 30; ++n) params_[n] = n <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(n - 1)] : 0.0;
+      for (int n = 1; n <= 30; ++n)
+        params_[n] = n <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(n - 1)] : 0.0;
       frames_.push_back(f);
       return sub + 1;
     }
@@ -255,7 +266,8 @@ class ControlInterpreter {
   std::optional<std::size_t> program_line(int number) const {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
       const std::string& l = lines_[i];
-      if (l.size() > 1 && l[0] == 'O' && std::isdigit(static_cast<unsigned char>(l[1])) && std::stoi(l.substr(1)) == number)
+      if (l.size() > 1 && l[0] == 'O' && std::isdigit(static_cast<unsigned char>(l[1])) &&
+          std::stoi(l.substr(1)) == number)
         return i + 1;
     }
     return std::nullopt;
@@ -294,26 +306,40 @@ class ControlInterpreter {
     for (std::size_t k = 0; k < s.size();) {
       const char letter = s[k++];
       const double v = number(s, k, pc);
-      if (letter == 'G') g.push_back(static_cast<int>(std::lround(v * 10)));
-      else if (letter == 'M') m.push_back(static_cast<int>(std::lround(v)));
-      else w[letter] = v;
+      if (letter == 'G')
+        g.push_back(static_cast<int>(std::lround(v * 10)));
+      else if (letter == 'M')
+        m.push_back(static_cast<int>(std::lround(v)));
+      else
+        w[letter] = v;
     }
     return block(pc, w, g, m);
   }
 
   std::string offset_name(int g10, const std::map<char, double>& w) const {
     switch (g10) {
-      case 540: return "G54";
-      case 550: return "G55";
-      case 560: return "G56";
-      case 570: return "G57";
-      case 580: return "G58";
-      case 590: return "G59";
-      case 591: return "G59.1";
-      case 592: return "G59.2";
-      case 593: return "G59.3";
-      case 541: return "G54.1 P" + std::to_string(static_cast<int>(w.at('P')));
-      default: return "";
+      case 540:
+        return "G54";
+      case 550:
+        return "G55";
+      case 560:
+        return "G56";
+      case 570:
+        return "G57";
+      case 580:
+        return "G58";
+      case 590:
+        return "G59";
+      case 591:
+        return "G59.1";
+      case 592:
+        return "G59.2";
+      case 593:
+        return "G59.3";
+      case 541:
+        return "G54.1 P" + std::to_string(static_cast<int>(w.at('P')));
+      default:
+        return "";
     }
   }
   double offset(const std::string& name, char axis) {
@@ -331,13 +357,16 @@ class ControlInterpreter {
       if (!w.count(a)) continue;
       const bool active = name == active_ && !ends_.empty();  // a position to keep where the machine is
       const double machine = active || !(l == 2 || fanuc_l20) ? pos_[a] + offset(active_, a) : 0.0;
-      if (l == 2 || fanuc_l20) spec_.offsets[name][a] = w.at(a);
-      else spec_.offsets[name][a] = machine - w.at(a);
+      if (l == 2 || fanuc_l20)
+        spec_.offsets[name][a] = w.at(a);
+      else
+        spec_.offsets[name][a] = machine - w.at(a);
       if (active) pos_[a] = machine - spec_.offsets[name][a];  // the machine stays where it is
     }
   }
 
-  std::size_t block(std::size_t pc, const std::map<char, double>& w, const std::vector<int>& g, const std::vector<int>& m) {
+  std::size_t block(std::size_t pc, const std::map<char, double>& w, const std::vector<int>& g,
+                    const std::vector<int>& m) {
     bool is_g10 = false;
     for (int c : g)
       if (c == 520 || c == 920) {
@@ -350,10 +379,14 @@ class ControlInterpreter {
         return pc + 1;
       }
     for (int c : g) {
-      if (c == 0 || c == 10) motion_ = c;
-      else if (c == 900) absolute_ = true;
-      else if (c == 910) absolute_ = false;
-      else if (c == 100) is_g10 = true;
+      if (c == 0 || c == 10)
+        motion_ = c;
+      else if (c == 900)
+        absolute_ = true;
+      else if (c == 910)
+        absolute_ = false;
+      else if (c == 100)
+        is_g10 = true;
       else if (const std::string n = offset_name(c, w); !n.empty()) {
         if (!ends_.empty())  // the machine stays; before any motion there is no position to carry
           for (char a : spec_.axes) pos_[a] += offset(active_, a) - offset(n, a);
@@ -409,8 +442,8 @@ class ControlInterpreter {
   ControlSpec spec_;
   std::vector<std::string> lines_;
   std::map<int, double> params_;
-  std::map<char, double> pos_;  ///< program coordinates in the active offset
-  std::map<char, double> local_;  ///< the G52 / G92 shift
+  std::map<char, double> pos_;       ///< program coordinates in the active offset
+  std::map<char, double> local_;     ///< the G52 / G92 shift
   std::map<char, bool> programmed_;  ///< the axis has had a word
   std::string active_ = "G54";
   int motion_ = 0;

@@ -76,7 +76,8 @@ inline int compare_tips(const std::string& input, const ControlSpec& spec, const
     const V3 tip = ex.pose(words, false).tip_W;
     const std::size_t first_block = next;
     bool found = false;
-    for (; next < ex.blocks.size() && !found; ++next) found = (ex.at(ex.blocks[next], 1.0).tip_W - tip).norm() < kTipToleranceMm;
+    for (; next < ex.blocks.size() && !found; ++next)
+      found = (ex.at(ex.blocks[next], 1.0).tip_W - tip).norm() < kTipToleranceMm;
     INFO("input line " << e.line << " tip " << tip.transpose());
     CHECK(found);
     if (!found) return 0;
@@ -86,8 +87,8 @@ inline int compare_tips(const std::string& input, const ControlSpec& spec, const
         for (int k = 1; k < 16; ++k) {
           const V3 p = ex.at(ex.blocks[b], k / 16.0).tip_W;
           const double d = distance_to_input_move(ex, *previous, words, p);
-          INFO("output line " << ex.blocks[b].line << " at " << k << "/16: " << d << " mm from the input's path (allowed "
-                              << between_mm << " mm)");
+          INFO("output line " << ex.blocks[b].line << " at " << k << "/16: " << d
+                              << " mm from the input's path (allowed " << between_mm << " mm)");
           CHECK(d <= between_mm);
           if (d > between_mm) return 0;
         }

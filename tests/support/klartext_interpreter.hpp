@@ -59,7 +59,10 @@ class KlartextInterpreter {
         w >> label >> rep >> count;
         if (rep == "REP") {
           if (!repeats.count(i)) repeats[i] = count;
-          if (repeats[i]-- > 0) { i = labels_.at(label) + 1; continue; }
+          if (repeats[i]-- > 0) {
+            i = labels_.at(label) + 1;
+            continue;
+          }
           repeats.erase(i);
           ++i;
           continue;
@@ -69,7 +72,11 @@ class KlartextInterpreter {
         continue;
       }
       if (s == "LBL 0") {
-        if (!returns.empty()) { i = returns.back().first; returns.pop_back(); continue; }
+        if (!returns.empty()) {
+          i = returns.back().first;
+          returns.pop_back();
+          continue;
+        }
         ++i;
         continue;
       }
@@ -126,21 +133,26 @@ class KlartextInterpreter {
       keep_tip([&] { plane_.reset(); });
       return;
     }
-    static const std::regex spatial(R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
+    static const std::regex spatial(
+        R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
     std::smatch m;
     if (!std::regex_match(s, m, spatial)) throw std::runtime_error("the test interpreter does not read: " + s);
     const auto rad = [](const std::string& t) { return std::stod(t) * M_PI / 180.0; };
     const M3 R = (Eigen::AngleAxisd(rad(m[3]), V3::UnitZ()) * Eigen::AngleAxisd(rad(m[2]), V3::UnitY()) *
-                  Eigen::AngleAxisd(rad(m[1]), V3::UnitX())).toRotationMatrix();
+                  Eigen::AngleAxisd(rad(m[1]), V3::UnitX()))
+                     .toRotationMatrix();
     const int seq = !m[4].matched ? 0 : m[4].str() == "+" ? 1 : -1;
     for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
     keep_tip([&] { plane_ = R; });
   }
 
-  void set_rtcp(bool on) { keep_tip([&] { rtcp_ = on; }); }
+  void set_rtcp(bool on) {
+    keep_tip([&] { rtcp_ = on; });
+  }
 
   /// A change of mode keeps the machine where it is: the program's X Y Z follow.
-  template <class F> void keep_tip(F change) {
+  template <class F>
+  void keep_tip(F change) {
     const V3 tip = tip_W();
     change();
     xyz_ = program_of(tip);

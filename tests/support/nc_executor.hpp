@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An executor of written NC programs for the tests, independent of the product: its own reading
-// of the machine file (the few keys it needs, read line by line), its own forward kinematics (docs/conventions.md, "Axes and
-// chains", "Nominal closure") and its own word reader of ISO G-code as the fanuc, haas and
-// linuxcnc dialects write it. A posting test reads the *written* program with it and checks the
-// tool tip against what the CL data meant, never through the product's --verify.
+// of the machine file (the few keys it needs, read line by line), its own forward kinematics (docs/conventions.md,
+// "Axes and chains", "Nominal closure") and its own word reader of ISO G-code as the fanuc, haas and linuxcnc dialects
+// write it. A posting test reads the *written* program with it and checks the tool tip against what the CL data meant,
+// never through the product's --verify.
 //
 // Supported words: G0 G1 G2 G3 (G17 arcs by I J, K for helices not needed), G90 G91, G93 G94,
 // G43.4 / G234 / M428 (tool tip control on: X Y Z are the tip in W) and G49 / M429 (off), G81/G83 (G98/G99
@@ -64,7 +64,8 @@ struct ExecMachine {
       return out;
     };
     for (std::string line; std::getline(in, line);) {
-      if (const auto hash = line.find('#'); hash != std::string::npos && line.find('"') > hash) line = line.substr(0, hash);
+      if (const auto hash = line.find('#'); hash != std::string::npos && line.find('"') > hash)
+        line = line.substr(0, hash);
       const auto first = line.find_first_not_of(" \t\r");
       if (first == std::string::npos) continue;
       line = line.substr(first);
@@ -131,7 +132,8 @@ struct ExecJob {
 /// Forward kinematics by the conventions: T_j(q) = Trans(P_j) Rot(d_j, q) Trans(-P_j), composed
 /// from the bed outward on each side; head pivots + (0, 0, L); closure
 /// (X, Y, Z) + T_t(q) 0 = T_w(q) (origin + p), R_t e_z = R_w u.
-inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_mm, const std::map<char, double>& rotary_deg) {
+inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_mm,
+                        const std::map<char, double>& rotary_deg) {
   auto turn = [&](const ExecAxis& a, bool tool) {
     const double q = rotary_deg.count(a.letter) ? rotary_deg.at(a.letter) * M_PI / 180.0 : 0.0;
     const V3 p = a.pivot + (tool ? V3(0, 0, job.tool_length_mm) : V3::Zero());
@@ -152,14 +154,14 @@ inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_
 /// One motion block as the control reads it.
 struct ExecBlock {
   enum class Kind { rapid, linear, arc_cw, arc_ccw } kind = Kind::rapid;
-  int line = 0;              ///< line of the program text (1-based)
+  int line = 0;  ///< line of the program text (1-based)
   std::string text;
   std::map<char, double> from, to;  ///< X Y Z (mm) and rotary (deg) words in force before and after
-  V3 centre_mm = V3::Zero();  ///< arcs: the centre (program frame)
-  bool inverse_time = false;  ///< G93: `feed` is 1/minutes
+  V3 centre_mm = V3::Zero();        ///< arcs: the centre (program frame)
+  bool inverse_time = false;        ///< G93: `feed` is 1/minutes
   double feed = 0.0;
-  bool rtcp = false;          ///< X Y Z are the tip in W
-  bool from_known = true;     ///< every axis word was given before (else the start is where the machine happened to be)
+  bool rtcp = false;       ///< X Y Z are the tip in W
+  bool from_known = true;  ///< every axis word was given before (else the start is where the machine happened to be)
 };
 
 /// Reads the blocks of `text` (ISO G-code). Throws on a word it does not know.
@@ -168,7 +170,7 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
   std::map<char, double> pos{{'X', 0}, {'Y', 0}, {'Z', 0}};
   for (char c : rotary_letters) pos[c] = 0.0;
   std::map<char, bool> known;  // axes given so far
-  int motion = 0;  // 0 1 2 3
+  int motion = 0;              // 0 1 2 3
   bool absolute = true, inverse = false, rtcp = false, cycle = false, return_initial = true;
   double feed = 0.0, cycle_r = 0.0, cycle_z = 0.0;
   std::istringstream lines(text);
@@ -178,9 +180,12 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
     std::string s;
     int depth = 0;
     for (char c : raw) {  // comments out
-      if (c == '(') ++depth;
-      else if (c == ')') --depth;
-      else if (depth == 0 && c != ' ' && c != '\r') s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (c == '(')
+        ++depth;
+      else if (c == ')')
+        --depth;
+      else if (depth == 0 && c != ' ' && c != '\r')
+        s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     }
     if (s.empty() || s[0] == '%' || s[0] == 'O') continue;
     std::map<char, double> given;
@@ -194,11 +199,16 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
       while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
       if (k == start) throw std::runtime_error("line " + std::to_string(line_no) + ": no number after " + letter);
       const double v = std::stod(s.substr(start, k - start));
-      if (letter == 'G') gs.push_back(v);
-      else if (letter == 'F') feed = v, has_feed = true;
-      else if (letter == 'I') i_word = v;
-      else if (letter == 'J') j_word = v;
-      else if (letter == 'R') cycle_r = v;
+      if (letter == 'G')
+        gs.push_back(v);
+      else if (letter == 'F')
+        feed = v, has_feed = true;
+      else if (letter == 'I')
+        i_word = v;
+      else if (letter == 'J')
+        j_word = v;
+      else if (letter == 'R')
+        cycle_r = v;
       else if (letter == 'X' || letter == 'Y' || letter == 'Z' || rotary_letters.find(letter) != std::string::npos)
         given[letter] = v;
       else if (letter == 'M' && (std::lround(v) == 428 || std::lround(v) == 429))
@@ -210,18 +220,30 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
     bool starts_cycle = false, reference = false;
     for (double g : gs) {
       const int c = static_cast<int>(std::lround(g * 10));
-      if (c == 0 || c == 10 || c == 20 || c == 30) motion = c / 10, cycle = false;
-      else if (c == 900) absolute = true;
-      else if (c == 910) absolute = false;
-      else if (c == 930) inverse = true;
-      else if (c == 940) inverse = false;
-      else if (c == 434 || c == 2340) rtcp = true;
-      else if (c == 490) rtcp = false;
-      else if (c == 810 || c == 830) cycle = true, starts_cycle = true;
-      else if (c == 800) cycle = false;
-      else if (c == 980) return_initial = true;
-      else if (c == 990) return_initial = false;
-      else if (c == 280 || c == 300 || c == 530) reference = true;
+      if (c == 0 || c == 10 || c == 20 || c == 30)
+        motion = c / 10, cycle = false;
+      else if (c == 900)
+        absolute = true;
+      else if (c == 910)
+        absolute = false;
+      else if (c == 930)
+        inverse = true;
+      else if (c == 940)
+        inverse = false;
+      else if (c == 434 || c == 2340)
+        rtcp = true;
+      else if (c == 490)
+        rtcp = false;
+      else if (c == 810 || c == 830)
+        cycle = true, starts_cycle = true;
+      else if (c == 800)
+        cycle = false;
+      else if (c == 980)
+        return_initial = true;
+      else if (c == 990)
+        return_initial = false;
+      else if (c == 280 || c == 300 || c == 530)
+        reference = true;
     }
     // a reference return or a machine-coordinate move (the program's end): outside the tests' frame
     if (given.empty() || reference) continue;
@@ -258,7 +280,7 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
       pos = back;
       continue;
     }
-    const auto kind = motion == 0 ? ExecBlock::Kind::rapid
+    const auto kind = motion == 0   ? ExecBlock::Kind::rapid
                       : motion == 1 ? ExecBlock::Kind::linear
                       : motion == 2 ? ExecBlock::Kind::arc_cw
                                     : ExecBlock::Kind::arc_ccw;

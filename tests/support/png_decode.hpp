@@ -39,7 +39,9 @@ struct Huffman {
     for (int i = 0; i < n; ++i) ++count[static_cast<std::size_t>(lengths[i])];
     count[0] = 0;
     std::vector<int> offs(16, 0);
-    for (int l = 1; l < 16; ++l) offs[static_cast<std::size_t>(l)] = offs[static_cast<std::size_t>(l - 1)] + count[static_cast<std::size_t>(l - 1)];
+    for (int l = 1; l < 16; ++l)
+      offs[static_cast<std::size_t>(l)] =
+          offs[static_cast<std::size_t>(l - 1)] + count[static_cast<std::size_t>(l - 1)];
     for (int i = 0; i < n; ++i)
       if (lengths[i]) symbol[static_cast<std::size_t>(offs[static_cast<std::size_t>(lengths[i])]++)] = i;
   }
@@ -58,10 +60,13 @@ struct Huffman {
 };
 
 inline std::vector<std::uint8_t> inflate_zlib(const std::vector<std::uint8_t>& z) {
-  static const int lbase[29] = {3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+  static const int lbase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
   static const int lext[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-  static const int dbase[30] = {1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97, 129, 193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-  static const int dext[30] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+  static const int dbase[30] = {1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,   65,    97,    129,
+                                193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
+  static const int dext[30] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
+                               6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
   std::vector<std::uint8_t> out;
   BitReader r{z, 2, 0};  // skip the zlib header (CMF, FLG)
   int last = 0;
@@ -139,8 +144,10 @@ inline std::vector<std::uint8_t> inflate_zlib(const std::vector<std::uint8_t>& z
 }
 
 inline std::uint32_t be32(const std::string& s, std::size_t at) {
-  return (std::uint32_t{static_cast<std::uint8_t>(s[at])} << 24) | (std::uint32_t{static_cast<std::uint8_t>(s[at + 1])} << 16) |
-         (std::uint32_t{static_cast<std::uint8_t>(s[at + 2])} << 8) | std::uint32_t{static_cast<std::uint8_t>(s[at + 3])};
+  return (std::uint32_t{static_cast<std::uint8_t>(s[at])} << 24) |
+         (std::uint32_t{static_cast<std::uint8_t>(s[at + 1])} << 16) |
+         (std::uint32_t{static_cast<std::uint8_t>(s[at + 2])} << 8) |
+         std::uint32_t{static_cast<std::uint8_t>(s[at + 3])};
 }
 
 }  // namespace png_detail
@@ -160,7 +167,8 @@ inline Image decode_png(const std::string& file) {
       img.width = static_cast<int>(be32(file, at + 8));
       img.height = static_cast<int>(be32(file, at + 12));
       const int depth = static_cast<std::uint8_t>(file[at + 16]), colour = static_cast<std::uint8_t>(file[at + 17]);
-      if (depth != 8 || (colour != 2 && colour != 6) || file[at + 20] != 0) throw std::runtime_error("PNG: not 8-bit RGB(A)");
+      if (depth != 8 || (colour != 2 && colour != 6) || file[at + 20] != 0)
+        throw std::runtime_error("PNG: not 8-bit RGB(A)");
       channels = colour == 2 ? 3 : 4;
     } else if (type == "IDAT") {
       idat.insert(idat.end(), file.begin() + static_cast<long>(at + 8), file.begin() + static_cast<long>(at + 8 + len));
@@ -181,21 +189,32 @@ inline Image decode_png(const std::string& file) {
                 c = i >= static_cast<std::size_t>(channels) ? prev[i - channels] : 0;
       int pred = 0;
       switch (filter) {
-        case 0: pred = 0; break;
-        case 1: pred = a; break;
-        case 2: pred = b; break;
-        case 3: pred = (a + b) / 2; break;
+        case 0:
+          pred = 0;
+          break;
+        case 1:
+          pred = a;
+          break;
+        case 2:
+          pred = b;
+          break;
+        case 3:
+          pred = (a + b) / 2;
+          break;
         case 4: {
           const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
           pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
           break;
         }
-        default: throw std::runtime_error("PNG: bad filter");
+        default:
+          throw std::runtime_error("PNG: bad filter");
       }
       cur[i] = static_cast<std::uint8_t>(line[1 + i] + pred);
     }
     for (int x = 0; x < img.width; ++x)
-      for (int k = 0; k < 3; ++k) img.rgb[3 * (static_cast<std::size_t>(y) * img.width + x) + k] = cur[static_cast<std::size_t>(x) * channels + k];
+      for (int k = 0; k < 3; ++k)
+        img.rgb[3 * (static_cast<std::size_t>(y) * img.width + x) + k] =
+            cur[static_cast<std::size_t>(x) * channels + k];
     std::swap(cur, prev);
   }
   return img;

@@ -39,22 +39,25 @@ inline std::optional<double> sin_word(const std::string& line, const std::string
   for (std::size_t at = line.find(key); at != std::string::npos; at = line.find(key, at + 1)) {
     if (at > 0 && (std::isalnum(static_cast<unsigned char>(line[at - 1])) || line[at - 1] == '_')) continue;
     const std::size_t v = at + key.size();
-    if (v >= line.size() || !(std::isdigit(static_cast<unsigned char>(line[v])) || line[v] == '-' || line[v] == '.' || line[v] == '+'))
+    if (v >= line.size() ||
+        !(std::isdigit(static_cast<unsigned char>(line[v])) || line[v] == '-' || line[v] == '.' || line[v] == '+'))
       continue;
-    if (key.size() == 1 && v + 1 < line.size() && line[v] != '-' && line[v] != '.' && std::isdigit(static_cast<unsigned char>(line[v])) &&
-        line.find('=', v) != std::string::npos && line.find('=', v) < line.find(' ', v))
+    if (key.size() == 1 && v + 1 < line.size() && line[v] != '-' && line[v] != '.' &&
+        std::isdigit(static_cast<unsigned char>(line[v])) && line.find('=', v) != std::string::npos &&
+        line.find('=', v) < line.find(' ', v))
       continue;  // A3=... is not A
     return std::strtod(line.c_str() + v, nullptr);
   }
   return std::nullopt;
 }
 
-inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, const ExecMachine& m, const ExecJob& job) {
+inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, const ExecMachine& m,
+                                                      const ExecJob& job) {
   std::vector<SinumerikEnd> out;
   std::map<char, double> words{{'X', 0}, {'Y', 0}, {'Z', 0}};
   for (char c : m.rotary_letters) words[c] = 0.0;
   bool traori = false, swivel = false;
-  Rt plane;         // CYCLE800's frame
+  Rt plane;  // CYCLE800's frame
   V3 shift = V3::Zero();
   std::optional<V3> vector;
   std::istringstream in(text);
@@ -64,8 +67,10 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
     std::string line;
     bool quoted = false;  // strings ("DRILL X8.5" of T=, MSG) are no words
     for (char c : raw.substr(0, raw.find(';'))) {
-      if (c == '"') quoted = !quoted;
-      else if (!quoted) line += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (c == '"')
+        quoted = !quoted;
+      else if (!quoted)
+        line += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     }
     if (line.find("TRAORI") != std::string::npos) traori = true;
     if (line.find("TRAFOOF") != std::string::npos) traori = false;
@@ -76,10 +81,12 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
     if (const std::size_t c8 = line.find("CYCLE800("); c8 != std::string::npos) {
       std::vector<double> a;
       std::stringstream args(line.substr(c8 + 9, line.find(')') - c8 - 9));
-      for (std::string s; std::getline(args, s, ',');) a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::strtod(s.c_str(), nullptr));
+      for (std::string s; std::getline(args, s, ',');)
+        a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::strtod(s.c_str(), nullptr));
       swivel = a.size() >= 14;
       if (swivel) {
-        plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} * Rt{sin_rot(0, a[7]) * sin_rot(1, a[8]) * sin_rot(2, a[9]), V3::Zero()} *
+        plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
+                Rt{sin_rot(0, a[7]) * sin_rot(1, a[8]) * sin_rot(2, a[9]), V3::Zero()} *
                 Rt{M3::Identity(), V3(a[10], a[11], a[12])};
       }
       continue;
@@ -88,8 +95,10 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
     for (char c : std::string("XYZ") + m.rotary_letters)
       if (auto v = sin_word(line, std::string(1, c))) words[c] = *v, moved = true;
     std::optional<V3> vec;
-    if (line.find("A3=") != std::string::npos || line.find("B3=") != std::string::npos || line.find("C3=") != std::string::npos)
-      vec = V3(sin_word(line, "A3=").value_or(0), sin_word(line, "B3=").value_or(0), sin_word(line, "C3=").value_or(0)).normalized();
+    if (line.find("A3=") != std::string::npos || line.find("B3=") != std::string::npos ||
+        line.find("C3=") != std::string::npos)
+      vec = V3(sin_word(line, "A3=").value_or(0), sin_word(line, "B3=").value_or(0), sin_word(line, "C3=").value_or(0))
+                .normalized();
     if (vec) vector = vec, moved = true;
     if (!moved) continue;
     SinumerikEnd e;

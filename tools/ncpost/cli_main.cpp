@@ -29,7 +29,8 @@ int ncpost::cli::run(int argc, char** argv) {
   CLI::App app{"ncpost: five-axis CNC post-processor with nonlinear-error and geometric-error compensation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ncpost " + ncpost::version());
-  app.footer("Exit codes: 0 done, 1 usage, 2 bad input or file, 3 infeasible, 4 internal fault (README \"Exit codes\").");
+  app.footer(
+      "Exit codes: 0 done, 1 usage, 2 bad input or file, 3 infeasible, 4 internal fault (README \"Exit codes\").");
   ncpost::cli::Action action;
   ncpost::cli::add_post(app, action);
   ncpost::cli::add_preview(app, action);

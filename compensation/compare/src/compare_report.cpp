@@ -41,7 +41,8 @@ std::string trend_plot(const Comparison& c, const FigureTrend& t) {
   }
   std::vector<report::XySeries> series{s};
   if (t.tolerance && s.x.size() >= 2)
-    series.push_back({"tolerance", "#d0402b", {s.x.front(), s.x.back()}, {*t.tolerance, *t.tolerance}, {}, {}, true, false});
+    series.push_back(
+        {"tolerance", "#d0402b", {s.x.front(), s.x.back()}, {*t.tolerance, *t.tolerance}, {}, {}, true, false});
   report::XyFrame f;
   f.title = fmt::format("{} ({}) ± U, k = 2", t.name, t.unit);
   f.x_label = c.dated ? "days since the first session" : "session (undated)";
@@ -54,7 +55,8 @@ std::string trend_plot(const Comparison& c, const FigureTrend& t) {
 }  // namespace
 
 std::string compare_text(const Comparison& c) {
-  std::string o = fmt::format("comparison of {} sessions of one test: {}\n", c.sessions.size(), c.sessions.front().test);
+  std::string o =
+      fmt::format("comparison of {} sessions of one test: {}\n", c.sessions.size(), c.sessions.front().test);
   for (std::size_t k = 0; k < c.sessions.size(); ++k)
     o += fmt::format("  session {}: {}{}\n", k + 1, c.sessions[k].file,
                      c.sessions[k].date.empty() ? std::string(" (no date)") : ", " + c.sessions[k].date);
@@ -62,7 +64,8 @@ std::string compare_text(const Comparison& c) {
   for (const FigureTrend& t : c.figures) {
     o += fmt::format("  {} ({}):", t.name, t.unit);
     for (std::size_t k = 0; k < t.value.size(); ++k)
-      o += " " + value_text(t, k) + (t.verdict[k] ? fmt::format(" [{}]", to_string(*t.verdict[k])) : std::string()) + ";";
+      o += " " + value_text(t, k) + (t.verdict[k] ? fmt::format(" [{}]", to_string(*t.verdict[k])) : std::string()) +
+           ";";
     o += " " + change_text(t) + "\n";
   }
   return o;
@@ -74,7 +77,8 @@ std::string compare_html(const Comparison& c, const std::string& machine_name, c
   p.machine = machine_name + " (" + machine_file + ")";
   p.model = "none applied: each session's figures as measured (or as identified, for a model)";
   p.inputs.push_back({"machine file", machine_file});
-  for (std::size_t k = 0; k < c.sessions.size(); ++k) p.inputs.push_back({fmt::format("session {}", k + 1), c.sessions[k].file});
+  for (std::size_t k = 0; k < c.sessions.size(); ++k)
+    p.inputs.push_back({fmt::format("session {}", k + 1), c.sessions[k].file});
   p.extra.push_back({"test", escape(c.sessions.front().test)});
   std::string h = report::page_start(p) + decision_rule_note_html() +
                   "<p class=\"note\">The change from the first session to the last is proven when it exceeds its "
@@ -92,7 +96,9 @@ std::string compare_html(const Comparison& c, const std::string& machine_name, c
          escape(change_text(t)) + "</td></tr>";
   }
   h += "</table><h2>Trend</h2>";
-  if (!c.dated) h += "<p class=\"note\">Not every session gives a <code># date:</code>: the trend runs over the session number.</p>";
+  if (!c.dated)
+    h +=
+        "<p class=\"note\">Not every session gives a <code># date:</code>: the trend runs over the session number.</p>";
   h += "<div class=\"plots\">";
   for (const FigureTrend& t : c.figures) h += "<div class=\"plot\">" + trend_plot(c, t) + "</div>";
   return h + "</div>" + report::page_end();

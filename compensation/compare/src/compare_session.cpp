@@ -26,7 +26,8 @@ std::string axes_moved(const Machine& m, const MeasurementSet& s) {
 
 std::string vec_text(const Vec3d& v) { return fmt::format("({:.3f}, {:.3f}, {:.3f})", v.x(), v.y(), v.z()); }
 
-void add_circular(Session& out, const std::string& name, const report::CircularityFigures& f, const UncertaintyBudget& b) {
+void add_circular(Session& out, const std::string& name, const report::CircularityFigures& f,
+                  const UncertaintyBudget& b) {
   if (f.ok) out.figures.push_back({name, "G", "µm", f.G_um, b});
 }
 
@@ -36,7 +37,8 @@ Session ballbar_session(const Machine& m, const MeasurementSet& s) {
                          vec_text(s.table_ball_mm), vec_text(s.tool_ball_mm), axes_moved(m, s));
   const sections::BallbarFigures f = sections::ballbar_figures(m, s);
   if (!f.both.ok)
-    throw InputError({s.file, 0, 0}, "no ISO 230-4 figures: " + (f.both.message.empty() ? "fewer than 8 rows" : f.both.message));
+    throw InputError({s.file, 0, 0},
+                     "no ISO 230-4 figures: " + (f.both.message.empty() ? "fewer than 8 rows" : f.both.message));
   const UncertaintyBudget budget = circularity_budget(s, {});
   add_circular(out, "G", f.both, budget);
   if (f.both.direction == 0) {  // both directions in the file: each direction's G and the hysteresis
@@ -56,12 +58,15 @@ Session laser_session(const MeasurementSet& s) {
   const int moving = g.axis - 'X';
   std::string line;  // where the other two axes stood at the first row (with `# line:` every row agrees)
   for (int j = 0; j < 3; ++j)
-    if (j != moving) line += fmt::format("{}{} {:.3f}", line.empty() ? "" : ", ", char('X' + j), s.rows.front().command[j]);
-  out.test = fmt::format("laser positioning of {}: line at {} mm, tool point {} mm, {} targets {:.3f} … {:.3f} mm", g.axis,
-                         line, vec_text(s.tool_point_mm), g.targets.size(), g.targets.front().target_mm,
+    if (j != moving)
+      line += fmt::format("{}{} {:.3f}", line.empty() ? "" : ", ", char('X' + j), s.rows.front().command[j]);
+  out.test = fmt::format("laser positioning of {}: line at {} mm, tool point {} mm, {} targets {:.3f} … {:.3f} mm",
+                         g.axis, line, vec_text(s.tool_point_mm), g.targets.size(), g.targets.front().target_mm,
                          g.targets.back().target_mm);
-  const std::pair<char, double> figures[] = {{'A', g.accuracy_A_um},   {'B', g.reversal_B_um},
-                                             {'E', g.systematic_E_um}, {'M', g.mean_bidirectional_M_um},
+  const std::pair<char, double> figures[] = {{'A', g.accuracy_A_um},
+                                             {'B', g.reversal_B_um},
+                                             {'E', g.systematic_E_um},
+                                             {'M', g.mean_bidirectional_M_um},
                                              {'R', g.repeatability_R_um}};
   for (const auto& [kind, value] : figures)
     out.figures.push_back({std::string(1, kind), std::string(1, kind), "µm", value, iso230_2_budget(s, g, kind)});
@@ -74,8 +79,9 @@ Session session_from_set(const Machine& m, const MeasurementSet& s) {
   if (!s.has_values) throw InputError({s.file, 0, 0}, "a plan without values: nothing measured to compare");
   if (s.type == MeasurementType::ballbar) return ballbar_session(m, s);
   if (s.type == MeasurementType::laser) return laser_session(s);
-  throw InputError({s.file, 0, 0}, "sphere probing has no ISO figure to compare; compare the models identified from it "
-                                   "(MODEL.json) instead");
+  throw InputError({s.file, 0, 0},
+                   "sphere probing has no ISO figure to compare; compare the models identified from it "
+                   "(MODEL.json) instead");
 }
 
 Session session_from_model(const Machine& m, const ModelFile& model, const std::string& file) {
@@ -86,7 +92,8 @@ Session session_from_model(const Machine& m, const ModelFile& model, const std::
     const bool angle = parsed.spec && parsed.spec->is_angle();
     const double scale = angle ? 1e6 : 1e3;
     SessionFigure f{name, "", angle ? "µrad" : "µm", model.parameters.values()[i] * scale, std::nullopt};
-    if (const auto u = model.uncertainty.get(name)) f.budget = UncertaintyBudget{{{"fit", *u * scale, "the fit's standard uncertainty", true}}};
+    if (const auto u = model.uncertainty.get(name))
+      f.budget = UncertaintyBudget{{{"fit", *u * scale, "the fit's standard uncertainty", true}}};
     out.figures.push_back(f);
   }
   if (model.fit) {

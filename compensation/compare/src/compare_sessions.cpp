@@ -69,8 +69,10 @@ Comparison compare_sessions(const std::vector<Session>& sessions, const Toleranc
   c.sessions = sessions;
   for (const Session& s : sessions)
     if (s.test != sessions.front().test)
-      throw InputError({s.file, 0, 0}, fmt::format("not the same test as '{}': {} here, {} there; compare the same test "
-                                                   "before and after", sessions.front().file, s.test, sessions.front().test));
+      throw InputError({s.file, 0, 0},
+                       fmt::format("not the same test as '{}': {} here, {} there; compare the same test "
+                                   "before and after",
+                                   sessions.front().file, s.test, sessions.front().test));
   date_sessions(c);
   for (std::size_t k = 0; k < sessions.size(); ++k)
     for (const SessionFigure& f : sessions[k].figures) {

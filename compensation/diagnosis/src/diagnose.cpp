@@ -70,8 +70,9 @@ Eigen::VectorXd residual_of(const Machine& m, const std::vector<MeasurementSet>&
 
 /// The fit of `names` with `held` fixed; it starts from `start` (a fit of a model this one
 /// extends or retunes: a warm start, the same minimum in fewer iterations).
-IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets, const std::vector<std::string>& names,
-                         const ErrorParameters& held, const IdentifyOptions& base, const ErrorParameters& start = {}) {
+IdentifyResult fit_model(const Machine& m, const std::vector<MeasurementSet>& sets,
+                         const std::vector<std::string>& names, const ErrorParameters& held,
+                         const IdentifyOptions& base, const ErrorParameters& start = {}) {
   IdentifyOptions o = base;
   for (std::size_t i = 0; i < held.size(); ++i) o.fixed.set(held.names()[i], held.values()[i]);
   for (std::size_t i = 0; i < start.size(); ++i)
@@ -137,12 +138,14 @@ void retune_drift(const Machine& m, const std::vector<MeasurementSet>& sets, con
       const double r = sum_of_squares(refined.fit, count);
       if (refined.fit.converged && r < chosen_ssr) chosen = std::move(refined), chosen_ssr = r;
     }
-    if (chosen.fit.converged && chosen.fit.identifiability.pinned == model.fit.identifiability.pinned) model = std::move(chosen);
+    if (chosen.fit.converged && chosen.fit.identifiability.pinned == model.fit.identifiability.pinned)
+      model = std::move(chosen);
   }
 }
 
 /// Sets the size of an added effect; returns why it is not plausible (empty if it is).
-std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o, AddedEffect& e) {
+std::string apply_size(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseOptions& o,
+                       AddedEffect& e) {
   const EffectSize size = effect_size(m, sets, e.candidate, e.values, e.uncertainty, o.plausible);
   e.size = size.size;
   e.size_sigma = size.sigma;
@@ -195,7 +198,9 @@ void alias_evidence(const Eigen::MatrixXd& J, const Eigen::MatrixXd& Q, const Ei
     const Eigen::MatrixXd P = basis_of(J, pair);
     const Eigen::MatrixXd p_off = P - Q * (Q.transpose() * P);
     const Eigen::MatrixXd QP = range_of(p_off);
-    const double r = QP.cols() && QE.cols() ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff() : 0.0;
+    const double r = QP.cols() && QE.cols()
+                         ? Eigen::JacobiSVD<Eigen::MatrixXd>(QE.transpose() * QP).singularValues().maxCoeff()
+                         : 0.0;
     if (r > 0.5) e.alias_of.push_back(fmt::format("{} ({:.2f})", names[k], r));
   }
 }
@@ -204,24 +209,30 @@ void alias_evidence(const Eigen::MatrixXd& J, const Eigen::MatrixXd& Q, const Ei
 /// order, an alias of the model, or real.
 std::string separation_text(const AddedEffect& e, bool has_alternatives) {
   std::string with;
-  for (const auto& [n, rho] : e.correlated) with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
+  for (const auto& [n, rho] : e.correlated)
+    with += fmt::format("{}{} (correlation {:.3f})", with.empty() ? "" : ", ", n, rho);
   std::string alts;
   for (const auto& n : e.alias_of) alts += (alts.empty() ? "" : ", ") + n;
   if (e.alias_correlation > 0.99)
-    return fmt::format("an alias of {}: what it explains, the same order of the other components explains as "
-                       "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
-                       "them apart — measure from a second sphere position (another height and radius)",
-                       alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
+    return fmt::format(
+        "an alias of {}: what it explains, the same order of the other components explains as "
+        "well (canonical correlation {:.4f} off the rest of the model); the data cannot tell "
+        "them apart — measure from a second sphere position (another height and radius)",
+        alts.empty() ? "the other components of its order" : alts, e.alias_correlation);
   if (e.separation_sine < 0.05)
-    return fmt::format("an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
-                       "cannot separate it", with.empty() ? " of the model" : " of " + with, e.separation_sine);
-  return fmt::format("real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
-                     "(F = {:.4g})", e.separation_sine, with.empty() ? "" : "; correlated with " + with,
-                     !has_alternatives ? std::string()
-                                       : fmt::format("; the other components of its order reproduce it only to "
-                                                     "canonical correlation {:.4f}{}", e.alias_correlation,
-                                                     alts.empty() ? "" : " (" + alts + ")"),
-                     e.f_statistic);
+    return fmt::format(
+        "an alias{}: its columns lie within sine {:.3f} of the rest of the model, the data "
+        "cannot separate it",
+        with.empty() ? " of the model" : " of " + with, e.separation_sine);
+  return fmt::format(
+      "real: separable from the rest of the model (sine {:.3f}){}{}, significant on its own "
+      "(F = {:.4g})",
+      e.separation_sine, with.empty() ? "" : "; correlated with " + with,
+      !has_alternatives ? std::string()
+                        : fmt::format("; the other components of its order reproduce it only to "
+                                      "canonical correlation {:.4f}{}",
+                                      e.alias_correlation, alts.empty() ? "" : " (" + alts + ")"),
+      e.f_statistic);
 }
 
 /// Whether the data can tell each added effect from the rest of the final model (issue 17):
@@ -255,7 +266,8 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
       bool usable = true;
       for (const char* part : {":cos", ":sin"}) {
         const std::string n = alt + part;
-        if (std::find(names.begin(), names.begin() + static_cast<long>(model_names), n) != names.begin() + static_cast<long>(model_names) ||
+        if (std::find(names.begin(), names.begin() + static_cast<long>(model_names), n) !=
+                names.begin() + static_cast<long>(model_names) ||
             !parse_parameter_name(n, m).spec)
           usable = false;
       }
@@ -279,7 +291,8 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
   auto columns_of = [&](const Candidate& c) {
     std::vector<int> cols;
     for (std::size_t j = 0; j < fitted.size(); ++j)
-      if (std::find(c.parameters.begin(), c.parameters.end(), names[static_cast<std::size_t>(fitted[j])]) != c.parameters.end())
+      if (std::find(c.parameters.begin(), c.parameters.end(), names[static_cast<std::size_t>(fitted[j])]) !=
+          c.parameters.end())
         cols.push_back(static_cast<int>(j));
     return cols;
   };
@@ -306,7 +319,6 @@ void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets,
     e.separation = separation_text(e, !alternatives[a].empty());
   }
 }
-
 
 /// Step 1 of diagnose(): the candidates screened at the current solution (linearised), sorted by
 /// the drop in Σr² they buy, those that act alike on the data merged into one class.
@@ -384,10 +396,12 @@ ScreenStep screen_step(const Machine& m, const std::vector<MeasurementSet>& sets
     s.candidate = static_cast<int>(c);
     s.spec = catalogue[c];
     Eigen::MatrixXd C(count, static_cast<Eigen::Index>(cand_columns[c].size()));
-    for (std::size_t j = 0; j < cand_columns[c].size(); ++j) C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
+    for (std::size_t j = 0; j < cand_columns[c].size(); ++j)
+      C.col(static_cast<Eigen::Index>(j)) = J.col(cand_columns[c][j]);
     int aliased = -1;
     if (s.spec.kind == CandidateKind::drift) {
-      const DriftScreen drift = screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
+      const DriftScreen drift =
+          screen_drift(s.spec.effect, Q, C.col(0), r, times, t_span, o.alias_tolerance, o.significance);
       aliased = drift.aliased ? 0 : -1;
       s.spec.parameters = drift.parameters;
       s.spec.held = drift.held;
@@ -417,8 +431,9 @@ struct WeighStep {
   Model model;
 };
 
-WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model, const ScreenStep& step,
-                     const DiagnoseOptions& o, double alpha, Eigen::Index count, std::vector<RejectedEffect>& rejected) {
+WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
+                     const ScreenStep& step, const DiagnoseOptions& o, double alpha, Eigen::Index count,
+                     std::vector<RejectedEffect>& rejected) {
   const std::vector<Screened>& screened = step.screened;
   const int tested = step.tested;
   const double s0 = step.s0;
@@ -430,7 +445,8 @@ WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, 
     ++refits;
     Model trial = model;
     for (const auto& p : s.spec.parameters) trial.names.push_back(p);
-    for (std::size_t h = 0; h < s.spec.held.size(); ++h) trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
+    for (std::size_t h = 0; h < s.spec.held.size(); ++h)
+      trial.held.set(s.spec.held.names()[h], s.spec.held.values()[h]);
     trial.fit = fit_model(m, sets, trial.names, trial.held, o.identify, model.fit.parameters);
     RejectedEffect rej{s.spec.effect, trial.fit.rms_after_um, 1.0, {}};
     const double s1 = sum_of_squares(trial.fit, count);
@@ -462,7 +478,8 @@ WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, 
     // noise (no structure left against any rotary axis); otherwise it is only the closest-
     // looking term to an effect the catalogue does not hold (issue 17)
     if (why.empty() && s.spec.kind == CandidateKind::instrument) {
-      const MeasurementType type = s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
+      const MeasurementType type =
+          s.spec.effect == "ballbar:length" ? MeasurementType::ballbar : MeasurementType::sphere;
       const auto left = residual_structure(m, sets, residual_of(m, sets, trial, o.identify), o.significance, &type);
       if (!left.empty())
         why = fmt::format("its own signature is not shown: with it, {} {} against {} still has structure ({})",
@@ -487,7 +504,8 @@ WeighStep weigh_step(const Machine& m, const std::vector<MeasurementSet>& sets, 
       best = e;
       best_model = trial;
     } else {
-      rejected.push_back({e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
+      rejected.push_back(
+          {e.candidate.effect, e.rms_after_um, e.p_value, "explains less than " + best->candidate.effect});
     }
   }
   return {std::move(best), std::move(best_model)};
@@ -522,12 +540,14 @@ void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet
       cols.push_back(static_cast<int>(std::find(fitted.begin(), fitted.end(), p) - fitted.begin()));
       beta[static_cast<Eigen::Index>(j)] = model.fit.parameters.value_or(p, 0.0);
     }
-    const bool all_fitted = std::all_of(cols.begin(), cols.end(), [&](int c) { return c < static_cast<int>(fitted.size()); });
+    const bool all_fitted =
+        std::all_of(cols.begin(), cols.end(), [&](int c) { return c < static_cast<int>(fitted.size()); });
     const OwnEvidence ev = all_fitted ? own_evidence(J, r, cols, beta, nuisance) : OwnEvidence{};
     const double alpha = o.significance / std::max(1, e.tested);
     const bool own = ev.separation > o.alias_tolerance && ev.p_value < alpha;
-    say(fmt::format("{} beside the unexplained structure: separation {:.3g}, F = {:.4g}, p = {:.3g} (needs < {:.3g}): {}",
-                    e.candidate.effect, ev.separation, ev.f_statistic, ev.p_value, alpha, own ? "kept" : "not attributed"));
+    say(fmt::format(
+        "{} beside the unexplained structure: separation {:.3g}, F = {:.4g}, p = {:.3g} (needs < {:.3g}): {}",
+        e.candidate.effect, ev.separation, ev.f_statistic, ev.p_value, alpha, own ? "kept" : "not attributed"));
     if (own) {
       kept.push_back(e);
     } else {
@@ -536,17 +556,19 @@ void attribute_with_structure(const Machine& m, const std::vector<MeasurementSet
     }
   }
   if (dropped.empty()) return;
-  out.stop_reason += fmt::format("; structure remains that no candidate explains ({} {} against {}: {}); {} not attributed "
-                                 "(no evidence of {} own once that structure is absorbed)",
-                                 left.front().file, left.front().value, left.front().axis, left.front().shape, dropped,
-                                 out.not_attributed.size() == 1 ? "its" : "their");
+  out.stop_reason += fmt::format(
+      "; structure remains that no candidate explains ({} {} against {}: {}); {} not attributed "
+      "(no evidence of {} own once that structure is absorbed)",
+      left.front().file, left.front().value, left.front().axis, left.front().shape, dropped,
+      out.not_attributed.size() == 1 ? "its" : "their");
   say("not attributed: " + dropped);
   out.added = std::move(kept);
   Model refit{basic_names, {}, out.basic};
   for (const auto& e : out.added) {
     for (const auto& p : e.candidate.parameters) refit.names.push_back(p);
     for (std::size_t h = 0; h < e.candidate.held.size(); ++h)
-      refit.held.set(e.candidate.held.names()[h], model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
+      refit.held.set(e.candidate.held.names()[h],
+                     model.held.value_or(e.candidate.held.names()[h], e.candidate.held.values()[h]));
   }
   if (!out.added.empty()) refit.fit = fit_model(m, sets, refit.names, refit.held, o.identify, model.fit.parameters);
   if (!refit.fit.converged) refit = Model{basic_names, {}, out.basic}, out.added.clear();
@@ -651,10 +673,11 @@ DiagnoseResult diagnose(const Machine& m, const std::vector<MeasurementSet>& set
     const int tested = step.tested;
     if (!best) {
       out.stop_reason = screened.empty() || screened.front().p_linear >= alpha
-                            ? fmt::format("no candidate explains a significant part of the residual (best: {}, p = {:.3g}; "
-                                          "needs < {:.3g})",
-                                          screened.empty() ? "none" : screened.front().spec.effect,
-                                          screened.empty() ? 1.0 : screened.front().p_linear, alpha)
+                            ? fmt::format(
+                                  "no candidate explains a significant part of the residual (best: {}, p = {:.3g}; "
+                                  "needs < {:.3g})",
+                                  screened.empty() ? "none" : screened.front().spec.effect,
+                                  screened.empty() ? 1.0 : screened.front().p_linear, alpha)
                             : "no significant candidate is identifiable and plausible";
       break;
     }

@@ -8,7 +8,8 @@
 
 namespace ncpost::comp {
 
-Eigen::MatrixXd structure_nuisance(const std::vector<MeasurementSet>& sets, const std::vector<ResidualStructure>& columns,
+Eigen::MatrixXd structure_nuisance(const std::vector<MeasurementSet>& sets,
+                                   const std::vector<ResidualStructure>& columns,
                                    const std::vector<ResidualStructure>& left, Eigen::Index count) {
   std::vector<Eigen::Index> offset(sets.size() + 1, 0);
   for (std::size_t i = 0; i < sets.size(); ++i)

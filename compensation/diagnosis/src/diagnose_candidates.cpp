@@ -123,8 +123,11 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
   if (has_type(sets, MeasurementType::ballbar))
     add({"ballbar:length", CandidateKind::instrument, {"ballbar:length"}, {}, true});
   if (has_type(sets, MeasurementType::sphere))
-    add({"sphere:position", CandidateKind::instrument,
-         {"sphere:position:x", "sphere:position:y", "sphere:position:z"}, {}, true});
+    add({"sphere:position",
+         CandidateKind::instrument,
+         {"sphere:position:x", "sphere:position:y", "sphere:position:z"},
+         {},
+         true});
   // location errors of a rotary axis that change with the rotary axis carrying it (a tilt of C on a
   // cradle that sags with A, issue 17): degree 1 and 2 in the carrier's command, where the data
   // move the carrier

@@ -40,7 +40,8 @@ EffectSize effect_size(const Machine& m, const std::vector<MeasurementSet>& sets
       } else {
         // a polynomial over its axis's travel; a coupled location error over the carrier's range
         const int by = spec.kind == ParameterKind::coupled ? spec.coupled_axis_index : spec.axis_index;
-        const double reach = std::pow(std::max(spec.kind == ParameterKind::coupled ? 0.0 : 1.0, command_range(sets, by)), spec.order);
+        const double reach =
+            std::pow(std::max(spec.kind == ParameterKind::coupled ? 0.0 : 1.0, command_range(sets, by)), spec.order);
         e.size = std::abs(v(0)) * reach;
         e.sigma = u(0) * reach;
       }
@@ -59,7 +60,8 @@ EffectSize effect_size(const Machine& m, const std::vector<MeasurementSet>& sets
     case CandidateKind::drift: {
       const double tau = values.value_or(c.effect + ":tau", 600.0);
       const double lin = values.value_or(c.effect + ":lin", 0.0), amp = values.value_or(c.effect + ":exp", 0.0);
-      const double u_lin = uncertainty.value_or(c.effect + ":lin", 0.0), u_amp = uncertainty.value_or(c.effect + ":exp", 0.0);
+      const double u_lin = uncertainty.value_or(c.effect + ":lin", 0.0),
+                   u_amp = uncertainty.value_or(c.effect + ":exp", 0.0);
       double largest = 0.0, t_end = 0.0;
       for (const auto& s : sets)
         for (const auto& row : s.rows) {
@@ -82,9 +84,9 @@ EffectSize effect_size(const Machine& m, const std::vector<MeasurementSet>& sets
   }
   if (e.is_angle) limit = o.angle_rad;
   if (e.implausible.empty() && std::abs(e.size) > limit)
-    e.implausible = fmt::format("size {:.4g} {} is beyond the plausible {:.4g}", e.size, e.is_angle ? "rad" : "mm", limit);
+    e.implausible =
+        fmt::format("size {:.4g} {} is beyond the plausible {:.4g}", e.size, e.is_angle ? "rad" : "mm", limit);
   return e;
 }
-
 
 }  // namespace ncpost::comp

@@ -82,8 +82,10 @@ DriftScreen screen_drift(const std::string& effect, const Eigen::MatrixXd& Q, co
   auto refine = [&](const std::vector<double>& drops, Fit& best, bool with_lin) {
     const auto it = std::max_element(drops.begin(), drops.end());
     const int k = static_cast<int>(it - drops.begin());
-    if (k == 0 || k == grid || drops[static_cast<std::size_t>(k - 1)] < 0 || drops[static_cast<std::size_t>(k + 1)] < 0) return;
-    const double a = drops[static_cast<std::size_t>(k - 1)], b = drops[static_cast<std::size_t>(k)], c = drops[static_cast<std::size_t>(k + 1)];
+    if (k == 0 || k == grid || drops[static_cast<std::size_t>(k - 1)] < 0 || drops[static_cast<std::size_t>(k + 1)] < 0)
+      return;
+    const double a = drops[static_cast<std::size_t>(k - 1)], b = drops[static_cast<std::size_t>(k)],
+                 c = drops[static_cast<std::size_t>(k + 1)];
     const double den = a - 2.0 * b + c;
     if (!(den < 0.0)) return;
     const double shift = 0.5 * (a - c) / den;
@@ -117,6 +119,5 @@ DriftScreen screen_drift(const std::string& effect, const Eigen::MatrixXd& Q, co
   }
   return out;
 }
-
 
 }  // namespace ncpost::comp

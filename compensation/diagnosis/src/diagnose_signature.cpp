@@ -36,9 +36,12 @@ std::vector<double> column_um(const MeasurementSet& s, const Eigen::VectorXd& r,
 
 std::string value_name(const MeasurementSet& set, int value) {
   switch (set.type) {
-    case MeasurementType::ballbar: return "L";
-    case MeasurementType::sphere: return std::string("d") + char('x' + value);
-    case MeasurementType::laser: return "e_um";
+    case MeasurementType::ballbar:
+      return "L";
+    case MeasurementType::sphere:
+      return std::string("d") + char('x' + value);
+    case MeasurementType::laser:
+      return "e_um";
   }
   return "?";
 }
@@ -78,7 +81,8 @@ ResidualSignature residual_signature(const Machine& m, const std::vector<Measure
         }
         const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
         SpectrumLine line{s.file, v, m.axes[static_cast<std::size_t>(index)].letter, {}};
-        for (int h = 1; h <= 4; ++h) line.amplitude_um[static_cast<std::size_t>(h - 1)] = std::hypot(c[2 * h - 1], c[2 * h]);
+        for (int h = 1; h <= 4; ++h)
+          line.amplitude_um[static_cast<std::size_t>(h - 1)] = std::hypot(c[2 * h - 1], c[2 * h]);
         sig.spectrum.push_back(line);
       }
       // direction of the last motion of each axis
@@ -86,7 +90,8 @@ ResidualSignature residual_signature(const Machine& m, const std::vector<Measure
         std::vector<double> d(rows, 1.0);
         bool up = false, down = false;
         for (std::size_t i = 1; i < rows; ++i) {
-          const double step = s.rows[i].command[static_cast<int>(index)] - s.rows[i - 1].command[static_cast<int>(index)];
+          const double step =
+              s.rows[i].command[static_cast<int>(index)] - s.rows[i - 1].command[static_cast<int>(index)];
           d[i] = step > 1e-12 ? 1.0 : step < -1e-12 ? -1.0 : d[i - 1];
           up = up || step > 1e-12;
           down = down || step < -1e-12;

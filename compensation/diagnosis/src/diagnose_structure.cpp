@@ -100,8 +100,9 @@ void describe(ResidualStructure& s, const std::vector<double>& centres, const st
           ++width;
         }
       const double wide = width * 360.0 / double(g);
-      s.shape = wide <= 120.0 ? fmt::format("local: {:.2f} µm at {} {:.0f}°, about {:.0f}° wide", peak, axis, s.at_deg, wide)
-                              : fmt::format("irregular over the turn of {} (largest {:.2f} µm at {:.0f}°)", axis, peak, s.at_deg);
+      s.shape = wide <= 120.0
+                    ? fmt::format("local: {:.2f} µm at {} {:.0f}°, about {:.0f}° wide", peak, axis, s.at_deg, wide)
+                    : fmt::format("irregular over the turn of {} (largest {:.2f} µm at {:.0f}°)", axis, peak, s.at_deg);
     }
     const double finer = std::max(1.0, std::floor(std::max(sampling.coarsest_gap_deg, gap) / 2.0));
     s.proposal = fmt::format(
@@ -121,12 +122,13 @@ void describe(ResidualStructure& s, const std::vector<double>& centres, const st
     for (std::size_t j = 0; j < g; ++j)
       if (counts[j] > 0) lo = std::min(lo, centres[j]), hi = std::max(hi, centres[j]);
     const double explained = var > 0 ? slope * slope * (sxx / n - (sx / n) * (sx / n)) / var : 0.0;
-    s.shape = explained >= 0.7 ? fmt::format("grows with {}: {:.2f} µm over {:.0f}…{:.0f}°", axis, slope * (hi - lo), lo, hi)
-                               : fmt::format("varies with {} (largest {:.2f} µm at {:.0f}°)", axis, peak, s.at_deg);
+    s.shape = explained >= 0.7
+                  ? fmt::format("grows with {}: {:.2f} µm over {:.0f}…{:.0f}°", axis, slope * (hi - lo), lo, hi)
+                  : fmt::format("varies with {} (largest {:.2f} µm at {:.0f}°)", axis, peak, s.at_deg);
     s.proposal = fmt::format(
         "measure at more levels of {} (every {:.0f}°) with the other rotary axis turned at each, from two sphere "
-        "positions: an error of one axis that changes with {} is not in the catalogue", axis,
-        std::max(1.0, std::floor((hi - lo) / std::max(2.0 * (n - 1), 1.0))), axis);
+        "positions: an error of one axis that changes with {} is not in the catalogue",
+        axis, std::max(1.0, std::floor((hi - lo) / std::max(2.0 * (n - 1), 1.0))), axis);
   }
 }
 
@@ -169,7 +171,8 @@ std::vector<ResidualStructure> residual_columns(const Machine& m, const std::vec
         double ssb = 0.0, ssw = 0.0;
         int used = 0;
         for (std::size_t j = 0; j < g; ++j)
-          if (counts[j] > 0) means[j] = sum[j] / counts[j], ssb += counts[j] * (means[j] - grand) * (means[j] - grand), ++used;
+          if (counts[j] > 0)
+            means[j] = sum[j] / counts[j], ssb += counts[j] * (means[j] - grand) * (means[j] - grand), ++used;
         for (std::size_t i = 0; i < rows; ++i) {
           const double y = 1e3 * r[here + static_cast<Eigen::Index>(i) * nv + v];
           const double d = y - means[static_cast<std::size_t>(key[i])];
@@ -229,12 +232,15 @@ std::vector<ResidualStructure> residual_columns(const Machine& m, const std::vec
       st.f_statistic = 2.0 / std::max(eta, 1e-9);
       st.p_value = 0.5 * std::erfc(z / std::sqrt(2.0));
       st.spread_um = std::sqrt(ss / n);
-      st.shape = fmt::format("smooth along the path, with {} together and not with one alone (successive differences: "
-                             "von Neumann ratio {:.2f}, 2 for noise; rms {:.2f} µm)",
-                             moving.empty() ? std::string("the axes") : moving, eta, st.spread_um);
-      st.proposal = fmt::format("measure one axis at several fixed positions of the other ({} at each level): an error "
-                                "of one axis that changes with another is not in the catalogue beyond EA0C:A:p1-like "
-                                "location terms", moving.empty() ? std::string("the axes") : moving);
+      st.shape = fmt::format(
+          "smooth along the path, with {} together and not with one alone (successive differences: "
+          "von Neumann ratio {:.2f}, 2 for noise; rms {:.2f} µm)",
+          moving.empty() ? std::string("the axes") : moving, eta, st.spread_um);
+      st.proposal = fmt::format(
+          "measure one axis at several fixed positions of the other ({} at each level): an error "
+          "of one axis that changes with another is not in the catalogue beyond EA0C:A:p1-like "
+          "location terms",
+          moving.empty() ? std::string("the axes") : moving);
       st.set_index = static_cast<std::size_t>(&s - sets.data());
       st.value_index = v;
       for (std::size_t i = 0; i < rows; ++i) st.group_of_row.push_back(static_cast<int>(i / 10));
@@ -249,8 +255,9 @@ std::vector<ResidualStructure> residual_structure(const Machine& m, const std::v
                                                   const MeasurementType* only_type) {
   std::vector<ResidualStructure> found = residual_columns(m, sets, r, only_type);
   const double alpha = significance / std::max<double>(double(found.size()), 1.0);
-  found.erase(std::remove_if(found.begin(), found.end(), [&](const ResidualStructure& s) { return !(s.p_value < alpha); }),
-              found.end());
+  found.erase(
+      std::remove_if(found.begin(), found.end(), [&](const ResidualStructure& s) { return !(s.p_value < alpha); }),
+      found.end());
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.f_statistic > b.f_statistic; });
   return found;
 }

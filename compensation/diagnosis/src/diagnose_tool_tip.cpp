@@ -44,9 +44,9 @@ std::string PoseRegion::description(const Machine& m) const {
     const Axis& a = m.axes[i];
     const double k = a.is_rotary() ? 180.0 / kPi : 1.0;
     const char* unit = a.is_rotary() ? "°" : " mm";
-    out += (out.empty() ? "" : ", ") +
-           (one_position(a, lo[i], hi[i]) ? fmt::format("{} {:g}{} only", a.letter, lo[i] * k, unit)
-                                          : fmt::format("{} {:g} … {:g}{}", a.letter, lo[i] * k, hi[i] * k, unit));
+    out += (out.empty() ? "" : ", ") + (one_position(a, lo[i], hi[i])
+                                            ? fmt::format("{} {:g}{} only", a.letter, lo[i] * k, unit)
+                                            : fmt::format("{} {:g} … {:g}{}", a.letter, lo[i] * k, hi[i] * k, unit));
   }
   return out;
 }
@@ -107,7 +107,8 @@ ToolTipComparison compare_tool_tip(const Machine& m, const ErrorParameters& fina
     if (with_sigma) {
       Eigen::MatrixXd J(3, n);
       for (Eigen::Index i = 0; i < n; ++i)
-        J.col(i) = (stepped[static_cast<std::size_t>(i)]->tool_pose(q, setup).tip_mm - pa.tip_mm) / step[static_cast<std::size_t>(i)];
+        J.col(i) = (stepped[static_cast<std::size_t>(i)]->tool_pose(q, setup).tip_mm - pa.tip_mm) /
+                   step[static_cast<std::size_t>(i)];
       const double s = 1e3 * std::sqrt(std::max(0.0, (J * final_covariance * J.transpose()).trace()));
       c.final_sigma_max_um = std::max(c.final_sigma_max_um, s);
       sum_s += s * s;

@@ -82,10 +82,9 @@ std::optional<ActualIkOutcome> fixed_point(const MachineModel& model, const ClPo
     }
     // after a step q solves the previous target nominally, so the nominal pose is that target;
     // evaluated all the same (the IK is exact to ~1e-12 mm), except at a guess known to solve a point
-    const ToolPoseT<double> nominal =
-        out.iterations == 0 && o.guess_solves
-            ? ToolPoseT<double>{o.guess_solves->tip_mm, o.guess_solves->axis.normalized()}
-            : forward(m, q, setup);
+    const ToolPoseT<double> nominal = out.iterations == 0 && o.guess_solves
+                                          ? ToolPoseT<double>{o.guess_solves->tip_mm, o.guess_solves->axis.normalized()}
+                                          : forward(m, q, setup);
     ClPoint target;
     target.tip_mm = cl.tip_mm - (actual.tip_mm - nominal.tip_mm);
     target.axis = (u - (actual.axis - nominal.axis)).normalized();
@@ -103,8 +102,8 @@ namespace {
 
 /// Newton–Gauss on the commands; `state_of(q)` gives the reversal offsets at command q.
 template <class StateOf>
-ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup& setup,
-                       const AxisPosition& guess, const ActualIkOptions& o, const StateOf& state_of) {
+ActualIkOutcome newton(const MachineModel& model, const ClPoint& cl, const Setup& setup, const AxisPosition& guess,
+                       const ActualIkOptions& o, const StateOf& state_of) {
   const Machine& m = model.machine();
   const int n = 3 + m.rotary_count();
   const Vec3d u = cl.axis.normalized();
@@ -168,9 +167,15 @@ RowState<double> held_on(const PerAxis<PlaySide>& side, const AxisPosition& prev
   for (int a = 0; a < kMaxAxes; ++a) {
     const double far = 1e9;  // beyond any band: the clamp picks the edge of the side
     switch (side[static_cast<std::size_t>(a)]) {
-      case PlaySide::rising: from[static_cast<std::size_t>(a)] = -far; break;
-      case PlaySide::falling: from[static_cast<std::size_t>(a)] = far; break;
-      case PlaySide::standing: from[static_cast<std::size_t>(a)] = previous_actual[a]; break;
+      case PlaySide::rising:
+        from[static_cast<std::size_t>(a)] = -far;
+        break;
+      case PlaySide::falling:
+        from[static_cast<std::size_t>(a)] = far;
+        break;
+      case PlaySide::standing:
+        from[static_cast<std::size_t>(a)] = previous_actual[a];
+        break;
     }
   }
   s.previous_actual = from;
@@ -209,7 +214,8 @@ ActualIkOutcome solve_with_play(const MachineModel& model, const ClPoint& cl, co
                                 const AxisPosition& nominal_guess, const ActualIkOptions& o) {
   const int n = 3 + model.machine().rotary_count();
   const AxisPosition& from = *o.previous_actual;
-  ActualIkOutcome free = newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
+  ActualIkOutcome free =
+      newton(model, cl, setup, nominal_guess, o, [](const AxisPosition&) { return RowState<double>{}; });
   if (!free.ok()) return free;
   std::vector<int> play_axes;
   PerAxis<PlaySide> implied{};

@@ -23,8 +23,8 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
       case ParameterKind::polynomial:
       case ParameterKind::coupled:
         axis_terms_[static_cast<std::size_t>(s.axis_index)].push_back(i);
-        command_dependent_ = command_dependent_ || s.kind == ParameterKind::harmonic || s.kind == ParameterKind::polynomial ||
-                             s.kind == ParameterKind::coupled;
+        command_dependent_ = command_dependent_ || s.kind == ParameterKind::harmonic ||
+                             s.kind == ParameterKind::polynomial || s.kind == ParameterKind::coupled;
         coupled_ = coupled_ || s.kind == ParameterKind::coupled;
         break;
       case ParameterKind::table: {
@@ -32,7 +32,8 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
         const double at = s.periodic ? s.at_rad : s.at_mm;  // rotary: rad, round the turn
         for (const auto& node : nodes)
           if (std::abs(node.first - at) < 1e-9)
-            throw std::invalid_argument(n + ": a node at this position is given twice (" + specs_[static_cast<std::size_t>(node.second)].name + ")");
+            throw std::invalid_argument(n + ": a node at this position is given twice (" +
+                                        specs_[static_cast<std::size_t>(node.second)].name + ")");
         nodes.emplace_back(at, i);
         if (s.periodic) periodic_[static_cast<std::size_t>(s.axis_index)] = true;
         std::sort(nodes.begin(), nodes.end());
@@ -43,9 +44,15 @@ ModelLayout::ModelLayout(const Machine& m, const std::vector<std::string>& names
         reversal_[static_cast<std::size_t>(s.axis_index)] = i;
         command_dependent_ = true;
         break;
-      case ParameterKind::drift: drift_terms_.push_back(i); break;
-      case ParameterKind::ballbar_length: ballbar_length_ = i; break;
-      case ParameterKind::sphere_position: sphere_position_[static_cast<std::size_t>(s.component)] = i; break;
+      case ParameterKind::drift:
+        drift_terms_.push_back(i);
+        break;
+      case ParameterKind::ballbar_length:
+        ballbar_length_ = i;
+        break;
+      case ParameterKind::sphere_position:
+        sphere_position_[static_cast<std::size_t>(s.component)] = i;
+        break;
     }
   }
   // Drift rides on the linear axis nearest the bed: its translation moves its whole side.

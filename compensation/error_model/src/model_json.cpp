@@ -39,11 +39,13 @@ SourcePosition position_of_key(const std::string& text, const std::string& key, 
 
 ErrorParameters read_parameters(const ordered_json& obj, const std::string& what, const std::string& text,
                                 const std::string& file, const Machine* machine) {
-  if (!obj.is_object()) throw InputError(position_of_key(text, what, file), fmt::format("'{}' must be an object name → number", what));
+  if (!obj.is_object())
+    throw InputError(position_of_key(text, what, file), fmt::format("'{}' must be an object name → number", what));
   ErrorParameters p;
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     const SourcePosition at = position_of_key(text, it.key(), file);
-    if (!it.value().is_number()) throw InputError(at, fmt::format("{}: the value of '{}' must be a number (mm or rad)", what, it.key()));
+    if (!it.value().is_number())
+      throw InputError(at, fmt::format("{}: the value of '{}' must be a number (mm or rad)", what, it.key()));
     const double v = it.value().get<double>();
     if (!std::isfinite(v)) throw InputError(at, fmt::format("{}: '{}' is not finite", what, it.key()));
     if (machine) {
@@ -70,11 +72,13 @@ void check_for_machine(ModelFile& m, const std::string& text, const std::string&
   std::vector<InputError> problems;
   if (m.machine != machine.name)
     problems.emplace_back(
-        position_of_key(text, "machine", file).line > 0 ? position_of_key(text, "machine", file) : SourcePosition{file, 1, 1},
+        position_of_key(text, "machine", file).line > 0 ? position_of_key(text, "machine", file)
+                                                        : SourcePosition{file, 1, 1},
         m.machine.empty()
-            ? fmt::format("the model names no machine (key \"machine\"); it may be of another machine than '{}': "
-                          "identify it on this machine, or add \"machine\": \"{}\" if it is (--force applies it anyway)",
-                          machine.name, machine.name)
+            ? fmt::format(
+                  "the model names no machine (key \"machine\"); it may be of another machine than '{}': "
+                  "identify it on this machine, or add \"machine\": \"{}\" if it is (--force applies it anyway)",
+                  machine.name, machine.name)
             : fmt::format("the model is of machine '{}', not '{}': its errors are another machine's; identify this "
                           "machine or give its model (--force applies it anyway)",
                           m.machine, machine.name));
@@ -127,60 +131,63 @@ ModelFile parse_model_json(const std::string& text, const std::string& file, con
   ModelFile m;
   std::string key;  // the key being read, for a message on a value of the wrong type
   try {
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string& k = it.key();
-    key = k;
-    const auto& v = it.value();
-    if (k == "machine") {
-      if (!v.is_string()) throw InputError(position_of_key(text, k, file), "'machine' must be a string");
-      m.machine = v.get<std::string>();
-    } else if (k == "axes") {
-      if (!v.is_string()) throw InputError(position_of_key(text, k, file), "'axes' must be a string of axis letters, e.g. \"XYZAC\"");
-      m.axes = v.get<std::string>();
-    } else if (k == "parameters") {
-      m.parameters = read_parameters(v, k, text, file, machine);
-    } else if (k == "uncertainty") {
-      m.uncertainty = read_parameters(v, k, text, file, nullptr);
-    } else if (k == "effects_added") {
-      if (!v.is_array()) throw InputError(position_of_key(text, k, file), "'effects_added' must be an array of names");
-      for (const auto& e : v) {
-        if (!e.is_string()) throw InputError(position_of_key(text, k, file), "'effects_added' must hold strings");
-        m.effects_added.push_back(e.get<std::string>());
-      }
-    } else if (k == "identifiability" && v.is_object()) {
-      Identifiability id;
-      id.rank = v.value("rank", 0);
-      id.parameters = v.value("parameters", 0);
-      if (v.contains("null_space") && v["null_space"].is_array())
-        for (const auto& d : v["null_space"]) {
-          NullDirection dir;
-          if (d.is_object())
-            for (auto w = d.begin(); w != d.end(); ++w)
-              if (w.value().is_number()) dir.emplace_back(w.key(), w.value().get<double>());
-          id.null_space.push_back(dir);
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& k = it.key();
+      key = k;
+      const auto& v = it.value();
+      if (k == "machine") {
+        if (!v.is_string()) throw InputError(position_of_key(text, k, file), "'machine' must be a string");
+        m.machine = v.get<std::string>();
+      } else if (k == "axes") {
+        if (!v.is_string())
+          throw InputError(position_of_key(text, k, file), "'axes' must be a string of axis letters, e.g. \"XYZAC\"");
+        m.axes = v.get<std::string>();
+      } else if (k == "parameters") {
+        m.parameters = read_parameters(v, k, text, file, machine);
+      } else if (k == "uncertainty") {
+        m.uncertainty = read_parameters(v, k, text, file, nullptr);
+      } else if (k == "effects_added") {
+        if (!v.is_array())
+          throw InputError(position_of_key(text, k, file), "'effects_added' must be an array of names");
+        for (const auto& e : v) {
+          if (!e.is_string()) throw InputError(position_of_key(text, k, file), "'effects_added' must hold strings");
+          m.effects_added.push_back(e.get<std::string>());
         }
-      if (v.contains("pinned") && v["pinned"].is_array())
-        for (const auto& p : v["pinned"])
-          if (p.is_string()) id.pinned.push_back(p.get<std::string>());
-      if (v.contains("combinations") && v["combinations"].is_array())
-        for (const auto& p : v["combinations"])
-          if (p.is_string()) id.combinations.push_back(p.get<std::string>());
-      m.identifiability = id;
-    } else if (k == "fit" && v.is_object()) {
-      FitSummary f;
-      f.rms_before_um = v.value("rms_before_um", 0.0);
-      f.max_before_um = v.value("max_before_um", 0.0);
-      f.rms_after_um = v.value("rms_after_um", 0.0);
-      f.max_after_um = v.value("max_after_um", 0.0);
-      f.rms_nominal_um = v.value("rms_nominal_um", 0.0);
-      f.max_nominal_um = v.value("max_nominal_um", 0.0);
-      m.fit = f;
-    } else {
-      m.extra[k] = v.dump();
+      } else if (k == "identifiability" && v.is_object()) {
+        Identifiability id;
+        id.rank = v.value("rank", 0);
+        id.parameters = v.value("parameters", 0);
+        if (v.contains("null_space") && v["null_space"].is_array())
+          for (const auto& d : v["null_space"]) {
+            NullDirection dir;
+            if (d.is_object())
+              for (auto w = d.begin(); w != d.end(); ++w)
+                if (w.value().is_number()) dir.emplace_back(w.key(), w.value().get<double>());
+            id.null_space.push_back(dir);
+          }
+        if (v.contains("pinned") && v["pinned"].is_array())
+          for (const auto& p : v["pinned"])
+            if (p.is_string()) id.pinned.push_back(p.get<std::string>());
+        if (v.contains("combinations") && v["combinations"].is_array())
+          for (const auto& p : v["combinations"])
+            if (p.is_string()) id.combinations.push_back(p.get<std::string>());
+        m.identifiability = id;
+      } else if (k == "fit" && v.is_object()) {
+        FitSummary f;
+        f.rms_before_um = v.value("rms_before_um", 0.0);
+        f.max_before_um = v.value("max_before_um", 0.0);
+        f.rms_after_um = v.value("rms_after_um", 0.0);
+        f.max_after_um = v.value("max_after_um", 0.0);
+        f.rms_nominal_um = v.value("rms_nominal_um", 0.0);
+        f.max_nominal_um = v.value("max_nominal_um", 0.0);
+        m.fit = f;
+      } else {
+        m.extra[k] = v.dump();
+      }
     }
-  }
   } catch (const ordered_json::exception& e) {
-    throw InputError(position_of_key(text, key, file), fmt::format("'{}' has a value of the wrong type: {}", key, e.what()));
+    throw InputError(position_of_key(text, key, file),
+                     fmt::format("'{}' has a value of the wrong type: {}", key, e.what()));
   }
   if (machine) check_for_machine(m, text, file, *machine, options);
   return m;
@@ -227,8 +234,8 @@ std::string format_model_json(const ModelFile& m) {
   if (m.fit) {
     const auto& f = *m.fit;
     auto r = [](double v) { return std::round(v * 1e4) / 1e4; };
-    j["fit"] = {{"rms_before_um", r(f.rms_before_um)}, {"max_before_um", r(f.max_before_um)},
-                {"rms_after_um", r(f.rms_after_um)},   {"max_after_um", r(f.max_after_um)},
+    j["fit"] = {{"rms_before_um", r(f.rms_before_um)},   {"max_before_um", r(f.max_before_um)},
+                {"rms_after_um", r(f.rms_after_um)},     {"max_after_um", r(f.max_after_um)},
                 {"rms_nominal_um", r(f.rms_nominal_um)}, {"max_nominal_um", r(f.max_nominal_um)}};
   }
   for (const auto& [key, text] : m.extra) j[key] = ordered_json::parse(text);

@@ -21,7 +21,8 @@ Effect effect_of_value(const ParameterSpec& s, const Machine& m, double v, const
   const char* unit = s.is_angle() ? "rad" : "mm";
   switch (s.kind) {
     case ParameterKind::polynomial:
-      return {std::abs(v) * std::pow(b.travel_mm, s.order), own, unit, fmt::format(" at {:g} mm of travel", b.travel_mm)};
+      return {std::abs(v) * std::pow(b.travel_mm, s.order), own, unit,
+              fmt::format(" at {:g} mm of travel", b.travel_mm)};
     case ParameterKind::reversal: {
       const bool rotary = m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary();
       return {std::abs(v), rotary ? b.angle_rad : b.length_mm, rotary ? "rad" : "mm", ""};
@@ -31,14 +32,20 @@ Effect effect_of_value(const ParameterSpec& s, const Machine& m, double v, const
         case DriftBasis::linear:
           return {std::abs(v) * b.duration_s, b.length_mm, "mm", fmt::format(" after {:g} s", b.duration_s)};
         case DriftBasis::quadratic:
-          return {std::abs(v) * b.duration_s * b.duration_s, b.length_mm, "mm", fmt::format(" after {:g} s", b.duration_s)};
-        case DriftBasis::exponential: return {std::abs(v), b.length_mm, "mm", ""};
-        case DriftBasis::time_constant: return {v, b.tau_max_s, "s", ""};
+          return {std::abs(v) * b.duration_s * b.duration_s, b.length_mm, "mm",
+                  fmt::format(" after {:g} s", b.duration_s)};
+        case DriftBasis::exponential:
+          return {std::abs(v), b.length_mm, "mm", ""};
+        case DriftBasis::time_constant:
+          return {v, b.tau_max_s, "s", ""};
       }
       return {std::abs(v), b.length_mm, "mm", ""};
-    case ParameterKind::ballbar_length: return {std::abs(v), b.ballbar_mm, "mm", ""};
-    case ParameterKind::sphere_position: return {std::abs(v), b.sphere_mm, "mm", ""};
-    default: return {std::abs(v), own, unit, ""};
+    case ParameterKind::ballbar_length:
+      return {std::abs(v), b.ballbar_mm, "mm", ""};
+    case ParameterKind::sphere_position:
+      return {std::abs(v), b.sphere_mm, "mm", ""};
+    default:
+      return {std::abs(v), own, unit, ""};
   }
 }
 
@@ -48,7 +55,8 @@ std::string implausibility(const ParameterSpec& s, const Machine& m, double valu
   if (!std::isfinite(value)) return "is not finite";
   if (s.kind == ParameterKind::drift && s.drift == DriftBasis::time_constant) {
     if (value < b.tau_min_s || value > b.tau_max_s)
-      return fmt::format("= {:g} s is outside the plausible time constants {:g} .. {:g} s", value, b.tau_min_s, b.tau_max_s);
+      return fmt::format("= {:g} s is outside the plausible time constants {:g} .. {:g} s", value, b.tau_min_s,
+                         b.tau_max_s);
     return {};
   }
   const Effect e = effect_of_value(s, m, value, b);

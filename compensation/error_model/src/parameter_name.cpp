@@ -13,13 +13,20 @@ namespace {
 
 int component_of(char c) {
   switch (c) {
-    case 'X': return 0;
-    case 'Y': return 1;
-    case 'Z': return 2;
-    case 'A': return 3;
-    case 'B': return 4;
-    case 'C': return 5;
-    default: return -1;
+    case 'X':
+      return 0;
+    case 'Y':
+      return 1;
+    case 'Z':
+      return 2;
+    case 'A':
+      return 3;
+    case 'B':
+      return 4;
+    case 'C':
+      return 5;
+    default:
+      return -1;
   }
 }
 
@@ -96,8 +103,10 @@ ParseResult parse_coupled(ParameterSpec s, char component, char carried, char ca
   if (!m.axes[static_cast<std::size_t>(s.coupled_axis_index)].is_rotary())
     return refuse("a location error changes with a rotary axis here (" + std::string(1, carrier) + " is linear)");
   if (!carries(m, s.coupled_axis_index, s.axis_index))
-    return refuse(fmt::format("{0}'s location can change with {1} only where {1} carries {0} (between the bed and {0} on "
-                              "the same side of the chain)", carried, carrier));
+    return refuse(
+        fmt::format("{0}'s location can change with {1} only where {1} carries {0} (between the bed and {0} on "
+                    "the same side of the chain)",
+                    carried, carrier));
   return accept(s);
 }
 
@@ -109,10 +118,14 @@ bool ParameterSpec::is_angle() const {
     case ParameterKind::harmonic:
     case ParameterKind::polynomial:
     case ParameterKind::table:
-    case ParameterKind::coupled: return component >= 3;
-    case ParameterKind::squareness: return true;
-    case ParameterKind::reversal: return false;  // depends on the axis; see is_rotary of the axis
-    default: return false;
+    case ParameterKind::coupled:
+      return component >= 3;
+    case ParameterKind::squareness:
+      return true;
+    case ParameterKind::reversal:
+      return false;  // depends on the axis; see is_rotary of the axis
+    default:
+      return false;
   }
 }
 
@@ -178,8 +191,9 @@ ParseResult parse_parameter_name(const std::string& name, const Machine& m) {
     s.component = g[1].str()[0] - 'x';
     return accept(s);
   }
-  return refuse("not an error parameter name of docs/conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
-                "EXX:t:-250, ECC:t:30, EA0C:A:p1, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
+  return refuse(
+      "not an error parameter name of docs/conventions.md (e.g. EX0C, EC0Y, ECC:h2:cos, EXX:p1, "
+      "EXX:t:-250, ECC:t:30, EA0C:A:p1, reversal:A, drift:Z:t:lin, ballbar:length, sphere:position:x)");
 }
 
 std::string table_parameter_name(char component, char axis, double at_mm) {

@@ -76,7 +76,8 @@ AxisEntry axis_entry(const MachineModel& model, ControlFormat format, char lette
       const IsgLsecTable t = isg_lsec_table(model, letter);
       return {isg_lsec_lines(t), t.axis.left_out};
     }
-    case ControlFormat::machine: break;
+    case ControlFormat::machine:
+      break;
   }
   return {};
 }
@@ -103,9 +104,10 @@ ControlEntries control_entries(const MachineModel& model, ControlFormat format) 
   }
   try {  // location errors: the machine file's, never a one-axis table's
     const MachineExport located = corrected_machine(model);
-    out.not_held.push_back(fmt::format("location errors {}: a one-axis table cannot move an axis line (--control "
-                                       "machine, or export --format machine)",
-                                       fmt::join(located.applied, ", ")));
+    out.not_held.push_back(
+        fmt::format("location errors {}: a one-axis table cannot move an axis line (--control "
+                    "machine, or export --format machine)",
+                    fmt::join(located.applied, ", ")));
   } catch (const ExportRefusal&) {
   }
   for (const Axis& a : model.machine().axes) {
@@ -114,7 +116,8 @@ ControlEntries control_entries(const MachineModel& model, ControlFormat format) 
       out.files.push_back({fmt::format("axis {}", a.letter), fmt::format("--format {} --axis {}", name, a.letter),
                            std::move(entry.lines)});
       for (const std::string& s : entry.left_out)  // location errors: listed once, above
-        if (s.find("(location error of") == std::string::npos) out.not_held.push_back(fmt::format("axis {}: {}", a.letter, s));
+        if (s.find("(location error of") == std::string::npos)
+          out.not_held.push_back(fmt::format("axis {}: {}", a.letter, s));
     } catch (const ExportRefusal& e) {
       out.not_held.push_back(fmt::format("axis {}: {}", a.letter, e.what()));
     }

@@ -20,12 +20,15 @@ constexpr double kDirectionComponent = 1e-9;
 constexpr double kAlongAxis = 1e-12;
 
 const char* component_word(bool rotary, int component) {
-  static const char* linear_words[6] = {"error motion in X", "error motion in Y", "error motion in Z",
-                                        "angular error motion about X", "angular error motion about Y",
+  static const char* linear_words[6] = {"error motion in X",
+                                        "error motion in Y",
+                                        "error motion in Z",
+                                        "angular error motion about X",
+                                        "angular error motion about Y",
                                         "angular error motion about Z"};
   static const char* rotary_words[6] = {"radial or axial error motion in X", "radial or axial error motion in Y",
                                         "radial or axial error motion in Z", "tilt error motion about X",
-                                        "tilt error motion about Y", "tilt error motion about Z"};
+                                        "tilt error motion about Y",         "tilt error motion about Z"};
   return rotary ? rotary_words[component] : linear_words[component];
 }
 
@@ -43,7 +46,8 @@ bool own_component(const Axis& axis, int axis_index, const ParameterSpec& s) {
 
 /// Sorts the parameters of the axis: what the table holds (positioning, reversal), what it leaves
 /// out (with why); `other_effects`: the effects listed for the other axes.
-void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& out, std::set<std::string>& other_effects) {
+void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& out,
+                     std::set<std::string>& other_effects) {
   const ModelLayout& layout = model.layout();
   std::set<std::string> left_seen;
   for (std::size_t i = 0; i < layout.size(); ++i) {
@@ -64,9 +68,10 @@ void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& ou
         // the set-up at home absorbs it, it has no effect to compensate
         if (s.component >= 3 && std::abs(std::abs(axis.direction[s.component - 3]) - 1.0) < kAlongAxis) break;
         if (left_seen.insert(s.name).second)
-          out.left_out.push_back(fmt::format("{} (location error of {}: a one-axis table cannot move an axis "
-                                             "line; --format machine does)",
-                                             s.name, out.letter));
+          out.left_out.push_back(
+              fmt::format("{} (location error of {}: a one-axis table cannot move an axis "
+                          "line; --format machine does)",
+                          s.name, out.letter));
         break;
       case ParameterKind::squareness:
         if (left_seen.insert(s.name).second)
@@ -79,8 +84,10 @@ void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& ou
           out.has_positioning = true;
           out.held.push_back(s.name);
           // a rotary axis's table is periodic, its nodes in rad (at_mm is a linear axis's)
-          if (s.kind == ParameterKind::table) out.model_nodes.push_back(s.periodic ? s.at_rad : s.at_mm);
-          else out.piecewise_linear = false;
+          if (s.kind == ParameterKind::table)
+            out.model_nodes.push_back(s.periodic ? s.at_rad : s.at_mm);
+          else
+            out.piecewise_linear = false;
         } else if (const std::string effect = listed_effect(s); left_seen.insert(effect).second) {
           out.left_out.push_back(fmt::format("{} ({} of {}: acts across the axis or turns the tool)", effect,
                                              component_word(out.rotary, s.component), out.letter));
@@ -88,11 +95,13 @@ void sort_parameters(const MachineModel& model, const Axis& axis, AxisExport& ou
         break;
       case ParameterKind::coupled:
         if (left_seen.insert(s.name).second)
-          out.left_out.push_back(fmt::format("{} (location error of {} that changes with {}: a one-axis table cannot move "
-                                             "an axis line)", s.name, out.letter,
-                                             model.machine().axes[static_cast<std::size_t>(s.coupled_axis_index)].letter));
+          out.left_out.push_back(fmt::format(
+              "{} (location error of {} that changes with {}: a one-axis table cannot move "
+              "an axis line)",
+              s.name, out.letter, model.machine().axes[static_cast<std::size_t>(s.coupled_axis_index)].letter));
         break;
-      default: break;
+      default:
+        break;
     }
   }
 }
@@ -113,10 +122,12 @@ void set_travel(const Axis& axis, AxisExport& out) {
     out.travel_min = out.model_nodes.empty() ? 0.0 : out.model_nodes.front();
     out.travel_max = out.model_nodes.empty() ? 0.0 : out.model_nodes.back();
   } else {
-    throw ExportRefusal(ExportRefusal::Source::machine, fmt::format(
-        "axis {} has no limits in the machine file and its error is a polynomial, which grows without "
-        "bound beyond any table: add `limits = [MIN, MAX]` (mm) to [axes.{}] so that the table covers the travel",
-        letter, letter));
+    throw ExportRefusal(
+        ExportRefusal::Source::machine,
+        fmt::format(
+            "axis {} has no limits in the machine file and its error is a polynomial, which grows without "
+            "bound beyond any table: add `limits = [MIN, MAX]` (mm) to [axes.{}] so that the table covers the travel",
+            letter, letter));
   }
 }
 
@@ -136,19 +147,22 @@ void note_held_beyond(const Axis& axis, AxisExport& out) {
   const double lo = out.model_nodes.front(), hi = out.model_nodes.back();
   const std::string table = fmt::format("E{}{}:t", out.letter, out.letter);
   if (!axis.limits) {
-    out.held_beyond.push_back(fmt::format("{}: the table's nodes span {:g} to {:g} mm and the machine file gives {} no "
-                                          "limits: beyond them the end values are held, not extrapolated",
-                                          table, lo, hi, out.letter));
+    out.held_beyond.push_back(
+        fmt::format("{}: the table's nodes span {:g} to {:g} mm and the machine file gives {} no "
+                    "limits: beyond them the end values are held, not extrapolated",
+                    table, lo, hi, out.letter));
     return;
   }
   if (out.travel_min < lo)
-    out.held_beyond.push_back(fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's first node: its "
-                                          "value there is held, not extrapolated (measure to the limit to know it)",
-                                          table, out.travel_min, lo));
+    out.held_beyond.push_back(
+        fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's first node: its "
+                    "value there is held, not extrapolated (measure to the limit to know it)",
+                    table, out.travel_min, lo));
   if (out.travel_max > hi)
-    out.held_beyond.push_back(fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's last node: its "
-                                          "value there is held, not extrapolated (measure to the limit to know it)",
-                                          table, hi, out.travel_max));
+    out.held_beyond.push_back(
+        fmt::format("{}: from {:g} to {:g} mm the travel lies beyond the table's last node: its "
+                    "value there is held, not extrapolated (measure to the limit to know it)",
+                    table, hi, out.travel_max));
 }
 
 }  // namespace
@@ -158,12 +172,12 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
   AxisExport out;
   out.axis_index = m.index_of(letter);
   if (out.axis_index < 0)
-    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("the machine '{}' has no axis {} (its axes: {})", m.name, letter,
-                                            [&] {
-                                              std::string s;
-                                              for (const Axis& a : m.axes) s += a.letter;
-                                              return s;
-                                            }()));
+    throw ExportRefusal(ExportRefusal::Source::model,
+                        fmt::format("the machine '{}' has no axis {} (its axes: {})", m.name, letter, [&] {
+                          std::string s;
+                          for (const Axis& a : m.axes) s += a.letter;
+                          return s;
+                        }()));
   const Axis& axis = m.axes[static_cast<std::size_t>(out.axis_index)];
   out.letter = letter;
   out.rotary = axis.is_rotary();
@@ -173,10 +187,12 @@ AxisExport describe_axis_export(const MachineModel& model, char letter) {
     int dominant = 0;
     for (int c = 1; c < 3; ++c)
       if (std::abs(axis.direction[c]) > std::abs(axis.direction[dominant])) dominant = c;
-    const std::string own = out.rotary ? fmt::format("E{}{}", char('A' + dominant), letter) : fmt::format("E{}{}", letter, letter);
-    throw ExportRefusal(ExportRefusal::Source::model, fmt::format("the model has no positioning error ({}) and no reversal (reversal:{}) of "
-                                            "axis {}: there is nothing for a one-axis table to hold",
-                                            own, letter, letter));
+    const std::string own =
+        out.rotary ? fmt::format("E{}{}", char('A' + dominant), letter) : fmt::format("E{}{}", letter, letter);
+    throw ExportRefusal(ExportRefusal::Source::model,
+                        fmt::format("the model has no positioning error ({}) and no reversal (reversal:{}) of "
+                                    "axis {}: there is nothing for a one-axis table to hold",
+                                    own, letter, letter));
   }
   out.other_axis_terms = static_cast<int>(other_effects.size());
   std::sort(out.model_nodes.begin(), out.model_nodes.end());

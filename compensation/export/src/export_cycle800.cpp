@@ -51,8 +51,8 @@ std::string format_cycle800(const Cycle800Record& r, const MachineModel& model, 
   std::vector<std::string> notes{
       fmt::format("ncpost {} export --format siemens-cycle800: the location errors of model '{}'", source.version,
                   source.model_path),
-      fmt::format("(machine '{}', {}) as the CYCLE800 swivel data record [1], kinematic type P (swivel table).",
-                  m.name, source.machine_path.empty() ? std::string("no file") : "'" + source.machine_path + "'"),
+      fmt::format("(machine '{}', {}) as the CYCLE800 swivel data record [1], kinematic type P (swivel table).", m.name,
+                  source.machine_path.empty() ? std::string("no file") : "'" + source.machine_path + "'"),
       "Change [1] to the record's number. Chain: M_T_table = Trans(l2) Rot(v1,a1) Trans(l3) Rot(v2,a2) Trans(l4),",
       fmt::format("rotary axis 1 = {} (nearer the bed, carries axis 2 = {}); l2: machine reference point to a point "
                   "of axis 1,",
@@ -70,12 +70,12 @@ std::string format_cycle800(const Cycle800Record& r, const MachineModel& model, 
   const auto vector = [&](int first, const Vec3d& v, int decimals) {
     for (int i = 0; i < 3; ++i) out += fmt::format("$TC_CARR{}[1]={}\n", first + i, number(v[i], decimals));
   };
-  vector(1, r.l1_mm, 6);    // l1
-  vector(4, r.l2_mm, 6);    // l2
-  vector(7, r.v1, 12);      // v1
-  vector(10, r.v2, 12);     // v2
-  vector(15, r.l3_mm, 6);   // l3
-  vector(18, r.l4_mm, 6);   // l4
+  vector(1, r.l1_mm, 6);   // l1
+  vector(4, r.l2_mm, 6);   // l2
+  vector(7, r.v1, 12);     // v1
+  vector(10, r.v2, 12);    // v2
+  vector(15, r.l3_mm, 6);  // l3
+  vector(18, r.l4_mm, 6);  // l4
   out += fmt::format("$TC_CARR21[1]={}\n$TC_CARR22[1]={}\n$TC_CARR23[1]=\"P\"\n", r.axis1, r.axis2);
   out += "M30\n";
   return out;

@@ -57,7 +57,8 @@ void add_axis(std::vector<HeidenhainEntry>& out, char letter, int k, const Vec3d
   const std::string name(1, letter);
   for (int c = 0; c < 3; ++c)
     out.push_back({"Trans", linear_letter(c), shift_mm[c], nominal_mm[c],
-                   c == k ? "position of " + name + " along its line (not measured)" : "position of " + name + " (KinematicsOpt)"});
+                   c == k ? "position of " + name + " along its line (not measured)"
+                          : "position of " + name + " (KinematicsOpt)"});
   out.push_back({"Trans", rotary_letter(t.i), t.a_rad * kDeg, 0.0, "orientation of " + name + " (KinematicsOpt)"});
   out.push_back({"Trans", rotary_letter(t.j), t.b_rad * kDeg, 0.0, "orientation of " + name + " (KinematicsOpt)"});
   out.push_back({"MachAxis", letter, 0.0, 0.0, "rotary axis " + name});
@@ -103,7 +104,8 @@ std::string format_heidenhain(const HeidenhainKinematics& k, const MachineModel&
       "or the kinematics table), not a file the control reads. Entries from the machine base towards the table:",
       "Trans X|Y|Z shifts the following entries (mm), Trans A|B|C turns them right-handed about X|Y|Z (deg),",
       fmt::format("MachAxis turns them by the axis's command. Axis 1 = {} (nearer the bed) carries axis 2 = {}; the "
-                  "linear axes keep their own entries.", k.axis1, k.axis2),
+                  "linear axes keep their own entries.",
+                  k.axis1, k.axis2),
       "Lengths in ncpost's machine frame M (the tool tip with X Y Z at 0 is its origin): if the control's datum",
       "differs, add the offset to the first position and subtract it from the last entry.",
       "CHANGE: the entry minus the nominal machine's, um (lengths) or urad (angles).",
@@ -120,8 +122,8 @@ std::string format_heidenhain(const HeidenhainKinematics& k, const MachineModel&
     }
     const bool angle = e.axis >= 'A' && e.axis <= 'C';
     const double change = (e.coord - e.nominal) * (angle ? 1e6 / kDeg : 1e3);
-    out += fmt::format("{:<3} {:<9} {:<5} {:<17} {:<17} {:<13} {}\n", r, e.key, e.axis, number(e.coord), number(e.nominal),
-                       fmt::format("{:+.3f}", std::abs(change) < 5e-4 ? 0.0 : change), e.role);
+    out += fmt::format("{:<3} {:<9} {:<5} {:<17} {:<17} {:<13} {}\n", r, e.key, e.axis, number(e.coord),
+                       number(e.nominal), fmt::format("{:+.3f}", std::abs(change) < 5e-4 ? 0.0 : change), e.role);
   }
   return out;
 }

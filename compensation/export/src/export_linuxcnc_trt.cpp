@@ -25,11 +25,14 @@ std::string why_left_out(const ParameterSpec& s, const Machine& m) {
     const Axis& a = m.axes[static_cast<std::size_t>(s.axis_index)];
     const int about = s.component - 3;
     if (std::abs(a.direction[about]) > 0.5)
-      return fmt::format("zero error of {}: trt kinematics have none; it could go to the joint's HOME_OFFSET "
-                         "(INI), not written here",
-                         a.letter);
+      return fmt::format(
+          "zero error of {}: trt kinematics have none; it could go to the joint's HOME_OFFSET "
+          "(INI), not written here",
+          a.letter);
     return fmt::format("tilt of the {} line: trt kinematics assume it along {}", a.letter,
-                       std::abs(a.direction.x()) > 0.5 ? 'X' : std::abs(a.direction.y()) > 0.5 ? 'Y' : 'Z');
+                       std::abs(a.direction.x()) > 0.5   ? 'X'
+                       : std::abs(a.direction.y()) > 0.5 ? 'Y'
+                                                         : 'Z');
   }
   if (s.kind == ParameterKind::coupled) return "location changing with another axis: trt kinematics hold constants";
   if (s.kind == ParameterKind::squareness) return "squareness: trt kinematics assume orthogonal linear axes";
@@ -58,7 +61,8 @@ TrtKinematics linuxcnc_trt_kinematics(const MachineModel& model) {
                     m.name, tilt.letter, fmt::join(tilt.direction, ", "), rotary.letter,
                     fmt::join(rotary.direction, ", ")));
   bool any_location = false;
-  for (const ParameterSpec& s : model.layout().specs()) any_location = any_location || s.kind == ParameterKind::location;
+  for (const ParameterSpec& s : model.layout().specs())
+    any_location = any_location || s.kind == ParameterKind::location;
   if (!any_location)
     throw ExportRefusal(ExportRefusal::Source::model,
                         "the model has no location error of a rotary axis (EY0A, EX0C, ...): there is nothing to "
@@ -112,12 +116,15 @@ std::string format_linuxcnc_trt(const TrtKinematics& k, const MachineModel& mode
             " LinuxCNC 2.10; an older LinuxCNC refuses the setp: it has only the other sense)."
           : "conventional-directions = 0 (the default, not set here): positive commands turn the table right-handed"
             " about +X/+Y and +Z.",
-      fmt::format("Zero errors (E{0}0{0}, EC0C) have no pin here: a model's zero error is listed as left out below; the",
-                  k.tilt_letter),
+      fmt::format(
+          "Zero errors (E{0}0{0}, EC0C) have no pin here: a model's zero error is listed as left out below; the",
+          k.tilt_letter),
       "joint's HOME_OFFSET in the INI file could hold it (with the workpiece set up at home, that of the tilting",
       "axis turns the C line, that of C has no effect).",
-      "tool-offset is not set here: net it to motion.tooloffset.z (the tool length), as LinuxCNC's trt configurations do.",
-      fmt::format("Held: {}", k.held.empty() ? std::string("none (the nominal pivots)") : fmt::format("{}", fmt::join(k.held, ", ")))};
+      "tool-offset is not set here: net it to motion.tooloffset.z (the tool length), as LinuxCNC's trt configurations "
+      "do.",
+      fmt::format("Held: {}", k.held.empty() ? std::string("none (the nominal pivots)")
+                                             : fmt::format("{}", fmt::join(k.held, ", ")))};
   for (const std::string& line : left_out_lines(k.left_out)) notes.push_back(line);
   std::string out;
   for (const std::string& n : notes) out += "# " + n + "\n";

@@ -45,15 +45,18 @@ MachineExport corrected_machine(const MachineModel& model) {
         out.left_out.push_back(effect + " (squareness: a machine file has no direction for a linear axis)");
         break;
       case ParameterKind::reversal:
-        out.left_out.push_back(effect + " (reversal: not a geometry; the control's backlash compensation or --format linuxcnc)");
+        out.left_out.push_back(effect +
+                               " (reversal: not a geometry; the control's backlash compensation or --format linuxcnc)");
         break;
       default:
-        out.left_out.push_back(effect + " (component error function: changes with the position, a machine file holds constants)");
+        out.left_out.push_back(
+            effect + " (component error function: changes with the position, a machine file holds constants)");
         break;
     }
   }
   if (location.empty())
-    throw ExportRefusal(ExportRefusal::Source::model, 
+    throw ExportRefusal(
+        ExportRefusal::Source::model,
         "the model has no location error of a rotary axis (EX0C, EY0C, EA0C, EB0C, ...): there is nothing to "
         "write into the machine file");
   const MachineModel located(m, location);
@@ -97,7 +100,8 @@ std::vector<std::string> machine_axis_lines(const Axis& a) {
   }
   if (a.limits) {
     const double unit = a.is_rotary() ? kDegPerRad : 1.0;
-    lines.push_back(fmt::format("limits = [{}, {}]", number_text(a.limits->min * unit), number_text(a.limits->max * unit)));
+    lines.push_back(
+        fmt::format("limits = [{}, {}]", number_text(a.limits->min * unit), number_text(a.limits->max * unit)));
   }
   return lines;
 }

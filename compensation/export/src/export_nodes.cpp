@@ -35,10 +35,11 @@ std::vector<double> commanded_nodes(const MachineModel& model, const AxisExport&
   for (double x : a.model_nodes)
     for (bool falling : {false, true}) add(must, x + axis_positioning_error(model, a.axis_index, x, falling));
   if (static_cast<int>(must.size()) > max_nodes)
-    throw ExportRefusal(ExportRefusal::Source::model,
-                        fmt::format("axis {} needs {} points (the kinks of its error, each direction of motion), more than "
-                                    "the {} the table can hold",
-                                    a.letter, must.size(), max_nodes));
+    throw ExportRefusal(
+        ExportRefusal::Source::model,
+        fmt::format("axis {} needs {} points (the kinks of its error, each direction of motion), more than "
+                    "the {} the table can hold",
+                    a.letter, must.size(), max_nodes));
   std::set<long long> nodes = must;
   for (double x : a.model_nodes) {
     std::set<long long> one;

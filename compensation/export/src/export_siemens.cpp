@@ -56,15 +56,18 @@ SiemensLecTable siemens_lec_table(const MachineModel& model, char letter) {
   table.axis = describe_axis_export(model, letter);
   AxisExport& a = table.axis;
   if (!a.has_positioning)
-    throw ExportRefusal(ExportRefusal::Source::model, fmt::format(
-        "the model has only a reversal of {}: a SINUMERIK LEC table is one for both directions and cannot hold it "
-        "(export it with --format linuxcnc, or enter it as the control's backlash, MD32450)",
-        letter));
+    throw ExportRefusal(
+        ExportRefusal::Source::model,
+        fmt::format(
+            "the model has only a reversal of {}: a SINUMERIK LEC table is one for both directions and cannot hold it "
+            "(export it with --format linuxcnc, or enter it as the control's backlash, MD32450)",
+            letter));
   if (a.reversal != 0.0) {
     const double b = a.rotary ? a.reversal * kDegPerRad : a.reversal;
-    a.left_out.push_back(fmt::format("reversal:{} ({:.6g} {}: the LEC table is one for both directions; enter it as "
-                                     "the control's backlash compensation, MD32450 $MA_BACKLASH)",
-                                     letter, b, a.rotary ? "deg" : "mm"));
+    a.left_out.push_back(
+        fmt::format("reversal:{} ({:.6g} {}: the LEC table is one for both directions; enter it as "
+                    "the control's backlash compensation, MD32450 $MA_BACKLASH)",
+                    letter, b, a.rotary ? "deg" : "mm"));
     a.held.erase(std::remove(a.held.begin(), a.held.end(), "reversal:" + std::string(1, letter)), a.held.end());
   }
   table.axis_name = std::string(1, letter) + "1";
@@ -77,7 +80,8 @@ SiemensLecTable siemens_lec_table(const MachineModel& model, char letter) {
     table.values.push_back(
         as_printed(axis_positioning_error(model, a.axis_index, grid.min + k * grid.step, false) * unit, a.rotary));
   // the reversal is left out (listed): the check moving up, where the table is all of the model
-  table.landing = check_landing(model, a, [&](double n, bool) { return settled_position(table, n, unit); }, false);
+  table.landing = check_landing(
+      model, a, [&](double n, bool) { return settled_position(table, n, unit); }, false);
   return table;
 }
 
@@ -92,17 +96,20 @@ std::string format_siemens_lec(const SiemensLecTable& table, const MachineModel&
   note(fmt::format("model '{}' (machine '{}'{})", source.model_path, model.machine().name,
                    source.machine_path.empty() ? "" : ", file '" + source.machine_path + "'"));
   note(fmt::format("Machine axis {}: rename it to the axis of your control (MD10000 $MN_AXCONF_MACHAX_NAME_TAB).", ax));
-  note(fmt::format("Needs MD32700 $MA_ENC_COMP_ENABLE[0] = 1 and MD38000 $MA_MM_ENC_COMP_MAX_POINTS >= {}.", table.values.size()));
-  note(fmt::format("Values: the model's positioning error of {} at each point, in {}: SINUMERIK adds it to the", a.letter,
-                   a.rotary ? "degrees" : "mm"));
+  note(fmt::format("Needs MD32700 $MA_ENC_COMP_ENABLE[0] = 1 and MD38000 $MA_MM_ENC_COMP_MAX_POINTS >= {}.",
+                   table.values.size()));
+  note(fmt::format("Values: the model's positioning error of {} at each point, in {}: SINUMERIK adds it to the",
+                   a.letter, a.rotary ? "degrees" : "mm"));
   note("  measured actual position, so a positive value moves the axis in the negative direction: an axis that");
   note(fmt::format("  goes 0.010 {} too far at a point has +0.010 there and lands on the commanded position.", unit));
   if (!table.nodes_on_grid)
-    note("The model's table nodes do not lie on one grid of at most 2000 points: between them the points do not follow "
-         "its kinks exactly (see the round trip below).");
+    note(
+        "The model's table nodes do not lie on one grid of at most 2000 points: between them the points do not follow "
+        "its kinks exactly (see the round trip below).");
   note(landing_note(a, table.landing, "SINUMERIK"));
   if (a.continuous) note("One turn, 0 to 360 deg, modulo: the first and last values are the same position.");
-  for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors")) note(s);
+  for (const std::string& s : export_notes(a, "export them with --axis, and --format machine for location errors"))
+    note(s);
   out += "CHANDATA(1)\n";
   for (const std::string& line : siemens_lec_lines(table)) out += line + "\n";
   out += "M17\n";

@@ -24,7 +24,8 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 TrrMachineExport corrected_trr_machine(const trr::Machine& machine, const trr::Errors& model) {
-  if (model.all_zero()) throw std::invalid_argument("every parameter of the model is zero: there is nothing to fold in");
+  if (model.all_zero())
+    throw std::invalid_argument("every parameter of the model is zero: there is nothing to fold in");
   TrrMachineExport out;
   out.corrected = machine;
   out.corrected.name = machine.name + "-calibrated";
@@ -39,11 +40,12 @@ std::string format_trr_machine_toml(const trr::Machine& m, const std::vector<std
   for (const std::string& n : notes) out += "# " + n + "\n";
   out += fmt::format("[machine]\nname = {}\nkind = \"trr-xy\"\n", quoted(m.name));
   const trr::Geometry& g = m.geometry;
-  out += fmt::format("\n[trr_xy]\nbase_radius = {}\nplatform_radius = {}\nlink_length = {}\nball_joint_height = {}\n"
-                     "tool_offset = {}\nmax_link_angle = {}\n",
-                     number_text(g.base_radius_mm), number_text(g.platform_radius_mm), number_text(g.link_length_mm),
-                     number_text(g.ball_joint_height_mm), number_text(g.tool_offset_mm),
-                     number_text(rad_to_deg(g.max_link_angle_rad)));
+  out += fmt::format(
+      "\n[trr_xy]\nbase_radius = {}\nplatform_radius = {}\nlink_length = {}\nball_joint_height = {}\n"
+      "tool_offset = {}\nmax_link_angle = {}\n",
+      number_text(g.base_radius_mm), number_text(g.platform_radius_mm), number_text(g.link_length_mm),
+      number_text(g.ball_joint_height_mm), number_text(g.tool_offset_mm),
+      number_text(rad_to_deg(g.max_link_angle_rad)));
   out += "\n[trr_xy.calibration]  # mm; ar, at, gp in rad (docs/trr-xy.md \"Error parameters\")\n";
   for (int k = 0; k < trr::kParameterCount; ++k)
     if (m.calibration[k] != 0.0) out += fmt::format("{} = {}\n", trr::Errors::name(k), number_text(m.calibration[k]));

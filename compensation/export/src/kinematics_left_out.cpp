@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerRad = 180.0 / kPi;
-constexpr double kUnlimitedLinearMm = 100.0;    ///< quarter points of an axis without limits
+constexpr double kUnlimitedLinearMm = 100.0;     ///< quarter points of an axis without limits
 constexpr double kUnlimitedTiltRad = kPi / 2.0;  ///< limits of a tilting axis without limits
 
 /// The positions one axis takes among the representative poses (mm or rad).
@@ -117,7 +117,8 @@ LeftOut left_out_of(const MachineModel& model, const std::function<bool(const Pa
   }
   if (order.empty()) return out;
   for (const std::string& group : order) {
-    const MachineModel without(m, parameters_where(model, [&](const ParameterSpec& s) { return group_of(s) != group; }));
+    const MachineModel without(m,
+                               parameters_where(model, [&](const ParameterSpec& s) { return group_of(s) != group; }));
     out.terms.push_back({group, seen[group], largest_tip_difference_um(model, without, poses)});
   }
   const MachineModel held_only(m, parameters_where(model, held));
@@ -134,8 +135,8 @@ std::vector<std::string> left_out_lines(const LeftOut& left) {
       fmt::format("  {}", left.poses_text), "  (tool length 0: the tip at the spindle gauge point; W = M at home)"};
   for (const LeftOutTerm& t : left.terms)
     lines.push_back(fmt::format("  {:<10} {:10.3f} um  {}", t.term, t.effect_um, t.why));
-  lines.push_back(fmt::format("  all together: {:.3f} um (this record against the whole model at those poses)",
-                              left.together_um));
+  lines.push_back(
+      fmt::format("  all together: {:.3f} um (this record against the whole model at those poses)", left.together_um));
   return lines;
 }
 

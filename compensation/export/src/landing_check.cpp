@@ -12,13 +12,16 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 }
 
-LandingCheck check_landing(const MachineModel& model, const AxisExport& a, const MotorCommand& motor, bool both_directions) {
+LandingCheck check_landing(const MachineModel& model, const AxisExport& a, const MotorCommand& motor,
+                           bool both_directions) {
   LandingCheck c;
   c.positions = kLandingPositions;
   c.both_directions = both_directions;
   // a continuous axis: one turn, its end the same position as its start
   const int last = a.continuous ? kLandingPositions : kLandingPositions - 1;
-  auto off = [&](double actual, double n) { return std::abs(a.rotary ? std::remainder(actual - n, kTwoPi) : actual - n); };
+  auto off = [&](double actual, double n) {
+    return std::abs(a.rotary ? std::remainder(actual - n, kTwoPi) : actual - n);
+  };
   for (int k = 0; k < kLandingPositions; ++k) {
     const double n = a.travel_min + (a.travel_max - a.travel_min) * k / std::max(last, 1);
     for (bool falling : {false, true}) {
@@ -34,10 +37,11 @@ LandingCheck check_landing(const MachineModel& model, const AxisExport& a, const
 std::string landing_note(const AxisExport& a, const LandingCheck& c, const std::string& control) {
   const char* unit = a.rotary ? "µrad" : "µm";
   const double to_micro = a.rotary ? 1e6 : 1e3;
-  return fmt::format("Round trip: applied as {} applies it, this file puts {} within {:.4f} {} of the commanded position at "
-                     "{} positions over the travel{} (the model's error there without it: up to {:.3f} {}).",
-                     control, a.letter, c.with_file * to_micro, unit, c.positions,
-                     c.both_directions ? ", each direction" : ", moving up", c.model_only * to_micro, unit);
+  return fmt::format(
+      "Round trip: applied as {} applies it, this file puts {} within {:.4f} {} of the commanded position at "
+      "{} positions over the travel{} (the model's error there without it: up to {:.3f} {}).",
+      control, a.letter, c.with_file * to_micro, unit, c.positions,
+      c.both_directions ? ", each direction" : ", moving up", c.model_only * to_micro, unit);
 }
 
 }  // namespace ncpost::comp

@@ -40,10 +40,9 @@ bool accepted_step(const LeastSquaresProblem& p, const DampedOptions& o, const S
       s.r = *rt;
       s.cost = ct;
       damping = damping > 0.0 ? std::max(damping / kDampingFactor, kMinDamping) : 0.0;
-      converged = o.step_tolerance.size()
-                      ? within(step, o.step_tolerance)
-                      : decrease <= kCostTolerance * s.cost + 1e-30 ||
-                            scaled_step <= kStepTolerance * std::sqrt(2.0 * s.cost + 1e-30);
+      converged = o.step_tolerance.size() ? within(step, o.step_tolerance)
+                                          : decrease <= kCostTolerance * s.cost + 1e-30 ||
+                                                scaled_step <= kStepTolerance * std::sqrt(2.0 * s.cost + 1e-30);
       return true;
     }
     damping = damping > 0.0 ? damping * kDampingFactor : kFirstDamping;

@@ -22,8 +22,10 @@ RankAnalysis analyse_rank(const Eigen::MatrixXd& J, double tolerance, const Eige
   }
   Eigen::MatrixXd Js = J;
   for (Eigen::Index c = 0; c < n; ++c) {
-    if (a.column_norms[c] > 0.0) Js.col(c) /= a.column_norms[c];
-    else Js.col(c).setZero();
+    if (a.column_norms[c] > 0.0)
+      Js.col(c) /= a.column_norms[c];
+    else
+      Js.col(c).setZero();
   }
   if (n > 0) {
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(Js);

@@ -8,9 +8,12 @@ namespace ncpost::comp {
 double RobustLoss::rho(double r) const {
   const double a = std::abs(r), k = scale;
   switch (loss) {
-    case Loss::squared: return 0.5 * r * r;
-    case Loss::huber: return a <= k ? 0.5 * r * r : k * a - 0.5 * k * k;
-    case Loss::cauchy: return 0.5 * k * k * std::log1p((r / k) * (r / k));
+    case Loss::squared:
+      return 0.5 * r * r;
+    case Loss::huber:
+      return a <= k ? 0.5 * r * r : k * a - 0.5 * k * k;
+    case Loss::cauchy:
+      return 0.5 * k * k * std::log1p((r / k) * (r / k));
   }
   return 0.5 * r * r;
 }
@@ -18,9 +21,12 @@ double RobustLoss::rho(double r) const {
 double RobustLoss::weight(double r) const {
   const double a = std::abs(r), k = scale;
   switch (loss) {
-    case Loss::squared: return 1.0;
-    case Loss::huber: return a <= k ? 1.0 : k / a;
-    case Loss::cauchy: return 1.0 / (1.0 + (r / k) * (r / k));
+    case Loss::squared:
+      return 1.0;
+    case Loss::huber:
+      return a <= k ? 1.0 : k / a;
+    case Loss::cauchy:
+      return 1.0 / (1.0 + (r / k) * (r / k));
   }
   return 1.0;
 }

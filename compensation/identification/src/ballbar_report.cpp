@@ -22,7 +22,7 @@ struct TestAngle {
   std::string axis;           ///< the axis whose angle the plot shows ("C", or "XY" for a circle of two linear axes)
   std::vector<double> angle;  ///< rad, unwrapped along the test
   bool rotary = true;
-  double radius_mm = 0.0;     ///< the circle's radius for a linear circle (feed in mm/min)
+  double radius_mm = 0.0;  ///< the circle's radius for a linear circle (feed in mm/min)
 };
 
 /// The angle of the test: the rotary axis that turns most, or, if none turns, the polar angle of
@@ -46,7 +46,8 @@ TestAngle test_angle(const Machine& m, const MeasurementSet& s) {
   double mean[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const auto& r : s.rows) lo = std::min(lo, r.command[a]), hi = std::max(hi, r.command[a]), mean[a] += r.command[a];
+    for (const auto& r : s.rows)
+      lo = std::min(lo, r.command[a]), hi = std::max(hi, r.command[a]), mean[a] += r.command[a];
     range[a] = hi - lo;
     mean[a] /= std::max<std::size_t>(s.rows.size(), 1);
   }
@@ -74,7 +75,8 @@ std::string axes_moved(const Machine& m, const MeasurementSet& s) {
   for (int a = 0; a < static_cast<int>(m.axes.size()); ++a) {
     double lo = INFINITY, hi = -INFINITY;
     for (const auto& r : s.rows) lo = std::min(lo, r.command[a]), hi = std::max(hi, r.command[a]);
-    if (hi - lo > (a < 3 ? 1e-3 : 1e-5)) out += std::string(out.empty() ? "" : " ") + m.axes[static_cast<std::size_t>(a)].letter;
+    if (hi - lo > (a < 3 ? 1e-3 : 1e-5))
+      out += std::string(out.empty() ? "" : " ") + m.axes[static_cast<std::size_t>(a)].letter;
   }
   return out.empty() ? "none" : out;
 }
@@ -95,12 +97,15 @@ std::string feed_and_direction(const TestAngle& t, const MeasurementSet& s, int 
 
 std::string figures_row(const std::string& what, const report::CircularityFigures& f, const UncertaintyBudget& budget,
                         std::optional<double> tol) {
-  if (!f.ok) return fmt::format("<tr><td class=n>{}</td><td class=n colspan=\"7\">{}</td></tr>", escape(what), escape(f.message));
-  return fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{}</td><td>{:+.2f}, {:+.2f}</td>"
-                     "<td>{:.0f}°</td>{}</tr>",
-                     escape(what), escape(value_with_U(f.G_um, budget)), f.F_max_um, f.F_min_um,
-                     f.H_um >= 0 ? fmt::format("{:.2f}", f.H_um) : "(one direction)", f.centre_x_um, f.centre_y_um, f.arc_deg,
-                     verdict_cell(f.G_um, budget, tol));
+  if (!f.ok)
+    return fmt::format("<tr><td class=n>{}</td><td class=n colspan=\"7\">{}</td></tr>", escape(what),
+                       escape(f.message));
+  return fmt::format(
+      "<tr><td class=n>{}</td><td>{}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{}</td><td>{:+.2f}, {:+.2f}</td>"
+      "<td>{:.0f}°</td>{}</tr>",
+      escape(what), escape(value_with_U(f.G_um, budget)), f.F_max_um, f.F_min_um,
+      f.H_um >= 0 ? fmt::format("{:.2f}", f.H_um) : "(one direction)", f.centre_x_um, f.centre_y_um, f.arc_deg,
+      verdict_cell(f.G_um, budget, tol));
 }
 
 }  // namespace
@@ -134,9 +139,10 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
   const report::CircularityFigures after = report::iso230_4_circularity(t.angle, residual_um);
   const std::string name = report::base_name(s.file);
   const std::string subtitle = "axes moved: " + axes_moved(m, s) + "; " + feed_and_direction(t, s, before.direction);
-  std::string h = fmt::format("<h3>{}</h3><p class=\"note\">Bar {:.3f} mm; table ball {:.3f}, {:.3f}, {:.3f} mm; {} rows; {}.</p>",
-                              escape(name), s.bar_length_mm, s.table_ball_mm.x(), s.table_ball_mm.y(), s.table_ball_mm.z(),
-                              s.rows.size(), escape(subtitle));
+  std::string h =
+      fmt::format("<h3>{}</h3><p class=\"note\">Bar {:.3f} mm; table ball {:.3f}, {:.3f}, {:.3f} mm; {} rows; {}.</p>",
+                  escape(name), s.bar_length_mm, s.table_ball_mm.x(), s.table_ball_mm.y(), s.table_ball_mm.z(),
+                  s.rows.size(), escape(subtitle));
   report::PolarFrame f;
   f.title = name + ": ΔL = L − bar length";
   f.subtitle = subtitle;
@@ -147,8 +153,8 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
                               {"measured", "#1f5fbf", t.angle, measured_um}}) +
        "</div>";
   f.title = name + ": residual after identification (own scale)";
-  h += "<div class=\"plot\">" + report::polar_plot(f, {{"measured − identified model", "#2a8a3a", t.angle, residual_um}}) +
-       "</div></div>";
+  h += "<div class=\"plot\">" +
+       report::polar_plot(f, {{"measured − identified model", "#2a8a3a", t.angle, residual_um}}) + "</div></div>";
   const UncertaintyBudget budget = circularity_budget(s, repeat_G_um);
   h += "<table><tr><th class=n>ISO 230-4</th><th>circular deviation G ± U µm</th><th>radial deviation F max µm</th>"
        "<th>F min µm</th><th>circular hysteresis H µm</th><th>LSC centre offset µm</th><th>arc</th>";

@@ -22,7 +22,8 @@ std::string expansion_text(const MeasurementConditions& c) {
 
 }  // namespace
 
-void add_condition_rows(report::Provenance& p, const IdentifyReportInputs& in, const std::vector<MeasurementSet>& sets) {
+void add_condition_rows(report::Provenance& p, const IdentifyReportInputs& in,
+                        const std::vector<MeasurementSet>& sets) {
   if (!in.machine_record.serial.empty()) p.extra.push_back({"machine serial", escape(in.machine_record.serial)});
   if (!in.machine_record.owner.empty()) p.extra.push_back({"machine owner", escape(in.machine_record.owner)});
   std::string dates;
@@ -53,21 +54,23 @@ std::string conditions_html(const std::vector<MeasurementSet>& sets) {
   if (!any)
     return "<p class=\"note\">The data files give no measurement conditions (temperature, expansion, instrument, "
            "operator, date: docs/formats.md \"Measurement conditions\"): lengths are taken as measured at 20 °C.</p>";
-  std::string h = "<h2 id=\"conditions\">Measurement conditions</h2><p class=\"note\">From each data file's header "
-                  "(<code># temperature:</code> °C, <code># material_expansion:</code> 1/K, <code># instrument:</code>, "
-                  "<code># serial:</code>, <code># operator:</code>, <code># date:</code>). Lengths are corrected to the "
-                  "ISO 1 reference temperature 20 °C where the file gives both the temperature and the coefficient: "
-                  "ℓ<sub>20</sub> = ℓ<sub>T</sub> / (1 + α (T − 20 °C)) (docs/formats.md).</p>"
-                  "<table><tr><th class=n>file</th><th class=n>type</th><th class=n>date</th><th>temperature</th>"
-                  "<th>expansion α</th><th class=n>correction to 20 °C</th><th class=n>instrument</th><th class=n>serial</th>"
-                  "<th class=n>operator</th></tr>";
+  std::string h =
+      "<h2 id=\"conditions\">Measurement conditions</h2><p class=\"note\">From each data file's header "
+      "(<code># temperature:</code> °C, <code># material_expansion:</code> 1/K, <code># instrument:</code>, "
+      "<code># serial:</code>, <code># operator:</code>, <code># date:</code>). Lengths are corrected to the "
+      "ISO 1 reference temperature 20 °C where the file gives both the temperature and the coefficient: "
+      "ℓ<sub>20</sub> = ℓ<sub>T</sub> / (1 + α (T − 20 °C)) (docs/formats.md).</p>"
+      "<table><tr><th class=n>file</th><th class=n>type</th><th class=n>date</th><th>temperature</th>"
+      "<th>expansion α</th><th class=n>correction to 20 °C</th><th class=n>instrument</th><th class=n>serial</th>"
+      "<th class=n>operator</th></tr>";
   for (const auto& s : sets) {
     const MeasurementConditions& c = s.conditions;
-    h += fmt::format("<tr><td class=n>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td><td>{}</td><td class=n>{}</td>"
-                     "<td class=n>{}</td><td class=n>{}</td><td class=n>{}</td></tr>",
-                     escape(report::base_name(s.file)), to_string(s.type), escape(or_dash(c.date)), temperature_text(c),
-                     expansion_text(c), escape(correction_text(s)), escape(or_dash(c.instrument)), escape(or_dash(c.serial)),
-                     escape(or_dash(c.operator_name)));
+    h += fmt::format(
+        "<tr><td class=n>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td><td>{}</td><td class=n>{}</td>"
+        "<td class=n>{}</td><td class=n>{}</td><td class=n>{}</td></tr>",
+        escape(report::base_name(s.file)), to_string(s.type), escape(or_dash(c.date)), temperature_text(c),
+        expansion_text(c), escape(correction_text(s)), escape(or_dash(c.instrument)), escape(or_dash(c.serial)),
+        escape(or_dash(c.operator_name)));
   }
   h += "</table>";
   for (const auto& w : temperature_warnings(sets)) h += "<p class=\"fail\">Warning: " + escape(w) + "</p>";
@@ -79,12 +82,14 @@ std::string conditions_html(const std::vector<MeasurementSet>& sets) {
 }
 
 std::string conditions_text(const std::vector<MeasurementSet>& sets) {
-  std::string o = "measurement conditions (lengths corrected to 20 °C where temperature and material_expansion are given):\n";
+  std::string o =
+      "measurement conditions (lengths corrected to 20 °C where temperature and material_expansion are given):\n";
   for (const auto& s : sets) {
     const MeasurementConditions& c = s.conditions;
     o += fmt::format("  {:<24} {}; {}; α {}; {}", report::base_name(s.file), or_dash(c.date), temperature_text(c),
                      expansion_text(c), correction_text(s));
-    if (!c.instrument.empty() || !c.serial.empty()) o += fmt::format("; instrument {} {}", or_dash(c.instrument), c.serial);
+    if (!c.instrument.empty() || !c.serial.empty())
+      o += fmt::format("; instrument {} {}", or_dash(c.instrument), c.serial);
     if (!c.operator_name.empty()) o += "; operator " + c.operator_name;
     o += "\n";
   }

@@ -14,12 +14,13 @@ namespace ncpost::comp {
 std::string control_entries_html(const Machine& m, const ErrorParameters& parameters, ControlFormat format) {
   using report::escape;
   const ControlFormatInfo& info = control_format_info(format);
-  std::string h = fmt::format("<h3 id=\"control-entries\">As entered in the control: {}</h3><p class=\"note\">{}. "
-                              "The lines below are those <code>ncpost export</code> writes from the model file (the "
-                              "file adds notes: source, sign convention, what it cannot hold). Other controls: "
-                              "<code>identify --control FORMAT</code> ({}), or <code>ncpost export --format "
-                              "FORMAT</code>.</p>",
-                              escape(info.title), escape(info.where), escape(control_format_names()));
+  std::string h = fmt::format(
+      "<h3 id=\"control-entries\">As entered in the control: {}</h3><p class=\"note\">{}. "
+      "The lines below are those <code>ncpost export</code> writes from the model file (the "
+      "file adds notes: source, sign convention, what it cannot hold). Other controls: "
+      "<code>identify --control FORMAT</code> ({}), or <code>ncpost export --format "
+      "FORMAT</code>.</p>",
+      escape(info.title), escape(info.where), escape(control_format_names()));
   ControlEntries entries;
   try {
     const MachineModel model(m, parameters);
@@ -28,8 +29,9 @@ std::string control_entries_html(const Machine& m, const ErrorParameters& parame
     return h + "<p class=\"note\">No entries: " + escape(e.what()) + "</p>";
   }
   for (const ControlEntryFile& f : entries.files) {
-    h += fmt::format("<p><b>{}</b> (<code>ncpost export {} -o FILE MODEL.json</code>, {} line(s))</p><pre class=\"control\">",
-                     escape(f.heading), escape(f.export_arguments), f.lines.size());
+    h += fmt::format(
+        "<p><b>{}</b> (<code>ncpost export {} -o FILE MODEL.json</code>, {} line(s))</p><pre class=\"control\">",
+        escape(f.heading), escape(f.export_arguments), f.lines.size());
     for (const std::string& line : f.lines) h += escape(line) + "\n";
     h += "</pre>";
   }

@@ -18,18 +18,24 @@ Verdict decide(double value, double expanded_uncertainty, double tolerance) {
 
 const char* to_string(Verdict v) {
   switch (v) {
-    case Verdict::pass: return "PASS";
-    case Verdict::fail: return "FAIL";
-    case Verdict::not_proven: return "NOT PROVEN";
+    case Verdict::pass:
+      return "PASS";
+    case Verdict::fail:
+      return "FAIL";
+    case Verdict::not_proven:
+      return "NOT PROVEN";
   }
   return "?";
 }
 
 const char* css_class(Verdict v) {
   switch (v) {
-    case Verdict::pass: return "pass";
-    case Verdict::fail: return "fail";
-    case Verdict::not_proven: return "unproven";
+    case Verdict::pass:
+      return "pass";
+    case Verdict::fail:
+      return "fail";
+    case Verdict::not_proven:
+      return "unproven";
   }
   return "";
 }

@@ -27,18 +27,24 @@ char letter_of(int component) { return "XYZABC"[component]; }
 double typical_size(const Machine& m, const ParameterSpec& s) {
   const double base = s.is_angle() ? 5e-5 : 0.01;
   switch (s.kind) {
-    case ParameterKind::polynomial: return base / std::pow(300.0, s.order);
+    case ParameterKind::polynomial:
+      return base / std::pow(300.0, s.order);
     case ParameterKind::reversal:
       return m.axes[static_cast<std::size_t>(s.axis_index)].is_rotary() ? 5e-5 : 0.01;
     case ParameterKind::drift:
       switch (s.drift) {
-        case DriftBasis::linear: return 0.01 / 3600.0;
-        case DriftBasis::quadratic: return 0.01 / (3600.0 * 3600.0);
-        case DriftBasis::exponential: return 0.01;
-        case DriftBasis::time_constant: return 300.0;
+        case DriftBasis::linear:
+          return 0.01 / 3600.0;
+        case DriftBasis::quadratic:
+          return 0.01 / (3600.0 * 3600.0);
+        case DriftBasis::exponential:
+          return 0.01;
+        case DriftBasis::time_constant:
+          return 300.0;
       }
       return 0.01;
-    default: return base;
+    default:
+      return base;
   }
 }
 
@@ -68,16 +74,20 @@ DampedSummary fit_kept(const ResidualProblem& prob, const std::vector<int>& kept
                        const IdentifyOptions& o, const std::vector<double>& values, const Eigen::VectorXd& r0) {
   auto full = [&](const Eigen::VectorXd& x) {
     std::vector<double> v = values;
-    for (std::size_t i = 0; i < kept.size(); ++i) v[static_cast<std::size_t>(kept[i])] = x[static_cast<Eigen::Index>(i)];
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      v[static_cast<std::size_t>(kept[i])] = x[static_cast<Eigen::Index>(i)];
     return v;
   };
   LeastSquaresProblem p;
   p.residuals = [&](const Eigen::VectorXd& x) -> std::optional<Eigen::VectorXd> {
     return row_weight.cwiseProduct(prob.residuals(full(x)));
   };
-  p.jacobian = [&](const Eigen::VectorXd& x) -> Eigen::MatrixXd { return row_weight.asDiagonal() * prob.jacobian(full(x), kept); };
+  p.jacobian = [&](const Eigen::VectorXd& x) -> Eigen::MatrixXd {
+    return row_weight.asDiagonal() * prob.jacobian(full(x), kept);
+  };
   Eigen::VectorXd x0(static_cast<Eigen::Index>(kept.size()));
-  for (std::size_t i = 0; i < kept.size(); ++i) x0[static_cast<Eigen::Index>(i)] = values[static_cast<std::size_t>(kept[i])];
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    x0[static_cast<Eigen::Index>(i)] = values[static_cast<std::size_t>(kept[i])];
   DampedOptions d;
   d.loss = {o.loss, o.loss_scale_um * 1e-3};
   d.max_iterations = o.max_iterations;
@@ -117,7 +127,8 @@ void describe_identifiability(const RankAnalysis& prior_rank, const std::vector<
     const Eigen::VectorXd& v = prior_rank.null_vectors[p];
     NullDirection dir;
     for (Eigen::Index c = 0; c < v.size(); ++c)
-      if (std::abs(v[c]) > kNullComponent) dir.emplace_back(names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])], v[c]);
+      if (std::abs(v[c]) > kNullComponent)
+        dir.emplace_back(names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])], v[c]);
     id.null_space.push_back(dir);
     // fitted kept value = true value + coefficient · (true value of the pinned one − prior)
     std::string text;
@@ -130,7 +141,8 @@ void describe_identifiability(const RankAnalysis& prior_rank, const std::vector<
                           coef < 0 ? "-" : "+", std::abs(coef), pname);
     }
     if (text.empty()) text = pname + " has no effect on these data";
-    id.combinations.push_back(fmt::format("{} pinned at {:g} ({})", pname, values[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])], text));
+    id.combinations.push_back(fmt::format("{} pinned at {:g} ({})", pname,
+                                          values[static_cast<std::size_t>(free[static_cast<std::size_t>(col)])], text));
   }
 }
 
@@ -202,16 +214,20 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 
   // 1. identifiability at the prior
   Eigen::VectorXd typical(static_cast<Eigen::Index>(free.size()));
-  for (std::size_t i = 0; i < free.size(); ++i) typical[static_cast<Eigen::Index>(i)] = typical_size(m, prob.layout.spec(free[i]));
+  for (std::size_t i = 0; i < free.size(); ++i)
+    typical[static_cast<Eigen::Index>(i)] = typical_size(m, prob.layout.spec(free[i]));
   const RankAnalysis prior_rank = analyse_rank(prob.jacobian(values, free), o.rank_tolerance, typical);
   std::vector<int> kept;
   for (int c : prior_rank.kept) kept.push_back(free[static_cast<std::size_t>(c)]);
 
   // 2. Levenberg–Marquardt on the kept parameters (residuals weighted during the fit)
   std::vector<double> start = values;
-  for (int k : kept) start[static_cast<std::size_t>(k)] = o.start.value_or(names[static_cast<std::size_t>(k)], values[static_cast<std::size_t>(k)]);
+  for (int k : kept)
+    start[static_cast<std::size_t>(k)] =
+        o.start.value_or(names[static_cast<std::size_t>(k)], values[static_cast<std::size_t>(k)]);
   const DampedSummary fit = fit_kept(prob, kept, row_weight, o, start, o.start.size() ? prob.residuals(start) : r0);
-  for (std::size_t i = 0; i < kept.size(); ++i) values[static_cast<std::size_t>(kept[i])] = fit.x[static_cast<Eigen::Index>(i)];
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    values[static_cast<std::size_t>(kept[i])] = fit.x[static_cast<Eigen::Index>(i)];
   res.iterations = fit.iterations;
   res.converged = fit.converged;
   res.message = fit.converged ? fmt::format("converged in {} iterations", res.iterations)

@@ -31,10 +31,11 @@ SummaryFigure judged(const std::string& what, double value_um, const Uncertainty
 /// One file's conditions in words (without its name).
 std::string conditions_of(const MeasurementSet& set) {
   const MeasurementConditions& c = set.conditions;
-  return fmt::format("measured {}; {}; instrument {}{}; operator {}; {}", c.date.empty() ? "(date not given)" : c.date,
-                     c.temperature_c ? fmt::format("{:.2f} °C", *c.temperature_c) : std::string("temperature not given"),
-                     c.instrument.empty() ? "not given" : c.instrument, c.serial.empty() ? "" : " (serial " + c.serial + ")",
-                     c.operator_name.empty() ? "not given" : c.operator_name, correction_text(set));
+  return fmt::format(
+      "measured {}; {}; instrument {}{}; operator {}; {}", c.date.empty() ? "(date not given)" : c.date,
+      c.temperature_c ? fmt::format("{:.2f} °C", *c.temperature_c) : std::string("temperature not given"),
+      c.instrument.empty() ? "not given" : c.instrument, c.serial.empty() ? "" : " (serial " + c.serial + ")",
+      c.operator_name.empty() ? "not given" : c.operator_name, correction_text(set));
 }
 
 IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>& sets, const IdentifyReportInputs& in,
@@ -51,8 +52,10 @@ IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>
     s.inputs.push_back({"data", set.file});
     const std::string text = conditions_of(set);
     auto same = std::find_if(grouped.begin(), grouped.end(), [&](const auto& g) { return g.first == text; });
-    if (same == grouped.end()) grouped.push_back({text, report::base_name(set.file)});
-    else same->second += ", " + report::base_name(set.file);
+    if (same == grouped.end())
+      grouped.push_back({text, report::base_name(set.file)});
+    else
+      same->second += ", " + report::base_name(set.file);
   }
   for (const auto& [text, files] : grouped) s.conditions.push_back(files + ": " + text);
   for (const std::string& w : temperature_warnings(sets)) s.warnings.push_back(w);
@@ -60,9 +63,11 @@ IdentificationSummary common(const Machine& m, const std::vector<MeasurementSet>
   return s;
 }
 
-std::pair<std::string, std::string> residual_fact(double rms_nominal, double max_nominal, double rms_after, double max_after) {
-  return {"residual (rms / max)", fmt::format("machine without errors {:.2f} / {:.2f} µm; with the model {:.2f} / {:.2f} µm",
-                                              rms_nominal, max_nominal, rms_after, max_after)};
+std::pair<std::string, std::string> residual_fact(double rms_nominal, double max_nominal, double rms_after,
+                                                  double max_after) {
+  return {"residual (rms / max)",
+          fmt::format("machine without errors {:.2f} / {:.2f} µm; with the model {:.2f} / {:.2f} µm", rms_nominal,
+                      max_nominal, rms_after, max_after)};
 }
 
 void add_ballbar_figures(IdentificationSummary& s, const Machine& m, const MeasurementSet& set,
@@ -81,15 +86,19 @@ void add_ballbar_figures(IdentificationSummary& s, const Machine& m, const Measu
 
 /// One positioning line in one row: A, B, E, M, R ± U; the verdict the worst of the kinds that have a tolerance.
 SummaryFigure iso230_2_line(const Iso230Figures& g, const MeasurementSet& set, const IdentifyReportInputs& in) {
-  const std::pair<char, double> kinds[] = {{'A', g.accuracy_A_um},   {'B', g.reversal_B_um}, {'E', g.systematic_E_um},
-                                           {'M', g.mean_bidirectional_M_um}, {'R', g.repeatability_R_um}};
+  const std::pair<char, double> kinds[] = {{'A', g.accuracy_A_um},
+                                           {'B', g.reversal_B_um},
+                                           {'E', g.systematic_E_um},
+                                           {'M', g.mean_bidirectional_M_um},
+                                           {'R', g.repeatability_R_um}};
   SummaryFigure f{fmt::format("{}: ISO 230-2 of {}", report::base_name(g.file), g.axis), "", "", ""};
   std::optional<Verdict> worst;
   std::string lacks;  // the sources missing from any kind's budget, said once for the row
   for (const auto& [kind, value] : kinds) {
     const UncertaintyBudget b = iso230_2_budget(set, g, kind);
     f.value += fmt::format("{}{} {:.2f} ± {:.2f}", f.value.empty() ? "" : "; ", kind, value, b.expanded_um());
-    if (!b.complete() && lacks.find(b.missing()) == std::string::npos) lacks += (lacks.empty() ? "" : ", ") + b.missing();
+    if (!b.complete() && lacks.find(b.missing()) == std::string::npos)
+      lacks += (lacks.empty() ? "" : ", ") + b.missing();
     const auto tol = tolerance_for(in, std::string(1, kind));
     if (!tol) continue;
     const Verdict v = decide(value, b.expanded_um(), *tol);
@@ -123,8 +132,9 @@ IdentificationSummary identification_summary(const Machine& m, const std::vector
     const std::string& n = r.parameters.names()[i];
     const ReportValue v = report_value(m, n, r.parameters.values()[i]);
     const auto u = r.uncertainty.get(n);
-    s.figures.push_back({"parameter " + n, u ? fmt::format("{:.3f} ± {:.3f} {}", v.value, 2.0 * report_value(m, n, *u).value, v.unit)
-                                             : fmt::format("{:.3f} {} (given, not fitted)", v.value, v.unit),
+    s.figures.push_back({"parameter " + n,
+                         u ? fmt::format("{:.3f} ± {:.3f} {}", v.value, 2.0 * report_value(m, n, *u).value, v.unit)
+                           : fmt::format("{:.3f} {} (given, not fitted)", v.value, v.unit),
                          "", ""});
   }
   if (shown < r.parameters.size())
@@ -142,7 +152,8 @@ IdentificationSummary laser_identification_summary(const Machine& m, const std::
     for (const MeasurementSet& set : sets)
       if (set.file == g.file) s.figures.push_back(iso230_2_line(g, set, in));
   for (std::size_t i = 0; i < r.squareness.size(); ++i)
-    s.figures.push_back({"squareness " + r.squareness.names()[i], fmt::format("{:.2f} µrad", r.squareness.values()[i] * 1e6), "", ""});
+    s.figures.push_back(
+        {"squareness " + r.squareness.names()[i], fmt::format("{:.2f} µrad", r.squareness.values()[i] * 1e6), "", ""});
   for (const std::string& u : r.unseen) s.warnings.push_back("not seen by these lines: " + u);
   return s;
 }

@@ -36,7 +36,8 @@ Eigen::VectorXd ResidualProblem::residuals(const std::vector<double>& values) co
     const double unit = value_unit_mm(s);
     const int n = s.values_per_row();
     for (std::size_t k = 0; k < s.rows.size(); ++k)
-      for (int v = 0; v < n; ++v) r[i++] = unit * (p[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(v)] - s.rows[k].value[v]);
+      for (int v = 0; v < n; ++v)
+        r[i++] = unit * (p[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(v)] - s.rows[k].value[v]);
   }
   return r;
 }
@@ -47,14 +48,14 @@ Eigen::MatrixXd ResidualProblem::jacobian(const std::vector<double>& values, con
     const int chunk = static_cast<int>(std::min<std::size_t>(kJetSize, columns.size() - first));
     std::vector<Jet> jets(values.size());
     for (std::size_t p = 0; p < values.size(); ++p) jets[p] = Jet(values[p], Derivatives::Zero());
-    for (int c = 0; c < chunk; ++c) jets[static_cast<std::size_t>(columns[first + static_cast<std::size_t>(c)])].derivatives()[c] = 1.0;
+    for (int c = 0; c < chunk; ++c)
+      jets[static_cast<std::size_t>(columns[first + static_cast<std::size_t>(c)])].derivatives()[c] = 1.0;
     Eigen::Index i = 0;
     for (const auto& s : *sets) {
       const std::vector<Jet> p = predict_set<Jet>(*machine, s, layout, jets.data());
       const double unit = value_unit_mm(s);
       for (const Jet& v : p) {
-        for (int c = 0; c < chunk; ++c)
-          J(i, static_cast<Eigen::Index>(first) + c) = unit * v.derivatives()[c];
+        for (int c = 0; c < chunk; ++c) J(i, static_cast<Eigen::Index>(first) + c) = unit * v.derivatives()[c];
         ++i;
       }
     }

@@ -47,17 +47,20 @@ std::string sphere_section(const Machine& m, const MeasurementSet& s, const std:
       after[c].push_back(v - 1e3 * fitted[3 * k + static_cast<std::size_t>(c)]);
     }
   const std::string name = report::base_name(s.file);
-  std::string h = fmt::format("<h3>{}</h3><p class=\"note\">Sphere centre at home {:.3f}, {:.3f}, {:.3f} mm; {} probed "
-                              "positions. dx, dy, dz: the sphere centre measured relative to its nominal place (µm); "
-                              "residual: measured − predicted by the model.</p>",
-                              escape(name), s.sphere_mm.x(), s.sphere_mm.y(), s.sphere_mm.z(), n);
-  h += "<table><tr><th class=n>dispersion per axis (µm)</th><th>mean</th><th>s</th><th>range</th><th>residual s, nominal "
+  std::string h = fmt::format(
+      "<h3>{}</h3><p class=\"note\">Sphere centre at home {:.3f}, {:.3f}, {:.3f} mm; {} probed "
+      "positions. dx, dy, dz: the sphere centre measured relative to its nominal place (µm); "
+      "residual: measured − predicted by the model.</p>",
+      escape(name), s.sphere_mm.x(), s.sphere_mm.y(), s.sphere_mm.z(), n);
+  h += "<table><tr><th class=n>dispersion per axis (µm)</th><th>mean</th><th>s</th><th>range</th><th>residual s, "
+       "nominal "
        "model</th><th>range</th><th>residual s, identified</th><th>range</th></tr>";
   for (int c = 0; c < 3; ++c) {
     const Dispersion dm = dispersion(measured[c]), db = dispersion(before[c]), da = dispersion(after[c]);
-    h += fmt::format("<tr><td class=n>d{}</td><td>{:+.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td>"
-                     "<td>{:.3f}</td><td>{:.3f}</td></tr>",
-                     "xyz"[c], dm.mean, dm.sd, dm.range, db.sd, db.range, da.sd, da.range);
+    h += fmt::format(
+        "<tr><td class=n>d{}</td><td>{:+.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td>"
+        "<td>{:.3f}</td><td>{:.3f}</td></tr>",
+        "xyz"[c], dm.mean, dm.sd, dm.range, db.sd, db.range, da.sd, da.range);
   }
   h += "</table><table><tr><th>line</th>";
   for (const auto& a : m.axes) h += fmt::format("<th>{} ({})</th>", a.letter, a.is_rotary() ? "°" : "mm");
@@ -67,8 +70,9 @@ std::string sphere_section(const Machine& m, const MeasurementSet& s, const std:
     for (int a = 0; a < static_cast<int>(m.axes.size()); ++a)
       h += a < 3 ? fmt::format("<td>{:.3f}</td>", s.rows[k].command[a])
                  : fmt::format("<td>{:.3f}</td>", s.rows[k].command[a] * 180.0 / 3.141592653589793);
-    h += fmt::format("<td>{:+.2f}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{:+.3f}</td><td>{:+.3f}</td><td>{:+.3f}</td></tr>",
-                     measured[0][k], measured[1][k], measured[2][k], after[0][k], after[1][k], after[2][k]);
+    h += fmt::format(
+        "<td>{:+.2f}</td><td>{:+.2f}</td><td>{:+.2f}</td><td>{:+.3f}</td><td>{:+.3f}</td><td>{:+.3f}</td></tr>",
+        measured[0][k], measured[1][k], measured[2][k], after[0][k], after[1][k], after[2][k]);
   }
   h += "</table>";
   if (n > kRowsShown) h += fmt::format("<p class=\"note\">First {} of {} positions shown.</p>", kRowsShown, n);

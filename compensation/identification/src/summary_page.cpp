@@ -22,7 +22,8 @@ constexpr const char* kStyle =
     "text-align:left;vertical-align:top}th{background:#eee}.hash{font-family:monospace;font-size:6.5pt;color:#444}"
     ".pass{color:#0a7a2a;font-weight:bold}.fail{color:#c0241b;font-weight:bold}.unproven{color:#a05a00;"
     "font-weight:bold}.note{font-size:8pt;color:#333;margin:2px 0}ul.note{padding-left:16px}.sign td{height:9mm}"
-    ".facts th{white-space:nowrap;width:1%}.sign{break-inside:avoid;page-break-inside:avoid}@media print{a{color:inherit;text-decoration:none}}</style>";
+    ".facts th{white-space:nowrap;width:1%}.sign{break-inside:avoid;page-break-inside:avoid}@media "
+    "print{a{color:inherit;text-decoration:none}}</style>";
 
 const char* verdict_class(const std::string& v) {
   return v == "PASS" ? "pass" : v == "FAIL" ? "fail" : v.empty() ? "" : "unproven";
@@ -46,8 +47,10 @@ std::string facts_table(const IdentificationSummary& s) {
   }
   for (const auto& [role, files] : roles)
     h += fmt::format("<tr><th>{}{}</th><td>{}</td></tr>", escape(role),
-                     files.size() > 1 ? fmt::format(" ({} files)", files.size()) : "", fmt::format("{}", fmt::join(files, "; ")));
-  h += "<tr><th>SHA-256</th><td class=\"note\">the first 12 hex digits of each input; all 64 in the full report</td></tr>";
+                     files.size() > 1 ? fmt::format(" ({} files)", files.size()) : "",
+                     fmt::format("{}", fmt::join(files, "; ")));
+  h += "<tr><th>SHA-256</th><td class=\"note\">the first 12 hex digits of each input; all 64 in the full "
+       "report</td></tr>";
   return h + fmt::format("<tr><th>report date (UTC)</th><td>{}</td></tr><tr><th>ncpost</th><td>{}</td></tr></table>",
                          report::utc_now(), escape(ncpost::version()));
 }
@@ -55,14 +58,15 @@ std::string facts_table(const IdentificationSummary& s) {
 std::string figures_table(const IdentificationSummary& s) {
   std::string h = "<table><tr><th>figure</th><th>value ± U (k = 2)</th><th>tolerance</th><th>verdict</th></tr>";
   for (const SummaryFigure& f : s.figures)
-    h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td></tr>", escape(f.what), escape(f.value),
-                     escape(f.against.empty() ? "—" : f.against), verdict_class(f.verdict),
+    h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td></tr>", escape(f.what),
+                     escape(f.value), escape(f.against.empty() ? "—" : f.against), verdict_class(f.verdict),
                      escape(f.verdict.empty() ? "—" : f.verdict));
   return h + "</table>";
 }
 
 std::string signature_block() {
-  return "<h2>Signatures</h2><table class=\"sign\"><tr><th style=\"width:22%\"></th><th>name</th><th style=\"width:18%\">"
+  return "<h2>Signatures</h2><table class=\"sign\"><tr><th style=\"width:22%\"></th><th>name</th><th "
+         "style=\"width:18%\">"
          "date</th><th style=\"width:32%\">signature</th></tr><tr><th>measured by</th><td></td><td></td><td></td></tr>"
          "<tr><th>evaluated by</th><td></td><td></td><td></td></tr><tr><th>approved by</th><td></td><td></td><td></td>"
          "</tr></table>";
@@ -94,7 +98,8 @@ std::string summary_path(const std::string& report_path) {
   const std::size_t slash = report_path.find_last_of('/');
   const std::size_t dot = report_path.find_last_of('.');
   const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  return has_extension ? report_path.substr(0, dot) + "-summary" + report_path.substr(dot) : report_path + "-summary.html";
+  return has_extension ? report_path.substr(0, dot) + "-summary" + report_path.substr(dot)
+                       : report_path + "-summary.html";
 }
 
 }  // namespace ncpost::comp

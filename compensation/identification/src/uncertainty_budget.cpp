@@ -24,16 +24,18 @@ BudgetLine temperature_line(const MeasurementSet& set, double length_mm) {
   if (!c.temperature_c) return {"temperature", 0.0, "not given (# temperature:)", false};
   if (!c.expansion_per_k)
     return {"temperature", 0.0,
-            fmt::format("{:g} °C not corrected to 20 °C: no # material_expansion: (the expansion is unknown)", *c.temperature_c),
+            fmt::format("{:g} °C not corrected to 20 °C: no # material_expansion: (the expansion is unknown)",
+                        *c.temperature_c),
             false};
   const double dt_k = *c.temperature_c - kReferenceTemperatureC;
   if (!c.temperature_u_k || !c.expansion_u_per_k)
-    return {"temperature", 0.0, "the correction's uncertainty not given (# temperature_uncertainty: K, # expansion_uncertainty: 1/K)",
+    return {"temperature", 0.0,
+            "the correction's uncertainty not given (# temperature_uncertainty: K, # expansion_uncertainty: 1/K)",
             false};
   const double relative = std::hypot(dt_k * *c.expansion_u_per_k, *c.expansion_per_k * *c.temperature_u_k);
   return {"temperature", 1000.0 * length_mm * relative,
-          fmt::format("over {:g} mm: ΔT {:+g} K, u_α {:g} /K, α {:g} /K, u_T {:g} K", length_mm, dt_k, *c.expansion_u_per_k,
-                      *c.expansion_per_k, *c.temperature_u_k)};
+          fmt::format("over {:g} mm: ΔT {:+g} K, u_α {:g} /K, α {:g} /K, u_T {:g} K", length_mm, dt_k,
+                      *c.expansion_u_per_k, *c.expansion_per_k, *c.temperature_u_k)};
 }
 
 }  // namespace

@@ -24,16 +24,18 @@ std::string verdict_cell(double value_um, const UncertaintyBudget& b, std::optio
 }
 
 std::string budget_table_html(const std::string& figure, const UncertaintyBudget& b) {
-  std::string h = fmt::format("<table><tr><th class=n colspan=\"3\">uncertainty budget of {} (ISO 230-9)</th></tr>"
-                              "<tr><th class=n>source</th><th>u µm</th><th class=n>from</th></tr>",
-                              escape(figure));
+  std::string h = fmt::format(
+      "<table><tr><th class=n colspan=\"3\">uncertainty budget of {} (ISO 230-9)</th></tr>"
+      "<tr><th class=n>source</th><th>u µm</th><th class=n>from</th></tr>",
+      escape(figure));
   for (const BudgetLine& l : b.lines)
     h += fmt::format("<tr><td class=n>{}</td><td>{}</td><td class=n>{}</td></tr>", escape(l.source),
                      l.given ? fmt::format("{:.3f}", l.u_um) : std::string("—"), escape(l.note));
-  h += fmt::format("<tr><td class=n>combined u<sub>c</sub></td><td>{:.3f}</td><td class=n>√Σu²</td></tr>"
-                   "<tr><th class=n>expanded U (k = 2)</th><th>{:.3f}</th><th class=n>{}</th></tr></table>",
-                   b.combined_um(), b.expanded_um(),
-                   b.complete() ? std::string("complete") : escape("incomplete: " + b.missing() + " not given"));
+  h += fmt::format(
+      "<tr><td class=n>combined u<sub>c</sub></td><td>{:.3f}</td><td class=n>√Σu²</td></tr>"
+      "<tr><th class=n>expanded U (k = 2)</th><th>{:.3f}</th><th class=n>{}</th></tr></table>",
+      b.combined_um(), b.expanded_um(),
+      b.complete() ? std::string("complete") : escape("incomplete: " + b.missing() + " not given"));
   return h;
 }
 

@@ -9,7 +9,9 @@
 
 namespace ncpost::comp {
 
-bool LaserFunction::fully_seen() const { return std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }); }
+bool LaserFunction::fully_seen() const {
+  return std::all_of(seen.begin(), seen.end(), [](bool b) { return b; });
+}
 
 bool LaserFunction::partly_seen() const {
   int n = 0;
@@ -58,7 +60,8 @@ double least_squares_slope(const std::vector<double>& x, const std::vector<doubl
   return s;
 }
 
-double fit_polynomial_through_home(const std::vector<double>& x, const std::vector<double>& y, std::array<double, 3>& p) {
+double fit_polynomial_through_home(const std::vector<double>& x, const std::vector<double>& y,
+                                   std::array<double, 3>& p) {
   const double scale = std::max(1.0, std::max(std::abs(x.front()), std::abs(x.back())));
   Eigen::MatrixXd A(static_cast<Eigen::Index>(x.size()), 3);
   Eigen::VectorXd b(static_cast<Eigen::Index>(x.size()));

@@ -106,7 +106,8 @@ std::vector<Candidate> lay_out(Problem& pb, bool fit_reversal, const std::array<
 
 /// Columns in priority order (pb.column_of, pb.param_of, res.candidates); the typical size of each.
 Eigen::VectorXd order_columns(Problem& pb, std::vector<Candidate> cand, LaserIdentifyResult& res) {
-  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.priority < b.priority; });
+  std::stable_sort(cand.begin(), cand.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.priority < b.priority; });
   pb.column_of.assign(pb.names.size(), -1);
   Eigen::VectorXd typical(static_cast<Eigen::Index>(cand.size()));
   for (const auto& c : cand) {
@@ -154,8 +155,10 @@ Fit fit_tables(const Problem& pb, const Eigen::VectorXd& typical, const LaserIde
   d.step_tolerance.resize(static_cast<Eigen::Index>(kept.size()));
   for (std::size_t i = 0; i < kept.size(); ++i)
     d.step_tolerance[static_cast<Eigen::Index>(i)] =
-        kConvergedUnits * (pb.layout.spec(pb.param_of[static_cast<std::size_t>(kept[i])]).is_angle() ? kAngleUnitRad : kLengthUnitMm);
-  const DampedSummary sol = levenberg_marquardt(p, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kept.size())), r0, d);
+        kConvergedUnits *
+        (pb.layout.spec(pb.param_of[static_cast<std::size_t>(kept[i])]).is_angle() ? kAngleUnitRad : kLengthUnitMm);
+  const DampedSummary sol =
+      levenberg_marquardt(p, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kept.size())), r0, d);
   fit.values = full(sol.x);
   res.iterations = sol.iterations;
   stats(sol.r, res.rms_fit_um, res.max_fit_um);
@@ -165,7 +168,8 @@ Fit fit_tables(const Problem& pb, const Eigen::VectorXd& typical, const LaserIde
     const Eigen::MatrixXd cov = scaled_svd(kept_jacobian(sol.x)).covariance(sol.r.squaredNorm() / double(dof));
     for (std::size_t i = 0; i < kept.size(); ++i) {
       const auto ii = static_cast<Eigen::Index>(i);
-      fit.sigma[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] = std::sqrt(std::max(0.0, cov(ii, ii)));
+      fit.sigma[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(kept[i])])] =
+          std::sqrt(std::max(0.0, cov(ii, ii)));
     }
   }
   return fit;
@@ -214,8 +218,10 @@ void collect_functions(const Problem& pb, const Fit& fit, LaserIdentifyResult& r
     if (slope.count(q.a) && slope.count(q.b) && slope_seen[q.a] && slope_seen[q.b]) {
       res.squareness.set(q.name, q.sign * (slope[q.a] + slope[q.b]));
     } else {
-      res.squareness_unseen.push_back(fmt::format("{}: needs the straightness {} and {} (their least-squares slopes, "
-                                                  "ISO 230-1)", q.name, q.a, q.b));
+      res.squareness_unseen.push_back(
+          fmt::format("{}: needs the straightness {} and {} (their least-squares slopes, "
+                      "ISO 230-1)",
+                      q.name, q.a, q.b));
     }
   }
   for (int a = 0; a < 3; ++a)
@@ -230,8 +236,10 @@ void write_model(const Machine& m, const Problem& pb, LaserIdentifyResult& res) 
   for (const auto& f : res.functions)
     for (std::size_t i = 0; i < f.nodes_mm.size(); ++i)
       res.parameters.set(table_parameter_name(f.component, f.axis, f.nodes_mm[i]), f.values[i]);
-  for (std::size_t i = 0; i < res.squareness.size(); ++i) res.parameters.set(res.squareness.names()[i], res.squareness.values()[i]);
-  for (std::size_t i = 0; i < res.reversal.size(); ++i) res.parameters.set(res.reversal.names()[i], res.reversal.values()[i]);
+  for (std::size_t i = 0; i < res.squareness.size(); ++i)
+    res.parameters.set(res.squareness.names()[i], res.squareness.values()[i]);
+  for (std::size_t i = 0; i < res.reversal.size(); ++i)
+    res.parameters.set(res.reversal.names()[i], res.reversal.values()[i]);
   const ModelLayout final_layout(m, res.parameters.names());
   Eigen::VectorXd rf(pb.rows);
   Eigen::Index k = 0;
@@ -253,8 +261,8 @@ void describe_unseen(LaserIdentifyResult& res) {
       unseen += !f.seen[i];
     }
     if (unseen == 0) continue;
-    res.unseen.push_back(fmt::format("{} ({} of {}): {} of {} nodes not seen — {}", f.name(), f.kind(), f.axis,
-                                     unseen, total, why_unseen(f)));
+    res.unseen.push_back(fmt::format("{} ({} of {}): {} of {} nodes not seen — {}", f.name(), f.kind(), f.axis, unseen,
+                                     total, why_unseen(f)));
   }
   for (const auto& s : res.squareness_unseen) res.unseen.push_back(s);
   for (std::size_t i = 0; i < res.rank.pinned.size() && i < kMaxCombinations; ++i) {
@@ -268,7 +276,8 @@ void describe_unseen(LaserIdentifyResult& res) {
     std::sort(w.begin(), w.end());
     for (const auto& [mag, c] : w) {
       if (terms++ == kCombinationTerms) break;
-      text += fmt::format(" {}{:.2f}·{}", terms > 1 ? "+ " : "", -v[c] / v[p], res.candidates[static_cast<std::size_t>(c)]);
+      text +=
+          fmt::format(" {}{:.2f}·{}", terms > 1 ? "+ " : "", -v[c] / v[p], res.candidates[static_cast<std::size_t>(c)]);
     }
     if (terms == 0) text += " nothing: without effect on these readings";
     res.combinations.push_back(text + " (column-scaled)");
@@ -285,7 +294,8 @@ std::string LaserIdentifyOptions::validate() const {
 
 bool all_laser(const std::vector<MeasurementSet>& sets) {
   if (sets.empty()) return false;
-  return std::all_of(sets.begin(), sets.end(), [](const MeasurementSet& s) { return s.type == MeasurementType::laser; });
+  return std::all_of(sets.begin(), sets.end(),
+                     [](const MeasurementSet& s) { return s.type == MeasurementType::laser; });
 }
 
 LaserIdentifyResult identify_laser(const Machine& m, const std::vector<MeasurementSet>& input,

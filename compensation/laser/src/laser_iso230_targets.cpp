@@ -35,10 +35,11 @@ std::string iso230_2_target_table_html(const Iso230Figures& g) {
       "<th>x̄<sub>i</sub></th><th>R↑<sub>i</sub></th><th>R↓<sub>i</sub></th><th>R<sub>i</sub></th></tr>",
       report::escape(report::base_name(g.file)), g.axis);
   for (const Iso230TargetRow& r : iso230_2_target_rows(g))
-    h += fmt::format("<tr><td>{:.3f}</td><td>{}/{}</td><td>{:+.3f}</td><td>{:+.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
-                     "<td>{:+.3f}</td><td>{:+.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>",
-                     r.target_mm, r.runs_up, r.runs_down, r.mean_up_um, r.mean_down_um, r.two_s_up_um, r.two_s_down_um,
-                     r.reversal_um, r.mean_bidirectional_um, r.repeat_up_um, r.repeat_down_um, r.repeat_um);
+    h += fmt::format(
+        "<tr><td>{:.3f}</td><td>{}/{}</td><td>{:+.3f}</td><td>{:+.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
+        "<td>{:+.3f}</td><td>{:+.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>",
+        r.target_mm, r.runs_up, r.runs_down, r.mean_up_um, r.mean_down_um, r.two_s_up_um, r.two_s_down_um,
+        r.reversal_um, r.mean_bidirectional_um, r.repeat_up_um, r.repeat_down_um, r.repeat_um);
   return h + "</table>";
 }
 

@@ -15,7 +15,8 @@ ModelFile laser_model_file(const Machine& m, const LaserIdentifyResult& r) {
   f.parameters = r.parameters;
   for (const auto& fn : r.functions)
     for (std::size_t i = 0; i < fn.nodes_mm.size(); ++i)
-      if (fn.sigma[i] > 0.0) f.uncertainty.set(table_parameter_name(fn.component, fn.axis, fn.nodes_mm[i]), fn.sigma[i]);
+      if (fn.sigma[i] > 0.0)
+        f.uncertainty.set(table_parameter_name(fn.component, fn.axis, fn.nodes_mm[i]), fn.sigma[i]);
   for (std::size_t i = 0; i < r.reversal_sigma.size(); ++i)
     f.uncertainty.set(r.reversal_sigma.names()[i], r.reversal_sigma.values()[i]);
   Identifiability id;

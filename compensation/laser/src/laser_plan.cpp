@@ -128,7 +128,8 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
         for (int n = 0; n < 2; ++n) components.push_back(static_cast<char>('X' + other[n]));
       for (char c : components) {
         NamedPlan p;
-        p.name = c == letter ? fmt::format("{}{}_pos", letter, line + 1) : fmt::format("{}{}_str{}", letter, line + 1, c);
+        p.name =
+            c == letter ? fmt::format("{}{}_pos", letter, line + 1) : fmt::format("{}{}_str{}", letter, line + 1, c);
         MeasurementSet& s = p.set;
         s.file = p.name;
         s.type = MeasurementType::laser;
@@ -176,7 +177,8 @@ PlanProgram laser_program(const Machine& m, const std::vector<NamedPlan>& plans,
     const int j = s.meta("axis").empty() ? 0 : s.meta("axis")[0] - 'X';
     p.comment(fmt::format("--- set {}: {} ---", named.name, s.meta("test")));
     p.comment(fmt::format("reflector at {:.1f}, {:.1f}, {:.1f} mm from the tool tip, tool length {:.1f} mm, reads {}",
-                          s.tool_point_mm.x(), s.tool_point_mm.y(), s.tool_point_mm.z(), s.tool_length_mm, s.component));
+                          s.tool_point_mm.x(), s.tool_point_mm.y(), s.tool_point_mm.z(), s.tool_length_mm,
+                          s.component));
     AxisPosition start = s.rows.front().command;
     start[j] -= o.overshoot_mm;
     p.rapid(start);

@@ -9,10 +9,10 @@
 namespace ncpost::comp::laser {
 
 int priority_of(int axis, int component) {
-  if (component == axis) return 0;          // positioning
-  if (component < 3) return 2;              // straightness
-  if (component - 3 == axis) return 4;      // roll
-  return 3;                                 // pitch, yaw
+  if (component == axis) return 0;      // positioning
+  if (component < 3) return 2;          // straightness
+  if (component - 3 == axis) return 4;  // roll
+  return 3;                             // pitch, yaw
 }
 
 void fill_approach(MeasurementSet& set) {
@@ -21,10 +21,14 @@ void fill_approach(MeasurementSet& set) {
   for (std::size_t k = 0; k < set.rows.size(); ++k) {
     MeasurementRow& r = set.rows[k];
     const bool first = k == 0 || set.rows[k - 1].run != r.run;
-    if (first) r.approach = 1;
-    else if (r.command[j] > set.rows[k - 1].command[j] + 1e-9) r.approach = 1;
-    else if (r.command[j] < set.rows[k - 1].command[j] - 1e-9) r.approach = -1;
-    else r.approach = -set.rows[k - 1].approach;
+    if (first)
+      r.approach = 1;
+    else if (r.command[j] > set.rows[k - 1].command[j] + 1e-9)
+      r.approach = 1;
+    else if (r.command[j] < set.rows[k - 1].command[j] - 1e-9)
+      r.approach = -1;
+    else
+      r.approach = -set.rows[k - 1].approach;
   }
 }
 
@@ -35,8 +39,10 @@ std::vector<int> Problem::support(int set_index, const MeasurementRow& row) cons
     if (x.empty()) continue;
     const double q = row.command[a];
     std::vector<std::size_t> idx;
-    if (q <= x.front()) idx = {0};
-    else if (q >= x.back()) idx = {x.size() - 1};
+    if (q <= x.front())
+      idx = {0};
+    else if (q >= x.back())
+      idx = {x.size() - 1};
     else {
       std::size_t i = 1;
       while (x[i] < q) ++i;
@@ -54,8 +60,8 @@ std::vector<int> Problem::support(int set_index, const MeasurementRow& row) cons
 }
 
 double Problem::raw(int set_index, const MeasurementRow& row, const std::vector<double>& values) const {
-  const ErrorFunctor<double> f(layout, values.data(),
-                               laser_row_state(layout, values.data(), moving[static_cast<std::size_t>(set_index)], row));
+  const ErrorFunctor<double> f(
+      layout, values.data(), laser_row_state(layout, values.data(), moving[static_cast<std::size_t>(set_index)], row));
   return laser_raw_reading_um(*machine, sets[static_cast<std::size_t>(set_index)], row, f);
 }
 
@@ -95,7 +101,8 @@ Eigen::MatrixXd Problem::jacobian(const std::vector<double>& values) const {
     Eigen::Index base = k - static_cast<Eigen::Index>(set.rows.size());
     std::map<int, Eigen::RowVectorXd> zero;
     for (const auto& [run, at] : first_of_run) zero.emplace(run, J.row(at));
-    for (std::size_t i = 0; i < set.rows.size(); ++i) J.row(base + static_cast<Eigen::Index>(i)) -= zero.at(set.rows[i].run);
+    for (std::size_t i = 0; i < set.rows.size(); ++i)
+      J.row(base + static_cast<Eigen::Index>(i)) -= zero.at(set.rows[i].run);
   }
   return J;
 }

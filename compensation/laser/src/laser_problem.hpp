@@ -31,9 +31,9 @@ struct Problem {
   std::array<int, 3> reversal_param{-1, -1, -1};
   std::vector<std::string> names;  ///< layout order
   ModelLayout layout;
-  std::vector<int> column_of;      ///< layout index → Jacobian column (−1: fixed home node)
-  std::vector<int> param_of;       ///< column → layout index
-  std::vector<int> moving;         ///< per set
+  std::vector<int> column_of;  ///< layout index → Jacobian column (−1: fixed home node)
+  std::vector<int> param_of;   ///< column → layout index
+  std::vector<int> moving;     ///< per set
   Eigen::Index rows = 0;
 
   /// Layout indices of the fitted parameters that can change this row's raw reading.

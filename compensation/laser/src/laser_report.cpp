@@ -58,8 +58,9 @@ std::string iso230_plot(const Iso230Figures& g) {
     reversal.x.push_back(t.target_mm), reversal.y.push_back(t.reversal_um());
   }
   report::XyFrame fr;
-  fr.title = fmt::format("{}: axis {}, A {:.2f} R {:.2f} B {:.2f} E {:.2f} M {:.2f} µm", report::base_name(g.file), g.axis,
-                         g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.systematic_E_um, g.mean_bidirectional_M_um);
+  fr.title =
+      fmt::format("{}: axis {}, A {:.2f} R {:.2f} B {:.2f} E {:.2f} M {:.2f} µm", report::base_name(g.file), g.axis,
+                  g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.systematic_E_um, g.mean_bidirectional_M_um);
   fr.x_label = fmt::format("target position {} (mm)", g.axis);
   fr.y_label = "positional deviation (µm)";
   fr.width = 560;
@@ -97,9 +98,10 @@ std::string iso230_2_verdicts_html(const LaserIdentifyResult& r, const std::vect
       if (s.file == g.file) set = &s;
     if (!set) continue;
     h += fmt::format("<tr><td class=n>{}</td><td>{}</td>", escape(report::base_name(g.file)), g.axis);
-    budgets += fmt::format("<table><tr><th class=n colspan=\"6\">uncertainty budget of {} (ISO 230-9), u µm</th></tr>"
-                           "<tr><th class=n>source</th>",
-                           escape(report::base_name(g.file)));
+    budgets += fmt::format(
+        "<table><tr><th class=n colspan=\"6\">uncertainty budget of {} (ISO 230-9), u µm</th></tr>"
+        "<tr><th class=n>source</th>",
+        escape(report::base_name(g.file)));
     std::vector<UncertaintyBudget> of_kind;
     for (const Figure& f : kFigures) {
       of_kind.push_back(iso230_2_budget(*set, g, f.kind));
@@ -112,7 +114,8 @@ std::string iso230_2_verdicts_html(const LaserIdentifyResult& r, const std::vect
     for (std::size_t line = 0; line < of_kind[0].lines.size(); ++line) {
       budgets += "<tr><td class=n>" + escape(of_kind[0].lines[line].source) + "</td>";
       for (const auto& b : of_kind)
-        budgets += line < b.lines.size() && b.lines[line].given ? fmt::format("<td>{:.3f}</td>", b.lines[line].u_um) : "<td>—</td>";
+        budgets += line < b.lines.size() && b.lines[line].given ? fmt::format("<td>{:.3f}</td>", b.lines[line].u_um)
+                                                                : "<td>—</td>";
       std::string notes = of_kind[0].lines[line].note;
       for (std::size_t k : {std::size_t{1}, std::size_t{4}})
         if (line < of_kind[k].lines.size() && of_kind[k].lines[line].note != notes)
@@ -131,14 +134,15 @@ std::string iso230_2_verdicts_html(const LaserIdentifyResult& r, const std::vect
 std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
   std::string o = fmt::format("laser identification of {}: {} readings; {}\n", m.name, r.readings, r.message);
   if (!r.ok) return o;
-  o += fmt::format("residual: machine without errors {:.2f} µm rms / {:.2f} max; fitted {:.2f} / {:.2f}; "
-                   "model as written (ISO 230-1 reference) {:.2f} / {:.2f}\n",
-                   r.rms_nominal_um, r.max_nominal_um, r.rms_fit_um, r.max_fit_um, r.rms_after_um, r.max_after_um);
+  o += fmt::format(
+      "residual: machine without errors {:.2f} µm rms / {:.2f} max; fitted {:.2f} / {:.2f}; "
+      "model as written (ISO 230-1 reference) {:.2f} / {:.2f}\n",
+      r.rms_nominal_um, r.max_nominal_um, r.rms_fit_um, r.max_fit_um, r.rms_after_um, r.max_after_um);
   o += "\nISO 230-2 per positioning line (µm): A accuracy, R repeatability, B reversal (mean), E systematic, M mean\n";
   for (const auto& g : r.iso230)
     o += fmt::format("  {:<12} {}  A {:7.2f}  R {:6.2f}  B {:6.2f} ({:+6.2f})  E {:7.2f}  M {:7.2f}\n",
-                     g.file.substr(g.file.find_last_of('/') + 1), g.axis, g.accuracy_A_um, g.repeatability_R_um, g.reversal_B_um, g.mean_reversal_um, g.systematic_E_um,
-                     g.mean_bidirectional_M_um);
+                     g.file.substr(g.file.find_last_of('/') + 1), g.axis, g.accuracy_A_um, g.repeatability_R_um,
+                     g.reversal_B_um, g.mean_reversal_um, g.systematic_E_um, g.mean_bidirectional_M_um);
   o += "\nerror functions (tables at every target; ISO 230-1 reference; p1..p3 fitted through home)\n";
   for (const auto& f : r.functions) {
     double lo = 0, hi = 0, sig = 0;
@@ -147,13 +151,15 @@ std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
       hi = std::max(hi, shown(f, f.values[i]));
       sig = std::max(sig, shown(f, f.sigma[i]));
     }
-    o += fmt::format("  {} {:<18} {:>4}: {:8.2f} … {:8.2f} {} (±{:.2f}){}; p1..p3 {:.4g} {:.4g} {:.4g}, fit rms {:.2f}\n",
-                     f.name(), f.kind(), f.axis, lo, hi, unit(f), sig,
-                     f.fully_seen() ? "" : (f.partly_seen() ? " PARTLY UNSEEN" : " NOT SEEN"), f.polynomial[0],
-                     f.polynomial[1], f.polynomial[2], shown(f, f.polynomial_rms));
+    o += fmt::format(
+        "  {} {:<18} {:>4}: {:8.2f} … {:8.2f} {} (±{:.2f}){}; p1..p3 {:.4g} {:.4g} {:.4g}, fit rms {:.2f}\n", f.name(),
+        f.kind(), f.axis, lo, hi, unit(f), sig,
+        f.fully_seen() ? "" : (f.partly_seen() ? " PARTLY UNSEEN" : " NOT SEEN"), f.polynomial[0], f.polynomial[1],
+        f.polynomial[2], shown(f, f.polynomial_rms));
     if (f.component >= 'X' && f.component != f.axis)
-      o += fmt::format("      straightness {:.2f} µm about its least-squares line, slope {:.2f} µrad moved into squareness\n",
-                       f.iso_straightness_um, f.iso_slope * 1e6);
+      o += fmt::format(
+          "      straightness {:.2f} µm about its least-squares line, slope {:.2f} µrad moved into squareness\n",
+          f.iso_straightness_um, f.iso_slope * 1e6);
   }
   o += "\nsquareness (from the straightness slopes)\n";
   for (std::size_t i = 0; i < r.squareness.size(); ++i)
@@ -179,12 +185,15 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
   p.model = "identified here" + (in.model_file.empty() ? std::string() : ", written to " + in.model_file);
   if (!in.machine_file.empty()) p.inputs.push_back({"machine file", in.machine_file});
   for (const auto& s : sets) p.inputs.push_back({"laser data", s.file});
-  if (in.pass_tolerance_um) p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
-  for (const auto& [kind, t] : in.tolerances.by_kind_um) p.extra.push_back({"tolerance " + kind, fmt::format("{:g} µm", t)});
+  if (in.pass_tolerance_um)
+    p.extra.push_back({"pass tolerance", fmt::format("{:g} µm (ISO 230-2 accuracy A)", *in.pass_tolerance_um)});
+  for (const auto& [kind, t] : in.tolerances.by_kind_um)
+    p.extra.push_back({"tolerance " + kind, fmt::format("{:g} µm", t)});
   add_condition_rows(p, in, sets);
   std::string h = report::page_start(p);
   if (!r.iso230.empty()) {
-    h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at each target "
+    h += "<h2 id=\"iso230-2\">ISO 230-2 bidirectional positioning</h2><p class=\"note\">Mean positional deviation at "
+         "each target "
          "approached from below (x̄↑) and from above (x̄↓) with ± 2s over the runs, and the reversal value "
          "B_i = x̄↑ − x̄↓; A accuracy, R repeatability, B reversal, E systematic deviation, M mean bidirectional "
          "deviation (µm).</p>";
@@ -200,7 +209,8 @@ std::string laser_html_report(const Machine& m, const LaserIdentifyResult& r, co
   h += "<h2>Compensation values for the control</h2>" +
        control_entries_html(m, r.parameters, in.control.value_or(default_control_format(m)));
   h += "<h2>Error functions</h2><p class=\"note\">Blue: identified table at every target (red: nodes the lines do not "
-       "see), orange dashed: fitted polynomial p1..p3; µm for positioning and straightness, µrad for roll, pitch, yaw.</p>"
+       "see), orange dashed: fitted polynomial p1..p3; µm for positioning and straightness, µrad for roll, pitch, "
+       "yaw.</p>"
        "<div class=\"plots\">";
   for (const auto& f : r.functions) h += "<div class=\"plot\">" + svg_plot(f) + "</div>";
   return h + "</div>" + report::page_end();

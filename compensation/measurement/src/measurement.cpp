@@ -5,18 +5,24 @@ namespace ncpost::comp {
 
 const char* to_string(MeasurementType t) {
   switch (t) {
-    case MeasurementType::ballbar: return "ballbar";
-    case MeasurementType::sphere: return "sphere";
-    case MeasurementType::laser: return "laser";
+    case MeasurementType::ballbar:
+      return "ballbar";
+    case MeasurementType::sphere:
+      return "sphere";
+    case MeasurementType::laser:
+      return "laser";
   }
   return "?";
 }
 
 std::vector<std::string> MeasurementSet::value_columns() const {
   switch (type) {
-    case MeasurementType::ballbar: return {"L"};
-    case MeasurementType::sphere: return {"dx", "dy", "dz"};
-    case MeasurementType::laser: return {"e_um"};
+    case MeasurementType::ballbar:
+      return {"L"};
+    case MeasurementType::sphere:
+      return {"dx", "dy", "dz"};
+    case MeasurementType::laser:
+      return {"e_um"};
   }
   return {};
 }

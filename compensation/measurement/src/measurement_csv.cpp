@@ -156,9 +156,10 @@ class CsvParser {
     const Context where{file_, line_no_, raw};
     if (!header_.empty()) {
       if (known_key(key))
-        notice(fmt::format("'# {}:' after the column line (line {}) is a comment there and is not read: header keys go "
-                           "before the column line",
-                           key, header_line_));
+        notice(
+            fmt::format("'# {}:' after the column line (line {}) is a comment there and is not read: header keys go "
+                        "before the column line",
+                        key, header_line_));
       return;
     }
     check_key(key, where);
@@ -183,11 +184,11 @@ class CsvParser {
     }
     std::string lower = key;
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (known_key(lower))
-      where.fail(fmt::format("key '{}': header keys are lower case; write '# {}:'", key, lower));
-    notice(fmt::format("unknown key '# {}:' kept with the file's metadata but not used (known keys: docs/formats.md "
-                       "\"Measurement data\"; a comment has no 'word:' at its start)",
-                       key));
+    if (known_key(lower)) where.fail(fmt::format("key '{}': header keys are lower case; write '# {}:'", key, lower));
+    notice(
+        fmt::format("unknown key '# {}:' kept with the file's metadata but not used (known keys: docs/formats.md "
+                    "\"Measurement data\"; a comment has no 'word:' at its start)",
+                    key));
   }
 
   int key_line(const std::string& key) const {
@@ -200,7 +201,8 @@ class CsvParser {
     const std::string v = set_.meta(key);
     if (v.empty()) {
       const int at = header_line_ > 0 ? header_line_ : line_no_;
-      throw InputError({file_, at, 0}, fmt::format("missing required key '# {}:' for a {} file", key, to_string(set_.type)));
+      throw InputError({file_, at, 0},
+                       fmt::format("missing required key '# {}:' for a {} file", key, to_string(set_.type)));
     }
     return v;
   }
@@ -223,10 +225,14 @@ class CsvParser {
   void read_type(const Context& where) {
     const std::string type = set_.meta("type");
     if (type.empty()) where.fail("missing '# type:' line before the header (ballbar, sphere or laser)");
-    if (type == "ballbar") set_.type = MeasurementType::ballbar;
-    else if (type == "sphere") set_.type = MeasurementType::sphere;
-    else if (type == "laser") set_.type = MeasurementType::laser;
-    else throw InputError({file_, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
+    if (type == "ballbar")
+      set_.type = MeasurementType::ballbar;
+    else if (type == "sphere")
+      set_.type = MeasurementType::sphere;
+    else if (type == "laser")
+      set_.type = MeasurementType::laser;
+    else
+      throw InputError({file_, key_line("type"), 0}, fmt::format("unknown type '{}' (ballbar, sphere or laser)", type));
   }
 
   /// Temperature, expansion, instrument, serial, operator and date (measurement_conditions.hpp),
@@ -237,9 +243,10 @@ class CsvParser {
     if (const std::string t = set_.meta("temperature"); !t.empty()) {
       c.temperature_c = number(t, at_key("temperature"), "temperature");
       if (*c.temperature_c < kLowestTemperatureC || *c.temperature_c > kHighestTemperatureC)
-        at_key("temperature").fail(fmt::format("temperature {} °C is outside {:g}–{:g} °C, where no machine is measured: "
-                                               "degrees Celsius expected (°F or K?)",
-                                               t, kLowestTemperatureC, kHighestTemperatureC));
+        at_key("temperature")
+            .fail(fmt::format("temperature {} °C is outside {:g}–{:g} °C, where no machine is measured: "
+                              "degrees Celsius expected (°F or K?)",
+                              t, kLowestTemperatureC, kHighestTemperatureC));
     }
     if (const std::string a = set_.meta("material_expansion"); !a.empty()) {
       c.expansion_per_k = number(a, at_key("material_expansion"), "material_expansion");
@@ -250,12 +257,14 @@ class CsvParser {
                               a, kLargestExpansionPerK));
       if (!c.temperature_c)
         at_key("material_expansion")
-            .fail("material_expansion without '# temperature:': the correction to 20 °C needs the machine's temperature "
-                  "(°C); give it or remove the coefficient");
+            .fail(
+                "material_expansion without '# temperature:': the correction to 20 °C needs the machine's temperature "
+                "(°C); give it or remove the coefficient");
     }
     if (const std::string d = set_.meta("date"); !d.empty()) {
       if (!is_iso8601_date(d))
-        at_key("date").fail(fmt::format("date '{}' is not ISO 8601: expected e.g. 2026-11-20T09:30 (or 2026-11-20)", d));
+        at_key("date").fail(
+            fmt::format("date '{}' is not ISO 8601: expected e.g. 2026-11-20T09:30 (or 2026-11-20)", d));
       c.date = d;
     }
     c.instrument_U_um = positive_key("instrument_uncertainty", kLargestInstrumentUUm, "µm", raw);
@@ -268,8 +277,8 @@ class CsvParser {
     for (std::size_t i = 0; i < set_.metadata.size(); ++i) {
       const HeaderKey* k = known_key(set_.metadata[i].first);
       if (k && std::string(k->types).find(type) == std::string::npos)
-        set_.notices.push_back(fmt::format("{}:{}: '# {}:' is not used in a {} file (it is a {} key)", file_, meta_lines_[i],
-                                           k->name, type, k->types));
+        set_.notices.push_back(fmt::format("{}:{}: '# {}:' is not used in a {} file (it is a {} key)", file_,
+                                           meta_lines_[i], k->name, type, k->types));
     }
   }
 
@@ -280,7 +289,8 @@ class CsvParser {
     const Context at{file_, key_line(key), raw};
     const double v = number(text, at, key);
     if (!(v > 0.0) || v > largest)
-      at.fail(fmt::format("{} {} is not an uncertainty in {} (greater than 0, at most {:g})", key, text, unit, largest));
+      at.fail(
+          fmt::format("{} {} is not an uncertainty in {} (greater than 0, at most {:g})", key, text, unit, largest));
     return v;
   }
 
@@ -293,8 +303,12 @@ class CsvParser {
         set_.tool_ball_mm = vector3(require("tool_ball"), at_key("tool_ball"), "tool_ball");
         set_.bar_length_mm = number(require("bar_length"), at_key("bar_length"), "bar_length");
         break;
-      case MeasurementType::sphere: set_.sphere_mm = vector3(require("sphere"), at_key("sphere"), "sphere"); break;
-      case MeasurementType::laser: read_laser_keys(raw); break;
+      case MeasurementType::sphere:
+        set_.sphere_mm = vector3(require("sphere"), at_key("sphere"), "sphere");
+        break;
+      case MeasurementType::laser:
+        read_laser_keys(raw);
+        break;
     }
     if (!set_.meta("tool_length").empty())
       set_.tool_length_mm = number(set_.meta("tool_length"), at_key("tool_length"), "tool_length");
@@ -327,11 +341,15 @@ class CsvParser {
   void read_columns(const Context& where) {
     for (std::size_t c = 0; c < header_.size(); ++c) {
       const std::string& h = header_[c];
-      if (h == "t") t_col_ = static_cast<int>(c);
-      else if (h == "run") run_col_ = static_cast<int>(c);
-      else if (h == "approach" && set_.type == MeasurementType::laser) approach_col_ = static_cast<int>(c);
+      if (h == "t")
+        t_col_ = static_cast<int>(c);
+      else if (h == "run")
+        run_col_ = static_cast<int>(c);
+      else if (h == "approach" && set_.type == MeasurementType::laser)
+        approach_col_ = static_cast<int>(c);
       else if (h.size() == 1 && m_.index_of(h[0]) >= 0) {
-        if (column_of_axis_[static_cast<std::size_t>(m_.index_of(h[0]))] >= 0) where.fail("column " + h + " given twice");
+        if (column_of_axis_[static_cast<std::size_t>(m_.index_of(h[0]))] >= 0)
+          where.fail("column " + h + " given twice");
         column_of_axis_[static_cast<std::size_t>(m_.index_of(h[0]))] = static_cast<int>(c);
       }
     }
@@ -374,7 +392,8 @@ class CsvParser {
                  column_of_field(raw, static_cast<std::size_t>(t_col_)));
     for (std::size_t a = 0; a < m_.axes.size(); ++a) {
       if (column_of_axis_[a] < 0) continue;
-      const double v = number(fields[static_cast<std::size_t>(column_of_axis_[a])], where, std::string(1, m_.axes[a].letter));
+      const double v =
+          number(fields[static_cast<std::size_t>(column_of_axis_[a])], where, std::string(1, m_.axes[a].letter));
       row.command[static_cast<int>(a)] = m_.axes[a].is_rotary() ? deg_to_rad(v) : v;
     }
     if (run_col_ >= 0) {
@@ -384,9 +403,12 @@ class CsvParser {
     }
     if (approach_col_ >= 0) {
       const std::string& a = fields[static_cast<std::size_t>(approach_col_)];
-      if (a == "1" || a == "+1") row.approach = 1;
-      else if (a == "-1") row.approach = -1;
-      else where.fail(fmt::format("approach must be +1 (from below) or -1 (from above), found '{}'", a));
+      if (a == "1" || a == "+1")
+        row.approach = 1;
+      else if (a == "-1")
+        row.approach = -1;
+      else
+        where.fail(fmt::format("approach must be +1 (from below) or -1 (from above), found '{}'", a));
     }
     if (line_axis_ != 0) check_on_line(row, where);
     if (set_.has_values) read_values(row, fields, raw, where);
@@ -400,8 +422,8 @@ class CsvParser {
       if (other == line_axis_) continue;
       const int ai = m_.index_of(other);
       if (ai >= 0 && std::abs(row.command[ai] - line_mm_[k]) > kOffLineMm)
-        where.fail(fmt::format("{} = {} is off the line of the file header ('# line:' says {})", other,
-                               row.command[ai], line_mm_[k]));
+        where.fail(fmt::format("{} = {} is off the line of the file header ('# line:' says {})", other, row.command[ai],
+                               line_mm_[k]));
       ++k;
     }
   }
@@ -461,9 +483,12 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
   auto known = [&](const std::string& key) {
     if (key == "type" || key == "tool_length") return true;
     switch (set.type) {
-      case MeasurementType::ballbar: return key == "table_ball" || key == "tool_ball" || key == "bar_length";
-      case MeasurementType::sphere: return key == "sphere";
-      case MeasurementType::laser: return key == "component" || key == "tool_point";
+      case MeasurementType::ballbar:
+        return key == "table_ball" || key == "tool_ball" || key == "bar_length";
+      case MeasurementType::sphere:
+        return key == "sphere";
+      case MeasurementType::laser:
+        return key == "component" || key == "tool_point";
     }
     return false;
   };
@@ -472,7 +497,9 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
       out += fmt::format("# table_ball: {}\n# tool_ball: {}\n# bar_length: {:.4f}\n", format_vec(set.table_ball_mm),
                          format_vec(set.tool_ball_mm), set.bar_length_mm);
       break;
-    case MeasurementType::sphere: out += fmt::format("# sphere: {}\n", format_vec(set.sphere_mm)); break;
+    case MeasurementType::sphere:
+      out += fmt::format("# sphere: {}\n", format_vec(set.sphere_mm));
+      break;
     case MeasurementType::laser:
       out += fmt::format("# component: {}\n# tool_point: {}\n", set.component, format_vec(set.tool_point_mm));
       break;
@@ -499,7 +526,8 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
       out += fmt::format(",{:.5f}", m.axes[a].is_rotary() ? rad_to_deg(v) : v);
     }
     if (set.has_values) {
-      if (set.type == MeasurementType::laser) out += fmt::format(",{:.4f}", r.value[0]);
+      if (set.type == MeasurementType::laser)
+        out += fmt::format(",{:.4f}", r.value[0]);
       else
         for (int v = 0; v < set.values_per_row(); ++v) out += fmt::format(",{:.6f}", r.value[v]);
     }

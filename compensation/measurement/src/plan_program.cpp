@@ -31,8 +31,7 @@ std::string fmt_num(double v) { return fmt::format("{:g}", v); }
 /// The dwell that reads row k of the set.
 void read_row(PlanProgram& p, const MeasurementSet& s, std::size_t k) {
   const auto& r = s.rows[k];
-  const double seconds =
-      k + 1 < s.rows.size() ? std::max(0.0, s.rows[k + 1].time_s - r.time_s - kReadingS) : kReadingS;
+  const double seconds = k + 1 < s.rows.size() ? std::max(0.0, s.rows[k + 1].time_s - r.time_s - kReadingS) : kReadingS;
   p.dwell(seconds, fmt::format("read point {}", k + 1));
 }
 
@@ -51,8 +50,9 @@ void ballbar_static_moves(PlanProgram& p, const Machine& m, const MeasurementSet
       const Vec3d to = forward(m, s.rows[k].command, setup).tip_mm;
       if ((from - to).norm() > o.guide_tolerance_mm)
         throw std::invalid_argument("a static ballbar set must hold the tool ball on one point");
-      auto poses = guided_turn(m, s.rows[k - 1].command.rotary_rad, s.rows[k].command.rotary_rad,
-                               [&](const Eigen::Vector2d&) { return from; }, setup, o.guide_tolerance_mm);
+      auto poses = guided_turn(
+          m, s.rows[k - 1].command.rotary_rad, s.rows[k].command.rotary_rad,
+          [&](const Eigen::Vector2d&) { return from; }, setup, o.guide_tolerance_mm);
       poses.back() = s.rows[k].command;  // the row as planned (rounded as in the CSV)
       guided_moves(p, poses);
     }
@@ -109,8 +109,9 @@ void describe_set(PlanProgram& p, const NamedPlan& named, const PlanProgramOptio
     p.comment(fmt::format("table ball at {} mm, bar {} mm, tool length {} mm", fmt_vec(s.table_ball_mm),
                           fmt_num(s.bar_length_mm), fmt_num(s.tool_length_mm)));
   if (s.type == MeasurementType::sphere)
-    p.comment(fmt::format("sphere centre at {} mm: the stylus turns {} mm from it, moves to it along the probe axis only",
-                          fmt_vec(s.sphere_mm), fmt_num(o.clearance_mm)));
+    p.comment(
+        fmt::format("sphere centre at {} mm: the stylus turns {} mm from it, moves to it along the probe axis only",
+                    fmt_vec(s.sphere_mm), fmt_num(o.clearance_mm)));
 }
 
 }  // namespace
@@ -128,9 +129,12 @@ PlanProgram plan_program(const Machine& m, const std::vector<NamedPlan>& plans, 
                 ? clear_of_sphere(m, s, s.rows.front().command.rotary_rad, o.clearance_mm + o.turn_tolerance_mm)
                 : s.rows.front().command);
     p.stop("mount the instrument, start recording");
-    if (s.type == MeasurementType::sphere) sphere_moves(p, m, s, o);
-    else if (o.continuous) ballbar_continuous_moves(p, s);
-    else ballbar_static_moves(p, m, s, o);
+    if (s.type == MeasurementType::sphere)
+      sphere_moves(p, m, s, o);
+    else if (o.continuous)
+      ballbar_continuous_moves(p, s);
+    else
+      ballbar_static_moves(p, m, s, o);
     p.stop("stop recording, remove the instrument");
   }
   return p;

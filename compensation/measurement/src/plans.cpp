@@ -59,7 +59,8 @@ std::vector<NamedPlan> plan_ballbar_4axis(const Machine& m, const BallbarPlanOpt
   for (int i : m.workpiece_side)
     if (m.axes[static_cast<std::size_t>(i)].is_rotary()) (tilt < 0 ? tilt : rot) = i - 3;
   const Axis& c_axis = m.rotary(rot);
-  if (std::abs(c_axis.direction.z()) < kInXyPlane) throw std::invalid_argument("ballbar-4axis: the rotary axis must not lie in the XY plane");
+  if (std::abs(c_axis.direction.z()) < kInXyPlane)
+    throw std::invalid_argument("ballbar-4axis: the rotary axis must not lie in the XY plane");
   std::vector<NamedPlan> out;
   double t = o.t0_s;
   for (std::size_t h = 0; h < o.heights_mm.size(); ++h) {
@@ -96,9 +97,12 @@ std::vector<NamedPlan> plan_ballbar_4axis(const Machine& m, const BallbarPlanOpt
 
 std::vector<NamedPlan> plan_sphere(const Machine& m, const SpherePlanOptions& o) {
   if (m.rotary_count() != 2) throw std::invalid_argument("sphere: the machine needs two rotary axes");
-  if (o.step_deg <= 0.0 || o.step_deg > 180.0) throw std::invalid_argument("sphere: --step must be in (0, 180] degrees");
+  if (o.step_deg <= 0.0 || o.step_deg > 180.0)
+    throw std::invalid_argument("sphere: --step must be in (0, 180] degrees");
   // the swept axis is the one parallel to Z at home (C); the other one takes the levels
-  int sweep = std::abs(m.rotary(1).direction.z()) > kParallelToZ ? 1 : (std::abs(m.rotary(0).direction.z()) > kParallelToZ ? 0 : 1);
+  int sweep = std::abs(m.rotary(1).direction.z()) > kParallelToZ
+                  ? 1
+                  : (std::abs(m.rotary(0).direction.z()) > kParallelToZ ? 0 : 1);
   const int level_axis = 1 - sweep;
   MeasurementSet s;
   s.type = MeasurementType::sphere;
@@ -109,7 +113,8 @@ std::vector<NamedPlan> plan_sphere(const Machine& m, const SpherePlanOptions& o)
   std::vector<double> sweep_deg;
   for (int i = 0; i < n; ++i) sweep_deg.push_back(i * o.step_deg);
   if (sweep_deg.back() >= 360.0 - kAngleSlackDeg) sweep_deg.pop_back();
-  for (int i = static_cast<int>(sweep_deg.size()) - 2; i >= 0; --i) sweep_deg.push_back(sweep_deg[static_cast<std::size_t>(i)]);
+  for (int i = static_cast<int>(sweep_deg.size()) - 2; i >= 0; --i)
+    sweep_deg.push_back(sweep_deg[static_cast<std::size_t>(i)]);
   const Axis& la = m.rotary(level_axis);
   const Axis& sa = m.rotary(sweep);
   double t = o.t0_s;
@@ -131,7 +136,8 @@ std::vector<NamedPlan> plan_sphere(const Machine& m, const SpherePlanOptions& o)
 
 std::vector<NamedPlan> plan_bc_head(const Machine& m, const BcHeadPlanOptions& o) {
   const int b = m.index_of('B'), c = m.index_of('C');
-  if (b < 0 || c < 0 || m.axes[static_cast<std::size_t>(b)].side != Side::tool || m.axes[static_cast<std::size_t>(c)].side != Side::tool)
+  if (b < 0 || c < 0 || m.axes[static_cast<std::size_t>(b)].side != Side::tool ||
+      m.axes[static_cast<std::size_t>(c)].side != Side::tool)
     throw std::invalid_argument("bc-head needs a machine with B and C head axes");
   if (o.tool_lengths_mm.empty()) throw std::invalid_argument("bc-head: give at least one --tool-length");
   struct Test {
@@ -140,8 +146,8 @@ std::vector<NamedPlan> plan_bc_head(const Machine& m, const BcHeadPlanOptions& o
     std::vector<double> angles;
     char direction;
   };
-  std::vector<Test> tests = {{"c_x", 'C', {0, 90, 180}, 'X'}, {"c_y", 'C', {0, 90, 180}, 'Y'},
-                             {"b_x", 'B', {0, 90, -90}, 'X'}};
+  std::vector<Test> tests = {
+      {"c_x", 'C', {0, 90, 180}, 'X'}, {"c_y", 'C', {0, 90, 180}, 'Y'}, {"b_x", 'B', {0, 90, -90}, 'X'}};
   if (o.b_test_along_y) tests.push_back({"b_y", 'B', {0, 90, -90}, 'Y'});
   tests.push_back({"b_z", 'B', {0, 90, -90}, 'Z'});
   std::vector<NamedPlan> out;

@@ -73,16 +73,18 @@ std::vector<std::string> temperature_warnings(const std::vector<MeasurementSet>&
   if (!coldest) return out;
   const double spread_k = *warmest->conditions.temperature_c - *coldest->conditions.temperature_c;
   if (spread_k > kTemperatureAgreementK)
-    out.push_back(fmt::format("the files of this identification were measured {:.1f} K apart ({} at {:g} °C, {} at {:g} °C), "
-                              "more than {:g} K: the machine's errors change with its temperature, so one model fitted to "
-                              "both holds for neither; measure again at one temperature or identify each file alone",
-                              spread_k, coldest->file, *coldest->conditions.temperature_c, warmest->file,
-                              *warmest->conditions.temperature_c, kTemperatureAgreementK));
+    out.push_back(
+        fmt::format("the files of this identification were measured {:.1f} K apart ({} at {:g} °C, {} at {:g} °C), "
+                    "more than {:g} K: the machine's errors change with its temperature, so one model fitted to "
+                    "both holds for neither; measure again at one temperature or identify each file alone",
+                    spread_k, coldest->file, *coldest->conditions.temperature_c, warmest->file,
+                    *warmest->conditions.temperature_c, kTemperatureAgreementK));
   std::string without;
   for (const auto& s : sets)
     if (!s.conditions.temperature_c) without += (without.empty() ? "" : ", ") + s.file;
   if (!without.empty())
-    out.push_back(fmt::format("no '# temperature:' in {}: its temperature cannot be compared with the other files'", without));
+    out.push_back(
+        fmt::format("no '# temperature:' in {}: its temperature cannot be compared with the other files'", without));
   return out;
 }
 

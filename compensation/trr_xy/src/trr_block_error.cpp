@@ -56,9 +56,17 @@ BlockError BlockEvaluator::evaluate(const Block& b, EvaluatorWork& work, int sam
   ExecutedPoint e1 = eval(x1), e2 = eval(x2);
   for (int it = 0; it < 30 && hi - lo > 1e-7; ++it) {
     if (e1.offset_mm.norm() > e2.offset_mm.norm()) {
-      hi = x2; x2 = x1; e2 = e1; x1 = hi - g * (hi - lo); e1 = eval(x1);
+      hi = x2;
+      x2 = x1;
+      e2 = e1;
+      x1 = hi - g * (hi - lo);
+      e1 = eval(x1);
     } else {
-      lo = x1; x1 = x2; e1 = e2; x2 = lo + g * (hi - lo); e2 = eval(x2);
+      lo = x1;
+      x1 = x2;
+      e1 = e2;
+      x2 = lo + g * (hi - lo);
+      e2 = eval(x2);
     }
   }
   for (const auto& [x, e] : {std::pair{x1, e1}, std::pair{x2, e2}}) {
@@ -71,7 +79,8 @@ BlockError BlockEvaluator::evaluate(const Block& b, EvaluatorWork& work, int sam
   r.midpoint_mm = eval(0.5).offset_mm.norm();
   for (int j = 0; j <= samples; ++j) {
     const double t = static_cast<double>(j) / samples;
-    r.harmonic_residual_mm = std::max(r.harmonic_residual_mm, std::abs(mag[static_cast<std::size_t>(j)] - r.midpoint_mm * std::sin(kPi * t)));
+    r.harmonic_residual_mm = std::max(r.harmonic_residual_mm,
+                                      std::abs(mag[static_cast<std::size_t>(j)] - r.midpoint_mm * std::sin(kPi * t)));
   }
   return r;
 }

@@ -87,7 +87,8 @@ void identifiability_and_uncertainty(const comp::ScaledSvd& svd, const Eigen::Ve
   const Eigen::VectorXd null_share = svd.null_share();
   res.uncertainty.assign(kParameterCount, -1.0);
   for (int k = 0; k < kParameterCount; ++k)
-    if (null_share[k] < kUndeterminedNullShare) res.uncertainty[static_cast<std::size_t>(k)] = std::sqrt(std::max(0.0, cov(k, k)));
+    if (null_share[k] < kUndeterminedNullShare)
+      res.uncertainty[static_cast<std::size_t>(k)] = std::sqrt(std::max(0.0, cov(k, k)));
   const Eigen::VectorXd& sv = svd.svd.singularValues();
   res.singular_values.assign(sv.data(), sv.data() + sv.size());
 }

@@ -30,7 +30,8 @@ bool is_angle(const std::string& name) {
 
 void fail_or_warn(const ModelChecks& c, const SourcePosition& where, const std::string& what) {
   if (!c.force)
-    throw InputError(where, what + "; check that this is the model of this machine, or pass --force to apply it anyway");
+    throw InputError(where,
+                     what + "; check that this is the model of this machine, or pass --force to apply it anyway");
   if (c.warnings) c.warnings->push_back(fmt::format("{}:{}: {}", where.file, where.line, what));
 }
 
@@ -42,9 +43,10 @@ Errors errors_from_model(const comp::ModelFile& model, const std::string& text, 
   for (std::size_t i = 0; i < names.size(); ++i) {
     const int k = Errors::index_of(names[i]);
     if (k < 0) {
-      throw InputError(where_in(text, path, "\"" + names[i] + "\""), fmt::format("parameter '{}' is not a TRR-XY error parameter (expected <param>_<chain> with "
-                                          "param dr, dt, ar, at, ds, gp, dl, drs, dts or dzs and chain a, b or c)",
-                                          names[i]));
+      throw InputError(where_in(text, path, "\"" + names[i] + "\""),
+                       fmt::format("parameter '{}' is not a TRR-XY error parameter (expected <param>_<chain> with "
+                                   "param dr, dt, ar, at, ds, gp, dl, drs, dts or dzs and chain a, b or c)",
+                                   names[i]));
     }
     e[k] = model.parameters.values()[i];
   }

@@ -56,8 +56,10 @@ ProbingData read_probing_csv(const std::string& path, bool plan) {
       for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = static_cast<int>(i);
       for (const auto& c : needed)
         if (!col.count(c))
-          throw InputError({path, n, 1}, fmt::format("header: missing column '{}' (expected t,X,Y,U,V,W,stylus{})", c,
-                                                     plan ? "" : ",dx,dy,dz"), line);
+          throw InputError(
+              {path, n, 1},
+              fmt::format("header: missing column '{}' (expected t,X,Y,U,V,W,stylus{})", c, plan ? "" : ",dx,dy,dz"),
+              line);
       continue;
     }
     const std::vector<std::string> f = split(line);

@@ -36,9 +36,10 @@ SensitivityResult sensitivity(const Machine& m, const SensitivityOptions& o) {
   for (const SurfacePoint& p : r.points) {
     const InverseOutcome ik = inverse(nominal, p.cl, o.workpiece_origin_mm);
     if (!ik.ok())
-      throw std::runtime_error(fmt::format("sensitivity: the hemisphere point at polar {:.1f} deg, azimuth {:.1f} deg "
-                                           "is out of reach: {}", rad_to_deg(p.polar_rad), rad_to_deg(p.azimuth_rad),
-                                           ik.failure));
+      throw std::runtime_error(
+          fmt::format("sensitivity: the hemisphere point at polar {:.1f} deg, azimuth {:.1f} deg "
+                      "is out of reach: {}",
+                      rad_to_deg(p.polar_rad), rad_to_deg(p.azimuth_rad), ik.failure));
     program.push_back(*ik.command);
     plates.push_back(ik.machine_T_plate);
   }
@@ -58,8 +59,14 @@ SensitivityResult sensitivity(const Machine& m, const SensitivityOptions& o) {
       const Vec3d tip = Kinematics::tip_in_workpiece(*tp, program[i], o.workpiece_origin_mm);
       const double dev_um = 1000.0 * (tip - r.points[i].cl.tip_mm).dot(r.points[i].cl.axis);
       map.deviation_um.push_back(dev_um);
-      if (dev_um > map.max_um) { map.max_um = dev_um; map.max_at = static_cast<int>(i); }
-      if (dev_um < map.min_um) { map.min_um = dev_um; map.min_at = static_cast<int>(i); }
+      if (dev_um > map.max_um) {
+        map.max_um = dev_um;
+        map.max_at = static_cast<int>(i);
+      }
+      if (dev_um < map.min_um) {
+        map.min_um = dev_um;
+        map.min_at = static_cast<int>(i);
+      }
     }
     r.maps.push_back(std::move(map));
   }

@@ -62,7 +62,8 @@ class SerialModels final : public PostModels {
   std::unique_ptr<preview::BlockEvaluator> before_executed() const override {
     const comp::MachineModel* on = executing_ ? executing_.get() : model_.get();
     if (on)
-      return std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(on->machine(), r_.setup, on->errors());
+      return std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(on->machine(), r_.setup,
+                                                                                   on->errors());
     return std::make_unique<preview::ModelEvaluator<NominalErrors>>(machine_, r_.setup);
   }
   void add_figures(const SolverData& data, PostAccount& account) const override {
@@ -72,7 +73,9 @@ class SerialModels final : public PostModels {
   }
 
  private:
-  const KinematicModel& solver() const { return actual_solver_ ? *actual_solver_ : static_cast<const KinematicModel&>(nominal_); }
+  const KinematicModel& solver() const {
+    return actual_solver_ ? *actual_solver_ : static_cast<const KinematicModel&>(nominal_);
+  }
 
   const Machine& machine_;
   const PostRequest& r_;

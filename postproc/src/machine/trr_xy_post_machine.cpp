@@ -29,8 +29,11 @@ class TrrModels final : public PostModels {
  public:
   TrrModels(const trr::Machine& m, const std::optional<trr::Errors>& model, const std::optional<trr::Errors>& verify_on,
             const PostRequest& r)
-      : r_(r), nominal_(kinematics(m, std::nullopt)), commanded_(kinematics(m, model)),
-        executing_(kinematics(m, verify_on ? verify_on : model)), reading_(nominal_, nominal_, origin()),
+      : r_(r),
+        nominal_(kinematics(m, std::nullopt)),
+        commanded_(kinematics(m, model)),
+        executing_(kinematics(m, verify_on ? verify_on : model)),
+        reading_(nominal_, nominal_, origin()),
         solver_(commanded_, executing_, origin()) {}
 
   const KinematicModel& posted() const override { return solver_; }

@@ -32,8 +32,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
 }
 
 std::unique_ptr<cl::Reader> open_cl_reader(
-    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options,
-    const Machine& machine, const Setup& setup,
+    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options, const Machine& machine,
+    const Setup& setup,
     const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward) {
   if (word_forward && kind == InputKind::rtcp)
     throw std::invalid_argument("open_cl_reader: a word machine reads no RTCP programs");
@@ -54,7 +54,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     throw InputError({name, 1, 0}, fmt::format("a Heidenhain Klartext program (BEGIN PGM), read as G-code as "
                                                "--input-kind {} asks: use --input-kind klartext (or auto)",
                                                kind == InputKind::machine ? "machine" : "rtcp"));
-  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable && sinumerik::looks_like_sinumerik(read_head()))
+  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable &&
+      sinumerik::looks_like_sinumerik(read_head()))
     throw InputError({name, 1, 0}, fmt::format("a Sinumerik program (DEF, CYCLE800, %_N_ ...), read as plain G-code as "
                                                "--input-kind {} asks: use --input-kind sinumerik (or auto)",
                                                kind == InputKind::machine ? "machine" : "rtcp"));
@@ -63,7 +64,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     std::string_view body(head);
     if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
     if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
-      throw InputError({name, 0, 0}, "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
+      throw InputError({name, 0, 0},
+                       "the input is empty (no CL statements or G-code blocks); expected a CL file or a program");
     klartext = klartext::looks_like_klartext(body);
     apt = !klartext && cl::looks_like_apt(head);
     sinumerik = !klartext && !apt && sinumerik::looks_like_sinumerik(body);
@@ -71,16 +73,18 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   if (apt) return std::make_unique<cl::AptReader>(in, name, options);
   if (klartext) {
     if (word_forward)
-      throw InputError({name, 0, 0}, fmt::format("a Heidenhain Klartext program on the machine {}, whose words {} are no "
-                                                 "Cartesian frame: not supported (post the CL data)",
-                                                 machine.name, axis_letters(machine)));
+      throw InputError({name, 0, 0},
+                       fmt::format("a Heidenhain Klartext program on the machine {}, whose words {} are no "
+                                   "Cartesian frame: not supported (post the CL data)",
+                                   machine.name, axis_letters(machine)));
     klartext::ReaderOptions ko;
     ko.allow_unterminated = options.allow_unterminated;
     return std::make_unique<klartext::KlartextReader>(in, name, machine, setup, ko);
   }
   if (sinumerik && word_forward)
     throw InputError({name, 0, 0}, fmt::format("a Sinumerik program on the machine {}, whose words {} are no Cartesian "
-                                               "frame: not supported (post the CL data)", machine.name, axis_letters(machine)));
+                                               "frame: not supported (post the CL data)",
+                                               machine.name, axis_letters(machine)));
   gcode::GcodeReaderOptions go;
   go.default_inch = options.default_inch;
   go.units_given = options.units_given;
@@ -93,7 +97,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
   go.word_forward = word_forward;
   go.kind = kind == InputKind::machine ? gcode::InputKind::machine
-          : kind == InputKind::rtcp    ? gcode::InputKind::rtcp
+            : kind == InputKind::rtcp  ? gcode::InputKind::rtcp
                                        : gcode::InputKind::automatic;
   if (sinumerik) {
     sinumerik::ReaderOptions so;

@@ -45,11 +45,12 @@ bool LineSource::refill() {
   }
   if (end_ > kMaxLineBytes) {
     const std::string_view head(buffer_.data(), kEchoBytes);
-    throw InputError({file_, line_number_ + 1, 1},
-                     fmt::format("line too long (more than {} MiB without a line break: binary data or a damaged file?); "
-                                 "expected {}",
-                                 kMaxLineBytes >> 20, expected_),
-                     echo_of(head, kEchoBytes - 1));
+    throw InputError(
+        {file_, line_number_ + 1, 1},
+        fmt::format("line too long (more than {} MiB without a line break: binary data or a damaged file?); "
+                    "expected {}",
+                    kMaxLineBytes >> 20, expected_),
+        echo_of(head, kEchoBytes - 1));
   }
   if (buffer_.size() - end_ < kChunkBytes) buffer_.resize(end_ + kChunkBytes);
   in_.read(buffer_.data() + end_, static_cast<std::streamsize>(buffer_.size() - end_));
@@ -78,8 +79,10 @@ bool LineSource::next(std::string_view& line) {
     const char* data = buffer_.data();
     const std::size_t n = end_ - begin_;
     std::size_t pos = n;
-    if (const void* lf = std::memchr(data + begin_, '\n', n)) pos = static_cast<std::size_t>(static_cast<const char*>(lf) - (data + begin_));
-    if (const void* cr = std::memchr(data + begin_, '\r', pos)) pos = static_cast<std::size_t>(static_cast<const char*>(cr) - (data + begin_));
+    if (const void* lf = std::memchr(data + begin_, '\n', n))
+      pos = static_cast<std::size_t>(static_cast<const char*>(lf) - (data + begin_));
+    if (const void* cr = std::memchr(data + begin_, '\r', pos))
+      pos = static_cast<std::size_t>(static_cast<const char*>(cr) - (data + begin_));
     // a CR at the very end of the data may be the first half of a CRLF: read on before deciding
     const bool complete = pos < n && !(data[begin_ + pos] == '\r' && pos + 1 == n && !eof_);
     if (complete || (pos == n && eof_)) {

@@ -56,8 +56,8 @@ struct AheadItem {
 class BatchQueue {
  public:
   explicit BatchQueue(std::size_t capacity) : capacity_(capacity) {}
-  bool push(std::vector<AheadItem>&& batch);           ///< false once stopped
-  std::optional<std::vector<AheadItem>> pop();         ///< nullopt once stopped
+  bool push(std::vector<AheadItem>&& batch);    ///< false once stopped
+  std::optional<std::vector<AheadItem>> pop();  ///< nullopt once stopped
   void stop();
 
  private:

@@ -23,8 +23,9 @@ using toml_input::at;
 int number_of(const toml::node& n, const std::string& file, const std::string& name) {
   const std::optional<int64_t> v = n.value_exact<int64_t>();
   if (!v || *v < 0 || *v > kMaxToolNumber)
-    throw InputError(at(file, n.source()),
-                     fmt::format("tool \"{}\": expected a tool number, a whole number from 0 to {}", name, kMaxToolNumber));
+    throw InputError(
+        at(file, n.source()),
+        fmt::format("tool \"{}\": expected a tool number, a whole number from 0 to {}", name, kMaxToolNumber));
   return static_cast<int>(*v);
 }
 
@@ -73,9 +74,9 @@ ToolTable parse_tool_table(const std::string& text, const std::string& file) {
     if (name.empty()) throw InputError(at(file, key.source()), "an empty tool name");
     const ToolTableEntry e = entry_of(node, file, name);
     if (auto [it, fresh] = name_of_number.emplace(e.number, name); !fresh)
-      throw InputError(at(file, key.source()),
-                       fmt::format("tool \"{}\" has number {}, as \"{}\" has: a number calls one tool", name, e.number,
-                                   it->second));
+      throw InputError(
+          at(file, key.source()),
+          fmt::format("tool \"{}\" has number {}, as \"{}\" has: a number calls one tool", name, e.number, it->second));
     out.by_name.emplace(name, e);
   }
   return out;

@@ -24,10 +24,12 @@ bool is_number(std::string_view s) {
 bool number_then(std::string_view token, std::string_view unit) {
   if (token.size() <= unit.size() || token.substr(token.size() - unit.size()) != unit) return false;
   const char before = token[token.size() - unit.size() - 1];
-  return std::isdigit(static_cast<unsigned char>(before)) || (before == '.' && is_number(token.substr(0, token.size() - unit.size())));
+  return std::isdigit(static_cast<unsigned char>(before)) ||
+         (before == '.' && is_number(token.substr(0, token.size() - unit.size())));
 }
 
-constexpr std::array<std::string_view, 9> kInchWords{"INCH", "INCHES", "IPM", "IPR", "SFM", "UNC", "UNF", "NPT", "NPTF"};
+constexpr std::array<std::string_view, 9> kInchWords{"INCH", "INCHES", "IPM", "IPR", "SFM",
+                                                     "UNC",  "UNF",    "NPT", "NPTF"};
 constexpr std::array<std::string_view, 4> kMetricWords{"MM", "METRIC", "SMM", "MILLIMETER"};
 
 }  // namespace

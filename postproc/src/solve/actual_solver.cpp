@@ -5,9 +5,7 @@ namespace ncpost {
 
 namespace {
 
-bool same(const AxisPosition& a, const AxisPosition& b) {
-  return a == b;
-}
+bool same(const AxisPosition& a, const AxisPosition& b) { return a == b; }
 
 }  // namespace
 
@@ -26,8 +24,8 @@ void ActualSolver::keep_error(const AxisPosition& q, const ToolPoseT<double>& ac
 
 AxisPosition ActualSolver::compensate(const ClPoint& cl, const AxisPosition& guess,
                                       const std::optional<ClPoint>& guess_solves, SolverData& data,
-                                      SolveFigures* figures,
-                                      std::string& failure, std::optional<ToolPoseT<double>>* executed,
+                                      SolveFigures* figures, std::string& failure,
+                                      std::optional<ToolPoseT<double>>* executed,
                                       const std::optional<AxisPosition>& previous,
                                       const std::optional<AxisPosition>& stands) const {
   comp::ActualIkOptions options;
@@ -58,8 +56,7 @@ IkOutcome ActualSolver::solve_quiet(const ClPoint& cl, const AxisPosition& previ
 }
 
 IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& previous, SolverData& data,
-                                       SolveFigures* figures,
-                                       const std::optional<AxisPosition>& stands) const {
+                                       SolveFigures* figures, const std::optional<AxisPosition>& stands) const {
   // The start: the nominal solution of the CL point less the machine's error at the previous
   // commands (its error changes little from one point to the next), on the post's choice of
   // solution; the compensated IK then usually converges at once. With reversal the error depends
@@ -82,8 +79,10 @@ IkOutcome ActualSolver::solve_standing(const ClPoint& cl, const AxisPosition& pr
     const IkOutcome plain = from_cl ? o : nominal_.solve(cl, previous);
     if (plain.ok())
       figures->uncompensated_tip_mm =
-          (model_.tool_pose(*plain.position, setup_, comp::reversal_state(model_, *plain.position, stands), &home_).tip_mm -
-           cl.tip_mm).norm();
+          (model_.tool_pose(*plain.position, setup_, comp::reversal_state(model_, *plain.position, stands), &home_)
+               .tip_mm -
+           cl.tip_mm)
+              .norm();
   }
   std::string failure;
   std::optional<ToolPoseT<double>> executed;
@@ -105,21 +104,23 @@ AxisPosition ActualSolver::with_rotary(const ClPoint& cl, const RotaryAngles& ro
   SolveFigures figures;
   if (measure_uncompensated_)
     figures.uncompensated_tip_mm =
-        (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, data.stands), &home_).tip_mm - cl.tip_mm).norm();
-  const AxisPosition q = compensate(cl, nominal, std::nullopt, data, &figures, failure, nullptr, std::nullopt, data.stands);
+        (model_.tool_pose(nominal, setup_, comp::reversal_state(model_, nominal, data.stands), &home_).tip_mm -
+         cl.tip_mm)
+            .norm();
+  const AxisPosition q =
+      compensate(cl, nominal, std::nullopt, data, &figures, failure, nullptr, std::nullopt, data.stands);
   data.record(figures);
   return failure.empty() ? q : nominal;
 }
 
 std::vector<AxisPosition> ActualSolver::branches(const ClPoint& cl, const AxisPosition& previous,
-                                                SolverData& data) const {
+                                                 SolverData& data) const {
   std::vector<AxisPosition> out;
   const std::optional<AxisPosition> previous_command =
       model_.has_reversal() ? std::optional<AxisPosition>(previous) : std::nullopt;
   for (const AxisPosition& nominal : admissible_solutions(model_.machine(), cl, setup_, previous)) {
     std::string failure;
-    const AxisPosition q =
-        compensate(cl, nominal, cl, data, nullptr, failure, nullptr, previous_command, data.stands);
+    const AxisPosition q = compensate(cl, nominal, cl, data, nullptr, failure, nullptr, previous_command, data.stands);
     if (failure.empty()) out.push_back(q);
   }
   return out;

@@ -76,8 +76,8 @@ void account(const RotaryAngles& start, const BranchCandidates& candidates, cons
 
 }  // namespace
 
-BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
-                         const ForcedChange& forced, std::size_t window) {
+BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates, const ForcedChange& forced,
+                         std::size_t window) {
   assert(window >= 1);
   BranchPlan plan;
   RotaryAngles start = start_rad;

@@ -14,7 +14,9 @@ namespace {
 constexpr int kMaxStretches = 64;
 
 /// Where an axis stands counts as moved beyond this (the IK's own tolerances: mm, rad).
-double still_within(int axis) { return axis < 3 ? ActualSolver::kPostTipToleranceMm : ActualSolver::kPostAxisToleranceRad; }
+double still_within(int axis) {
+  return axis < 3 ? ActualSolver::kPostTipToleranceMm : ActualSolver::kPostAxisToleranceRad;
+}
 
 /// A move of an axis shows which way it goes beyond this: one step of the NC words, at least the
 /// IK's tolerance (mm, rad).
@@ -72,8 +74,7 @@ bool same_commands(const AxisPosition& a, const AxisPosition& b) {
 }  // namespace
 
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
-                                             SolverData& data,
-                                             const SolvedPoint& from, const SolvedPoint& to,
+                                             SolverData& data, const SolvedPoint& from, const SolvedPoint& to,
                                              const nonlinear::CompensationOptions& options, const WordSteps& steps,
                                              std::string& failure) {
   std::vector<SolvedPoint> out;

@@ -50,7 +50,8 @@ std::optional<RotaryAngles> swing_at_pole(const Machine& machine, const Vec3d& p
 
 /// The swing of a block that starts exactly at the singular pose (the free angle kept from before):
 /// turned to the end solution's angle before the block.
-std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const SolvedPoint& from, const SolvedPoint& to) {
+std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const SolvedPoint& from,
+                                                   const SolvedPoint& to) {
   return swing_at_pole(machine, from.cl.axis, from, to);
 }
 
@@ -114,9 +115,8 @@ std::vector<SolvedPoint> turn_in_place(const Machine& machine, const Setup& setu
     for (int k = 1; k <= n && within; ++k) {
       const SolvedPoint b = node(static_cast<double>(k) / n);
       if (!tilt_ok(b)) return {};
-      const nonlinear::NonlinearError e =
-          nonlinear::nonlinear_error(machine, setup, nonlinear::ClBlock{from.cl, from.cl, a.q, b.q}, errors,
-                                     nonlinear::fast_error_options());
+      const nonlinear::NonlinearError e = nonlinear::nonlinear_error(
+          machine, setup, nonlinear::ClBlock{from.cl, from.cl, a.q, b.q}, errors, nonlinear::fast_error_options());
       within = e.max_error_mm <= tolerance_mm;
       turn.push_back(b);
       a = b;
@@ -131,9 +131,9 @@ std::vector<SolvedPoint> turn_in_place(const Machine& machine, const Setup& setu
 /// the post kept the previous one — to the angle the block's solution leaves with, in place
 /// (turn_in_place). Empty when the start is not singular or the swing cannot be done in place.
 template <class Errors>
-std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup, const KinematicModel& solver,
-                                                SolverData& data, const SolvedPoint& from, const SolvedPoint& to, const Errors& errors,
-                                                double tolerance_mm) {
+std::vector<SolvedPoint> turn_at_singular_start(const Machine& machine, const Setup& setup,
+                                                const KinematicModel& solver, SolverData& data, const SolvedPoint& from,
+                                                const SolvedPoint& to, const Errors& errors, double tolerance_mm) {
   if (machine.rotary_count() != 2 || nonlinear::angle_between(from.cl.axis, to.cl.axis) < 1e-9) return {};
   std::optional<RotaryAngles> swing = exactly_singular_swing(machine, from, to);
   if (!swing) swing = near_singular_swing(machine, solver, data, from, to);
@@ -186,14 +186,13 @@ Subdivider subdivider_of(const Machine& machine, const Setup& setup, const Kinem
                          const ActualSolver* actual, const nonlinear::CompensationOptions& options,
                          const Dialect& dialect) {
   // with reversal the adaptive subdivision follows the play, take-ups included (play_subdivision.hpp)
-  const bool with_play =
-      actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive;
+  const bool with_play = actual && actual->model().has_reversal() && options.method == nonlinear::Method::adaptive;
   auto cut_block = [&machine, setup, &solver, actual, options, linear = dialect.linear_decimals,
                     angle = dialect.angle_decimals](const SolvedPoint& from, const SolvedPoint& to, SolverData& data) {
     nonlinear::CompensationOptions c = options;
-    c.rounding_allowance_mm = std::min(
-        0.5 * c.tolerance_mm,
-        nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
+    c.rounding_allowance_mm =
+        std::min(0.5 * c.tolerance_mm,
+                 nonlinear::rounding_allowance_mm(linear, angle, rotary_reach_mm(machine, setup, from.cl, to.cl)));
     const double inner_tolerance_mm = c.tolerance_mm - c.rounding_allowance_mm;
     // inserted points are not CL points of the input: the solver's figures are left as they are
     auto ik = [&solver, &data](const ClPoint& cl, const AxisPosition& previous) {
@@ -214,8 +213,13 @@ Subdivider subdivider_of(const Machine& machine, const Setup& setup, const Kinem
       // with (G-code input programs it): arrive with the approach's angle, then turn in place
       const std::vector<SolvedPoint> end_turn =
           turn_at_singular_end(machine, setup, solver, data, start, to, errors, inner_tolerance_mm);
-      const SolvedPoint end = end_turn.empty() ? to : SolvedPoint{to.cl, arrival_at_singular_end(machine, solver, data, start, to)};
-      const nonlinear::ClBlock block{start.cl, end.cl, start.q, end.q, points.empty() ? from.executed : std::nullopt,
+      const SolvedPoint end =
+          end_turn.empty() ? to : SolvedPoint{to.cl, arrival_at_singular_end(machine, solver, data, start, to)};
+      const nonlinear::ClBlock block{start.cl,
+                                     end.cl,
+                                     start.q,
+                                     end.q,
+                                     points.empty() ? from.executed : std::nullopt,
                                      end_turn.empty() ? to.executed : std::nullopt};
       const nonlinear::SplitBlock split = nonlinear::compensate_block(machine, setup, block, errors, ik, c);
       if (!split.ok())

@@ -9,9 +9,7 @@
 namespace ncpost::preview {
 namespace {
 
-trr::Block trr_block(const nonlinear::ClBlock& b) {
-  return {b.start, b.end, trr_command(b.from), trr_command(b.to)};
-}
+trr::Block trr_block(const nonlinear::ClBlock& b) { return {b.start, b.end, trr_command(b.from), trr_command(b.to)}; }
 
 }  // namespace
 

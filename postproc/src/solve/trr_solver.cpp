@@ -22,7 +22,8 @@ trr::Command trr_command(const AxisPosition& q) {
   return c;
 }
 
-TrrSolver::TrrSolver(const trr::Kinematics& commanded, const trr::Kinematics& executing, const Vec3d& workpiece_origin_mm)
+TrrSolver::TrrSolver(const trr::Kinematics& commanded, const trr::Kinematics& executing,
+                     const Vec3d& workpiece_origin_mm)
     : commanded_(commanded), executing_(executing), origin_(workpiece_origin_mm) {
   const trr::Machine& m = commanded.machine();
   axes_.name = m.name;
@@ -59,15 +60,15 @@ IkOutcome TrrSolver::inverse(const ClPoint& cl) const {
   IkOutcome out;
   if (!ik.ok()) {
     out.failure.message = ik.failure;
-    if (origin_.isZero()) out.failure.message += "; the workpiece origin is at the TCP's home: set --workpiece-origin below it";
+    if (origin_.isZero())
+      out.failure.message += "; the workpiece origin is at the TCP's home: set --workpiece-origin below it";
     return out;
   }
   out.position = trr_slots(*ik.command);
   return out;
 }
 
-AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const RotaryAngles& /*rotary_rad*/,
-                                    SolverData& /*data*/) const {
+AxisPosition TrrSolver::with_rotary(const ClPoint& cl, const RotaryAngles& /*rotary_rad*/, SolverData& /*data*/) const {
   const IkOutcome o = inverse(cl);
   return o.position.value_or(AxisPosition::zero(2));  // V W
 }
@@ -78,7 +79,8 @@ ToolPoseT<double> TrrSolver::deviation(const AxisPosition& q, const SolverData& 
   std::string why;
   const std::optional<trr::ToolPose> nominal = commanded_.tool(c.slider_mm, std::nullopt, &why);
   if (!nominal)
-    throw Infeasible(fmt::format("the TRR-XY head cannot be solved at U{:.4f} V{:.4f} W{:.4f}: {}", q[2], q[3], q[4], why));
+    throw Infeasible(
+        fmt::format("the TRR-XY head cannot be solved at U{:.4f} V{:.4f} W{:.4f}: {}", q[2], q[3], q[4], why));
   const ToolPoseT<double> actual = execute(q);
   return {actual.tip_mm - trr::Kinematics::tip_in_workpiece(*nominal, c, origin_), actual.axis - nominal->axis};
 }
@@ -94,7 +96,8 @@ ToolPoseT<double> TrrSolver::execute(const AxisPosition& q) const {
   std::string why;
   const std::optional<ToolPoseT<double>> p = pose(q, &why);
   if (!p)
-    throw Infeasible(fmt::format("the TRR-XY head cannot be solved at U{:.4f} V{:.4f} W{:.4f}: {}", q[2], q[3], q[4], why));
+    throw Infeasible(
+        fmt::format("the TRR-XY head cannot be solved at U{:.4f} V{:.4f} W{:.4f}: {}", q[2], q[3], q[4], why));
   return *p;
 }
 

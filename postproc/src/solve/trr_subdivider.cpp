@@ -75,7 +75,8 @@ class Cutter {
       p.tip_mm = (1.0 - t) * from.cl.tip_mm + t * to.cl.tip_mm;
       p.axis = nonlinear::slerp(from.cl.axis, to.cl.axis, t);  // a great circle also between opposite axes
       const IkOutcome ik = solver_.inverse(p);
-      if (!ik.ok()) throw Infeasible(fmt::format("a point inserted for the tolerance is out of reach: {}", ik.failure.message));
+      if (!ik.ok())
+        throw Infeasible(fmt::format("a point inserted for the tolerance is out of reach: {}", ik.failure.message));
       const SolvedPoint mid{p, *ik.position};
       split(start, mid, depth + 1, out);
       start = mid;
@@ -116,7 +117,8 @@ class HarmonicCutter {
     const nonlinear::ClBlock block{from.cl, to.cl, from.q, to.q};
     const nonlinear::SplitBlock split = nonlinear::harmonic_shift(
         block, model, n, executed_at,
-        [&](double t, const trr::ExecutedPoint& e, const Vec3d& tip_W, std::string& failure) -> std::optional<AxisPosition> {
+        [&](double t, const trr::ExecutedPoint& e, const Vec3d& tip_W,
+            std::string& failure) -> std::optional<AxisPosition> {
           ClPoint p;
           p.tip_mm = tip_W;
           p.axis = e.axis;

@@ -32,8 +32,8 @@ std::string out_of_limits(const Axis& axis, double value) {
 
 }  // namespace
 
-std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, const ClPoint& cl, const AxisPosition& previous,
-                               bool* linear_out) {
+std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, const ClPoint& cl,
+                               const AxisPosition& previous, bool* linear_out) {
   if (!solver.words().serial) return {};  // the solver's failure names the axis (e.g. the TRR-XY sliders)
   const Machine& m = solver.machine();
   std::vector<RotaryAngles> rotaries;
@@ -52,11 +52,13 @@ std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, c
   for (const RotaryAngles& r : rotaries) {
     std::vector<std::string> out;
     for (int k = 0; k < m.rotary_count(); ++k)
-      if (m.rotary(k).limits && !m.rotary(k).limits->contains(r[k], 1e-9)) out.push_back(out_of_limits(m.rotary(k), r[k]));
+      if (m.rotary(k).limits && !m.rotary(k).limits->contains(r[k], 1e-9))
+        out.push_back(out_of_limits(m.rotary(k), r[k]));
     if (out.empty()) {  // the rotary angles are within: which linear axes leave their travel
       const AxisPosition q = solver.with_rotary(cl, r, data);
       for (int i = 0; i < 3; ++i)
-        if (m.axes[static_cast<std::size_t>(i)].limits && !m.axes[static_cast<std::size_t>(i)].limits->contains(q.linear_mm[i], 1e-6))
+        if (m.axes[static_cast<std::size_t>(i)].limits &&
+            !m.axes[static_cast<std::size_t>(i)].limits->contains(q.linear_mm[i], 1e-6))
           out.push_back(out_of_limits(m.axes[static_cast<std::size_t>(i)], q.linear_mm[i]));
       if (linear_out && !out.empty()) *linear_out = true;
     }
@@ -72,8 +74,7 @@ std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, c
 }
 
 std::string unreachable_message(const std::string& input, int line, const KinematicModel& solver, SolverData& data,
-                                const ClPoint& cl,
-                                const AxisPosition& previous, const std::string& why) {
+                                const ClPoint& cl, const AxisPosition& previous, const std::string& why) {
   bool linear = false;
   const std::string axes = axes_out_of_limits(solver, data, cl, previous, &linear);
   return fmt::format("{}:{}: {}{}{} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f}){}", input, line, why,

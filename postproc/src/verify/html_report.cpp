@@ -13,14 +13,15 @@
 namespace ncpost::preview {
 namespace {
 
-
 /// What the preview adds to the shared page style: source lines in monospace.
 std::string style() { return "<style>td.src{text-align:left;font-family:monospace;white-space:pre}</style>\n"; }
 
 std::string totals(const HtmlReport& r) {
   const PreviewSummary& s = *r.summary;
   std::string t = "<table>\n";
-  auto row = [&](const std::string& k, const std::string& v) { t += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", k, v); };
+  auto row = [&](const std::string& k, const std::string& v) {
+    t += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", k, v);
+  };
   row("CL motions / previewed blocks", fmt::format("{} / {}", r.stats.motions, s.blocks()));
   row("largest nonlinear error", fmt::format("{:.4f} mm", s.max_error_mm()));
   row("mean nonlinear error", fmt::format("{:.4f} mm", s.mean_error_mm()));
@@ -52,8 +53,14 @@ std::string histogram_chart(const PreviewSummary& s) {
   const auto& h = s.histogram();
   std::size_t first = h.size(), last = 0;
   for (std::size_t i = 0; i < h.size(); ++i)
-    if (h[i] > 0) { first = std::min(first, i); last = i; }
-  if (first > last) { first = 0; last = 0; }
+    if (h[i] > 0) {
+      first = std::min(first, i);
+      last = i;
+    }
+  if (first > last) {
+    first = 0;
+    last = 0;
+  }
   std::vector<double> heights;
   std::vector<std::string> labels, colours;
   for (std::size_t i = first; i <= last; ++i) {
@@ -84,16 +91,18 @@ std::string path_chart(const PreviewSummary& s) {
 }
 
 std::string worst_table(const HtmlReport& r) {
-  std::string t = "<table>\n<tr><th>#</th><th>block</th><th>CL line</th><th>error (mm)</th><th>at t</th>"
-                  "<th>harmonic Emax (mm)</th><th>orientation (&deg;)</th><th>source</th></tr>\n";
+  std::string t =
+      "<table>\n<tr><th>#</th><th>block</th><th>CL line</th><th>error (mm)</th><th>at t</th>"
+      "<th>harmonic Emax (mm)</th><th>orientation (&deg;)</th><th>source</th></tr>\n";
   const auto& worst = r.summary->worst();
   for (std::size_t i = 0; i < worst.size(); ++i) {
     const BlockRow& w = worst[i];
-    t += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td><td>{:.3f}</td><td>{:.4f}</td><td>{:.4f}</td>"
-                     "<td class=\"src\">{}</td></tr>\n",
-                     i + 1, w.block, w.line, w.exact.max_error_mm, w.exact.at_t, w.harmonic_mm,
-                     rad_to_deg(w.exact.max_orientation_rad),
-                     svg::escape(i < r.worst_source_lines.size() ? r.worst_source_lines[i] : std::string()));
+    t += fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td><td>{:.3f}</td><td>{:.4f}</td><td>{:.4f}</td>"
+        "<td class=\"src\">{}</td></tr>\n",
+        i + 1, w.block, w.line, w.exact.max_error_mm, w.exact.at_t, w.harmonic_mm,
+        rad_to_deg(w.exact.max_orientation_rad),
+        svg::escape(i < r.worst_source_lines.size() ? r.worst_source_lines[i] : std::string()));
   }
   return t + "</table>\n";
 }
@@ -144,7 +153,10 @@ std::string render_html(const HtmlReport& r) {
     h += "<h2>Notices</h2>\n<ul class=\"note\">\n";
     std::size_t shown = 0;
     for (const auto& n : r.stats.notices) {
-      if (++shown > 50) { h += fmt::format("<li>… {} more</li>\n", r.stats.notices.size() - 50); break; }
+      if (++shown > 50) {
+        h += fmt::format("<li>… {} more</li>\n", r.stats.notices.size() - 50);
+        break;
+      }
       h += "<li>" + svg::escape(n) + "</li>\n";
     }
     h += "</ul>\n";

@@ -31,13 +31,15 @@ std::string format_tick(double v) { return report::format_tick(v); }
 
 std::string axes(const ChartFrame& f, const Box& b, double x0, double x1, double y0, double y1, bool x_ticks = true) {
   std::string s;
-  s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#888\"/>\n",
-                   b.left, b.top, b.width, b.height);
+  s += fmt::format(
+      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#888\"/>\n", b.left,
+      b.top, b.width, b.height);
   for (double t : nice_ticks(y0, y1, 5)) {
     const double y = b.top + b.height * (1.0 - (t - y0) / (y1 - y0));
     s += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#e4e4e4\"/>\n", b.left, y,
                      b.left + b.width, y);
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>\n", b.left - 5, y + 4, format_tick(t));
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>\n", b.left - 5, y + 4,
+                     format_tick(t));
   }
   if (x_ticks) {
     for (double t : nice_ticks(x0, x1, 8)) {
@@ -73,7 +75,10 @@ std::string line_chart(const ChartFrame& f, const std::vector<Series>& series) {
       y0 = std::min(y0, s.y[i]);
       y1 = std::max(y1, s.y[i]);
     }
-  if (!(x1 > x0)) { x0 = std::isfinite(x0) ? x0 - 0.5 : 0.0; x1 = x0 + 1.0; }
+  if (!(x1 > x0)) {
+    x0 = std::isfinite(x0) ? x0 - 0.5 : 0.0;
+    x1 = x0 + 1.0;
+  }
   if (!(y1 > y0)) y1 = y0 + 1.0;
   y1 += 0.05 * (y1 - y0);
   std::string s = open_svg(f) + axes(f, b, x0, x1, y0, y1);
@@ -85,10 +90,11 @@ std::string line_chart(const ChartFrame& f, const std::vector<Series>& series) {
                             b.top + b.height * (1.0 - (line.y[i] - y0) / (y1 - y0)));
     s += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"{} points=\"{}\"/>\n", line.colour,
                      line.dashed ? " stroke-dasharray=\"6,4\"" : "", points);
-    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
-                     "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
-                     legend_x, b.top + 12, legend_x + 24, line.colour, line.dashed ? " stroke-dasharray=\"6,4\"" : "",
-                     legend_x + 30, b.top + 16, escape(line.label));
+    s += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
+        "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
+        legend_x, b.top + 12, legend_x + 24, line.colour, line.dashed ? " stroke-dasharray=\"6,4\"" : "", legend_x + 30,
+        b.top + 16, escape(line.label));
     legend_x += 40 + 7.0 * static_cast<double>(line.label.size());
   }
   return s + "</svg>\n";
@@ -126,7 +132,10 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
     y0 = std::min({y0, p.y0, p.y1});
     y1 = std::max({y1, p.y0, p.y1});
   }
-  if (!std::isfinite(x0)) { x0 = y0 = 0; x1 = y1 = 1; }
+  if (!std::isfinite(x0)) {
+    x0 = y0 = 0;
+    x1 = y1 = 1;
+  }
   // equal aspect: the larger span fills its side
   const double span = std::max({x1 - x0, (y1 - y0) * b.width / b.height, 1e-9});
   const double scale = b.width / span;
@@ -134,8 +143,9 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
   auto px = [&](double x) { return b.left + b.width / 2 + (x - cx) * scale; };
   auto py = [&](double y) { return b.top + b.height / 2 - (y - cy) * scale; };
   std::string s = open_svg(f);
-  s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#888\"/>\n",
-                   b.left, b.top, b.width, b.height);
+  s += fmt::format(
+      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#888\"/>\n", b.left,
+      b.top, b.width, b.height);
   const double vmax = value_max > 0 ? value_max : 1.0;
   const double vmin = log_decades > 0 ? vmax * std::pow(10.0, -log_decades) : 0.0;
   auto fraction = [&](double v) {
@@ -145,12 +155,14 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
   // low values first so that the worst segments are drawn on top
   std::vector<std::size_t> order(segments.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return segments[l].value < segments[r].value; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t l, std::size_t r) { return segments[l].value < segments[r].value; });
   for (std::size_t i : order) {
     const PathSegment& p = segments[i];
-    s += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"1.8\" "
-                     "stroke-linecap=\"round\"/>\n",
-                     px(p.x0), py(p.y0), px(p.x1), py(p.y1), colour(fraction(p.value)));
+    s += fmt::format(
+        "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"1.8\" "
+        "stroke-linecap=\"round\"/>\n",
+        px(p.x0), py(p.y0), px(p.x1), py(p.y1), colour(fraction(p.value)));
   }
   // colour bar
   const double bar_x = b.left + b.width + 25;
@@ -159,12 +171,14 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
     s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.2f}\" width=\"14\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
                      b.top + b.height * i / 50.0, b.height / 50.0 + 0.5, colour(frac));
   }
-  s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} {}</text>\n", bar_x - 5, b.top - 6, format_tick(vmax), escape(unit));
+  s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} {}</text>\n", bar_x - 5, b.top - 6, format_tick(vmax),
+                   escape(unit));
   if (log_decades > 0) {
     for (int d = 1; d < log_decades; ++d)
-      s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", bar_x + 18, b.top + b.height * d / log_decades + 4,
-                       format_tick(vmax * std::pow(10.0, -d)));
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">&#8804;{}</text>\n", bar_x + 18, b.top + b.height, format_tick(vmin));
+      s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", bar_x + 18,
+                       b.top + b.height * d / log_decades + 4, format_tick(vmax * std::pow(10.0, -d)));
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">&#8804;{}</text>\n", bar_x + 18, b.top + b.height,
+                     format_tick(vmin));
   } else {
     s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">0</text>\n", bar_x + 18, b.top + b.height);
   }

@@ -12,7 +12,7 @@ PostAccount account_of(const PostRequest& r, const std::optional<double>& tolera
   acc.machine_name = fmt::format("{} ({})", r.machine->name(), r.machine_source);
   acc.model_name = has_model ? r.model_source : std::string();
   acc.executed_on = has_verify_on ? "the machine of " + r.verify_on_source
-                  : has_model     ? "the machine of " + r.model_source + " (as compensated)"
+                    : has_model   ? "the machine of " + r.model_source + " (as compensated)"
                                   : "the nominal machine";
   acc.dialect_name = r.dialect.name;
   acc.inputs.push_back({"CL input", r.input_file.empty() ? r.input_name : r.input_file, r.input_name});
@@ -48,12 +48,15 @@ void measure_before(cl::Reader& reader, const KinematicModel& nominal, const pre
                     const PostRequest& r, PostAccount& account) {
   double sum = 0.0;
   try {
-    preview::run_preview(reader, r.input_name, nominal, executed, [&](const preview::BlockRow& row) {
-      const double e = row.exact.max_error_mm;
-      sum += e;
-      add_before(account, row.line, e);
-      account.path.add_before(row.line, row.cl.end.tip_mm, e);
-    }, r.progress.measuring);
+    preview::run_preview(
+        reader, r.input_name, nominal, executed,
+        [&](const preview::BlockRow& row) {
+          const double e = row.exact.max_error_mm;
+          sum += e;
+          add_before(account, row.line, e);
+          account.path.add_before(row.line, row.cl.end.tip_mm, e);
+        },
+        r.progress.measuring);
   } catch (const preview::PreviewInfeasible& e) {
     throw Infeasible(e.what());
   }

@@ -106,17 +106,19 @@ std::vector<PathErrors::Point> PathErrors::points() const {
 
 std::string account_text(const PostAccount& a) {
   std::string t;
-  t += fmt::format("before (one block per CL motion, nominal commands, on {}): largest contour error {:.4f} mm "
-                   "(CL line {}), mean {:.4f} mm over {} blocks\n",
-                   a.executed_on, a.before_max_mm,
-                   a.before_worst_line, a.before_mean_mm, a.before_blocks);
+  t += fmt::format(
+      "before (one block per CL motion, nominal commands, on {}): largest contour error {:.4f} mm "
+      "(CL line {}), mean {:.4f} mm over {} blocks\n",
+      a.executed_on, a.before_max_mm, a.before_worst_line, a.before_mean_mm, a.before_blocks);
   if (a.uncompensated_tip_max_mm >= 0.0)
-    t += fmt::format("        of which at the CL points (geometric errors, uncompensated): max {:.4f} mm, rms {:.4f} mm\n",
-                     a.uncompensated_tip_max_mm, a.uncompensated_tip_rms_mm);
-  t += fmt::format("after  (the written program re-executed, {} blocks): largest contour error {:.4f} mm (CL line {}), "
-                   "orientation {:.4f} deg, block ends {:.4f} mm\n",
-                   a.after.blocks, a.after.max_contour_mm, a.after.worst_line,
-                   rad_to_deg(a.after.max_orientation_rad), a.after.max_endpoint_mm);
+    t += fmt::format(
+        "        of which at the CL points (geometric errors, uncompensated): max {:.4f} mm, rms {:.4f} mm\n",
+        a.uncompensated_tip_max_mm, a.uncompensated_tip_rms_mm);
+  t += fmt::format(
+      "after  (the written program re-executed, {} blocks): largest contour error {:.4f} mm (CL line {}), "
+      "orientation {:.4f} deg, block ends {:.4f} mm\n",
+      a.after.blocks, a.after.max_contour_mm, a.after.worst_line, rad_to_deg(a.after.max_orientation_rad),
+      a.after.max_endpoint_mm);
   return t;
 }
 
@@ -158,18 +160,23 @@ std::string render_post_html(const PostAccount& a) {
   p.inputs = a.inputs;
   std::string h = report::page_start(p);
   h += "<h2>Figures</h2><table>\n";
-  auto row = [&](const std::string& k, const std::string& v) { h += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", k, v); };
-  row("nonlinear-error tolerance",
-      a.tolerance_mm > 0 ? fmt::format("{:g} µm ({})", a.tolerance_mm * 1e3, escape(a.method_name)) : std::string("none"));
+  auto row = [&](const std::string& k, const std::string& v) {
+    h += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", k, v);
+  };
+  row("nonlinear-error tolerance", a.tolerance_mm > 0
+                                       ? fmt::format("{:g} µm ({})", a.tolerance_mm * 1e3, escape(a.method_name))
+                                       : std::string("none"));
   row("dialect", escape(a.dialect_name));
   row("both programs executed on", escape(a.executed_on));
   row("CL motions &rarr; NC blocks", fmt::format("{} &rarr; {}", a.motions_in, a.blocks_out));
-  row("before: largest contour error", fmt::format("{:.2f} µm (CL line {})", 1e3 * a.before_max_mm, a.before_worst_line));
+  row("before: largest contour error",
+      fmt::format("{:.2f} µm (CL line {})", 1e3 * a.before_max_mm, a.before_worst_line));
   row("before: mean contour error", fmt::format("{:.2f} µm", 1e3 * a.before_mean_mm));
   if (a.uncompensated_tip_max_mm >= 0.0)
     row("before: tip error at the CL points (max / rms)",
         fmt::format("{:.2f} / {:.2f} µm", 1e3 * a.uncompensated_tip_max_mm, 1e3 * a.uncompensated_tip_rms_mm));
-  row("after: largest contour error", fmt::format("{:.2f} µm (CL line {})", 1e3 * a.after.max_contour_mm, a.after.worst_line));
+  row("after: largest contour error",
+      fmt::format("{:.2f} µm (CL line {})", 1e3 * a.after.max_contour_mm, a.after.worst_line));
   row("after: largest orientation error", fmt::format("{:.1f} µrad", 1e6 * a.after.max_orientation_rad));
   row("after: largest block-end error", fmt::format("{:.2f} µm", 1e3 * a.after.max_endpoint_mm));
   h += "</table>\n<p class=\"note\">Contour error: distance of the executed tool tip from the straight CL segment of "

@@ -15,7 +15,12 @@ class Previewer {
  public:
   Previewer(const std::string& input, const KinematicModel& solver, const BlockEvaluator& evaluator,
             const std::function<void(const BlockRow&)>& sink, const std::function<void(std::size_t)>& progress)
-      : input_(input), solver_(solver), evaluator_(evaluator), sink_(sink), progress_(progress), previous_q_(solver.words().home()) {}
+      : input_(input),
+        solver_(solver),
+        evaluator_(evaluator),
+        sink_(sink),
+        progress_(progress),
+        previous_q_(solver.words().home()) {}
 
   PreviewStats run(cl::Reader& reader) {
     while (auto record = reader.next()) {
@@ -35,14 +40,14 @@ class Previewer {
     } else {
       const IkOutcome ik = solver_.solve(m.point, previous_q_, data_);
       if (!ik.ok())
-        throw PreviewInfeasible(unreachable_message(input_, m.where.line, solver_, data_, m.point, previous_q_, ik.failure.message));
+        throw PreviewInfeasible(
+            unreachable_message(input_, m.where.line, solver_, data_, m.point, previous_q_, ik.failure.message));
       q = *ik.position;
     }
     const bool cutting = !(m.rapid || m.from) && cycle_ == cl::Cycle::Kind::off;
     if (circle_pending_) {
       circle_pending_ = false;
-      if (cutting)
-        stats_.notices.push_back(fmt::format("{}:{}: CIRCLE previewed as its chord", input_, m.where.line));
+      if (cutting) stats_.notices.push_back(fmt::format("{}:{}: CIRCLE previewed as its chord", input_, m.where.line));
     }
     if (have_position_ && cutting) {
       BlockRow row;
@@ -62,7 +67,8 @@ class Previewer {
       stats_.notices.push_back(fmt::format("{}:{}: drilling-cycle holes are not previewed", input_, c.where.line));
     cycle_ = c.kind;
   }
-  template <class Other> void on(const Other&) {}
+  template <class Other>
+  void on(const Other&) {}
 
   const std::string& input_;
   const KinematicModel& solver_;

@@ -16,8 +16,10 @@ bool contiguous(const PreviewSummary::PathBucket& a, const PreviewSummary::PathB
 }  // namespace
 
 PreviewSummary::PreviewSummary(std::size_t max_points, std::size_t worst)
-    : max_points_(std::max<std::size_t>(max_points, 16)), worst_count_(worst),
-      histogram_(static_cast<std::size_t>(histogram_bins), 0), over_(std::size(kOverThresholds), 0),
+    : max_points_(std::max<std::size_t>(max_points, 16)),
+      worst_count_(worst),
+      histogram_(static_cast<std::size_t>(histogram_bins), 0),
+      over_(std::size(kOverThresholds), 0),
       path_limit_(max_points_) {}
 
 double PreviewSummary::bin_lower_mm(int bin) {
@@ -39,7 +41,8 @@ void PreviewSummary::add(const BlockRow& row) {
   max_residual_ = std::max(max_residual_, row.harmonic_residual_mm);
   int bin = 0;
   if (e >= histogram_floor_mm)
-    bin = std::min(histogram_bins - 1, 1 + static_cast<int>(std::floor(std::log10(e / histogram_floor_mm) * bins_per_decade)));
+    bin = std::min(histogram_bins - 1,
+                   1 + static_cast<int>(std::floor(std::log10(e / histogram_floor_mm) * bins_per_decade)));
   ++histogram_[static_cast<std::size_t>(bin)];
   for (std::size_t i = 0; i < std::size(kOverThresholds); ++i)
     if (e > kOverThresholds[i]) ++over_[i];

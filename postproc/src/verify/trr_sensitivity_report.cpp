@@ -60,28 +60,31 @@ std::string map_svg(const SensitivityResult& r, const SensitivityOptions& o, con
       const auto [x1, y1] = xy(p1, a0);
       const auto [x2, y2] = xy(p1, a1);
       const auto [x3, y3] = xy(p0, a1);
-      s += fmt::format("<path d='M{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}Z' fill='{}'/>", x0, y0, x1, y1,
-                       x2, y2, x3, y3, diverging_colour(v / scale));
+      s += fmt::format("<path d='M{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}Z' fill='{}'/>", x0, y0, x1,
+                       y1, x2, y2, x3, y3, diverging_colour(v / scale));
     }
   }
   s += fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='{:.1f}' fill='none' stroke='#444'/>", cx, cy, R);
   for (int c = 0; c < 3; ++c) {  // screw lines of chains a, b, c
     const auto [x, y] = xy(o.max_polar_deg * 1.08, deg_to_rad(120.0 * c));
-    s += fmt::format("<text x='{:.1f}' y='{:.1f}' font-size='12' text-anchor='middle' dominant-baseline='middle'>{}</text>",
-                     x, y, "abc"[c]);
+    s += fmt::format(
+        "<text x='{:.1f}' y='{:.1f}' font-size='12' text-anchor='middle' dominant-baseline='middle'>{}</text>", x, y,
+        "abc"[c]);
   }
   const auto mark = [&](int idx, const char* label) {
     const SurfacePoint& p = r.points[static_cast<std::size_t>(idx)];
     const auto [x, y] = xy(rad_to_deg(p.polar_rad), p.azimuth_rad);
-    s += fmt::format("<text x='{:.1f}' y='{:.1f}' font-size='11' text-anchor='middle' dominant-baseline='middle'>{}</text>",
-                     x, y, label);
+    s += fmt::format(
+        "<text x='{:.1f}' y='{:.1f}' font-size='11' text-anchor='middle' dominant-baseline='middle'>{}</text>", x, y,
+        label);
   };
   if (!no_effect) {
     mark(m.max_at, "+");
     mark(m.min_at, "&#8722;");
   }
-  s += fmt::format("<text x='130' y='258' font-size='11' text-anchor='middle'>max {:.3f} µm, min {:.3f} µm</text></svg>",
-                   m.max_um, m.min_um);
+  s +=
+      fmt::format("<text x='130' y='258' font-size='11' text-anchor='middle'>max {:.3f} µm, min {:.3f} µm</text></svg>",
+                  m.max_um, m.min_um);
   return s + "<br>" + report::diverging_bar_svg(largest, "µm", 260, no_effect);
 }
 
@@ -136,14 +139,16 @@ std::string sensitivity_html(const SensitivityResult& r, const SensitivityOption
   if (!machine_file.empty()) p.inputs.push_back({"machine file", machine_file});
   std::string s = report::page_start(p);
   s += "<style>.maps{display:flex;flex-wrap:wrap}.map{margin:4px;text-align:center}</style>";
-  s += fmt::format("<p>Hemisphere of radius {} mm (centre = workpiece origin at {:.1f}, {:.1f}, {:.1f} mm in M), tool "
-                   "normal to the surface, polar angle 0–{}°; {} CL points. One error parameter at a time ({} mm, or {}° for "
-                   "ar, at, gp); deviation of the executed tool tip from the CL point along the surface normal "
-                   "(positive: material left). Maps seen from above (+X right, +Y up), colour scaled to each map's largest "
-                   "|deviation| (red positive, blue negative; a map whose largest |deviation| is below 0.001 µm has no effect and is drawn white); "
-                   "a, b, c mark the screw lines, + and − the extremes.</p>",
-                   o.sphere_radius_mm, o.workpiece_origin_mm.x(), o.workpiece_origin_mm.y(), o.workpiece_origin_mm.z(),
-                   o.max_polar_deg, r.points.size(), o.length_step_mm, o.angle_step_deg);
+  s += fmt::format(
+      "<p>Hemisphere of radius {} mm (centre = workpiece origin at {:.1f}, {:.1f}, {:.1f} mm in M), tool "
+      "normal to the surface, polar angle 0–{}°; {} CL points. One error parameter at a time ({} mm, or {}° for "
+      "ar, at, gp); deviation of the executed tool tip from the CL point along the surface normal "
+      "(positive: material left). Maps seen from above (+X right, +Y up), colour scaled to each map's largest "
+      "|deviation| (red positive, blue negative; a map whose largest |deviation| is below 0.001 µm has no effect and "
+      "is drawn white); "
+      "a, b, c mark the screw lines, + and − the extremes.</p>",
+      o.sphere_radius_mm, o.workpiece_origin_mm.x(), o.workpiece_origin_mm.y(), o.workpiece_origin_mm.z(),
+      o.max_polar_deg, r.points.size(), o.length_step_mm, o.angle_step_deg);
   s += "<table><tr><th>parameter</th><th>step</th><th>max µm</th><th>min µm</th><th>range µm</th></tr>";
   for (std::size_t k = 0; k < r.maps.size(); ++k) {
     const ParameterMap& m = r.maps[k];

@@ -13,14 +13,14 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return (p - (a + t * ab)).norm();
 }
 
-AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
-                               const RotaryAngles& rotary_rad, const Vec3d& xyz_F) {
+AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane,
+                               const Vec3d& home_offset_mm, const RotaryAngles& rotary_rad, const Vec3d& xyz_F) {
   const Vec3d tip_W = plane.to_program(xyz_F) - home_offset_mm;
   return solver.with_rotary(ClPoint{tip_W, plane.P_R_F.col(2)}, rotary_rad, data);
 }
 
-double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
-                  const AxisPosition& q1, int line, VerifyReport& report, int samples) {
+double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0,
+                    const ClPoint& cl1, const AxisPosition& q1, int line, VerifyReport& report, int samples) {
   auto at = [&](double t) {
     AxisPosition q;
     q.linear_mm = q0.linear_mm + t * (q1.linear_mm - q0.linear_mm);
@@ -37,7 +37,10 @@ double verify_block(const KinematicModel& solver, const SolverData& data, const 
   for (int i = 0; i <= samples; ++i) {
     const double t = static_cast<double>(i) / samples;
     const double c = contour(t);
-    if (c > best) { best = c; best_t = t; }
+    if (c > best) {
+      best = c;
+      best_t = t;
+    }
     report.max_orientation_rad = std::max(report.max_orientation_rad, orientation(t));
   }
   // golden-section refinement around the best sample
@@ -46,12 +49,23 @@ double verify_block(const KinematicModel& solver, const SolverData& data, const 
   double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
   double f1 = contour(x1), f2 = contour(x2);
   for (int it = 0; it < 40 && hi - lo > 1e-9; ++it) {
-    if (f1 > f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = contour(x1); }
-    else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = contour(x2); }
+    if (f1 > f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = contour(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = contour(x2);
+    }
   }
   best = std::max({best, f1, f2});
-  report.max_endpoint_mm = std::max({report.max_endpoint_mm, (at(0.0).tip_mm - cl0.tip_mm).norm(),
-                                     (at(1.0).tip_mm - cl1.tip_mm).norm()});
+  report.max_endpoint_mm =
+      std::max({report.max_endpoint_mm, (at(0.0).tip_mm - cl0.tip_mm).norm(), (at(1.0).tip_mm - cl1.tip_mm).norm()});
   record_verified_block(report, best, line);
   return best;
 }

@@ -51,8 +51,8 @@ double verify_arc(const KinematicModel& solver, const SolverData& data, const Fr
     const double t = static_cast<double>(i) / samples;
     const ToolPoseT<double> pose = solver.execute(commands_at(executed.at(t)), data);
     best = std::max(best, cl.distance(pose.tip_mm));
-    report.max_orientation_rad =
-        std::max(report.max_orientation_rad, std::atan2(cl.tool_axis.cross(pose.axis).norm(), cl.tool_axis.dot(pose.axis)));
+    report.max_orientation_rad = std::max(
+        report.max_orientation_rad, std::atan2(cl.tool_axis.cross(pose.axis).norm(), cl.tool_axis.dot(pose.axis)));
     if (i == 0) report.max_endpoint_mm = std::max(report.max_endpoint_mm, (pose.tip_mm - cl.start_mm).norm());
     if (i == samples) report.max_endpoint_mm = std::max(report.max_endpoint_mm, (pose.tip_mm - cl.end_mm).norm());
   }

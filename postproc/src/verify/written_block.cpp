@@ -17,9 +17,12 @@ std::string without_comment(std::string_view text, Dialect::Comments style) {
   int depth = 0;
   for (char c : text) {
     if (style == Dialect::Comments::semicolon && c == ';') break;
-    if (style == Dialect::Comments::parentheses && c == '(') ++depth;
-    else if (style == Dialect::Comments::parentheses && c == ')') depth = std::max(0, depth - 1);
-    else if (depth == 0) out += c;
+    if (style == Dialect::Comments::parentheses && c == '(')
+      ++depth;
+    else if (style == Dialect::Comments::parentheses && c == ')')
+      depth = std::max(0, depth - 1);
+    else if (depth == 0)
+      out += c;
   }
   return out;
 }
@@ -85,14 +88,31 @@ const WrittenState& WrittenBlockReader::read(std::string_view text) {
     if (!klartext && letter == 'G') {
       const long code = std::lround(*v * 10.0);
       switch (code) {
-        case 0: state_.motion = WrittenState::Motion::rapid; break;
-        case 10: state_.motion = WrittenState::Motion::linear; break;
-        case 20: state_.motion = WrittenState::Motion::clockwise, state_.centre_offset_mm = {}; break;
-        case 30: state_.motion = WrittenState::Motion::counter_clockwise, state_.centre_offset_mm = {}; break;
-        case 930: state_.inverse_time = true, state_.feed.reset(); break;
-        case 940: state_.inverse_time = false, state_.feed.reset(); break;
-        case 170: case 180: case 190: state_.plane = static_cast<int>(code / 10); break;
-        default: fail(t);
+        case 0:
+          state_.motion = WrittenState::Motion::rapid;
+          break;
+        case 10:
+          state_.motion = WrittenState::Motion::linear;
+          break;
+        case 20:
+          state_.motion = WrittenState::Motion::clockwise, state_.centre_offset_mm = {};
+          break;
+        case 30:
+          state_.motion = WrittenState::Motion::counter_clockwise, state_.centre_offset_mm = {};
+          break;
+        case 930:
+          state_.inverse_time = true, state_.feed.reset();
+          break;
+        case 940:
+          state_.inverse_time = false, state_.feed.reset();
+          break;
+        case 170:
+        case 180:
+        case 190:
+          state_.plane = static_cast<int>(code / 10);
+          break;
+        default:
+          fail(t);
       }
       continue;
     }

@@ -62,8 +62,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   struct stat st {};
   bool exists = false;
   if (::stat(target_.c_str(), &st) == 0) {
-    if (!S_ISREG(st.st_mode))
-      throw FileError(fmt_refusal(st.st_mode));
+    if (!S_ISREG(st.st_mode)) throw FileError(fmt_refusal(st.st_mode));
     exists = true;
   } else if (errno != ENOENT) {
     throw FileError("cannot write '" + path_ + "': " + reason());
@@ -85,7 +84,8 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (exists) {
     // the replaced file keeps its mode (and, where permitted, its owner)
     ::fchmod(fd, st.st_mode & 07777);
-    if (::fchown(fd, st.st_uid, st.st_gid) != 0) { /* not permitted: the file becomes the writer's */ }
+    if (::fchown(fd, st.st_uid, st.st_gid) != 0) { /* not permitted: the file becomes the writer's */
+    }
   } else {
     // mkstemp creates 0600; give the file the mode an ordinary create would (0666 less the umask)
     const mode_t mask = ::umask(0);
@@ -103,8 +103,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 std::string AtomicFile::fmt_refusal(unsigned mode) const {
   std::string s = "cannot write '" + path_ + "'";
   if (target_ != path_) s += " (a link to '" + target_ + "')";
-  return s + ": it is " + kind_of(static_cast<mode_t>(mode)) +
-         "; ncpost writes only regular files, give a file name";
+  return s + ": it is " + kind_of(static_cast<mode_t>(mode)) + "; ncpost writes only regular files, give a file name";
 }
 
 void AtomicFile::discard() {
@@ -141,7 +140,8 @@ void AtomicFile::commit() {
     if (std::fflush(stdout) != 0) throw FileError("cannot write to standard output: " + reason());
     return;
   }
-  if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) throw FileError("cannot write '" + path_ + "': " + reason());
+  if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0)
+    throw FileError("cannot write '" + path_ + "': " + reason());
   const int rc = std::fclose(file_);
   file_ = nullptr;
   if (rc != 0) {

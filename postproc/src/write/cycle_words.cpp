@@ -9,13 +9,20 @@ const std::string& CycleWords::word(const cl::Cycle& c) const {
   using K = cl::Cycle::Kind;
   static const std::string none;
   switch (c.kind) {
-    case K::drill: return c.dwell_s > 0.0 ? drill_dwell : drill;
-    case K::deep: return c.dwell_s > 0.0 ? none : deep;
-    case K::chip_break: return c.dwell_s > 0.0 ? none : chip_break;
-    case K::tap: return c.dwell_s > 0.0 ? none : c.left_hand ? tap_left : tap;
-    case K::bore: return c.dwell_s > 0.0 ? bore_dwell : bore;
-    case K::bore_drag: return c.dwell_s > 0.0 ? none : bore_drag;
-    case K::off: break;
+    case K::drill:
+      return c.dwell_s > 0.0 ? drill_dwell : drill;
+    case K::deep:
+      return c.dwell_s > 0.0 ? none : deep;
+    case K::chip_break:
+      return c.dwell_s > 0.0 ? none : chip_break;
+    case K::tap:
+      return c.dwell_s > 0.0 ? none : c.left_hand ? tap_left : tap;
+    case K::bore:
+      return c.dwell_s > 0.0 ? bore_dwell : bore;
+    case K::bore_drag:
+      return c.dwell_s > 0.0 ? none : bore_drag;
+    case K::off:
+      break;
   }
   return none;
 }

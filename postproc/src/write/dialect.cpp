@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 
 Dialect read_dialect_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open the dialect file; expected a built-in name or a readable .toml file");
+  if (!in)
+    throw InputError({path, 0, 0}, "cannot open the dialect file; expected a built-in name or a readable .toml file");
   std::ostringstream s;
   s << in.rdbuf();
   return parse_dialect(s.str(), path);

@@ -22,7 +22,8 @@ class Section {
  public:
   Section(const std::string& file, const toml::table& root, const std::string& name) : file_(file), name_(name) {
     const toml::node* n = root.get(name);
-    if (!n) throw InputError({file, 1, 1}, fmt::format("missing section [{}]; expected every section of fanuc.toml", name));
+    if (!n)
+      throw InputError({file, 1, 1}, fmt::format("missing section [{}]; expected every section of fanuc.toml", name));
     t_ = n->as_table();
     if (!t_) throw InputError(at(file, n->source()), fmt::format("'{}' must be a table [{}]", name, name));
   }
@@ -64,7 +65,8 @@ class Section {
     auto v = n.value_exact<int64_t>();
     if (!v) throw wrong(n, key, fmt::format("an integer from {} to {}", lo, hi));
     if (*v < lo || *v > hi)
-      throw InputError(at(file_, n.source()), fmt::format("{} in [{}] is {}: expected {} to {}", key, name_, *v, lo, hi));
+      throw InputError(at(file_, n.source()),
+                       fmt::format("{} in [{}] is {}: expected {} to {}", key, name_, *v, lo, hi));
     return *v;
   }
 
@@ -123,9 +125,9 @@ class Section {
   void check_printable(const toml::node& n, const char* key, const std::string& v) const {
     for (const char c : v)
       if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F)
-        throw InputError(at(file_, n.source()),
-                         fmt::format("{} in [{}]: only printable ASCII on one line may be written into a program", key,
-                                     name_));
+        throw InputError(
+            at(file_, n.source()),
+            fmt::format("{} in [{}]: only printable ASCII on one line may be written into a program", key, name_));
   }
 
   const std::string& file_;
@@ -163,8 +165,9 @@ void read_motion(const Section& s, Dialect& d) {
   m.linear = word(s, "linear");
   m.modal = s.boolean("modal");
   if (m.modal && m.rapid == m.linear)
-    throw s.wrong(s.node("modal"), "modal", "false when rapid and linear are the same word (a rapid would not be "
-                                            "told from a feed move)");
+    throw s.wrong(s.node("modal"), "modal",
+                  "false when rapid and linear are the same word (a rapid would not be "
+                  "told from a feed move)");
   m.rapid_feed = s.text("rapid_feed", {});
   if (m.rapid == m.linear && m.rapid_feed.empty())
     throw s.wrong(s.node("rapid_feed"), "rapid_feed", "a word (rapid and linear are the same word)");
@@ -183,7 +186,8 @@ void read_arcs(const Section& s, Dialect& d) {
   a.clockwise = word(s, "clockwise");
   a.counter_clockwise = word(s, "counter_clockwise");
   const std::vector<std::string> planes = s.blocks("planes", {});
-  if (planes.size() != 3) throw s.wrong(s.node("planes"), "planes", "three words: XY, ZX, YZ, e.g. [\"G17\", \"G18\", \"G19\"]");
+  if (planes.size() != 3)
+    throw s.wrong(s.node("planes"), "planes", "three words: XY, ZX, YZ, e.g. [\"G17\", \"G18\", \"G19\"]");
   for (std::size_t i = 0; i < 3; ++i) a.planes[i] = planes[i];
   a.centre_letters = s.text("centre_letters", {});
   if (a.centre_letters.size() != 3)
@@ -244,9 +248,12 @@ void read_compensation(const Section& s, Dialect& d) {
 void read_comments(const Section& s, Dialect& d) {
   s.known({"style", "replaced", "replacements", "max_chars", "program_name_chars"});
   const std::string style = s.text("style");
-  if (style == "parentheses") d.comments = Dialect::Comments::parentheses;
-  else if (style == "semicolon") d.comments = Dialect::Comments::semicolon;
-  else throw s.wrong(s.node("style"), "style", "\"parentheses\" or \"semicolon\", got \"" + style + "\"");
+  if (style == "parentheses")
+    d.comments = Dialect::Comments::parentheses;
+  else if (style == "semicolon")
+    d.comments = Dialect::Comments::semicolon;
+  else
+    throw s.wrong(s.node("style"), "style", "\"parentheses\" or \"semicolon\", got \"" + style + "\"");
   CommentRules& r = d.comment_rules;
   r.replaced = s.text("replaced");
   r.replacements = s.text("replacements");
@@ -258,8 +265,10 @@ void read_comments(const Section& s, Dialect& d) {
   // what would end the comment or the tape must be replaced
   for (const char must : std::string(d.comments == Dialect::Comments::parentheses ? ")%" : "%"))
     if (r.replaced.find(must) == std::string::npos)
-      throw s.wrong(s.node("replaced"), "replaced", fmt::format("'{}' among the characters (it would end the comment "
-                                                                "or the tape)", must));
+      throw s.wrong(s.node("replaced"), "replaced",
+                    fmt::format("'{}' among the characters (it would end the comment "
+                                "or the tape)",
+                                must));
   r.max_chars = static_cast<std::size_t>(s.integer("max_chars", 5, 254));
   r.max_name_chars = static_cast<std::size_t>(s.integer("program_name_chars", 1, 64));
 }
@@ -270,9 +279,12 @@ void read_tilted_plane(const Section& s, Dialect& d) {
   if (!s.boolean("native")) return;
   auto w = std::make_shared<TiltedPlaneWords>();
   const std::string angles = s.text("angles");
-  if (angles == "euler_zxz") w->angles = TiltedPlaneWords::Angles::euler_zxz;
-  else if (angles == "fixed_xyz") w->angles = TiltedPlaneWords::Angles::fixed_xyz;
-  else throw s.wrong(s.node("angles"), "angles", "\"euler_zxz\" or \"fixed_xyz\", got \"" + angles + "\"");
+  if (angles == "euler_zxz")
+    w->angles = TiltedPlaneWords::Angles::euler_zxz;
+  else if (angles == "fixed_xyz")
+    w->angles = TiltedPlaneWords::Angles::fixed_xyz;
+  else
+    throw s.wrong(s.node("angles"), "angles", "\"euler_zxz\" or \"fixed_xyz\", got \"" + angles + "\"");
   const std::set<std::string> placeholders{"{x}", "{y}", "{z}", "{a}", "{b}", "{c}", "{dir}", "{rotary}"};
   w->on = s.blocks("on", placeholders);
   w->off = s.blocks("off", {});
@@ -280,17 +292,19 @@ void read_tilted_plane(const Section& s, Dialect& d) {
   for (const auto& b : w->on) all += b;
   for (const char* p : {"{x}", "{y}", "{z}", "{a}", "{b}", "{c}"})
     if (all.find(p) == std::string::npos)
-      throw s.wrong(s.node("on"), "on", fmt::format("blocks that give the whole plane: {} is missing (origin {{x}} "
-                                                    "{{y}} {{z}}, angles {{a}} {{b}} {{c}})", p));
+      throw s.wrong(s.node("on"), "on",
+                    fmt::format("blocks that give the whole plane: {} is missing (origin {{x}} "
+                                "{{y}} {{z}}, angles {{a}} {{b}} {{c}})",
+                                p));
   d.tilted_plane = std::move(w);
 }
 
 /// The G codes a power-on state may name: motion (G0 G1), plane, units, distance, feed mode, work
 /// offset, and the cancel words of compensation, length and cycles.
 bool power_on_code(const std::string& word) {
-  static const std::set<std::string> kCodes{"G0",  "G1",  "G17", "G18", "G19",   "G20",   "G21",   "G90",
-                                            "G91", "G93", "G94", "G95", "G54",   "G55",   "G56",   "G57",
-                                            "G58", "G59", "G40", "G49", "G80",   "G59.1", "G59.2", "G59.3"};
+  static const std::set<std::string> kCodes{"G0",  "G1",  "G17", "G18", "G19", "G20",   "G21",   "G90",
+                                            "G91", "G93", "G94", "G95", "G54", "G55",   "G56",   "G57",
+                                            "G58", "G59", "G40", "G49", "G80", "G59.1", "G59.2", "G59.3"};
   return kCodes.count(word) > 0;
 }
 
@@ -300,9 +314,12 @@ void read_input(const Section& s, Dialect& d) {
   s.known({"control", "power_on"});
   if (s.has("control")) {
     const std::string control = s.text("control");
-    if (control == "fanuc") d.input_control = cl::ControlFamily::fanuc;
-    else if (control == "linuxcnc") d.input_control = cl::ControlFamily::linuxcnc;
-    else throw s.wrong(s.node("control"), "control", "\"fanuc\" (also Haas) or \"linuxcnc\", got \"" + control + "\"");
+    if (control == "fanuc")
+      d.input_control = cl::ControlFamily::fanuc;
+    else if (control == "linuxcnc")
+      d.input_control = cl::ControlFamily::linuxcnc;
+    else
+      throw s.wrong(s.node("control"), "control", "\"fanuc\" (also Haas) or \"linuxcnc\", got \"" + control + "\"");
   }
   if (!s.has("power_on")) return;
   const std::string text = s.text("power_on");
@@ -315,7 +332,8 @@ void read_input(const Section& s, Dialect& d) {
     if (!word.empty() && !power_on_code(word))
       throw s.wrong(s.node("power_on"), "power_on",
                     "G codes of the modal state separated by blanks (G0 G1, G17-G19, G20 G21, G90 G91, G93-G95, "
-                    "G54-G59.3, G40 G49 G80), got \"" + word + "\"");
+                    "G54-G59.3, G40 G49 G80), got \"" +
+                        word + "\"");
     word.clear();
   }
   d.input_power_on = text;
@@ -328,13 +346,16 @@ void read_input(const Section& s, Dialect& d) {
 void read_stop(const Section& program, const char* key, std::vector<std::string>& blocks) {
   if (!program.has(key)) return;
   blocks = program.blocks(key, {});
-  if (blocks.empty()) throw program.wrong(program.node(key), key, "at least one block (a program that stops nowhere is not the CAM's program)");
+  if (blocks.empty())
+    throw program.wrong(program.node(key), key,
+                        "at least one block (a program that stops nowhere is not the CAM's program)");
 }
 
 Dialect parse_dialect(const std::string& text, const std::string& file) {
   const toml::table root = toml_input::parse_toml(text, file);
-  const std::vector<std::string> sections{"dialect", "program", "blocks",  "motion", "arcs",         "comments",
-                                          "tool",    "spindle", "coolant", "cycles", "dwell", "compensation", "tilted_plane", "input"};
+  const std::vector<std::string> sections{"dialect",  "program",      "blocks",       "motion",  "arcs",
+                                          "comments", "tool",         "spindle",      "coolant", "cycles",
+                                          "dwell",    "compensation", "tilted_plane", "input"};
   for (const auto& [key, node] : root)
     if (std::find(sections.begin(), sections.end(), std::string(key.str())) == sections.end()) {
       std::string list;
@@ -356,7 +377,7 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
     if (b != "{comments}" && b.find("{comments}") != std::string::npos)
       throw program.wrong(program.node("start"), "start", "\"{comments}\" as an entry of its own");
   d.program_end = program.blocks("end", {"{program}"});
-  read_stop(program, "stop", d.program_stop);  // optional: M0 when absent
+  read_stop(program, "stop", d.program_stop);                    // optional: M0 when absent
   read_stop(program, "optional_stop", d.program_optional_stop);  // optional: M1 when absent
 
   read_blocks(Section(file, root, "blocks"), d);
@@ -376,7 +397,8 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   d.rtcp_on = tool.blocks("rtcp_on", {"{tool}", "{length}"});
   d.rtcp_off = tool.blocks("rtcp_off", {"{tool}", "{length}"});
   auto takes_speed = [](const std::vector<std::string>& blocks) {
-    return std::any_of(blocks.begin(), blocks.end(), [](const std::string& b) { return b.find("{rpm}") != std::string::npos; });
+    return std::any_of(blocks.begin(), blocks.end(),
+                       [](const std::string& b) { return b.find("{rpm}") != std::string::npos; });
   };
   const bool call_takes_speed = takes_speed(d.tool_call);
   if (!d.tool_call_by_name.empty() && takes_speed(d.tool_call_by_name) != call_takes_speed)

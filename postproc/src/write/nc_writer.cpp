@@ -52,16 +52,20 @@ void NcWriter::comment(const std::string& text) {
   if (dialect_.numbers.comments) start_line();
   // every text from outside (file and machine names, PARTNO, PPRINT) arrives here: one sanitiser
   const std::string safe = nc_comment_text(text, dialect_);
-  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), "; {}", safe);
-  else fmt::format_to(std::back_inserter(buf_), "({})", safe);
+  if (dialect_.comments == Dialect::Comments::semicolon)
+    fmt::format_to(std::back_inserter(buf_), "; {}", safe);
+  else
+    fmt::format_to(std::back_inserter(buf_), "({})", safe);
   end_line();
 }
 
 void NcWriter::append_note(const std::string& note) {
   if (note.empty()) return;
   const std::string safe = nc_comment_text(note, dialect_);  // the sanitiser of comment()
-  if (dialect_.comments == Dialect::Comments::semicolon) fmt::format_to(std::back_inserter(buf_), " ; {}", safe);
-  else fmt::format_to(std::back_inserter(buf_), " ({})", safe);
+  if (dialect_.comments == Dialect::Comments::semicolon)
+    fmt::format_to(std::back_inserter(buf_), " ; {}", safe);
+  else
+    fmt::format_to(std::back_inserter(buf_), " ({})", safe);
 }
 
 void NcWriter::block(const std::string& words) {
@@ -129,7 +133,8 @@ void NcWriter::spindle_on(double rpm, bool counter_clockwise) {
     list = &w.after_call;
   }
   for (const auto& words : *list) {
-    const std::string b = with_rpm(with_value(words, "{turn}", counter_clockwise ? w.counter_clockwise : w.clockwise), speed);
+    const std::string b =
+        with_rpm(with_value(words, "{turn}", counter_clockwise ? w.counter_clockwise : w.clockwise), speed);
     if (!b.empty()) write_block(b);
   }
 }

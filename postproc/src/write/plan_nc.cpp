@@ -33,9 +33,15 @@ void blocks_with_note(NcWriter& w, const std::vector<std::string>& blocks, const
 void write_record(NcWriter& w, const Machine& m, const comp::PlanRecord& r) {
   using Kind = comp::PlanRecord::Kind;
   switch (r.kind) {
-    case Kind::comment: w.comment(r.note); return;
-    case Kind::stop: blocks_with_note(w, w.dialect().program_stop, r.note); return;
-    case Kind::dwell: blocks_with_note(w, dwell_blocks(w.dialect(), r.seconds), r.note); return;
+    case Kind::comment:
+      w.comment(r.note);
+      return;
+    case Kind::stop:
+      blocks_with_note(w, w.dialect().program_stop, r.note);
+      return;
+    case Kind::dwell:
+      blocks_with_note(w, dwell_blocks(w.dialect(), r.seconds), r.note);
+      return;
     case Kind::rapid: {
       NcMotion mo = motion_to(m, r.pose);
       mo.rapid = true;

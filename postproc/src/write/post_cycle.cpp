@@ -108,13 +108,17 @@ std::optional<NcCycle> native_hole(const cl::Cycle& c, const CycleWords& w, cons
     } else {
       const double q = std::min(c.first_peck_mm, c.peck_mm);
       word('Q', q, linear_decimals);
-      notice = fmt::format("first peck {:.4g} mm then {:.4g} mm: {} has one peck depth, pecks of {:.4g} mm written "
-                           "(never deeper than the CL data asks)", c.first_peck_mm, c.peck_mm, code, q);
+      notice = fmt::format(
+          "first peck {:.4g} mm then {:.4g} mm: {} has one peck depth, pecks of {:.4g} mm written "
+          "(never deeper than the CL data asks)",
+          c.first_peck_mm, c.peck_mm, code, q);
     }
   }
   if (c.dwell_s > 0.0) {
-    if (w.dwell_in_ms) word('P', std::round(c.dwell_s * 1000.0), 0);
-    else word('P', c.dwell_s, 3);
+    if (w.dwell_in_ms)
+      word('P', std::round(c.dwell_s * 1000.0), 0);
+    else
+      word('P', c.dwell_s, 3);
   }
   n.words = fmt::to_string(words);
   return n;

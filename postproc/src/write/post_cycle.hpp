@@ -15,9 +15,9 @@ namespace ncpost::detail {
 
 /// The points of one hole in W (mm), all on the tool axis through the GOTO point.
 struct HolePlanes {
-  ClPoint retract;  ///< where the tool starts and ends (RTRCTO, or the R plane)
-  ClPoint r_plane;  ///< where the feed starts (RAPTO / CLEAR)
-  ClPoint bottom;   ///< FEDTO / DEPTH
+  ClPoint retract;           ///< where the tool starts and ends (RTRCTO, or the R plane)
+  ClPoint r_plane;           ///< where the feed starts (RAPTO / CLEAR)
+  ClPoint bottom;            ///< FEDTO / DEPTH
   bool retract_to_r = true;  ///< no retract plane above the R plane: G99
 };
 HolePlanes hole_planes(const cl::Cycle& c, const ClPoint& hole);
@@ -25,9 +25,9 @@ HolePlanes hole_planes(const cl::Cycle& c, const ClPoint& hole);
 /// One explicit step of an expanded hole.
 struct HoleStep {
   enum class Kind { rapid, feed, dwell, spindle } kind = Kind::rapid;
-  ClPoint to;                 ///< rapid, feed
-  double feed_mm_min = 0.0;   ///< feed
-  double dwell_s = 0.0;       ///< dwell
+  ClPoint to;                                                                ///< rapid, feed
+  double feed_mm_min = 0.0;                                                  ///< feed
+  double dwell_s = 0.0;                                                      ///< dwell
   enum class Turn { clockwise, counter_clockwise, stop } turn = Turn::stop;  ///< spindle (the dialect's words)
 };
 

@@ -25,8 +25,10 @@ bool writable(const std::string& name) {
 
 std::string table_hint(const std::string& name, const ToolTable* table) {
   return table ? fmt::format("add \"{}\" = <number> to [tools] in {}", name, table->file)
-               : fmt::format("give its number in a tool table (--tool-table FILE with [tools] \"{}\" = <number>; "
-                             "docs/formats.md, Tool tables)", name);
+               : fmt::format(
+                     "give its number in a tool table (--tool-table FILE with [tools] \"{}\" = <number>; "
+                     "docs/formats.md, Tool tables)",
+                     name);
 }
 
 /// A named tool without a number: every word the dialect writes around the call must do without one.
@@ -35,8 +37,8 @@ void check_no_number_needed(const std::string& name, const Dialect& d, const Too
   for (const auto* list : {&d.tool_length_on, &d.rtcp_on, &d.rtcp_off})
     if (names(*list, "{tool}") || names(*list, "{length}"))
       throw InputError(where, fmt::format("tool \"{}\" is called by name, but the {} dialect's tool length or RTCP "
-                                          "words name its number ({{tool}}, {{length}}): {}", name, d.name,
-                                          table_hint(name, table)));
+                                          "words name its number ({{tool}}, {{length}}): {}",
+                                          name, d.name, table_hint(name, table)));
 }
 
 }  // namespace
@@ -70,8 +72,10 @@ ToolCall tool_call_of(const cl::ToolChange& t, const Dialect& d, const ToolTable
     return c;
   }
   if (!writable(t.name))
-    throw InputError(where, fmt::format("tool \"{}\": a name with a quote, a brace or a control character cannot be written in "
-                                        "the {} dialect's tool call", t.name, d.name));
+    throw InputError(
+        where, fmt::format("tool \"{}\": a name with a quote, a brace or a control character cannot be written in "
+                           "the {} dialect's tool call",
+                           t.name, d.name));
   if (!entry) check_no_number_needed(t.name, d, table, where);
   for (const std::string& b : d.tool_call_by_name) c.blocks.push_back(with_value(b, "{tool_name}", t.name));
   return c;

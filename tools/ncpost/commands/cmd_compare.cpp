@@ -35,7 +35,8 @@ std::vector<comp::Session> read_sessions(const Machine& m, const std::vector<std
     for (const std::string& p : paths) out.push_back(comp::session_from_model(m, comp::read_model_json(p, &m), p));
     return out;
   }
-  for (const comp::MeasurementSet& s : comp::read_measurement_files(paths, m)) out.push_back(comp::session_from_set(m, s));
+  for (const comp::MeasurementSet& s : comp::read_measurement_files(paths, m))
+    out.push_back(comp::session_from_set(m, s));
   return out;
 }
 
@@ -55,14 +56,16 @@ int run_compare(const CompareArgs& a) {
 
 void add_compare(CLI::App& app, Action& action) {
   auto a = std::make_shared<CompareArgs>();
-  CLI::App* sub = app.add_subcommand("compare", "Compare the same test before and after compensation, or over dated sessions");
+  CLI::App* sub =
+      app.add_subcommand("compare", "Compare the same test before and after compensation, or over dated sessions");
   sub->add_option("--machine", a->machine, "machine definition (TOML)")->required();
   sub->add_option("--tolerance", a->tolerance,
                   "tolerances per figure kind for the ISO 14253-1 verdicts, KIND=µm comma-separated (A B E M R G); "
                   "over the machine file's [tolerances]");
   sub->add_option("--html", a->html, "write the comparison with its trend plots as a self-contained HTML page");
-  sub->add_option("sessions", a->sessions, "BEFORE AFTER [MORE...]: data files (ballbar, laser positioning) or models "
-                                           "(*.json), in the order they were measured")
+  sub->add_option("sessions", a->sessions,
+                  "BEFORE AFTER [MORE...]: data files (ballbar, laser positioning) or models "
+                  "(*.json), in the order they were measured")
       ->required()
       ->expected(2, -1);
   sub->footer("Example: ncpost compare --machine machines/ac-trunnion.toml --html cmp.html before.csv after.csv");

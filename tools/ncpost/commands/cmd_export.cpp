@@ -43,14 +43,22 @@ constexpr ExportFormat kFormats[] = {
     {"siemens", "SINUMERIK LEC table ($AA_ENC_COMP) of one axis", false, true},
     {"isg", "ISG-kernel / Beckhoff TwinCAT CNC leadscrew error compensation list (kw.ssfk, bilateral) of one axis",
      false, true},
-    {"machine", "the machine file with the rotary axes' location errors applied (TRR-XY: the model's 30 parameters "
-                "as the machine's calibration)", true, false},
-    {"linuxcnc-trt", "the rotary axes' line offsets as LinuxCNC xyzac-trt / xyzbc-trt kinematics parameters (HAL "
-                     "setp lines; tilts listed as left out with their effect in um)", true, false},
-    {"siemens-cycle800", "the rotary axes' lines (offsets and tilts) as a SINUMERIK CYCLE800 swivel data record, "
-                         "kinematic type P ($TC_CARR)", true, false},
-    {"heidenhain", "the rotary axes' positions and orientations as the Heidenhain kinematics entries KinematicsOpt "
-                   "adjusts (a table to enter)", true, false},
+    {"machine",
+     "the machine file with the rotary axes' location errors applied (TRR-XY: the model's 30 parameters "
+     "as the machine's calibration)",
+     true, false},
+    {"linuxcnc-trt",
+     "the rotary axes' line offsets as LinuxCNC xyzac-trt / xyzbc-trt kinematics parameters (HAL "
+     "setp lines; tilts listed as left out with their effect in um)",
+     true, false},
+    {"siemens-cycle800",
+     "the rotary axes' lines (offsets and tilts) as a SINUMERIK CYCLE800 swivel data record, "
+     "kinematic type P ($TC_CARR)",
+     true, false},
+    {"heidenhain",
+     "the rotary axes' positions and orientations as the Heidenhain kinematics entries KinematicsOpt "
+     "adjusts (a table to enter)",
+     true, false},
 };
 
 const ExportFormat* find_format(const std::string& name) {
@@ -104,23 +112,29 @@ char chosen_axis(const ExportArgs& args, const comp::MachineModel& model) {
   }
   if (candidates.size() == 1) return candidates[0];
   if (candidates.empty())
-    throw InputError({args.model, 0, 0}, "the model has no positioning error and no reversal of any axis: there is "
-                                         "nothing for a one-axis table to hold (--format machine writes location errors)");
-  throw UsageError(fmt::format("--axis is needed: the model has tables for the axes {} (one file per axis)", candidates));
+    throw InputError({args.model, 0, 0},
+                     "the model has no positioning error and no reversal of any axis: there is "
+                     "nothing for a one-axis table to hold (--format machine writes location errors)");
+  throw UsageError(
+      fmt::format("--axis is needed: the model has tables for the axes {} (one file per axis)", candidates));
 }
 
 void print_left_out(const std::vector<std::string>& left_out, const std::string& what) {
   if (left_out.empty()) return;
-  fmt::print(stderr, "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
-                     "(also listed in the file):\n", what, left_out.size());
+  fmt::print(stderr,
+             "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
+             "(also listed in the file):\n",
+             what, left_out.size());
   for (const std::string& s : left_out) fmt::print(stderr, "  {}\n", s);
 }
 
 /// The terms a kinematics record leaves out, with their effect on the workpiece (kinematics_left_out.hpp).
 void print_left_out_effects(const comp::LeftOut& left, const std::string& what) {
   if (left.terms.empty()) return;
-  fmt::print(stderr, "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
-                     "(also listed in the file, with the poses):\n", what, left.terms.size());
+  fmt::print(stderr,
+             "ncpost: warning: {} cannot hold {} term(s) of the model; they are NOT compensated by it "
+             "(also listed in the file, with the poses):\n",
+             what, left.terms.size());
   for (const comp::LeftOutTerm& t : left.terms)
     fmt::print(stderr, "  {:<10} up to {:.3f} um at the workpiece  ({})\n", t.term, t.effect_um, t.why);
   fmt::print(stderr, "  all together: up to {:.3f} um at {} poses of the travel\n", left.together_um, left.poses);
@@ -135,8 +149,9 @@ void print_held_beyond(const comp::AxisExport& axis) {
 /// The file's own round trip (landing_check.hpp), in µm or µrad.
 void print_landing(const comp::AxisExport& axis, const comp::LandingCheck& check) {
   const double to_micro = axis.rotary ? 1e6 : 1e3;
-  fmt::print("round trip: the axis lands within {:.4f} {} of the commanded position at {} positions (model alone: {:.3f})\n",
-             check.with_file * to_micro, axis.rotary ? "µrad" : "µm", check.positions, check.model_only * to_micro);
+  fmt::print(
+      "round trip: the axis lands within {:.4f} {} of the commanded position at {} positions (model alone: {:.3f})\n",
+      check.with_file * to_micro, axis.rotary ? "µrad" : "µm", check.positions, check.model_only * to_micro);
 }
 
 }  // namespace
@@ -146,7 +161,8 @@ int export_serial(const ExportArgs& args) {
   if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
   check_files({{"-o", args.output}}, inputs);
   const ExportFormat* format = find_format(args.format);
-  if (format == nullptr) throw UsageError(fmt::format("--format: expected one of {}, got '{}'", format_names(), args.format));
+  if (format == nullptr)
+    throw UsageError(fmt::format("--format: expected one of {}, got '{}'", format_names(), args.format));
   if (!format->one_axis && !args.axis.empty())
     throw UsageError(fmt::format("--axis {}: --format {} writes every rotary axis of the machine, not one axis's table",
                                  args.axis, args.format));
@@ -158,11 +174,15 @@ int export_serial(const ExportArgs& args) {
   } else {
     file = comp::read_model_json(args.model, nullptr);
     if (format->needs_machine)
-      throw UsageError(fmt::format("--format {} needs --machine M.toml: the machine whose rotary axes the model "
-                                   "locates", args.format));
+      throw UsageError(
+          fmt::format("--format {} needs --machine M.toml: the machine whose rotary axes the model "
+                      "locates",
+                      args.format));
     if (!file.axes.empty() && file.axes != "XYZ")
-      throw UsageError(fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
-                                   "need their directions)", file.axes));
+      throw UsageError(
+          fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
+                      "need their directions)",
+                      file.axes));
     machine = three_axis_machine(file.machine.empty() ? "three-axis" : file.machine);
     file = read_model_for(args.model, machine, args.force);  // every name checked against X Y Z
   }
@@ -261,8 +281,9 @@ void add_export(CLI::App& app, Action& action) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* sub = app.add_subcommand("export", "Export a model as compensation data for the control");
   sub->add_option("--format", args->format, format_help())->required();
-  sub->add_option("--axis", args->axis, "the axis of a one-axis table (linuxcnc, siemens, isg); needed when the model has "
-                                        "tables for more than one");
+  sub->add_option("--axis", args->axis,
+                  "the axis of a one-axis table (linuxcnc, siemens, isg); needed when the model has "
+                  "tables for more than one");
   sub->add_option("--machine", args->machine,
                   "machine definition (TOML); needed for rotary axes and --format machine, linuxcnc-trt, "
                   "siemens-cycle800, heidenhain");

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// ncpost identify: fit error parameters to measurements (README "Worked example" and docs/metrology.md "Closing the loop").
+// ncpost identify: fit error parameters to measurements (README "Worked example" and docs/metrology.md "Closing the
+// loop").
 #include <fmt/format.h>
 
 #include <unistd.h>
@@ -69,7 +70,8 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
   if (isatty(fileno(stderr))) d.progress = [](const std::string& s) { fmt::print(stderr, "diagnose: {}\n", s); };
   const comp::DiagnoseResult r = comp::diagnose(m, sets, names, d);
   const comp::ToolTipComparison tt = comp::within_measured_region(
-      comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty, r.final_fit.covariance),
+      comp::compare_tool_tip(m, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty,
+                             r.final_fit.covariance),
       m, sets, r.final_fit.parameters, r.basic.parameters, r.final_fit.uncertainty, r.final_fit.covariance);
   fmt::print("{}", comp::text_report(m, sets, r.final_fit));
   fmt::print("{}", comp::text_diagnose_report(m, sets, r, tt));
@@ -151,9 +153,10 @@ void add_identify(CLI::App& app, Action& action) {
   sub->add_option("--pass-tolerance-um", a->pass_tolerance_um,
                   "tolerance (µm) for the report's pass/fail verdicts: largest deviation per file, ISO 230-4 G")
       ->check(finite_in(0.0, 10000.0, "µm", Bound::open));
-  sub->add_option("--tolerance", a->tolerance,
-                  "tolerances per figure kind for the report's ISO 14253-1 verdicts, KIND=µm comma-separated: ISO 230-2 "
-                  "A, B, E, M, R and ISO 230-4 G, e.g. G=10,A=8,R=3 (over the machine file's [tolerances])");
+  sub->add_option(
+      "--tolerance", a->tolerance,
+      "tolerances per figure kind for the report's ISO 14253-1 verdicts, KIND=µm comma-separated: ISO 230-2 "
+      "A, B, E, M, R and ISO 230-4 G, e.g. G=10,A=8,R=3 (over the machine file's [tolerances])");
   std::vector<std::string> control_names;
   for (const comp::ControlFormatInfo& f : comp::control_formats()) control_names.push_back(f.name);
   sub->add_option("--control", a->control,
@@ -167,13 +170,15 @@ void add_identify(CLI::App& app, Action& action) {
     action = [a] {
       std::vector<NamedPath> inputs{{"--machine", a->machine}};
       for (const auto& f : a->data) inputs.push_back({"data", f});
-      check_files({{"-o", a->output}, {"--report", a->report},
+      check_files({{"-o", a->output},
+                   {"--report", a->report},
                    {"--report (its summary)", a->report.empty() ? std::string() : comp::summary_path(a->report)}},
                   inputs);
       const IdentifyOutput out = machine_kind(a->machine).identify(*a);
       write_file_atomically(a->output, out.model_json);
       if (!a->report.empty()) write_file_atomically(a->report, out.report_html);
-      if (!a->report.empty() && !out.summary_html.empty()) write_file_atomically(comp::summary_path(a->report), out.summary_html);
+      if (!a->report.empty() && !out.summary_html.empty())
+        write_file_atomically(comp::summary_path(a->report), out.summary_html);
       fmt::print("{}", out.closing);
       return 0;
     };

@@ -99,8 +99,9 @@ PlanOutput plan_serial(const PlanArgs& given) {
   }
   std::string program_text;  // made before anything is written: a plan that cannot be run writes nothing
   try {
-    const comp::PlanProgram records = a.test == "laser" ? comp::laser_program(m, plans, a.laser)
-                                                         : comp::plan_program(m, plans, "ncpost plan " + a.test, program);
+    const comp::PlanProgram records = a.test == "laser"
+                                          ? comp::laser_program(m, plans, a.laser)
+                                          : comp::plan_program(m, plans, "ncpost plan " + a.test, program);
     program_text = plan_program_text(m, records, dialect);
   } catch (const std::invalid_argument& e) {
     throw Infeasible(fmt::format("plan {} on machine '{}': {}", a.test, m.name, e.what()));
@@ -119,8 +120,7 @@ void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
   sub->add_option("test", a->test, "ballbar-4axis | sphere | bc-head | laser")
       ->required()
       ->check(CLI::IsMember({"ballbar-4axis", "sphere", "bc-head", "laser"}));
-  sub->add_option("-o,--output", a->output,
-                  "output: PLAN.csv (one set) or PLAN_<set>.csv (several), and PLAN.nc")
+  sub->add_option("-o,--output", a->output, "output: PLAN.csv (one set) or PLAN_<set>.csv (several), and PLAN.nc")
       ->required();
   sub->add_option("--height", a->heights, "ballbar-4axis: height of the balls above the tilt axis (mm), repeatable")
       ->take_all()
@@ -140,21 +140,27 @@ void add_plan_options(CLI::App* sub, const std::shared_ptr<PlanArgs>& a) {
       ->check(finite_in(0.0, 1000.0, "mm", Bound::open));
   sub->add_option("--step", a->step, "sphere: step of the swept axis (deg, default 30)")
       ->check(finite_in(0.0, 360.0, "deg", Bound::open));
-  sub->add_option("--tool-length", a->tool_lengths, "bc-head: tool lengths (mm), repeatable (default 100 and 250); laser: reflector holder length (default 100)")
+  sub->add_option(
+         "--tool-length", a->tool_lengths,
+         "bc-head: tool lengths (mm), repeatable (default 100 and 250); laser: reflector holder length (default 100)")
       ->take_all()
       ->check(finite_in(0.0, 2000.0, "mm"));
   sub->add_flag("--seed-directions", a->seed_directions,
-                "bc-head: read the B test along X and Z only, as the published BC-head test (the B-line tilts are then not seen)");
+                "bc-head: read the B test along X and Z only, as the published BC-head test (the B-line tilts are then "
+                "not seen)");
   sub->add_option("--axes", a->laser.axes, "laser: axes to measure (default XYZ)");
   sub->add_option("--target-step", a->laser.step_mm, "laser: target spacing (mm, default 50)")
       ->check(finite_in(0.0, 10000.0, "mm", Bound::open));
   sub->add_option("--runs", a->laser.runs, "laser: bidirectional runs per line (default 5, ISO 230-2)")
       ->check(CLI::Range(1, 100));
-  sub->add_option("--lines", a->laser.lines, "laser: parallel lines per axis, 1..3 (default 3)")->check(CLI::Range(1, 3));
-  sub->add_flag("--positioning-only", [a](std::int64_t) { a->laser.straightness = false; },
-                "laser: positioning only, no straightness sets");
-  sub->add_option("--reflector-offset", a->laser.reflector_offset_mm,
-                  "laser: reflector offset from the spindle where a line cannot be reached by an axis (mm, default 100)")
+  sub->add_option("--lines", a->laser.lines, "laser: parallel lines per axis, 1..3 (default 3)")
+      ->check(CLI::Range(1, 3));
+  sub->add_flag(
+      "--positioning-only", [a](std::int64_t) { a->laser.straightness = false; },
+      "laser: positioning only, no straightness sets");
+  sub->add_option(
+         "--reflector-offset", a->laser.reflector_offset_mm,
+         "laser: reflector offset from the spindle where a line cannot be reached by an axis (mm, default 100)")
       ->check(finite_in(-5000.0, 5000.0, "mm"));
   sub->add_option("--margin", a->laser.margin_mm, "laser: kept clear of each travel end (mm, default 0)")
       ->check(finite_in(0.0, 5000.0, "mm"));

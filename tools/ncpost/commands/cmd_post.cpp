@@ -46,9 +46,9 @@ constexpr double kMaxRetractMm = 2000.0;
 struct PostArgs {
   JobOptions job;
   std::string model;
-  std::string tolerance;                ///< --tolerance as given: MM, "none", or "" (the default)
-  std::optional<double> tolerance_mm;   ///< resolved from `tolerance`: nullopt = none
-  bool force_model = false;  // --force: model checks as warnings
+  std::string tolerance;               ///< --tolerance as given: MM, "none", or "" (the default)
+  std::optional<double> tolerance_mm;  ///< resolved from `tolerance`: nullopt = none
+  bool force_model = false;            // --force: model checks as warnings
   std::string nonlinear = "adaptive";
   bool rtcp = false;
   bool tilted_plane = false;
@@ -73,18 +73,19 @@ std::optional<double> tolerance_of(const std::string& text) {
   return std::stod(text);  // checked by the option's validator
 }
 
-
 /// Refuses combinations of options that cannot make a program, before anything is read.
 void check_post_args(const PostArgs& given) {
   // every file checked before anything is computed: no output over an input, only writable places
-  check_files({{"-o", given.output}, {"--report", given.report}},
-              {{"INPUT", given.input}, {"--machine", given.job.machine}, {"--model", given.model},
-               {"--verify-on", given.verify_on}});
+  check_files({{"-o", given.output}, {"--report", given.report}}, {{"INPUT", given.input},
+                                                                   {"--machine", given.job.machine},
+                                                                   {"--model", given.model},
+                                                                   {"--verify-on", given.verify_on}});
   if (given.tilted_plane && given.rtcp)
     throw UsageError("--tilted-plane: not with --rtcp (in a tilted plane the control carries the tool tip itself)");
   if (given.tilted_plane && !given.model.empty())
-    throw UsageError("--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
-                     "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
+    throw UsageError(
+        "--tilted-plane: not with --model (the control maps the plane's coordinates on its nominal "
+        "kinematics, so the compensation cannot be carried); post --model without --tilted-plane");
 }
 
 /// The post request of the arguments: dialect, input, options, and the machine and models loaded.
@@ -109,11 +110,12 @@ PostRequest post_request_of(const PostArgs& a) {
   r.nonlinear = *nonlinear::method_named(a.nonlinear);
   r.rtcp = a.rtcp;
   r.tilted_plane = a.tilted_plane;
-  r.feed_mode = a.feed_mode == "g93" ? PostOptions::FeedMode::inverse_time
-              : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
-                                     : PostOptions::FeedMode::automatic;
+  r.feed_mode = a.feed_mode == "g93"   ? PostOptions::FeedMode::inverse_time
+                : a.feed_mode == "g94" ? PostOptions::FeedMode::per_minute
+                                       : PostOptions::FeedMode::automatic;
   r.retract_mm = a.retract_mm;
-  r.branch_choice = a.branch_plan == "greedy" ? PostOptions::BranchChoice::greedy : PostOptions::BranchChoice::lookahead;
+  r.branch_choice =
+      a.branch_plan == "greedy" ? PostOptions::BranchChoice::greedy : PostOptions::BranchChoice::lookahead;
   r.threads = a.threads;
   r.verify = a.verify || !a.report.empty();
   machine_kind(a.job.machine).load_post({a.job, a.model, a.verify_on, a.force_model}, r);
@@ -140,7 +142,8 @@ void watch_progress(PostRequest& r, const std::string& output) {
 void print_post_result(const PostArgs& a, const PostRequest& r, const PostResult& result) {
   const PostSummary& summary = result.summary;
   if (a.output != "-")
-    fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out, a.output);
+    fmt::print(stderr, "ncpost post: {} CL motions -> {} blocks in {}\n", summary.motions_in, summary.blocks_out,
+               a.output);
   if (r.verify || r.machine->has_verify_on()) {
     if (a.rtcp)
       fmt::print(stderr, "verify: with --rtcp the control does the kinematics; nothing re-executed\n");
@@ -202,12 +205,14 @@ void add_post(CLI::App& app, Action& action) {
               if (used == v.size() && x > 0 && std::isfinite(x) && x <= kMaxToleranceMm) return {};
             } catch (const std::exception&) {
             }
-            return fmt::format("expected a finite number above 0 and at most {} (mm), got '{}' ('none' turns the "
-                               "linearization off)",
-                               kMaxToleranceMm, v);
+            return fmt::format(
+                "expected a finite number above 0 and at most {} (mm), got '{}' ('none' turns the "
+                "linearization off)",
+                kMaxToleranceMm, v);
           },
           ""));
-  sub->add_option("--nonlinear", a->nonlinear, "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
+  sub->add_option("--nonlinear", a->nonlinear,
+                  "Nonlinear-error compensation: adaptive (default) or harmonic (README \"Nonlinear error\")")
       ->check(CLI::IsMember({"adaptive", "harmonic"}));
   sub->add_flag("--rtcp", a->rtcp, "Write tool-tip coordinates with rotary angles for a control with RTCP/TCPM");
   sub->add_flag("--tilted-plane", a->tilted_plane,
@@ -241,15 +246,18 @@ void add_post(CLI::App& app, Action& action) {
                   "changes of solution (retracts), then the least rotary travel, and leaves runs without a forced "
                   "change as greedy writes them")
       ->check(CLI::IsMember({"lookahead", "greedy"}));
-  sub->add_option("--verify-on", a->verify_on,
-                  "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
+  sub->add_option(
+      "--verify-on", a->verify_on,
+      "Re-execute the program on the machine of this model JSON (e.g. a simulated truth) instead of --model's");
   sub->add_option("--report", a->report, "Write an HTML report of the error before and after (implies --verify)");
   sub->add_option("--threads", a->threads,
                   "1: everything on one thread; 2 (default): the CL records are read and their motions solved "
                   "ahead on other threads (models with reversal: read only). The program is the same either way")
       ->check(CLI::Range(1, 2));
   sub->add_option("-o,--output", a->output, "Output NC program (default: standard output)");
-  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")->required()->check(existing_input());
+  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")
+      ->required()
+      ->check(existing_input());
   sub->callback([a, &action] { action = [a] { return run_post(*a); }; });
 }
 

@@ -32,7 +32,7 @@ class SerialPreviewMachine final : public PreviewMachine {
       model_ = std::make_unique<comp::MachineModel>(job_.machine, file.parameters);
       solver_ = std::make_unique<preview::ModelMotionSolver>(*model_, job_.setup);
       evaluator_ = std::make_unique<preview::ModelEvaluator<comp::ErrorFunctor<double>>>(model_->machine(), job_.setup,
-                                                                                          model_->errors());
+                                                                                         model_->errors());
     } else {
       solver_ = std::make_unique<NominalSolver>(job_.machine, job_.setup);
       evaluator_ = std::make_unique<preview::ModelEvaluator<NominalErrors>>(job_.machine, job_.setup);
@@ -122,10 +122,11 @@ int run_preview(const PreviewArgs& given) {
   std::string worst;
   if (!summary.worst().empty())
     worst = fmt::format(" (block {}, CL line {})", summary.worst().front().block, summary.worst().front().line);
-  fmt::print("{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm{}, mean {:.4f} mm, largest "
-             "orientation error {:.4f} deg; blocks over 5 µm: {}\n",
-             stats.motions, summary.blocks(), summary.max_error_mm(), worst, summary.mean_error_mm(),
-             rad_to_deg(summary.max_orientation_rad()), summary.blocks_over(0.005));
+  fmt::print(
+      "{} CL motions, {} blocks previewed; largest nonlinear error {:.4f} mm{}, mean {:.4f} mm, largest "
+      "orientation error {:.4f} deg; blocks over 5 µm: {}\n",
+      stats.motions, summary.blocks(), summary.max_error_mm(), worst, summary.mean_error_mm(),
+      rad_to_deg(summary.max_orientation_rad()), summary.blocks_over(0.005));
   return 0;
 }
 
@@ -133,13 +134,16 @@ int run_preview(const PreviewArgs& given) {
 
 void add_preview(CLI::App& app, Action& action) {
   auto a = std::make_shared<PreviewArgs>();
-  CLI::App* sub = app.add_subcommand("preview", "Preview the nonlinear error of every block (exact and harmonic model)");
+  CLI::App* sub =
+      app.add_subcommand("preview", "Preview the nonlinear error of every block (exact and harmonic model)");
   add_job_options(*sub, a->job);
   sub->add_option("--model", a->model, "Error model JSON: preview on the actual machine");
   add_model_force_option(*sub, a->force_model);
   sub->add_option("--csv", a->csv, "Write one row per block: block,line,max_error_mm,at_t,harmonic_mm,...");
   sub->add_option("--html", a->html, "Write a self-contained HTML report (inline SVG)");
-  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")->required()->check(existing_input());
+  sub->add_option("INPUT", a->input, "APT CL data or G-code; - reads standard input")
+      ->required()
+      ->check(existing_input());
   sub->callback([a, &action] { action = [a] { return run_preview(*a); }; });
 }
 

@@ -27,8 +27,10 @@ struct SensitivityArgs {
 int run_sensitivity(const SensitivityArgs& a) {
   check_files({{"--json", a.json}, {"--html", a.html}}, {{"--machine", a.machine}});
   if (const std::string kind = machine_kind(a.machine).name; kind != "trr-xy")
-    throw UsageError(fmt::format("--machine {}: sensitivity maps are defined for the TRR-XY machine (kind \"trr-xy\"), "
-                                 "this file's kind is \"{}\"", a.machine, kind));
+    throw UsageError(
+        fmt::format("--machine {}: sensitivity maps are defined for the TRR-XY machine (kind \"trr-xy\"), "
+                    "this file's kind is \"{}\"",
+                    a.machine, kind));
   const trr::Machine m = load_trr_xy_machine(a.machine);
   trr::SensitivityOptions o;
   const auto divides = [](double step, double whole) {

@@ -41,7 +41,8 @@ void add_simulate(CLI::App& app, Action& action) {
   sub->add_option("plan", args->plan, "plan CSV (a measurement CSV; value columns absent or ignored)")->required();
   sub->callback([&action, args] {
     action = [args] {
-      check_files({{"-o", args->output}}, {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
+      check_files({{"-o", args->output}},
+                  {{"--machine", args->machine}, {"--model", args->model}, {"plan", args->plan}});
       const SimulateOutput out = machine_kind(args->machine).simulate(*args);
       write_file_atomically(args->output, out.csv);
       fmt::print("{} -> {}\n", out.summary, args->output);

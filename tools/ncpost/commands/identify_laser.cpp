@@ -15,8 +15,9 @@ IdentifyOutput identify_laser(const Machine& m, const std::vector<comp::Measurem
                               const std::string& report, bool options_ignored,
                               const comp::IdentifyReportInputs& report_inputs) {
   if (options_ignored)
-    fmt::print("notice: laser data: --params, --fixed and --loss do not apply (the model is the error tables of the measured "
-               "axes, squareness and reversal)\n");
+    fmt::print(
+        "notice: laser data: --params, --fixed and --loss do not apply (the model is the error tables of the measured "
+        "axes, squareness and reversal)\n");
   const comp::LaserIdentifyResult r = comp::identify_laser(m, sets);
   fmt::print("{}", comp::laser_text_report(m, r));
   if (!r.ok) throw Infeasible("laser identification: " + r.message);

@@ -102,9 +102,9 @@ struct IdentifyArgs {
 
 struct IdentifyOutput {
   std::string model_json;
-  std::string report_html;  ///< written to --report when given
-  std::string summary_html; ///< its one-page summary, written beside it (summary_page.hpp)
-  std::string closing;      ///< printed once the files are written
+  std::string report_html;   ///< written to --report when given
+  std::string summary_html;  ///< its one-page summary, written beside it (summary_page.hpp)
+  std::string closing;       ///< printed once the files are written
 };
 
 IdentifyOutput identify_serial(const IdentifyArgs& args);

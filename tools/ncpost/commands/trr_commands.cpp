@@ -32,9 +32,14 @@ trr::Kinematics kinematics_of(const trr::Machine& m, const trr::Errors& e) {
 class TrrPreviewMachine final : public PreviewMachine {
  public:
   TrrPreviewMachine(trr::Machine machine, const trr::Errors& errors, const Vec3d& origin_mm, const JobOptions& job)
-      : machine_(std::move(machine)), nominal_(kinematics_of(machine_, {})), actual_(kinematics_of(machine_, errors)),
-        reading_(nominal_, nominal_, origin_mm), solver_(actual_, actual_, origin_mm), evaluator_(actual_, origin_mm),
-        kind_(input_kind_named(job.input_kind)), reader_(reader_options(job)) {}
+      : machine_(std::move(machine)),
+        nominal_(kinematics_of(machine_, {})),
+        actual_(kinematics_of(machine_, errors)),
+        reading_(nominal_, nominal_, origin_mm),
+        solver_(actual_, actual_, origin_mm),
+        evaluator_(actual_, origin_mm),
+        kind_(input_kind_named(job.input_kind)),
+        reader_(reader_options(job)) {}
 
   const std::string& name() const override { return machine_.name; }
   const MotionSolver& solver() const override { return solver_; }
@@ -80,8 +85,9 @@ std::unique_ptr<PreviewMachine> load_trr_xy_preview(const PreviewArgs& a) {
 void load_trr_xy_post(const PostJobArgs& a, PostRequest& r) {
   if (r.rtcp) throw UsageError("--rtcp: the TRR-XY machine has no RTCP dialect; it is posted in X Y U V W");
   if (r.tilted_plane)
-    throw UsageError("--tilted-plane: the TRR-XY machine has no tilted work plane (its control has no rotary axes to "
-                     "turn a plane with, only the table X Y and the sliders U V W); post without --tilted-plane");
+    throw UsageError(
+        "--tilted-plane: the TRR-XY machine has no tilted work plane (its control has no rotary axes to "
+        "turn a plane with, only the table X Y and the sliders U V W); post without --tilted-plane");
   refuse_serial_options(a.job);
   trr::Machine machine = load_trr_xy_machine(a.job.machine);
   std::optional<trr::Errors> model, verify_on;

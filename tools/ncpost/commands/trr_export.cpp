@@ -25,10 +25,13 @@ int export_trr_xy(const ExportArgs& args) {
     throw UsageError(fmt::format(
         "--format {}: a TRR-XY model holds the 30 geometric parameters of the parallel head (docs/trr-xy.md), no "
         "per-axis error table for a {} file; it supports --format machine (with --machine, the TRR-XY machine file "
-        "to correct)", args.format, args.format));
+        "to correct)",
+        args.format, args.format));
   if (args.format != "machine")
-    throw UsageError(fmt::format("--format: expected machine for a TRR-XY model (the machine file with the model as "
-                                 "its calibration), got '{}'", args.format));
+    throw UsageError(
+        fmt::format("--format: expected machine for a TRR-XY model (the machine file with the model as "
+                    "its calibration), got '{}'",
+                    args.format));
   if (!args.axis.empty())
     throw UsageError("--axis: a TRR-XY machine file takes the whole model, not one axis (leave out --axis)");
   if (args.machine.empty())
@@ -44,7 +47,8 @@ int export_trr_xy(const ExportArgs& args) {
   const std::vector<std::string> notes{
       fmt::format("ncpost {} export --format machine: '{}' with the model '{}' applied", ncpost::version(),
                   machine.name, args.model),
-      fmt::format("(from '{}') as its calibration ([trr_xy.calibration], the machine's own plus the model's", args.machine),
+      fmt::format("(from '{}') as its calibration ([trr_xy.calibration], the machine's own plus the model's",
+                  args.machine),
       "parameters): read it NOMINALLY (post without --model); the name differs from the original's so that this",
       "model is not applied a second time.",
       fmt::format("Applied: {}", fmt::join(out.applied, ", ")),

@@ -96,13 +96,15 @@ SimulateOutput simulate_trr_xy(const SimulateArgs& a) {
     if (a.noise_um > 0)
       for (int c = 0; c < 3; ++c) r.deviation_mm[c] += noise(rng);
   }
-  return {trr::format_probing_csv(data, false),
-          fmt::format("simulated {} rows of sphere probing on '{}' (noise {} µm)", data.rows.size(), m.name, a.noise_um)};
+  return {trr::format_probing_csv(data, false), fmt::format("simulated {} rows of sphere probing on '{}' (noise {} µm)",
+                                                            data.rows.size(), m.name, a.noise_um)};
 }
 
 IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
-  const std::string serial_only = !a.params.empty() ? "--params" : !a.fixed.empty() ? "--fixed"
-                                : !a.report.empty() ? "--report" : "";
+  const std::string serial_only = !a.params.empty()   ? "--params"
+                                  : !a.fixed.empty()  ? "--fixed"
+                                  : !a.report.empty() ? "--report"
+                                                      : "";
   if (!serial_only.empty())
     throw UsageError(
         fmt::format("{}: not available for the TRR-XY machine (its 30 parameters are always fitted)", serial_only));
@@ -148,7 +150,9 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
     for (const auto& [name, w] : dir) s += fmt::format(" {}{:+.3f}", name, w);
     fmt::print("  {}\n", s);
   }
-  return {.model_json = comp::format_model_json(file), .report_html = {}, .summary_html = {},
+  return {.model_json = comp::format_model_json(file),
+          .report_html = {},
+          .summary_html = {},
           .closing = fmt::format("model -> {}\n", a.output)};
 }
 

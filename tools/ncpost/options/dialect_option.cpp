@@ -13,7 +13,8 @@ CLI::Validator dialect_name_or_path() {
           if (v == n) return {};
         std::string list;
         for (const auto& n : builtin_dialect_names()) list += (list.empty() ? "" : ", ") + n;
-        return "'" + v + "': expected a built-in dialect (" + list + ") or the path of a dialect file (with a "
+        return "'" + v + "': expected a built-in dialect (" + list +
+               ") or the path of a dialect file (with a "
                "'/' or ending in .toml)";
       },
       "");

@@ -28,8 +28,7 @@ InputFile::InputFile(const std::string& given) : path_(given), name_(given == "-
     from = STDIN_FILENO;
   } else {
     struct stat st {};
-    if (::stat(given.c_str(), &st) != 0)
-      throw FileError("cannot read '" + given + "': " + std::strerror(errno));
+    if (::stat(given.c_str(), &st) != 0) throw FileError("cannot read '" + given + "': " + std::strerror(errno));
     if (S_ISDIR(st.st_mode)) throw FileError("cannot read '" + given + "': it is a folder, give a file");
     if (S_ISREG(st.st_mode)) return;  // read in place
     from = ::open(given.c_str(), O_RDONLY | O_CLOEXEC);

@@ -22,7 +22,11 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
   sub.add_option("--workpiece-origin", o.workpiece_origin, "Origin of the workpiece frame W in M at home: X,Y,Z (mm)");
   sub.add_option("--tool-length", o.tool_length_mm, "Tool length (mm): places head pivots")
       ->check(finite_in(0.0, kMaxToolLengthMm, "mm"));
-  sub.add_option("--units", o.units, "Units of a CL file or G-code program that does not say (mm or inch); a G-code program without G20/G21 that speaks inches, or an APT file without UNITS with FEDRAT/IPM (NX inch parts), is refused until this says")->check(CLI::IsMember({"mm", "inch"}));
+  sub.add_option(
+         "--units", o.units,
+         "Units of a CL file or G-code program that does not say (mm or inch); a G-code program without G20/G21 that "
+         "speaks inches, or an APT file without UNITS with FEDRAT/IPM (NX inch parts), is refused until this says")
+      ->check(CLI::IsMember({"mm", "inch"}));
   sub.add_option("--input-kind", o.input_kind,
                  "cl, machine (machine-axis G-code), rtcp (tool-tip G-code), klartext (Heidenhain conversational), "
                  "sinumerik (Siemens 840D sl: DEF, R parameters, program flow, frames, CYCLE800, TRAORI), "
@@ -80,11 +84,11 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.units_given = !o.units.empty();
   ro.allow_unterminated = o.allow_unterminated;
   ro.msys = o.msys == "apply" ? cl::ReaderOptions::Msys::apply : cl::ReaderOptions::Msys::ignore;
-  ro.integer_dwell = o.dwell_p == "ms" ? cl::IntegerDwell::milliseconds
-                   : o.dwell_p == "s"  ? cl::IntegerDwell::seconds
-                                       : cl::IntegerDwell::automatic;
+  ro.integer_dwell = o.dwell_p == "ms"  ? cl::IntegerDwell::milliseconds
+                     : o.dwell_p == "s" ? cl::IntegerDwell::seconds
+                                        : cl::IntegerDwell::automatic;
   ro.arc_centre = o.arc_centre == "centre-to-start" ? cl::ArcCentre::centre_to_start
-                : o.arc_centre == "absolute"        ? cl::ArcCentre::absolute
+                  : o.arc_centre == "absolute"      ? cl::ArcCentre::absolute
                                                     : cl::ArcCentre::incremental;
   if (!o.work_offsets.empty())
     ro.work_offsets = std::make_shared<const gcode::WorkOffsetTable>(gcode::load_work_offsets(o.work_offsets));

@@ -14,15 +14,15 @@ namespace ncpost::cli {
 
 struct JobOptions {
   std::string machine;
-  std::string workpiece_origin;   ///< "X,Y,Z" mm
+  std::string workpiece_origin;  ///< "X,Y,Z" mm
   double tool_length_mm = 0.0;
-  std::string units;              ///< "", "mm" or "inch": units of a CL file that does not say
+  std::string units;  ///< "", "mm" or "inch": units of a CL file that does not say
   std::string input_kind = "auto";
-  bool allow_unterminated = false;  ///< accept a CL file that ends without FINI / END / END-OF-PATH
-  std::string msys = "ignore";      ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
-  std::string dwell_p = "auto";     ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
+  bool allow_unterminated = false;         ///< accept a CL file that ends without FINI / END / END-OF-PATH
+  std::string msys = "ignore";             ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
+  std::string dwell_p = "auto";            ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
   std::string arc_centre = "incremental";  ///< G-code I J K: "incremental", "centre-to-start" or "absolute"
-  std::string work_offsets;       ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
+  std::string work_offsets;                ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
 };
 
 struct LoadedJob {

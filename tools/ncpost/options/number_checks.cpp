@@ -15,8 +15,7 @@ namespace {
 
 std::string range_text(double lo, double hi, const std::string& unit, Bound lower) {
   return fmt::format("a finite number {} {:g} {} {:g}{}", lower == Bound::open ? "above" : "from", lo,
-                     lower == Bound::open ? "and at most" : "to", hi,
-                     unit.empty() ? "" : " (" + unit + ")");
+                     lower == Bound::open ? "and at most" : "to", hi, unit.empty() ? "" : " (" + unit + ")");
 }
 
 /// "" when `text` is such a number, else what is wrong.

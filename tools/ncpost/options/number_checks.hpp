@@ -17,7 +17,7 @@ CLI::Validator finite_in(double lo, double hi, const std::string& unit, Bound lo
 
 /// The same check for values parsed by hand (a list item, NAME=VALUE): the number, or
 /// UsageError naming `what`.
-double finite_number(const std::string& text, const std::string& what, double lo, double hi,
-                     const std::string& unit, Bound lower = Bound::closed);
+double finite_number(const std::string& text, const std::string& what, double lo, double hi, const std::string& unit,
+                     Bound lower = Bound::closed);
 
 }  // namespace ncpost::cli

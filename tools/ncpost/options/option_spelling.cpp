@@ -56,7 +56,8 @@ std::string misspelt_option(const CLI::App& app, int argc, const char* const* ar
         if (s->get_name() == arg) sub = s;
       if (sub) continue;
       std::vector<std::string> names;
-      for (const CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(s->get_name());
+      for (const CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; }))
+        names.push_back(s->get_name());
       return fmt::format("unknown subcommand '{}'{}", arg, suggestion(arg, names));
     }
     if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;

@@ -14,11 +14,11 @@ std::size_t printable_utf8(std::string_view s, std::size_t i) {
   if (n == 0 || i + n > s.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
     if ((b(k) & 0xC0) != 0x80) return 0;
-  if (c == 0xC2 && b(1) < 0xA0) return 0;  // U+0080..U+009F: C1 controls
-  if (c == 0xE0 && b(1) < 0xA0) return 0;  // overlong
-  if (c == 0xED && b(1) >= 0xA0) return 0; // surrogates
-  if (c == 0xF0 && b(1) < 0x90) return 0;  // overlong
-  if (c == 0xF4 && b(1) >= 0x90) return 0; // beyond U+10FFFF
+  if (c == 0xC2 && b(1) < 0xA0) return 0;   // U+0080..U+009F: C1 controls
+  if (c == 0xE0 && b(1) < 0xA0) return 0;   // overlong
+  if (c == 0xED && b(1) >= 0xA0) return 0;  // surrogates
+  if (c == 0xF0 && b(1) < 0x90) return 0;   // overlong
+  if (c == 0xF4 && b(1) >= 0x90) return 0;  // beyond U+10FFFF
   return n;
 }
 

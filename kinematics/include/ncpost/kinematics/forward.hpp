@@ -25,7 +25,8 @@
 namespace ncpost {
 
 /// The error terms of one axis at one command, in M axes at home (mm, rad).
-template <class S> struct AxisErrorTerms {
+template <class S>
+struct AxisErrorTerms {
   Vec3<S> location_offset_mm = Vec3<S>::Zero();  ///< rotary: δ_j, offset of the axis line
   Vec3<S> location_tilt_rad = Vec3<S>::Zero();   ///< rotary: ε_j, tilt (+ zero error along the axis)
   Vec3<S> direction_offset = Vec3<S>::Zero();    ///< linear: squareness, d̂ = d + this
@@ -36,13 +37,15 @@ template <class S> struct AxisErrorTerms {
 
 /// The nominal machine: no errors.
 struct NominalErrors {
-  template <class S> AxisErrorTerms<S> operator()(int /*axis_index*/, const S& /*command*/, bool /*at_home*/) const {
+  template <class S>
+  AxisErrorTerms<S> operator()(int /*axis_index*/, const S& /*command*/, bool /*at_home*/) const {
     return {};
   }
 };
 
 /// Poses of the table and of the tool body in M (bed frame).
-template <class S> struct ChainPose {
+template <class S>
+struct ChainPose {
   Rigid<S> bed_T_table;  ///< table frame = M at home, carried by the workpiece-side axes
   Rigid<S> bed_T_tool;   ///< tool frame = M at home, carried by the tool-side axes
 
@@ -74,7 +77,8 @@ concept CachesHome = requires(const Errors& e) {
 
 /// The actual line of a rotary axis under its error terms e: c_j = P_j + δ_j⊥ (tool-side pivots
 /// raised by the tool length) and d̂_j = Rot(ε_j⊥)·d_j (taken from the hook's cache when it has one).
-template <class S> struct RotaryLine {
+template <class S>
+struct RotaryLine {
   Vec3<S> point_mm;
   Vec3<S> direction;
 };
@@ -100,7 +104,8 @@ RotaryLine<S> rotary_line(const Axis& axis, int axis_index, const AxisErrorTerms
 /// The error terms of one axis from the hook: with the whole position `all` where the hook takes
 /// it (terms of one axis that depend on another axis's command), else with the axis's command only.
 template <class S, class Errors>
-AxisErrorTerms<S> error_terms(const Errors& errors, int axis_index, const S& q, bool at_home, const AxisPositionT<S>* all) {
+AxisErrorTerms<S> error_terms(const Errors& errors, int axis_index, const S& q, bool at_home,
+                              const AxisPositionT<S>* all) {
   if constexpr (requires { errors(axis_index, q, at_home, *all); }) {
     if (all != nullptr) return errors(axis_index, q, at_home, *all);
   }
@@ -110,8 +115,8 @@ AxisErrorTerms<S> error_terms(const Errors& errors, int axis_index, const S& q, 
 /// Transform of one axis (see header comment), without the set-up at home; `all`: the whole
 /// position q is part of (for the error hook), if known.
 template <class S, class Errors>
-Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double tool_length_mm,
-                        const Errors& errors, bool at_home, const AxisPositionT<S>* all = nullptr) {
+Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double tool_length_mm, const Errors& errors,
+                        bool at_home, const AxisPositionT<S>* all = nullptr) {
   if constexpr (std::is_same_v<Errors, NominalErrors>) {
     // the same transforms with every error term zero, without the work of the zero terms
     if (axis.is_rotary()) {
@@ -159,8 +164,8 @@ Rigid<S> axis_transform(const Axis& axis, int axis_index, const S& q, double too
 
 /// The chain at command q, without the set-up at home (T(q) itself).
 template <class S, class Errors>
-ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm,
-                            const Errors& errors, bool at_home) {
+ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool_length_mm, const Errors& errors,
+                            bool at_home) {
   ChainPose<S> pose;
   auto compose = [](Rigid<S>& pose_T, const Rigid<S>& axis_T) {
     if constexpr (std::is_same_v<S, double>) {
@@ -178,14 +183,16 @@ ChainPose<S> raw_chain_pose(const Machine& m, const AxisPositionT<S>& q, double 
   return pose;
 }
 
-template <class Errors> HomeInverse home_inverse(const Machine& m, double tool_length_mm, const Errors& errors) {
+template <class Errors>
+HomeInverse home_inverse(const Machine& m, double tool_length_mm, const Errors& errors) {
   const ChainPose<double> home = raw_chain_pose<double>(m, AxisPosition{}, tool_length_mm, errors, true);
   HomeInverse h{home.bed_T_table.inverse(), home.bed_T_tool.inverse(), tool_length_mm, {}, {}};
   for (std::size_t i = 0; i < m.axes.size() && i < h.rotary_direction.size(); ++i) {
     const int index = static_cast<int>(i);
     h.terms_at_home[i] = errors(index, 0.0, true);
     if (!m.axes[i].is_rotary()) continue;
-    h.rotary_direction[i] = rotary_line<double>(m.axes[i], index, h.terms_at_home[i], tool_length_mm, NominalErrors{}).direction;
+    h.rotary_direction[i] =
+        rotary_line<double>(m.axes[i], index, h.terms_at_home[i], tool_length_mm, NominalErrors{}).direction;
   }
   return h;
 }
@@ -205,7 +212,8 @@ ChainPose<S> chain_pose(const Machine& m, const AxisPositionT<S>& q, double tool
 }
 
 /// Tool tip (TCP) and tool axis in W at command q.
-template <class S> struct ToolPoseT {
+template <class S>
+struct ToolPoseT {
   Vec3<S> tip_mm;
   Vec3<S> axis;
 };

@@ -28,7 +28,8 @@ namespace ncpost {
 
 /// Up to N values held in place: the candidate lists of the inverse kinematics (no allocation
 /// per CL point).
-template <class T, std::size_t N> class SmallList {
+template <class T, std::size_t N>
+class SmallList {
  public:
   void push_back(const T& v) {
     assert(size_ < N);
@@ -94,7 +95,7 @@ IkOutcome solve(const Machine& m, const ClPoint& cl, const Setup& setup, const A
 
 /// All admissible solutions (unwound near `previous`), best first.
 SmallList<AxisPosition, 2> admissible_solutions(const Machine& m, const ClPoint& cl, const Setup& setup,
-                                               const AxisPosition& previous, const IkPolicy& policy = {});
+                                                const AxisPosition& previous, const IkPolicy& policy = {});
 
 /// Rotary travel (sum of |Δangle|, rad) from `previous_rad` to the nearest solution for the tool
 /// axis `axis_W` if the rotary axes had no limits; nullopt at a singular pose or out of reach. A

@@ -62,7 +62,8 @@ struct Machine {
   }
 };
 
-template <class S> struct AxisPositionT;
+template <class S>
+struct AxisPositionT;
 /// All axes of `m` at 0 (home), sized for its rotary axes.
 AxisPositionT<double> home_of(const Machine& m);
 
@@ -73,20 +74,24 @@ inline constexpr int kMaxRotaryAxes = 3;
 /// place; how many are used is the model's (Machine::axes, CommandWords::count).
 inline constexpr int kMaxAxes = 3 + kMaxRotaryAxes;
 /// A value per axis of a model, held in place (entries beyond the model's axes are unused).
-template <class T> using PerAxis = std::array<T, kMaxAxes>;
-template <class T> constexpr PerAxis<T> per_axis_filled(const T& v) {
+template <class T>
+using PerAxis = std::array<T, kMaxAxes>;
+template <class T>
+constexpr PerAxis<T> per_axis_filled(const T& v) {
   PerAxis<T> a{};
   a.fill(v);
   return a;
 }
 /// The rotary commands of a model, as many as it has (rad; machine order).
-template <class S> using RotaryT = Eigen::Matrix<S, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxRotaryAxes, 1>;
+template <class S>
+using RotaryT = Eigen::Matrix<S, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxRotaryAxes, 1>;
 using RotaryAngles = RotaryT<double>;
 
 /// Commanded positions: X Y Z in mm, then the model's further axes — on a serial machine its
 /// rotary axes in rad (machine order, as many as Machine::rotary_count()); the number of axes is
 /// the model's (3 + rotary_rad.size()), not fixed.
-template <class S> struct AxisPositionT {
+template <class S>
+struct AxisPositionT {
   Vec3<S> linear_mm = Vec3<S>::Zero();
   RotaryT<S> rotary_rad;  ///< size = the model's rotary axis count (0 on a three-axis machine)
 
@@ -124,7 +129,8 @@ template <class S> struct AxisPositionT {
     return index - 3 < rotary_rad.size() ? rotary_rad[index - 3] : S(0);
   }
 
-  template <class T> AxisPositionT<T> cast() const {
+  template <class T>
+  AxisPositionT<T> cast() const {
     AxisPositionT<T> r;
     r.linear_mm = linear_mm.template cast<T>();
     r.rotary_rad = rotary_rad.template cast<T>();
@@ -135,14 +141,16 @@ using AxisPosition = AxisPositionT<double>;
 
 /// The rotary angles of q on a model with `count` rotary axes: q's own, the missing ones at 0
 /// (home) — AxisPosition{} is home on every model.
-template <class S> RotaryT<S> rotary_of(const AxisPositionT<S>& q, int count) {
+template <class S>
+RotaryT<S> rotary_of(const AxisPositionT<S>& q, int count) {
   RotaryT<S> r = RotaryT<S>::Zero(count);
   const Eigen::Index have = std::min<Eigen::Index>(count, q.rotary_rad.size());
   r.head(have) = q.rotary_rad.head(have);
   return r;
 }
 /// q with exactly `count` rotary axes (the missing ones at 0, extra ones dropped).
-template <class S> AxisPositionT<S> sized(const AxisPositionT<S>& q, int count) {
+template <class S>
+AxisPositionT<S> sized(const AxisPositionT<S>& q, int count) {
   return AxisPositionT<S>(q.linear_mm, rotary_of(q, count));
 }
 inline AxisPosition home_of(const Machine& m) { return AxisPosition::zero(m.rotary_count()); }

@@ -13,20 +13,22 @@
 
 namespace ncpost {
 
-template <class S> using Vec3 = Eigen::Matrix<S, 3, 1>;
-template <class S> using Mat3 = Eigen::Matrix<S, 3, 3>;
+template <class S>
+using Vec3 = Eigen::Matrix<S, 3, 1>;
+template <class S>
+using Mat3 = Eigen::Matrix<S, 3, 3>;
 
 /// Skew-symmetric matrix [w]x with [w]x v = w x v.
-template <class S> Mat3<S> skew(const Vec3<S>& w) {
+template <class S>
+Mat3<S> skew(const Vec3<S>& w) {
   Mat3<S> m;
-  m << S(0), -w.z(), w.y(),
-       w.z(), S(0), -w.x(),
-       -w.y(), w.x(), S(0);
+  m << S(0), -w.z(), w.y(), w.z(), S(0), -w.x(), -w.y(), w.x(), S(0);
   return m;
 }
 
 /// Rotation by `angle` (rad) right-handed about the unit vector `d` (Rodrigues).
-template <class S> Mat3<S> rotation_about(const Vec3<S>& d, const S& angle) {
+template <class S>
+Mat3<S> rotation_about(const Vec3<S>& d, const S& angle) {
   using std::cos;
   using std::sin;
   const Mat3<S> k = skew(d);
@@ -35,7 +37,8 @@ template <class S> Mat3<S> rotation_about(const Vec3<S>& d, const S& angle) {
 
 /// Rotation of the rotation vector w (axis * angle, rad). Exact for finite angles; near zero a
 /// series keeps automatic derivatives well defined (error < 2e-13 for |w| < 1e-4 rad).
-template <class S> Mat3<S> rotation_vector(const Vec3<S>& w) {
+template <class S>
+Mat3<S> rotation_vector(const Vec3<S>& w) {
   using std::sqrt;
   const S theta2 = w.squaredNorm();
   const Mat3<S> k = skew(w);
@@ -53,24 +56,50 @@ template <class S> Mat3<S> rotation_vector(const Vec3<S>& w) {
 #endif
 
 /// A rigid transform a_T_b: p_a = R * p_b + t.
-template <class S> struct Rigid {
+template <class S>
+struct Rigid {
   Mat3<S> R = Mat3<S>::Identity();
   Vec3<S> t = Vec3<S>::Zero();
 
-  static Rigid translation(const Vec3<S>& v) { Rigid r; r.t = v; return r; }
-  static Rigid rotation(const Mat3<S>& m) { Rigid r; r.R = m; return r; }
+  static Rigid translation(const Vec3<S>& v) {
+    Rigid r;
+    r.t = v;
+    return r;
+  }
+  static Rigid rotation(const Mat3<S>& m) {
+    Rigid r;
+    r.R = m;
+    return r;
+  }
   /// Rotation `m` about the point `c`: Trans(c) * Rot(m) * Trans(-c).
   static Rigid rotation_about_point(const Mat3<S>& m, const Vec3<S>& c) {
-    Rigid r; r.R = m; r.t = c - m * c; return r;
+    Rigid r;
+    r.R = m;
+    r.t = c - m * c;
+    return r;
   }
 
   NCPOST_INLINE Vec3<S> apply(const Vec3<S>& p) const { return R * p + t; }
   NCPOST_INLINE Vec3<S> rotate(const Vec3<S>& v) const { return R * v; }
-  NCPOST_INLINE Rigid inverse() const { Rigid r; r.R = R.transpose(); r.t = -(r.R * t); return r; }
-  NCPOST_INLINE Rigid operator*(const Rigid& o) const { Rigid r; r.R = R * o.R; r.t = R * o.t + t; return r; }
+  NCPOST_INLINE Rigid inverse() const {
+    Rigid r;
+    r.R = R.transpose();
+    r.t = -(r.R * t);
+    return r;
+  }
+  NCPOST_INLINE Rigid operator*(const Rigid& o) const {
+    Rigid r;
+    r.R = R * o.R;
+    r.t = R * o.t + t;
+    return r;
+  }
 
-  template <class T> Rigid<T> cast() const {
-    Rigid<T> r; r.R = R.template cast<T>(); r.t = t.template cast<T>(); return r;
+  template <class T>
+  Rigid<T> cast() const {
+    Rigid<T> r;
+    r.R = R.template cast<T>();
+    r.t = t.template cast<T>();
+    return r;
   }
 };
 

@@ -26,8 +26,9 @@ class SerialChainModel final : public KinematicModel {
   }
   /// with_rotary() needs no data on the nominal machine.
   AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad) const {
-    const RotaryAngles rotary = rotary_rad.size() == machine_.rotary_count() ? rotary_rad
-                                                                             : rotary_of(AxisPosition(Vec3d::Zero(), rotary_rad), machine_.rotary_count());
+    const RotaryAngles rotary = rotary_rad.size() == machine_.rotary_count()
+                                    ? rotary_rad
+                                    : rotary_of(AxisPosition(Vec3d::Zero(), rotary_rad), machine_.rotary_count());
     return AxisPosition(linear_for(machine_, rotary, cl.tip_mm, setup_), rotary);
   }
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData&) const override { return execute(q); }

@@ -46,11 +46,11 @@ struct Geometry {
 
 /// The 10 error parameters of one chain (spec table; mm and rad).
 struct ChainErrors {
-  double dr = 0, dt = 0;    ///< screw line offset, radial and tangential (mm)
-  double ar = 0, at = 0;    ///< screw line tilt toward radial and tangential (rad)
-  double ds = 0;            ///< slider zero offset (mm)
-  double gp = 0;            ///< pin axis turned about the radial direction (rad)
-  double dl = 0;            ///< link length error (mm)
+  double dr = 0, dt = 0;             ///< screw line offset, radial and tangential (mm)
+  double ar = 0, at = 0;             ///< screw line tilt toward radial and tangential (rad)
+  double ds = 0;                     ///< slider zero offset (mm)
+  double gp = 0;                     ///< pin axis turned about the radial direction (rad)
+  double dl = 0;                     ///< link length error (mm)
   double drs = 0, dts = 0, dzs = 0;  ///< ball-joint offset on the plate: radial, tangential, normal (mm)
 };
 
@@ -91,13 +91,13 @@ struct Machine {
 
 /// Chain i's geometry with its errors, in M (see the header comment).
 struct ChainFrame {
-  Vec3d radial = Vec3d::UnitX();    ///< r_i
-  Vec3d tangential = Vec3d::UnitY();  ///< t_i
-  Vec3d pin_at_zero_mm = Vec3d::Zero();  ///< (rb + dr)·r_i + dt·t_i + H·e_z
-  Vec3d screw_down = Vec3d::UnitZ();     ///< d_i (a positive slider command moves B by −d_i)
-  double slider_zero_mm = 0.0;           ///< ds
-  Vec3d pin_axis = Vec3d::UnitY();       ///< p_i
-  double link_length_mm = 0.0;           ///< l + dl
+  Vec3d radial = Vec3d::UnitX();           ///< r_i
+  Vec3d tangential = Vec3d::UnitY();       ///< t_i
+  Vec3d pin_at_zero_mm = Vec3d::Zero();    ///< (rb + dr)·r_i + dt·t_i + H·e_z
+  Vec3d screw_down = Vec3d::UnitZ();       ///< d_i (a positive slider command moves B by −d_i)
+  double slider_zero_mm = 0.0;             ///< ds
+  Vec3d pin_axis = Vec3d::UnitY();         ///< p_i
+  double link_length_mm = 0.0;             ///< l + dl
   Vec3d ball_in_plate_mm = Vec3d::Zero();  ///< a_i in the plate frame
 
   /// B_i for the slider command s (mm).

@@ -11,10 +11,9 @@
 // length, taking the root with the pin joint above the ball joint. The table takes up the
 // parasitic translation: (X, Y) = (workpiece_origin + p − TCP_M)_xy.
 //
-// Machine with errors (`--model`, or a calibrated machine file): Newton on the three slider commands so that the actual tool
-// axis (forward kinematics with errors, relative to the actual home) is u and the actual TCP
-// height is right, starting from the nominal solution; X, Y as above from the actual TCP.
-// Lengths in mm, angles in rad.
+// Machine with errors (`--model`, or a calibrated machine file): Newton on the three slider commands so that the actual
+// tool axis (forward kinematics with errors, relative to the actual home) is u and the actual TCP height is right,
+// starting from the nominal solution; X, Y as above from the actual TCP. Lengths in mm, angles in rad.
 #include <optional>
 #include <string>
 

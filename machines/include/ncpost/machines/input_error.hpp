@@ -16,7 +16,9 @@ struct SourcePosition {
 class InputError : public std::runtime_error {
  public:
   InputError(SourcePosition where, std::string what, std::string source_line = {})
-      : std::runtime_error(format(where, what)), where_(std::move(where)), detail_(std::move(what)),
+      : std::runtime_error(format(where, what)),
+        where_(std::move(where)),
+        detail_(std::move(what)),
         source_line_(std::move(source_line)) {}
 
   const SourcePosition& where() const { return where_; }

@@ -12,8 +12,8 @@
 namespace ncpost {
 
 struct MachineRecord {
-  std::string serial;  ///< the machine's serial number, empty if not given
-  std::string owner;   ///< who owns or runs it, empty if not given
+  std::string serial;                           ///< the machine's serial number, empty if not given
+  std::string owner;                            ///< who owns or runs it, empty if not given
   std::map<std::string, double> tolerances_um;  ///< [tolerances]: kind → µm
 };
 

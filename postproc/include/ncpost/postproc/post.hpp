@@ -49,14 +49,18 @@ class Subdivider {
   /// blocks (play_subdivision.hpp), so the post writes no take-up blocks at the CL points
   /// (KinematicModel::take_up).
   template <class F>
-    requires std::is_invocable_r_v<std::vector<SolvedPoint>, const F&, const SolvedPoint&, const SolvedPoint&,
-                                   SolverData&>
-  Subdivider(F cut, bool takes_up_play = false)  // NOLINT(google-explicit-constructor): as a std::function
-      : cut_(std::move(cut)), takes_up_play_(takes_up_play) {}
+  requires std::is_invocable_r_v < std::vector<SolvedPoint>,
+  const F&, const SolvedPoint&, const SolvedPoint&,
+      SolverData& >
+          Subdivider(F cut, bool takes_up_play = false)  // NOLINT(google-explicit-constructor): as a std::function
+      : cut_(std::move(cut)),
+  takes_up_play_(takes_up_play) {}
   /// A subdivision that needs no solver data: `f(from, to)`.
   template <class F>
-    requires std::is_invocable_r_v<std::vector<SolvedPoint>, const F&, const SolvedPoint&, const SolvedPoint&>
-  Subdivider(F f)  // NOLINT(google-explicit-constructor): assigned from a lambda like a std::function
+  requires std::is_invocable_r_v < std::vector<SolvedPoint>,
+  const F&, const SolvedPoint&,
+      const SolvedPoint& >
+          Subdivider(F f)  // NOLINT(google-explicit-constructor): assigned from a lambda like a std::function
       : cut_([f = std::move(f)](const SolvedPoint& from, const SolvedPoint& to, SolverData&) { return f(from, to); }) {}
 
   explicit operator bool() const { return static_cast<bool>(cut_); }
@@ -73,7 +77,7 @@ class Subdivider {
 struct PostOptions {
   bool rtcp = false;
   enum class FeedMode { automatic, per_minute, inverse_time } feed_mode = FeedMode::automatic;
-  double arc_tolerance_mm = 0.001;      ///< chord error of expanded CIRCLE records
+  double arc_tolerance_mm = 0.001;  ///< chord error of expanded CIRCLE records
   /// Write a CIRCLE as G2/G3 where it can be: a planar arc with the tool axis normal to it whose
   /// plane is principal in the program's frame (M, or W under RTCP), on the nominal machine (off
   /// under `--model`: the actual machine would not follow the control's circle exactly), not Klartext.
@@ -114,7 +118,7 @@ struct PostOptions {
   /// leaves the travel): retract this far along the tool axis, reorient, re-engage, with a notice.
   /// 0: no retract strategy, the post fails (Infeasible) naming the CL line.
   double retract_mm = 50.0;
-  double branch_change_rad = 0.2;       ///< extra rotary travel (sum over the axes) that counts as a change
+  double branch_change_rad = 0.2;  ///< extra rotary travel (sum over the axes) that counts as a change
   /// How the post chooses among the inverse solutions (branches, turns of a rotary axis) of the
   /// feed motions: `greedy` (default), each nearest the previous commands; `lookahead`, over each
   /// run of feed motions (up to 8192, between rapids, tool changes, arcs and cycles; longer runs
@@ -147,12 +151,12 @@ struct PostOptions {
 struct PostSummary {
   std::size_t motions_in = 0;
   std::size_t blocks_out = 0;
-  std::size_t rapid_splits = 0;  ///< rapid moves written in two blocks (order_rapids)
-  std::size_t cycles_out = 0;  ///< drilled holes written as G81/G83
-  std::size_t arcs_out = 0;  ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
+  std::size_t rapid_splits = 0;   ///< rapid moves written in two blocks (order_rapids)
+  std::size_t cycles_out = 0;     ///< drilled holes written as G81/G83
+  std::size_t arcs_out = 0;       ///< CIRCLE records written as G2/G3 (not re-executed by --verify)
   std::size_t tilted_planes = 0;  ///< tilted work planes written (`tilted_plane`)
-  std::size_t retracts = 0;  ///< limit-forced changes of solution (retract, reorient, re-engage)
-  std::size_t planned_runs = 0;  ///< runs of feed motions whose solutions the branch plan changed
+  std::size_t retracts = 0;       ///< limit-forced changes of solution (retract, reorient, re-engage)
+  std::size_t planned_runs = 0;   ///< runs of feed motions whose solutions the branch plan changed
   std::vector<std::string> notices;
   VerifyReport verify;
 };

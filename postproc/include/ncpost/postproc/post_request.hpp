@@ -43,7 +43,7 @@ namespace ncpost {
 
 /// Progress and events of a run, each optional; called on the caller's thread.
 struct PostProgress {
-  std::function<void(std::size_t motions)> posting;    ///< every 4096 CL motions of the post
+  std::function<void(std::size_t motions)> posting;  ///< every 4096 CL motions of the post
   /// The program is written: its summary (notices known), before the account is measured.
   std::function<void(const PostSummary& summary)> posted;
   std::function<void(std::size_t motions)> measuring;  ///< every 4096 CL motions of the "before"
@@ -55,17 +55,17 @@ struct PostRequest {
   /// The machine of any kind, with the errors its program compensates (`--model`) and those of the
   /// machine it is re-executed on (`--verify-on`): serial_post_machine.hpp, trr_xy_post_machine.hpp.
   std::shared_ptr<const PostMachine> machine;
-  std::string machine_source;   ///< where it came from (the machine file), named in the program header
-  Setup setup;                  ///< workpiece origin and tool length (TRR-XY: the machine file's tool offset)
+  std::string machine_source;  ///< where it came from (the machine file), named in the program header
+  Setup setup;                 ///< workpiece origin and tool length (TRR-XY: the machine file's tool offset)
   // the input
   std::string input_name = "<input>";  ///< the name in messages (file:line:col) and the program header
-  std::string input_file;  ///< the file the input is read from, hashed in the report (empty: input_name)
+  std::string input_file;              ///< the file the input is read from, hashed in the report (empty: input_name)
   InputKind input_kind = InputKind::automatic;
-  cl::ReaderOptions reader;     ///< units of a file that does not say, unterminated files, NX MSYS
+  cl::ReaderOptions reader;  ///< units of a file that does not say, unterminated files, NX MSYS
   /// The numbers of the tools the input calls by name (`--tool-table`; PostOptions::tool_table).
   std::shared_ptr<const ToolTable> tool_table;
   // the machine the program is for (its errors: `machine`)
-  std::string model_source;     ///< the model file, named in the header and the account
+  std::string model_source;  ///< the model file, named in the header and the account
   // the nonlinear error
   /// Bound on every block's nonlinear error (mm, in W); nullopt: one block per CL motion.
   std::optional<double> tolerance_mm = kDefaultTolerance_mm;
@@ -75,15 +75,15 @@ struct PostRequest {
   nonlinear::Method nonlinear = nonlinear::Method::adaptive;
   // the program
   Dialect dialect = dialect_named("fanuc");
-  bool rtcp = false;            ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
+  bool rtcp = false;  ///< tool tip in W with rotary angles, for a control with RTCP/TCPM
   /// 3+2 runs in tilted work planes (PostOptions::tilted_plane; the dialect's [tilted_plane]);
   /// not with `rtcp` nor a model (the control maps the plane's coordinates on its nominal kinematics).
   bool tilted_plane = false;
   PostOptions::FeedMode feed_mode = PostOptions::FeedMode::automatic;
-  double retract_mm = 50.0;     ///< retract when the limits force a change of solution; 0 refuses
+  double retract_mm = 50.0;  ///< retract when the limits force a change of solution; 0 refuses
   /// greedy or planned over each run of feed motions (PostOptions::branch_choice)
   PostOptions::BranchChoice branch_choice = PostOptions::BranchChoice::greedy;
-  int threads = 2;              ///< 1 or 2 (read and solve ahead); the program is the same
+  int threads = 2;  ///< 1 or 2 (read and solve ahead); the program is the same
   std::string program_name = "NCPOST";
   // verification
   /// Re-execute the written program and measure the plain post (one block per CL motion, nominal

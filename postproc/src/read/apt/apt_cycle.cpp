@@ -18,26 +18,48 @@ struct KindEntry {
   Cycle::Kind kind;
 };
 constexpr KindEntry kKinds[] = {
-    {"DRILL", Cycle::Kind::drill},          {"DRILL,DEEP", Cycle::Kind::deep},
-    {"DEEP", Cycle::Kind::deep},            {"DEEP2", Cycle::Kind::deep},
-    {"DRILL,BRKCHP", Cycle::Kind::chip_break}, {"BRKCHP", Cycle::Kind::chip_break},
-    {"TAP", Cycle::Kind::tap},              {"TAP,FLOAT", Cycle::Kind::tap},
-    {"TAP,RIGID", Cycle::Kind::tap},        {"RIGID", Cycle::Kind::tap},
-    {"BORE", Cycle::Kind::bore},            {"REAM", Cycle::Kind::bore},
+    {"DRILL", Cycle::Kind::drill},
+    {"DRILL,DEEP", Cycle::Kind::deep},
+    {"DEEP", Cycle::Kind::deep},
+    {"DEEP2", Cycle::Kind::deep},
+    {"DRILL,BRKCHP", Cycle::Kind::chip_break},
+    {"BRKCHP", Cycle::Kind::chip_break},
+    {"TAP", Cycle::Kind::tap},
+    {"TAP,FLOAT", Cycle::Kind::tap},
+    {"TAP,RIGID", Cycle::Kind::tap},
+    {"RIGID", Cycle::Kind::tap},
+    {"BORE", Cycle::Kind::bore},
+    {"REAM", Cycle::Kind::bore},
     {"BORE,DRAG", Cycle::Kind::bore_drag},
 };
 
 /// The parameter words (each followed by its value).
-enum class Param { fedto, rapto, rtrcto, depth, clear, step, first_peck, sub_peck, mmpm, ipm, mmpr, ipr, dwell, tpi, pitch };
+enum class Param {
+  fedto,
+  rapto,
+  rtrcto,
+  depth,
+  clear,
+  step,
+  first_peck,
+  sub_peck,
+  mmpm,
+  ipm,
+  mmpr,
+  ipr,
+  dwell,
+  tpi,
+  pitch
+};
 struct ParamEntry {
   const char* word;
   Param param;
 };
 constexpr ParamEntry kParams[] = {
-    {"FEDTO", Param::fedto}, {"RAPTO", Param::rapto},     {"RTRCTO", Param::rtrcto},    {"DEPTH", Param::depth},
-    {"CLEAR", Param::clear}, {"STEP", Param::step},       {"INCR", Param::step},        {"1STPECK", Param::first_peck},
-    {"SUBPECK", Param::sub_peck}, {"MMPM", Param::mmpm},  {"IPM", Param::ipm},          {"MMPR", Param::mmpr},
-    {"IPR", Param::ipr},     {"DWELL", Param::dwell},     {"TPI", Param::tpi},          {"PITCH", Param::pitch},
+    {"FEDTO", Param::fedto},      {"RAPTO", Param::rapto}, {"RTRCTO", Param::rtrcto}, {"DEPTH", Param::depth},
+    {"CLEAR", Param::clear},      {"STEP", Param::step},   {"INCR", Param::step},     {"1STPECK", Param::first_peck},
+    {"SUBPECK", Param::sub_peck}, {"MMPM", Param::mmpm},   {"IPM", Param::ipm},       {"MMPR", Param::mmpr},
+    {"IPR", Param::ipr},          {"DWELL", Param::dwell}, {"TPI", Param::tpi},       {"PITCH", Param::pitch},
 };
 
 const ParamEntry* param_of(const std::string& w) {
@@ -80,17 +102,21 @@ CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::si
     const auto& a = args[i];
     if (a.is_number) {
       // classic APT / CATIA: CYCLE/DRILL,depth,clearance,MMPM,f — numbers without their word
-      if (positional == 0) p.depth = a.number * u;
-      else if (positional == 1) p.clear = a.number * u;
-      else fail(a.column, fmt::format("a third number without its word ({}) in CYCLE", a.number));
+      if (positional == 0)
+        p.depth = a.number * u;
+      else if (positional == 1)
+        p.clear = a.number * u;
+      else
+        fail(a.column, fmt::format("a third number without its word ({}) in CYCLE", a.number));
       ++positional;
       ++i;
       continue;
     }
     const ParamEntry* e = param_of(a.word);
-    if (!e) fail(a.column, fmt::format("CYCLE word '{}' is not known (known after the kind: FEDTO, RAPTO, RTRCTO, DEPTH, "
-                                       "CLEAR, STEP, INCR, 1STPECK, SUBPECK, MMPM, IPM, MMPR, IPR, DWELL, TPI, PITCH)",
-                                       a.word));
+    if (!e)
+      fail(a.column, fmt::format("CYCLE word '{}' is not known (known after the kind: FEDTO, RAPTO, RTRCTO, DEPTH, "
+                                 "CLEAR, STEP, INCR, 1STPECK, SUBPECK, MMPM, IPM, MMPR, IPR, DWELL, TPI, PITCH)",
+                                 a.word));
     if (e->param == Param::rtrcto && i + 1 < args.size() && !args[i + 1].is_number) {
       // NX: RTRCTO,AUTO — back to the R plane
       if (args[i + 1].word != "AUTO")
@@ -99,24 +125,55 @@ CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::si
       i += 2;
       continue;
     }
-    if (i + 1 >= args.size() || !args[i + 1].is_number) fail(a.column, fmt::format("CYCLE word {} expects a number", a.word));
+    if (i + 1 >= args.size() || !args[i + 1].is_number)
+      fail(a.column, fmt::format("CYCLE word {} expects a number", a.word));
     const double v = args[i + 1].number;
     switch (e->param) {
-      case Param::fedto: p.fedto = v * u; break;
-      case Param::depth: p.depth = v * u; break;
-      case Param::rapto: p.rapto = v * u; break;
-      case Param::clear: p.clear = v * u; break;
-      case Param::rtrcto: c.retract_mm = v * u; break;
-      case Param::step: p.step = v * u; break;
-      case Param::first_peck: p.first_peck = v * u; break;
-      case Param::sub_peck: p.sub_peck = v * u; break;
-      case Param::mmpm: p.feed = v, c.feed_per_rev = false; break;
-      case Param::ipm: p.feed = v * kMmPerInch, c.feed_per_rev = false; break;
-      case Param::mmpr: p.feed = v, c.feed_per_rev = true; break;
-      case Param::ipr: p.feed = v * kMmPerInch, c.feed_per_rev = true; break;
-      case Param::dwell: c.dwell_s = v; break;
-      case Param::tpi: p.tpi = v; break;
-      case Param::pitch: p.pitch = v * u; break;
+      case Param::fedto:
+        p.fedto = v * u;
+        break;
+      case Param::depth:
+        p.depth = v * u;
+        break;
+      case Param::rapto:
+        p.rapto = v * u;
+        break;
+      case Param::clear:
+        p.clear = v * u;
+        break;
+      case Param::rtrcto:
+        c.retract_mm = v * u;
+        break;
+      case Param::step:
+        p.step = v * u;
+        break;
+      case Param::first_peck:
+        p.first_peck = v * u;
+        break;
+      case Param::sub_peck:
+        p.sub_peck = v * u;
+        break;
+      case Param::mmpm:
+        p.feed = v, c.feed_per_rev = false;
+        break;
+      case Param::ipm:
+        p.feed = v * kMmPerInch, c.feed_per_rev = false;
+        break;
+      case Param::mmpr:
+        p.feed = v, c.feed_per_rev = true;
+        break;
+      case Param::ipr:
+        p.feed = v * kMmPerInch, c.feed_per_rev = true;
+        break;
+      case Param::dwell:
+        c.dwell_s = v;
+        break;
+      case Param::tpi:
+        p.tpi = v;
+        break;
+      case Param::pitch:
+        p.pitch = v * u;
+        break;
     }
     i += 2;
   }
@@ -126,14 +183,18 @@ CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::si
 /// The depth below the GOTO point, the R plane above it, the retract plane, dwell and feed.
 void set_levels(const CycleParams& p, const AptCycleContext& ctx, int column, const Fail& fail, Cycle& c) {
   if (p.fedto && p.depth) fail(column, "CYCLE gives both FEDTO and DEPTH");
-  if (p.fedto) c.depth_mm = ctx.signed_fedto ? -*p.fedto : std::abs(*p.fedto);
-  else if (p.depth) c.depth_mm = *p.depth;
-  else fail(column, "CYCLE without a depth (FEDTO or DEPTH)");
+  if (p.fedto)
+    c.depth_mm = ctx.signed_fedto ? -*p.fedto : std::abs(*p.fedto);
+  else if (p.depth)
+    c.depth_mm = *p.depth;
+  else
+    fail(column, "CYCLE without a depth (FEDTO or DEPTH)");
   if (p.rapto && p.clear) fail(column, "CYCLE gives both RAPTO and CLEAR");
   c.rapid_to_mm = p.rapto ? *p.rapto : p.clear ? *p.clear : 0.0;
   if (!(c.rapid_to_mm + c.depth_mm > 0.0))
     fail(column, fmt::format("CYCLE: the bottom ({:.4f} mm below the hole point) is not below the R plane "
-                             "({:.4f} mm above it)", c.depth_mm, c.rapid_to_mm));
+                             "({:.4f} mm above it)",
+                             c.depth_mm, c.rapid_to_mm));
   if (c.retract_mm && *c.retract_mm < c.rapid_to_mm)
     fail(column, fmt::format("CYCLE: the retract plane RTRCTO ({:.4f} mm) is below the R plane ({:.4f} mm)",
                              *c.retract_mm, c.rapid_to_mm));
@@ -149,7 +210,8 @@ void set_pecks(const CycleParams& p, const std::string& words, int column, const
   c.peck_mm = p.step ? *p.step : p.sub_peck ? *p.sub_peck : p.first_peck ? *p.first_peck : 0.0;
   c.first_peck_mm = p.first_peck ? *p.first_peck : c.peck_mm;
   if (pecking && !(c.peck_mm > 0.0 && c.first_peck_mm > 0.0))
-    fail(column, fmt::format("CYCLE/{}: a peck cycle without a positive peck depth (STEP, INCR, 1STPECK, SUBPECK)", words));
+    fail(column,
+         fmt::format("CYCLE/{}: a peck cycle without a positive peck depth (STEP, INCR, 1STPECK, SUBPECK)", words));
   if (!pecking && (p.step || p.sub_peck || p.first_peck))
     fail(column, fmt::format("CYCLE/{}: a peck depth on a cycle that does not peck", words));
 }
@@ -166,10 +228,11 @@ void set_thread(const CycleParams& p, const std::string& words, int column, cons
   if (c.kind == Cycle::Kind::tap) {
     if (c.pitch_mm <= 0.0 && !(p.feed && c.feed_per_rev))
       fail(column, "CYCLE/TAP without the thread pitch (TPI, PITCH, or a feed per revolution MMPR/IPR)");
-    if (c.pitch_mm <= 0.0) c.pitch_mm = *p.feed;  // the feed per revolution is the pitch
+    if (c.pitch_mm <= 0.0)
+      c.pitch_mm = *p.feed;  // the feed per revolution is the pitch
     else if (p.feed && c.feed_per_rev && std::abs(*p.feed - c.pitch_mm) > kPitchFeedRelTol * c.pitch_mm)
-      fail(column, fmt::format("CYCLE/TAP: the feed per revolution {:.4f} mm is not the pitch {:.4f} mm", *p.feed,
-                               c.pitch_mm));
+      fail(column,
+           fmt::format("CYCLE/TAP: the feed per revolution {:.4f} mm is not the pitch {:.4f} mm", *p.feed, c.pitch_mm));
   } else if (c.pitch_mm > 0.0) {
     fail(column, fmt::format("CYCLE/{}: a thread pitch on a cycle that does not tap", words));
   }

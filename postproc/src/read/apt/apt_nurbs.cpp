@@ -118,7 +118,8 @@ std::vector<double> linearize(const NurbsCurve& c, double tolerance_mm, std::siz
       stack.pop_back();
       double worst = 0.0;
       for (const double f : {0.25, 0.5, 0.75})
-        worst = std::max(worst, distance_to_chord(c.point_at(piece.u0 + f * (piece.u1 - piece.u0)), piece.p0, piece.p1));
+        worst =
+            std::max(worst, distance_to_chord(c.point_at(piece.u0 + f * (piece.u1 - piece.u0)), piece.p0, piece.p1));
       if (out.size() + stack.size() > max_chords) return {};
       if (worst > tolerance_mm && piece.depth < 40) {
         const double um = 0.5 * (piece.u0 + piece.u1);

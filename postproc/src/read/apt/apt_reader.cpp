@@ -20,14 +20,22 @@ namespace {
 constexpr double kMaxNurbsOrder = 1000.0;
 
 constexpr double kMmPerInch = 25.4;
-constexpr double kMmPerMetre = 1000.0;   // SPINDL/v,SMM: v in m/min
-constexpr double kMmPerFoot = 304.8;     // SPINDL/v,SFM: v in ft/min
+constexpr double kMmPerMetre = 1000.0;  // SPINDL/v,SMM: v in m/min
+constexpr double kMmPerFoot = 304.8;    // SPINDL/v,SFM: v in ft/min
 constexpr double kSecondsPerMinute = 60.0;
-constexpr double kMaxRpm = 1e6;               // a surface speed giving more is a slip (units, diameter)
+constexpr double kMaxRpm = 1e6;  // a surface speed giving more is a slip (units, diameter)
 
 /// The M functions by number (AUXFUN/n) that mean the same on every control.
-enum class AuxFunction { stop = 0, optional_stop = 1, spindle_cw = 3, spindle_ccw = 4, spindle_off = 5, mist = 7,
-                         flood = 8, coolant_off = 9 };
+enum class AuxFunction {
+  stop = 0,
+  optional_stop = 1,
+  spindle_cw = 3,
+  spindle_ccw = 4,
+  spindle_off = 5,
+  mist = 7,
+  flood = 8,
+  coolant_off = 9
+};
 
 bool has_word(const AptStatement& st, const char* w) {
   for (const auto& a : st.arguments)
@@ -72,7 +80,8 @@ std::size_t knot_with_control_point(const std::string& statement) {
   const std::size_t b = statement.find_first_not_of(" \t");
   if (b == std::string::npos || statement.size() < b + 4) return std::string::npos;
   std::string head;
-  for (std::size_t i = b; i < statement.size(); ++i) head += static_cast<char>(std::toupper(static_cast<unsigned char>(statement[i])));
+  for (std::size_t i = b; i < statement.size(); ++i)
+    head += static_cast<char>(std::toupper(static_cast<unsigned char>(statement[i])));
   if (head.rfind("KNOT", 0) != 0) return std::string::npos;
   const std::size_t c = head.find("CNTRL");
   if (c == std::string::npos) return std::string::npos;
@@ -97,13 +106,13 @@ struct AptReader::State {
   bool nx_circle_axis = false;
   std::deque<Record> pending;
   std::vector<std::string> notices;
-  bool have_position = false;     ///< a motion has set `position`
+  bool have_position = false;  ///< a motion has set `position`
   bool any_statement = false;
-  bool last_was_end = false;      ///< the last statement was FINI, END or END-OF-PATH
+  bool last_was_end = false;                 ///< the last statement was FINI, END or END-OF-PATH
   std::optional<double> cutter_diameter_mm;  ///< of the last CUTTER/d,...
   Location cutter_where;
-  double spindle_rpm = 0.0;       ///< the speed of the last SPINDL that gave one (0: none yet)
-  bool spindle_turning = false;   ///< the last spindle statement turns it
+  double spindle_rpm = 0.0;      ///< the speed of the last SPINDL that gave one (0: none yet)
+  bool spindle_turning = false;  ///< the last spindle statement turns it
   /// A 6-value CIRCLE (radius taken from the start point): the next motion must end on it.
   struct ArcCheck {
     Location where;
@@ -119,7 +128,7 @@ struct AptReader::State {
   /// The CYCLE/ statement in force (no CYCLE/OFF since): its GOTOs are holes.
   std::optional<Location> active_cycle;
   bool nx_short_nurbs_noted = false;
-  bool units_stated = false;  ///< a UNITS/ statement was read (the lengths' unit is the file's word)
+  bool units_stated = false;          ///< a UNITS/ statement was read (the lengths' unit is the file's word)
   std::optional<ClPoint> from_point;  ///< the FROM position (GOHOME alone returns there)
   /// NURBS/ ... KNOT/ ... CNTRL/ ...: the curve being collected.
   struct NurbsBlock {
@@ -129,7 +138,8 @@ struct AptReader::State {
   };
   std::optional<NurbsBlock> nurbs;
 
-  State(std::istream& i, std::string f, ReaderOptions o) : lines(i, f, "APT CL statements, one per line"), file(std::move(f)), options(o) {
+  State(std::istream& i, std::string f, ReaderOptions o)
+      : lines(i, f, "APT CL statements, one per line"), file(std::move(f)), options(o) {
     if (o.default_inch) scale = kMmPerInch;
     if (!(options.curve_tolerance_mm > 0.0) || !std::isfinite(options.curve_tolerance_mm))
       throw InputError({file, 0, 0}, "the curve tolerance must be a positive number of mm");
@@ -139,14 +149,13 @@ struct AptReader::State {
   Vec3d to_w(const Vec3d& p_mm) const {
     return options.msys == ReaderOptions::Msys::apply ? Vec3d(msys_origin_mm + msys_R * p_mm) : p_mm;
   }
-  Vec3d dir_to_w(const Vec3d& v) const {
-    return options.msys == ReaderOptions::Msys::apply ? Vec3d(msys_R * v) : v;
-  }
+  Vec3d dir_to_w(const Vec3d& v) const { return options.msys == ReaderOptions::Msys::apply ? Vec3d(msys_R * v) : v; }
   void check_coordinates(const AptStatement& st, const std::vector<double>& v, std::size_t count) const {
     for (std::size_t i = 0; i < count && i < v.size(); ++i)
       if (std::abs(v[i] * scale) > kMaxCoordinateMm)
-        fail(st.where, fmt::format("{} coordinate {:.6g} mm is out of range (expected |x| <= {:g} mm)", st.major,
-                                   v[i] * scale, kMaxCoordinateMm),
+        fail(st.where,
+             fmt::format("{} coordinate {:.6g} mm is out of range (expected |x| <= {:g} mm)", st.major, v[i] * scale,
+                         kMaxCoordinateMm),
              echo_of(st.major + "/" + st.raw_arguments));
   }
 
@@ -155,7 +164,7 @@ struct AptReader::State {
   }
 
   /// Next logical statement: continuation lines joined, CR stripped. False at end of file.
-  std::string line;       ///< read buffers, kept between statements (no allocation per line)
+  std::string line;  ///< read buffers, kept between statements (no allocation per line)
   std::string text;
   std::string statement;
 
@@ -175,8 +184,8 @@ struct AptReader::State {
       }
       const auto comment = line.find("$$");
       const std::size_t last_dollar = line.find_last_of('$');
-      const bool continues = !line.empty() && line.back() == '$' &&
-                             (comment == std::string::npos || last_dollar > comment + 1);
+      const bool continues =
+          !line.empty() && line.back() == '$' && (comment == std::string::npos || last_dollar > comment + 1);
       if (continues) {
         out.append(line, 0, line.size() - 1);
         continued = true;
@@ -194,13 +203,13 @@ struct AptReader::State {
   /// The end of the input: an empty file, or one whose last statement is not FINI / END /
   /// END-OF-PATH (a cut copy would post a gouge) is refused.
   void end_of_file() const {
-    if (!any_statement)
-      fail({0, 0}, "the CL file is empty (no statements); expected APT CL data ending with FINI", "");
+    if (!any_statement) fail({0, 0}, "the CL file is empty (no statements); expected APT CL data ending with FINI", "");
     if (!last_was_end && !options.allow_unterminated)
-      fail({line_number, 0},
-           "file ends without FINI: truncated? (the last statement is not FINI, END or END-OF-PATH); check the copy, or "
-           "give --allow-unterminated to post it as it is",
-           "");
+      fail(
+          {line_number, 0},
+          "file ends without FINI: truncated? (the last statement is not FINI, END or END-OF-PATH); check the copy, or "
+          "give --allow-unterminated to post it as it is",
+          "");
   }
 
   Motion motion(const AptStatement& st, bool relative) {
@@ -211,9 +220,12 @@ struct AptReader::State {
     m.where = st.where;
     if (relative) {
       check_coordinates(st, v, 3);
-      if (v.size() == 3) position += dir_to_w(scale * Vec3d(v[0], v[1], v[2]));
-      else if (v.size() == 1) position += scale * v[0] * axis;
-      else fail(st.where, fmt::format("GODLTA expects 1 or 3 numbers, got {}", v.size()), "GODLTA/" + st.raw_arguments);
+      if (v.size() == 3)
+        position += dir_to_w(scale * Vec3d(v[0], v[1], v[2]));
+      else if (v.size() == 1)
+        position += scale * v[0] * axis;
+      else
+        fail(st.where, fmt::format("GODLTA expects 1 or 3 numbers, got {}", v.size()), "GODLTA/" + st.raw_arguments);
     } else {
       if (v.size() != 3 && v.size() != 6)
         fail(st.where, fmt::format("{} expects 3 or 6 numbers (x,y,z[,i,j,k]), got {}", st.major, v.size()),
@@ -250,8 +262,10 @@ struct AptReader::State {
       return motion(st, false);
     }
     if (!from_point)
-      fail(st.where, "GOHOME without a point and no FROM before it: the home position is not known; give it "
-                     "(GOHOME/x,y,z) or a FROM/x,y,z at the start", "GOHOME");
+      fail(st.where,
+           "GOHOME without a point and no FROM before it: the home position is not known; give it "
+           "(GOHOME/x,y,z) or a FROM/x,y,z at the start",
+           "GOHOME");
     Motion m;
     m.where = st.where;
     m.point = *from_point;
@@ -280,7 +294,8 @@ struct AptReader::State {
       fail(st.where,
            fmt::format("CIRCLE ...,TIMES,{:g}: a helix of several turns outside an NX file (no TOOL PATH/ record): "
                        "whether the turns include the arc to the next GOTO is NX's convention, not known for this "
-                       "file's CAM system; output the helix as GOTO points", *n),
+                       "file's CAM system; output the helix as GOTO points",
+                       *n),
            echo_of(text));
     return static_cast<int>(*n) - 1;
   }
@@ -296,11 +311,12 @@ struct AptReader::State {
     const double r_end = radius_at(position, c.center_mm, c.axis);
     const double tol = options.curve_tolerance_mm;
     if (std::abs(r_end - c.radius_mm) > tol)
-      fail(c.where,
-           fmt::format("CIRCLE: the arc starts {:.4f} mm from its axis but ends {:.4f} mm from it at line {} (more than "
-                       "the tolerance {:g} mm): the start point, centre or end point is wrong",
-                       c.radius_mm, r_end, end.where.line, tol),
-           "");
+      fail(
+          c.where,
+          fmt::format("CIRCLE: the arc starts {:.4f} mm from its axis but ends {:.4f} mm from it at line {} (more than "
+                      "the tolerance {:g} mm): the start point, centre or end point is wrong",
+                      c.radius_mm, r_end, end.where.line, tol),
+          "");
   }
 
   /// NX writes no UNITS record: an inch part says so only by its feeds (FEDRAT/IPM; its own posts
@@ -326,12 +342,20 @@ struct AptReader::State {
     if (has_word(st, "IPM") || has_word(st, "IPR")) refuse_inch_feed_in_mm_default(st);
     if (has_word(st, "IPM")) unit = kMmPerInch;
     if (has_word(st, "MMPM")) unit = 1.0;
-    if (has_word(st, "IPR")) { unit = kMmPerInch; f.per_rev = true; }
-    if (has_word(st, "MMPR")) { unit = 1.0; f.per_rev = true; }
+    if (has_word(st, "IPR")) {
+      unit = kMmPerInch;
+      f.per_rev = true;
+    }
+    if (has_word(st, "MMPR")) {
+      unit = 1.0;
+      f.per_rev = true;
+    }
     f.value *= unit;
     if (!(f.value > 0.0)) fail(st.where, "FEDRAT: the feed must be positive", "FEDRAT/" + st.raw_arguments);
     if (f.value > kMaxCoordinateMm)
-      fail(st.where, fmt::format("FEDRAT: the feed {:.6g} is out of range (expected at most {:g} mm/min)", f.value, kMaxCoordinateMm),
+      fail(st.where,
+           fmt::format("FEDRAT: the feed {:.6g} is out of range (expected at most {:g} mm/min)", f.value,
+                       kMaxCoordinateMm),
            "FEDRAT/" + st.raw_arguments);
     return f;
   }
@@ -341,8 +365,9 @@ struct AptReader::State {
   Circle circle(const AptStatement& st, const std::string& text) {
     const auto v = numbers_of(st);
     if (v.size() != 6 && v.size() < 7)
-      fail(st.where, fmt::format("CIRCLE expects 6 numbers (xc,yc,zc,i,j,k) or 7 and more (xc,yc,zc,i,j,k,r,...), got {}",
-                                 v.size()),
+      fail(st.where,
+           fmt::format("CIRCLE expects 6 numbers (xc,yc,zc,i,j,k) or 7 and more (xc,yc,zc,i,j,k,r,...), got {}",
+                       v.size()),
            echo_of(text));
     check_coordinates(st, v, 3);
     Circle c;
@@ -359,9 +384,11 @@ struct AptReader::State {
       return c;
     }
     if (!have_position)
-      fail(st.where, "CIRCLE without a radius before any motion: the radius is taken from the start point", echo_of(text));
+      fail(st.where, "CIRCLE without a radius before any motion: the radius is taken from the start point",
+           echo_of(text));
     c.radius_mm = radius_at(position, c.center_mm, c.axis);
-    if (c.radius_mm < 1e-6) fail(st.where, "CIRCLE: the start point lies on the circle's axis (radius 0)", echo_of(text));
+    if (c.radius_mm < 1e-6)
+      fail(st.where, "CIRCLE: the start point lies on the circle's axis (radius 0)", echo_of(text));
     arc_check = ArcCheck{st.where, c.center_mm, c.axis, c.radius_mm};
     return c;
   }
@@ -369,7 +396,8 @@ struct AptReader::State {
   /// MSYS/x,y,z, xi,xj,xk, yi,yj,yk: the MCS in the absolute frame.
   void msys(const AptStatement& st, const std::string& text) {
     const auto v = numbers_of(st);
-    if (v.size() != 9) fail(st.where, fmt::format("MSYS expects 9 numbers (origin, X axis, Y axis), got {}", v.size()), echo_of(text));
+    if (v.size() != 9)
+      fail(st.where, fmt::format("MSYS expects 9 numbers (origin, X axis, Y axis), got {}", v.size()), echo_of(text));
     check_coordinates(st, v, 3);
     const Vec3d x(v[3], v[4], v[5]), y(v[6], v[7], v[8]);
     if (std::abs(x.norm() - 1.0) > 1e-4 || std::abs(y.norm() - 1.0) > 1e-4 || std::abs(x.dot(y)) > 1e-4)
@@ -384,15 +412,17 @@ struct AptReader::State {
     if (options.msys == ReaderOptions::Msys::ignore) {
       if (first_msys && !same)
         fail(st.where,
-             fmt::format("MSYS differs from the one at line {}: the operations' GOTOs are written in different MCSs, which "
-                         "--msys ignore would post in one frame; use --msys apply to post them all in the absolute frame",
-                         first_msys->line),
+             fmt::format(
+                 "MSYS differs from the one at line {}: the operations' GOTOs are written in different MCSs, which "
+                 "--msys ignore would post in one frame; use --msys apply to post them all in the absolute frame",
+                 first_msys->line),
              echo_of(text));
       if (rotates && !rotating_msys) {
         rotating_msys = st.where;
-        notices.push_back(fmt::format("{}:{}: MSYS rotates the MCS (its Z axis is {:.6f}, {:.6f}, {:.6f} in the absolute "
-                                      "frame); the GOTOs are posted as written, in the MCS (--msys ignore)",
-                                      file, st.where.line, r(0, 2), r(1, 2), r(2, 2)));
+        notices.push_back(
+            fmt::format("{}:{}: MSYS rotates the MCS (its Z axis is {:.6f}, {:.6f}, {:.6f} in the absolute "
+                        "frame); the GOTOs are posted as written, in the MCS (--msys ignore)",
+                        file, st.where.line, r(0, 2), r(1, 2), r(2, 2)));
       }
     }
     if (!first_msys) first_msys = st.where;
@@ -409,12 +439,16 @@ struct AptReader::State {
       // a whole number of a sensible size before it becomes an int (1.7e17 must not overflow the cast)
       const auto whole = [&](double x, const char* word) {
         if (!(x >= 0.0 && x <= kMaxNurbsOrder && x == std::floor(x)))
-          fail(st.where, fmt::format("NURBS: {} must be a whole number from 0 to {}", word, kMaxNurbsOrder), echo_of(text));
+          fail(st.where, fmt::format("NURBS: {} must be a whole number from 0 to {}", word, kMaxNurbsOrder),
+               echo_of(text));
         return static_cast<int>(x);
       };
-      if (auto d = number_after(st, "DEGREE")) nurbs->degree = whole(*d, "DEGREE");
-      else if (auto o = number_after(st, "ORDER")) nurbs->degree = whole(*o, "ORDER") - 1;
-      else if (!v.empty()) fail(st.where, "NURBS: a number without DEGREE or ORDER before it", echo_of(text));
+      if (auto d = number_after(st, "DEGREE"))
+        nurbs->degree = whole(*d, "DEGREE");
+      else if (auto o = number_after(st, "ORDER"))
+        nurbs->degree = whole(*o, "ORDER") - 1;
+      else if (!v.empty())
+        fail(st.where, "NURBS: a number without DEGREE or ORDER before it", echo_of(text));
       return;
     }
     if (!nurbs) fail(st.where, fmt::format("{} outside a NURBS/ curve", w), echo_of(text));
@@ -427,7 +461,8 @@ struct AptReader::State {
     }
     // CNTRL
     if (v.size() != 3 && v.size() != 4 && v.size() != 6 && v.size() != 7)
-      fail(st.where, fmt::format("CNTRL expects x,y,z[,w] or x,y,z,i,j,k[,w], got {} numbers", v.size()), echo_of(text));
+      fail(st.where, fmt::format("CNTRL expects x,y,z[,w] or x,y,z,i,j,k[,w], got {} numbers", v.size()),
+           echo_of(text));
     check_coordinates(st, v, 3);
     NurbsCurve& c = nurbs->curve;
     if (!c.points_mm.empty() && (c.axes.empty() != (v.size() < 6)))
@@ -450,8 +485,10 @@ struct AptReader::State {
     NurbsCurve& c = b.curve;
     for (const double w : c.weights)
       if (w != 1.0)
-        fail(b.where, "NURBS: weighted control points in NX's short form (no start knots, the curve from the tool "
-                      "position): the weight of the start point is not written; expected weights of 1", "");
+        fail(b.where,
+             "NURBS: weighted control points in NX's short form (no start knots, the curve from the tool "
+             "position): the weight of the start point is not written; expected weights of 1",
+             "");
     const int interior = static_cast<int>(c.knots.size()) - 1;
     const int degree = static_cast<int>(c.points_mm.size()) - interior;
     if (degree < 1) return degree;  // the curve check names the defect
@@ -464,9 +501,10 @@ struct AptReader::State {
     c.weights.insert(c.weights.begin(), 1.0);
     if (!c.axes.empty()) c.axes.insert(c.axes.begin(), axis);
     if (!nx_short_nurbs_noted) {
-      notices.push_back(fmt::format("{}:{}: NURBS in NX's short form (the knots after 0, the curve starting at the tool "
-                                    "position): read as a clamped curve of degree {}",
-                                    file, b.where.line, degree));
+      notices.push_back(
+          fmt::format("{}:{}: NURBS in NX's short form (the knots after 0, the curve starting at the tool "
+                      "position): read as a clamped curve of degree {}",
+                      file, b.where.line, degree));
       nx_short_nurbs_noted = true;
     }
     return degree;
@@ -488,11 +526,12 @@ struct AptReader::State {
     const Vec3d start = c.point_at(c.u_begin());
     const double tol = std::max(options.curve_tolerance_mm, 1e-3);
     if ((start - position).norm() > tol)
-      fail(b.where,
-           fmt::format("NURBS starts {:.4f} mm away from the tool position ({:.4f}, {:.4f}, {:.4f}); expected the curve "
-                       "to start where the previous motion ended",
-                       (start - position).norm(), position.x(), position.y(), position.z()),
-           "");
+      fail(
+          b.where,
+          fmt::format("NURBS starts {:.4f} mm away from the tool position ({:.4f}, {:.4f}, {:.4f}); expected the curve "
+                      "to start where the previous motion ended",
+                      (start - position).norm(), position.x(), position.y(), position.z()),
+          "");
     const Vec3d end = c.point_at(c.u_end());
     // the GOTO after the curve, when it is the curve's end, gives the end tool axis
     std::optional<Vec3d> end_axis;
@@ -504,15 +543,19 @@ struct AptReader::State {
           (to_w(scale * Vec3d(v[0], v[1], v[2])) - end).norm() <= tol) {
         consumed = true;
         end_where = next->where;
-        if (v.size() == 6 && Vec3d(v[3], v[4], v[5]).norm() > 1e-9) end_axis = dir_to_w(Vec3d(v[3], v[4], v[5]).normalized());
+        if (v.size() == 6 && Vec3d(v[3], v[4], v[5]).norm() > 1e-9)
+          end_axis = dir_to_w(Vec3d(v[3], v[4], v[5]).normalized());
       }
     }
     const Vec3d axis0 = axis;
     const Vec3d axis1 = end_axis.value_or(axis0);
     const std::vector<double> us = linearize(c, options.curve_tolerance_mm);
     if (us.empty())
-      fail(b.where, fmt::format("NURBS: more than a million chords would be needed within {:g} mm (extreme weights or "
-                                "a damaged curve?)", options.curve_tolerance_mm), "");
+      fail(b.where,
+           fmt::format("NURBS: more than a million chords would be needed within {:g} mm (extreme weights or "
+                       "a damaged curve?)",
+                       options.curve_tolerance_mm),
+           "");
     const double u0 = c.u_begin(), u1 = c.u_end();
     const bool rapid = rapid_pending;
     rapid_pending = false;
@@ -590,15 +633,20 @@ struct AptReader::State {
       pending.push_back(feed(st));
     } else if (w == "UNITS" || w == "UNIT") {
       units_stated = true;
-      if (has_word(st, "MM")) scale = 1.0;
-      else if (has_word(st, "INCHES") || has_word(st, "INCH") || has_word(st, "IN")) scale = kMmPerInch;
-      else fail(at, "UNITS expects MM or INCHES", text);
+      if (has_word(st, "MM"))
+        scale = 1.0;
+      else if (has_word(st, "INCHES") || has_word(st, "INCH") || has_word(st, "IN"))
+        scale = kMmPerInch;
+      else
+        fail(at, "UNITS expects MM or INCHES", text);
     } else if (w == "MULTAX") {
       multax = !has_word(st, "OFF");
     } else if (w == "TLAXIS") {
       const auto v = numbers_of(st);
-      if (v.size() >= 3 && Vec3d(v[0], v[1], v[2]).norm() > 1e-9) axis = dir_to_w(Vec3d(v[0], v[1], v[2]).normalized());
-      else fail(at, "TLAXIS expects i, j, k of a non-zero vector", text);
+      if (v.size() >= 3 && Vec3d(v[0], v[1], v[2]).norm() > 1e-9)
+        axis = dir_to_w(Vec3d(v[0], v[1], v[2]).normalized());
+      else
+        fail(at, "TLAXIS expects i, j, k of a non-zero vector", text);
     } else {
       return false;
     }
@@ -608,14 +656,17 @@ struct AptReader::State {
   /// SPINDL, COOLNT, LOADTL / LOAD/TOOL, CUTCOM.
   bool apply_machine_function(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
-    if (w == "SPINDL") pending.push_back(spindle(st, text));
-    else if (w == "COOLNT") pending.push_back(coolant(st));
+    if (w == "SPINDL")
+      pending.push_back(spindle(st, text));
+    else if (w == "COOLNT")
+      pending.push_back(coolant(st));
     else if (w == "LOADTL" || (w == "LOAD" && has_word(st, "TOOL"))) {
       refuse_inside_cycle(st, text, "a tool change");
       pending.push_back(tool_change(st, text));
-    }
-    else if (w == "CUTCOM") pending.push_back(cutter_comp(st, text));
-    else return false;
+    } else if (w == "CUTCOM")
+      pending.push_back(cutter_comp(st, text));
+    else
+      return false;
     return true;
   }
 
@@ -624,8 +675,10 @@ struct AptReader::State {
   Spindle spindle(const AptStatement& st, const std::string& text) {
     Spindle s;
     s.where = st.where;
-    if (has_word(st, "OFF")) s.direction = Spindle::Direction::off;
-    else if (has_word(st, "CCLW")) s.direction = Spindle::Direction::ccw;
+    if (has_word(st, "OFF"))
+      s.direction = Spindle::Direction::off;
+    else if (has_word(st, "CCLW"))
+      s.direction = Spindle::Direction::ccw;
     const auto v = numbers_of(st);
     const bool smm = has_word(st, "SMM"), sfm = has_word(st, "SFM");
     if (!v.empty()) s.rpm = smm || sfm ? surface_speed_rpm(st, text, v[0], smm ? kMmPerMetre : kMmPerFoot) : v[0];
@@ -639,16 +692,23 @@ struct AptReader::State {
   double surface_speed_rpm(const AptStatement& st, const std::string& text, double v, double mm_per_unit) {
     const char* unit = mm_per_unit == kMmPerMetre ? "SMM" : "SFM";
     if (!cutter_diameter_mm)
-      fail(st.where, fmt::format("SPINDL/{:g},{}: surface speed needs the tool diameter (CUTTER/...): give CUTTER/d "
-                                 "before it, or the speed in rpm (SPINDL/RPM,n)", v, unit), echo_of(text));
-    if (!(v > 0.0)) fail(st.where, fmt::format("SPINDL: the surface speed must be positive, got {:g} {}", v, unit), echo_of(text));
+      fail(st.where,
+           fmt::format("SPINDL/{:g},{}: surface speed needs the tool diameter (CUTTER/...): give CUTTER/d "
+                       "before it, or the speed in rpm (SPINDL/RPM,n)",
+                       v, unit),
+           echo_of(text));
+    if (!(v > 0.0))
+      fail(st.where, fmt::format("SPINDL: the surface speed must be positive, got {:g} {}", v, unit), echo_of(text));
     const double rpm = std::round(v * mm_per_unit / (kPi * *cutter_diameter_mm));
     if (!(rpm >= 1.0 && rpm <= kMaxRpm))
-      fail(st.where, fmt::format("SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is {:.6g} rpm (expected 1 to "
-                                 "{:g}): check the speed and the CUTTER diameter", v, unit, *cutter_diameter_mm,
-                                 cutter_where.line, rpm, kMaxRpm), echo_of(text));
-    notices.push_back(fmt::format("{}:{}:{}: SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is posted as {:.0f} rpm",
-                                  file, st.where.line, st.where.column, v, unit, *cutter_diameter_mm, cutter_where.line, rpm));
+      fail(st.where,
+           fmt::format("SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is {:.6g} rpm (expected 1 to "
+                       "{:g}): check the speed and the CUTTER diameter",
+                       v, unit, *cutter_diameter_mm, cutter_where.line, rpm, kMaxRpm),
+           echo_of(text));
+    notices.push_back(
+        fmt::format("{}:{}:{}: SPINDL: {:g} {} on the {:g} mm cutter (CUTTER at line {}) is posted as {:.0f} rpm", file,
+                    st.where.line, st.where.column, v, unit, *cutter_diameter_mm, cutter_where.line, rpm));
     return rpm;
   }
 
@@ -684,9 +744,12 @@ struct AptReader::State {
     CutterComp c;
     c.where = st.where;
     c.text = st.raw_arguments;
-    if (has_word(st, "LEFT")) c.side = CutterComp::Side::left;
-    else if (has_word(st, "RIGHT")) c.side = CutterComp::Side::right;
-    else if (!has_word(st, "OFF")) fail(st.where, "CUTCOM expects LEFT, RIGHT or OFF", text);
+    if (has_word(st, "LEFT"))
+      c.side = CutterComp::Side::left;
+    else if (has_word(st, "RIGHT"))
+      c.side = CutterComp::Side::right;
+    else if (!has_word(st, "OFF"))
+      fail(st.where, "CUTCOM expects LEFT, RIGHT or OFF", text);
     const auto v = numbers_of(st);
     if (!v.empty() && v[0] >= 0.0 && v[0] <= 1e6) c.offset_register = static_cast<int>(v[0]);
     return c;
@@ -695,14 +758,20 @@ struct AptReader::State {
   /// STOP, OPSTOP, DELAY, AUXFUN, PREFUN.
   bool apply_program_function(const AptStatement& st, const std::string& text) {
     const std::string& w = st.major;
-    if (w == "STOP" || w == "OPSTOP") pending.push_back(Stop{st.where, w == "OPSTOP", operator_message(st)});
-    else if (w == "DELAY") pending.push_back(delay(st, text));
-    else if (w == "AUXFUN") pending.push_back(aux_function(st, text));
+    if (w == "STOP" || w == "OPSTOP")
+      pending.push_back(Stop{st.where, w == "OPSTOP", operator_message(st)});
+    else if (w == "DELAY")
+      pending.push_back(delay(st, text));
+    else if (w == "AUXFUN")
+      pending.push_back(aux_function(st, text));
     else if (w == "PREFUN")
-      fail(st.where, fmt::format("PREFUN/{} (a G function by number) is not posted: its meaning depends on the control; "
-                                 "write the APT statement it stands for, or remove it where the machine needs none",
-                                 st.raw_arguments), echo_of(text));
-    else return false;
+      fail(st.where,
+           fmt::format("PREFUN/{} (a G function by number) is not posted: its meaning depends on the control; "
+                       "write the APT statement it stands for, or remove it where the machine needs none",
+                       st.raw_arguments),
+           echo_of(text));
+    else
+      return false;
     return true;
   }
 
@@ -740,20 +809,24 @@ struct AptReader::State {
     const auto v = numbers_of(st);
     const bool revolutions = has_word(st, "REV");
     if (v.size() != 1 || st.arguments.size() != (revolutions ? 2u : 1u))
-      fail(st.where, "DELAY expects a time in seconds (DELAY/t) or in spindle revolutions (DELAY/REV,n)", echo_of(text));
+      fail(st.where, "DELAY expects a time in seconds (DELAY/t) or in spindle revolutions (DELAY/REV,n)",
+           echo_of(text));
     double seconds = v[0];
     if (revolutions) {
       if (!spindle_turning || !(spindle_rpm > 0.0))
-        fail(st.where, "DELAY/REV: a dwell in spindle revolutions needs the spindle turning at a known speed (SPINDL/n "
-                       "before it); give the dwell in seconds (DELAY/t)", echo_of(text));
+        fail(st.where,
+             "DELAY/REV: a dwell in spindle revolutions needs the spindle turning at a known speed (SPINDL/n "
+             "before it); give the dwell in seconds (DELAY/t)",
+             echo_of(text));
       seconds = v[0] * kSecondsPerMinute / spindle_rpm;
     }
     if (!(seconds >= 0.0 && seconds <= kMaxDwellSeconds))
       fail(st.where, fmt::format("DELAY: expected a dwell from 0 to {:g} s, got {:g} s", kMaxDwellSeconds, seconds),
            echo_of(text));
     if (revolutions)
-      notices.push_back(fmt::format("{}:{}:{}: DELAY/REV,{:g}: {:g} revolutions at {:g} rpm are posted as a dwell of {:.3f} s",
-                                    file, st.where.line, st.where.column, v[0], v[0], spindle_rpm, seconds));
+      notices.push_back(
+          fmt::format("{}:{}:{}: DELAY/REV,{:g}: {:g} revolutions at {:g} rpm are posted as a dwell of {:.3f} s", file,
+                      st.where.line, st.where.column, v[0], v[0], spindle_rpm, seconds));
     return Dwell{st.where, seconds};
   }
 
@@ -765,27 +838,38 @@ struct AptReader::State {
       fail(st.where, "AUXFUN expects one M function number (AUXFUN/n)", echo_of(text));
     const int n = static_cast<int>(v[0]);
     switch (static_cast<AuxFunction>(n)) {
-      case AuxFunction::stop: return Stop{st.where, false, {}};
-      case AuxFunction::optional_stop: return Stop{st.where, true, {}};
+      case AuxFunction::stop:
+        return Stop{st.where, false, {}};
+      case AuxFunction::optional_stop:
+        return Stop{st.where, true, {}};
       case AuxFunction::spindle_cw:
-      case AuxFunction::spindle_ccw: return aux_spindle(st, text, n);
+      case AuxFunction::spindle_ccw:
+        return aux_spindle(st, text, n);
       case AuxFunction::spindle_off:
         spindle_turning = false;
         return Spindle{st.where, Spindle::Direction::off, 0.0};
-      case AuxFunction::mist: return Coolant{st.where, true, "MIST"};
-      case AuxFunction::flood: return Coolant{st.where, true, "FLOOD"};
-      case AuxFunction::coolant_off: return Coolant{st.where, false, "OFF"};
+      case AuxFunction::mist:
+        return Coolant{st.where, true, "MIST"};
+      case AuxFunction::flood:
+        return Coolant{st.where, true, "FLOOD"};
+      case AuxFunction::coolant_off:
+        return Coolant{st.where, false, "OFF"};
     }
-    fail(st.where, fmt::format("AUXFUN/{} (M{}) is not posted: its meaning depends on the machine (ncpost writes AUXFUN/0, "
-                               "1, 3, 4, 5, 7, 8, 9); write the APT statement it stands for (COOLNT/..., SPINDL/..., "
-                               "LOADTL/...), or remove it where the machine needs none", n, n), echo_of(text));
+    fail(st.where,
+         fmt::format("AUXFUN/{} (M{}) is not posted: its meaning depends on the machine (ncpost writes AUXFUN/0, "
+                     "1, 3, 4, 5, 7, 8, 9); write the APT statement it stands for (COOLNT/..., SPINDL/..., "
+                     "LOADTL/...), or remove it where the machine needs none",
+                     n, n),
+         echo_of(text));
   }
 
   /// AUXFUN/3 or /4: the spindle on at the speed of the last SPINDL.
   Spindle aux_spindle(const AptStatement& st, const std::string& text, int n) {
     if (!(spindle_rpm > 0.0))
-      fail(st.where, fmt::format("AUXFUN/{} (M{}, spindle on) before any spindle speed: give SPINDL/n,{} instead", n, n,
-                                 n == 3 ? "CLW" : "CCLW"), echo_of(text));
+      fail(st.where,
+           fmt::format("AUXFUN/{} (M{}, spindle on) before any spindle speed: give SPINDL/n,{} instead", n, n,
+                       n == 3 ? "CLW" : "CCLW"),
+           echo_of(text));
     spindle_turning = true;
     return Spindle{st.where, n == 3 ? Spindle::Direction::cw : Spindle::Direction::ccw, spindle_rpm};
   }
@@ -811,8 +895,10 @@ struct AptReader::State {
       pending.push_back(circle(st, text));
     } else if (w == "CYCLE") {
       if (auto c = read_apt_cycle(st, {file, scale, nx_circle_axis})) {
-        if (c->kind == Cycle::Kind::off) active_cycle.reset();
-        else active_cycle = st.where;
+        if (c->kind == Cycle::Kind::off)
+          active_cycle.reset();
+        else
+          active_cycle = st.where;
         pending.push_back(std::move(*c));
       }
     } else if (w == "END-OF-PATH" || w == "END" || w == "FINI") {
@@ -834,8 +920,10 @@ struct AptReader::State {
     const std::string& w = st.major;
     auto comment = [&](std::string t) { pending.push_back(Comment{st.where, std::move(t)}); };
     if (w == "INSERT") {
-      if (auto stop = inserted_stop(st)) pending.push_back(std::move(*stop));
-      else comment(st.raw_arguments.empty() ? w : st.raw_arguments);
+      if (auto stop = inserted_stop(st))
+        pending.push_back(std::move(*stop));
+      else
+        comment(st.raw_arguments.empty() ? w : st.raw_arguments);
     } else if (w == "PPRINT" || w == "TPRINT" || w == "TOOL PATH" || w == "OPERATION NAME") {
       if (w == "TOOL PATH") nx_circle_axis = true;
       comment(st.raw_arguments.empty() ? w : (w == "PPRINT" ? st.raw_arguments : w + ": " + st.raw_arguments));
@@ -903,9 +991,10 @@ std::optional<Record> AptReader::next() {
 std::string AptReader::failure_hint() const {
   const State& s = *state_;
   if (!s.rotating_msys) return {};
-  return fmt::format("{}:{}: the file's MSYS rotates the MCS and the GOTOs were posted as written (--msys ignore): MSYS is "
-                     "the likely cause; try --msys apply",
-                     s.file, s.rotating_msys->line);
+  return fmt::format(
+      "{}:{}: the file's MSYS rotates the MCS and the GOTOs were posted as written (--msys ignore): MSYS is "
+      "the likely cause; try --msys apply",
+      s.file, s.rotating_msys->line);
 }
 
 std::vector<std::string> AptReader::take_notices() {
@@ -917,9 +1006,9 @@ std::vector<std::string> AptReader::take_notices() {
 bool looks_like_apt(const std::string& head) {
   // An APT statement starts a line with its major word (then '/', or alone as RAPID / MULTAX);
   // the words may also appear inside G-code comments, e.g. "(ncpost 0.1.0 from part.cls)".
-  static const char* const kMajor[] = {"GOTO", "FROM", "TOOL PATH", "PARTNO", "MULTAX", "LOADTL", "$$",
-                                       "FEDRAT", "UNITS", "UNIT", "CIRCLE", "SPINDL", "COOLNT", "RAPID",
-                                       "TLAXIS", "CUTTER", "MSYS", "PPRINT"};
+  static const char* const kMajor[] = {"GOTO",   "FROM",   "TOOL PATH", "PARTNO", "MULTAX", "LOADTL",
+                                       "$$",     "FEDRAT", "UNITS",     "UNIT",   "CIRCLE", "SPINDL",
+                                       "COOLNT", "RAPID",  "TLAXIS",    "CUTTER", "MSYS",   "PPRINT"};
   std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte order mark
   while (start < head.size()) {
     std::size_t end = head.find_first_of("\n\r", start);  // LF, CRLF or CR-only line ends
@@ -927,7 +1016,8 @@ bool looks_like_apt(const std::string& head) {
     std::size_t b = head.find_first_not_of(" \t", start);
     if (b < end) {
       std::string line;
-      for (std::size_t i = b; i < end; ++i) line += static_cast<char>(std::toupper(static_cast<unsigned char>(head[i])));
+      for (std::size_t i = b; i < end; ++i)
+        line += static_cast<char>(std::toupper(static_cast<unsigned char>(head[i])));
       while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.pop_back();
       if (line.rfind("$$", 0) == 0) return true;
       for (const char* key : kMajor) {

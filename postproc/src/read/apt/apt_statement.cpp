@@ -46,7 +46,8 @@ const auto major_word = x3::rule<struct major_tag, std::string>{"major word"} = 
 bool is_digit_first_word(std::string_view t) {
   if (t.empty() || !std::isdigit(static_cast<unsigned char>(t[0]))) return false;
   for (char c : t)
-    if (!std::isdigit(static_cast<unsigned char>(c)) && c != '.' && c != 'e' && c != 'E' && c != '+' && c != '-') return true;
+    if (!std::isdigit(static_cast<unsigned char>(c)) && c != '.' && c != 'e' && c != 'E' && c != '+' && c != '-')
+      return true;
   return false;
 }
 
@@ -64,7 +65,8 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   const auto last = text.end();
   std::string major;
   if (!x3::parse(first, last, major_word, major))
-    throw InputError({file, where.line, where.column}, "expected a major word before '/'", echo_for(text, where.column));
+    throw InputError({file, where.line, where.column}, "expected a major word before '/'",
+                     echo_for(text, where.column));
   st.major = upper(trim(major));
   // Fold runs of blanks inside the major word ("TOOL  PATH" -> "TOOL PATH").
   std::string folded;
@@ -101,26 +103,31 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
     a.column = base_column + static_cast<int>(start) + static_cast<int>(lead == std::string_view::npos ? 0 : lead);
     if (lead == std::string_view::npos) {
       if (last_field && !st.arguments.empty()) break;  // trailing comma
-      throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)", echo_for(text, a.column));
+      throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)",
+                       echo_for(text, a.column));
     }
     const std::string_view t = f.substr(lead, f.find_last_not_of(" \t\r\n") - lead + 1);
     double value = 0.0;
     const char* nb = t.data();
     const char* ne = t.data() + t.size();
-    const bool starts_numeric = std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
+    const bool starts_numeric =
+        std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
     if (starts_numeric && x3::parse(nb, ne, x3::double_, value) && nb == ne) {
       if (!std::isfinite(value))
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)), echo_for(text, a.column));
+        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
+                         echo_for(text, a.column));
       a.is_number = true;
       a.number = value;
     } else if (is_digit_first_word(t)) {
       a.word = upper(std::string(t));
     } else if (starts_numeric) {
-      throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", echo_of(t, 40)), echo_for(text, a.column));
+      throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", echo_of(t, 40)),
+                       echo_for(text, a.column));
     } else {
       a.word = upper(std::string(t));
       if (a.word == "NAN" || a.word == "INF" || a.word == "INFINITY" || a.word == "-NAN")
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)), echo_for(text, a.column));
+        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
+                         echo_for(text, a.column));
     }
     st.arguments.push_back(std::move(a));
     if (last_field) break;

@@ -17,8 +17,8 @@ constexpr double kRadiusToleranceRelative = 1e-3;
 /// Start and end closer than this (mm, in the plane) make a full circle.
 constexpr double kSamePointMm = 1e-9;
 
-ArcOutcome finish(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise, double c1,
-                  double c2, int turns) {
+ArcOutcome finish(const ProgramPoint& start, const ProgramPoint& end, Plane plane, bool clockwise, double c1, double c2,
+                  int turns) {
   ArcOutcome out;
   if (turns < 1) {
     out.error = "the number of turns (P) must be a positive integer";
@@ -42,9 +42,10 @@ ArcOutcome finish(const ProgramPoint& start, const ProgramPoint& end, Plane plan
   const double dr = std::abs(a.radius_end_mm - a.radius_start_mm);
   const double allowed_mm = std::max(kRadiusToleranceMm, kRadiusToleranceRelative * a.radius_start_mm);
   if (dr > allowed_mm) {
-    out.error = fmt::format("the end point is not on the arc: radius {:.4f} mm at the start, {:.4f} mm at the end "
-                            "(they may differ by {:.4f} mm)",
-                            a.radius_start_mm, a.radius_end_mm, allowed_mm);
+    out.error = fmt::format(
+        "the end point is not on the arc: radius {:.4f} mm at the start, {:.4f} mm at the end "
+        "(they may differ by {:.4f} mm)",
+        a.radius_start_mm, a.radius_end_mm, allowed_mm);
     return out;
   }
   a.angle_start_rad = std::atan2(s2, s1);
@@ -69,9 +70,12 @@ ArcOutcome finish(const ProgramPoint& start, const ProgramPoint& end, Plane plan
 
 PlaneAxes axes_of(Plane plane) {
   switch (plane) {
-    case Plane::xy: return {0, 1, 2};
-    case Plane::zx: return {2, 0, 1};
-    case Plane::yz: return {1, 2, 0};
+    case Plane::xy:
+      return {0, 1, 2};
+    case Plane::zx:
+      return {2, 0, 1};
+    case Plane::yz:
+      return {1, 2, 0};
   }
   return {0, 1, 2};
 }
@@ -96,27 +100,36 @@ std::array<double, 2> arc_centre_of(ArcCentre reading, const ProgramPoint& start
                                     double offset2_mm) {
   const double s1 = start[static_cast<std::size_t>(axes.a1)], s2 = start[static_cast<std::size_t>(axes.a2)];
   switch (reading) {
-    case ArcCentre::incremental: return {s1 + offset1_mm, s2 + offset2_mm};
-    case ArcCentre::centre_to_start: return {s1 - offset1_mm, s2 - offset2_mm};
-    case ArcCentre::absolute: return {offset1_mm, offset2_mm};
+    case ArcCentre::incremental:
+      return {s1 + offset1_mm, s2 + offset2_mm};
+    case ArcCentre::centre_to_start:
+      return {s1 - offset1_mm, s2 - offset2_mm};
+    case ArcCentre::absolute:
+      return {offset1_mm, offset2_mm};
   }
   return {s1 + offset1_mm, s2 + offset2_mm};
 }
 
 std::string_view arc_centre_name(ArcCentre reading) {
   switch (reading) {
-    case ArcCentre::incremental: return "incremental";
-    case ArcCentre::centre_to_start: return "centre-to-start";
-    case ArcCentre::absolute: return "absolute";
+    case ArcCentre::incremental:
+      return "incremental";
+    case ArcCentre::centre_to_start:
+      return "centre-to-start";
+    case ArcCentre::absolute:
+      return "absolute";
   }
   return "incremental";
 }
 
 std::string arc_centre_meaning(ArcCentre reading, std::string_view letters) {
   switch (reading) {
-    case ArcCentre::incremental: return fmt::format("{} are the vector from the start to the centre", letters);
-    case ArcCentre::centre_to_start: return fmt::format("{} are the vector from the centre to the start", letters);
-    case ArcCentre::absolute: return fmt::format("{} are the centre's coordinates", letters);
+    case ArcCentre::incremental:
+      return fmt::format("{} are the vector from the start to the centre", letters);
+    case ArcCentre::centre_to_start:
+      return fmt::format("{} are the vector from the centre to the start", letters);
+    case ArcCentre::absolute:
+      return fmt::format("{} are the centre's coordinates", letters);
   }
   return {};
 }
@@ -134,8 +147,8 @@ ArcOutcome arc_from_radius(const ProgramPoint& start, const ProgramPoint& end, P
   const double r = std::abs(radius_mm);
   const double half = chord / 2.0;
   if (r < half - std::max(kRadiusToleranceMm, kRadiusToleranceRelative * r)) {
-    out.error = fmt::format("arc radius {:.4f} mm is less than half the distance between its end points ({:.4f} mm)",
-                            r, half);
+    out.error =
+        fmt::format("arc radius {:.4f} mm is less than half the distance between its end points ({:.4f} mm)", r, half);
     return out;
   }
   const double h = std::sqrt(std::max(0.0, r * r - half * half));

@@ -22,10 +22,20 @@ using Iterator = const char*;
 
 /// Real numbers as RS274 writes them: optional sign, `5`, `5.`, `.5`; no exponent (E is a word
 /// letter), no NaN or Inf.
-template <class T> struct GcodeRealPolicies : x3::real_policies<T> {
-  template <class It> static bool parse_exp(It&, const It&) { return false; }
-  template <class It, class A> static bool parse_nan(It&, const It&, A&) { return false; }
-  template <class It, class A> static bool parse_inf(It&, const It&, A&) { return false; }
+template <class T>
+struct GcodeRealPolicies : x3::real_policies<T> {
+  template <class It>
+  static bool parse_exp(It&, const It&) {
+    return false;
+  }
+  template <class It, class A>
+  static bool parse_nan(It&, const It&, A&) {
+    return false;
+  }
+  template <class It, class A>
+  static bool parse_inf(It&, const It&, A&) {
+    return false;
+  }
 };
 
 /// What the actions need: the block being filled and where the line starts (for columns).
@@ -44,7 +54,10 @@ struct ParseState {
 };
 struct state_tag;
 
-template <class Ctx> ParseState& state(const Ctx& ctx) { return x3::get<state_tag>(ctx).get(); }
+template <class Ctx>
+ParseState& state(const Ctx& ctx) {
+  return x3::get<state_tag>(ctx).get();
+}
 
 char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
@@ -103,10 +116,12 @@ const auto on_colon = [](auto& ctx) {
 
 const auto on_program_name = [](auto& ctx) {
   const auto range = x3::_attr(ctx);
-  state(ctx).block.program_name = std::string_view(range.begin() + 1, static_cast<std::size_t>(range.end() - range.begin() - 1));
+  state(ctx).block.program_name =
+      std::string_view(range.begin() + 1, static_cast<std::size_t>(range.end() - range.begin() - 1));
 };
 
-template <Keyword K, int Length> const auto on_keyword = [](auto& ctx) {
+template <Keyword K, int Length>
+const auto on_keyword = [](auto& ctx) {
   ParseState& s = state(ctx);
   s.block.keywords.push_back(BlockKeyword{K, s.column_of(x3::_where(ctx).begin()) - Length});
 };
@@ -140,10 +155,10 @@ struct OpenComment : x3::parser<OpenComment> {
 const auto paren_comment = x3::rule<struct paren_tag>{"comment"} = x3::raw[OpenComment{}][on_comment] > close_paren;
 const auto semicolon_comment = x3::rule<struct semi_tag>{"comment"} =
     x3::raw[x3::lit(';') >> x3::lexeme[*x3::char_]][on_comment];
-const auto keyword = x3::rule<struct keyword_tag>{"keyword"} = &x3::char_("tT") >>
-    (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
-        -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
-     x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
+const auto keyword = x3::rule<struct keyword_tag>{"keyword"} =
+    &x3::char_("tT") >> (x3::lexeme[x3::no_case[x3::lit("traori")]][on_keyword<Keyword::traori, 6>] >>
+                             -(x3::lit('(') >> x3::uint_ >> x3::lit(')')) |
+                         x3::lexeme[x3::no_case[x3::lit("trafoof")]][on_keyword<Keyword::trafoof, 7>]);
 const auto message = x3::rule<struct message_tag>{"message"} =
     x3::raw[x3::lexeme[x3::no_case[x3::lit("msg")] >> *blank >> x3::lit('(') >> *blank >>
                        -(x3::lit('"') >> *(x3::char_ - '"') >> x3::lit('"')) >> *blank >> x3::lit(')')]][on_message];
@@ -157,9 +172,9 @@ const auto block_grammar = -x3::lit('/')[on_delete] >> -(program_name | colon_nu
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 /// Words that follow the block number of a Heidenhain conversational (plain-language) block.
-constexpr std::string_view kHeidenhainWords[] = {"BEGIN PGM", "END PGM", "BLK FORM", "TOOL CALL", "TOOL DEF",
-                                                 "CYCL DEF", "CYCL CALL", "LBL ", "CALL LBL", "FN ", "PLANE ",
-                                                 "L ", "CC ", "C ", "CR ", "CT ", "RND ", "CHF ", "STOP"};
+constexpr std::string_view kHeidenhainWords[] = {
+    "BEGIN PGM", "END PGM", "BLK FORM", "TOOL CALL", "TOOL DEF", "CYCL DEF", "CYCL CALL", "LBL ", "CALL LBL", "FN ",
+    "PLANE ",    "L ",      "CC ",      "C ",        "CR ",      "CT ",      "RND ",      "CHF ", "STOP"};
 
 /// A line that starts with a number: a Heidenhain conversational block (`0010 BEGIN PGM 100 MM`)
 /// or a block number without its N.
@@ -178,11 +193,15 @@ std::string leading_number_message(const ParseState& s, Iterator at, Iterator en
   const std::string_view rest(p, static_cast<std::size_t>(end - p));
   for (const std::string_view w : kHeidenhainWords)
     if (rest.substr(0, w.size()) == w || (rest == w.substr(0, w.size() - 1) && w.back() == ' '))
-      return fmt::format("'{} {}...' is a Heidenhain conversational (plain-language) block, not G-code: ncpost reads "
-                         "ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or have the CAM "
-                         "post the part for an ISO control", number, w.back() == ' ' ? w.substr(0, w.size() - 1) : w);
-  return fmt::format("a block that starts with the number '{}' (expected a word: a letter and its number, such as "
-                     "N{} for a block number)", number, number);
+      return fmt::format(
+          "'{} {}...' is a Heidenhain conversational (plain-language) block, not G-code: ncpost reads "
+          "ISO G-code (RS274, Fanuc, Haas, Sinumerik, LinuxCNC); post the CL data, or have the CAM "
+          "post the part for an ISO control",
+          number, w.back() == ' ' ? w.substr(0, w.size() - 1) : w);
+  return fmt::format(
+      "a block that starts with the number '{}' (expected a word: a letter and its number, such as "
+      "N{} for a block number)",
+      number, number);
 }
 
 /// Explains why the grammar stopped at `at` (shared by expectation failures and leftovers).
@@ -197,7 +216,8 @@ std::string explain(const ParseState& s, Iterator at, Iterator end, const char* 
   if (c == '=') return "assignments (=) are not supported";
   if (c == '<') return "named O-words and subroutines (o<...>) are not supported";
   if (c == '\r') return "unexpected carriage return inside a line (CR-only line endings are not supported)";
-  if (byte < 0x20 || byte >= 0x7f) return fmt::format("unexpected byte 0x{:02X} (binary data?); expected {}", byte, expected);
+  if (byte < 0x20 || byte >= 0x7f)
+    return fmt::format("unexpected byte 0x{:02X} (binary data?); expected {}", byte, expected);
   if (c == ')') return "')' without an opening '('";
   if ((is_digit(c) || c == '.' || c == '-' || c == '+') && at != s.line_begin) {
     Iterator before = at;
@@ -225,19 +245,27 @@ std::string keyword_message(Iterator at, Iterator end) {
   static constexpr Known kKnown[] = {
       {"MCALL", "a Sinumerik modal subprogram call, repeated at every following position"},
       {"CALL", "a Sinumerik subprogram call"},
-      {"TRANS", "a Sinumerik programmable work offset"}, {"ATRANS", "a Sinumerik additive work offset"},
-      {"ROT", "a Sinumerik frame rotation"}, {"AROT", "a Sinumerik additive frame rotation"},
-      {"SCALE", "a Sinumerik frame scaling"}, {"MIRROR", "a Sinumerik frame mirroring"},
-      {"SUPA", "a Sinumerik suppression of all frames"}, {"CYCLE800", "a Sinumerik swivel (tilted plane) cycle"},
-      {"DIAMON", "Sinumerik lathe diameter programming"}, {"GOTOF", "Sinumerik program flow"},
-      {"GOTOB", "Sinumerik program flow"}, {"REPEAT", "Sinumerik program flow"},
+      {"TRANS", "a Sinumerik programmable work offset"},
+      {"ATRANS", "a Sinumerik additive work offset"},
+      {"ROT", "a Sinumerik frame rotation"},
+      {"AROT", "a Sinumerik additive frame rotation"},
+      {"SCALE", "a Sinumerik frame scaling"},
+      {"MIRROR", "a Sinumerik frame mirroring"},
+      {"SUPA", "a Sinumerik suppression of all frames"},
+      {"CYCLE800", "a Sinumerik swivel (tilted plane) cycle"},
+      {"DIAMON", "Sinumerik lathe diameter programming"},
+      {"GOTOF", "Sinumerik program flow"},
+      {"GOTOB", "Sinumerik program flow"},
+      {"REPEAT", "Sinumerik program flow"},
   };
   for (const Known& k : kKnown)
     if (name == k.name)
       return fmt::format("{} ({}) is not supported: post the CL data, or expand it into G-code blocks", name, k.what);
   if (name.rfind("CYCLE", 0) == 0 && name.size() > 5)
-    return fmt::format("{} (a Sinumerik cycle call) is not supported: post the CL data, or expand it into G-code "
-                       "blocks", name);
+    return fmt::format(
+        "{} (a Sinumerik cycle call) is not supported: post the CL data, or expand it into G-code "
+        "blocks",
+        name);
   return {};
 }
 

@@ -82,7 +82,7 @@ struct GcodeClReader::State {
 
   std::vector<cl::Record> before;  ///< records of the current block before its motion
   std::size_t before_next = 0;
-  std::vector<cl::Record> after;   ///< records after its motion
+  std::vector<cl::Record> after;  ///< records after its motion
   std::size_t after_next = 0;
 
   // the arc being expanded
@@ -98,7 +98,13 @@ struct GcodeClReader::State {
   std::vector<std::string> notices;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, GcodeReaderOptions o)
-      : source(in, f, kWhatALineIs), file(f), machine(m), setup(s), options(o), letters(program_letters(m, o)), interpreter(f, letters, o.default_inch, o.integer_dwell, o.arc_centre) {
+      : source(in, f, kWhatALineIs),
+        file(f),
+        machine(m),
+        setup(s),
+        options(o),
+        letters(program_letters(m, o)),
+        interpreter(f, letters, o.default_inch, o.integer_dwell, o.arc_centre) {
     for (int k = 0; k < rotaries() && k < 2; ++k) {
       const std::string slot_letters = "XYZABC";
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(slot_letters.find(machine.rotary(k).letter));
@@ -147,9 +153,12 @@ struct GcodeClReader::State {
 
   bool rtcp_now() {
     switch (options.kind) {
-      case InputKind::machine: return false;
-      case InputKind::rtcp: return true;
-      case InputKind::automatic: break;
+      case InputKind::machine:
+        return false;
+      case InputKind::rtcp:
+        return true;
+      case InputKind::automatic:
+        break;
     }
     return interpreter.state().rtcp != Rtcp::off;
   }
@@ -272,25 +281,25 @@ struct GcodeClReader::State {
                                    units_evidence.first_inch_word(), units_evidence.first_inch_line()));
     if (words_metric_in_inch >= kMetricInInchMinWords &&
         static_cast<double>(words_metric_in_inch) >= kMetricInInchShare * static_cast<double>(words_fine))
-      throw InputError({file, first_metric_in_inch.line, 0},
-                       fmt::format("the program has no G20/G21 (units) and its positions look like a metric design "
-                                   "written in inches ({} of its {} X/Y/Z words with 3 or 4 decimals are whole "
-                                   "half-millimetres divided by 25.4, e.g. {}{} at line {} = {:.3f} mm): the control's "
-                                   "default units decide such a program; post with --units inch or --units mm (or add "
-                                   "G20/G21)",
-                                   words_metric_in_inch, words_fine, first_metric_in_inch.letter,
-                                   first_metric_in_inch.value, first_metric_in_inch.line,
-                                   first_metric_in_inch.value * kMmPerInch));
+      throw InputError(
+          {file, first_metric_in_inch.line, 0},
+          fmt::format("the program has no G20/G21 (units) and its positions look like a metric design "
+                      "written in inches ({} of its {} X/Y/Z words with 3 or 4 decimals are whole "
+                      "half-millimetres divided by 25.4, e.g. {}{} at line {} = {:.3f} mm): the control's "
+                      "default units decide such a program; post with --units inch or --units mm (or add "
+                      "G20/G21)",
+                      words_metric_in_inch, words_fine, first_metric_in_inch.letter, first_metric_in_inch.value,
+                      first_metric_in_inch.line, first_metric_in_inch.value * kMmPerInch));
     if (words_4_decimals < 5 || words_4_decimals <= 2 * words_other_decimals) return;
     for (int i = 0; i < 3; ++i)
       if (programmed_lo[i] <= programmed_hi[i] && (programmed_lo[i] < -50.0 || programmed_hi[i] > 50.0)) return;
     const Vec3d span = (programmed_hi - programmed_lo).cwiseMax(0.0);
-    throw InputError({file, 1, 0},
-                     fmt::format("the program has no G20/G21 (units) and looks like inches ({} of {} X/Y/Z words with "
-                                 "4 decimals, all positions within {:.4g} x {:.4g} x {:.4g}): the control's default "
-                                 "units decide such a program; post with --units inch or --units mm (or add G20/G21)",
-                                 words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(),
-                                 span.z()));
+    throw InputError(
+        {file, 1, 0},
+        fmt::format("the program has no G20/G21 (units) and looks like inches ({} of {} X/Y/Z words with "
+                    "4 decimals, all positions within {:.4g} x {:.4g} x {:.4g}): the control's default "
+                    "units decide such a program; post with --units inch or --units mm (or add G20/G21)",
+                    words_4_decimals, words_4_decimals + words_other_decimals, span.x(), span.y(), span.z()));
   }
   UnitsEvidence units_evidence;
 
@@ -367,10 +376,11 @@ struct GcodeClReader::State {
     if (m.inverse_time && m.feed && *m.feed > 0.0 && last_tip) {
       const bool tip_moves = (m.point.tip_mm - *last_tip).norm() > kStillTipMm;
       double path_mm = (m.point.tip_mm - *last_tip).norm();  // RTCP input: the tip moves straight in W
-      if (!last_rtcp && tip_moves) {  // machine axes interpolated linearly
+      if (!last_rtcp && tip_moves) {                         // machine axes interpolated linearly
         const AxisPosition q0 = commands_for(*last_tip, last_rotary), q = commands_for(m.point.tip_mm, rotary);
-        path_mm = tip_path_length_mm(
-            [&](double t) { return Vec3d(nominal_table_T_tool(nonlinear::lerp(q0, q, t)).t - setup.workpiece_origin_mm); });
+        path_mm = tip_path_length_mm([&](double t) {
+          return Vec3d(nominal_table_T_tool(nonlinear::lerp(q0, q, t)).t - setup.workpiece_origin_mm);
+        });
       }
       const double travel_deg = max_abs_step(rotary, last_rotary) * 180.0 / kPi;
       const double feed = feed_for_minutes(path_mm, tip_moves, travel_deg, 1.0 / *m.feed);
@@ -386,13 +396,14 @@ struct GcodeClReader::State {
   // short way across 0; the reader makes that turn explicit (C367.501), so the post, its G93 time
   // and --verify all turn the same way. A value outside 0 .. 360 marks a program that counts turns
   // (LinuxCNC's C-399.8): no unwrapping on that axis from then on.
-  std::array<double, 2> wrap_offset_rad{};      ///< added to rotary axis k's programmed value
-  std::array<bool, 2> counts_turns{};           ///< a value outside 0 .. 360 deg was seen
+  std::array<double, 2> wrap_offset_rad{};  ///< added to rotary axis k's programmed value
+  std::array<bool, 2> counts_turns{};       ///< a value outside 0 .. 360 deg was seen
   std::array<std::optional<double>, 2> last_programmed_rad{};
 
   ProgramPoint unwrapped(ProgramPoint p) const {
     for (int k = 0; k < rotaries() && k < 2; ++k)
-      p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])] += wrap_offset_rad[static_cast<std::size_t>(k)];
+      p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])] +=
+          wrap_offset_rad[static_cast<std::size_t>(k)];
     return p;
   }
 
@@ -512,13 +523,12 @@ struct GcodeClReader::State {
       const bool rotary = axis.is_rotary();
       const double scale = rotary ? 180.0 / kPi : 1.0;
       const char* unit = rotary ? "deg" : "mm";
-      const std::string subject =
-          rtcp && !rotary ? fmt::format("the programmed tool tip needs machine {} {:.3f} {}", axis.letter, v * scale, unit)
-                          : fmt::format("{} {:.3f} {}", axis.letter, v * scale, unit);
-      const std::string what_to_check =
-          rotary ? "check the program's angles against the machine file"
-                 : rtcp ? "check --workpiece-origin and --tool-length, or the machine file"
-                        : "check --workpiece-origin, or the machine file";
+      const std::string subject = rtcp && !rotary ? fmt::format("the programmed tool tip needs machine {} {:.3f} {}",
+                                                                axis.letter, v * scale, unit)
+                                                  : fmt::format("{} {:.3f} {}", axis.letter, v * scale, unit);
+      const std::string what_to_check = rotary ? "check the program's angles against the machine file"
+                                        : rtcp ? "check --workpiece-origin and --tool-length, or the machine file"
+                                               : "check --workpiece-origin, or the machine file";
       throw Infeasible(fmt::format(
           "{}:{}:{}: {}, beyond the {} axis limit {:.3f} {} (travel {:.3f} .. {:.3f} {}) of machine {}: the program "
           "does not fit the machine; {}",
@@ -573,12 +583,14 @@ struct GcodeClReader::State {
       }
     }
     if (!motion_words_line) return;
-    throw InputError({file, motion_words_line, 0},
-                     fmt::format("this line has motion words, but the program read (ending at line {}) moves nothing: "
-                                 "{}", end_line,
-                                 motion_words_line > end_line ? "the line stands after the program's end ('%' or M2/M30)"
-                                                              : "the line is not part of the program (a deleted block "
-                                                                "or a leader before the opening '%')"));
+    throw InputError(
+        {file, motion_words_line, 0},
+        fmt::format("this line has motion words, but the program read (ending at line {}) moves nothing: "
+                    "{}",
+                    end_line,
+                    motion_words_line > end_line ? "the line stands after the program's end ('%' or M2/M30)"
+                                                 : "the line is not part of the program (a deleted block "
+                                                   "or a leader before the opening '%')"));
   }
 
   /// Reads and interprets the next block; false at the end of the program. An error inside a
@@ -640,8 +652,10 @@ struct GcodeClReader::State {
     seen_content = true;
     if (block.deleted && options.block_delete) return skip_deleted(line_number);
     const bool goes_on = interpret_block(line, line_number);
-    if (goes_on && effect.call) follow_call(*effect.call, line_number, std::string(line));
-    else if (goes_on) program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
+    if (goes_on && effect.call)
+      follow_call(*effect.call, line_number, std::string(line));
+    else if (goes_on)
+      program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
     return goes_on;
   }
 
@@ -653,9 +667,12 @@ struct GcodeClReader::State {
   void follow_call(const SubprogramCall& c, int line_number, const std::string& text) {
     const SubprogramCalls::Position back{source.next_line_offset(), line_number + 1};
     try {
-      if (c.m == 98) calls.call_program(c.p, c.times, back, line_number, c.column);
-      else if (c.m == 97) calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
-      else calls.leave(true, parameters, line_number, c.column);
+      if (c.m == 98)
+        calls.call_program(c.p, c.times, back, line_number, c.column);
+      else if (c.m == 97)
+        calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
+      else
+        calls.leave(true, parameters, line_number, c.column);
     } catch (const InputError& e) {
       if (!e.source_line().empty()) throw;
       throw InputError(e.where(), e.detail(), text);
@@ -670,8 +687,10 @@ struct GcodeClReader::State {
   bool skip_deleted(int line_number) {
     seen_content = true;
     if (!block_delete_noticed)
-      notices.push_back(fmt::format("{}:{}: blocks that start with '/' (block delete) are left out, as the control "
-                                    "leaves them out with its block-skip switch on", file, line_number));
+      notices.push_back(
+          fmt::format("{}:{}: blocks that start with '/' (block delete) are left out, as the control "
+                      "leaves them out with its block-skip switch on",
+                      file, line_number));
     block_delete_noticed = true;
     return true;
   }
@@ -751,7 +770,8 @@ struct GcodeClReader::State {
                          fmt::format("{} stands at its reference point since line {} (G28/G30/G53), a position the "
                                      "machine file does not give: this motion does not say where {} goes (program "
                                      "{} absolutely on the first motion after the return, or give the machine file "
-                                     "[axes.{}] reference = ...)", L, reference_line, L, L, L),
+                                     "[axes.{}] reference = ...)",
+                                     L, reference_line, L, L, L),
                          std::string(line));
       at_reference[i] = false;
     }
@@ -766,7 +786,8 @@ struct GcodeClReader::State {
       return p;
     }
     AxisPosition q = AxisPosition::zero(rotaries());
-    for (int k = 0; k < rotaries(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
+    for (int k = 0; k < rotaries(); ++k)
+      q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_axis[static_cast<std::size_t>(k)])];
     q.linear_mm = linear_for(machine, q.rotary_rad, Vec3d(p[0], p[1], p[2]), setup);
     for (int i = 0; i < 3; ++i)
       if (machine_mm[static_cast<std::size_t>(i)]) q.linear_mm[i] = *machine_mm[static_cast<std::size_t>(i)];
@@ -800,10 +821,11 @@ struct GcodeClReader::State {
                                    mm.code, machine.name, program_letters(machine, options)),
                        std::string(line));
     if (!start_settled) {
-      notices.push_back(fmt::format("{}:{}:{}: {} before the first programmed position moves nothing in the "
-                                    "posted program (where the tool stands is not known yet): the program's first "
-                                    "positions place the tool", file, where.line,
-                                    mm.column, mm.code));
+      notices.push_back(
+          fmt::format("{}:{}:{}: {} before the first programmed position moves nothing in the "
+                      "posted program (where the tool stands is not known yet): the program's first "
+                      "positions place the tool",
+                      file, where.line, mm.column, mm.code));
       if (mm.kind == MachineMove::Kind::reference && fx.has_motion) hold_rapid(fx, where);
       return;
     }
@@ -825,24 +847,26 @@ struct GcodeClReader::State {
       if (second && !ref)
         throw InputError({file, where.line, mm.column},
                          fmt::format("G30 {}: the second reference point of {} is not in the machine file {}: give "
-                                     "it as [axes.{}] reference2 = ... ({})", L, L, machine.name, L,
-                                     axis.is_rotary() ? "deg" : "mm"),
+                                     "it as [axes.{}] reference2 = ... ({})",
+                                     L, L, machine.name, L, axis.is_rotary() ? "deg" : "mm"),
                          std::string(line));
       const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
       if (ref || (given && axis.is_rotary())) {
         const double target = ref.value_or(0.0) + offset;
-        if (i < 3) machine_mm[i] = target;
-        else p[i] = target;
+        if (i < 3)
+          machine_mm[i] = target;
+        else
+          p[i] = target;
         moves = true;
         const char* unit = axis.is_rotary() ? "deg" : "mm";
-        const std::string from = !ref ? std::string("its machine angle")
+        const std::string from = !ref            ? std::string("its machine angle")
                                  : offset != 0.0 ? fmt::format("{:.3f} {} from", offset * scale, unit)
                                                  : std::string("at");
         const std::string point = L == 'Z' && !axis.reference && !second ? "the top of its travel (machine file)"
-                                  : second ? "its second reference point (machine file)"
-                                           : "its reference point (machine file)";
-        placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", placed.empty() ? "" : "; ", L, target * scale, unit,
-                              from, ref ? " " + point : std::string());
+                                  : second                               ? "its second reference point (machine file)"
+                                                                         : "its reference point (machine file)";
+        placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", placed.empty() ? "" : "; ", L, target * scale, unit, from,
+                              ref ? " " + point : std::string());
       } else {
         at_reference[i] = true;
         reference_line = where.line;
@@ -854,8 +878,8 @@ struct GcodeClReader::State {
         placed.empty() ? std::string("Z does not move") : placed + ", as a rapid",
         unknown.empty() ? ""
                         : fmt::format("; {} go(es) to (or count(s) from) a reference point the machine file does not "
-                                      "give ([axes.{}] reference): the next motion must program it", unknown,
-                                      unknown.front())));
+                                      "give ([axes.{}] reference): the next motion must program it",
+                                      unknown, unknown.front())));
     if (!moves) return;
     p = with_machine_linear(p, machine_mm);
     cl::Motion m = motion_at(p, where);
@@ -937,7 +961,9 @@ struct GcodeClReader::State {
   /// A G0/G1 motion (with its source-time feed where the program runs in inverse time).
   void queue_linear(const BlockEffect& fx, cl::Location where, const std::array<bool, 6>& known_prior) {
     update_wrap(fx, where.line, true);
-    if (!start_settled) release_held(known_prior, fx.motion == MotionMode::rapid ? 0 : where.line);  // a feed motion starts from the held position
+    if (!start_settled)
+      release_held(known_prior,
+                   fx.motion == MotionMode::rapid ? 0 : where.line);  // a feed motion starts from the held position
     cl::Motion m = motion_at(unwrapped(fx.end), where);
     if (auto f = source_time_feed(m)) before.push_back(*f);
     before.push_back(std::move(m));

@@ -53,8 +53,10 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
       return {ControlWordAction::length_mm,
               "G71 (Sinumerik): lengths are read in mm; feeds stay in the control's basic unit (mm unless --units "
               "inch)"};
-    case 7000: return {ControlWordAction::units_inch, {}};
-    case 7100: return {ControlWordAction::units_mm, {}};
+    case 7000:
+      return {ControlWordAction::units_inch, {}};
+    case 7100:
+      return {ControlWordAction::units_mm, {}};
     case 100: {
       // an L beyond any G10 form is no kind (and must not overflow the int cast)
       const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
@@ -71,10 +73,14 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
     }
     // the cancel words of modes the reader refuses when they are switched on (scaling G51, rotation
     // G68, polar coordinates G16, mirror image G51.1): in a safe-start line they change nothing
-    case 500: case 690: case 150: case 501:
+    case 500:
+    case 690:
+    case 150:
+    case 501:
       if (!geometry) return {ControlWordAction::drop, {}};
-      return {ControlWordAction::refuse, code10 == 500 ? "G50 with axis words (a lathe's coordinate setting) is not supported"
-                                                       : "a cancel word (G15, G50.1, G69) with axis words is not supported"};
+      return {ControlWordAction::refuse, code10 == 500
+                                             ? "G50 with axis words (a lathe's coordinate setting) is not supported"
+                                             : "a cancel word (G15, G50.1, G69) with axis words is not supported"};
     case 970:  // G97: spindle speed in rpm (constant surface speed G96 off), what S always is here
       if (!geometry) return {ControlWordAction::drop, {}};
       return {ControlWordAction::refuse, "G97 with axis words is not supported"};
@@ -89,9 +95,11 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
       return {ControlWordAction::refuse, "G187 with axis words is not supported"};
     case 1030:  // Haas G103 P<n>: limit block look-ahead
       if (!geometry)
-        return {ControlWordAction::drop, "G103 (Haas block look-ahead limit) is a control mode word, not a motion: dropped"};
+        return {ControlWordAction::drop,
+                "G103 (Haas block look-ahead limit) is a control mode word, not a motion: dropped"};
       return {ControlWordAction::refuse, "G103 with axis words is not supported"};
-    default: return {ControlWordAction::none, {}};
+    default:
+      return {ControlWordAction::none, {}};
   }
 }
 

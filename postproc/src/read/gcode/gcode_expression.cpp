@@ -33,7 +33,8 @@ bool whole(double v) { return std::abs(v - std::round(v)) < 1e-9; }
 double need(const ParamValue& v, std::size_t offset, const char* where) {
   if (!v)
     throw ExpressionError(offset, fmt::format("a vacant value (#0 or a parameter never set) in {}: Fanuc and "
-                                              "LinuxCNC read it differently; set the parameter first", where));
+                                              "LinuxCNC read it differently; set the parameter first",
+                                              where));
   return *v;
 }
 
@@ -42,9 +43,9 @@ struct Operator {
   const char* name;
   int level;
 };
-constexpr Operator kOperators[] = {
-    {"OR", 0}, {"XOR", 0}, {"AND", 1}, {"EQ", 2}, {"NE", 2}, {"GT", 2}, {"GE", 2}, {"LT", 2}, {"LE", 2},
-    {"+", 3},  {"-", 3},   {"*", 4},   {"/", 4},  {"MOD", 4}, {"**", 5}};
+constexpr Operator kOperators[] = {{"OR", 0}, {"XOR", 0}, {"AND", 1}, {"EQ", 2},  {"NE", 2},
+                                   {"GT", 2}, {"GE", 2},  {"LT", 2},  {"LE", 2},  {"+", 3},
+                                   {"-", 3},  {"*", 4},   {"/", 4},   {"MOD", 4}, {"**", 5}};
 constexpr int kTopLevel = 5;
 
 /// The operator at `at` of `level`, or nullptr.
@@ -88,7 +89,8 @@ double apply(const Operator& op, const ParamValue& a, const ParamValue& b, std::
     if (y == 0.0) throw ExpressionError(offset, "MOD by zero");
     if (x < 0.0 || y < 0.0)
       throw ExpressionError(offset, fmt::format("{} MOD {}: the sign of MOD with a negative operand differs between "
-                                                "controls; write it with FIX and a division", x, y));
+                                                "controls; write it with FIX and a division",
+                                                x, y));
     return std::fmod(x, y);
   }
   if (name == "GT") return x > y ? 1.0 : 0.0;
@@ -145,7 +147,8 @@ ParamRef Evaluator::reference(std::string_view s, std::size_t& at) const {
   if (number > Parameters::kLastUserNumber)
     throw ExpressionError(start, fmt::format("#{} is a system variable (work offsets, modal state, alarms, tool data, "
                                              "...): its meaning is the control's, so it is not read; set a parameter "
-                                             "#1 .. #999 instead", fmt::format("{:.0f}", number)));
+                                             "#1 .. #999 instead",
+                                             fmt::format("{:.0f}", number)));
   ref.number = static_cast<int>(number);
   return ref;
 }
@@ -195,8 +198,8 @@ ParamValue Evaluator::value(std::string_view s, std::size_t& at) const {
     at += name.size();
     return function(s, at, name, start);
   }
-  throw ExpressionError(at, fmt::format("expected a value (a number, #parameter, [expression] or function), found '{}'",
-                                        c));
+  throw ExpressionError(
+      at, fmt::format("expected a value (a number, #parameter, [expression] or function), found '{}'", c));
 }
 
 ParamValue Evaluator::expression(std::string_view s, std::size_t& at) const { return binary(s, at, 0); }
@@ -272,10 +275,10 @@ ParamValue Evaluator::function(std::string_view s, std::size_t& at, const std::s
     if (name != k.name) continue;
     const double arg = need(bracketed(), start, k.name);
     if ((name == "FIX" || name == "FUP") && arg < 0.0 && !whole(arg))
-      throw ExpressionError(start, fmt::format("{}[{}]: of a negative fraction Fanuc rounds toward {} zero and "
-                                               "LinuxCNC {}; the program's control decides, so it is not read",
-                                               name, arg, name == "FIX" ? "" : "away from ",
-                                               name == "FIX" ? "down" : "up"));
+      throw ExpressionError(start,
+                            fmt::format("{}[{}]: of a negative fraction Fanuc rounds toward {} zero and "
+                                        "LinuxCNC {}; the program's control decides, so it is not read",
+                                        name, arg, name == "FIX" ? "" : "away from ", name == "FIX" ? "down" : "up"));
     const double r = k.fn(arg);
     if (!std::isfinite(r)) throw ExpressionError(start, fmt::format("{}[{}] has no finite value", name, arg));
     return r;

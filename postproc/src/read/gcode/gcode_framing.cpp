@@ -93,8 +93,10 @@ Leader find_leader(std::string_view head, bool complete, const std::string& file
     } catch (const InputError&) {
       // a macro statement may move (X#1), an o-word statement calls or loops over blocks that may:
       // counted as a motion, never skipped as a leader
-      if (may_hold_macro(line) || read_o_word(line)) motion_line = motion_line ? motion_line : lines.number();
-      else not_gcode = true;
+      if (may_hold_macro(line) || read_o_word(line))
+        motion_line = motion_line ? motion_line : lines.number();
+      else
+        not_gcode = true;
     }
   }
   if (listing_line && !percent_line)

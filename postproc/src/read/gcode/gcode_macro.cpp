@@ -78,7 +78,8 @@ struct Rewriter {
 
   double condition(std::size_t& at, const char* keyword) {
     skip_blanks(line, at);
-    if (at >= line.size() || line[at] != '[') fail(at, fmt::format("{} takes its condition in brackets: {} [...]", keyword, keyword));
+    if (at >= line.size() || line[at] != '[')
+      fail(at, fmt::format("{} takes its condition in brackets: {} [...]", keyword, keyword));
     const std::size_t start = at;
     const ParamValue v = ev.value(line, at);
     if (!v) fail(start, fmt::format("the condition of {} is vacant", keyword));
@@ -135,7 +136,8 @@ struct Rewriter {
     const ParamValue v = ev.value(line, at);
     if (!v)
       fail(look, fmt::format("{} takes a vacant value (#0 or a parameter never set): Fanuc leaves the word out, "
-                             "LinuxCNC reads 0; set the parameter first", letter));
+                             "LinuxCNC reads 0; set the parameter first",
+                             letter));
     const std::string text = word_number(*v);
     if (text.size() < at - start) out.append(at - start - text.size(), ' ');
     out += text;
@@ -204,12 +206,13 @@ struct Rewriter {
     }
     skip_blanks(line, p);
     const std::string w = word_at(line, p);
-    static constexpr std::string_view kOWords[] = {"SUB", "ENDSUB", "CALL", "RETURN", "IF", "ELSEIF", "ELSE",
-                                                  "ENDIF", "WHILE", "ENDWHILE", "DO", "REPEAT", "ENDREPEA",
-                                                  "BREAK", "CONTINUE"};
+    static constexpr std::string_view kOWords[] = {"SUB",    "ENDSUB", "CALL",     "RETURN", "IF",
+                                                   "ELSEIF", "ELSE",   "ENDIF",    "WHILE",  "ENDWHILE",
+                                                   "DO",     "REPEAT", "ENDREPEA", "BREAK",  "CONTINUE"};
     if (std::find(std::begin(kOWords), std::end(kOWords), w) == std::end(kOWords)) return;
     fail(at, fmt::format("LinuxCNC o-word {} (o-word subroutines and control flow) is not supported: post the "
-                         "program with its o-words expanded, or the CL data", w));
+                         "program with its o-words expanded, or the CL data",
+                         w));
   }
 
   void run() {
@@ -244,8 +247,10 @@ struct Rewriter {
       }
     }
     for (auto& [ref, v] : assignments) {
-      if (!ref.name.empty()) params.set(ref.name, v);
-      else params.set(ref.number, v);
+      if (!ref.name.empty())
+        params.set(ref.name, v);
+      else
+        params.set(ref.number, v);
     }
   }
 };

@@ -53,40 +53,151 @@ std::string g_name(int code10) {
 }
 
 enum GGroup : int {
-  g_non_modal = 0, g_motion, g_plane, g_distance, g_arc_distance, g_feed, g_units, g_cutter, g_length,
-  g_return, g_coordinates, g_path, g_dynamic_offset, g_group_count
+  g_non_modal = 0,
+  g_motion,
+  g_plane,
+  g_distance,
+  g_arc_distance,
+  g_feed,
+  g_units,
+  g_cutter,
+  g_length,
+  g_return,
+  g_coordinates,
+  g_path,
+  g_dynamic_offset,
+  g_group_count
 };
 
 /// The modal group of a supported G code, or -1 with `why` naming what is not supported.
 int g_group(int code10, const char*& why) {
   switch (code10) {
-    case 40: case 100: case 280: case 300: case 530: case 520: case 920: return g_non_modal;
-    case 0: case 10: case 20: case 30: case 800: return g_motion;
-    case 170: case 180: case 190: return g_plane;
-    case 900: case 910: return g_distance;
-    case 901: case 911: return g_arc_distance;
-    case 930: case 940: case 950: return g_feed;
-    case 200: case 210: return g_units;
-    case 400: case 410: case 420: return g_cutter;
-    case 430: case 431: case 434: case 435: case 490: case 2340: return g_length;
-    case 980: case 990: return g_return;
-    case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+    case 40:
+    case 100:
+    case 280:
+    case 300:
+    case 530:
+    case 520:
+    case 920:
+      return g_non_modal;
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+    case 800:
+      return g_motion;
+    case 170:
+    case 180:
+    case 190:
+      return g_plane;
+    case 900:
+    case 910:
+      return g_distance;
+    case 901:
+    case 911:
+      return g_arc_distance;
+    case 930:
+    case 940:
+    case 950:
+      return g_feed;
+    case 200:
+    case 210:
+      return g_units;
+    case 400:
+    case 410:
+    case 420:
+      return g_cutter;
+    case 430:
+    case 431:
+    case 434:
+    case 435:
+    case 490:
+    case 2340:
+      return g_length;
+    case 980:
+    case 990:
+      return g_return;
+    case 540:
+    case 541:
+    case 550:
+    case 560:
+    case 570:
+    case 580:
+    case 590:
+    case 591:
+    case 592:
+    case 593:
       return g_coordinates;
-    case 610: case 611: case 640: return g_path;
-    case 2540: case 2550: return g_dynamic_offset;  // Haas DWO on/off
-    case 411: case 421: why = "dynamic cutter radius compensation"; return -1;
-    case 330: case 331: why = "threading"; return -1;
-    case 760: why = "fine boring with a spindle orientation and shift on Fanuc and Haas mills; threading on lathes and LinuxCNC"; return -1;
-    case 382: case 383: case 384: case 385: why = "probing"; return -1;
-    case 50: case 51: case 52: case 53: why = "splines"; return -1;
-    case 70: case 80: why = "lathe diameter/radius mode"; return -1;
-    case 921: case 922: case 923: why = "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)"; return -1;
-    case 680: case 690: case 681: why = "coordinate rotation"; return -1;
-    case 500: case 510: why = "scaling"; return -1;
-    case 150: case 160: why = "polar coordinates"; return -1;
-    case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 890: return g_motion;
-    case 870: case 880: why = "back boring and manual boring cycles"; return -1;
-    default: why = nullptr; return -1;
+    case 610:
+    case 611:
+    case 640:
+      return g_path;
+    case 2540:
+    case 2550:
+      return g_dynamic_offset;  // Haas DWO on/off
+    case 411:
+    case 421:
+      why = "dynamic cutter radius compensation";
+      return -1;
+    case 330:
+    case 331:
+      why = "threading";
+      return -1;
+    case 760:
+      why =
+          "fine boring with a spindle orientation and shift on Fanuc and Haas mills; threading on lathes and LinuxCNC";
+      return -1;
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+      why = "probing";
+      return -1;
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+      why = "splines";
+      return -1;
+    case 70:
+    case 80:
+      why = "lathe diameter/radius mode";
+      return -1;
+    case 921:
+    case 922:
+    case 923:
+      why = "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)";
+      return -1;
+    case 680:
+    case 690:
+    case 681:
+      why = "coordinate rotation";
+      return -1;
+    case 500:
+    case 510:
+      why = "scaling";
+      return -1;
+    case 150:
+    case 160:
+      why = "polar coordinates";
+      return -1;
+    case 730:
+    case 740:
+    case 810:
+    case 820:
+    case 830:
+    case 840:
+    case 850:
+    case 860:
+    case 890:
+      return g_motion;
+    case 870:
+    case 880:
+      why = "back boring and manual boring cycles";
+      return -1;
+    default:
+      why = nullptr;
+      return -1;
   }
 }
 
@@ -111,14 +222,31 @@ void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, Pr
   k.kind_word = g_name(c.code10);
   k.text = k.kind_word;
   switch (c.code10) {
-    case 730: k.kind = K::chip_break; break;
-    case 740: k.kind = K::tap, k.left_hand = true; break;
-    case 810: case 820: k.kind = K::drill; break;
-    case 830: k.kind = K::deep; break;
-    case 840: k.kind = K::tap; break;
-    case 850: case 890: k.kind = K::bore; break;
-    case 860: k.kind = K::bore_drag; break;
-    default: fail(column, fmt::format("{} is not supported", g_name(c.code10)));
+    case 730:
+      k.kind = K::chip_break;
+      break;
+    case 740:
+      k.kind = K::tap, k.left_hand = true;
+      break;
+    case 810:
+    case 820:
+      k.kind = K::drill;
+      break;
+    case 830:
+      k.kind = K::deep;
+      break;
+    case 840:
+      k.kind = K::tap;
+      break;
+    case 850:
+    case 890:
+      k.kind = K::bore;
+      break;
+    case 860:
+      k.kind = K::bore_drag;
+      break;
+    default:
+      fail(column, fmt::format("{} is not supported", g_name(c.code10)));
   }
   k.depth_mm = *c.r_z - *c.bottom_z;
   k.rapid_to_mm = 0.0;
@@ -128,14 +256,18 @@ void cycle_hole(const ModalState& st, int line, int column, const Fail& fail, Pr
     k.peck_mm = k.first_peck_mm = *c.q;
   }
   if ((c.code10 == 820 || c.code10 == 890) && c.p_s) k.dwell_s = *c.p_s;
-  if (st.feed_mode == FeedMode::inverse_time) fail(column, "canned cycles under inverse-time feed (G93) are not supported");
+  if (st.feed_mode == FeedMode::inverse_time)
+    fail(column, "canned cycles under inverse-time feed (G93) are not supported");
   if (!(st.feed > 0.0)) fail(column, "a canned cycle before any feed F");
   k.feed = st.feed;
   k.feed_per_rev = st.feed_mode == FeedMode::per_revolution;
   if (k.kind == K::tap) {
-    if (k.feed_per_rev) k.pitch_mm = st.feed;
-    else if (st.spindle_rpm > 0.0) k.pitch_mm = st.feed / st.spindle_rpm;
-    else fail(column, "a tapping cycle before any spindle speed S: the pitch (F / S) is unknown");
+    if (k.feed_per_rev)
+      k.pitch_mm = st.feed;
+    else if (st.spindle_rpm > 0.0)
+      k.pitch_mm = st.feed / st.spindle_rpm;
+    else
+      fail(column, "a tapping cycle before any spindle speed S: the pitch (F / S) is unknown");
   }
   end[2] = *c.r_z;
   fx.cycle = k;
@@ -166,7 +298,7 @@ struct ArcGiven {
     for (const double sign1 : {1.0, -1.0})
       for (const double sign2 : {1.0, -1.0}) {
         const std::array<double, 2> c = arc_centre_of(ArcCentre::incremental, start, axes_of(plane),
-                                                       sign1 * std::abs(offset1_mm), sign2 * std::abs(offset2_mm));
+                                                      sign1 * std::abs(offset1_mm), sign2 * std::abs(offset2_mm));
         if (arc_from_centre(start, end, plane, clockwise, c[0], c[1], turns).arc) return true;
       }
     return false;
@@ -182,8 +314,10 @@ std::string other_readings_advice(const ArcGiven& arc, ArcCentre in_force, int s
     if (r != in_force && arc.fits(r)) fitting.push_back(r);
   if (fitting.empty()) {
     if (arc.fits_unsigned())
-      return fmt::format("; it fits only if {} are distances without their signs, a writing ncpost does not read (the "
-                         "centre is then a guess): post the CL data, or a program with signed {}", letters, letters);
+      return fmt::format(
+          "; it fits only if {} are distances without their signs, a writing ncpost does not read (the "
+          "centre is then a guess): post the CL data, or a program with signed {}",
+          letters, letters);
     ArcCentre nearest = in_force;
     double nearest_mm = std::numeric_limits<double>::infinity();
     for (const ArcCentre r : {ArcCentre::incremental, ArcCentre::centre_to_start, ArcCentre::absolute}) {
@@ -191,9 +325,10 @@ std::string other_readings_advice(const ArcGiven& arc, ArcCentre in_force, int s
       if (r != in_force && std::abs(rr[1] - rr[0]) < nearest_mm) nearest = r, nearest_mm = std::abs(rr[1] - rr[0]);
     }
     const std::array<double, 2> rr = arc.radii(nearest);
-    return fmt::format("; no other reading of {} (from the start, from the centre, absolute, unsigned) fits it either "
-                       "(the nearest: if {}, radius {:.4f} mm at the start, {:.4f} mm at the end)",
-                       letters, arc_centre_meaning(nearest, letters), rr[0], rr[1]);
+    return fmt::format(
+        "; no other reading of {} (from the start, from the centre, absolute, unsigned) fits it either "
+        "(the nearest: if {}, radius {:.4f} mm at the start, {:.4f} mm at the end)",
+        letters, arc_centre_meaning(nearest, letters), rr[0], rr[1]);
   }
   if (set_at_line) {
     std::string readings;
@@ -206,8 +341,8 @@ std::string other_readings_advice(const ArcGiven& arc, ArcCentre in_force, int s
                        arc_centre_name(fitting[0]));
   std::string readings;
   for (const ArcCentre r : fitting)
-    readings += fmt::format("{}{} (--arc-centre {})", readings.empty() ? "" : ", or if ", arc_centre_meaning(r, letters),
-                            arc_centre_name(r));
+    readings += fmt::format("{}{} (--arc-centre {})", readings.empty() ? "" : ", or if ",
+                            arc_centre_meaning(r, letters), arc_centre_name(r));
   return fmt::format("; it fits if {}: post with the one the program's control uses", readings);
 }
 
@@ -256,7 +391,9 @@ struct Interpreter::Words {
 
 Interpreter::Interpreter(std::string file_name, std::string axis_letters, bool default_inch, IntegerDwell integer_dwell,
                          ArcCentre arc_centre)
-    : file_(std::move(file_name)), axis_letters_(std::move(axis_letters)), integer_dwell_(integer_dwell),
+    : file_(std::move(file_name)),
+      axis_letters_(std::move(axis_letters)),
+      integer_dwell_(integer_dwell),
       arc_centre_option_(arc_centre) {
   state_.inch = state_.feed_inch = default_inch;
   state_.arc_centre = arc_centre;
@@ -331,8 +468,8 @@ Interpreter::Words Interpreter::read_words(const Context& cx) const {
       const double scaled = word.value * 10.0;
       const double rounded = std::round(scaled);
       if (word.value < 0.0 || std::abs(scaled - rounded) > kCodeDecimalSlack || rounded > kMaxCode10)
-        fail(word.column, fmt::format("expected a {}-code number such as {}, found {}{}", L, L == 'G' ? "1 or 43.4" : "3",
-                                      L, word.value));
+        fail(word.column, fmt::format("expected a {}-code number such as {}, found {}{}", L,
+                                      L == 'G' ? "1 or 43.4" : "3", L, word.value));
       const Code code{static_cast<int>(rounded), word.column};
       if (L == 'G') {
         if (w.g_count == static_cast<int>(w.g.size())) fail(word.column, "too many G words in one block");
@@ -364,23 +501,41 @@ Interpreter::Words Interpreter::read_words(const Context& cx) const {
 void Interpreter::check_letter(const Context& cx, const Word& word) const {
   const char L = word.letter;
   switch (L) {
-    case 'E': cx.fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
-    case 'U': case 'V': case 'W':
+    case 'E':
+      cx.fail(word.column, "E words are not supported (and numbers have no exponent in G-code)");
+    case 'U':
+    case 'V':
+    case 'W':
       if (!word_axes_ || axis_letters_.find(L) == std::string::npos)
         cx.fail(word.column, fmt::format("the {} axis is not supported", L));
       break;
-    case 'A': case 'B': case 'C':
+    case 'A':
+    case 'B':
+    case 'C':
       if (axis_letters_.find(L) == std::string::npos)
         cx.fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
       break;
-    case 'X': case 'Y': case 'Z':
+    case 'X':
+    case 'Y':
+    case 'Z':
       if (word_axes_ && axis_letters_.find(L) == std::string::npos)
         cx.fail(word.column, fmt::format("the machine has no {} axis (its axes are {})", L, axis_letters_));
       break;
-    case 'D': case 'F': case 'H': case 'I': case 'J': case 'K': case 'L': case 'P': case 'Q': case 'R':
-    case 'S': case 'T':
+    case 'D':
+    case 'F':
+    case 'H':
+    case 'I':
+    case 'J':
+    case 'K':
+    case 'L':
+    case 'P':
+    case 'Q':
+    case 'R':
+    case 'S':
+    case 'T':
       break;
-    default: cx.fail(word.column, fmt::format("unknown word '{}'", L));
+    default:
+      cx.fail(word.column, fmt::format("unknown word '{}'", L));
   }
 }
 
@@ -392,9 +547,9 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
   for (int k = 0; k < w.g_count; ++k) {
     const Code c = w.g[static_cast<std::size_t>(k)];
     const auto word_of = [&](char L) { return w.has(L) ? std::optional<double>(w.get(L)) : std::nullopt; };
-    const ControlWord cw = classify_control_word(
-        c.code10, has_axis_words, w.has('I') || w.has('J') || w.has('K') || w.has('R'), word_of('P'), word_of('Q'),
-        word_of('L'));
+    const ControlWord cw =
+        classify_control_word(c.code10, has_axis_words, w.has('I') || w.has('J') || w.has('K') || w.has('R'),
+                              word_of('P'), word_of('Q'), word_of('L'));
     if (cw.action != ControlWordAction::none) {
       if (cw.action == ControlWordAction::refuse) fail(c.column, cw.text);
       if (cw.action == ControlWordAction::drop) {
@@ -403,7 +558,8 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
       }
       const bool inch = cw.action == ControlWordAction::length_inch || cw.action == ControlWordAction::units_inch;
       if (codes.control_units.column)
-        fail(c.column, fmt::format("{} and {} both set the units", g_name(codes.control_units.code10), g_name(c.code10)));
+        fail(c.column,
+             fmt::format("{} and {} both set the units", g_name(codes.control_units.code10), g_name(c.code10)));
       codes.control_units = c;
       codes.control_inch = inch;
       codes.control_feeds_too = cw.action == ControlWordAction::units_inch || cw.action == ControlWordAction::units_mm;
@@ -422,7 +578,8 @@ void Interpreter::group_g_codes(const Context& cx, const Words& w, Codes& codes)
       continue;
     }
     if (codes.in_group[gi])
-      fail(c.column, fmt::format("{} and {} are in the same modal group", g_name(codes.group[gi].code10), g_name(c.code10)));
+      fail(c.column,
+           fmt::format("{} and {} are in the same modal group", g_name(codes.group[gi].code10), g_name(c.code10)));
     codes.in_group[gi] = true;
     codes.group[gi] = c;
   }
@@ -442,19 +599,46 @@ bool Interpreter::has_axis_words(const Words& w) const {
 // M codes by group; the ones not acted on are passed through
 void Interpreter::group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx) {
   const auto take = [&](Code& slot, const Code& c) {
-    if (slot.code10 >= 0) cx.fail(c.column, fmt::format("M{} and M{} are in the same modal group", slot.code10, c.code10));
+    if (slot.code10 >= 0)
+      cx.fail(c.column, fmt::format("M{} and M{} are in the same modal group", slot.code10, c.code10));
     slot = c;
   };
   for (int k = 0; k < w.m_count; ++k) {
     const Code c = w.m[static_cast<std::size_t>(k)];
     switch (c.code10) {
-      case 0: case 1: case 2: case 30: case 60: take(codes.m_stop, c); break;
-      case 3: case 4: case 5: take(codes.m_spindle, c); break;
-      case 6: take(codes.m_tool, c); break;
-      case 7: case 8: case 9: take(codes.m_coolant, c); break;
-      case 128: case 129: case 428: case 429: take(codes.m_rtcp, c); break;
-      case 97: case 98: case 99: take(codes.m_call, c); break;
-      case 91: case 92:
+      case 0:
+      case 1:
+      case 2:
+      case 30:
+      case 60:
+        take(codes.m_stop, c);
+        break;
+      case 3:
+      case 4:
+      case 5:
+        take(codes.m_spindle, c);
+        break;
+      case 6:
+        take(codes.m_tool, c);
+        break;
+      case 7:
+      case 8:
+      case 9:
+        take(codes.m_coolant, c);
+        break;
+      case 128:
+      case 129:
+      case 428:
+      case 429:
+        take(codes.m_rtcp, c);
+        break;
+      case 97:
+      case 98:
+      case 99:
+        take(codes.m_call, c);
+        break;
+      case 91:
+      case 92:
         if (has_axis_words(w)) cx.fail(c.column, fmt::format(kMachineDatumM, c.code10));
         [[fallthrough]];
       default:
@@ -501,11 +685,13 @@ void Interpreter::apply_feed_spindle_tool(const Context& cx, const Words& w, con
   if (w.has('S')) {
     if (w.get('S') < 0.0 || w.get('S') > kMaxWordValue) fail(w.col('S'), "expected a spindle speed within 0 .. 1e9");
     st.spindle_rpm = w.get('S');
-    if (st.spindle != cl::Spindle::Direction::off) fx.spindle = cl::Spindle{cx.at(w.col('S')), st.spindle, st.spindle_rpm};
+    if (st.spindle != cl::Spindle::Direction::off)
+      fx.spindle = cl::Spindle{cx.at(w.col('S')), st.spindle, st.spindle_rpm};
   }
   if (w.has('T')) {
     const double t = w.get('T');
-    if (t < 0.0 || t != std::floor(t) || t > kMaxWordValue) fail(w.col('T'), "expected a tool number (an integer >= 0)");
+    if (t < 0.0 || t != std::floor(t) || t > kMaxWordValue)
+      fail(w.col('T'), "expected a tool number (an integer >= 0)");
     st.tool = static_cast<int>(t);
   }
   if (codes.m_tool.code10 == 6) fx.tool_change = cl::ToolChange{cx.at(codes.m_tool.column), st.tool, std::nullopt};
@@ -575,8 +761,9 @@ void Interpreter::apply_arc_distance(const Context& cx, const Codes& codes) {
   if (arc_centre_option_ != ArcCentre::incremental && said != arc_centre_option_)
     cx.fail(c.column, fmt::format("{} says I, J and K {} ({}), which contradicts --arc-centre {}: post without "
                                   "--arc-centre {} (the program says how it writes arc centres)",
-                                  g_name(c.code10), said == ArcCentre::absolute ? "are the centre's coordinates"
-                                                                                : "are the vector from the start to the centre",
+                                  g_name(c.code10),
+                                  said == ArcCentre::absolute ? "are the centre's coordinates"
+                                                              : "are the vector from the start to the centre",
                                   arc_centre_name(said), arc_centre_name(arc_centre_option_),
                                   arc_centre_name(arc_centre_option_)));
   state_.arc_centre = said;
@@ -594,7 +781,8 @@ void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Cod
   if (c.code10 == 541) {
     const std::optional<std::string> n =
         w.has('P') ? work_offset_name(fmt::format("G54.1 P{}", w.get('P'))) : std::optional<std::string>();
-    if (!n) cx.fail(w.has('P') ? w.col('P') : c.column, "G54.1 needs P1 .. P300 (the number of the extended work offset)");
+    if (!n)
+      cx.fail(w.has('P') ? w.col('P') : c.column, "G54.1 needs P1 .. P300 (the number of the extended work offset)");
     name = *n;
   }
   const bool fixed = frames_.fixed();
@@ -604,7 +792,8 @@ void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Cod
   st.work_offset = name;
   if (word_axes_ && fixed && name != frames_.base())
     cx.fail(c.column, fmt::format("{}: a second work offset on the machine {}, whose words are no Cartesian frame: "
-                                  "post the operations of each set-up apart", name, axis_letters_));
+                                  "post the operations of each set-up apart",
+                                  name, axis_letters_));
   if (const std::string why = frames_.select(name); !why.empty())
     cx.fail(c.column, moved_line ? fmt::format("{} (selected at line {})", why, moved_line) : why);
   if (fixed && name != frames_.base()) {
@@ -619,9 +808,10 @@ void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Cod
                                 : std::string(),
                             frames_.source_of(name)));
   } else if (c.code10 != 540) {
-    notice_once("work-offset", cx.line_number, c.column,
-                fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
-                            name));
+    notice_once(
+        "work-offset", cx.line_number, c.column,
+        fmt::format("{} work offset: coordinates are taken in W as written (the job's workpiece origin places W)",
+                    name));
   }
 }
 
@@ -651,7 +841,8 @@ void Interpreter::power_on(const std::string& codes, const std::string& source, 
   const bool inch = state_.inch, feed_inch = state_.feed_inch;
   BlockEffect scratch;  // cancel words (G40, G49, G80) change nothing to post
   apply(block, 0, codes, scratch);
-  if (scratch.has_motion) throw InputError({source, 1, 0}, "the power-on state moves the machine: expected G codes only");
+  if (scratch.has_motion)
+    throw InputError({source, 1, 0}, "the power-on state moves the machine: expected G codes only");
   if (units_given) state_.inch = inch, state_.feed_inch = feed_inch;
   state_.units_programmed = false;
   state_.work_offset_line = 0;
@@ -668,7 +859,8 @@ std::string Interpreter::g10_offset_name(const Context& cx, const Words& w, int 
   const int n = static_cast<int>(p);
   const auto control_needed = [&](const char* what) {
     cx.fail(column, fmt::format("G10 L{} P{} {}: say which control the program is for with --dialect (a dialect whose "
-                                "[input] control is \"fanuc\" or \"linuxcnc\")", kind, n, what));
+                                "[input] control is \"fanuc\" or \"linuxcnc\")",
+                                kind, n, what));
   };
   if (kind == 20 && control_ == F::fanuc) {
     if (const std::optional<std::string> name = work_offset_name(fmt::format("G54.1 P{}", n))) return *name;
@@ -679,8 +871,9 @@ std::string Interpreter::g10_offset_name(const Context& cx, const Words& w, int 
   if (n == 0) {
     if (control_ == F::linuxcnc) return frames_.active();
     if (control_ == F::fanuc)
-      cx.fail(w.col('P'), "G10 L2 P0 sets the external work offset (added to every offset): not supported; remove it "
-                          "and give its values in the offsets of --work-offsets");
+      cx.fail(w.col('P'),
+              "G10 L2 P0 sets the external work offset (added to every offset): not supported; remove it "
+              "and give its values in the offsets of --work-offsets");
     control_needed("is the active offset on LinuxCNC but the external offset on Fanuc");
   }
   if (const std::optional<std::string> name = work_offset_of_register(n)) return *name;
@@ -708,10 +901,12 @@ void Interpreter::apply_g10(const Context& cx, const Words& w, const Codes& code
     if (!(std::abs(*values[i]) <= kMaxCoordinate)) cx.fail(w.col(L), fmt::format("{} is out of range", L));
     if (reading && !st.known[i])
       cx.fail(w.col(L), fmt::format("G10 L20 sets {} so that the current position reads {}, and where {} stands is "
-                                    "not known yet (no motion has programmed it)", L, w.get(L), L));
+                                    "not known yet (no motion has programmed it)",
+                                    L, w.get(L), L));
   }
-  if (word_axes_) cx.fail(column, fmt::format("G10 on the machine {}, whose words are no Cartesian frame: not supported",
-                                              axis_letters_));
+  if (word_axes_)
+    cx.fail(column,
+            fmt::format("G10 on the machine {}, whose words are no Cartesian frame: not supported", axis_letters_));
   const std::string why = reading ? frames_.set_reading(name, st.position, values) : frames_.set_value(name, values);
   if (!why.empty()) cx.fail(column, why);
   frames_.note_source(name, fmt::format("G10 at line {}", cx.line_number));
@@ -745,19 +940,23 @@ void Interpreter::apply_local_offset(const Context& cx, const Words& w, const Co
     if (!(std::abs(*values[i]) <= kMaxCoordinate)) cx.fail(w.col(L), fmt::format("{} is out of range", L));
     if (code == 92 && !st.known[i])
       cx.fail(w.col(L), fmt::format("G92 makes the current position read {}{}, and where {} stands is not known yet "
-                                    "(no motion has programmed it)", L, w.get(L), L));
+                                    "(no motion has programmed it)",
+                                    L, w.get(L), L));
     words += fmt::format(" {}{}", L, w.get(L));
   }
   if (words.empty()) cx.fail(c.column, fmt::format("G{} without axis words", code));
-  if (code == 52) frames_.set_local(values);
-  else frames_.set_local_reading(st.position, values);
+  if (code == 52)
+    frames_.set_local(values);
+  else
+    frames_.set_local_reading(st.position, values);
   local_code_ = code;
   local_line_ = cx.line_number;
   const std::array<double, 6>& d = frames_.local();
   notice_once(fmt::format("G{}", code), cx.line_number, c.column,
               fmt::format("G{}{}: the coordinates after it are shifted by X{:+.4f} Y{:+.4f} Z{:+.4f} mm into the "
                           "posted program's frame (which writes the shift into its coordinates, not the G{}); "
-                          "later G{} blocks the same way", code, words, d[0], d[1], d[2], code, code));
+                          "later G{} blocks the same way",
+                          code, words, d[0], d[1], d[2], code, code));
 }
 
 // G43 H<n> (and G43.4, G43.5, G234): the tool's length from register n, which the post writes
@@ -793,12 +992,14 @@ void Interpreter::check_length_in_force(const Context& cx, const Words& w, Motio
       notice_once("rapid-after-G49", cx.line_number, column,
                   fmt::format("a rapid in Z with the tool length cancelled (G49 or H0 at line {}) is posted with the "
                               "length in force: the tool tip at the programmed Z (a tool length above the spindle's "
-                              "gauge point there)", state_.length_cancelled_line));
+                              "gauge point there)",
+                              state_.length_cancelled_line));
     return;
   }
   cx.fail(column, fmt::format("a cutting motion with the tool length cancelled (G49 or H0 at line {}): the post places "
                               "the tool tip with the tool's length; program G43 H.. before it, or move in machine "
-                              "coordinates (G28, G53)", state_.length_cancelled_line));
+                              "coordinates (G28, G53)",
+                              state_.length_cancelled_line));
 }
 
 // tool length and RTCP/TCPM: G43.4/G43.5/G234 ... G43/G49, M128/M129, M428/M429, TRAORI/TRAFOOF
@@ -807,9 +1008,12 @@ void Interpreter::apply_rtcp(const Context& cx, const Codes& codes) {
   const bool was_on = st.rtcp != Rtcp::off;
   if (codes.in(g_length)) {
     const int c = codes.of(g_length).code10;
-    if (c == 434 || c == 435) st.rtcp = Rtcp::g43_4;
-    else if (c == 2340) st.rtcp = Rtcp::g234;
-    else if (st.rtcp == Rtcp::g43_4 || st.rtcp == Rtcp::g234) st.rtcp = Rtcp::off;  // G43, G43.1, G49
+    if (c == 434 || c == 435)
+      st.rtcp = Rtcp::g43_4;
+    else if (c == 2340)
+      st.rtcp = Rtcp::g234;
+    else if (st.rtcp == Rtcp::g43_4 || st.rtcp == Rtcp::g234)
+      st.rtcp = Rtcp::off;  // G43, G43.1, G49
   }
   if (codes.m_rtcp.code10 == 428) st.rtcp = Rtcp::m428;
   if (codes.m_rtcp.code10 == 429 && st.rtcp == Rtcp::m428) st.rtcp = Rtcp::off;
@@ -837,12 +1041,24 @@ void Interpreter::apply_motion_mode(const Codes& codes, BlockEffect& fx) {
     }
   }
   switch (code) {
-    case 0: st.motion = MotionMode::rapid; break;
-    case 10: st.motion = MotionMode::linear; break;
-    case 20: st.motion = MotionMode::arc_cw; break;
-    case 30: st.motion = MotionMode::arc_ccw; break;
-    case 800: st.motion = MotionMode::none; break;
-    default: st.motion = MotionMode::cycle; break;  // G73 G74 G81-G86 G89
+    case 0:
+      st.motion = MotionMode::rapid;
+      break;
+    case 10:
+      st.motion = MotionMode::linear;
+      break;
+    case 20:
+      st.motion = MotionMode::arc_cw;
+      break;
+    case 30:
+      st.motion = MotionMode::arc_ccw;
+      break;
+    case 800:
+      st.motion = MotionMode::none;
+      break;
+    default:
+      st.motion = MotionMode::cycle;
+      break;  // G73 G74 G81-G86 G89
   }
 }
 
@@ -851,8 +1067,9 @@ void Interpreter::read_cycle_words(const Context& cx, const Words& w, const Code
   ModalState& st = state_;
   const Fail& fail = cx.fail;
   const double length_scale = st.inch ? kMmPerInch : 1.0;
-  if (st.incremental) fail(codes.of(g_motion).column ? codes.of(g_motion).column : cx.block.column,
-                           "canned cycles under G91 (incremental Z and R) are not supported");
+  if (st.incremental)
+    fail(codes.of(g_motion).column ? codes.of(g_motion).column : cx.block.column,
+         "canned cycles under G91 (incremental Z and R) are not supported");
   if (w.has('Z')) st.cycle.bottom_z = w.get('Z') * length_scale + frames_.shift()[2];
   if (w.has('R')) st.cycle.r_z = w.get('R') * length_scale + frames_.shift()[2];
   if (w.has('Q')) st.cycle.q = w.get('Q') * length_scale;
@@ -887,9 +1104,11 @@ double Interpreter::dwell_seconds(const Context& cx, const Words& w, char letter
   if (!(v > 0.0) || w.has_point(letter) || integer_dwell_ == IntegerDwell::seconds) return check(v);
   if (integer_dwell_ == IntegerDwell::milliseconds) return check(v / 1000.0);
   if (v >= kSurelyMillisecondsFrom) {
-    notice_once("dwell-ms", cx.line_number, column,
-                fmt::format("{} {}{} (no decimal point) is read as {} ms, as Fanuc and Haas read it: as seconds it would "
-                            "be a dwell of {:.1f} min (--dwell-p s reads it so)", code, letter, v, v, v / 60.0));
+    notice_once(
+        "dwell-ms", cx.line_number, column,
+        fmt::format("{} {}{} (no decimal point) is read as {} ms, as Fanuc and Haas read it: as seconds it would "
+                    "be a dwell of {:.1f} min (--dwell-p s reads it so)",
+                    code, letter, v, v, v / 60.0));
     return check(v / 1000.0);
   }
   cx.fail(column, fmt::format("{} {}{} (no decimal point) is {} ms on Fanuc and Haas but {} s on LinuxCNC: say which "
@@ -960,8 +1179,8 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
   bool intermediate_known = true;
   for (std::size_t i = 0; i < 6; ++i)
     if (slots_[i] && w.has(slots_[i]) && !st.known[i]) intermediate_known = false;
-  const bool moves = home_return ? has_axis && intermediate_known
-                                 : (has_axis || (is_arc && codes.in(g_motion) && arc_words));
+  const bool moves =
+      home_return ? has_axis && intermediate_known : (has_axis || (is_arc && codes.in(g_motion) && arc_words));
   if (!moves) return;
   if (fx.machine_move && !home_return) {  // G53: the reader places the machine coordinates
     if (st.motion != MotionMode::rapid && st.motion != MotionMode::linear)
@@ -987,16 +1206,18 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     return;
   }
   if (st.motion == MotionMode::none)
-    fail(axis_column, "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
-                      "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or "
-                      "post with a dialect whose [input] power_on names it (fanuc, haas: G0)");
+    fail(axis_column,
+         "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
+         "(G0 or G1, a machine parameter on Fanuc) is not in the program; write G0 or G1 in the block, or "
+         "post with a dialect whose [input] power_on names it (fanuc, haas: G0)");
   if (!word_axes_) check_length_in_force(cx, w, st.motion, axis_column);
   st.moved_in_work = true;
   note_moved(cx);
   if (word_axes_ && (is_arc || st.motion == MotionMode::cycle))
     fail(codes.in(g_motion) ? codes.of(g_motion).column : cx.block.column,
          fmt::format("{} on a machine with the axes {}: arcs and canned cycles need X, Y and Z (post the moves "
-                     "as G0/G1 blocks)", is_arc ? "an arc" : "a canned cycle", axis_letters_));
+                     "as G0/G1 blocks)",
+                     is_arc ? "an arc" : "a canned cycle", axis_letters_));
   fx.has_motion = true;
   fx.motion = st.motion;
   fx.start = st.position;
@@ -1006,7 +1227,8 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     if (!w.has('F')) fail(axis_column, "inverse-time feed (G93): every G1, G2, G3 block needs an F word");
     fx.inverse_time = true;
   }
-  if (st.motion == MotionMode::cycle) cycle_hole(st, cx.line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
+  if (st.motion == MotionMode::cycle)
+    cycle_hole(st, cx.line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
   fx.end = end;
   st.position = end;
   if (st.motion == MotionMode::cycle)
@@ -1023,7 +1245,8 @@ ProgramPoint Interpreter::motion_end(const Context& cx, const Words& w, int axis
   if (st.rtcp != Rtcp::off && (shift[3] != 0.0 || shift[4] != 0.0 || shift[5] != 0.0))
     cx.fail(axis_column, fmt::format("{} turns the rotary axes against {} (a rotary value in the offsets), and the "
                                      "program moves the tool tip (RTCP): not supported; post the operations of each "
-                                     "set-up apart", st.work_offset, frames_.base()));
+                                     "set-up apart",
+                                     st.work_offset, frames_.base()));
   std::string assumed, incremental;  // axes not programmed yet; axes moved incrementally from an unknown start
   const auto add = [](std::string& list, char L) { list += list.empty() ? std::string(1, L) : std::string(", ") + L; };
   for (std::size_t i = 0; i < 6; ++i) {
@@ -1069,11 +1292,14 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   const char normal_letter = offset_letter[ax.normal];
   if (w.has(normal_letter))
     fail(w.col(normal_letter), fmt::format("{} is not used by an arc in the {} plane", normal_letter,
-                                           st.plane == Plane::xy ? "G17" : st.plane == Plane::zx ? "G18" : "G19"));
+                                           st.plane == Plane::xy   ? "G17"
+                                           : st.plane == Plane::zx ? "G18"
+                                                                   : "G19"));
   int turns = 1;
   if (w.has('P')) {
     const double p = w.get('P');
-    if (p < 1.0 || p != std::floor(p) || p > kMaxArcTurns) fail(w.col('P'), "expected a number of turns P (an integer >= 1)");
+    if (p < 1.0 || p != std::floor(p) || p > kMaxArcTurns)
+      fail(w.col('P'), "expected a number of turns P (an integer >= 1)");
     turns = static_cast<int>(p);
   }
   const bool clockwise = st.motion == MotionMode::arc_cw;
@@ -1090,9 +1316,10 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
     if (!w.has(l1) && !w.has(l2)) {
       // NX posts for some controls leave them out where they equal the last arc's: they are not modal
       const std::string last =
-          last_arc_line_ ? fmt::format("; they are not modal: the {} of the arc at line {} {} not carried over (write "
-                                       "the centre or R on every arc)",
-                                       last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are")
+          last_arc_line_ ? fmt::format(
+                               "; they are not modal: the {} of the arc at line {} {} not carried over (write "
+                               "the centre or R on every arc)",
+                               last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are")
                          : std::string();
       fail(column, fmt::format("an arc needs {} and {} (its centre) or R{}", l1, l2, last));
     }
@@ -1102,9 +1329,9 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
       fail(w.col(std::abs(o1) <= kMaxCoordinate ? l2 : l1), "arc centre out of range (expected within +-1e9 mm)");
     // G90.1: the centre is a point of the offset's frame (shifted into the base frame like the end)
     const bool absolute = st.arc_centre == ArcCentre::absolute;
-    const std::array<double, 2> centre =
-        arc_centre_of(st.arc_centre, fx.start, ax, o1 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a1)] : 0.0),
-                      o2 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a2)] : 0.0));
+    const std::array<double, 2> centre = arc_centre_of(
+        st.arc_centre, fx.start, ax, o1 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a1)] : 0.0),
+        o2 + (absolute ? frames_.shift()[static_cast<std::size_t>(ax.a2)] : 0.0));
     outcome = arc_from_centre(fx.start, end, st.plane, clockwise, centre[0], centre[1], turns);
     if (!outcome.arc) {
       const ArcGiven given{fx.start, end, st.plane, clockwise, o1, o2, turns};
@@ -1147,7 +1374,8 @@ void Interpreter::apply_call(const Context& cx, const Words& w, const Codes& cod
     fx.call = call;
     return;
   }
-  if (!w.has('P')) cx.fail(c.column, fmt::format("M{} needs P (the {} it calls)", c.code10, c.code10 == 98 ? "program" : "block"));
+  if (!w.has('P'))
+    cx.fail(c.column, fmt::format("M{} needs P (the {} it calls)", c.code10, c.code10 == 98 ? "program" : "block"));
   call.p = w.get('P');
   if (c.code10 == 97 && !(call.p >= 1.0 && call.p <= 99999.0 && call.p == std::floor(call.p)))
     cx.fail(w.col('P'), "M97 P: expected a block number N1 .. N99999");

@@ -13,13 +13,20 @@ struct Named {
   std::string_view name;
   K keyword;
 };
-constexpr std::array<Named, 15> kKeywords{{{"sub", K::sub},           {"endsub", K::endsub},
-                                           {"return", K::return_},    {"call", K::call},
-                                           {"if", K::if_},            {"elseif", K::elseif},
-                                           {"else", K::else_},        {"endif", K::endif},
-                                           {"while", K::while_},      {"endwhile", K::endwhile},
-                                           {"do", K::do_},            {"repeat", K::repeat},
-                                           {"endrepeat", K::endrepeat}, {"break", K::break_},
+constexpr std::array<Named, 15> kKeywords{{{"sub", K::sub},
+                                           {"endsub", K::endsub},
+                                           {"return", K::return_},
+                                           {"call", K::call},
+                                           {"if", K::if_},
+                                           {"elseif", K::elseif},
+                                           {"else", K::else_},
+                                           {"endif", K::endif},
+                                           {"while", K::while_},
+                                           {"endwhile", K::endwhile},
+                                           {"do", K::do_},
+                                           {"repeat", K::repeat},
+                                           {"endrepeat", K::endrepeat},
+                                           {"break", K::break_},
                                            {"continue", K::continue_}}};
 
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }

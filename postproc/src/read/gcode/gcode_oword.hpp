@@ -15,12 +15,26 @@ namespace ncpost::gcode {
 
 struct OWord {
   enum class Keyword {
-    sub, endsub, return_, call, if_, elseif, else_, endif, while_, endwhile, do_, repeat, endrepeat, break_, continue_
+    sub,
+    endsub,
+    return_,
+    call,
+    if_,
+    elseif,
+    else_,
+    endif,
+    while_,
+    endwhile,
+    do_,
+    repeat,
+    endrepeat,
+    break_,
+    continue_
   };
-  std::string label;           ///< "o100", "o<name>" (normalized: lower case, no blanks)
+  std::string label;  ///< "o100", "o<name>" (normalized: lower case, no blanks)
   Keyword keyword = Keyword::sub;
-  int column = 0;              ///< 1-based column of the 'o'
-  std::size_t argument_at = 0; ///< 0-based offset after the keyword
+  int column = 0;               ///< 1-based column of the 'o'
+  std::size_t argument_at = 0;  ///< 0-based offset after the keyword
 };
 
 /// The o-word statement of `line`, or nullopt when the line is none (a program number `O1000`,

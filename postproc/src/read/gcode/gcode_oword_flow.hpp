@@ -41,7 +41,7 @@ class OWordFlow {
     LoopKind kind;
     std::uint64_t offset;  ///< while: its own line; do, repeat: the first line of the body
     int line;
-    long left = 0;         ///< repeat: turns still to run
+    long left = 0;  ///< repeat: turns still to run
   };
   using K = OWord::Keyword;
 

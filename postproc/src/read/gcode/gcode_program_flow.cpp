@@ -78,25 +78,32 @@ void ProgramFlow::follow(const MacroFlow& flow, std::uint64_t line_offset, int l
          fmt::format("more than {} jumps and loop turns: a loop that never ends? (its condition is never false)",
                      kMaxJumps));
   switch (flow.kind) {
-    case K::go_to: jump_to_block(flow.number, line_number, flow.column, first_line); break;
+    case K::go_to:
+      jump_to_block(flow.number, line_number, flow.column, first_line);
+      break;
     case K::while_do:
       loops_.erase(std::remove_if(loops_.begin(), loops_.end(), [&](const Loop& l) { return l.number == flow.number; }),
                    loops_.end());
-      if (flow.condition) loops_.push_back({flow.number, line_offset, line_number});
-      else skip_loop(flow.number, line_number, flow.column);
+      if (flow.condition)
+        loops_.push_back({flow.number, line_offset, line_number});
+      else
+        skip_loop(flow.number, line_number, flow.column);
       break;
     case K::end_loop: {
-      const auto it = std::find_if(loops_.rbegin(), loops_.rend(), [&](const Loop& l) { return l.number == flow.number; });
+      const auto it =
+          std::find_if(loops_.rbegin(), loops_.rend(), [&](const Loop& l) { return l.number == flow.number; });
       if (it == loops_.rend())
-        fail(line_number, flow.column, fmt::format("END {} without its WHILE [...] DO {} (or DO {})", flow.number,
-                                                   flow.number, flow.number));
+        fail(line_number, flow.column,
+             fmt::format("END {} without its WHILE [...] DO {} (or DO {})", flow.number, flow.number, flow.number));
       const Loop loop = *it;
       loops_.erase(std::next(it).base(), loops_.end());  // it and the loops inside it
       if (!source_.seek(loop.offset, loop.line))
-        fail(line_number, flow.column, "a loop needs to read its lines again, and this input cannot be re-read (a pipe)");
+        fail(line_number, flow.column,
+             "a loop needs to read its lines again, and this input cannot be re-read (a pipe)");
       break;
     }
-    case K::none: break;
+    case K::none:
+      break;
   }
 }
 
@@ -113,7 +120,8 @@ void ProgramFlow::jump_to_block(int n, int line_number, int column, int first_li
   }
   // then from its start up to the GOTO
   if (!source_.seek(0, 1))
-    fail(line_number, column, "GOTO needs to search the program from its start, and this input cannot be re-read (a pipe)");
+    fail(line_number, column,
+         "GOTO needs to search the program from its start, and this input cannot be re-read (a pipe)");
   while (source_.line_number() < line_number) {
     const std::uint64_t offset = source_.next_line_offset();
     if (!source_.next(line)) break;

@@ -91,8 +91,8 @@ std::optional<SubprogramCalls::Position> SubprogramCalls::find(const std::string
 
 void SubprogramCalls::enter(Frame frame, int line, int column) {
   if (frames_.size() >= kMaxDepth)
-    fail(line, column, fmt::format("{} is called more than {} calls deep: a call that never returns?", frame.label,
-                                   kMaxDepth));
+    fail(line, column,
+         fmt::format("{} is called more than {} calls deep: a call that never returns?", frame.label, kMaxDepth));
   if (std::any_of(frames_.begin(), frames_.end(), [&](const Frame& f) { return f.label == frame.label; }))
     fail(line, column, fmt::format("{} calls itself (recursion): not supported", frame.label));
   frame.call_line = line;
@@ -105,7 +105,8 @@ void SubprogramCalls::enter(Frame frame, int line, int column) {
 void SubprogramCalls::call_program(double p, int times, Position back, int line, int column) {
   if (!(p >= 1.0 && p <= static_cast<double>(kMaxProgramNumber) && p == static_cast<double>(static_cast<long>(p))))
     fail(line, column, "M98 needs P, the number of the program it calls (O1 .. O99999999)");
-  if (times < 1 || times > kMaxRepeats) fail(line, column, fmt::format("M98: expected L1 .. L{} (the repeat count)", kMaxRepeats));
+  if (times < 1 || times > kMaxRepeats)
+    fail(line, column, fmt::format("M98: expected L1 .. L{} (the repeat count)", kMaxRepeats));
   const long number = static_cast<long>(p);
   std::optional<Position> body = find(fmt::format("O{}", number), line, column);
   std::string label = fmt::format("O{}", number);
@@ -113,9 +114,10 @@ void SubprogramCalls::call_program(double p, int times, Position back, int line,
     const std::string short_label = fmt::format("O{}", number % 10000);
     const std::optional<Position> split = find(short_label, line, column);
     if (body && split)
-      fail(line, column, fmt::format("M98 P{}: the file holds both O{} and {} (Fanuc reads P{} as {} times {}): write "
-                                     "the repeat count with L", number, number, short_label, number, number / 10000,
-                                     short_label));
+      fail(line, column,
+           fmt::format("M98 P{}: the file holds both O{} and {} (Fanuc reads P{} as {} times {}): write "
+                       "the repeat count with L",
+                       number, number, short_label, number, number / 10000, short_label));
     if (split) {
       body = split;
       label = short_label;
@@ -123,13 +125,16 @@ void SubprogramCalls::call_program(double p, int times, Position back, int line,
     }
   }
   if (!body)
-    fail(line, column, fmt::format("M98 P{}: the file holds no program {} (subprograms in the control's memory or in "
-                                   "other files are not read: append it after M30)", number, label));
+    fail(line, column,
+         fmt::format("M98 P{}: the file holds no program {} (subprograms in the control's memory or in "
+                     "other files are not read: append it after M30)",
+                     number, label));
   enter(Frame{label, 0, back, *body, times - 1, std::nullopt, 0}, line, column);
 }
 
 void SubprogramCalls::call_block(int n, int times, Position back, int line, int column) {
-  if (times < 1 || times > kMaxRepeats) fail(line, column, fmt::format("M97: expected L1 .. L{} (the repeat count)", kMaxRepeats));
+  if (times < 1 || times > kMaxRepeats)
+    fail(line, column, fmt::format("M97: expected L1 .. L{} (the repeat count)", kMaxRepeats));
   const std::string label = fmt::format("N{}", n);
   const std::optional<Position> body = find(label, line, column);
   if (!body) fail(line, column, fmt::format("M97 P{}: the file holds no block N{}", n, n));
@@ -139,8 +144,8 @@ void SubprogramCalls::call_block(int n, int times, Position back, int line, int 
 void SubprogramCalls::call_sub(const std::string& label, const std::vector<ParamValue>& arguments, Parameters& params,
                                Position back, int line, int column) {
   if (arguments.size() > static_cast<std::size_t>(kLocals))
-    fail(line, column, fmt::format("{} call with {} arguments: at most {} (#1 .. #{})", label, arguments.size(),
-                                   kLocals, kLocals));
+    fail(line, column,
+         fmt::format("{} call with {} arguments: at most {} (#1 .. #{})", label, arguments.size(), kLocals, kLocals));
   const std::optional<Position> body = find(label, line, column);
   if (!body) fail(line, column, fmt::format("{} call: the file holds no {} sub", label, label));
   Frame f;
@@ -150,7 +155,8 @@ void SubprogramCalls::call_sub(const std::string& label, const std::vector<Param
   std::array<ParamValue, kLocals> saved{};
   for (int i = 0; i < kLocals; ++i) {
     saved[static_cast<std::size_t>(i)] = params.get(i + 1);
-    params.set(i + 1, static_cast<std::size_t>(i) < arguments.size() ? arguments[static_cast<std::size_t>(i)] : std::nullopt);
+    params.set(i + 1,
+               static_cast<std::size_t>(i) < arguments.size() ? arguments[static_cast<std::size_t>(i)] : std::nullopt);
   }
   f.saved = saved;
   enter(std::move(f), line, column);
@@ -158,11 +164,14 @@ void SubprogramCalls::call_sub(const std::string& label, const std::vector<Param
 
 std::size_t SubprogramCalls::leave(bool m99, Parameters& params, int line, int column) {
   if (frames_.empty())
-    fail(line, column, m99 ? "M99 in the main program (Fanuc: run it again from its start, endlessly): not supported"
-                           : "endsub or return without a call");
+    fail(line, column,
+         m99 ? "M99 in the main program (Fanuc: run it again from its start, endlessly): not supported"
+             : "endsub or return without a call");
   Frame& f = frames_.back();
-  if (m99 && f.saved) fail(line, column, fmt::format("M99 inside the o-word sub {}: expected endsub or return", f.label));
-  if (!m99 && !f.saved) fail(line, column, fmt::format("endsub or return inside {} (called by M98/M97): expected M99", f.label));
+  if (m99 && f.saved)
+    fail(line, column, fmt::format("M99 inside the o-word sub {}: expected endsub or return", f.label));
+  if (!m99 && !f.saved)
+    fail(line, column, fmt::format("endsub or return inside {} (called by M98/M97): expected M99", f.label));
   if (f.repeats_left > 0) {
     --f.repeats_left;
     seek(f.body, line, column);

@@ -40,17 +40,20 @@ std::string WorkFrames::update_shift() {
   for (std::size_t i = 0; i < 6; ++i) {
     if (!used_[i]) continue;
     const std::optional<double> s = shift_of(values, i);
-    if (s) shift[i] = *s;
-    else unknown += fmt::format("{}{}", unknown.empty() ? "" : ", ", kLetters[i]);
+    if (s)
+      shift[i] = *s;
+    else
+      unknown += fmt::format("{}{}", unknown.empty() ? "" : ", ", kLetters[i]);
   }
   if (!unknown.empty()) {
     const std::string given = table_ ? fmt::format("the work offsets file {} does not give", table_->file)
                                      : std::string("no --work-offsets FILE gives");
-    return fmt::format("{}: a second work offset (the program moved in {}): where it lies relative to {} is not known "
-                       "({} {} of both, nor does a G10 L2 of the program): give both offsets' values with "
-                       "--work-offsets FILE (docs/formats.md \"Work offsets\"), or post the operations of each set-up "
-                       "apart",
-                       named(active_), named(base_), named(base_), given, unknown);
+    return fmt::format(
+        "{}: a second work offset (the program moved in {}): where it lies relative to {} is not known "
+        "({} {} of both, nor does a G10 L2 of the program): give both offsets' values with "
+        "--work-offsets FILE (docs/formats.md \"Work offsets\"), or post the operations of each set-up "
+        "apart",
+        named(active_), named(base_), named(base_), given, unknown);
   }
   offset_shift_ = shift;
   combine();
@@ -85,8 +88,10 @@ void WorkFrames::moved() {
   base_ = active_;
   Values& values = values_[base_];
   for (std::size_t i = 0; i < 6; ++i) {
-    if (values[i] && !values[i]->from_base) base_value_[i] = values[i]->v;
-    else values[i] = Value{0.0, true};
+    if (values[i] && !values[i]->from_base)
+      base_value_[i] = values[i]->v;
+    else
+      values[i] = Value{0.0, true};
   }
   offset_shift_ = {};
   combine();

@@ -19,11 +19,11 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
-constexpr int kMaxExtendedOffset = 300;   ///< G54.1 P1 .. P300 (Fanuc 30i; 48 on a 0i)
-constexpr double kMaxOffsetMm = 1e6;      ///< beyond: a typing slip, not a machine
-constexpr int kVarFirst = 5221;           ///< LinuxCNC: G54's X
-constexpr int kVarStride = 20;            ///< G55's X is 5241, ...
-constexpr int kVarOffsets = 9;            ///< G54 .. G59.3
+constexpr int kMaxExtendedOffset = 300;  ///< G54.1 P1 .. P300 (Fanuc 30i; 48 on a 0i)
+constexpr double kMaxOffsetMm = 1e6;     ///< beyond: a typing slip, not a machine
+constexpr int kVarFirst = 5221;          ///< LinuxCNC: G54's X
+constexpr int kVarStride = 20;           ///< G55's X is 5241, ...
+constexpr int kVarOffsets = 9;           ///< G54 .. G59.3
 
 const char* const kRegisterNames[kVarOffsets] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
 
@@ -48,7 +48,8 @@ OffsetValues read_values(const toml::table& t, double length_scale, const std::s
                                    key.str(), name));
     const std::optional<double> value = node.value<double>();
     if (!value || !std::isfinite(*value) || std::abs(*value * length_scale) > kMaxOffsetMm)
-      throw InputError(at(file, node.source()), fmt::format("{} of {}: expected a number within +-1e6 mm", letter, name));
+      throw InputError(at(file, node.source()),
+                       fmt::format("{} of {}: expected a number within +-1e6 mm", letter, name));
     v[slot] = slot < 3 ? *value * length_scale : *value * kRadPerDeg;
   }
   return v;
@@ -71,11 +72,11 @@ WorkOffsetTable parse_toml(const std::string& text, const std::string& file) {
     if (!name)
       throw InputError(at(file, key.source()),
                        fmt::format("'{}' is no work offset (expected G54 .. G59, G59.1 .. G59.3, \"G54.1 P1\" .. "
-                                   "\"G54.1 P300\", or units)", key.str()));
+                                   "\"G54.1 P300\", or units)",
+                                   key.str()));
     const toml::table* t = node.as_table();
     if (!t) throw InputError(at(file, node.source()), fmt::format("{}: expected a table of axis values", *name));
-    if (out.offsets.count(*name))
-      throw InputError(at(file, key.source()), fmt::format("{} is given twice", *name));
+    if (out.offsets.count(*name)) throw InputError(at(file, key.source()), fmt::format("{} is given twice", *name));
     out.offsets[*name] = read_values(*t, length_scale, file, *name);
   }
   return out;
@@ -105,8 +106,7 @@ WorkOffsetTable parse_var_file(const std::string& text, const std::string& file)
     const int k = static_cast<int>(number) - kVarFirst;
     if (number < kVarFirst || k >= kVarOffsets * kVarStride || k % kVarStride >= 6) continue;
     const auto slot = static_cast<std::size_t>(k % kVarStride);
-    if (std::abs(value) > kMaxOffsetMm)
-      throw InputError({file, line_number, 1}, "expected an offset within +-1e6 mm");
+    if (std::abs(value) > kMaxOffsetMm) throw InputError({file, line_number, 1}, "expected an offset within +-1e6 mm");
     out.offsets[kRegisterNames[k / kVarStride]][slot] = slot < 3 ? value : value * kRadPerDeg;
   }
   return out;

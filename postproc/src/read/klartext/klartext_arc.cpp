@@ -64,9 +64,10 @@ ArcResult arc_about_centre(const ProgramPoint& start, const ProgramPoint& end, c
     return out;
   }
   if (std::abs(r1 - r0) > kCircleEndToleranceMm) {
-    out.error = fmt::format("the end point is {:.4f} mm from the centre CC X{:+.4f} Y{:+.4f}, the start {:.4f} mm: "
-                            "not on the circle (the TNC stops here too); check CC",
-                            r1, centre_xy.x(), centre_xy.y(), r0);
+    out.error = fmt::format(
+        "the end point is {:.4f} mm from the centre CC X{:+.4f} Y{:+.4f}, the start {:.4f} mm: "
+        "not on the circle (the TNC stops here too); check CC",
+        r1, centre_xy.x(), centre_xy.y(), r0);
     return out;
   }
   const double sweep = sweep_between(polar_angle(start, centre_xy), polar_angle(end, centre_xy), counter_clockwise);

@@ -23,10 +23,15 @@ struct TwoWord {
   std::string_view seconds[4];
 };
 constexpr TwoWord kTwoWords[] = {
-    {"BEGIN", {"PGM"}},          {"END", {"PGM"}},          {"BLK", {"FORM"}},
-    {"TOOL", {"CALL", "DEF"}},   {"CYCL", {"DEF", "CALL"}}, {"CALL", {"LBL", "PGM"}},
+    {"BEGIN", {"PGM"}},
+    {"END", {"PGM"}},
+    {"BLK", {"FORM"}},
+    {"TOOL", {"CALL", "DEF"}},
+    {"CYCL", {"DEF", "CALL"}},
+    {"CALL", {"LBL", "PGM"}},
     {"FUNCTION", {"TCPM", "RESET", "MODE", "PARAX"}},
-    {"PLANE", {"SPATIAL", "PROJECTED", "EULER", "VECTOR"}}, {"PLANE", {"POINTS", "RELATIV", "AXIAL", "RESET"}},
+    {"PLANE", {"SPATIAL", "PROJECTED", "EULER", "VECTOR"}},
+    {"PLANE", {"POINTS", "RELATIV", "AXIAL", "RESET"}},
 };
 
 class Cursor {
@@ -138,8 +143,27 @@ void read_statement(Cursor& c, Block& b) {
 
 /// Statements whose words the tokenizer reads; the others keep their text for the message.
 bool has_words(std::string_view statement) {
-  for (std::string_view s : {"L", "C", "CC", "CR", "CT", "CP", "TOOL CALL", "TOOL DEF", "BLK FORM", "M", "STOP", "FUNCTION TCPM", "FUNCTION RESET", "RND", "CHF", "LP",
-                             "PLANE SPATIAL", "PLANE EULER", "PLANE VECTOR", "PLANE AXIAL", "PLANE RESET"})
+  for (std::string_view s : {"L",
+                             "C",
+                             "CC",
+                             "CR",
+                             "CT",
+                             "CP",
+                             "TOOL CALL",
+                             "TOOL DEF",
+                             "BLK FORM",
+                             "M",
+                             "STOP",
+                             "FUNCTION TCPM",
+                             "FUNCTION RESET",
+                             "RND",
+                             "CHF",
+                             "LP",
+                             "PLANE SPATIAL",
+                             "PLANE EULER",
+                             "PLANE VECTOR",
+                             "PLANE AXIAL",
+                             "PLANE RESET"})
     if (s == statement) return true;
   return false;
 }

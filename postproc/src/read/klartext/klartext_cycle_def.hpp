@@ -10,10 +10,10 @@
 namespace ncpost::klartext {
 
 struct CycleDef {
-  int number = -1;         ///< 7 (datum shift), 32 (tolerance), 200 ...; -1: not a number
-  int part = -1;           ///< the digit after the point (7.1: 1); -1 when none (200-series)
-  std::vector<Word> words; ///< after the number, tokenized as a block's words (columns in the line)
-  std::string rest;        ///< after the number as written
+  int number = -1;          ///< 7 (datum shift), 32 (tolerance), 200 ...; -1: not a number
+  int part = -1;            ///< the digit after the point (7.1: 1); -1 when none (200-series)
+  std::vector<Word> words;  ///< after the number, tokenized as a block's words (columns in the line)
+  std::string rest;         ///< after the number as written
 };
 
 /// Reads the cycle number and the words of `b` (a CYCL DEF block); words that do not tokenize

@@ -72,8 +72,10 @@ std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double
     c.dwell_s = dwell;
   } else {
     if (dwell > 0.0)
-      return fmt::format("CYCL DEF 200: Q211={} s (a dwell at the depth) with pecks (Q202={} < the depth {}) is not "
-                         "read; program Q211=0 or one plunge", dwell, peck, -depth);
+      return fmt::format(
+          "CYCL DEF 200: Q211={} s (a dwell at the depth) with pecks (Q202={} < the depth {}) is not "
+          "read; program Q211=0 or one plunge",
+          dwell, peck, -depth);
     c.kind = cl::Cycle::Kind::deep;
     c.peck_mm = c.first_peck_mm = peck;
   }

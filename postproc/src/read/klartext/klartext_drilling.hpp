@@ -29,9 +29,9 @@ struct QAssignment {
 std::optional<QAssignment> q_assignment(std::string_view line);
 
 struct DrillingCycle {
-  cl::Cycle cycle;              ///< distances from the hole's top
-  double surface_mm = 0.0;      ///< Q203
-  double return_mm = 0.0;       ///< where the tool stands after a hole, above the surface: max(Q200, Q204)
+  cl::Cycle cycle;          ///< distances from the hole's top
+  double surface_mm = 0.0;  ///< Q203
+  double return_mm = 0.0;   ///< where the tool stands after a hole, above the surface: max(Q200, Q204)
 };
 
 /// CYCL DEF 200 from its parameters, or why not (a sentence naming the parameter).

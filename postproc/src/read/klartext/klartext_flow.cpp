@@ -64,19 +64,22 @@ void ProgramFlow::label(const std::string& key, int line_number) {
   }
   const auto [it, inserted] = labels_.emplace(key, at);
   if (!inserted && it->second != at)
-    fail(line_number, fmt::format("LBL {} is defined twice (lines {} and {})", key, lines_[it->second].number, line_number));
+    fail(line_number,
+         fmt::format("LBL {} is defined twice (lines {} and {})", key, lines_[it->second].number, line_number));
 }
 
 void ProgramFlow::call(const std::string& key, int repeats, int line_number) {
   keep_current();
   const std::size_t at = play_ - 1;
   const std::string statement = fmt::format("CALL LBL {}{}", key, repeats > 0 ? fmt::format(" REP {}", repeats) : "");
-  if (key == "0") fail(line_number, fmt::format("{}: LBL 0 marks the end of a subprogram and cannot be called", statement));
+  if (key == "0")
+    fail(line_number, fmt::format("{}: LBL 0 marks the end of a subprogram and cannot be called", statement));
   const std::size_t target = find(key, statement, line_number);
   if (repeats > 0) {
     if (target > at)
       fail(line_number, fmt::format("{}: LBL {} comes after the call; a repeat runs the lines from the label back to "
-                                    "the call, so the label must come before it", statement, key));
+                                    "the call, so the label must come before it",
+                                    statement, key));
     auto left = repeats_left_.try_emplace(at, repeats).first;
     if (left->second == 0) {
       repeats_left_.erase(left);
@@ -129,7 +132,8 @@ std::size_t ProgramFlow::find(const std::string& key, const std::string& stateme
 void ProgramFlow::count_jump(const std::string& statement, int line_number) {
   if (++jumps_ > kMaxJumps)
     fail(line_number, fmt::format("{}: more than {} jumps and calls: the program loops without end (check the FN "
-                                  "9 .. 12 conditions and the REP counts)", statement, kMaxJumps));
+                                  "9 .. 12 conditions and the REP counts)",
+                                  statement, kMaxJumps));
 }
 
 void ProgramFlow::fail(int line_number, const std::string& what) const {

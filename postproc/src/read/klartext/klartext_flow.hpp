@@ -63,9 +63,9 @@ class ProgramFlow {
   std::function<std::string(std::string_view)> label_in_;
   std::deque<Line> lines_;  ///< kept from the first label statement on
   bool keeping_ = false;
-  std::size_t play_ = 0;         ///< the next line to run, index into lines_ (== size: read on)
-  bool current_kept_ = false;    ///< the current line is lines_[play_ - 1]
-  std::string current_;          ///< the current line when not kept
+  std::size_t play_ = 0;       ///< the next line to run, index into lines_ (== size: read on)
+  bool current_kept_ = false;  ///< the current line is lines_[play_ - 1]
+  std::string current_;        ///< the current line when not kept
   int current_number_ = 0;
   std::map<std::string, std::size_t> labels_;
   std::map<std::size_t, int> repeats_left_;  ///< per CALL ... REP line (index): repeats still to run

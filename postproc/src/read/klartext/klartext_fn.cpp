@@ -34,7 +34,14 @@ std::optional<std::pair<std::string, std::string>> split_at_word(std::string_vie
 /// What FN 1 .. 8 write between their operands, rewritten as a formula.
 std::optional<std::string> fn_formula(int n, const std::string& rhs) {
   switch (n) {
-    case 0: case 1: case 2: case 3: case 5: case 6: case 7: return rhs;
+    case 0:
+    case 1:
+    case 2:
+    case 3:
+    case 5:
+    case 6:
+    case 7:
+      return rhs;
     case 4: {
       const auto parts = split_at_word(rhs, "DIV");
       if (!parts) return std::nullopt;
@@ -45,13 +52,16 @@ std::optional<std::string> fn_formula(int n, const std::string& rhs) {
       if (!parts) return std::nullopt;
       return fmt::format("SQRT(SQ({}) + SQ({}))", parts->first, parts->second);
     }
-    default: return std::nullopt;
+    default:
+      return std::nullopt;
   }
 }
 
-constexpr const char* kFnNames[] = {"assignment", "addition", "subtraction", "multiplication", "division",
-                                    "square root", "sine", "cosine", "root of a sum of squares",
-                                    "IF EQU GOTO", "IF NE GOTO", "IF GT GOTO", "IF LT GOTO", "angle (ANG)"};
+constexpr const char* kFnNames[] = {"assignment",     "addition",   "subtraction",
+                                    "multiplication", "division",   "square root",
+                                    "sine",           "cosine",     "root of a sum of squares",
+                                    "IF EQU GOTO",    "IF NE GOTO", "IF GT GOTO",
+                                    "IF LT GOTO",     "angle (ANG)"};
 
 /// FN 9 .. 12: `IF a OP b GOTO LBL n`.
 std::optional<QStatement> fn_jump(int n, std::string_view body, QError& error) {
@@ -137,8 +147,8 @@ std::string label_defined_in(std::string_view line) {
   while (p < line.size() && std::isdigit(static_cast<unsigned char>(line[p]))) ++p;
   blanks();
   if (upper_of(line.substr(p, 4)) != "LBL ") return "";
-  const std::string_view rest = line.substr(p + 4, line.find(';') == std::string_view::npos ? std::string_view::npos
-                                                                                            : line.find(';') - p - 4);
+  const std::string_view rest =
+      line.substr(p + 4, line.find(';') == std::string_view::npos ? std::string_view::npos : line.find(';') - p - 4);
   return label_of(rest).value_or("");
 }
 

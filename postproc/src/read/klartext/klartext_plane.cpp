@@ -56,17 +56,27 @@ std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::ma
 bool motion_word(const Block& b, std::size_t& i, PlaneRequest& r, std::string& error) {
   const Word& w = b.words[i];
   const auto next_is = [&](const char* n) { return i + 1 < b.words.size() && b.words[i + 1].name == n; };
-  if (w.name == "STAY") r.motion = PlaneRequest::Motion::stay;
-  else if (w.name == "MOVE") r.motion = PlaneRequest::Motion::move;
-  else if (w.name == "TURN") r.motion = PlaneRequest::Motion::turn;
-  else if (w.name == "SEQ" && w.sign && !w.value) r.seq = w.sign == '+' ? 1 : -1;
-  else if ((w.name == "TABLE" || w.name == "COORD") && next_is("ROT")) r.table_rot = w.name == "TABLE", ++i;
-  else if (w.name == "FMAX") r.rapid = true;
-  else if (w.name == "F" && w.value && *w.value > 0.0) r.feed = w.value;
-  else if (w.name == "MB") r.retract = true, i += next_is("MAX") ? 1 : 0;
+  if (w.name == "STAY")
+    r.motion = PlaneRequest::Motion::stay;
+  else if (w.name == "MOVE")
+    r.motion = PlaneRequest::Motion::move;
+  else if (w.name == "TURN")
+    r.motion = PlaneRequest::Motion::turn;
+  else if (w.name == "SEQ" && w.sign && !w.value)
+    r.seq = w.sign == '+' ? 1 : -1;
+  else if ((w.name == "TABLE" || w.name == "COORD") && next_is("ROT"))
+    r.table_rot = w.name == "TABLE", ++i;
+  else if (w.name == "FMAX")
+    r.rapid = true;
+  else if (w.name == "F" && w.value && *w.value > 0.0)
+    r.feed = w.value;
+  else if (w.name == "MB")
+    r.retract = true, i += next_is("MAX") ? 1 : 0;
   else if (w.name == "DIST" || w.name == "ABST") {
-    error = fmt::format("{} MOVE {}: a swivel about a point at a distance from the tool tip is not read; program STAY "
-                        "and position the rotary axes with L (L A+Q120 B+Q121 C+Q122)", b.statement, w.name);
+    error = fmt::format(
+        "{} MOVE {}: a swivel about a point at a distance from the tool tip is not read; program STAY "
+        "and position the rotary axes with L (L A+Q120 B+Q121 C+Q122)",
+        b.statement, w.name);
   } else {
     return false;
   }
@@ -105,8 +115,10 @@ double frame_angle(const Machine& m, const Mat3d& W_R_plane, RotaryAngles a, int
 std::variant<PlaneRequest, std::string> plane_request(const Block& b, const Machine& m) {
   const auto kind = angle_words().find(b.statement);
   if (kind == angle_words().end())
-    return fmt::format("{} is not read (PLANE SPATIAL, EULER, VECTOR, AXIAL and RESET are); have the CAM system "
-                       "write PLANE SPATIAL", b.statement);
+    return fmt::format(
+        "{} is not read (PLANE SPATIAL, EULER, VECTOR, AXIAL and RESET are); have the CAM system "
+        "write PLANE SPATIAL",
+        b.statement);
   PlaneRequest r;
   r.reset = b.statement == "PLANE RESET";
   std::map<std::string, double> values;
@@ -130,7 +142,8 @@ std::variant<PlaneRequest, std::string> plane_request(const Block& b, const Mach
   if (b.statement == "PLANE AXIAL") {
     RotaryAngles a = RotaryAngles::Zero(m.rotary_count());
     for (int k = 0; k < m.rotary_count(); ++k)
-      if (const auto it = values.find(std::string(1, m.rotary(k).letter)); it != values.end()) a[k] = deg_to_rad(it->second);
+      if (const auto it = values.find(std::string(1, m.rotary(k).letter)); it != values.end())
+        a[k] = deg_to_rad(it->second);
     r.axial_rad = a;
     r.W_R_plane = tool_frame_W(m, a);
     return r;
@@ -169,7 +182,8 @@ std::variant<RotaryAngles, std::string> plane_rotary(const Machine& m, const Pla
   bool beyond_limits = false;
   for (const RotarySolution& s : solutions) {
     RotaryAngles a = s.rotary_rad;
-    if (s.free_axis >= 0) a[s.free_axis] = r.table_rot ? frame_angle(m, r.W_R_plane, a, s.free_axis) : current_rad[s.free_axis];
+    if (s.free_axis >= 0)
+      a[s.free_axis] = r.table_rot ? frame_angle(m, r.W_R_plane, a, s.free_axis) : current_rad[s.free_axis];
     const auto admissible = admissible_candidate(m, a, current_rad);
     if (!admissible) {
       beyond_limits = true;
@@ -177,7 +191,8 @@ std::variant<RotaryAngles, std::string> plane_rotary(const Machine& m, const Pla
     }
     const double master_rad = master >= 0 ? admissible->rotary_rad[master] : 0.0;
     if (r.seq != 0 && master_rad * r.seq < -1e-9) continue;
-    if (!best || travel(admissible->rotary_rad, current_rad) < travel(*best, current_rad)) best = admissible->rotary_rad;
+    if (!best || travel(admissible->rotary_rad, current_rad) < travel(*best, current_rad))
+      best = admissible->rotary_rad;
   }
   if (!best)
     return fmt::format("no solution for the plane{} within the rotary travel of machine {}{}",

@@ -40,12 +40,12 @@ struct PlaneRequest {
   Mat3d W_R_plane = Mat3d::Identity();
   std::optional<RotaryAngles> axial_rad;  ///< PLANE AXIAL: the angles (missing axes: 0)
   Motion motion = Motion::stay;
-  int seq = 0;              ///< +1, -1, 0 (none)
+  int seq = 0;  ///< +1, -1, 0 (none)
   bool table_rot = false;
-  bool retract = false;     ///< MB given
-  bool rapid = false;       ///< FMAX
+  bool retract = false;  ///< MB given
+  bool rapid = false;    ///< FMAX
   std::optional<double> feed;
-  bool reset = false;       ///< PLANE RESET
+  bool reset = false;  ///< PLANE RESET
 };
 
 /// The words of a PLANE block (Q parameters resolved); a message naming the statement otherwise.

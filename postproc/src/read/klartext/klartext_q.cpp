@@ -37,9 +37,9 @@ struct Function {
   std::string_view suffix;
 };
 constexpr Function kFunctions[] = {
-    {"SIN", "SIN[", "]"},   {"COS", "COS[", "]"}, {"TAN", "TAN[", "]"}, {"ASIN", "ASIN[", "]"},
+    {"SIN", "SIN[", "]"},   {"COS", "COS[", "]"},   {"TAN", "TAN[", "]"},   {"ASIN", "ASIN[", "]"},
     {"ACOS", "ACOS[", "]"}, {"ATAN", "ATAN[", "]"}, {"SQRT", "SQRT[", "]"}, {"ABS", "ABS[", "]"},
-    {"LN", "LN[", "]"},     {"EXP", "EXP[", "]"}, {"SQ", "[[", "]**2]"}, {"NEG", "[-[", "]]"},
+    {"LN", "LN[", "]"},     {"EXP", "EXP[", "]"},   {"SQ", "[[", "]**2]"},  {"NEG", "[-[", "]]"},
 };
 constexpr std::string_view kRefused[] = {"LOG", "INT", "FRAC", "SGN"};
 
@@ -183,7 +183,8 @@ std::optional<double> QParameters::evaluate(std::string_view text, QError& error
   for (const std::string& q : r.reads())
     if (!get(q)) {
       error = {text.find(q), fmt::format("{} is not set in this program (the TNC would use the value it holds from "
-                                         "before); set it before it is read", q)};
+                                         "before); set it before it is read",
+                                         q)};
       return std::nullopt;
     }
   try {
@@ -192,7 +193,8 @@ std::optional<double> QParameters::evaluate(std::string_view text, QError& error
     const gcode::ParamValue v = e.expression(r.text(), at);
     while (at < r.text().size() && (r.text()[at] == ' ' || r.text()[at] == '\t')) ++at;
     if (at < r.text().size()) {
-      error = {r.source_offset(at), fmt::format("unexpected '{}' after the formula's value", text.substr(r.source_offset(at)))};
+      error = {r.source_offset(at),
+               fmt::format("unexpected '{}' after the formula's value", text.substr(r.source_offset(at)))};
       return std::nullopt;
     }
     if (!v || !std::isfinite(*v)) {

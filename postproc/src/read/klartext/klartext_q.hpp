@@ -46,11 +46,11 @@ std::optional<std::string> q_name_at(std::string_view text, std::size_t& length)
 /// One Q statement: `Q1 = formula` (from a `Q...` block or an FN 0..8, 13 block), or a
 /// conditional jump (FN 9 .. 12: `IF a EQU b GOTO LBL n`).
 struct QStatement {
-  std::string target;     ///< "Q1" (assignment); "" for a jump
-  std::string formula;    ///< the value; for a jump the left side of the comparison
-  std::string compare;    ///< a jump's comparison: "EQU", "NE", "GT", "LT"
-  std::string right;      ///< a jump's right side
-  std::string label;      ///< the jump's label ("5", "\"NAME\"")
+  std::string target;   ///< "Q1" (assignment); "" for a jump
+  std::string formula;  ///< the value; for a jump the left side of the comparison
+  std::string compare;  ///< a jump's comparison: "EQU", "NE", "GT", "LT"
+  std::string right;    ///< a jump's right side
+  std::string label;    ///< the jump's label ("5", "\"NAME\"")
 };
 
 /// True when the jump's comparison holds for `left` and `right`.

@@ -65,8 +65,8 @@ struct BlockWords {
 
 struct KlartextReader::State {
   LineSource source;
-  ProgramFlow flow;   ///< labels, calls and jumps: which line runs next
-  QParameters q;      ///< Q, QL, QR
+  ProgramFlow flow;  ///< labels, calls and jumps: which line runs next
+  QParameters q;     ///< Q, QL, QR
   std::string file;
   Machine machine;
   Setup setup;
@@ -79,15 +79,15 @@ struct KlartextReader::State {
   std::array<int, 6> first_line{};  ///< the line that first programmed each axis
   std::array<bool, 6> first_by_rapid{};
   bool rtcp = false;
-  std::optional<PlaneFrame> plane;            ///< PLANE ...: X Y Z are the tool tip in the plane
-  std::optional<RotaryAngles> plane_rad;      ///< the rotary angles the plane asks (Q120 .. Q122)
-  bool shortest_rotary = false;  ///< M126
+  std::optional<PlaneFrame> plane;        ///< PLANE ...: X Y Z are the tool tip in the plane
+  std::optional<RotaryAngles> plane_rad;  ///< the rotary angles the plane asks (Q120 .. Q122)
+  bool shortest_rotary = false;           ///< M126
   std::optional<double> feed;
   std::optional<double> auto_feed;  ///< TOOL CALL F, for FAUTO
   cl::CutterComp::Side comp = cl::CutterComp::Side::off;
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   double rpm = 0.0;
-  bool delta_radius = false;  ///< TOOL CALL DR/DR2 not 0
+  bool delta_radius = false;               ///< TOOL CALL DR/DR2 not 0
   Vec3d datum_shift_mm = Vec3d::Zero();    ///< CYCL DEF 7: added to absolute X Y Z words
   std::optional<Eigen::Vector2d> centre;   ///< CC
   std::optional<Eigen::Vector2d> tangent;  ///< direction of the last contour element in X Y
@@ -110,8 +110,8 @@ struct KlartextReader::State {
   std::set<std::string> noticed;
 
   std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
-  std::optional<DrillingCycle> drilling;                   ///< CYCL DEF 200, for CYCL CALL and M99
-  std::optional<double> preset_number;                     ///< CYCL DEF 247 Q339
+  std::optional<DrillingCycle> drilling;                  ///< CYCL DEF 200, for CYCL CALL and M99
+  std::optional<double> preset_number;                    ///< CYCL DEF 247 Q339
   int shift_in_plane = 0;  ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
 
   // the current line, for messages
@@ -121,7 +121,10 @@ struct KlartextReader::State {
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, ReaderOptions o)
       : source(in, f, kWhatALineIs),
         flow(source, [](std::string_view l) { return label_defined_in(l); }),
-        file(std::move(f)), machine(m), setup(s), options(o) {
+        file(std::move(f)),
+        machine(m),
+        setup(s),
+        options(o) {
     for (int k = 0; k < machine.rotary_count() && k < 2; ++k)
       rotary_slot[static_cast<std::size_t>(k)] = static_cast<int>(kSlots.find(machine.rotary(k).letter));
   }
@@ -139,8 +142,10 @@ struct KlartextReader::State {
   cl::Location at(int column) const { return {line_number, column}; }
 
   void emit(cl::Record r) {
-    if (settled) out.push_back(std::move(r));
-    else held.push_back(std::move(r));
+    if (settled)
+      out.push_back(std::move(r));
+    else
+      held.push_back(std::move(r));
   }
 
   // ---- the machine -------------------------------------------------------------------------
@@ -153,7 +158,8 @@ struct KlartextReader::State {
     AxisPosition q = AxisPosition::zero(machine.rotary_count());
     q.linear_mm = Vec3d(p[0], p[1], p[2]);
     if (plane) q.linear_mm = plane->origin_W + plane->W_R_plane * q.linear_mm;
-    for (int k = 0; k < machine.rotary_count(); ++k) q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])];
+    for (int k = 0; k < machine.rotary_count(); ++k)
+      q.rotary_rad[k] = p[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])];
     return q;
   }
 
@@ -188,8 +194,9 @@ struct KlartextReader::State {
       throw Infeasible(fmt::format(
           "{}:{}:{}: {}{} {:.3f} {}, beyond the travel {:.3f} .. {:.3f} {} of machine {}: the program does not fit "
           "the machine; {}",
-          file, where.line, where.column, tip_program && !axis.is_rotary() ? "the programmed tool tip needs machine " : "",
-          axis.letter, v * scale, unit, axis.limits->min * scale, axis.limits->max * scale, unit, machine.name,
+          file, where.line, where.column,
+          tip_program && !axis.is_rotary() ? "the programmed tool tip needs machine " : "", axis.letter, v * scale,
+          unit, axis.limits->min * scale, axis.limits->max * scale, unit, machine.name,
           axis.is_rotary() ? "check the program's angles against the machine file"
                            : "check --workpiece-origin and --tool-length, or the machine file"));
     }
@@ -209,7 +216,8 @@ struct KlartextReader::State {
 
   /// A change of mode (M128, M129, PLANE): the machine stays where it is, so the program's X Y Z
   /// of the current position are recomputed in the new mode.
-  template <class Change> void switch_mode(Change change) {
+  template <class Change>
+  void switch_mode(Change change) {
     const bool here = position_known();
     const Vec3d tip_W = here ? tip_of(pos, tip_mode()) : Vec3d::Zero();
     change();
@@ -332,7 +340,8 @@ struct KlartextReader::State {
     if (!begun) {
       if (b.statement.empty() || b.statement == "*") return true;  // comments before BEGIN PGM
       if (b.statement != "BEGIN PGM")
-        fail(b.column, fmt::format("'{}' before BEGIN PGM: a Klartext program starts with BEGIN PGM name MM", b.statement));
+        fail(b.column,
+             fmt::format("'{}' before BEGIN PGM: a Klartext program starts with BEGIN PGM name MM", b.statement));
       begin_program(b);
       return true;
     }
@@ -396,9 +405,11 @@ struct KlartextReader::State {
       if (!st->target.empty()) {
         q.set(st->target, formula_value(b, st->formula));
       } else if (unknown_condition(*st) && rest_is_inert()) {
-        notice(b.column, fmt::format("FN {}: its condition reads a Q parameter this program does not set, but from here "
-                                     "on the program holds only labels, Q parameters and jumps among them: nothing "
-                                     "moves whichever way it jumps, so the program ends here", b.text.substr(0, 1)));
+        notice(b.column,
+               fmt::format("FN {}: its condition reads a Q parameter this program does not set, but from here "
+                           "on the program holds only labels, Q parameters and jumps among them: nothing "
+                           "moves whichever way it jumps, so the program ends here",
+                           b.text.substr(0, 1)));
         end_program(at(b.column));
       } else if (compare_holds(st->compare, formula_value(b, st->formula), formula_value(b, st->right))) {
         flow.jump(st->label, line_number);
@@ -493,8 +504,8 @@ struct KlartextReader::State {
       const auto v = q.get(w.text);
       if (!v)
         fail(w.column, fmt::format("{}{}{}: {} is not set in this program (the TNC would use the value it holds from "
-                                   "before); set it before it is read", w.name, w.sign ? std::string(1, w.sign) : "",
-                                   w.text, w.text));
+                                   "before); set it before it is read",
+                                   w.name, w.sign ? std::string(1, w.sign) : "", w.text, w.text));
       w.value = w.sign == '-' ? -*v : *v;
       w.q_parameter = false;
     }
@@ -508,8 +519,9 @@ struct KlartextReader::State {
     std::string u;
     for (char c : unit) u += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     if (u == "INCH")
-      fail(b.column, "an INCH program: inch Klartext is not read (the TNC's feed unit in inch programs differs "
-                     "between generations); have the CAM system write the program in MM");
+      fail(b.column,
+           "an INCH program: inch Klartext is not read (the TNC's feed unit in inch programs differs "
+           "between generations); have the CAM system write the program in MM");
     if (u != "MM") fail(b.column, "expected BEGIN PGM name MM (the program's name and its unit)");
   }
 
@@ -554,7 +566,9 @@ struct KlartextReader::State {
     std::optional<double> speed;
     bool dr_nonzero = false;
     for (const Word& w : b.words) {
-      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      if (w.q_parameter)
+        fail(w.column,
+             fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       if (w.name.empty()) {
         if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value) || *w.value > 1e9)
           fail(w.column, "expected a tool number (an integer >= 0)");
@@ -574,12 +588,14 @@ struct KlartextReader::State {
       } else if (w.name == "DL") {
         if (w.value && *w.value != 0.0)
           fail(w.column, fmt::format("DL{:+g}: a delta length moves the tool tip along its axis; the post takes the "
-                                     "tool length from --tool-length: program DL+0", *w.value));
+                                     "tool length from --tool-length: program DL+0",
+                                     *w.value));
       } else if (w.name == "DR" || w.name == "DR2") {
         if (w.value && *w.value != 0.0) {
           dr_nonzero = true;
           notice(w.column, fmt::format("{}{:+g}: a delta radius acts only with RL/RR (refused beside it) and 3-D "
-                                       "compensation; the tool tip path is posted as programmed", w.name, *w.value));
+                                       "compensation; the tool tip path is posted as programmed",
+                                       w.name, *w.value));
         }
       } else {
         fail(w.column, fmt::format("'{}' in TOOL CALL is not read (expected n Z S F DL DR)", w.name));
@@ -611,8 +627,8 @@ struct KlartextReader::State {
     while (start > 0 && (std::isdigit(static_cast<unsigned char>(t[start - 1])) || t[start - 1] == '.')) --start;
     const std::string number = end == std::string::npos ? "" : t.substr(start, end + 1 - start);
     if (c.part != 1 || number.empty() || number == "." || number.find('.') != number.rfind('.'))
-      fail(b.column, fmt::format("CYCL DEF 9.{}: expected CYCL DEF 9.1 with the dwell time in s at its end (DWELL 1.5)",
-                                 c.part));
+      fail(b.column,
+           fmt::format("CYCL DEF 9.{}: expected CYCL DEF 9.1 with the dwell time in s at its end (DWELL 1.5)", c.part));
     const double seconds = std::stod(number);
     if (seconds > cl::kMaxDwellSeconds) fail(b.column, fmt::format("CYCL DEF 9.1: a dwell of {:g} s", seconds));
     emit(cl::Dwell{at(b.column), seconds});
@@ -623,8 +639,9 @@ struct KlartextReader::State {
   void cycle_def(const Block& b) {
     const CycleDef c = cycle_def_of(b, file, line_number);
     if (c.number == 32 && c.part >= 0) {
-      notice_once("CYCL DEF 32", b.column, "CYCL DEF 32 (the TNC's path tolerance) is noted, not posted: the post's "
-                                           "tolerance is its own (--tolerance)");
+      notice_once("CYCL DEF 32", b.column,
+                  "CYCL DEF 32 (the TNC's path tolerance) is noted, not posted: the post's "
+                  "tolerance is its own (--tolerance)");
       return;
     }
     if (c.number == 200 && c.part < 0) {
@@ -632,8 +649,10 @@ struct KlartextReader::State {
       return;
     }
     if ((c.number == 332 || c.number == 392) && c.part < 0) {  // DMG's TUNING / ATC: servo dynamics, no motion
-      notice_once("CYCL DEF 332", b.column, fmt::format("CYCL DEF {} (the machine's dynamics tuning) is noted, not "
-                                                        "posted: it moves nothing", c.number));
+      notice_once("CYCL DEF 332", b.column,
+                  fmt::format("CYCL DEF {} (the machine's dynamics tuning) is noted, not "
+                              "posted: it moves nothing",
+                              c.number));
       return;
     }
     if (c.number == 9 && c.part >= 0) {
@@ -641,8 +660,9 @@ struct KlartextReader::State {
       return;
     }
     if (c.number == 19)
-      fail(b.column, "CYCL DEF 19 (working plane): its angles are axis or spatial angles as the machine builder set "
-                     "(a machine parameter), so they are not read; program PLANE SPATIAL or PLANE AXIAL");
+      fail(b.column,
+           "CYCL DEF 19 (working plane): its angles are axis or spatial angles as the machine builder set "
+           "(a machine parameter), so they are not read; program PLANE SPATIAL or PLANE AXIAL");
     if (c.number == 247 && c.part < 0) {
       preset(b);
       return;
@@ -662,7 +682,8 @@ struct KlartextReader::State {
     // in a plane: the shift's axes there are not read, so nothing may move before PLANE RESET or a new PLANE
     if (plane && shift != datum_shift_mm[slot]) shift_in_plane = b.column;
     datum_shift_mm[slot] = shift;
-    notice_once("CYCL DEF 7", b.column, "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
+    notice_once("CYCL DEF 7", b.column,
+                "CYCL DEF 7 (datum shift): the absolute X Y Z words after it are shifted by it");
   }
 
   /// CYCL DEF 247 Q339=n: the program's preset. The job's workpiece origin (--workpiece-origin) is
@@ -675,10 +696,13 @@ struct KlartextReader::State {
     if (preset_number && *preset_number != *number)
       fail(b.column, fmt::format("CYCL DEF 247 Q339={:g}: a second preset (after Q339={:g}) moves the workpiece "
                                  "origin by the preset table, which the post does not have; post each preset's part "
-                                 "on its own", *number, *preset_number));
+                                 "on its own",
+                                 *number, *preset_number));
     preset_number = number;
-    notice_once("CYCL DEF 247", b.column, fmt::format("CYCL DEF 247 Q339={:g}: the preset is taken as the job's "
-                                                      "workpiece origin (--workpiece-origin)", *number));
+    notice_once("CYCL DEF 247", b.column,
+                fmt::format("CYCL DEF 247 Q339={:g}: the preset is taken as the job's "
+                            "workpiece origin (--workpiece-origin)",
+                            *number));
   }
 
   /// CYCL DEF 200 with its Q parameters on the '~' lines.
@@ -693,7 +717,8 @@ struct KlartextReader::State {
       if (!value)
         throw InputError({file, line, 0},
                          fmt::format("Q{}={}: a cycle parameter that is not a number or a Q formula ({}) is not read; "
-                                     "program the value", a->number, a->text, error.what),
+                                     "program the value",
+                                     a->number, a->text, error.what),
                          echo_of(text));
       q[a->number] = *value;
     }
@@ -705,7 +730,8 @@ struct KlartextReader::State {
   /// CYCL CALL or M99: one hole of CYCL DEF 200 where the tool stands (X Y), its top at Q203.
   void call_cycle(cl::Location where, int column) {
     if (!drilling) fail(column, "a cycle call without CYCL DEF 200 before it (other cycles are not read)");
-    if (rtcp) fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
+    if (rtcp)
+      fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
     if (!settled || !known[0] || !known[1] || !known[2])
       fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
     check_no_stale_shift(column);
@@ -733,7 +759,8 @@ struct KlartextReader::State {
       const Word& w = b.words[i];
       const auto refuse = [&](const std::string& why) {
         fail(w.column, fmt::format("FUNCTION TCPM ... {}: {}; ncpost reads F TCP, AXIS POS, PATHCTRL AXIS and "
-                                   "REFPNT TIP-TIP", w.name, why));
+                                   "REFPNT TIP-TIP",
+                                   w.name, why));
       };
       if (w.name == "SPAT") refuse("the rotary words are spatial angles, not machine axes: not read");
       if (w.name == "CONT") refuse("a contouring feed over all axes: not read");
@@ -750,16 +777,20 @@ struct KlartextReader::State {
 
   // CC X Y (or IX IY from the last position; a missing coordinate: the last position's)
   void circle_centre(const Block& b) {
-    if (!known[0] || !known[1]) fail(b.column, "CC before X and Y are programmed (the pole's missing coordinates are the last position's)");
+    if (!known[0] || !known[1])
+      fail(b.column, "CC before X and Y are programmed (the pole's missing coordinates are the last position's)");
     Eigen::Vector2d c(pos[0], pos[1]);
     for (const Word& w : b.words) {
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
       if (slot != 0 && slot != 1)
         fail(w.column, fmt::format("'{}' in CC: expected X and Y (the working plane of the tool axis Z)", w.name));
-      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      if (w.q_parameter)
+        fail(w.column,
+             fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
-      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value : *w.value + (plane ? 0.0 : datum_shift_mm[slot]);
+      c[slot] = incremental ? pos[static_cast<std::size_t>(slot)] + *w.value
+                            : *w.value + (plane ? 0.0 : datum_shift_mm[slot]);
     }
     centre = c;
   }
@@ -773,13 +804,16 @@ struct KlartextReader::State {
     if (rtcp) fail(b.column, fmt::format("{} under M128 / FUNCTION TCPM is not read; M129 first", b.statement));
     if (!held_motions.empty())
       fail(b.column, fmt::format("{} while earlier rapids wait for X, Y and Z: program X, Y and Z on a rapid before "
-                                 "the PLANE", b.statement));
+                                 "the PLANE",
+                                 b.statement));
     if (r.retract)
       fail(b.column, fmt::format("{} ... MB (a retract along the tool axis before the swivel) is not read; program "
-                                 "the retract with L or M140 before the PLANE", b.statement));
+                                 "the retract with L or M140 before the PLANE",
+                                 b.statement));
     if (r.motion == PlaneRequest::Motion::move)
       fail(b.column, fmt::format("{} MOVE is not read (the tool tip follows the swivel); program STAY and position the "
-                                 "rotary axes with L A+Q120 B+Q121 C+Q122", b.statement));
+                                 "rotary axes with L A+Q120 B+Q121 C+Q122",
+                                 b.statement));
     if (r.reset && !plane && r.motion == PlaneRequest::Motion::stay) {
       notice_once("PLANE RESET", b.column, "PLANE RESET STAY: no tilted plane is active, nothing moves");
       return;
@@ -788,7 +822,8 @@ struct KlartextReader::State {
     RotaryAngles target = r.reset ? RotaryAngles(RotaryAngles::Zero(now.size())) : now;
     if (!r.reset) {
       auto angles = plane_rotary(machine, r, now);
-      if (const std::string* why = std::get_if<std::string>(&angles)) fail(b.column, fmt::format("{}: {}", b.statement, *why));
+      if (const std::string* why = std::get_if<std::string>(&angles))
+        fail(b.column, fmt::format("{}: {}", b.statement, *why));
       target = std::get<RotaryAngles>(angles);
     }
     shift_in_plane = 0;
@@ -817,7 +852,8 @@ struct KlartextReader::State {
   void swivel(const RotaryAngles& target, const Block& b, const PlaneRequest& r) {
     if (!position_known())
       fail(b.column, fmt::format("{} TURN before X, Y and Z are programmed on a rapid: where the swivel happens is not "
-                                 "known", b.statement));
+                                 "known",
+                                 b.statement));
     ProgramPoint to = pos;
     std::array<bool, 6> programmed{};
     for (int k = 0; k < machine.rotary_count(); ++k) {
@@ -843,8 +879,9 @@ struct KlartextReader::State {
   /// After CYCL DEF 7 changed the shift in a plane nothing may move until PLANE RESET or a new PLANE.
   void check_no_stale_shift(int column) const {
     if (shift_in_plane)
-      fail(column, "a motion after CYCL DEF 7 changed the datum shift inside a tilted plane (PLANE ...): the shift's "
-                   "axes in the tilted system are not read; PLANE RESET first, or shift the datum before the PLANE");
+      fail(column,
+           "a motion after CYCL DEF 7 changed the datum shift inside a tilted plane (PLANE ...): the shift's "
+           "axes in the tilted system are not read; PLANE RESET first, or shift the datum before the PLANE");
   }
 
   /// In a tilted plane a motion needs the tool axis of the plane (the rotary axes at Q120 .. Q122).
@@ -853,7 +890,8 @@ struct KlartextReader::State {
     const Vec3d axis_W = tool_frame_W(machine, commands_of(target).rotary_rad).col(2);
     if ((axis_W - plane->W_R_plane.col(2)).norm() > 1e-6)
       fail(b.column, fmt::format("{} in a tilted plane (PLANE ...) with the rotary axes not at the plane's angles: not "
-                                 "read; position them first (L A+Q120 B+Q121 C+Q122 FMAX)", b.statement));
+                                 "read; position them first (L A+Q120 B+Q121 C+Q122 FMAX)",
+                                 b.statement));
   }
 
   /// The words of a path block (L, C, CR, CT, CP, or M words alone).
@@ -863,19 +901,23 @@ struct KlartextReader::State {
     const bool cr = b.statement == "CR";
     for (std::size_t i = 0; i < b.words.size(); ++i) {
       const Word& w = b.words[i];
-      if (w.q_parameter) fail(w.column, fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
+      if (w.q_parameter)
+        fail(w.column,
+             fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
       if (slot >= 0) {
         if (!machine_has(slot))
-          fail(w.column, fmt::format("{}: the machine {} has no {} axis", w.name, machine.name, kSlots[static_cast<std::size_t>(slot)]));
+          fail(w.column, fmt::format("{}: the machine {} has no {} axis", w.name, machine.name,
+                                     kSlots[static_cast<std::size_t>(slot)]));
         if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
         const auto s = static_cast<std::size_t>(slot);
         if (incremental && !known[s] && slot < 3)
           fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
         const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
         bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 && !plane ? datum_shift_mm[slot] : 0.0);
-        if (!incremental && slot >= 3 && shortest_rotary && known[s] && machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
+        if (!incremental && slot >= 3 && shortest_rotary && known[s] &&
+            machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
           bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
         bw.programmed[s] = true;
         bw.any_axis = true;
@@ -906,10 +948,14 @@ struct KlartextReader::State {
         if (!auto_feed) fail(w.column, "FAUTO without a feed in the TOOL CALL (F)");
         bw.feed = *auto_feed;
       } else if (w.name == "FQ" || w.name == "FU" || w.name == "FZ") {
-        fail(w.column, fmt::format("{}: {} is not read; program F in mm/min", w.name + (w.value ? fmt::format("{:g}", *w.value) : ""),
-                                   w.name == "FQ" ? "a feed from a Q parameter" : w.name == "FU" ? "a feed per revolution" : "a feed per tooth"));
+        fail(w.column, fmt::format("{}: {} is not read; program F in mm/min",
+                                   w.name + (w.value ? fmt::format("{:g}", *w.value) : ""),
+                                   w.name == "FQ"   ? "a feed from a Q parameter"
+                                   : w.name == "FU" ? "a feed per revolution"
+                                                    : "a feed per tooth"));
       } else if (w.name == "M") {
-        if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value)) fail(w.column, "expected an M function number");
+        if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value))
+          fail(w.column, "expected an M function number");
         bw.m.emplace_back(static_cast<int>(*w.value), w.column);
       } else if (w.name == "MB") {
         bw.retract_column = w.column;
@@ -934,27 +980,32 @@ struct KlartextReader::State {
   /// datum the machine builder sets; G30's point) in the machine file; the axes it does not name stay.
   void machine_coordinates(const Block& b, BlockWords& bw, int code, int column) {
     if (tip_mode())
-      fail(column, fmt::format("M{} with axis words under M128 / FUNCTION TCPM or in a tilted plane is not read", code));
+      fail(column,
+           fmt::format("M{} with axis words under M128 / FUNCTION TCPM or in a tilted plane is not read", code));
     const char* key = code == 91 ? "reference" : "reference2";
     for (const Word& w : b.words) {
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
       if (slot < 0) continue;
       if (slot >= 3 || incremental)
-        fail(w.column, fmt::format("M{} with {}: only absolute X, Y and Z in machine coordinates are read", code, w.name));
+        fail(w.column,
+             fmt::format("M{} with {}: only absolute X, Y and Z in machine coordinates are read", code, w.name));
       const Axis& axis = machine.axes[static_cast<std::size_t>(slot)];
       const std::optional<double>& datum = code == 91 ? axis.reference : axis.reference2;
       if (!datum)
         fail(w.column, fmt::format("M{} {}{:g}: machine coordinates count from the axis's {}, which the machine file "
-                                   "{} does not give; add [axes.{}] {} = ... (docs/formats.md)", code, w.name, *w.value,
+                                   "{} does not give; add [axes.{}] {} = ... (docs/formats.md)",
+                                   code, w.name, *w.value,
                                    code == 91 ? "reference point"
                                               : "second reference point (the TNC's additional machine datum, M92)",
                                    machine.name, w.name, key));
       bw.target[static_cast<std::size_t>(slot)] = *datum + *w.value;
     }
-    notice_once(fmt::format("M{}", code), column,
-                fmt::format("M{}: the block's X Y Z are machine coordinates, counted from the axes' {} in the machine "
-                            "file", code, code == 91 ? "reference points (reference)" : "second reference points (reference2)"));
+    notice_once(
+        fmt::format("M{}", code), column,
+        fmt::format("M{}: the block's X Y Z are machine coordinates, counted from the axes' {} in the machine "
+                    "file",
+                    code, code == 91 ? "reference points (reference)" : "second reference points (reference2)"));
   }
 
   int rotary_index(int slot) const {
@@ -985,7 +1036,10 @@ struct KlartextReader::State {
       if (auto why = refused_m(code)) fail(column, *why);
       const cl::Location mat = at(column);
       switch (code) {
-        case 3: case 4: case 13: case 14:
+        case 3:
+        case 4:
+        case 13:
+        case 14:
           spindle = code == 3 || code == 13 ? cl::Spindle::Direction::cw : cl::Spindle::Direction::ccw;
           emit(cl::Spindle{mat, spindle, rpm});
           if (code >= 13) emit(cl::Coolant{mat, true, "FLOOD"});
@@ -994,25 +1048,44 @@ struct KlartextReader::State {
           spindle = cl::Spindle::Direction::off;
           after.push_back(cl::Spindle{mat, spindle, rpm});
           break;
-        case 8: emit(cl::Coolant{mat, true, "FLOOD"}); break;
-        case 9: after.push_back(cl::Coolant{mat, false, "OFF"}); break;
-        case 0: case 1: after.push_back(cl::Stop{mat, code == 1, ""}); break;
-        case 2: case 30: program_end = true; break;
-        case 126: shortest_rotary = true; break;
-        case 127: shortest_rotary = false; break;
-        case 128: case 129: {
+        case 8:
+          emit(cl::Coolant{mat, true, "FLOOD"});
+          break;
+        case 9:
+          after.push_back(cl::Coolant{mat, false, "OFF"});
+          break;
+        case 0:
+        case 1:
+          after.push_back(cl::Stop{mat, code == 1, ""});
+          break;
+        case 2:
+        case 30:
+          program_end = true;
+          break;
+        case 126:
+          shortest_rotary = true;
+          break;
+        case 127:
+          shortest_rotary = false;
+          break;
+        case 128:
+        case 129: {
           const bool on = code == 128;
           if (plane && on) fail(column, "M128 in a tilted plane (PLANE ...) is not read; PLANE RESET first");
           switch_mode([&] { rtcp = on; });
           break;
         }
-        case 140: m140 = true; break;
-        case 91: case 92:
+        case 140:
+          m140 = true;
+          break;
+        case 91:
+        case 92:
           if (bw.any_axis) break;  // (machine coordinates: machine_coordinates() above)
           [[fallthrough]];
         default:
           after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});
-          notice_once(fmt::format("M{}", code), column, fmt::format("M{} is not acted on; passed through as a comment", code));
+          notice_once(fmt::format("M{}", code), column,
+                      fmt::format("M{} is not acted on; passed through as a comment", code));
       }
     }
     if (bw.retract_mm && !m140) fail(bw.retract_column, "MB without M140");
@@ -1067,7 +1140,8 @@ struct KlartextReader::State {
   void arc_path(const Block& b, const BlockWords& bw, cl::Location where, std::optional<double> block_feed) {
     const std::string& s = b.statement;
     if (!settled || !known[0] || !known[1] || !known[2])
-      fail(b.column, fmt::format("{} before X, Y and Z are programmed on a rapid: the start of the arc is not known", s));
+      fail(b.column,
+           fmt::format("{} before X, Y and Z are programmed on a rapid: the start of the arc is not known", s));
     for (std::size_t i = 3; i < 6; ++i)
       if (bw.programmed[i]) fail(b.column, fmt::format("{} with a rotary word: program rotary axes in L blocks", s));
     check_plane_axis(b, pos);
@@ -1092,7 +1166,8 @@ struct KlartextReader::State {
       r = arc_tangent(pos, end, *tangent);
     } else {  // CP
       if (bw.programmed[0] || bw.programmed[1]) fail(b.column, "CP with X or Y: a polar arc gives PA or IPA");
-      if (bw.polar_rad.has_value() == bw.polar_step_rad.has_value()) fail(b.column, "CP: expected PA or IPA (one of them)");
+      if (bw.polar_rad.has_value() == bw.polar_step_rad.has_value())
+        fail(b.column, "CP: expected PA or IPA (one of them)");
       double sweep = 0.0;
       const double a0 = std::atan2(pos[1] - centre->y(), pos[0] - centre->x());
       if (bw.polar_step_rad) {
@@ -1117,9 +1192,11 @@ struct KlartextReader::State {
     if (n > gcode::kMaxArcSegments)
       fail(b.column, fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
                                  gcode::kMaxArcSegments, options.arc_chord_tolerance_mm));
-    const bool circle = std::abs(a.sweep_rad) <= 2.0 * kPi + 1e-9 && std::abs(a.radius_start_mm - a.radius_end_mm) < 5e-4;
+    const bool circle =
+        std::abs(a.sweep_rad) <= 2.0 * kPi + 1e-9 && std::abs(a.radius_start_mm - a.radius_end_mm) < 5e-4;
     if (circle) {
-      for (long i = 1; i < n && options.check_limits; ++i) locate(a.at(static_cast<double>(i) / static_cast<double>(n)), tip_mode(), where);
+      for (long i = 1; i < n && options.check_limits; ++i)
+        locate(a.at(static_cast<double>(i) / static_cast<double>(n)), tip_mode(), where);
       ProgramPoint centre_p = a.start;
       centre_p[0] = a.centre1_mm;
       centre_p[1] = a.centre2_mm;
@@ -1135,20 +1212,25 @@ struct KlartextReader::State {
       emit_motion(a.end, where, rapid, block_feed);
       return;
     }
-    for (long i = 1; i <= n; ++i) emit_motion(a.at(static_cast<double>(i) / static_cast<double>(n)), where, rapid, block_feed);
+    for (long i = 1; i <= n; ++i)
+      emit_motion(a.at(static_cast<double>(i) / static_cast<double>(n)), where, rapid, block_feed);
   }
 
   /// M140 MB MAX|d: a rapid along the tool axis, which is machine Z on a machine whose head does
   /// not tilt, to the top of Z's travel (MAX) or by d (at most to the top).
   void retract(const BlockWords& bw) {
-    if (plane) fail(bw.retract_column, "M140 in a tilted plane (PLANE ...) is not read; PLANE RESET first, or program the retract with L");
+    if (plane)
+      fail(bw.retract_column,
+           "M140 in a tilted plane (PLANE ...) is not read; PLANE RESET first, or program the retract with L");
     for (int i : machine.tool_side)
       if (machine.axes[static_cast<std::size_t>(i)].is_rotary())
         fail(bw.retract_column, fmt::format("M140 on the machine {}, whose head tilts: the tool axis is not machine Z; "
-                                            "program the retract with L", machine.name));
+                                            "program the retract with L",
+                                            machine.name));
     if (!settled) {
-      notice(bw.retract_column, "M140 before the first programmed position moves nothing in the posted program (where "
-                                "the tool stands is not known yet)");
+      notice(bw.retract_column,
+             "M140 before the first programmed position moves nothing in the posted program (where "
+             "the tool stands is not known yet)");
       return;
     }
     if (!machine.axes[2].limits)

@@ -18,16 +18,20 @@ struct Refusal {
 };
 
 constexpr Refusal kStatements[] = {
-    {"CYCL DEF", "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
-                 "shift, 32 tolerance and 200 drilling are)", kPostCl},
+    {"CYCL DEF",
+     "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
+     "shift, 32 tolerance and 200 drilling are)",
+     kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
-    {"CHF", "a chamfer between two contour elements is not read", "have the CAM system write the chamfer as an L block"},
+    {"CHF", "a chamfer between two contour elements is not read",
+     "have the CAM system write the chamfer as an L block"},
     {"LP", "a line in polar coordinates is not read", "have the CAM system write Cartesian L blocks"},
     {"APPR", "an approach contour is not read", kPostCl},
     {"DEP", "a departure contour is not read", kPostCl},
     {"LN", "a line with a surface normal (3-D tool compensation) is not read", kPostCl},
-    {"CALL ", "a program call is not read (CALL LBL is)", "post each program on its own, or copy the called program in as a subprogram (LBL)"},
+    {"CALL ", "a program call is not read (CALL LBL is)",
+     "post each program on its own, or copy the called program in as a subprogram (LBL)"},
     {"FUNCTION ", "this function is not read", kPostCl},
     {"SEL", "a program or table selection is not read", "post each program on its own"},
     {"SPL", "a spline is not read", kPostCl},
@@ -44,8 +48,9 @@ constexpr MRefusal kMFunctions[] = {
     {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
     {97, "a small contour step (radius compensation) is not read"},
     {101, "automatic tool change with a replacement tool is not read"},
-    {114, "the automatic tool-length compensation of tilted axes (M114) gives X Y Z another meaning: not read; "
-          "use M128 or FUNCTION TCPM"},
+    {114,
+     "the automatic tool-length compensation of tilted axes (M114) gives X Y Z another meaning: not read; "
+     "use M128 or FUNCTION TCPM"},
     {116, "a feed in mm/min on rotary axes (M116) gives F another meaning: not read"},
     {118, "a handwheel superimposition is not read"},
     {130, "a motion in the untilted system inside a tilted plane is not read"},
@@ -66,8 +71,10 @@ std::string refused_statement(const Block& b) {
     if (prefix ? b.statement.rfind(key, 0) == 0 : b.statement == key)
       return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
   }
-  return fmt::format("'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
-                     "FUNCTION TCPM, PLANE, Q parameters, FN, LBL, CALL LBL); {}", shown, kPostCl);
+  return fmt::format(
+      "'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
+      "FUNCTION TCPM, PLANE, Q parameters, FN, LBL, CALL LBL); {}",
+      shown, kPostCl);
 }
 
 std::optional<std::string> refused_m(int code) {

@@ -50,17 +50,24 @@ void Translator::collect(const ProgramLine& l, const Item& item, Words& w) {
         return;
       }
       if (item.name == "M") {
-        if (v == 2.0 || v == 30.0) w.program_end = true;
-        else if (v == 17.0) w.unit_end = true;
-        else if (auto why = refused_m(v)) fail(l, item.column, *why);
-        else w.iso.push_back("M" + item.text);
+        if (v == 2.0 || v == 30.0)
+          w.program_end = true;
+        else if (v == 17.0)
+          w.unit_end = true;
+        else if (auto why = refused_m(v))
+          fail(l, item.column, *why);
+        else
+          w.iso.push_back("M" + item.text);
         return;
       }
       return assignment(l, as_assign, w);
     }
-    case Item::Kind::assign: return assignment(l, item, w);
-    case Item::Kind::call: return called(l, item, w);
-    case Item::Kind::name: return named(l, item, w);
+    case Item::Kind::assign:
+      return assignment(l, item, w);
+    case Item::Kind::call:
+      return called(l, item, w);
+    case Item::Kind::name:
+      return named(l, item, w);
   }
 }
 
@@ -80,7 +87,8 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
       w.abc_ref[static_cast<std::size_t>(s)] = ref;
     } else {
       s = slot_of(n, "IJK");
-      if (ref == Reference::incremental) fail(l, item.column, fmt::format("{}=IC(...): I J K are incremental already", n));
+      if (ref == Reference::incremental)
+        fail(l, item.column, fmt::format("{}=IC(...): I J K are incremental already", n));
       w.ijk[static_cast<std::size_t>(s)] = v;
       w.ijk_absolute[static_cast<std::size_t>(s)] = ref == Reference::absolute;
     }
@@ -106,13 +114,18 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
   }
   if (n == "CR" || n == "F" || n == "S" || n == "T" || n == "D") {
     const double v = number ? *item.value : value(l, item.column, item.text);
-    if (n == "F" && w.dwell_s) w.dwell_s = v;  // G4 F: the dwell in seconds
-    else if (n == "CR") w.radius = v;
+    if (n == "F" && w.dwell_s)
+      w.dwell_s = v;  // G4 F: the dwell in seconds
+    else if (n == "CR")
+      w.radius = v;
     else if (n == "D") {
-      if (v == 0.0) w.iso.push_back("G49"), length_off_ = true;
-      else if (length_off_) w.iso.push_back("G43"), length_off_ = false;
+      if (v == 0.0)
+        w.iso.push_back("G49"), length_off_ = true;
+      else if (length_off_)
+        w.iso.push_back("G43"), length_off_ = false;
     } else {
-      if (n != "F" && (v < 0 || v != std::floor(v))) fail(l, item.column, fmt::format("{}: expected a whole number >= 0", n));
+      if (n != "F" && (v < 0 || v != std::floor(v)))
+        fail(l, item.column, fmt::format("{}: expected a whole number >= 0", n));
       w.iso.push_back(n + gcode::word_number(v));
       if (n == "T") w.tool_name = "";
     }
@@ -120,8 +133,10 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
   }
   if (values_.known(n)) {
     try {
-      if (values_.string_value(n)) values_.assign_string(n, values_.evaluate_string(item.text));
-      else values_.assign(n, values_.evaluate(item.text));
+      if (values_.string_value(n))
+        values_.assign_string(n, values_.evaluate_string(item.text));
+      else
+        values_.assign(n, values_.evaluate(item.text));
     } catch (const ValueError& e) {
       fail(l, item.column, e.what);
     }
@@ -145,14 +160,22 @@ void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {
   if (g == 17 || g == 18 || g == 19) plane_ = g;
   if (g == 70 || g == 700 || g == 71 || g == 710) inch_ = g == 70 || g == 700;
   if (g == 500) {
-    notice_once(l, "G500", "G500 (no settable work offset): W is the job's workpiece frame as for G54 (--workpiece-origin)");
+    notice_once(l, "G500",
+                "G500 (no settable work offset): W is the job's workpiece frame as for G54 (--workpiece-origin)");
     return;
   }
   switch (kept_g(g)) {
-    case GAction::pass: w.iso.push_back(fmt::format("G{}", g)); return;
-    case GAction::note: notice_once(l, fmt::format("G{}", g), fmt::format("G{} ({}) is noted, not posted", g, g_meaning(g))); return;
-    case GAction::dwell: w.dwell_s = -1.0; return;
-    case GAction::refuse: fail(l, item.column, refused_g(g));
+    case GAction::pass:
+      w.iso.push_back(fmt::format("G{}", g));
+      return;
+    case GAction::note:
+      notice_once(l, fmt::format("G{}", g), fmt::format("G{} ({}) is noted, not posted", g, g_meaning(g)));
+      return;
+    case GAction::dwell:
+      w.dwell_s = -1.0;
+      return;
+    case GAction::refuse:
+      fail(l, item.column, refused_g(g));
   }
 }
 
@@ -232,9 +255,12 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
   if (w.tool_name) out_.back().tool_name = w.tool_name;  // (T0 is in `iso`)
   if (mcall_ && w.any_linear() && !w.supa) drill(l, *mcall_);
   for (const Item* item : w.after) {
-    if (item->name == "CYCLE800") cycle800(l, *item);
-    else if (item->name == "CYCLE81" || item->name == "CYCLE82") drill(l, drilling(l, *item));
-    else if (!call_if_subprogram(l, *item)) fail(l, item->column, fmt::format("{}{} is not read", item->name, item->text));
+    if (item->name == "CYCLE800")
+      cycle800(l, *item);
+    else if (item->name == "CYCLE81" || item->name == "CYCLE82")
+      drill(l, drilling(l, *item));
+    else if (!call_if_subprogram(l, *item))
+      fail(l, item->column, fmt::format("{}{} is not read", item->name, item->text));
   }
   if (w.program_end) {
     emit(l, "M30");

@@ -58,17 +58,20 @@ void Translator::cycle800(const ProgramLine& l, const Item& item) {
     fail(l, item.column, "CYCLE800 _ST: an additive swivel plane is not read (only a new plane, units digit 0)");
   const bool tilted = angles.norm() > 1e-12;
   if (tilted && mode != 57.0)
-    fail(l, item.column, fmt::format("CYCLE800 _MODE={}: only 57 (axis by axis, X Y Z) is read; have the CAM system "
-                                     "write axis-by-axis angles in the order X Y Z", mode));
+    fail(l, item.column,
+         fmt::format("CYCLE800 _MODE={}: only 57 (axis by axis, X Y Z) is read; have the CAM system "
+                     "write axis-by-axis angles in the order X Y Z",
+                     mode));
   Frame r;
   r.rotation = about_axis(0, angles.x()) * about_axis(1, angles.y()) * about_axis(2, angles.z());
   if (tilted && dir == 0.0)
     fail(l, item.column, "CYCLE800 _DIR=0 (the plane without positioning the rotary axes) is not read");
   if (fr == 1.0) {
     if (swivel_tip_) emit(l, "TRAFOOF"), swivel_tip_ = false;
-    notice_once(l, "CYCLE800 _FR", "CYCLE800 _FR=1: the retract in Z goes to Z's reference point (G53 Z0: the machine "
-                                   "file's reference, else the top of Z's travel); the tool carrier's retract position is "
-                                   "the control's data");
+    notice_once(l, "CYCLE800 _FR",
+                "CYCLE800 _FR=1: the retract in Z goes to Z's reference point (G53 Z0: the machine "
+                "file's reference, else the top of Z's travel); the tool carrier's retract position is "
+                "the control's data");
     emit(l, "G0 G53 Z0");
     base_known_ = {false, false, false};
   }
@@ -77,18 +80,25 @@ void Translator::cycle800(const ProgramLine& l, const Item& item) {
 }
 
 /// The rotary axes to the plane's normal (machine axes still), then tool-tip input.
-void Translator::position_swivel(const ProgramLine& l, const Item& item, const Eigen::Vector3d& axis_W, int dir, bool tilted) {
+void Translator::position_swivel(const ProgramLine& l, const Item& item, const Eigen::Vector3d& axis_W, int dir,
+                                 bool tilted) {
   if (machine_.rotary_count() == 0) {
-    if (tilted) fail(l, item.column, fmt::format("CYCLE800 with a tilted plane on machine {}, which has no rotary axes", machine_.name));
+    if (tilted)
+      fail(l, item.column,
+           fmt::format("CYCLE800 with a tilted plane on machine {}, which has no rotary axes", machine_.name));
     return;
   }
   const std::optional<RotaryAngles> a = nearest_solution(axis_W, dir);
-  if (!a) fail(l, item.column, fmt::format("CYCLE800: the plane's normal is beyond the reach or the limits of machine {}", machine_.name));
+  if (!a)
+    fail(l, item.column,
+         fmt::format("CYCLE800: the plane's normal is beyond the reach or the limits of machine {}", machine_.name));
   const bool known = base_known_[0] && base_known_[1] && base_known_[2];
   RotaryAngles before = RotaryAngles::Zero(machine_.rotary_count());
   for (int k = 0; k < machine_.rotary_count(); ++k)
     before[k] = rotary_deg_[static_cast<std::size_t>(machine_.rotary(k).letter - 'A')] * M_PI / 180.0;
-  const Eigen::Vector3d linear = !known ? Eigen::Vector3d::Zero() : swivel_tip_ ? linear_for(machine_, before, base_, setup_) : base_;
+  const Eigen::Vector3d linear = !known        ? Eigen::Vector3d::Zero()
+                                 : swivel_tip_ ? linear_for(machine_, before, base_, setup_)
+                                               : base_;
   if (swivel_tip_) emit(l, "TRAFOOF");
   std::string words = "G0";
   for (int k = 0; k < machine_.rotary_count(); ++k) {
@@ -120,13 +130,15 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
   d.retract = need(0, "RTP (the retract plane)");
   d.reference = need(1, "RFP (the reference plane)");
   d.safety = args.given(2) ? std::abs(value(l, item.column, args.text[2])) : 0.0;
-  // DPR (relative) wins over DP where it is not 0, as the cycle does ("Depth: corresponding to value for relative depth")
+  // DPR (relative) wins over DP where it is not 0, as the cycle does ("Depth: corresponding to value for relative
+  // depth")
   const double relative = args.given(4) ? std::abs(value(l, item.column, args.text[4])) : 0.0;
   if (relative != 0.0) {
     d.depth = d.reference - relative;
     if (args.given(3) && std::abs(value(l, item.column, args.text[3]) - d.depth) > 1e-9)
-      notice_once(l, item.name + " DPR", fmt::format("{}: DP and DPR differ; the depth is RFP - DPR = {}, as the cycle takes it",
-                                                   item.name, d.depth));
+      notice_once(
+          l, item.name + " DPR",
+          fmt::format("{}: DP and DPR differ; the depth is RFP - DPR = {}, as the cycle takes it", item.name, d.depth));
   } else if (args.given(3)) {
     d.depth = value(l, item.column, args.text[3]);
   } else {
@@ -134,9 +146,11 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
   }
   if (item.name == "CYCLE82" && args.given(5)) d.dwell_s = value(l, item.column, args.text[5]);
   if (args.text.size() > (item.name == "CYCLE82" ? 6u : 5u))
-    fail(l, item.column, fmt::format("{}: more parameters than RTP, RFP, SDIS, DP, DPR{} are not read", item.name,
-                                     item.name == "CYCLE82" ? ", DTB" : ""));
-  if (d.depth >= d.reference + d.safety) fail(l, item.column, fmt::format("{}: the depth lies above the safety plane", item.name));
+    fail(l, item.column,
+         fmt::format("{}: more parameters than RTP, RFP, SDIS, DP, DPR{} are not read", item.name,
+                     item.name == "CYCLE82" ? ", DTB" : ""));
+  if (d.depth >= d.reference + d.safety)
+    fail(l, item.column, fmt::format("{}: the depth lies above the safety plane", item.name));
   if (d.dwell_s < 0.0) fail(l, item.column, "CYCLE82: DTB < 0");
   return d;
 }

@@ -24,7 +24,8 @@ bool looks_like_sinumerik(std::string_view head) {
     const std::size_t semi = line.find(';');
     if (semi != std::string::npos) line.erase(semi);
     const std::size_t paren = line.find('(');
-    if (paren != std::string::npos && line.find("CYCLE") == std::string::npos && line.find("cycle") == std::string::npos)
+    if (paren != std::string::npos && line.find("CYCLE") == std::string::npos &&
+        line.find("cycle") == std::string::npos)
       line.erase(paren);  // an ISO (comment)
     if (std::regex_search(line, kMarks)) return true;
   }

@@ -16,10 +16,11 @@ bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) 
 bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
 
 constexpr std::string_view kStatements[] = {
-    "DEF", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "REPEAT", "UNTIL", "LOOP", "ENDLOOP",
-    "GOTOF", "GOTOB", "GOTO", "GOTOC", "PROC", "RET", "CASE", "SAVE", "EXTERN", "DEFINE", "STOPRE", "REDEF",
-    "MCALL", "CALL", "PCALL", "EXECUTE", "EXECTAB", "REPEATB", "TRANS", "ATRANS", "ROT", "AROT", "SCALE",
-    "ASCALE", "MIRROR", "AMIRROR", "RPL", "AROTS", "ROTS", "CROTS", "SETMS", "WAITM", "GET", "RELEASE"};
+    "DEF",    "IF",      "ELSE",   "ENDIF", "WHILE", "ENDWHILE", "FOR",    "ENDFOR",  "REPEAT",  "UNTIL",
+    "LOOP",   "ENDLOOP", "GOTOF",  "GOTOB", "GOTO",  "GOTOC",    "PROC",   "RET",     "CASE",    "SAVE",
+    "EXTERN", "DEFINE",  "STOPRE", "REDEF", "MCALL", "CALL",     "PCALL",  "EXECUTE", "EXECTAB", "REPEATB",
+    "TRANS",  "ATRANS",  "ROT",    "AROT",  "SCALE", "ASCALE",   "MIRROR", "AMIRROR", "RPL",     "AROTS",
+    "ROTS",   "CROTS",   "SETMS",  "WAITM", "GET",   "RELEASE"};
 
 bool is_statement(const std::string& name) {
   for (std::string_view s : kStatements)
@@ -31,8 +32,10 @@ bool is_statement(const std::string& name) {
 std::size_t comment_start(std::string_view t) {
   bool quoted = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    if (t[i] == '"') quoted = !quoted;
-    else if (t[i] == ';' && !quoted) return i;
+    if (t[i] == '"')
+      quoted = !quoted;
+    else if (t[i] == ';' && !quoted)
+      return i;
   }
   return std::string_view::npos;
 }

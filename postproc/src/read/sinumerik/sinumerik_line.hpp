@@ -32,17 +32,17 @@ struct Item {
 };
 
 struct Line {
-  bool skip = false;                ///< starts with '/'
-  std::optional<long> block_number; ///< N...
-  std::string label;                ///< upper case, without ':'
-  std::string statement;            ///< a control statement (upper case), "" when the block holds items
-  std::string rest;                 ///< after the statement, comment removed, blanks trimmed
+  bool skip = false;                 ///< starts with '/'
+  std::optional<long> block_number;  ///< N...
+  std::string label;                 ///< upper case, without ':'
+  std::string statement;             ///< a control statement (upper case), "" when the block holds items
+  std::string rest;                  ///< after the statement, comment removed, blanks trimmed
   int statement_column = 0;
   int rest_column = 0;
   std::vector<Item> items;
-  std::string comment;              ///< after ';', trimmed
+  std::string comment;  ///< after ';', trimmed
   int comment_column = 0;
-  std::string header;               ///< "%_N_NAME_MPF" / "%_N_NAME_SPF" (a program unit's first line)
+  std::string header;  ///< "%_N_NAME_MPF" / "%_N_NAME_SPF" (a program unit's first line)
 
   bool empty() const { return statement.empty() && items.empty() && header.empty(); }
 };

@@ -30,12 +30,15 @@ Eigen::Vector3d Translator::current_prog(const ProgramLine& l, int column) const
   if (f.shift_only()) return base_ - f.offset;
   for (int i = 0; i < 3; ++i)
     if (!base_known_[static_cast<std::size_t>(i)])
-      fail(l, column, fmt::format("{} is not known here (not programmed since the start, a SUPA block or CYCLE800), and "
-                                  "the frame rotates or scales: program X, Y and Z in this block", kXyz[i]));
+      fail(l, column,
+           fmt::format("{} is not known here (not programmed since the start, a SUPA block or CYCLE800), and "
+                       "the frame rotates or scales: program X, Y and Z in this block",
+                       kXyz[i]));
   return f.inverse(base_);
 }
 
-void Translator::linear_target(const ProgramLine& l, const Words& w, Eigen::Vector3d& target, std::array<bool, 3>& programmed) {
+void Translator::linear_target(const ProgramLine& l, const Words& w, Eigen::Vector3d& target,
+                               std::array<bool, 3>& programmed) {
   bool need_current = false;
   for (std::size_t i = 0; i < 3; ++i)
     need_current = need_current || !w.xyz[i] || incremental_word(w.xyz_ref[i], incremental_);
@@ -48,15 +51,16 @@ void Translator::linear_target(const ProgramLine& l, const Words& w, Eigen::Vect
     }
     const bool inc = incremental_word(w.xyz_ref[i], incremental_);
     if (inc && !base_known_[i])
-      fail(l, w.axis_column, fmt::format("{} incremental before {} is known: where it starts is not known", kXyz[i], kXyz[i]));
+      fail(l, w.axis_column,
+           fmt::format("{} incremental before {} is known: where it starts is not known", kXyz[i], kXyz[i]));
     target[static_cast<int>(i)] = inc ? current[static_cast<int>(i)] + *w.xyz[i] : *w.xyz[i];
   }
 }
 
 /// The X Y Z words of the target in W: only the programmed ones where the frame only shifts (and
 /// `all` is false), else all three; the position is then known.
-std::string Translator::axis_words(const ProgramLine& l, const Eigen::Vector3d& target, const std::array<bool, 3>& programmed,
-                                   bool all) {
+std::string Translator::axis_words(const ProgramLine& l, const Eigen::Vector3d& target,
+                                   const std::array<bool, 3>& programmed, bool all) {
   const Frame f = frame();
   const Eigen::Vector3d w = f.apply(target);
   std::string s;
@@ -77,7 +81,8 @@ std::string Translator::rotary_words(const ProgramLine& l, Words& w) {
   for (std::size_t i = 0; i < 3; ++i) {
     if (!w.abc[i]) continue;
     const bool inc = incremental_word(w.abc_ref[i], incremental_);
-    if (inc && !rotary_known_[i]) fail(l, w.column, fmt::format("{} incremental before {} is known", "ABC"[i], "ABC"[i]));
+    if (inc && !rotary_known_[i])
+      fail(l, w.column, fmt::format("{} incremental before {} is known", "ABC"[i], "ABC"[i]));
     rotary_deg_[i] = inc ? rotary_deg_[i] + *w.abc[i] : *w.abc[i];
     rotary_known_[i] = true;
     s += fmt::format(" {}{}", "ABC"[i], num(rotary_deg_[i]));
@@ -101,7 +106,8 @@ std::optional<RotaryAngles> Translator::nearest_solution(const Eigen::Vector3d& 
       inside = inside && (!axis.limits || axis.limits->contains(a[k], 1e-9));
       cost += std::abs(a[k] - now);
     }
-    if (direction != 0 && machine_.rotary_count() > 0 && std::abs(a[0]) > 1e-9 && (a[0] > 0) != (direction > 0)) cost += 1e6;
+    if (direction != 0 && machine_.rotary_count() > 0 && std::abs(a[0]) > 1e-9 && (a[0] > 0) != (direction > 0))
+      cost += 1e6;
     if (inside && cost < best_cost) {
       best_cost = cost;
       best = a;
@@ -114,13 +120,16 @@ std::optional<RotaryAngles> Translator::nearest_solution(const Eigen::Vector3d& 
 std::string Translator::orientation_words(const ProgramLine& l, const Words& w) {
   if (!traori_) fail(l, w.column, "A3= B3= C3= (a tool orientation vector) without TRAORI: program TRAORI first");
   if (w.any_rotary()) fail(l, w.column, "a tool orientation vector beside rotary axis words: program one of them");
-  const Eigen::Vector3d v(w.orientation[0].value_or(0.0), w.orientation[1].value_or(0.0), w.orientation[2].value_or(0.0));
+  const Eigen::Vector3d v(w.orientation[0].value_or(0.0), w.orientation[1].value_or(0.0),
+                          w.orientation[2].value_or(0.0));
   if (v.norm() < 1e-12) fail(l, w.column, "A3= B3= C3=: a zero vector");
   const Eigen::Vector3d axis_W = frame().apply_direction(v).normalized();
   const std::optional<RotaryAngles> a = nearest_solution(axis_W, 0);
   if (!a)
-    fail(l, w.column, fmt::format("the tool orientation ({:.6f}, {:.6f}, {:.6f}) is beyond the reach or the limits of the "
-                                  "rotary axes of machine {}", axis_W.x(), axis_W.y(), axis_W.z(), machine_.name));
+    fail(l, w.column,
+         fmt::format("the tool orientation ({:.6f}, {:.6f}, {:.6f}) is beyond the reach or the limits of the "
+                     "rotary axes of machine {}",
+                     axis_W.x(), axis_W.y(), axis_W.z(), machine_.name));
   std::string s;
   for (int k = 0; k < machine_.rotary_count(); ++k) {
     const char letter = machine_.rotary(k).letter;
@@ -158,10 +167,12 @@ std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
 
 void Translator::motion(const ProgramLine& l, Words& w, std::string& iso) {
   if (w.motion) motion_ = *w.motion;
-  if (motion_ < 0) fail(l, w.column, "a motion before G0, G1, G2 or G3 is programmed (the control's initial setting is not known)");
+  if (motion_ < 0)
+    fail(l, w.column, "a motion before G0, G1, G2 or G3 is programmed (the control's initial setting is not known)");
   if (length_off_)
-    fail(l, w.column, "a motion with D0 (no tool offset) outside SUPA: the words name the spindle's gauge point, the "
-                      "post places the tool tip; program D1 (the tool's edge) before it, or move with SUPA");
+    fail(l, w.column,
+         "a motion with D0 (no tool offset) outside SUPA: the words name the spindle's gauge point, the "
+         "post places the tool tip; program D1 (the tool's edge) before it, or move with SUPA");
   std::string words = w.any_orientation() ? orientation_words(l, w) : rotary_words(l, w);
   Eigen::Vector3d target;
   std::array<bool, 3> programmed{};
@@ -174,7 +185,8 @@ void Translator::motion(const ProgramLine& l, Words& w, std::string& iso) {
 
 /// G2/G3 from the current position to `target` about I J K (incremental, AC(): absolute) or with
 /// CR=, in the plane G17/G18/G19 of the program's coordinates.
-void Translator::arc(const ProgramLine& l, Words& w, const Eigen::Vector3d& target, std::string& iso, const std::string& rotary) {
+void Translator::arc(const ProgramLine& l, Words& w, const Eigen::Vector3d& target, std::string& iso,
+                     const std::string& rotary) {
   if (!rotary.empty()) fail(l, w.column, "G2/G3 with rotary axis words is not read");
   const gcode::Plane plane = plane_ == 17 ? gcode::Plane::xy : plane_ == 18 ? gcode::Plane::zx : gcode::Plane::yz;
   const gcode::PlaneAxes ax = gcode::axes_of(plane);

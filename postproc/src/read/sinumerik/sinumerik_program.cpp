@@ -26,16 +26,18 @@ Unit proc_unit(const ProgramLine& l, const std::string& file) {
   u.name = upper(r.substr(0, std::min(open, r.find(' '))));
   if (open == std::string::npos) return u;
   const std::size_t close = r.find(')', open);
-  if (close == std::string::npos) throw InputError({file, l.number, l.block.rest_column}, "PROC: '(' without ')'", l.text);
+  if (close == std::string::npos)
+    throw InputError({file, l.number, l.block.rest_column}, "PROC: '(' without ')'", l.text);
   for (const std::string& p : split_arguments(std::string_view(r).substr(open + 1, close - open - 1))) {
     const std::string P = upper(p);
     const std::size_t blank = P.find(' ');
     const std::string type = P.substr(0, blank);
     if (blank == std::string::npos || (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING") ||
         P.find("VAR") != std::string::npos || P.find('[') != std::string::npos)
-      throw InputError({file, l.number, l.block.rest_column},
-                       fmt::format("PROC parameter '{}': expected REAL|INT|BOOL|STRING name (VAR and arrays are not read)", p),
-                       l.text);
+      throw InputError(
+          {file, l.number, l.block.rest_column},
+          fmt::format("PROC parameter '{}': expected REAL|INT|BOOL|STRING name (VAR and arrays are not read)", p),
+          l.text);
     std::string name = P.substr(blank + 1);
     while (!name.empty() && name.front() == ' ') name.erase(0, 1);
     u.parameters.push_back(name);
@@ -50,8 +52,10 @@ void split_units(Program& p) {
     ProgramLine& l = p.lines[i];
     std::optional<Unit> starts;
     if (auto h = unit_header(l.block.header)) {
-      if (!h->second && i == 0) p.units[0].name = h->first;
-      else starts = Unit{h->first, i + 1, 0, {}, {}};
+      if (!h->second && i == 0)
+        p.units[0].name = h->first;
+      else
+        starts = Unit{h->first, i + 1, 0, {}, {}};
     } else if (l.block.statement == "PROC") {
       Unit u = proc_unit(l, p.file);
       const bool right_after_header = p.units.size() > 1 && p.units.back().first == i && p.units.back().name == u.name;
@@ -62,7 +66,8 @@ void split_units(Program& p) {
       } else if (i == 0 || (i == 1 && !p.lines[0].block.header.empty())) {
         throw InputError({p.file, l.number, l.block.statement_column},
                          "the file starts with PROC: a subprogram file is not a program to post (post the main "
-                         "program that calls it, with the subprogram appended)", l.text);
+                         "program that calls it, with the subprogram appended)",
+                         l.text);
       } else {
         u.first = i + 1;
         starts = u;
@@ -100,8 +105,10 @@ void match_blocks(Program& p) {
     const std::string& s = l.block.statement;
     if (!open.empty() && p.lines[open.back()].unit != l.unit) {
       const ProgramLine& o = p.lines[open.back()];
-      throw InputError({p.file, o.number, o.block.statement_column},
-                       fmt::format("{} without its {} in its program unit", o.block.statement, closer_of(o.block.statement)), o.text);
+      throw InputError(
+          {p.file, o.number, o.block.statement_column},
+          fmt::format("{} without its {} in its program unit", o.block.statement, closer_of(o.block.statement)),
+          o.text);
     }
     if (opens(s) && !(s == "IF" && one_line_if(l.block)) && !(s == "REPEAT" && !l.block.rest.empty())) {
       open.push_back(i);
@@ -110,14 +117,19 @@ void match_blocks(Program& p) {
     const bool else_ = s == "ELSE";
     const bool closes = s == "ENDIF" || s == "ENDWHILE" || s == "ENDFOR" || s == "UNTIL" || s == "ENDLOOP";
     if (!else_ && !closes) continue;
-    const std::string expected_opener = s == "ENDIF" || else_ ? "IF" : s == "ENDWHILE" ? "WHILE" : s == "ENDFOR" ? "FOR"
-                                        : s == "UNTIL" ? "REPEAT" : "LOOP";
+    const std::string expected_opener = s == "ENDIF" || else_ ? "IF"
+                                        : s == "ENDWHILE"     ? "WHILE"
+                                        : s == "ENDFOR"       ? "FOR"
+                                        : s == "UNTIL"        ? "REPEAT"
+                                                              : "LOOP";
     if (open.empty() || p.lines[open.back()].block.statement != expected_opener)
-      throw InputError({p.file, l.number, l.block.statement_column},
-                       fmt::format("{} without its {}{}", s, expected_opener,
-                                   open.empty() ? "" : fmt::format(" (the open {} at line {} closes first)",
-                                                                   p.lines[open.back()].block.statement, p.lines[open.back()].number)),
-                       l.text);
+      throw InputError(
+          {p.file, l.number, l.block.statement_column},
+          fmt::format("{} without its {}{}", s, expected_opener,
+                      open.empty() ? ""
+                                   : fmt::format(" (the open {} at line {} closes first)",
+                                                 p.lines[open.back()].block.statement, p.lines[open.back()].number)),
+          l.text);
     ProgramLine& o = p.lines[open.back()];
     if (else_) {
       if (o.partner) throw InputError({p.file, l.number, l.block.statement_column}, "a second ELSE", l.text);
@@ -138,11 +150,13 @@ void match_blocks(Program& p) {
 
 }  // namespace
 
-std::optional<std::size_t> Program::find_label(int unit, const std::string& label, std::size_t from, bool forward) const {
+std::optional<std::size_t> Program::find_label(int unit, const std::string& label, std::size_t from,
+                                               bool forward) const {
   const Unit& u = units[static_cast<std::size_t>(unit)];
   const auto matches = [&](const ProgramLine& l) {
     if (l.block.label == label) return true;
-    return label.size() > 1 && label[0] == 'N' && l.block.block_number && fmt::format("N{}", *l.block.block_number) == label;
+    return label.size() > 1 && label[0] == 'N' && l.block.block_number &&
+           fmt::format("N{}", *l.block.block_number) == label;
   };
   if (forward) {
     for (std::size_t i = from; i < u.last; ++i)
@@ -166,7 +180,8 @@ Program load_program(std::istream& in, const std::string& file) {
     try {
       l.block = lex_line(text);
     } catch (const LexError& e) {
-      throw InputError({file, l.number, static_cast<int>(e.offset) + 1}, e.what, echo_for(text, static_cast<int>(e.offset) + 1));
+      throw InputError({file, l.number, static_cast<int>(e.offset) + 1}, e.what,
+                       echo_for(text, static_cast<int>(e.offset) + 1));
     }
     p.lines.push_back(std::move(l));
   }

@@ -26,15 +26,15 @@ struct ProgramLine {
   int number = 0;    ///< 1-based line in the file
   std::string text;  ///< as written (for messages)
   Line block;
-  int unit = 0;      ///< index into Program::units
+  int unit = 0;             ///< index into Program::units
   std::size_t partner = 0;  ///< IF -> ELSE or ENDIF, ELSE -> ENDIF, ENDIF/ENDWHILE/... -> its opener
   std::size_t end = 0;      ///< an opener -> its closer
 };
 
 struct Unit {
-  std::string name;              ///< upper case ("" for the main program without a header)
-  std::size_t first = 0;         ///< the first line of its body
-  std::size_t last = 0;          ///< one past its last line
+  std::string name;                     ///< upper case ("" for the main program without a header)
+  std::size_t first = 0;                ///< the first line of its body
+  std::size_t last = 0;                 ///< one past its last line
   std::vector<std::string> parameters;  ///< PROC NAME(REAL A, INT B): the names
   std::vector<char> parameter_types;    ///< 'R' real, 'I' int, 'B' bool, 'S' string
 };

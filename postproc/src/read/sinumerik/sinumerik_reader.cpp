@@ -24,7 +24,7 @@ class IsoStream final : public std::streambuf {
   explicit IsoStream(Translator& t) : translator_(t) {}
   std::vector<int> source_line;
   std::map<int, std::string> tool_selected;  ///< ISO line of a T word -> the tool's name ("" by number)
-  std::exception_ptr failure;  ///< the translator's own error (already on a Sinumerik line)
+  std::exception_ptr failure;                ///< the translator's own error (already on a Sinumerik line)
 
  protected:
   int_type underflow() override {
@@ -71,16 +71,22 @@ struct SinumerikReader::State {
   gcode::GcodeClReader gcode;
 
   State(std::istream& in, std::string f, const Machine& m, const Setup& s, const ReaderOptions& o)
-      : file(f), translator(load_program(in, f), m, s, translator_options(o)), buffer(translator), iso(&buffer),
+      : file(f),
+        translator(load_program(in, f), m, s, translator_options(o)),
+        buffer(translator),
+        iso(&buffer),
         gcode((iso.exceptions(std::ios::badbit), iso), f, m, s, o.gcode) {}
 
   /// The Sinumerik line of ISO line `n` (0 when not known).
   int source_of(int n) const {
-    return n >= 1 && static_cast<std::size_t>(n) <= buffer.source_line.size() ? buffer.source_line[static_cast<std::size_t>(n - 1)] : 0;
+    return n >= 1 && static_cast<std::size_t>(n) <= buffer.source_line.size()
+               ? buffer.source_line[static_cast<std::size_t>(n - 1)]
+               : 0;
   }
   std::string text_of(int line) const {
     const auto& lines = translator.program().lines;
-    return line >= 1 && static_cast<std::size_t>(line) <= lines.size() ? lines[static_cast<std::size_t>(line - 1)].text : "";
+    return line >= 1 && static_cast<std::size_t>(line) <= lines.size() ? lines[static_cast<std::size_t>(line - 1)].text
+                                                                       : "";
   }
   /// A tool change at ISO line `n` takes the name of the tool the last T word before it selected.
   void name_tool(cl::ToolChange& t, int n) const {

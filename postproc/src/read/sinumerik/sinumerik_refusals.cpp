@@ -19,19 +19,37 @@ struct GEntry {
 
 constexpr GEntry kG[] = {
     {4, GAction::dwell, "dwell"},
-    {17, GAction::pass, ""}, {18, GAction::pass, ""}, {19, GAction::pass, ""},
-    {40, GAction::pass, ""}, {41, GAction::pass, ""}, {42, GAction::pass, ""},
-    {54, GAction::pass, ""}, {55, GAction::pass, ""}, {56, GAction::pass, ""}, {57, GAction::pass, ""},
-    {70, GAction::pass, ""}, {71, GAction::pass, ""}, {700, GAction::pass, ""}, {710, GAction::pass, ""},
-    {93, GAction::pass, ""}, {94, GAction::pass, ""}, {95, GAction::pass, ""},
-    {9, GAction::note, "exact stop for the block"}, {60, GAction::note, "exact stop"},
-    {64, GAction::note, "continuous-path mode"}, {641, GAction::note, "continuous-path mode with smoothing"},
+    {17, GAction::pass, ""},
+    {18, GAction::pass, ""},
+    {19, GAction::pass, ""},
+    {40, GAction::pass, ""},
+    {41, GAction::pass, ""},
+    {42, GAction::pass, ""},
+    {54, GAction::pass, ""},
+    {55, GAction::pass, ""},
+    {56, GAction::pass, ""},
+    {57, GAction::pass, ""},
+    {70, GAction::pass, ""},
+    {71, GAction::pass, ""},
+    {700, GAction::pass, ""},
+    {710, GAction::pass, ""},
+    {93, GAction::pass, ""},
+    {94, GAction::pass, ""},
+    {95, GAction::pass, ""},
+    {9, GAction::note, "exact stop for the block"},
+    {60, GAction::note, "exact stop"},
+    {64, GAction::note, "continuous-path mode"},
+    {641, GAction::note, "continuous-path mode with smoothing"},
     {642, GAction::note, "continuous-path mode with smoothing within tolerances"},
     {643, GAction::note, "continuous-path mode, block-internal smoothing"},
-    {644, GAction::note, "continuous-path mode with maximum dynamics"}, {645, GAction::note, "continuous-path smoothing"},
-    {601, GAction::note, "exact stop fine"}, {602, GAction::note, "exact stop coarse"},
-    {603, GAction::note, "exact stop at interpolation end"}, {97, GAction::note, "constant spindle speed (rpm)"},
-    {450, GAction::note, "transition circle at outer corners"}, {451, GAction::note, "intersection at outer corners"},
+    {644, GAction::note, "continuous-path mode with maximum dynamics"},
+    {645, GAction::note, "continuous-path smoothing"},
+    {601, GAction::note, "exact stop fine"},
+    {602, GAction::note, "exact stop coarse"},
+    {603, GAction::note, "exact stop at interpolation end"},
+    {97, GAction::note, "constant spindle speed (rpm)"},
+    {450, GAction::note, "transition circle at outer corners"},
+    {451, GAction::note, "intersection at outer corners"},
 };
 
 struct NameEntry {
@@ -40,36 +58,71 @@ struct NameEntry {
 };
 
 constexpr NameEntry kNoted[] = {
-    {"SOFT", "jerk-limited acceleration"}, {"BRISK", "step acceleration"}, {"DRIVE", "acceleration mode"},
-    {"FFWON", "feed forward control on"}, {"FFWOF", "feed forward control off"},
-    {"COMPOF", "compressor off"}, {"COMPON", "compressor"}, {"COMPCAD", "compressor for CAD surfaces"},
-    {"COMPCURV", "compressor with constant curvature"}, {"COMPSURF", "compressor for surfaces"},
-    {"CYCLE832", "high-speed settings: a path tolerance of the control"}, {"FNORM", "normal feed"},
-    {"CFC", "constant feed at the contour"}, {"CFTCP", "constant feed at the tool centre"},
-    {"CFIN", "constant feed on inner arcs"}, {"UPATH", "path parameter"}, {"SPATH", "path parameter"},
-    {"ORIWKS", "orientation interpolated in the workpiece frame: between the blocks the posted program "
-               "interpolates the machine axes"},
-    {"ORIMKS", "orientation interpolated in the machine frame"}, {"ORIAXES", "orientation by axis interpolation"},
-    {"ORIVECT", "orientation by vector interpolation"}, {"CUT2D", "2-D radius compensation"},
-    {"CUT2DF", "2-D radius compensation in the frame"}, {"STOPRE", "preprocessing stop"},
-    {"DIAMOF", "radius programming"}, {"SETMS", "master spindle"}, {"WAITMC", "wait for marker"},
-    {"CTOL", "contour tolerance"}, {"OTOL", "orientation tolerance"},
-    {"TCOABS", "tool length from the tool data"}, {"ORIPATH", "orientation relative to the path"},
+    {"SOFT", "jerk-limited acceleration"},
+    {"BRISK", "step acceleration"},
+    {"DRIVE", "acceleration mode"},
+    {"FFWON", "feed forward control on"},
+    {"FFWOF", "feed forward control off"},
+    {"COMPOF", "compressor off"},
+    {"COMPON", "compressor"},
+    {"COMPCAD", "compressor for CAD surfaces"},
+    {"COMPCURV", "compressor with constant curvature"},
+    {"COMPSURF", "compressor for surfaces"},
+    {"CYCLE832", "high-speed settings: a path tolerance of the control"},
+    {"FNORM", "normal feed"},
+    {"CFC", "constant feed at the contour"},
+    {"CFTCP", "constant feed at the tool centre"},
+    {"CFIN", "constant feed on inner arcs"},
+    {"UPATH", "path parameter"},
+    {"SPATH", "path parameter"},
+    {"ORIWKS",
+     "orientation interpolated in the workpiece frame: between the blocks the posted program "
+     "interpolates the machine axes"},
+    {"ORIMKS", "orientation interpolated in the machine frame"},
+    {"ORIAXES", "orientation by axis interpolation"},
+    {"ORIVECT", "orientation by vector interpolation"},
+    {"CUT2D", "2-D radius compensation"},
+    {"CUT2DF", "2-D radius compensation in the frame"},
+    {"STOPRE", "preprocessing stop"},
+    {"DIAMOF", "radius programming"},
+    {"SETMS", "master spindle"},
+    {"WAITMC", "wait for marker"},
+    {"CTOL", "contour tolerance"},
+    {"OTOL", "orientation tolerance"},
+    {"TCOABS", "tool length from the tool data"},
+    {"ORIPATH", "orientation relative to the path"},
 };
 
 constexpr NameEntry kRefused[] = {
-    {"MIRROR", "frame mirroring"}, {"AMIRROR", "frame mirroring"}, {"RPL", "rotation in the plane"},
-    {"TRANSMIT", "face-end transformation"}, {"TRACYL", "cylinder surface transformation"},
-    {"TRAANG", "inclined axis transformation"}, {"TRACON", "chained transformations"},
-    {"CIP", "a circle through an intermediate point"}, {"CT", "a tangential circle"}, {"POLY", "polynomial interpolation"},
-    {"BSPLINE", "spline interpolation"}, {"ASPLINE", "spline interpolation"}, {"CSPLINE", "spline interpolation"},
-    {"G153", "suppression of all frames blockwise"}, {"DIAMON", "diameter programming (turning)"},
-    {"TCARR", "a tool carrier selected by the program"}, {"TOFRAME", "a frame along the tool"},
-    {"PAROT", "a frame aligned with the workpiece"}, {"CYCLE83", "deep-hole drilling (not read yet)"},
-    {"CYCLE84", "rigid tapping"}, {"CYCLE840", "tapping with compensating chuck"}, {"CYCLE85", "reaming"},
+    {"MIRROR", "frame mirroring"},
+    {"AMIRROR", "frame mirroring"},
+    {"RPL", "rotation in the plane"},
+    {"TRANSMIT", "face-end transformation"},
+    {"TRACYL", "cylinder surface transformation"},
+    {"TRAANG", "inclined axis transformation"},
+    {"TRACON", "chained transformations"},
+    {"CIP", "a circle through an intermediate point"},
+    {"CT", "a tangential circle"},
+    {"POLY", "polynomial interpolation"},
+    {"BSPLINE", "spline interpolation"},
+    {"ASPLINE", "spline interpolation"},
+    {"CSPLINE", "spline interpolation"},
+    {"G153", "suppression of all frames blockwise"},
+    {"DIAMON", "diameter programming (turning)"},
+    {"TCARR", "a tool carrier selected by the program"},
+    {"TOFRAME", "a frame along the tool"},
+    {"PAROT", "a frame aligned with the workpiece"},
+    {"CYCLE83", "deep-hole drilling (not read yet)"},
+    {"CYCLE84", "rigid tapping"},
+    {"CYCLE840", "tapping with compensating chuck"},
+    {"CYCLE85", "reaming"},
     {"CYCLE86", "boring"},
-    {"SPOS", "spindle positioning"}, {"OFFN", "contour offset"}, {"CUT3DC", "3-D radius compensation"},
-    {"CUT3DF", "3-D radius compensation"}, {"CUT3DFF", "3-D radius compensation"}, {"ORIC", "orientation change at corners"},
+    {"SPOS", "spindle positioning"},
+    {"OFFN", "contour offset"},
+    {"CUT3DC", "3-D radius compensation"},
+    {"CUT3DF", "3-D radius compensation"},
+    {"CUT3DFF", "3-D radius compensation"},
+    {"ORIC", "orientation change at corners"},
 };
 
 }  // namespace
@@ -88,8 +141,10 @@ const char* g_meaning(int g) {
 
 std::string refused_g(int g) {
   if (g >= 505 && g <= 599)
-    return fmt::format("G{}: a settable work offset beyond G57 is not read (its values are the control's); use G54 "
-                       "and give the part's position with --workpiece-origin", g);
+    return fmt::format(
+        "G{}: a settable work offset beyond G57 is not read (its values are the control's); use G54 "
+        "and give the part's position with --workpiece-origin",
+        g);
   if (g == 53) return "G53 (frames suppressed for the block) is not read; program the position in the workpiece frame";
   if (g == 110 || g == 111 || g == 112) return fmt::format("G{}: polar coordinates are not read", g);
   if (g == 331 || g == 332 || g == 33) return fmt::format("G{}: thread cutting and tapping are not read", g);
@@ -113,11 +168,14 @@ std::string refused_name(const std::string& name) {
   for (const NameEntry& e : kRefused)
     if (e.name == name) return fmt::format("{} ({}) is not read; {}", name, e.what, kPostCl);
   if (name.size() > 1 && name[0] == 'L' && name.find_first_not_of("0123456789", 1) == std::string::npos)
-    return fmt::format("{}: the subprogram {} is not in this file; append it as %_N_{}_SPF (its blocks) and post "
-                       "the file", name, name, name);
+    return fmt::format(
+        "{}: the subprogram {} is not in this file; append it as %_N_{}_SPF (its blocks) and post "
+        "the file",
+        name, name, name);
   if (name.rfind("CYCLE", 0) == 0) return fmt::format("{} (a Sinumerik cycle) is not read; {}", name, kPostCl);
   if (!name.empty() && name[0] == '$') return fmt::format("{} (a system variable) is not read", name);
-  return fmt::format("{} is not read (not a statement, address or subprogram of this file ncpost knows); {}", name, kPostCl);
+  return fmt::format("{} is not read (not a statement, address or subprogram of this file ncpost knows); {}", name,
+                     kPostCl);
 }
 
 std::string refused_address(const std::string& name, bool number) {

@@ -69,16 +69,20 @@ bool Translator::step() {
   }
   const ProgramLine& l = program_.lines[pc_];
   if (++executed_ > options_.max_blocks)
-    fail(l, 1, fmt::format("more than {} blocks executed: an endless loop? (the last at this line)", options_.max_blocks));
+    fail(l, 1,
+         fmt::format("more than {} blocks executed: an endless loop? (the last at this line)", options_.max_blocks));
   ++pc_;
   if (l.block.skip && options_.block_skip) {
     notice_once(l, "/", "blocks that start with '/' (skip blocks) are left out, as with skip on");
     return true;
   }
   if (!l.block.header.empty()) return true;
-  if (!l.block.statement.empty()) statement(l);
-  else if (!l.block.items.empty()) block(l);
-  else if (!l.block.comment.empty()) emit(l, ";" + l.block.comment);
+  if (!l.block.statement.empty())
+    statement(l);
+  else if (!l.block.items.empty())
+    block(l);
+  else if (!l.block.comment.empty())
+    emit(l, ";" + l.block.comment);
   return !ended_;
 }
 
@@ -89,7 +93,8 @@ void Translator::statement(const ProgramLine& l) {
   if (s == "DEF") return define(l);
   if (flow_statement(l)) return;
   if (s == "RET") return return_from_unit();
-  if (s == "TRANS" || s == "ATRANS" || s == "ROT" || s == "AROT" || s == "SCALE" || s == "ASCALE") return frame_statement(l);
+  if (s == "TRANS" || s == "ATRANS" || s == "ROT" || s == "AROT" || s == "SCALE" || s == "ASCALE")
+    return frame_statement(l);
   if (s == "CALL") {
     std::string name;
     try {
@@ -101,7 +106,8 @@ void Translator::statement(const ProgramLine& l) {
   }
   if (s == "STOPRE" || s == "SETMS") return notice_once(l, s, fmt::format("{} is noted (nothing to post)", s));
   if (s == "MCALL") return modal_call(l);
-  if (s == "PROC") fail(l, l.block.statement_column, "PROC inside the main program: a subprogram starts a program unit");
+  if (s == "PROC")
+    fail(l, l.block.statement_column, "PROC inside the main program: a subprogram starts a program unit");
   fail(l, l.block.statement_column, fmt::format("{} is not read", s));
 }
 
@@ -124,7 +130,8 @@ bool Translator::flow_statement(const ProgramLine& l) {
   } else if (s == "FOR" || s == "ENDFOR") {
     for_loop(l);
   } else if (s == "REPEAT" && !l.block.rest.empty()) {
-    fail(l, l.block.statement_column, fmt::format("REPEAT {} (repeating a section of the program) is not read", l.block.rest));
+    fail(l, l.block.statement_column,
+         fmt::format("REPEAT {} (repeating a section of the program) is not read", l.block.rest));
   } else if (s != "ENDIF" && s != "REPEAT" && s != "LOOP") {
     return false;
   }
@@ -154,8 +161,11 @@ void Translator::define(const ProgramLine& l) {
   const std::size_t blank = r.find(' ');
   std::string type = upper(r.substr(0, blank));
   if (type.rfind("STRING", 0) == 0) type = "STRING";
-  const VarType t = type == "REAL" ? VarType::real : type == "INT" ? VarType::integer : type == "BOOL" ? VarType::boolean
-                  : type == "STRING" ? VarType::string : VarType::real;
+  const VarType t = type == "REAL"     ? VarType::real
+                    : type == "INT"    ? VarType::integer
+                    : type == "BOOL"   ? VarType::boolean
+                    : type == "STRING" ? VarType::string
+                                       : VarType::real;
   if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
     fail(l, l.block.rest_column, fmt::format("DEF {}: only REAL, INT, BOOL and STRING variables are read", type));
   if (blank == std::string::npos) fail(l, l.block.rest_column, "DEF without a name");
@@ -163,12 +173,15 @@ void Translator::define(const ProgramLine& l) {
     const std::size_t eq = d.find('=');
     std::string name = upper(d.substr(0, eq));
     while (!name.empty() && name.back() == ' ') name.pop_back();
-    if (name.find('[') != std::string::npos) fail(l, l.block.rest_column, fmt::format("DEF {}: arrays are not read", name));
+    if (name.find('[') != std::string::npos)
+      fail(l, l.block.rest_column, fmt::format("DEF {}: arrays are not read", name));
     try {
       values_.define(name, t);
       if (eq == std::string::npos) continue;
-      if (t == VarType::string) values_.assign_string(name, values_.evaluate_string(d.substr(eq + 1)));
-      else values_.assign(name, values_.evaluate(d.substr(eq + 1)));
+      if (t == VarType::string)
+        values_.assign_string(name, values_.evaluate_string(d.substr(eq + 1)));
+      else
+        values_.assign(name, values_.evaluate(d.substr(eq + 1)));
     } catch (const ValueError& e) {
       fail(l, l.block.rest_column, e.what);
     }
@@ -181,15 +194,19 @@ bool Translator::condition(const ProgramLine& l, const std::string& text) {
 
 void Translator::jump(const ProgramLine& l, const std::string& how, const std::string& label) {
   if (label.empty()) fail(l, l.block.statement_column, fmt::format("{} without a label", how));
-  if (how == "GOTOC") fail(l, l.block.statement_column, "GOTOC (a jump that goes on when the label is missing) is not read");
+  if (how == "GOTOC")
+    fail(l, l.block.statement_column, "GOTOC (a jump that goes on when the label is missing) is not read");
   const int unit = l.unit;
   std::optional<std::size_t> to;
   const std::size_t here = pc_ - 1;
   if (how == "GOTOF" || how == "GOTO") to = program_.find_label(unit, label, here + 1, true);
   if (!to && (how == "GOTOB" || how == "GOTO")) to = program_.find_label(unit, label, here, false);
   if (!to)
-    fail(l, l.block.rest_column, fmt::format("{} {}: no label {} {} in this program unit", how, label, label,
-                                             how == "GOTOF" ? "after this block" : how == "GOTOB" ? "before this block" : ""));
+    fail(l, l.block.rest_column,
+         fmt::format("{} {}: no label {} {} in this program unit", how, label, label,
+                     how == "GOTOF"   ? "after this block"
+                     : how == "GOTOB" ? "before this block"
+                                      : ""));
   pc_ = *to;
 }
 
@@ -239,11 +256,13 @@ bool Translator::call_if_subprogram(const ProgramLine& l, const Item& item) {
   return true;
 }
 
-void Translator::call(const ProgramLine& l, const std::string& unit_name, const std::vector<std::string>& args, long repeats) {
+void Translator::call(const ProgramLine& l, const std::string& unit_name, const std::vector<std::string>& args,
+                      long repeats) {
   const auto it = program_.unit_named.find(unit_name);
   if (it == program_.unit_named.end())
-    fail(l, 1, fmt::format("{}: no subprogram {} in this file (post a file with the subprogram appended as %_N_{}_SPF)",
-                           unit_name, unit_name, unit_name));
+    fail(l, 1,
+         fmt::format("{}: no subprogram {} in this file (post a file with the subprogram appended as %_N_{}_SPF)",
+                     unit_name, unit_name, unit_name));
   if (static_cast<int>(calls_.size()) + 1 >= options_.max_call_depth)
     fail(l, 1, fmt::format("{}: more than {} subprogram levels", unit_name, options_.max_call_depth));
   const Unit& u = program_.units[it->second];
@@ -255,10 +274,15 @@ void Translator::call(const ProgramLine& l, const std::string& unit_name, const 
   try {
     for (std::size_t i = 0; i < u.parameters.size(); ++i) {
       const char t = u.parameter_types[i];
-      values_.define(u.parameters[i], t == 'R' ? VarType::real : t == 'I' ? VarType::integer : t == 'B' ? VarType::boolean : VarType::string);
+      values_.define(u.parameters[i], t == 'R'   ? VarType::real
+                                      : t == 'I' ? VarType::integer
+                                      : t == 'B' ? VarType::boolean
+                                                 : VarType::string);
       if (i < given.size() && !given[i].second.empty()) {
-        if (t == 'S') values_.assign_string(u.parameters[i], values_.evaluate_string(given[i].second));
-        else values_.assign(u.parameters[i], given[i].first);
+        if (t == 'S')
+          values_.assign_string(u.parameters[i], values_.evaluate_string(given[i].second));
+        else
+          values_.assign(u.parameters[i], given[i].first);
       }
     }
   } catch (const ValueError& e) {
@@ -304,8 +328,7 @@ void Translator::modal_call(const ProgramLine& l) {
 }
 
 void Translator::end_program(const ProgramLine& l) {
-  if (!calls_.empty())
-    notice_once(l, "end-in-sub", "M2/M30 in a subprogram ends the program");
+  if (!calls_.empty()) notice_once(l, "end-in-sub", "M2/M30 in a subprogram ends the program");
   ended_ = true;
 }
 

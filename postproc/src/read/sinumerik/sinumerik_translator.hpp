@@ -36,9 +36,9 @@ namespace ncpost::sinumerik {
 
 struct TranslatorOptions {
   double arc_chord_tolerance_mm = 1e-3;
-  int max_call_depth = 16;               ///< subprogram levels (the control's limit is 16 with the main program)
-  long max_blocks = 50'000'000;          ///< blocks executed before the program is taken as an endless loop
-  bool block_skip = true;                ///< '/' blocks are left out
+  int max_call_depth = 16;       ///< subprogram levels (the control's limit is 16 with the main program)
+  long max_blocks = 50'000'000;  ///< blocks executed before the program is taken as an endless loop
+  bool block_skip = true;        ///< '/' blocks are left out
 };
 
 /// One ISO block for the G-code reader and the Sinumerik line it comes from.
@@ -69,7 +69,7 @@ class Translator {
   struct Call {
     std::size_t return_to = 0;
     int unit = 0;
-    int line = 0;           ///< the calling line
+    int line = 0;  ///< the calling line
     std::string name;
     Values::Saved saved;
     long repeats_left = 0;  ///< L<n> P<k>: further runs
@@ -105,10 +105,13 @@ class Translator {
 
   // motion (sinumerik_motion.cpp)
   void motion(const ProgramLine& l, Words& w, std::string& iso);
-  void linear_target(const ProgramLine& l, const Words& w, Eigen::Vector3d& target_prog, std::array<bool, 3>& programmed);
-  std::string axis_words(const ProgramLine& l, const Eigen::Vector3d& target_prog, const std::array<bool, 3>& programmed, bool all);
+  void linear_target(const ProgramLine& l, const Words& w, Eigen::Vector3d& target_prog,
+                     std::array<bool, 3>& programmed);
+  std::string axis_words(const ProgramLine& l, const Eigen::Vector3d& target_prog,
+                         const std::array<bool, 3>& programmed, bool all);
   std::string rotary_words(const ProgramLine& l, Words& w);
-  void arc(const ProgramLine& l, Words& w, const Eigen::Vector3d& target_prog, std::string& iso, const std::string& tail);
+  void arc(const ProgramLine& l, Words& w, const Eigen::Vector3d& target_prog, std::string& iso,
+           const std::string& tail);
   std::string orientation_words(const ProgramLine& l, const Words& w);
   std::string supa_words(const ProgramLine& l, const Words& w);
   Eigen::Vector3d current_prog(const ProgramLine& l, int column) const;
@@ -141,18 +144,18 @@ class Translator {
   bool started_ = false;
 
   // modal state
-  int motion_ = -1;            ///< 0 1 2 3 (G0..G3); -1 none yet
+  int motion_ = -1;  ///< 0 1 2 3 (G0..G3); -1 none yet
   int plane_ = 17;
-  bool incremental_ = false;   ///< G91
-  bool traori_ = false;        ///< TRAORI programmed
-  bool swivel_tip_ = false;    ///< CYCLE800 made the reader take tool-tip positions
-  bool length_off_ = false;    ///< D0 in force
-  bool inch_ = false;          ///< G70/G700 in force (lengths in inch)
+  bool incremental_ = false;  ///< G91
+  bool traori_ = false;       ///< TRAORI programmed
+  bool swivel_tip_ = false;   ///< CYCLE800 made the reader take tool-tip positions
+  bool length_off_ = false;   ///< D0 in force
+  bool inch_ = false;         ///< G70/G700 in force (lengths in inch)
   Frame programmable_;
   Frame swivel_;
   Eigen::Vector3d base_ = Eigen::Vector3d::Zero();  ///< the last position in W (program unit)
   std::array<bool, 3> base_known_{};
-  std::array<double, 3> rotary_deg_{};               ///< A B C as last programmed
+  std::array<double, 3> rotary_deg_{};  ///< A B C as last programmed
   std::array<bool, 3> rotary_known_{};
   std::optional<Drilling> mcall_;
 

@@ -29,10 +29,9 @@ struct Function {
   std::string_view close;  ///< written for the ')'
 };
 constexpr Function kFunctions[] = {
-    {"SIN", "SIN[", "", "]"},   {"COS", "COS[", "", "]"},     {"TAN", "TAN[", "", "]"},
-    {"ASIN", "ASIN[", "", "]"}, {"ACOS", "ACOS[", "", "]"},   {"SQRT", "SQRT[", "", "]"},
-    {"ABS", "ABS[", "", "]"},   {"ROUND", "ROUND[", "", "]"}, {"TRUNC", "FIX[", "", "]"},
-    {"LN", "LN[", "", "]"},     {"EXP", "EXP[", "", "]"},     {"POT", "[[", "", "]**2]"},
+    {"SIN", "SIN[", "", "]"},       {"COS", "COS[", "", "]"},   {"TAN", "TAN[", "", "]"}, {"ASIN", "ASIN[", "", "]"},
+    {"ACOS", "ACOS[", "", "]"},     {"SQRT", "SQRT[", "", "]"}, {"ABS", "ABS[", "", "]"}, {"ROUND", "ROUND[", "", "]"},
+    {"TRUNC", "FIX[", "", "]"},     {"LN", "LN[", "", "]"},     {"EXP", "EXP[", "", "]"}, {"POT", "[[", "", "]**2]"},
     {"ATAN2", "ATAN[", "]/[", "]"},
 };
 
@@ -65,10 +64,13 @@ void Values::define(const std::string& name, VarType type) {
   if (r_parameter(name) >= 0) throw ValueError{0, fmt::format("DEF {}: R parameters are predefined", name)};
   const auto letter_ = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
   if (name.size() < 2 || !letter_(name[0]) || !letter_(name[1]))
-    throw ValueError{0, fmt::format("DEF {}: a name starts with two letters or underscores (one letter is an address)", name)};
+    throw ValueError{
+        0, fmt::format("DEF {}: a name starts with two letters or underscores (one letter is an address)", name)};
   types_[name] = type;
-  if (type == VarType::string) strings_[name] = "";
-  else params_.set(key_of(name), 0.0);
+  if (type == VarType::string)
+    strings_[name] = "";
+  else
+    params_.set(key_of(name), 0.0);
 }
 
 bool Values::known(const std::string& name) const { return r_parameter(name) >= 0 || types_.count(name) > 0; }
@@ -80,8 +82,10 @@ void Values::assign(const std::string& name, double value) {
     return;
   }
   const auto it = types_.find(name);
-  if (it == types_.end()) throw ValueError{0, fmt::format("{} is not defined (DEF REAL/INT/BOOL {} first)", name, name)};
-  if (it->second == VarType::string) throw ValueError{0, fmt::format("{} is a STRING: a number cannot be assigned", name)};
+  if (it == types_.end())
+    throw ValueError{0, fmt::format("{} is not defined (DEF REAL/INT/BOOL {} first)", name, name)};
+  if (it->second == VarType::string)
+    throw ValueError{0, fmt::format("{} is a STRING: a number cannot be assigned", name)};
   if (it->second == VarType::integer) value = std::round(value);
   if (it->second == VarType::boolean) value = value != 0.0 ? 1.0 : 0.0;
   params_.set(key_of(name), value);
@@ -110,10 +114,12 @@ std::optional<std::string> Values::string_value(const std::string& name) const {
 std::string Values::evaluate_string(std::string_view e) const {
   while (!e.empty() && e.front() == ' ') e.remove_prefix(1);
   while (!e.empty() && e.back() == ' ') e.remove_suffix(1);
-  if (e.size() >= 2 && e.front() == '"' && e.back() == '"' && e.substr(1, e.size() - 2).find('"') == std::string_view::npos)
+  if (e.size() >= 2 && e.front() == '"' && e.back() == '"' &&
+      e.substr(1, e.size() - 2).find('"') == std::string_view::npos)
     return std::string(e.substr(1, e.size() - 2));
   if (auto s = string_value(upper(e))) return *s;
-  throw ValueError{0, fmt::format("'{}': expected a string \"...\" or a STRING variable (string operations are not read)", e)};
+  throw ValueError{
+      0, fmt::format("'{}': expected a string \"...\" or a STRING variable (string operations are not read)", e)};
 }
 
 double Values::evaluate(std::string_view e) const {
@@ -169,8 +175,9 @@ std::size_t Values::name_token(std::string_view e, std::size_t i, std::string& o
 
 namespace {
 
-constexpr const char* kMixed = "a comparison beside AND/OR/XOR without parentheses: Sinumerik binds comparisons last, "
-                               "other languages first; write (A==1) AND (B==2)";
+constexpr const char* kMixed =
+    "a comparison beside AND/OR/XOR without parentheses: Sinumerik binds comparisons last, "
+    "other languages first; write (A==1) AND (B==2)";
 
 /// A comparison operator at `i` in the evaluator's words (" EQ " ...), its length in `length`; null otherwise.
 const char* comparison_at(std::string_view e, std::size_t i, std::size_t& length) {
@@ -212,8 +219,10 @@ std::string Values::to_bracket_syntax(std::string_view e) const {
       if (c == ',' && (!f || f->comma.empty())) throw ValueError{i, "',' outside a function's arguments"};
       if (levels.back().comparison && levels.back().logic) throw ValueError{i, kMixed};
       out += c == ',' ? std::string(f->comma) : f ? std::string(f->close) : std::string("]");
-      if (c == ',') levels.back().comparison = levels.back().logic = false;
-      else levels.pop_back();
+      if (c == ',')
+        levels.back().comparison = levels.back().logic = false;
+      else
+        levels.pop_back();
       ++i;
     } else if (c == '"') {
       throw ValueError{i, "a string is not a number (strings are only read in MSG() and T=)"};

@@ -14,13 +14,13 @@ namespace ncpost::report {
 
 struct CircularityFigures {
   bool ok = false;
-  std::string message;      ///< why not ok (too few points, arc too short)
-  double G_um = 0.0;        ///< circular deviation about the LSC centre
+  std::string message;  ///< why not ok (too few points, arc too short)
+  double G_um = 0.0;    ///< circular deviation about the LSC centre
   double F_max_um = 0.0, F_min_um = 0.0;
-  double H_um = -1.0;       ///< < 0: one direction only
+  double H_um = -1.0;                           ///< < 0: one direction only
   double centre_x_um = 0.0, centre_y_um = 0.0;  ///< LSC centre offset (in the plane of θ)
-  double arc_deg = 0.0;     ///< angle covered (at most 360)
-  int direction = 0;        ///< +1 counter-clockwise (θ rising), −1 clockwise, 0 both
+  double arc_deg = 0.0;                         ///< angle covered (at most 360)
+  int direction = 0;                            ///< +1 counter-clockwise (θ rising), −1 clockwise, 0 both
 };
 
 CircularityFigures iso230_4_circularity(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
@@ -32,6 +32,7 @@ CircularityFigures iso230_4_circularity(const std::vector<double>& angle_rad, co
 struct CircularityByDirection {
   CircularityFigures both, ccw, cw;
 };
-CircularityByDirection iso230_4_by_direction(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
+CircularityByDirection iso230_4_by_direction(const std::vector<double>& angle_rad,
+                                             const std::vector<double>& radial_um);
 
 }  // namespace ncpost::report

@@ -16,16 +16,16 @@ std::string escape(const std::string& text);
 std::string base_name(const std::string& path);
 
 struct InputFile {
-  std::string role;  ///< "machine", "measurement", "CL input", "model", ...
-  std::string path;  ///< as given; its bytes are hashed when the page is made
+  std::string role;        ///< "machine", "measurement", "CL input", "model", ...
+  std::string path;        ///< as given; its bytes are hashed when the page is made
   std::string shown = {};  ///< the name shown, if not the path (e.g. "<stdin>" for its spool file)
 };
 
 struct Provenance {
-  std::string title;                ///< <title> and <h1>
-  std::string machine;              ///< the machine's name (and file)
-  std::string model;                ///< the error model (file, or what was identified); empty: none
-  std::vector<InputFile> inputs;    ///< named with their SHA-256
+  std::string title;              ///< <title> and <h1>
+  std::string machine;            ///< the machine's name (and file)
+  std::string model;              ///< the error model (file, or what was identified); empty: none
+  std::vector<InputFile> inputs;  ///< named with their SHA-256
   std::vector<std::pair<std::string, std::string>> extra;  ///< further rows (label, HTML)
 };
 

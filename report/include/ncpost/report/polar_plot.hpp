@@ -17,8 +17,8 @@ struct PolarTrace {
 
 struct PolarFrame {
   std::string title;
-  std::string subtitle;     ///< e.g. "axes moved: Y Z A C; C 86.4°/min counter-clockwise"
-  std::string angle_axis;   ///< e.g. "C": spokes read "C 30°"
+  std::string subtitle;    ///< e.g. "axes moved: Y Z A C; C 86.4°/min counter-clockwise"
+  std::string angle_axis;  ///< e.g. "C": spokes read "C 30°"
   std::string unit = "µm";
   double scale_span = 0.0;  ///< ± range of the rings (0: from the data, rounded up)
   int size = 380;

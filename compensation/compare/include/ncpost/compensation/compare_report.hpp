@@ -13,6 +13,7 @@ namespace ncpost::comp {
 std::string compare_text(const Comparison& comparison);
 
 /// `machine_file`: named with its SHA-256 with the sessions' files.
-std::string compare_html(const Comparison& comparison, const std::string& machine_name, const std::string& machine_file);
+std::string compare_html(const Comparison& comparison, const std::string& machine_name,
+                         const std::string& machine_file);
 
 }  // namespace ncpost::comp

@@ -25,9 +25,9 @@
 namespace ncpost::comp {
 
 struct SessionFigure {
-  std::string name;   ///< "G", "G ccw", "H", "A", …, or a parameter name ("EY0A")
-  std::string kind;   ///< the tolerance kind it is judged by (decision_rule.hpp), "" for none
-  std::string unit;   ///< "µm" or "µrad"
+  std::string name;  ///< "G", "G ccw", "H", "A", …, or a parameter name ("EY0A")
+  std::string kind;  ///< the tolerance kind it is judged by (decision_rule.hpp), "" for none
+  std::string unit;  ///< "µm" or "µrad"
   double value = 0.0;
   std::optional<UncertaintyBudget> budget;  ///< none: the data give no uncertainty for it
   /// U (k = 2), 0 without a budget.

@@ -24,8 +24,8 @@ namespace ncpost::comp {
 /// One figure over the sessions (a figure a session lacks, e.g. G cw of a one-way run: nullopt).
 struct FigureTrend {
   std::string name, kind, unit;
-  std::vector<std::optional<double>> value;   ///< per session
-  std::vector<double> expanded;               ///< U per session (0: none)
+  std::vector<std::optional<double>> value;     ///< per session
+  std::vector<double> expanded;                 ///< U per session (0: none)
   std::vector<std::optional<Verdict>> verdict;  ///< per session, with a tolerance and a U
   std::optional<double> tolerance;
   /// First and last session that have the figure; the change between them and its U.
@@ -37,8 +37,8 @@ struct FigureTrend {
 struct Comparison {
   std::vector<Session> sessions;
   std::vector<FigureTrend> figures;
-  bool dated = false;             ///< every session has a date
-  std::vector<double> day;        ///< per session: days since the first (dated), else 1, 2, 3, …
+  bool dated = false;       ///< every session has a date
+  std::vector<double> day;  ///< per session: days since the first (dated), else 1, 2, 3, …
 };
 
 /// Days since 1970-01-01 of an ISO 8601 date as the files use it (measurement_conditions.hpp:

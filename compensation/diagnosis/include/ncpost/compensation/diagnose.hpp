@@ -48,13 +48,13 @@
 namespace ncpost::comp {
 
 struct DiagnoseOptions {
-  IdentifyOptions identify;          ///< for every fit (loss, fixed values, rank tolerance)
-  double significance = 1e-3;        ///< family-wise false-positive rate of one step
+  IdentifyOptions identify;    ///< for every fit (loss, fixed values, rank tolerance)
+  double significance = 1e-3;  ///< family-wise false-positive rate of one step
   int max_effects = 8;
-  int refit_top = 3;                 ///< candidates refitted per step (by screened drop)
-  double alias_tolerance = 1e-3;     ///< fit/rank.hpp's default
-  PlausibleSizes plausible;          ///< diagnose_effect_size.hpp
-  bool weight_by_set_noise = true;   ///< final refit weighted by each set's noise (see below)
+  int refit_top = 3;                                 ///< candidates refitted per step (by screened drop)
+  double alias_tolerance = 1e-3;                     ///< fit/rank.hpp's default
+  PlausibleSizes plausible;                          ///< diagnose_effect_size.hpp
+  bool weight_by_set_noise = true;                   ///< final refit weighted by each set's noise (see below)
   std::function<void(const std::string&)> progress;  ///< one line per step (optional)
 
   std::string validate() const;
@@ -64,16 +64,16 @@ struct DiagnoseOptions {
 struct AddedEffect {
   Candidate candidate;
   std::vector<std::string> equivalent;  ///< effects the data cannot tell from it (same signature)
-  ErrorParameters values;       ///< its fitted parameters (and held ones), mm / rad / s
-  ErrorParameters uncertainty;  ///< 1σ of the fitted ones
-  double size = 0.0;            ///< amplitude (harmonic √(cos² + sin²)), value, play, drift over the span (mm / rad)
+  ErrorParameters values;               ///< its fitted parameters (and held ones), mm / rad / s
+  ErrorParameters uncertainty;          ///< 1σ of the fitted ones
+  double size = 0.0;  ///< amplitude (harmonic √(cos² + sin²)), value, play, drift over the span (mm / rad)
   double size_sigma = 0.0;
   bool size_is_angle = false;
   double rms_before_um = 0.0, rms_after_um = 0.0, max_before_um = 0.0, max_after_um = 0.0;
   double f_statistic = 0.0;
-  double bic = 0.0;             ///< m·ln(S1/m) + p1·ln(m) of the model with it (the choice among accepted ones)
+  double bic = 0.0;  ///< m·ln(S1/m) + p1·ln(m) of the model with it (the choice among accepted ones)
   double p_value = 1.0;
-  int tested = 0;               ///< candidates screened in its step
+  int tested = 0;  ///< candidates screened in its step
   /// Can the data tell it from the other fitted parameters (issue 17, e.g. EXC:h2 beside
   /// EAC:h2 / EBC:h2)? The sine of its columns to the span of all others in the final model
   /// (fit/rank.hpp's measure; 1 = independent, 0 = an alias), and the added effects
@@ -86,7 +86,7 @@ struct AddedEffect {
   /// reported as an alias of them. `alias_of`: those that correlate with it above 0.5.
   double alias_correlation = 0.0;
   std::vector<std::string> alias_of;
-  std::string separation;       ///< the verdict in words: "real: ..." or "an alias of ...: ..."
+  std::string separation;  ///< the verdict in words: "real: ..." or "an alias of ...: ..."
 };
 
 /// Why the best candidates of the last step were not added.
@@ -98,14 +98,14 @@ struct RejectedEffect {
 };
 
 struct DiagnoseResult {
-  IdentifyResult basic;                 ///< the basic model's fit
-  IdentifyResult final_fit;             ///< with the added effects
-  std::vector<std::string> final_names; ///< fitted parameters of the final model, in order
-  ErrorParameters held;                 ///< held parameters (drift tau) of the added effects
+  IdentifyResult basic;                  ///< the basic model's fit
+  IdentifyResult final_fit;              ///< with the added effects
+  std::vector<std::string> final_names;  ///< fitted parameters of the final model, in order
+  ErrorParameters held;                  ///< held parameters (drift tau) of the added effects
   std::vector<AddedEffect> added;
   std::vector<RejectedEffect> last_rejected;
-  double noise_um = 0.0;                ///< noise estimated from the data (diagnose_signature.hpp)
-  std::vector<double> set_noise_um;     ///< per set: residual rms of the final model (its weight 1/σ)
+  double noise_um = 0.0;             ///< noise estimated from the data (diagnose_signature.hpp)
+  std::vector<double> set_noise_um;  ///< per set: residual rms of the final model (its weight 1/σ)
   ResidualSignature before, after;
   Eigen::VectorXd residual_before_mm, residual_after_mm;
   std::string stop_reason;

@@ -28,14 +28,15 @@ namespace ncpost::comp {
 
 /// One indicator column per group of every column in `columns` (residual_columns) whose set has
 /// structure in `left` (residuals stacked as residuals.hpp); `count` the residual's length.
-Eigen::MatrixXd structure_nuisance(const std::vector<MeasurementSet>& sets, const std::vector<ResidualStructure>& columns,
+Eigen::MatrixXd structure_nuisance(const std::vector<MeasurementSet>& sets,
+                                   const std::vector<ResidualStructure>& columns,
                                    const std::vector<ResidualStructure>& left, Eigen::Index count);
 
 struct OwnEvidence {
   double separation = 0.0;  ///< smallest |P c| / |c| over the effect's columns
   double f_statistic = 0.0;
   double p_value = 1.0;
-  double drop_mm2 = 0.0;    ///< the part of the residual it explains beyond the structure (mm²)
+  double drop_mm2 = 0.0;  ///< the part of the residual it explains beyond the structure (mm²)
 };
 
 /// `J` the Jacobian of the final model's fitted parameters (columns), `r` its residual (mm),

@@ -38,12 +38,12 @@ constexpr int kMaxHarmonicOrder = 24;
 
 /// How the data sample a rotary axis (index into Machine::axes).
 struct AxisSampling {
-  bool turns = false;            ///< some set turns it most of a turn (≥ 270°, ≥ 9 distinct angles)
-  int max_order = 4;             ///< highest harmonic order resolved: per turning set, of its distinct
-                                 ///< angles round the turn with largest gap g, floor((360°/g − 1)/2);
-                                 ///< the largest over the sets, 4 ≤ order ≤ kMaxHarmonicOrder
-  double coarsest_gap_deg = 0.0; ///< the largest gap g among the turning sets (the table's grid)
-  double finest_gap_deg = 0.0;   ///< the smallest such g
+  bool turns = false;             ///< some set turns it most of a turn (≥ 270°, ≥ 9 distinct angles)
+  int max_order = 4;              ///< highest harmonic order resolved: per turning set, of its distinct
+                                  ///< angles round the turn with largest gap g, floor((360°/g − 1)/2);
+                                  ///< the largest over the sets, 4 ≤ order ≤ kMaxHarmonicOrder
+  double coarsest_gap_deg = 0.0;  ///< the largest gap g among the turning sets (the table's grid)
+  double finest_gap_deg = 0.0;    ///< the smallest such g
 };
 AxisSampling axis_sampling(const std::vector<MeasurementSet>& sets, int axis_index);
 
@@ -52,7 +52,7 @@ AxisSampling axis_sampling(const std::vector<MeasurementSet>& sets, int axis_ind
 double table_spacing_deg(const AxisSampling& sampling);
 
 struct Candidate {
-  std::string effect;                   ///< effect name, e.g. "ECC:h2", "drift:Z:t"
+  std::string effect;  ///< effect name, e.g. "ECC:h2", "drift:Z:t"
   CandidateKind kind = CandidateKind::component;
   std::vector<std::string> parameters;  ///< the parameters fitted for it
   ErrorParameters held;                 ///< parameters held at a value (drift tau, s)
@@ -61,8 +61,8 @@ struct Candidate {
 
 /// Every candidate the machine and the data allow, minus those whose parameters are all in
 /// `present`. Order: rotary component errors axis by axis, squareness, linear component errors,
-/// reversal, drift, instruments, coupled location errors, rotary tables. The order names a class of candidates that act alike on the data
-/// (e.g. EC0Y and EXY:p1, the degree-1 straightness that is a squareness): the first is given.
+/// reversal, drift, instruments, coupled location errors, rotary tables. The order names a class of candidates that act
+/// alike on the data (e.g. EC0Y and EXY:p1, the degree-1 straightness that is a squareness): the first is given.
 std::vector<Candidate> candidate_catalogue(const Machine& machine, const std::vector<MeasurementSet>& sets,
                                            const std::vector<std::string>& present);
 

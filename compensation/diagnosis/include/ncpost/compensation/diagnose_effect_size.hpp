@@ -16,9 +16,9 @@
 namespace ncpost::comp {
 
 struct PlausibleSizes {
-  double length_mm = 0.1;       ///< component errors, linear reversal
-  double angle_rad = 5e-4;      ///< (≈ 100 arcsec) angular errors, squareness, rotary reversal
-  double drift_mm = 0.2;        ///< over the data's time span
+  double length_mm = 0.1;   ///< component errors, linear reversal
+  double angle_rad = 5e-4;  ///< (≈ 100 arcsec) angular errors, squareness, rotary reversal
+  double drift_mm = 0.2;    ///< over the data's time span
   double instrument_mm = 0.5;
   bool valid() const { return length_mm > 0 && angle_rad > 0 && drift_mm > 0 && instrument_mm > 0; }
 };

@@ -32,9 +32,9 @@ namespace ncpost::comp {
 
 struct ResidualStructure {
   std::string file;
-  std::string value;          ///< "L", "dx", "dy", "dz", "e_um"
+  std::string value;  ///< "L", "dx", "dy", "dz", "e_um"
   char axis = 'C';
-  int groups = 0;             ///< angles (or bins) the rows were grouped by
+  int groups = 0;  ///< angles (or bins) the rows were grouped by
   double f_statistic = 0.0;
   double p_value = 1.0;
   double spread_um = 0.0;     ///< rms of the group means about their mean
@@ -57,6 +57,7 @@ std::vector<ResidualStructure> residual_structure(const Machine& machine, const 
 /// Every column tested (set, value, axis; and the path test of ballbar runs), with its statistic
 /// and grouping, unfiltered: residual_structure keeps the significant ones.
 std::vector<ResidualStructure> residual_columns(const Machine& machine, const std::vector<MeasurementSet>& sets,
-                                                const Eigen::VectorXd& residual_mm, const MeasurementType* only_type = nullptr);
+                                                const Eigen::VectorXd& residual_mm,
+                                                const MeasurementType* only_type = nullptr);
 
 }  // namespace ncpost::comp

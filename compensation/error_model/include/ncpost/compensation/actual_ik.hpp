@@ -36,7 +36,7 @@ struct ActualIkOptions {
   std::optional<AxisPosition> previous_actual;  ///< for reversal: where the axes actually are
   /// for reversal: the commands that put them there (an axis that need not move keeps its command)
   std::optional<AxisPosition> previous_command;
-  const HomeInverse* home = nullptr;            ///< the model's home inverse (home_inverse), if computed
+  const HomeInverse* home = nullptr;  ///< the model's home inverse (home_inverse), if computed
   /// The CL point whose nominal IK solution the guess is (the CL point itself, or the CL point less
   /// a predicted error of the machine), if it is one (not programmed angles): its nominal pose is
   /// then known, so the first step needs no nominal evaluation.
@@ -51,7 +51,7 @@ struct ActualIkOutcome {
   double axis_error_rad = 0.0;  ///< remaining angle between the actual and the CL axis
   /// The actual tool pose at `position` (W), when the fixed-point iteration evaluated it there
   std::optional<ToolPoseT<double>> actual_pose;
-  std::string message;          ///< why it failed, when !position
+  std::string message;  ///< why it failed, when !position
   bool ok() const { return position.has_value(); }
 };
 

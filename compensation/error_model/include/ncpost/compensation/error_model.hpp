@@ -43,9 +43,12 @@
 namespace ncpost::comp {
 
 /// The plain value of a scalar (double or an automatic-differentiation scalar).
-template <class S> double plain_value(const S& v) {
-  if constexpr (std::is_arithmetic_v<S>) return static_cast<double>(v);
-  else return plain_value(v.value());
+template <class S>
+double plain_value(const S& v) {
+  if constexpr (std::is_arithmetic_v<S>)
+    return static_cast<double>(v);
+  else
+    return plain_value(v.value());
 }
 
 /// The nodes of one tabulated error function: (position mm, parameter index), by position.
@@ -64,7 +67,9 @@ class ModelLayout {
   std::vector<std::string> names() const;
 
   /// Parameters acting through the transform of this axis (location, squareness, component).
-  const std::vector<int>& terms_of_axis(int axis_index) const { return axis_terms_[static_cast<std::size_t>(axis_index)]; }
+  const std::vector<int>& terms_of_axis(int axis_index) const {
+    return axis_terms_[static_cast<std::size_t>(axis_index)];
+  }
   /// Table nodes of component c (0..5) of a linear axis (empty if none).
   const TableNodes& table_of(int axis_index, int component) const {
     static const TableNodes none;
@@ -107,9 +112,10 @@ class ModelLayout {
 };
 
 /// What the model needs to know about the measurement row being evaluated.
-template <class P> struct RowState {
+template <class P>
+struct RowState {
   PerAxis<P> reversal = per_axis_filled(P(0));  ///< actual − command per axis (mm / rad)
-  double time_s = 0.0;                                      ///< time stamp for the drift law
+  double time_s = 0.0;                          ///< time stamp for the drift law
   /// Where the axes stood before the current move (mm / rad). When set, the reversal offset of
   /// each command q is that of the dead band from there, clamp(previous, q, q + b) − q, instead of
   /// the fixed `reversal` above: a block that starts on a reversal first crosses the band standing
@@ -117,12 +123,16 @@ template <class P> struct RowState {
   std::optional<PerAxis<double>> previous_actual;
 };
 
-template <class P> class ErrorFunctor {
+template <class P>
+class ErrorFunctor {
  public:
   /// `values` has layout.size() entries and must outlive the functor. With `machine_only`, the
   /// effects that act only while measuring (drift, instruments) are left out (posting).
   ErrorFunctor(const ModelLayout& layout, const P* values, RowState<P> state = {}, bool machine_only = false)
-      : layout_(&layout), values_(values), state_(state), machine_only_(machine_only),
+      : layout_(&layout),
+        values_(values),
+        state_(state),
+        machine_only_(machine_only),
         constant_(!layout.command_dependent() && (machine_only || layout.drift_terms().empty())) {}
 
   void set_state(const RowState<P>& s) { state_ = s; }
@@ -148,7 +158,8 @@ template <class P> class ErrorFunctor {
   /// The error terms of axis `axis_index` at its command q. A model with coupled terms
   /// (has_coupled()) needs the other axes' commands: the chain passes them all (the four-argument
   /// form, kinematics/forward.hpp); this form is for home and for models without coupled terms.
-  template <class S> AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home) const {
+  template <class S>
+  AxisErrorTerms<S> operator()(int axis_index, const S& q, bool at_home) const {
     if (!at_home && layout_->has_coupled())
       throw std::logic_error("error model: a coupled term needs every axis's command (call with the whole position)");
     return terms(axis_index, q, at_home, static_cast<const AxisPositionT<S>*>(nullptr));
@@ -160,7 +171,8 @@ template <class P> class ErrorFunctor {
   }
 
  private:
-  template <class S> AxisErrorTerms<S> terms(int axis_index, const S& q, bool at_home, const AxisPositionT<S>* all) const {
+  template <class S>
+  AxisErrorTerms<S> terms(int axis_index, const S& q, bool at_home, const AxisPositionT<S>* all) const {
     using std::cos;
     using std::sin;
     if constexpr (std::is_same_v<S, double> && std::is_same_v<P, double>) {
@@ -176,13 +188,18 @@ template <class P> class ErrorFunctor {
       const int c = s.component;
       switch (s.kind) {
         case ParameterKind::location:
-          if (c < 3) e.location_offset_mm[c] += v;
-          else e.location_tilt_rad[c - 3] += v;
+          if (c < 3)
+            e.location_offset_mm[c] += v;
+          else
+            e.location_tilt_rad[c - 3] += v;
           break;
         case ParameterKind::squareness:
-          if (s.name == "EC0Y") e.direction_offset.x() -= v;
-          else if (s.name == "EB0Z") e.direction_offset.x() += v;
-          else e.direction_offset.y() -= v;  // EA0Z
+          if (s.name == "EC0Y")
+            e.direction_offset.x() -= v;
+          else if (s.name == "EB0Z")
+            e.direction_offset.x() += v;
+          else
+            e.direction_offset.y() -= v;  // EA0Z
           break;
         case ParameterKind::harmonic: {
           const S kq = S(double(s.order)) * q;
@@ -200,17 +217,21 @@ template <class P> class ErrorFunctor {
           // the carrier's command as a constant: its derivative is left out (µm per rad)
           const double by = at_home || all == nullptr ? 0.0 : plain_value((*all)[s.coupled_axis_index]);
           const S term = v * S(std::pow(by, s.order));
-          if (c < 3) e.location_offset_mm[c] += term;
-          else e.location_tilt_rad[c - 3] += term;
+          if (c < 3)
+            e.location_offset_mm[c] += term;
+          else
+            e.location_tilt_rad[c - 3] += term;
           break;
         }
-        default: break;
+        default:
+          break;
       }
     }
     for (int c = 0; c < 6; ++c) {
       const TableNodes& nodes = layout_->table_of(axis_index, c);
       if (!nodes.empty())
-        add_motion<S>(e, c, layout_->table_periodic(axis_index) ? interpolate_periodic<S>(nodes, q) : interpolate<S>(nodes, q));
+        add_motion<S>(
+            e, c, layout_->table_periodic(axis_index) ? interpolate_periodic<S>(nodes, q) : interpolate<S>(nodes, q));
     }
     if (at_home) return e;
     if (const int r = layout_->reversal_of(axis_index); r >= 0) {
@@ -230,7 +251,8 @@ template <class P> class ErrorFunctor {
 
  public:
   /// Drift of the TCP relative to the table at the row's time (mm, M axes).
-  template <class S> Vec3<S> drift() const {
+  template <class S>
+  Vec3<S> drift() const {
     using std::exp;
     Vec3<S> d = Vec3<S>::Zero();
     const double t = state_.time_s;
@@ -241,10 +263,17 @@ template <class P> class ErrorFunctor {
       const ParameterSpec& s = layout_->spec(i);
       const S v = S(values_[i]);
       switch (s.drift) {
-        case DriftBasis::linear: d[s.component] += v * t; break;
-        case DriftBasis::quadratic: d[s.component] += v * (t * t); break;
-        case DriftBasis::exponential: d[s.component] += v * (S(1.0) - exp(-S(t) / tau[s.component])); break;
-        case DriftBasis::time_constant: break;
+        case DriftBasis::linear:
+          d[s.component] += v * t;
+          break;
+        case DriftBasis::quadratic:
+          d[s.component] += v * (t * t);
+          break;
+        case DriftBasis::exponential:
+          d[s.component] += v * (S(1.0) - exp(-S(t) / tau[s.component]));
+          break;
+        case DriftBasis::time_constant:
+          break;
       }
     }
     return d;
@@ -252,7 +281,8 @@ template <class P> class ErrorFunctor {
 
  private:
   /// Linear interpolation of table nodes at q, held at the end values outside them.
-  template <class S> S interpolate(const TableNodes& nodes, const S& q) const {
+  template <class S>
+  S interpolate(const TableNodes& nodes, const S& q) const {
     const double x = plain_value(q);
     if (x <= nodes.front().first) return S(values_[nodes.front().second]);
     if (x >= nodes.back().first) return S(values_[nodes.back().second]);
@@ -266,7 +296,8 @@ template <class P> class ErrorFunctor {
 
   /// Linear interpolation of the nodes of a rotary axis's table (rad) at q, round the turn: the
   /// last node joins the first one turn on.
-  template <class S> S interpolate_periodic(const TableNodes& nodes, const S& q) const {
+  template <class S>
+  S interpolate_periodic(const TableNodes& nodes, const S& q) const {
     constexpr double turn = 2.0 * kPi;
     if (nodes.size() == 1) return S(values_[nodes.front().second]);
     const double x = plain_value(q);
@@ -282,9 +313,12 @@ template <class P> class ErrorFunctor {
     return S(values_[i0]) + w * (S(values_[i1]) - S(values_[i0]));
   }
 
-  template <class S> static void add_motion(AxisErrorTerms<S>& e, int c, const S& v) {
-    if (c < 3) e.motion_mm[c] += v;
-    else e.motion_rad[c - 3] += v;
+  template <class S>
+  static void add_motion(AxisErrorTerms<S>& e, int c, const S& v) {
+    if (c < 3)
+      e.motion_mm[c] += v;
+    else
+      e.motion_rad[c - 3] += v;
   }
 
   const ModelLayout* layout_;

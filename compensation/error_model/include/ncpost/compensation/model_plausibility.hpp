@@ -11,14 +11,14 @@ namespace ncpost::comp {
 
 /// The bounds, one per kind of effect (the effect a value has, not the value itself).
 struct PlausibleBounds {
-  double length_mm = 1.0;        ///< offsets, translational component errors, reversal of a linear axis
-  double angle_rad = 0.01;       ///< tilts, zero errors, squareness, angular component errors (0.57°)
-  double travel_mm = 1000.0;     ///< polynomial terms: their effect at this distance from zero
-  double duration_s = 28800.0;   ///< drift rates: their effect after this time (8 h)
-  double tau_min_s = 1.0;        ///< drift time constant
+  double length_mm = 1.0;       ///< offsets, translational component errors, reversal of a linear axis
+  double angle_rad = 0.01;      ///< tilts, zero errors, squareness, angular component errors (0.57°)
+  double travel_mm = 1000.0;    ///< polynomial terms: their effect at this distance from zero
+  double duration_s = 28800.0;  ///< drift rates: their effect after this time (8 h)
+  double tau_min_s = 1.0;       ///< drift time constant
   double tau_max_s = 86400.0;
-  double ballbar_mm = 2.0;       ///< ballbar length offset (the bar's measuring range)
-  double sphere_mm = 5.0;        ///< sphere centre offset
+  double ballbar_mm = 2.0;  ///< ballbar length offset (the bar's measuring range)
+  double sphere_mm = 5.0;   ///< sphere centre offset
 };
 
 /// Why `value` of the parameter is implausible for its kind (empty if it is plausible).

@@ -58,13 +58,13 @@ enum class DriftBasis { linear, quadratic, exponential, time_constant };
 struct ParameterSpec {
   std::string name;
   ParameterKind kind = ParameterKind::location;
-  int axis_index = -1;  ///< index into Machine::axes (-1 for drift and instrument terms)
-  int component = 0;    ///< 0..2 = X, Y, Z (translation), 3..5 = A, B, C (rotation)
-  int order = 0;        ///< harmonic order or polynomial degree
-  bool sine = false;    ///< harmonic: sin term (else cos)
-  double at_mm = 0.0;   ///< table of a linear axis: node position on the axis (mm)
-  double at_rad = 0.0;  ///< table of a rotary axis: node angle (rad, 0 <= at_rad < 2π)
-  bool periodic = false;  ///< table of a rotary axis: interpolated round the turn
+  int axis_index = -1;          ///< index into Machine::axes (-1 for drift and instrument terms)
+  int component = 0;            ///< 0..2 = X, Y, Z (translation), 3..5 = A, B, C (rotation)
+  int order = 0;                ///< harmonic order or polynomial degree
+  bool sine = false;            ///< harmonic: sin term (else cos)
+  double at_mm = 0.0;           ///< table of a linear axis: node position on the axis (mm)
+  double at_rad = 0.0;          ///< table of a rotary axis: node angle (rad, 0 <= at_rad < 2π)
+  bool periodic = false;        ///< table of a rotary axis: interpolated round the turn
   int coupled_axis_index = -1;  ///< coupled: the axis whose command (rad) the location error grows with
   DriftBasis drift = DriftBasis::linear;
 

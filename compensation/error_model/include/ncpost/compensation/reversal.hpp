@@ -17,7 +17,8 @@
 namespace ncpost::comp {
 
 /// The dead-band state of one axis: where it actually is, given where it was.
-template <class P> P dead_band_actual(const P& previous_actual, double command, const P& width) {
+template <class P>
+P dead_band_actual(const P& previous_actual, double command, const P& width) {
   P lo = P(command), hi = P(command) + width;
   if (hi < lo) std::swap(lo, hi);
   if (previous_actual < lo) return lo;
@@ -26,7 +27,8 @@ template <class P> P dead_band_actual(const P& previous_actual, double command, 
 }
 
 /// Offsets actual − command of each command of a sequence (first row from below).
-template <class P> std::vector<P> dead_band_offsets(const std::vector<double>& commands, const P& width) {
+template <class P>
+std::vector<P> dead_band_offsets(const std::vector<double>& commands, const P& width) {
   std::vector<P> out;
   out.reserve(commands.size());
   P actual = commands.empty() ? P(0) : P(commands.front());

@@ -17,9 +17,9 @@ enum class ControlFormat { machine, linuxcnc, siemens, isg };
 
 struct ControlFormatInfo {
   ControlFormat format;
-  const char* name;    ///< the --format / --control word
-  const char* title;   ///< what the control calls the entries
-  const char* where;   ///< where they are entered, and the sign, in one sentence
+  const char* name;   ///< the --format / --control word
+  const char* title;  ///< what the control calls the entries
+  const char* where;  ///< where they are entered, and the sign, in one sentence
 };
 
 /// Every format, the default (machine) first.
@@ -33,9 +33,9 @@ ControlFormat default_control_format(const Machine& machine);
 std::string control_format_names();
 
 struct ControlEntryFile {
-  std::string heading;              ///< e.g. "axis X" or "machine file"
-  std::string export_arguments;     ///< the `ncpost export` arguments that write the whole file
-  std::vector<std::string> lines;   ///< exactly as in the exported file
+  std::string heading;             ///< e.g. "axis X" or "machine file"
+  std::string export_arguments;    ///< the `ncpost export` arguments that write the whole file
+  std::vector<std::string> lines;  ///< exactly as in the exported file
 };
 
 struct ControlEntries {

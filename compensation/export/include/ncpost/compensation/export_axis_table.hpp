@@ -40,13 +40,13 @@ struct AxisExport {
   bool rotary = false;
   double travel_min = 0.0;  ///< mm or rad: the range the table covers
   double travel_max = 0.0;
-  bool continuous = false;      ///< a rotary axis without limits: the table covers one turn, 0 to 2π
+  bool continuous = false;       ///< a rotary axis without limits: the table covers one turn, 0 to 2π
   bool piecewise_linear = true;  ///< the error is linear between `model_nodes` (tables and reversal only)
   /// The kinks of the positioning error within the travel (mm or rad), ascending: the nodes of the
   /// axis's own tables, a rotary axis's (periodic) nodes at every turn that falls within the travel.
   std::vector<double> model_nodes;
-  double reversal = 0.0;            ///< dead band b (mm or rad), 0 without one
-  bool has_positioning = false;     ///< some positioning term (not only the reversal)
+  double reversal = 0.0;              ///< dead band b (mm or rad), 0 without one
+  bool has_positioning = false;       ///< some positioning term (not only the reversal)
   std::vector<std::string> held;      ///< parameter names the table holds
   std::vector<std::string> left_out;  ///< "NAME (why)" for every term acting on the axis it cannot hold
   int other_axis_terms = 0;           ///< machine effects of the other axes (a table of nodes counts once)

@@ -31,11 +31,11 @@
 namespace ncpost::comp {
 
 struct HeidenhainEntry {
-  std::string key;    ///< "MachBase", "Trans", "MachAxis"
-  char axis = ' ';    ///< X Y Z (mm) or A B C (deg; for MachAxis the machine axis)
-  double coord = 0.0;     ///< mm or degrees
-  double nominal = 0.0;   ///< the entry on the nominal machine
-  std::string role;   ///< "position of A (perpendicular: KinematicsOpt)", ...
+  std::string key;       ///< "MachBase", "Trans", "MachAxis"
+  char axis = ' ';       ///< X Y Z (mm) or A B C (deg; for MachAxis the machine axis)
+  double coord = 0.0;    ///< mm or degrees
+  double nominal = 0.0;  ///< the entry on the nominal machine
+  std::string role;      ///< "position of A (perpendicular: KinematicsOpt)", ...
 };
 
 struct HeidenhainKinematics {

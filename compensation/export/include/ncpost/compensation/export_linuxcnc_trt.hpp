@@ -30,12 +30,12 @@
 namespace ncpost::comp {
 
 struct TrtKinematics {
-  std::string module;        ///< "xyzac-trt-kins" or "xyzbc-trt-kins"
-  char tilt_letter = 'A';    ///< A or B
-  bool conventional = false; ///< conventional-directions
+  std::string module;         ///< "xyzac-trt-kins" or "xyzbc-trt-kins"
+  char tilt_letter = 'A';     ///< A or B
+  bool conventional = false;  ///< conventional-directions
   double x_rot_point_mm = 0.0, y_rot_point_mm = 0.0, z_rot_point_mm = 0.0;
   double x_offset_mm = 0.0, y_offset_mm = 0.0, z_offset_mm = 0.0;  ///< the one the module ignores is 0
-  std::vector<std::string> held;  ///< parameter names written into the pins
+  std::vector<std::string> held;                                   ///< parameter names written into the pins
   LeftOut left_out;
 };
 

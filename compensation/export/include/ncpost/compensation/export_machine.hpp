@@ -21,9 +21,9 @@
 namespace ncpost::comp {
 
 struct MachineExport {
-  Machine corrected;                   ///< named "<name>-calibrated"
-  std::vector<std::string> applied;    ///< parameter names written into the axis lines
-  std::vector<std::string> left_out;   ///< "NAME (why)" for every machine term it cannot hold
+  Machine corrected;                  ///< named "<name>-calibrated"
+  std::vector<std::string> applied;   ///< parameter names written into the axis lines
+  std::vector<std::string> left_out;  ///< "NAME (why)" for every machine term it cannot hold
 };
 
 /// The corrected machine. std::invalid_argument when the model has no location error to apply.

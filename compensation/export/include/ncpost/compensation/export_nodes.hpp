@@ -19,7 +19,8 @@ namespace ncpost::comp {
 /// `resolution` (the file's last digit, mm or rad), within the travel: the travel ends, every kink
 /// x + e(x) of each direction, the nodes x themselves where there is room, and an even grid for a
 /// smooth error; at most `max_nodes`, else ExportRefusal.
-std::vector<double> commanded_nodes(const MachineModel& model, const AxisExport& axis, int max_nodes, double resolution);
+std::vector<double> commanded_nodes(const MachineModel& model, const AxisExport& axis, int max_nodes,
+                                    double resolution);
 
 /// Equidistant points min + k·step, k = 0..count−1, over the travel.
 struct EquidistantPoints {

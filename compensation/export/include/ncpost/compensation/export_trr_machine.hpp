@@ -15,8 +15,8 @@
 namespace ncpost::comp {
 
 struct TrrMachineExport {
-  trr::Machine corrected;             ///< named "<name>-calibrated"
-  std::vector<std::string> applied;   ///< the names of the model's nonzero parameters
+  trr::Machine corrected;            ///< named "<name>-calibrated"
+  std::vector<std::string> applied;  ///< the names of the model's nonzero parameters
 };
 
 /// The corrected machine. std::invalid_argument when every parameter of the model is zero.

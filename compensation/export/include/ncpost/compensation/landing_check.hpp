@@ -28,7 +28,8 @@ using MotorCommand = std::function<double(double n, bool falling)>;
 
 /// Checks `motor` at kLandingPositions commanded positions evenly over the travel, moving up and,
 /// with `both_directions`, down.
-LandingCheck check_landing(const MachineModel& model, const AxisExport& axis, const MotorCommand& motor, bool both_directions);
+LandingCheck check_landing(const MachineModel& model, const AxisExport& axis, const MotorCommand& motor,
+                           bool both_directions);
 
 /// The note of the check: "Round trip: ..." (one line).
 std::string landing_note(const AxisExport& axis, const LandingCheck& check, const std::string& control);

@@ -18,8 +18,8 @@ enum class Verdict { pass, fail, not_proven };
 
 Verdict decide(double value, double expanded_uncertainty, double tolerance);
 
-const char* to_string(Verdict v);    ///< "PASS", "FAIL", "NOT PROVEN"
-const char* css_class(Verdict v);    ///< "pass", "fail", "unproven"
+const char* to_string(Verdict v);  ///< "PASS", "FAIL", "NOT PROVEN"
+const char* css_class(Verdict v);  ///< "pass", "fail", "unproven"
 
 /// The figure kinds a tolerance is given for (µm): ISO 230-2 A, B, E, M, R of a linear axis and
 /// ISO 230-4 G of a circular test.

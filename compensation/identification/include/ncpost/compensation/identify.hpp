@@ -27,7 +27,7 @@ namespace ncpost::comp {
 
 struct IdentifyOptions {
   Loss loss = Loss::squared;
-  double loss_scale_um = 3.0;   ///< where the robust loss leaves the quadratic (µm)
+  double loss_scale_um = 3.0;  ///< where the robust loss leaves the quadratic (µm)
   int max_iterations = 100;
   double rank_tolerance = 1e-3;  ///< fit/rank.hpp
   ErrorParameters fixed;         ///< known values (e.g. measured separately): held, not fitted
@@ -61,7 +61,7 @@ struct IdentifyResult {
   ErrorParameters uncertainty;          ///< standard deviations of the fitted ones
   Eigen::MatrixXd covariance;           ///< of the fitted ones, in the order of `uncertainty`
   Identifiability identifiability;
-  RankAnalysis rank;                    ///< at the solution, columns = candidates
+  RankAnalysis rank;  ///< at the solution, columns = candidates
   std::vector<FileResidual> files;
   double rms_nominal_um = 0.0, max_nominal_um = 0.0, rms_after_um = 0.0, max_after_um = 0.0;
   std::vector<std::vector<double>> fitted;   ///< predictions of every set by the identified model

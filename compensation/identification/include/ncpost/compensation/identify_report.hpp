@@ -4,12 +4,11 @@
 // (inline SVG, no external resources; the shared pieces of ncpost::report) naming every input with
 // its SHA-256, the machine (with its serial and owner), the model, the date and the version; the
 // measurement conditions and dates (conditions_report.hpp); ISO 14253-1 verdicts of figures with
-// their expanded uncertainty and budget (uncertainty_report.hpp); the compensation values for the control (µm, µrad, and as the chosen control's
-// own entries, control_entries.hpp); the parameters with their
-// uncertainty, the identifiability findings and the residual before and after per file; the
-// ballbar tests as polar plots labelled with angles and the axes moved (measured, identified and
-// nominal-model ΔL, and the residual on its own scale) with ISO 230-4 figures, feed and direction;
-// the sphere-probing positions with their dispersion per axis before and after.
+// their expanded uncertainty and budget (uncertainty_report.hpp); the compensation values for the control (µm, µrad,
+// and as the chosen control's own entries, control_entries.hpp); the parameters with their uncertainty, the
+// identifiability findings and the residual before and after per file; the ballbar tests as polar plots labelled with
+// angles and the axes moved (measured, identified and nominal-model ΔL, and the residual on its own scale) with ISO
+// 230-4 figures, feed and direction; the sphere-probing positions with their dispersion per axis before and after.
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,9 +30,9 @@ ReportValue report_value(const Machine& machine, const std::string& name, double
 std::string text_report(const Machine& machine, const std::vector<MeasurementSet>& sets, const IdentifyResult& result);
 /// What the HTML report names besides the data (each file with its SHA-256) and the verdict's tolerance.
 struct IdentifyReportInputs {
-  std::string machine_file;                  ///< hashed in the provenance table
-  std::string model_file;                    ///< the model written (-o)
-  std::optional<double> pass_tolerance_um;   ///< `identify --pass-tolerance-um`: pass/fail verdicts
+  std::string machine_file;                 ///< hashed in the provenance table
+  std::string model_file;                   ///< the model written (-o)
+  std::optional<double> pass_tolerance_um;  ///< `identify --pass-tolerance-um`: pass/fail verdicts
   /// `identify --control`: the control's own entries; unset: default_control_format(machine)
   std::optional<ControlFormat> control;
   /// The machine file's `serial` and `owner` (machine_record.hpp), shown beside its name.

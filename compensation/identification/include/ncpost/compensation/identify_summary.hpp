@@ -24,7 +24,7 @@ IdentificationSummary identification_summary(const Machine& machine, const std::
                                              const std::string& report_path);
 
 IdentificationSummary laser_identification_summary(const Machine& machine, const std::vector<MeasurementSet>& sets,
-                                                   const LaserIdentifyResult& result, const IdentifyReportInputs& inputs,
-                                                   const std::string& report_path);
+                                                   const LaserIdentifyResult& result,
+                                                   const IdentifyReportInputs& inputs, const std::string& report_path);
 
 }  // namespace ncpost::comp

@@ -20,13 +20,13 @@ struct SummaryFigure {
 };
 
 struct IdentificationSummary {
-  std::string title;                                       ///< "Identification of ac-trunnion"
-  std::vector<std::pair<std::string, std::string>> facts;  ///< machine, serial, owner, model, dates (text)
-  std::vector<std::pair<std::string, std::string>> inputs; ///< role, path (hashed when the page is made)
-  std::vector<std::string> conditions;                     ///< one line per data file
+  std::string title;                                        ///< "Identification of ac-trunnion"
+  std::vector<std::pair<std::string, std::string>> facts;   ///< machine, serial, owner, model, dates (text)
+  std::vector<std::pair<std::string, std::string>> inputs;  ///< role, path (hashed when the page is made)
+  std::vector<std::string> conditions;                      ///< one line per data file
   std::vector<SummaryFigure> figures;
-  std::vector<std::string> warnings;                       ///< what limits the figures (unseen errors, ...)
-  std::string full_report;                                 ///< the full report's file name (linked)
+  std::vector<std::string> warnings;  ///< what limits the figures (unseen errors, ...)
+  std::string full_report;            ///< the full report's file name (linked)
 };
 
 std::string summary_page_html(const IdentificationSummary& summary);

@@ -35,7 +35,7 @@ struct BudgetLine {
 
 struct UncertaintyBudget {
   std::vector<BudgetLine> lines;
-  double combined_um() const;                               ///< √Σ u²
+  double combined_um() const;                                 ///< √Σ u²
   double expanded_um() const { return 2.0 * combined_um(); }  ///< U, k = 2
   bool complete() const;
   /// The sources not given, "instrument, temperature"; empty when complete.

@@ -15,13 +15,13 @@ struct LaserFunction {
   char component = 'X';  ///< X Y Z (mm) or A B C (rad)
   char axis = 'X';
   std::vector<double> nodes_mm;
-  std::vector<double> values;     ///< mm or rad, ISO 230-1 reference (straightness slope removed)
-  std::vector<double> sigma;      ///< standard deviation of each node (0 where pinned or at home)
-  std::vector<bool> seen;         ///< node identified (home counts as seen)
+  std::vector<double> values;                       ///< mm or rad, ISO 230-1 reference (straightness slope removed)
+  std::vector<double> sigma;                        ///< standard deviation of each node (0 where pinned or at home)
+  std::vector<bool> seen;                           ///< node identified (home counts as seen)
   std::array<double, 3> polynomial{0.0, 0.0, 0.0};  ///< p1..p3, value·x^k, x in mm
-  double polynomial_rms = 0.0;    ///< rms of the table about the polynomial (mm / rad)
-  double iso_slope = 0.0;         ///< straightness: least-squares slope moved into squareness (rad)
-  double iso_straightness_um = 0.0;  ///< straightness: max − min about the least-squares line
+  double polynomial_rms = 0.0;                      ///< rms of the table about the polynomial (mm / rad)
+  double iso_slope = 0.0;                           ///< straightness: least-squares slope moved into squareness (rad)
+  double iso_straightness_um = 0.0;                 ///< straightness: max − min about the least-squares line
 
   std::string name() const { return std::string{'E', component, axis}; }
   bool is_angle() const { return component >= 'A' && component <= 'C'; }
@@ -39,6 +39,7 @@ double least_squares_slope(const std::vector<double>& x, const std::vector<doubl
 
 /// p1..p3 (value·x^k) through the origin fitted to the points; returns the rms about it. Fewer
 /// than four points fit fewer terms (the rest 0).
-double fit_polynomial_through_home(const std::vector<double>& x, const std::vector<double>& y, std::array<double, 3>& p);
+double fit_polynomial_through_home(const std::vector<double>& x, const std::vector<double>& y,
+                                   std::array<double, 3>& p);
 
 }  // namespace ncpost::comp

@@ -58,11 +58,11 @@ struct LaserIdentifyResult {
   std::vector<std::string> squareness_unseen;  ///< with the reason
   ErrorParameters reversal;                    ///< reversal:<axis> (mm)
   ErrorParameters reversal_sigma;
-  ErrorParameters parameters;                  ///< the model: tables + squareness + reversal
+  ErrorParameters parameters;  ///< the model: tables + squareness + reversal
   std::vector<std::string> candidates;
   RankAnalysis rank;
-  std::vector<std::string> unseen;             ///< which errors the lines cannot see, and why
-  std::vector<std::string> combinations;       ///< what kept values stand for
+  std::vector<std::string> unseen;        ///< which errors the lines cannot see, and why
+  std::vector<std::string> combinations;  ///< what kept values stand for
   std::vector<Iso230Figures> iso230;
   std::size_t readings = 0;
   double rms_nominal_um = 0.0, max_nominal_um = 0.0;  ///< machine without errors

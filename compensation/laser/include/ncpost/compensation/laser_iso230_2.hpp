@@ -25,7 +25,7 @@ struct Iso230Target {
   double s_up_um = 0.0, s_down_um = 0.0;
   int runs_up = 0, runs_down = 0;
 
-  double reversal_um() const { return mean_up_um - mean_down_um; }                   ///< B_i
+  double reversal_um() const { return mean_up_um - mean_down_um; }                    ///< B_i
   double mean_bidirectional_um() const { return 0.5 * (mean_up_um + mean_down_um); }  ///< x̄_i
   /// R_i = max(2s↑_i + 2s↓_i + |B_i|, R↑_i, R↓_i) with R↑_i = 4s↑_i, R↓_i = 4s↓_i.
   double repeatability_um() const;
@@ -37,11 +37,11 @@ struct Iso230Figures {
   std::vector<Iso230Target> targets;
   double accuracy_A_um = 0.0;
   double repeatability_R_um = 0.0;
-  double reversal_B_um = 0.0;       ///< max |B_i|
-  double mean_reversal_um = 0.0;    ///< B̄
+  double reversal_B_um = 0.0;     ///< max |B_i|
+  double mean_reversal_um = 0.0;  ///< B̄
   double systematic_E_um = 0.0;
   double mean_bidirectional_M_um = 0.0;
-  bool ok = false;                  ///< false if the set is not a bidirectional positioning test
+  bool ok = false;  ///< false if the set is not a bidirectional positioning test
   std::string message;
 };
 

@@ -21,8 +21,8 @@ struct Iso230TargetRow {
   int runs_up = 0, runs_down = 0;
   double mean_up_um = 0.0, mean_down_um = 0.0;
   double two_s_up_um = 0.0, two_s_down_um = 0.0;
-  double reversal_um = 0.0;          ///< B_i
-  double mean_bidirectional_um = 0.0;  ///< x̄_i
+  double reversal_um = 0.0;                                          ///< B_i
+  double mean_bidirectional_um = 0.0;                                ///< x̄_i
   double repeat_up_um = 0.0, repeat_down_um = 0.0, repeat_um = 0.0;  ///< R↑_i, R↓_i, R_i
 };
 

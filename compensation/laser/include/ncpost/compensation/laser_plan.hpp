@@ -40,7 +40,7 @@ struct LaserPlanOptions {
   double feed_mm_min = 2000.0;         ///< NC program: feed between targets
   double dt_s = 6.0;                   ///< time per target (move + dwell + reading)
   double t0_s = 0.0;
-  CommandRounding rounding;            ///< the targets, as the NC program writes them
+  CommandRounding rounding;  ///< the targets, as the NC program writes them
 
   /// Empty if valid, else what is wrong.
   std::string validate() const;

@@ -20,7 +20,7 @@ enum class MeasurementType { ballbar, sphere, laser };
 const char* to_string(MeasurementType t);
 
 struct MeasurementRow {
-  int line = 0;          ///< 1-based line in the file (0 for rows made in memory)
+  int line = 0;  ///< 1-based line in the file (0 for rows made in memory)
   double time_s = 0.0;
   AxisPosition command;  ///< mm, rad
   int run = 0;           ///< laser: run number (the instrument is zeroed at each run's first row)

@@ -28,8 +28,8 @@ struct MeasurementConditions {
   /// `# instrument_uncertainty:` U (k = 2) of one reading, µm, as the instrument's calibration
   /// certificate states it (for a laser: at the line's length).
   std::optional<double> instrument_U_um;
-  std::optional<double> temperature_u_k;        ///< `# temperature_uncertainty:` standard, K
-  std::optional<double> expansion_u_per_k;      ///< `# expansion_uncertainty:` standard, 1/K
+  std::optional<double> temperature_u_k;    ///< `# temperature_uncertainty:` standard, K
+  std::optional<double> expansion_u_per_k;  ///< `# expansion_uncertainty:` standard, 1/K
 
   /// 1 + α (T − 20 °C); 1 when the temperature or the coefficient is not given.
   double expansion_factor() const;

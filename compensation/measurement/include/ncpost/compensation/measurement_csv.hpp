@@ -8,8 +8,8 @@
 // the machine's rotary axes (optional for laser, default 0), `run` (laser), the value columns;
 // other columns are ignored. Laser files may add (issue 7, LASER.md) `# axis:` (the moving axis,
 // X | Y | Z), `# line:` (the commanded positions of the two other axes, XYZ order, mm; every row
-// must agree) and a column `approach` (+1 from below, −1 from above). A missing key or column, a wrong field count, a non-number, NaN or
-// Inf is an InputError with file and line. Angles are read in degrees and kept in radians.
+// must agree) and a column `approach` (+1 from below, −1 from above). A missing key or column, a wrong field count, a
+// non-number, NaN or Inf is an InputError with file and line. Angles are read in degrees and kept in radians.
 #include <string>
 
 #include "ncpost/compensation/measurement.hpp"

@@ -21,8 +21,8 @@ using TargetOfRotary = std::function<Vec3d(const Eigen::Vector2d& rotary_rad)>;
 /// The poses after `from` up to and including the end pose (rotary `to_rad`, tool point on
 /// target(to_rad)). Throws std::invalid_argument if 4096 steps do not reach the tolerance.
 std::vector<AxisPosition> guided_turn(const Machine& machine, const Eigen::Vector2d& from_rad,
-                                      const Eigen::Vector2d& to_rad, const TargetOfRotary& target_W,
-                                      const Setup& setup, double tolerance_mm);
+                                      const Eigen::Vector2d& to_rad, const TargetOfRotary& target_W, const Setup& setup,
+                                      double tolerance_mm);
 
 /// The largest distance of the tool point from target along the axis-space straight line a → b
 /// (sampled at `samples` inner points), with the target taken at the interpolated rotary angles.

@@ -38,7 +38,9 @@ struct PlanProgram {
   std::vector<std::string> header;
   std::vector<PlanRecord> records;
 
-  void comment(std::string text) { records.push_back({PlanRecord::Kind::comment, {}, 0.0, 0.0, false, std::move(text)}); }
+  void comment(std::string text) {
+    records.push_back({PlanRecord::Kind::comment, {}, 0.0, 0.0, false, std::move(text)});
+  }
   void rapid(const AxisPosition& q) { records.push_back({PlanRecord::Kind::rapid, q, 0.0, 0.0, false, {}}); }
   void feed(const AxisPosition& q, double mm_min, std::string note = {}) {
     records.push_back({PlanRecord::Kind::feed, q, mm_min, 0.0, false, std::move(note)});

@@ -75,15 +75,16 @@ std::vector<NamedPlan> plan_sphere(const Machine& machine, const SpherePlanOptio
 std::vector<NamedPlan> plan_bc_head(const Machine& machine, const BcHeadPlanOptions& options);
 
 struct PlanProgramOptions {
-  bool continuous = false;        ///< ballbar-4axis: the rows are one measuring move (G93 G1 through them)
-  double clearance_mm = 30.0;     ///< sphere: the stylus stays this far from the centre between probing points
+  bool continuous = false;           ///< ballbar-4axis: the rows are one measuring move (G93 G1 through them)
+  double clearance_mm = 30.0;        ///< sphere: the stylus stays this far from the centre between probing points
   double guide_tolerance_mm = 0.01;  ///< ballbar: how far a guided turn may change the bar length (plan_moves.hpp)
   double turn_tolerance_mm = 0.5;    ///< sphere: how far a turn at the clearance may leave its target
 };
 
 /// The NC program (records for the NC writer, plan_program.hpp) that runs the sets in order. Each
 /// set: a set-up rapid to its start (instrument off), a stop to mount the instrument, the
-/// measuring moves, a stop to remove it; set-up moves only after that stop. With the instrument on every move is guided (plan_moves.hpp):
+/// measuring moves, a stop to remove it; set-up moves only after that stop. With the instrument on every move is guided
+/// (plan_moves.hpp):
 ///  - continuous sets (ballbar 4-axis): inverse-time moves (G93 G1) through the rows, timed;
 ///  - static ballbar sets (bc-head): a dwell to read each row, guided turns holding the tool ball
 ///    (the bar keeps its length within guide_tolerance_mm);

@@ -55,21 +55,21 @@ namespace ncpost::nonlinear {
 struct AdaptiveOptions {
   double tolerance_mm = 0.005;
   int max_depth = 8;
-  int max_blocks = 4096;                ///< output blocks per input block
-  double max_rotary_step_rad = 0.5;     ///< node-to-node jump beyond the block's own rotary travel
-  double branch_deviation_rad = 0.5;    ///< exact IK this far from the interpolation: keep rotaries
-  double screen_fraction = 0.5;         ///< skip the exact error when the bound is within this share
-                                        ///< of the tolerance (0: always exact)
-  double piece_screen_fraction = 0.9;   ///< the same for output pieces (0: always exact)
-  double estimate_factor = 2.0;         ///< mid-point deviation above this × tolerance: no exact input
-                                        ///< error (0: always exact); `input_error_mm` is then that estimate
-  double model_bow_mm = 0.0;            ///< bound on the error model's own bow across the segment (mm;
-                                        ///< 0: none, only the tolerance; rigid chains have none)
+  int max_blocks = 4096;               ///< output blocks per input block
+  double max_rotary_step_rad = 0.5;    ///< node-to-node jump beyond the block's own rotary travel
+  double branch_deviation_rad = 0.5;   ///< exact IK this far from the interpolation: keep rotaries
+  double screen_fraction = 0.5;        ///< skip the exact error when the bound is within this share
+                                       ///< of the tolerance (0: always exact)
+  double piece_screen_fraction = 0.9;  ///< the same for output pieces (0: always exact)
+  double estimate_factor = 2.0;        ///< mid-point deviation above this × tolerance: no exact input
+                                       ///< error (0: always exact); `input_error_mm` is then that estimate
+  double model_bow_mm = 0.0;           ///< bound on the error model's own bow across the segment (mm;
+                                       ///< 0: none, only the tolerance; rigid chains have none)
   NonlinearErrorOptions error = fast_error_options();
   bool valid() const {
     return tolerance_mm > 0 && max_depth >= 0 && max_blocks >= 1 && screen_fraction >= 0 && screen_fraction <= 1 &&
-           piece_screen_fraction >= 0 && piece_screen_fraction <= 1 && estimate_factor >= 0 &&
-           model_bow_mm >= 0 && error.valid();
+           piece_screen_fraction >= 0 && piece_screen_fraction <= 1 && estimate_factor >= 0 && model_bow_mm >= 0 &&
+           error.valid();
   }
 };
 
@@ -108,9 +108,11 @@ double model_bow_mm(const Machine& machine, const Setup& setup, const ClBlock& b
 
 namespace detail {
 
-template <class Errors, class Solver> class Subdivider {
+template <class Errors, class Solver>
+class Subdivider {
  public:
-  Subdivider(const Machine& m, const Setup& s, const ClBlock& b, const Errors& e, Solver& solver, const AdaptiveOptions& o)
+  Subdivider(const Machine& m, const Setup& s, const ClBlock& b, const Errors& e, Solver& solver,
+             const AdaptiveOptions& o)
       : machine_(m), setup_(s), block_(b), errors_(e), solver_(solver), options_(o) {
     const double travel = max_abs_step(b.to.rotary_rad, b.from.rotary_rad);
     max_step_ = travel + o.max_rotary_step_rad;
@@ -142,8 +144,8 @@ template <class Errors, class Solver> class Subdivider {
     }
     if (e.max_error_mm == 0.0) e = exact_error(block_.start, block_.from, block_.end, block_.to);
     out.input_error_mm = e.max_error_mm;
-    Piece whole{0.0, block_.start, block_.from, 1.0, block_.end, block_.to, e,
-                bow(block_.start, block_.from, block_.end, block_.to)};
+    Piece whole{0.0,        block_.start, block_.from, 1.0,
+                block_.end, block_.to,    e,           bow(block_.start, block_.from, block_.end, block_.to)};
     if (need(whole) > 1.0) keep_rotary_ = !branch_consistent();
     refine(whole, 0, out);
     out.rotary_kept_nodes = rotary_kept_;
@@ -183,7 +185,8 @@ template <class Errors, class Solver> class Subdivider {
     return bow_bounded_ ? std::max(n, p.bow_mm / options_.model_bow_mm) : n;
   }
 
-  NonlinearError exact_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb, const AxisPosition& qb) const {
+  NonlinearError exact_error(const ClPoint& ca, const AxisPosition& qa, const ClPoint& cb,
+                             const AxisPosition& qb) const {
     return nonlinear_error(machine_, setup_, ClBlock{ca, cb, qa, qb}, errors_, options_.error);
   }
 
@@ -195,7 +198,8 @@ template <class Errors, class Solver> class Subdivider {
     double bound_mm = std::numeric_limits<double>::infinity();
     if (options_.piece_screen_fraction > 0) {
       const ClBlock block{ca, cb, qa, qb};
-      const NonlinearBound bound = nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block, errors_), machine_, setup_);
+      const NonlinearBound bound =
+          nonlinear_bound(ExecutedBlock<Errors>(machine_, setup_, block, errors_), machine_, setup_);
       bound_mm = bound.error_mm;
       if (bound.error_mm <= options_.piece_screen_fraction * options_.tolerance_mm) {
         p.error.max_error_mm = bound.error_mm;
@@ -250,8 +254,8 @@ template <class Errors, class Solver> class Subdivider {
   /// False when the exact solutions inside the block leave the interpolation of its end points
   /// (end points on different branches, near the singular cone).
   bool branch_consistent() const {
-    const double limit = std::max(options_.branch_deviation_rad,
-                                  max_abs_step(block_.to.rotary_rad, block_.from.rotary_rad));
+    const double limit =
+        std::max(options_.branch_deviation_rad, max_abs_step(block_.to.rotary_rad, block_.from.rotary_rad));
     for (double t : {0.25, 0.5, 0.75}) {
       const AxisPosition hint = lerp(block_.from, block_.to, t);
       const IkOutcome o = solver_(cl_at(block_.start, block_.end, t), hint);
@@ -286,12 +290,14 @@ template <class Errors, class Solver> class Subdivider {
     if (need(p) <= 1.0) return emit(p, out);
     if (depth > options_.max_depth || out.output_blocks() >= options_.max_blocks) {
       if (p.error.max_error_mm > tol)
-        out.failure = fmt::format("tolerance {} mm not reached after {} levels of subdivision (error {:.4g} mm at t = {:.4f})",
-                                  tol, depth, p.error.max_error_mm, p.ta + p.error.at_t * (p.tb - p.ta));
+        out.failure =
+            fmt::format("tolerance {} mm not reached after {} levels of subdivision (error {:.4g} mm at t = {:.4f})",
+                        tol, depth, p.error.max_error_mm, p.ta + p.error.at_t * (p.tb - p.ta));
       else
-        out.failure = fmt::format("the error model's own bow {:.4g} mm (bound {} mm) not reached after {} levels of "
-                                  "subdivision (t = {:.4f} to {:.4f})",
-                                  p.bow_mm, options_.model_bow_mm, depth, p.ta, p.tb);
+        out.failure = fmt::format(
+            "the error model's own bow {:.4g} mm (bound {} mm) not reached after {} levels of "
+            "subdivision (t = {:.4f} to {:.4f})",
+            p.bow_mm, options_.model_bow_mm, depth, p.ta, p.tb);
       return;
     }
     // 1. equal parameter

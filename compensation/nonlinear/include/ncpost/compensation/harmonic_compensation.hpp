@@ -31,13 +31,13 @@
 namespace ncpost::nonlinear {
 
 struct HarmonicOptions {
-  double tolerance_mm = 0.005;      ///< blocks whose model Emax is within it are left alone
+  double tolerance_mm = 0.005;  ///< blocks whose model Emax is within it are left alone
   HarmonicFit fit = HarmonicFit::midpoint;
-  int fixed_blocks = 0;             ///< > 0: this many output blocks per compensated block instead
-  int max_blocks = 256;             ///< per input block
-  NonlinearErrorOptions error = fast_error_options();      ///< for the peak fit and the verification
-  bool verify = true;               ///< re-execute the output blocks and set the verified errors
-  double screen_fraction = 0.5;     ///< leave a block alone when its bound is within this share of the tolerance
+  int fixed_blocks = 0;                                ///< > 0: this many output blocks per compensated block instead
+  int max_blocks = 256;                                ///< per input block
+  NonlinearErrorOptions error = fast_error_options();  ///< for the peak fit and the verification
+  bool verify = true;                                  ///< re-execute the output blocks and set the verified errors
+  double screen_fraction = 0.5;  ///< leave a block alone when its bound is within this share of the tolerance
   bool valid() const { return tolerance_mm > 0 && fixed_blocks >= 0 && max_blocks >= 1 && error.valid(); }
 };
 

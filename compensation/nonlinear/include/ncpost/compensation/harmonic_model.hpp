@@ -20,8 +20,8 @@ namespace ncpost::nonlinear {
 enum class HarmonicFit { midpoint, peak };
 
 struct HarmonicModel {
-  double amplitude_mm = 0.0;          ///< Emax of the model
-  Vec3d direction = Vec3d::UnitX();   ///< unit, W
+  double amplitude_mm = 0.0;         ///< Emax of the model
+  Vec3d direction = Vec3d::UnitX();  ///< unit, W
 
   double magnitude_at(double t) const { return amplitude_mm * std::sin(kPi * t); }
   Vec3d offset_at(double t) const { return magnitude_at(t) * direction; }
@@ -35,7 +35,8 @@ inline HarmonicModel harmonic_from_offset(const Vec3d& offset_mm) {
 }
 
 /// Midpoint fit: Emax·n = deviation vector at t = ½.
-template <class Errors> HarmonicModel fit_harmonic_midpoint(const ExecutedBlock<Errors>& executed) {
+template <class Errors>
+HarmonicModel fit_harmonic_midpoint(const ExecutedBlock<Errors>& executed) {
   return harmonic_from_offset(executed.at(0.5).offset_mm);
 }
 
@@ -43,7 +44,8 @@ template <class Errors> HarmonicModel fit_harmonic_midpoint(const ExecutedBlock<
 inline HarmonicModel fit_harmonic_peak(const NonlinearError& exact) { return harmonic_from_offset(exact.offset_mm); }
 
 template <class Errors>
-HarmonicModel fit_harmonic(const ExecutedBlock<Errors>& executed, HarmonicFit fit, const NonlinearErrorOptions& options = {}) {
+HarmonicModel fit_harmonic(const ExecutedBlock<Errors>& executed, HarmonicFit fit,
+                           const NonlinearErrorOptions& options = {}) {
   if (fit == HarmonicFit::midpoint) return fit_harmonic_midpoint(executed);
   return fit_harmonic_peak(nonlinear_error(executed, options));
 }
@@ -52,7 +54,7 @@ HarmonicModel fit_harmonic(const ExecutedBlock<Errors>& executed, HarmonicFit fi
 struct HarmonicResidual {
   double magnitude_mm = 0.0;  ///< max over t of | |e(t)| − Emax·sin(πt) | (the paper's comparison)
   double magnitude_at_t = 0.0;
-  double vector_mm = 0.0;     ///< max over t of |e(t) − L(t)|: the error left by an exact shift by L(t)
+  double vector_mm = 0.0;  ///< max over t of |e(t) − L(t)|: the error left by an exact shift by L(t)
   double vector_at_t = 0.0;
 };
 
@@ -65,8 +67,8 @@ HarmonicResidual harmonic_residual(const ExecutedBlock<Errors>& executed, const 
   HarmonicResidual r;
   const Maximum a = maximise_bracketed(
       [&](double t) { return std::abs(executed.at(t).error_mm() - model.magnitude_at(t)); }, 0.0, 1.0, m);
-  const Maximum b = maximise_bracketed(
-      [&](double t) { return (executed.at(t).offset_mm - model.offset_at(t)).norm(); }, 0.0, 1.0, m);
+  const Maximum b =
+      maximise_bracketed([&](double t) { return (executed.at(t).offset_mm - model.offset_at(t)).norm(); }, 0.0, 1.0, m);
   r.magnitude_mm = a.value;
   r.magnitude_at_t = a.t;
   r.vector_mm = b.value;

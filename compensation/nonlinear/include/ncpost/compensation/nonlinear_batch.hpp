@@ -18,9 +18,9 @@ namespace ncpost::nonlinear {
 
 /// Compensates `blocks` with `threads` workers (1: in the calling thread); result i is block i's.
 template <class Errors, class Solver>
-std::vector<SplitBlock> compensate_blocks(const Machine& machine, const Setup& setup, const std::vector<ClBlock>& blocks,
-                                          const Errors& errors, const Solver& solver,
-                                          const CompensationOptions& options, int threads = 2) {
+std::vector<SplitBlock> compensate_blocks(const Machine& machine, const Setup& setup,
+                                          const std::vector<ClBlock>& blocks, const Errors& errors,
+                                          const Solver& solver, const CompensationOptions& options, int threads = 2) {
   std::vector<SplitBlock> out(blocks.size());
   auto work = [&](std::size_t first, std::size_t step) {
     Solver local = solver;  // callables are copied per thread (they may hold references only)

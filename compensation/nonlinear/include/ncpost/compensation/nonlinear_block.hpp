@@ -63,7 +63,8 @@ struct Deviation {
 
 /// The executed motion of one block through the forward chain, with the home pose cached
 /// (the same computation as `chain_pose`, done once per block instead of once per point).
-template <class Errors = NominalErrors> class ExecutedBlock {
+template <class Errors = NominalErrors>
+class ExecutedBlock {
  public:
   /// `errors` must outlive the object unless it is stateless (it is then copied).
   ExecutedBlock(const Machine& machine, const Setup& setup, const ClBlock& block, const Errors& errors = {})

@@ -37,14 +37,18 @@ struct NonlinearBound {
 };
 
 /// True when the error hook describes a rigid chain (every term a constant of the machine).
-template <class Errors> bool rigid_chain(const Errors& errors) {
-  if constexpr (std::is_same_v<Errors, NominalErrors>) return true;
-  else if constexpr (requires { errors.constant_in_command(); }) return errors.constant_in_command();
-  else return false;
+template <class Errors>
+bool rigid_chain(const Errors& errors) {
+  if constexpr (std::is_same_v<Errors, NominalErrors>)
+    return true;
+  else if constexpr (requires { errors.constant_in_command(); })
+    return errors.constant_in_command();
+  else
+    return false;
 }
 
-template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Errors>& executed, const Machine& machine,
-                                                       const Setup& setup) {
+template <class Errors>
+NonlinearBound nonlinear_bound(const ExecutedBlock<Errors>& executed, const Machine& machine, const Setup& setup) {
   const ClBlock& b = executed.block();
   // A rigid actual chain (location errors, squareness) is bounded on its own axis lines, exactly
   // like the nominal one; other error hooks on the nominal lines plus the sampled model bow below.
@@ -71,8 +75,8 @@ template <class Errors> NonlinearBound nonlinear_bound(const ExecutedBlock<Error
       speed = w * rho + speed;
       omega_sum += w;
     } else {
-      const Vec3d direction = rigid ? Vec3d(axis.direction + executed.errors()(index, q, false).direction_offset)
-                                    : axis.direction;
+      const Vec3d direction =
+          rigid ? Vec3d(axis.direction + executed.errors()(index, q, false).direction_offset) : axis.direction;
       speed += std::abs(travel) * direction.norm();
     }
     point = at_start.apply(point);

@@ -39,8 +39,8 @@ struct CompensationOptions {
   /// tolerance is the linearisation's. Cheap: only long moves bow (a few blocks more). 0: the
   /// tolerance alone.
   double model_bow_share = 0.2;
-  AdaptiveOptions adaptive;     ///< its tolerance_mm and model_bow_mm are replaced from the above
-  HarmonicOptions harmonic;     ///< likewise
+  AdaptiveOptions adaptive;  ///< its tolerance_mm and model_bow_mm are replaced from the above
+  HarmonicOptions harmonic;  ///< likewise
   bool valid() const {
     return tolerance_mm > rounding_allowance_mm && rounding_allowance_mm >= 0 && model_bow_share >= 0 &&
            model_bow_share <= 1 && adaptive.valid() && harmonic.valid();

@@ -23,7 +23,7 @@ struct NonlinearErrorOptions {
   int max_scan_intervals = 512;
   double scan_step_rad = 0.05;  ///< one scan interval per this much travel of the busiest rotary axis
   double t_tolerance = 1e-7;
-  bool orientation = true;      ///< also maximise the orientation error (false: the scan's largest value)
+  bool orientation = true;  ///< also maximise the orientation error (false: the scan's largest value)
   bool valid() const {
     return min_scan_intervals >= 2 && max_scan_intervals >= min_scan_intervals && scan_step_rad > 0 && t_tolerance > 0;
   }
@@ -31,12 +31,12 @@ struct NonlinearErrorOptions {
 
 /// The nonlinear error of a block.
 struct NonlinearError {
-  double max_error_mm = 0.0;          ///< largest distance of the executed tip from the CL segment
-  double at_t = 0.0;                  ///< where (block parameter, linear in axis space)
-  Vec3d offset_mm = Vec3d::Zero();    ///< the deviation vector there (W)
-  double max_orientation_rad = 0.0;   ///< largest orientation error
+  double max_error_mm = 0.0;         ///< largest distance of the executed tip from the CL segment
+  double at_t = 0.0;                 ///< where (block parameter, linear in axis space)
+  Vec3d offset_mm = Vec3d::Zero();   ///< the deviation vector there (W)
+  double max_orientation_rad = 0.0;  ///< largest orientation error
   double orientation_at_t = 0.0;
-  int evaluations = 0;                ///< forward-kinematics evaluations spent
+  int evaluations = 0;  ///< forward-kinematics evaluations spent
 };
 
 /// Options for deciding on many blocks (compensation): a coarser scan (4 intervals at least),

@@ -11,10 +11,10 @@
 namespace ncpost::nonlinear {
 
 struct MaximiseOptions {
-  int scan_intervals = 16;        ///< uniform scan intervals bracketing the maxima (>= 2)
-  int refined_brackets = 3;       ///< at most this many local maxima of the scan are refined
-  double t_tolerance = 1e-7;      ///< absolute tolerance on the arg max (fraction of [a, b])
-  int max_iterations = 80;        ///< per bracket
+  int scan_intervals = 16;    ///< uniform scan intervals bracketing the maxima (>= 2)
+  int refined_brackets = 3;   ///< at most this many local maxima of the scan are refined
+  double t_tolerance = 1e-7;  ///< absolute tolerance on the arg max (fraction of [a, b])
+  int max_iterations = 80;    ///< per bracket
   bool valid() const { return scan_intervals >= 2 && refined_brackets >= 1 && t_tolerance > 0 && max_iterations > 0; }
 };
 
@@ -25,7 +25,8 @@ struct Maximum {
 };
 
 /// Brent's minimisation of g on [a, b], starting from x0 ∈ [a, b] with g(x0) = g0 known.
-template <class G> Maximum brent_minimise(G&& g, double a, double b, double x0, double g0, double tolerance, int max_iterations) {
+template <class G>
+Maximum brent_minimise(G&& g, double a, double b, double x0, double g0, double tolerance, int max_iterations) {
   constexpr double golden = 0.3819660112501051;  // (3 − √5) / 2
   double x = x0, w = x0, v = x0;
   double fx = g0, fw = g0, fv = g0;
@@ -42,7 +43,10 @@ template <class G> Maximum brent_minimise(G&& g, double a, double b, double x0, 
       double q = (x - v) * (fx - fw);
       double p = (x - v) * q - (x - w) * r;
       q = 2.0 * (q - r);
-      if (q > 0.0) p = -p; else q = -q;
+      if (q > 0.0)
+        p = -p;
+      else
+        q = -q;
       const double e_previous = e;
       e = d;
       if (std::abs(p) < std::abs(0.5 * q * e_previous) && p > q * (a - x) && p < q * (b - x)) {
@@ -60,17 +64,29 @@ template <class G> Maximum brent_minimise(G&& g, double a, double b, double x0, 
     const double fu = g(u);
     ++evaluations;
     if (fu <= fx) {
-      if (u >= x) a = x; else b = x;
-      v = w; fv = fw;
-      w = x; fw = fx;
-      x = u; fx = fu;
+      if (u >= x)
+        a = x;
+      else
+        b = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
     } else {
-      if (u < x) a = u; else b = u;
+      if (u < x)
+        a = u;
+      else
+        b = u;
       if (fu <= fw || w == x) {
-        v = w; fv = fw;
-        w = u; fw = fu;
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
       } else if (fu <= fv || v == x || v == w) {
-        v = u; fv = fu;
+        v = u;
+        fv = fu;
       }
     }
   }
@@ -80,7 +96,8 @@ template <class G> Maximum brent_minimise(G&& g, double a, double b, double x0, 
 /// Refines a scan (ts ascending, fs = f(ts)): brackets every local maximum of the scan, refines the
 /// `refined_brackets` highest with Brent's method and returns the best (evaluations: refinement only).
 template <class F>
-Maximum refine_scan(F&& f, const std::vector<double>& ts, const std::vector<double>& fs, const MaximiseOptions& options = {}) {
+Maximum refine_scan(F&& f, const std::vector<double>& ts, const std::vector<double>& fs,
+                    const MaximiseOptions& options = {}) {
   const int n = static_cast<int>(ts.size()) - 1;
   Maximum best{ts[0], fs[0], 0};
   std::vector<int> peaks;
@@ -91,13 +108,14 @@ Maximum refine_scan(F&& f, const std::vector<double>& ts, const std::vector<doub
     if (left_ok && right_ok && !(i > 0 && fs[i] == fs[i - 1])) peaks.push_back(i);
   }
   std::sort(peaks.begin(), peaks.end(), [&](int l, int r) { return fs[l] > fs[r]; });
-  if (static_cast<int>(peaks.size()) > options.refined_brackets) peaks.resize(static_cast<std::size_t>(options.refined_brackets));
+  if (static_cast<int>(peaks.size()) > options.refined_brackets)
+    peaks.resize(static_cast<std::size_t>(options.refined_brackets));
   const double tolerance = options.t_tolerance * (ts[n] - ts[0]);
   for (int i : peaks) {
     const double lo = ts[std::max(i - 1, 0)];
     const double hi = ts[std::min(i + 1, n)];
-    const Maximum m = brent_minimise([&](double t) { return -f(t); }, lo, hi, ts[i], -fs[i], tolerance,
-                                     options.max_iterations);
+    const Maximum m =
+        brent_minimise([&](double t) { return -f(t); }, lo, hi, ts[i], -fs[i], tolerance, options.max_iterations);
     best.evaluations += m.evaluations;
     if (-m.value > best.value) {
       best.t = m.t;
@@ -108,7 +126,8 @@ Maximum refine_scan(F&& f, const std::vector<double>& ts, const std::vector<doub
 }
 
 /// The largest value of f on [a, b]: a scan of `scan_intervals`, then `refine_scan`.
-template <class F> Maximum maximise_bracketed(F&& f, double a, double b, const MaximiseOptions& options = {}) {
+template <class F>
+Maximum maximise_bracketed(F&& f, double a, double b, const MaximiseOptions& options = {}) {
   const int n = options.scan_intervals;
   std::vector<double> ts(static_cast<std::size_t>(n + 1)), fs(ts.size());
   for (int i = 0; i <= n; ++i) {

@@ -15,23 +15,23 @@ namespace ncpost::nonlinear {
 
 /// One output block end point.
 struct BlockNode {
-  double t = 1.0;    ///< where on the input CL segment the node's CL point lies
-  ClPoint cl;        ///< the CL point the node stands for (on the straight segment)
-  AxisPosition q;    ///< the commanded axis position emitted
+  double t = 1.0;  ///< where on the input CL segment the node's CL point lies
+  ClPoint cl;      ///< the CL point the node stands for (on the straight segment)
+  AxisPosition q;  ///< the commanded axis position emitted
 };
 
 /// The output of compensating one input block: emit `nodes` in order, each as one G1 block
 /// (the last node is the input block's end, with its axis position unchanged).
 struct SplitBlock {
   std::vector<BlockNode> nodes;
-  double input_error_mm = 0.0;          ///< nonlinear error of the input block
-  double max_error_mm = 0.0;            ///< largest verified error of the output blocks
-  double max_orientation_rad = 0.0;     ///< largest verified orientation error of the output blocks
-  bool screened = false;                ///< within the tolerance by `nonlinear_bound`: the errors above
-                                        ///< are that upper bound, the exact maximisation was skipped
-  int rotary_kept_nodes = 0;            ///< inserted nodes without an admissible continuous IK solution:
-                                        ///< rotary angles interpolated, tip exact (adaptive)
-  std::string failure;                  ///< set when the block could not be compensated (limits, IK)
+  double input_error_mm = 0.0;       ///< nonlinear error of the input block
+  double max_error_mm = 0.0;         ///< largest verified error of the output blocks
+  double max_orientation_rad = 0.0;  ///< largest verified orientation error of the output blocks
+  bool screened = false;             ///< within the tolerance by `nonlinear_bound`: the errors above
+                                     ///< are that upper bound, the exact maximisation was skipped
+  int rotary_kept_nodes = 0;         ///< inserted nodes without an admissible continuous IK solution:
+                                     ///< rotary angles interpolated, tip exact (adaptive)
+  std::string failure;               ///< set when the block could not be compensated (limits, IK)
   bool ok() const { return failure.empty(); }
   int output_blocks() const { return static_cast<int>(nodes.size()); }
   int inserted_blocks() const { return static_cast<int>(nodes.size()) - 1; }

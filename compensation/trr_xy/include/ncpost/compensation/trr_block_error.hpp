@@ -23,8 +23,8 @@ struct Block {
 
 /// The executed tool at fraction t of a block.
 struct ExecutedPoint {
-  Vec3d tip_mm = Vec3d::Zero();   ///< in W
-  Vec3d axis = Vec3d::UnitZ();    ///< in W
+  Vec3d tip_mm = Vec3d::Zero();     ///< in W
+  Vec3d axis = Vec3d::UnitZ();      ///< in W
   Vec3d offset_mm = Vec3d::Zero();  ///< from the nearest point of the straight CL segment to the tip
   double orientation_rad = 0.0;
 };
@@ -35,7 +35,7 @@ struct BlockError {
   Vec3d offset_mm = Vec3d::Zero();  ///< at the maximum
   double orientation_rad = 0.0;     ///< largest orientation error
   double orientation_at_t = 0.0;
-  double midpoint_mm = 0.0;         ///< |deviation| at t = ½ (the harmonic model's Emax, seed 001)
+  double midpoint_mm = 0.0;           ///< |deviation| at t = ½ (the harmonic model's Emax, seed 001)
   double harmonic_residual_mm = 0.0;  ///< max over the samples of | |e(t)| − Emax·sin(πt) |
 };
 

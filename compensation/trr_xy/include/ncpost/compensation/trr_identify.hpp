@@ -12,7 +12,8 @@
 // scaled to unit norm; the step is the truncated-SVD (minimum norm) solution, so the directions
 // the data cannot see stay at zero and are reported as the null space (singular values below
 // `rank_tolerance` × the largest; null-space weights are in the column-scaled parameters, i.e.
-// per unit of effect on the data, so that lengths and angles compare). Reference: Ceres covariance.h on rank-deficient Jacobians.
+// per unit of effect on the data, so that lengths and angles compare). Reference: Ceres covariance.h on rank-deficient
+// Jacobians.
 #include <vector>
 
 #include "ncpost/compensation/model_json.hpp"
@@ -22,7 +23,7 @@ namespace ncpost::trr {
 
 struct ProbeMeasurement {
   Vec3d slider_mm = Vec3d::Zero();
-  double stylus_mm = 0.0;             ///< L
+  double stylus_mm = 0.0;              ///< L
   Vec3d deviation_mm = Vec3d::Zero();  ///< sphere centre deviation (dx, dy, dz)
 };
 

@@ -35,16 +35,16 @@ struct SurfacePoint {
 
 struct ParameterMap {
   std::string name;
-  double value = 0.0;                 ///< the error set (mm or rad)
-  std::vector<double> deviation_um;   ///< per surface point
+  double value = 0.0;                ///< the error set (mm or rad)
+  std::vector<double> deviation_um;  ///< per surface point
   double max_um = 0.0, min_um = 0.0;
-  int max_at = 0, min_at = 0;         ///< indices into the points
+  int max_at = 0, min_at = 0;  ///< indices into the points
   double range_um() const { return max_um - min_um; }
 };
 
 struct SensitivityResult {
   std::vector<SurfacePoint> points;
-  std::vector<ParameterMap> maps;     ///< the 30 parameters in Errors order
+  std::vector<ParameterMap> maps;  ///< the 30 parameters in Errors order
 };
 
 /// The test surface's CL points.

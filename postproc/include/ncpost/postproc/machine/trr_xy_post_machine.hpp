@@ -13,7 +13,8 @@ namespace ncpost {
 
 /// The machine of a post: `machine` (load_trr_xy_machine), the errors the program compensates
 /// (`model`, nullopt: the nominal machine) and those of the machine it is re-executed on (`verify_on`).
-std::shared_ptr<const PostMachine> trr_xy_post_machine(trr::Machine machine, std::optional<trr::Errors> model = std::nullopt,
+std::shared_ptr<const PostMachine> trr_xy_post_machine(trr::Machine machine,
+                                                       std::optional<trr::Errors> model = std::nullopt,
                                                        std::optional<trr::Errors> verify_on = std::nullopt);
 
 }  // namespace ncpost

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The reader of a post's input: APT CL data, G-code (machine axes or tool tip under RTCP) or a
-// Heidenhain Klartext or Sinumerik program read back into CL records (docs/cli.md `--input-kind`). With `automatic` the kind is detected from
-// the first 4 KiB of the stream, which is then put back where it was: the stream must be seekable.
+// Heidenhain Klartext or Sinumerik program read back into CL records (docs/cli.md `--input-kind`). With `automatic` the
+// kind is detected from the first 4 KiB of the stream, which is then put back where it was: the stream must be
+// seekable.
 #include <istream>
 #include <memory>
 #include <string>
@@ -38,8 +39,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(std::istream& in, const std::string& 
 /// through `word_forward` (gcode_cl_reader.hpp GcodeReaderOptions::word_forward), `machine` lists
 /// its words. `InputKind::rtcp` is a usage error of the caller (std::invalid_argument).
 std::unique_ptr<cl::Reader> open_cl_reader(
-    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options,
-    const Machine& machine, const Setup& setup,
+    std::istream& in, const std::string& name, InputKind kind, const cl::ReaderOptions& options, const Machine& machine,
+    const Setup& setup,
     const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward);
 
 /// The NC axis words of the machine in chain order, e.g. "XYZAC".

@@ -29,10 +29,10 @@ struct Location {
 /// GOTO / FROM / GODLTA (made absolute), one motion. `rapid` for the motion after RAPID.
 struct Motion {
   Location where;
-  ClPoint point;               ///< tip in mm in W, unit axis in W (the last axis when the record had none)
-  bool axis_given = false;     ///< the record carried i, j, k
+  ClPoint point;            ///< tip in mm in W, unit axis in W (the last axis when the record had none)
+  bool axis_given = false;  ///< the record carried i, j, k
   bool rapid = false;
-  bool from = false;           ///< FROM: the start position, no cutting
+  bool from = false;  ///< FROM: the start position, no cutting
   /// Rotary angles programmed in G-code input (rad, machine rotary order); the post keeps them
   /// instead of choosing a solution itself (RTCP programs, re-posted machine-axis programs).
   std::optional<RotaryAngles> rotary_rad;
@@ -42,7 +42,7 @@ struct Motion {
 
 struct Feed {
   Location where;
-  double value = 0.0;          ///< mm/min, or mm/rev when per_rev
+  double value = 0.0;  ///< mm/min, or mm/rev when per_rev
   bool per_rev = false;
 };
 
@@ -55,7 +55,7 @@ struct Spindle {
 struct Coolant {
   Location where;
   bool on = true;
-  std::string mode;            ///< FLOOD, MIST, THRU, ... as written
+  std::string mode;  ///< FLOOD, MIST, THRU, ... as written
 };
 
 /// A tool change: to tool `number`, or, where `name` is not empty, to the tool the control's tool
@@ -96,12 +96,12 @@ struct Cycle {
   Location where;
   enum class Kind {
     off,
-    drill,        ///< feed to depth (dwell_s > 0: dwell there), rapid out: G81 / G82
-    deep,         ///< peck drilling, full retract after each peck: G83
-    chip_break,   ///< peck drilling, short retract after each peck: G73
-    tap,          ///< rigid/floating tap: feed in, reverse the spindle, feed out: G84 (G74 left hand)
-    bore,         ///< feed in, feed out (also REAM): G85 (dwell_s > 0: G89)
-    bore_drag,    ///< feed in, spindle stop, rapid out: G86
+    drill,       ///< feed to depth (dwell_s > 0: dwell there), rapid out: G81 / G82
+    deep,        ///< peck drilling, full retract after each peck: G83
+    chip_break,  ///< peck drilling, short retract after each peck: G73
+    tap,         ///< rigid/floating tap: feed in, reverse the spindle, feed out: G84 (G74 left hand)
+    bore,        ///< feed in, feed out (also REAM): G85 (dwell_s > 0: G89)
+    bore_drag,   ///< feed in, spindle stop, rapid out: G86
   } kind = Kind::off;
   std::string kind_word;             ///< the cycle's words as written (DEEP2, DRILL DEEP, ...)
   double depth_mm = 0.0;             ///< the bottom below the GOTO point
@@ -109,12 +109,12 @@ struct Cycle {
   std::optional<double> retract_mm;  ///< the plane above the GOTO point the tool returns to (none: the R plane)
   double first_peck_mm = 0.0;        ///< first peck (0: `peck_mm`)
   double peck_mm = 0.0;              ///< (subsequent) peck depth; 0 for kinds without pecks
-  std::optional<double> feed;        ///< the cycle's own feed (mm/min, or mm/rev when feed_per_rev); none: the feed in force
+  std::optional<double> feed;  ///< the cycle's own feed (mm/min, or mm/rev when feed_per_rev); none: the feed in force
   bool feed_per_rev = false;
-  double dwell_s = 0.0;              ///< dwell at the bottom
-  double pitch_mm = 0.0;             ///< thread pitch (tap): PITCH, or 25.4 / TPI
-  bool left_hand = false;            ///< left-hand tap (spindle counter-clockwise in)
-  std::string text;                  ///< the record as written
+  double dwell_s = 0.0;    ///< dwell at the bottom
+  double pitch_mm = 0.0;   ///< thread pitch (tap): PITCH, or 25.4 / TPI
+  bool left_hand = false;  ///< left-hand tap (spindle counter-clockwise in)
+  std::string text;        ///< the record as written
 };
 
 /// CUTCOM/LEFT|RIGHT|OFF (APT) or G41/G42/G40 (G-code): cutter radius compensation in the
@@ -124,7 +124,7 @@ struct CutterComp {
   Location where;
   enum class Side { off, left, right } side = Side::off;
   std::optional<int> offset_register;
-  std::string text;            ///< the record as written
+  std::string text;  ///< the record as written
 };
 
 /// PPRINT, PARTNO, INSERT, `$$` comments and anything passed through as a comment.
@@ -161,11 +161,11 @@ struct Stop {
 /// END-OF-PATH, FINI, END: the end of an operation or of the program.
 struct End {
   Location where;
-  bool program = false;        ///< FINI: end of the whole program
+  bool program = false;  ///< FINI: end of the whole program
 };
 
-using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, LengthOffset, Circle, Cycle, CutterComp, Comment,
-                            Unsupported, Dwell, Stop, End>;
+using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, LengthOffset, Circle, Cycle, CutterComp,
+                            Comment, Unsupported, Dwell, Stop, End>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {
@@ -190,8 +190,8 @@ enum class ArcCentre { incremental, centre_to_start, absolute };
 enum class ControlFamily { unknown, fanuc, linuxcnc };
 
 struct ReaderOptions {
-  bool default_inch = false;   ///< the units of a file that does not say (UNITS/... overrides)
-  bool units_given = false;    ///< `default_inch` is the user's word (--units), not the default
+  bool default_inch = false;  ///< the units of a file that does not say (UNITS/... overrides)
+  bool units_given = false;   ///< `default_inch` is the user's word (--units), not the default
   /// Accept a file that ends without FINI / END / END-OF-PATH (otherwise: "truncated?", exit 2).
   bool allow_unterminated = false;
   /// NX MSYS (the MCS the GOTOs are written in, given in the part's absolute frame):

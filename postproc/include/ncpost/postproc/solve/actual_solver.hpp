@@ -7,8 +7,8 @@
 //
 // Reversal: where the model has reversal terms, the solver follows where the axes actually stand
 // after each emitted block (`advance`, in the caller's SolverData::stands), solves the next
-// commands consistently with the direction they imply, and re-executes a block from that state. Within one block each axis is taken to move
-// one way (true of blocks cut to a tolerance; a reversal happens at a block end).
+// commands consistently with the direction they imply, and re-executes a block from that state. Within one block each
+// axis is taken to move one way (true of blocks cut to a tolerance; a reversal happens at a block end).
 //
 // It also measures what compensation buys: SolverData::uncompensated is the tool-tip error at the
 // CL points of the nominal solution executed on this machine (the program without `--model`).
@@ -33,7 +33,10 @@ class ActualSolver final : public KinematicModel {
   static constexpr double kPostAxisToleranceRad = 1e-7;
 
   ActualSolver(const comp::MachineModel& model, const Setup& setup)
-      : model_(model), setup_(setup), nominal_(model.machine(), setup), home_(model.home_inverse(setup.tool_length_mm)) {}
+      : model_(model),
+        setup_(setup),
+        nominal_(model.machine(), setup),
+        home_(model.home_inverse(setup.tool_length_mm)) {}
 
   /// Whether solve() measures the uncompensated tip error of each CL point (SolverData::uncompensated;
   /// one more nominal IK and model evaluation per point). On by default; the post turns it off
@@ -88,8 +91,7 @@ class ActualSolver final : public KinematicModel {
   /// an axis that need not move keeps its command inside the play.
   AxisPosition compensate(const ClPoint& cl, const AxisPosition& guess, const std::optional<ClPoint>& guess_solves,
                           SolverData& data, SolveFigures* figures, std::string& failure,
-                          std::optional<ToolPoseT<double>>* executed,
-                          const std::optional<AxisPosition>& previous,
+                          std::optional<ToolPoseT<double>>* executed, const std::optional<AxisPosition>& previous,
                           const std::optional<AxisPosition>& stands) const;
   /// The error of the machine at commands q (actual − nominal tip and axis in W): the prediction
   /// for the next CL point. Kept in `data` for the last solution, so a path pays nothing for it.

@@ -38,8 +38,8 @@ struct BranchPlan {
 /// The plan with the fewest forced changes, then the least travel, from `start_rad`; ties keep the
 /// earlier candidate. Every point must have at least one candidate. `window` >= 1 points are
 /// planned at once.
-BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,
-                         const ForcedChange& forced, std::size_t window);
+BranchPlan plan_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates, const ForcedChange& forced,
+                         std::size_t window);
 
 /// The greedy choice (nearest the previous, ties keep the earlier candidate), for comparison.
 BranchPlan greedy_branches(const RotaryAngles& start_rad, const BranchCandidates& candidates,

@@ -33,7 +33,9 @@ class ExecutedOn final : public KinematicModel {
     commands_.advance(q, data);
     if (executing_.has_reversal()) data.executing_stands = comp::actual_after(executing_, q, data.executing_stands);
   }
-  Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override { return commands_.programmed_tip(cl, q); }
+  Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override {
+    return commands_.programmed_tip(cl, q);
+  }
   std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to,
                                       const SolverData& data) const override {
     return commands_.take_up(from, to, data);

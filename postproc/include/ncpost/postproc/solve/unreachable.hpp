@@ -15,12 +15,11 @@ namespace ncpost {
 /// pose), the axes out of their limits: "with A 30.000° C 90.000°: Z would be 612.345 mm (limits
 /// -600 to 600 mm)", solutions joined by "; ". Empty when no axis is out of its limits.
 /// `linear_out` (if given) is set when a linear axis is among them.
-std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, const ClPoint& cl, const AxisPosition& previous,
-                               bool* linear_out = nullptr);
+std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, const ClPoint& cl,
+                               const AxisPosition& previous, bool* linear_out = nullptr);
 
 /// "INPUT:LINE: why[: axes_out_of_limits] (tip x, y, z mm, axis i, j, k)[; what to do]".
 std::string unreachable_message(const std::string& input, int line, const KinematicModel& solver, SolverData& data,
-                                const ClPoint& cl,
-                                const AxisPosition& previous, const std::string& why);
+                                const ClPoint& cl, const AxisPosition& previous, const std::string& why);
 
 }  // namespace ncpost

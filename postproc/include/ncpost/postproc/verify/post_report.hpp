@@ -67,7 +67,7 @@ class PathErrors {
 
 struct PostAccount {
   std::string input_name, machine_name, model_name, dialect_name, method_name;
-  std::string executed_on;  ///< the machine both programs are executed on, in words
+  std::string executed_on;    ///< the machine both programs are executed on, in words
   double tolerance_mm = 0.0;  ///< 0: none
   std::size_t motions_in = 0, blocks_out = 0;
   // before: nominal program on the job's machine

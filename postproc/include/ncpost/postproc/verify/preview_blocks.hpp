@@ -43,7 +43,8 @@ class BlockEvaluator {
   virtual std::vector<double> error_curve(const nonlinear::ClBlock& block, int samples) const = 0;
 };
 
-template <class Errors> class ModelEvaluator final : public BlockEvaluator {
+template <class Errors>
+class ModelEvaluator final : public BlockEvaluator {
  public:
   ModelEvaluator(const Machine& machine, const Setup& setup, Errors errors = {},
                  nonlinear::NonlinearErrorOptions options = {})
@@ -56,8 +57,10 @@ template <class Errors> class ModelEvaluator final : public BlockEvaluator {
     row.harmonic_mm = model.amplitude_mm;
     nonlinear::MaximiseOptions m;
     m.scan_intervals = std::max(16, nonlinear::scan_intervals_for(row.cl, options_));
-    row.harmonic_residual_mm = nonlinear::maximise_bracketed(
-        [&](double t) { return std::abs(executed.at(t).error_mm() - model.magnitude_at(t)); }, 0.0, 1.0, m).value;
+    row.harmonic_residual_mm =
+        nonlinear::maximise_bracketed(
+            [&](double t) { return std::abs(executed.at(t).error_mm() - model.magnitude_at(t)); }, 0.0, 1.0, m)
+            .value;
   }
 
   std::vector<double> error_curve(const nonlinear::ClBlock& block, int samples) const override {

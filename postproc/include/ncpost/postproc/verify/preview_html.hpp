@@ -15,8 +15,8 @@ namespace ncpost::preview {
 struct HtmlReport {
   std::string input_name;
   std::string machine_name;
-  std::string model_name;                       ///< empty: nominal machine
-  std::vector<report::InputFile> inputs;        ///< named with their SHA-256 (input, machine, model)
+  std::string model_name;                 ///< empty: nominal machine
+  std::vector<report::InputFile> inputs;  ///< named with their SHA-256 (input, machine, model)
   const PreviewSummary* summary = nullptr;
   PreviewStats stats;
   std::vector<std::string> worst_source_lines;  ///< the source text of summary->worst(), same order

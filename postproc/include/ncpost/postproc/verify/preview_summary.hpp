@@ -58,8 +58,8 @@ class PreviewSummary {
   std::vector<std::size_t> over_;  ///< counts over 1, 5, 10, 50, 100 um
   std::vector<SeriesBucket> series_;
   std::vector<PathBucket> path_;
-  std::size_t stride_ = 1;          ///< blocks per bucket
-  std::size_t path_limit_ = 0;      ///< path size that triggers a merge
+  std::size_t stride_ = 1;      ///< blocks per bucket
+  std::size_t path_limit_ = 0;  ///< path size that triggers a merge
   SeriesBucket open_series_;
   PathBucket open_path_;
   std::size_t open_count_ = 0;

@@ -34,8 +34,9 @@ struct ChartFrame {
 std::string line_chart(const ChartFrame& frame, const std::vector<Series>& series);
 
 /// Bars with a text label under each (every `label_every`-th shown); y linear from 0.
-std::string bar_chart(const ChartFrame& frame, const std::vector<double>& heights, const std::vector<std::string>& labels,
-                      const std::vector<std::string>& colours, int label_every = 1);
+std::string bar_chart(const ChartFrame& frame, const std::vector<double>& heights,
+                      const std::vector<std::string>& labels, const std::vector<std::string>& colours,
+                      int label_every = 1);
 
 struct PathSegment {
   double x0, y0, x1, y1;

@@ -39,16 +39,16 @@ void record_verified_block(VerifyReport& report, double contour_mm, int line);
 /// Adds one block from (cl0, q0) to (cl1, q1), executed on `solver`'s machine, to the report and
 /// returns its contour error (mm). `samples` points per block, refined around the largest by
 /// golden-section search.
-double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0, const ClPoint& cl1,
-                  const AxisPosition& q1, int line, VerifyReport& report, int samples = 24);
+double verify_block(const KinematicModel& solver, const SolverData& data, const ClPoint& cl0, const AxisPosition& q0,
+                    const ClPoint& cl1, const AxisPosition& q1, int line, VerifyReport& report, int samples = 24);
 
 /// The commands the control executes for the words X Y Z `xyz_F` (as written) of a block in the
 /// tilted plane `plane` (its words as written): the plane's transform into the program frame at
 /// home P, into W (W = P - `home_offset_mm`), then the machine with the rotary axes at
 /// `rotary_rad` (where the control turned them: the tool along the plane's Z). verify_block of two
 /// such commands measures the block as the control runs it.
-AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane, const Vec3d& home_offset_mm,
-                               const RotaryAngles& rotary_rad, const Vec3d& xyz_F);
+AxisPosition executed_in_plane(const KinematicModel& solver, SolverData& data, const TiltedPlane& plane,
+                               const Vec3d& home_offset_mm, const RotaryAngles& rotary_rad, const Vec3d& xyz_F);
 
 /// Distance of `p` from the segment a-b.
 double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b);

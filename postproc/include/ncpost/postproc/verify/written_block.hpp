@@ -20,7 +20,7 @@ namespace ncpost {
 /// What the control holds after a block (output units: mm, deg, mm/min or 1/min).
 struct WrittenState {
   enum class Motion { none, rapid, linear, clockwise, counter_clockwise } motion = Motion::none;
-  PerAxis<std::optional<double>> values{};  ///< every axis word in force, in `letters` order
+  PerAxis<std::optional<double>> values{};   ///< every axis word in force, in `letters` order
   std::array<double, 3> centre_offset_mm{};  ///< I J K of the last arc block (centre − start)
   int plane = 17;
   bool inverse_time = false;

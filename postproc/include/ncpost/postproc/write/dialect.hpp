@@ -32,8 +32,8 @@ struct Cycle;
 /// dialect and is expanded into explicit moves.
 struct CycleWords {
   std::string drill, drill_dwell, deep, chip_break, tap, tap_left, bore, bore_dwell, bore_drag;
-  bool dwell_in_ms = true;       ///< P in integer milliseconds (Fanuc, Haas), else seconds with decimals
-  bool first_peck_ijk = false;   ///< G83 takes I (first peck), J (reduction), K (minimum peck): Haas
+  bool dwell_in_ms = true;             ///< P in integer milliseconds (Fanuc, Haas), else seconds with decimals
+  bool first_peck_ijk = false;         ///< G83 takes I (first peck), J (reduction), K (minimum peck): Haas
   std::string cancel = "G80";          ///< ends the modal cycle
   std::string return_initial = "G98";  ///< back to the level the cycle started from
   std::string return_r = "G99";        ///< back to the R plane
@@ -63,22 +63,22 @@ struct BlockNumbers {
   std::string format = "N{n} ";
   long start = 10;
   long step = 10;
-  bool comments = false;           ///< comment lines numbered too (Klartext)
+  bool comments = false;  ///< comment lines numbered too (Klartext)
 };
 
 /// Motion and feed words of straight blocks.
 struct MotionWords {
-  std::string rapid = "G0";        ///< the motion word of a rapid (Klartext "L")
-  std::string linear = "G1";       ///< the motion word of a feed move
-  bool modal = true;               ///< the motion word only when it changes, else on every block
-  std::string rapid_feed;          ///< word after the axes of a rapid (Klartext "FMAX"), empty: none
-  bool plus_sign = false;          ///< '+' before non-negative axis values (Klartext "X+20.0000")
+  std::string rapid = "G0";   ///< the motion word of a rapid (Klartext "L")
+  std::string linear = "G1";  ///< the motion word of a feed move
+  bool modal = true;          ///< the motion word only when it changes, else on every block
+  std::string rapid_feed;     ///< word after the axes of a rapid (Klartext "FMAX"), empty: none
+  bool plus_sign = false;     ///< '+' before non-negative axis values (Klartext "X+20.0000")
   std::string feed_letter = "F";
-  int feed_decimals = 1;           ///< mm/min
-  bool feed_modal = true;          ///< F only when it changes, else on every feed block
-  std::string per_minute = "G94";  ///< feed-per-minute mode word, empty: the only mode
+  int feed_decimals = 1;             ///< mm/min
+  bool feed_modal = true;            ///< F only when it changes, else on every feed block
+  std::string per_minute = "G94";    ///< feed-per-minute mode word, empty: the only mode
   std::string inverse_time = "G93";  ///< inverse-time mode word, empty: the dialect has none
-  int inverse_time_decimals = 4;   ///< 1/min
+  int inverse_time_decimals = 4;     ///< 1/min
 };
 
 /// Circular blocks: G2/G3 with incremental centre words in a principal plane.
@@ -91,7 +91,7 @@ struct ArcWords {
 /// Spindle words: "{rpm}" the speed, "{turn}" the `clockwise` or `counter_clockwise` word.
 struct SpindleWords {
   std::vector<std::string> start{"S{rpm} {turn}"};  ///< a spindle record: speed and direction
-  std::vector<std::string> after_call;  ///< right after a tool call that took the speed ("{rpm}" in it)
+  std::vector<std::string> after_call;              ///< right after a tool call that took the speed ("{rpm}" in it)
   std::vector<std::string> stop{"M5"};
   std::string clockwise = "M3", counter_clockwise = "M4";
 };
@@ -103,32 +103,32 @@ struct TiltedPlaneWords;  // below: the words of `post --tilted-plane`
 
 struct Dialect {
   std::string name;
-  std::string file;                ///< where it was read ("<built-in>/fanuc.toml" for an embedded copy)
+  std::string file;  ///< where it was read ("<built-in>/fanuc.toml" for an embedded copy)
   enum class Comments { parentheses, semicolon } comments = Comments::parentheses;
   CommentRules comment_rules;
-  bool percent_framing = true;     ///< '%' first and last line
-  bool line_numbers = false;       ///< numbered blocks (`numbers`)
+  bool percent_framing = true;  ///< '%' first and last line
+  bool line_numbers = false;    ///< numbered blocks (`numbers`)
   BlockNumbers numbers;
   MotionWords motion;
-  std::optional<ArcWords> arcs;    ///< none: arcs are written as lines within the chord tolerance
+  std::optional<ArcWords> arcs;  ///< none: arcs are written as lines within the chord tolerance
   SpindleWords spindle;
   CoolantWords coolant;
   std::vector<std::string> program_start{"{comments}", "G90 G21 G94 G17 G40 G49 G80"};
   std::vector<std::string> program_end{"M30"};
-  std::vector<std::string> program_stop{"M0"};  ///< a program stop (the operator resumes with cycle start)
+  std::vector<std::string> program_stop{"M0"};           ///< a program stop (the operator resumes with cycle start)
   std::vector<std::string> program_optional_stop{"M1"};  ///< a stop only where the optional-stop switch is on
-  std::vector<std::string> tool_call{"T{tool} M6"};  ///< blocks of a tool change
+  std::vector<std::string> tool_call{"T{tool} M6"};      ///< blocks of a tool change
   /// blocks of a change to a tool called by name ("{tool_name}"); empty: the control calls tools by
   /// number only (a named tool takes its number from --tool-table)
   std::vector<std::string> tool_call_by_name;
-  std::vector<std::string> tool_length_on;  ///< after the tool call without RTCP (empty: the call does it)
-  std::vector<std::string> rtcp_on;         ///< RTCP/TCPM on with the tool's length
-  std::vector<std::string> rtcp_off;        ///< RTCP/TCPM and the length off (before a tool change, at the end)
+  std::vector<std::string> tool_length_on;     ///< after the tool call without RTCP (empty: the call does it)
+  std::vector<std::string> rtcp_on;            ///< RTCP/TCPM on with the tool's length
+  std::vector<std::string> rtcp_off;           ///< RTCP/TCPM and the length off (before a tool change, at the end)
   std::vector<std::string> dwell{"G4 P{ms}"};  ///< "{ms}": milliseconds, "{s}": seconds with 3 decimals
-  std::optional<CycleWords> cycles;         ///< none: every hole as explicit moves
-  std::optional<CompWords> compensation;    ///< none: CUTCOM is refused
-  int linear_decimals = 4;         ///< mm
-  int angle_decimals = 4;          ///< deg
+  std::optional<CycleWords> cycles;            ///< none: every hole as explicit moves
+  std::optional<CompWords> compensation;       ///< none: CUTCOM is refused
+  int linear_decimals = 4;                     ///< mm
+  int angle_decimals = 4;                      ///< deg
   std::shared_ptr<const TiltedPlaneWords> tilted_plane;  ///< none: `post --tilted-plane` writes today's blocks
   /// [input] control: how the G-code input of a re-post reads where controls differ (G10 L20, G10
   /// L2 P0); unknown: those forms are refused.

@@ -16,8 +16,10 @@ inline void append_fixed(fmt::memory_buffer& out, double value, int decimals, bo
   static constexpr double kScale[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
   const double scaled = value * kScale[decimals];
   if (!(std::abs(scaled) < 9.0e15)) {  // also NaN
-    if (plus) fmt::format_to(std::back_inserter(out), "{:+.{}f}", value, decimals);
-    else fmt::format_to(std::back_inserter(out), "{:.{}f}", value, decimals);
+    if (plus)
+      fmt::format_to(std::back_inserter(out), "{:+.{}f}", value, decimals);
+    else
+      fmt::format_to(std::back_inserter(out), "{:.{}f}", value, decimals);
     return;
   }
   std::int64_t n = std::llround(scaled);
@@ -34,8 +36,10 @@ inline void append_fixed(fmt::memory_buffer& out, double value, int decimals, bo
     digits[len++] = static_cast<char>('0' + u % 10);
     u /= 10;
   } while (u != 0);
-  if (negative) digits[len++] = '-';
-  else if (plus) digits[len++] = '+';
+  if (negative)
+    digits[len++] = '-';
+  else if (plus)
+    digits[len++] = '+';
   char text[24];
   for (int k = 0; k < len; ++k) text[k] = digits[len - 1 - k];
   out.append(text, text + len);

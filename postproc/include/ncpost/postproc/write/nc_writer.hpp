@@ -24,15 +24,15 @@ struct NcMotion {
   bool rapid = false;
   PerAxis<double> values{};  ///< X Y Z then rotary axes
   enum class FeedMode { per_minute, inverse_time } feed_mode = FeedMode::per_minute;
-  double feed = 0.0;               ///< mm/min, or 1/min under inverse time
+  double feed = 0.0;  ///< mm/min, or 1/min under inverse time
 };
 
 /// A circular block in a principal plane of M (no rotary motion): G2/G3 with incremental centre
 /// offsets (I J K from the start), output units (mm), feed per minute.
 struct NcArc {
-  int plane = 17;                  ///< 17 (XY, I J), 18 (ZX, I K), 19 (YZ, J K)
-  bool clockwise = false;          ///< G2 (seen from the positive end of the plane's normal axis), else G3
-  std::array<double, 3> end_mm{};  ///< X Y Z at the end
+  int plane = 17;                            ///< 17 (XY, I J), 18 (ZX, I K), 19 (YZ, J K)
+  bool clockwise = false;                    ///< G2 (seen from the positive end of the plane's normal axis), else G3
+  std::array<double, 3> end_mm{};            ///< X Y Z at the end
   std::array<double, 3> centre_offset_mm{};  ///< centre − start (I J K)
   double feed_mm_min = 0.0;
 };
@@ -49,7 +49,7 @@ struct NcCycle {
   double r_plane_mm = 0.0;            ///< Z of the R plane
   std::string words;                  ///< further words as written (" Q2.0000", " P500"), leading blank each
   double feed_mm_min = 0.0;
-  std::vector<std::string> before;    ///< blocks before the cycle's first block (Fanuc rigid tapping M29 S)
+  std::vector<std::string> before;  ///< blocks before the cycle's first block (Fanuc rigid tapping M29 S)
 };
 
 class NcWriter {
@@ -148,7 +148,7 @@ class NcWriter {
   std::optional<double> last_feed_;
   std::size_t blocks_ = 0;
   long line_number_ = 0;
-  double spindle_rpm_ = 0.0;  ///< the speed in force (0: none yet)
+  double spindle_rpm_ = 0.0;                      ///< the speed in force (0: none yet)
   std::optional<std::vector<std::string>> held_;  ///< a tool change waiting for the spindle's speed
   std::string program_name_;
   std::optional<NcCycle> active_cycle_;

@@ -45,15 +45,15 @@ struct DampedOptions {
 };
 
 struct DampedSummary {
-  Eigen::VectorXd x;  ///< the solution
-  Eigen::VectorXd r;  ///< residuals at x
-  double cost = 0.0;  ///< Σ ρ(r_i)
+  Eigen::VectorXd x;   ///< the solution
+  Eigen::VectorXd r;   ///< residuals at x
+  double cost = 0.0;   ///< Σ ρ(r_i)
   int iterations = 0;  ///< accepted steps
   bool converged = false;
 };
 
 /// From x0 with residuals r0 = r(x0). Zero variables: converged at once.
-DampedSummary levenberg_marquardt(const LeastSquaresProblem& problem, const Eigen::VectorXd& x0, const Eigen::VectorXd& r0,
-                                  const DampedOptions& options);
+DampedSummary levenberg_marquardt(const LeastSquaresProblem& problem, const Eigen::VectorXd& x0,
+                                  const Eigen::VectorXd& r0, const DampedOptions& options);
 
 }  // namespace ncpost::comp

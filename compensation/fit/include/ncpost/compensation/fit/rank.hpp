@@ -29,10 +29,10 @@ namespace ncpost::comp {
 
 struct RankAnalysis {
   int rank = 0;
-  Eigen::VectorXd singular_values;         ///< of the column-scaled Jacobian, descending
-  Eigen::VectorXd column_norms;            ///< the scaling
-  std::vector<int> kept;                   ///< column indices, in priority order
-  std::vector<int> pinned;                 ///< column indices
+  Eigen::VectorXd singular_values;            ///< of the column-scaled Jacobian, descending
+  Eigen::VectorXd column_norms;               ///< the scaling
+  std::vector<int> kept;                      ///< column indices, in priority order
+  std::vector<int> pinned;                    ///< column indices
   std::vector<Eigen::VectorXd> null_vectors;  ///< one per pinned column, unit, in scaled space
 };
 

@@ -30,8 +30,8 @@ struct ScaledSvd {
   Eigen::MatrixXd columns;  ///< K = J·D⁻¹
   Eigen::VectorXd scale;    ///< d_j (1 for an unseen column)
   Eigen::JacobiSVD<Eigen::MatrixXd> svd;
-  double cut = 0.0;         ///< σ ≤ cut: not seen
-  int rank = 0;             ///< seen directions
+  double cut = 0.0;  ///< σ ≤ cut: not seen
+  int rank = 0;      ///< seen directions
 
   /// The damped step for the right-hand side `b` (rows of J), in the unscaled parameters.
   Eigen::VectorXd step(const Eigen::VectorXd& b, double damping) const;

@@ -18,8 +18,8 @@ struct NurbsCurve {
   int degree = 0;
   std::vector<double> knots;
   std::vector<Vec3d> points_mm;
-  std::vector<double> weights;     ///< one per control point, all > 0
-  std::vector<Vec3d> axes;         ///< empty, or one tool axis per control point
+  std::vector<double> weights;  ///< one per control point, all > 0
+  std::vector<Vec3d> axes;      ///< empty, or one tool axis per control point
 
   /// "" when the curve is well formed, else what is wrong (for an error message).
   std::string defect() const;

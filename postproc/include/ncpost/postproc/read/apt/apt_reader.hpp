@@ -19,14 +19,14 @@ namespace ncpost::cl {
 /// One statement with its arguments, as parsed (before its meaning is applied).
 struct AptStatement {
   Location where;
-  std::string major;            ///< upper case, inner spaces kept ("TOOL PATH", "END-OF-PATH")
+  std::string major;  ///< upper case, inner spaces kept ("TOOL PATH", "END-OF-PATH")
   bool has_slash = false;
-  std::string raw_arguments;    ///< the text after '/', trimmed
+  std::string raw_arguments;  ///< the text after '/', trimmed
   struct Argument {
     bool is_number = false;
     double number = 0.0;
-    std::string word;           ///< upper case
-    int column = 0;             ///< 1-based column of the argument in its line (approximate across continuations)
+    std::string word;  ///< upper case
+    int column = 0;    ///< 1-based column of the argument in its line (approximate across continuations)
   };
   std::vector<Argument> arguments;
 };

@@ -31,8 +31,8 @@ struct ArcMove {
   ProgramPoint start{};
   ProgramPoint end{};
   PlaneAxes axes{0, 1, 2};
-  double centre1_mm = 0.0;       ///< centre along a1 (absolute)
-  double centre2_mm = 0.0;       ///< centre along a2 (absolute)
+  double centre1_mm = 0.0;  ///< centre along a1 (absolute)
+  double centre2_mm = 0.0;  ///< centre along a2 (absolute)
   double radius_start_mm = 0.0;
   double radius_end_mm = 0.0;
   double angle_start_rad = 0.0;  ///< of the start point about the centre, from a1 toward a2

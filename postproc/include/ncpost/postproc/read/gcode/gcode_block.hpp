@@ -49,11 +49,11 @@ struct BlockKeyword {
 
 /// One parsed line. Containers are cleared and refilled for every line (capacity is reused).
 struct Block {
-  bool percent = false;       ///< a '%' program delimiter line
-  bool deleted = false;       ///< starts with '/' (block delete)
+  bool percent = false;           ///< a '%' program delimiter line
+  bool deleted = false;           ///< starts with '/' (block delete)
   std::string_view program_name;  ///< `Oname` (without the O), viewing the line buffer
-  int column = 0;             ///< 1-based column of the first non-blank character (0: blank line)
-  std::vector<Word> words;    ///< in the order written
+  int column = 0;                 ///< 1-based column of the first non-blank character (0: blank line)
+  std::vector<Word> words;        ///< in the order written
   std::vector<BlockComment> comments;
   std::vector<BlockKeyword> keywords;
 

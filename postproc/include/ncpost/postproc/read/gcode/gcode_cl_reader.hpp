@@ -65,12 +65,12 @@ std::optional<InputKind> parse_input_kind(std::string_view text);
 
 struct GcodeReaderOptions {
   InputKind kind = InputKind::automatic;
-  bool default_inch = false;             ///< G20 in force at the start (G21 otherwise)
-  bool units_given = false;              ///< the user gave the units (--units): a program without G20/G21 is not questioned
-  bool block_delete = true;              ///< skip blocks that start with '/'
+  bool default_inch = false;  ///< G20 in force at the start (G21 otherwise)
+  bool units_given = false;   ///< the user gave the units (--units): a program without G20/G21 is not questioned
+  bool block_delete = true;   ///< skip blocks that start with '/'
   IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< the unit of a dwell time without a decimal point
   ArcCentre arc_centre = ArcCentre::incremental;         ///< what I J K of G2/G3 give (until G90.1/G91.1)
-  double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
+  double arc_chord_tolerance_mm = 1e-3;                  ///< chord error bound of expanded arcs
   /// Every motion's machine commands (machine program: the words; RTCP: the linear axes that put
   /// the tip there at the programmed angles) must lie within the machine's axis limits, else
   /// Infeasible (exit 3) naming the line, the axis and the limit. Off only to study a reading.

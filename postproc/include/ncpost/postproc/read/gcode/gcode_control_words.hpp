@@ -19,13 +19,13 @@
 namespace ncpost::gcode {
 
 enum class ControlWordAction {
-  none,          ///< not one of these words: the interpreter's own table applies
-  drop,          ///< a mode word without geometry: drop it, with `notice`
-  length_inch,   ///< G70: lengths in inch (feeds unchanged)
-  length_mm,     ///< G71: lengths in mm (feeds unchanged)
-  units_inch,    ///< G700: lengths and feeds in inch
-  units_mm,      ///< G710: lengths and feeds in mm
-  refuse,        ///< not supported: `message` says why and what to do
+  none,         ///< not one of these words: the interpreter's own table applies
+  drop,         ///< a mode word without geometry: drop it, with `notice`
+  length_inch,  ///< G70: lengths in inch (feeds unchanged)
+  length_mm,    ///< G71: lengths in mm (feeds unchanged)
+  units_inch,   ///< G700: lengths and feeds in inch
+  units_mm,     ///< G710: lengths and feeds in mm
+  refuse,       ///< not supported: `message` says why and what to do
 };
 
 struct ControlWord {

@@ -54,8 +54,10 @@ class Parameters {
   bool exists(const std::string& name) const { return named_.count(name) > 0; }
   /// A system variable whose value the reader knows (nullopt: forget it); read-only to programs.
   void set_system(int number, std::optional<double> v) {
-    if (v) system_[number] = *v;
-    else system_.erase(number);
+    if (v)
+      system_[number] = *v;
+    else
+      system_.erase(number);
   }
   std::optional<double> system(int number) const {
     const auto it = system_.find(number);

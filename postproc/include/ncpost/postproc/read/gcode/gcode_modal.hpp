@@ -13,15 +13,14 @@
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1 P1-P300
 //   (work offsets: placed in one frame, work_frames.hpp) G10 L2/L20 (their values)
-//   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428
-//   M429 (other M codes pass through as comments with a notice; M91/M92 beside axis words, Heidenhain's
-//   machine coordinates, are refused); words A B C D F H I J K L N O P Q
-//   R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control
-//   mode words (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/
-//   G700/G710 set the units (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and
-//   cycles under G91 or with L/K repeats, other G10 forms, G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing,
-//   U V W and E are "not supported" errors (M97/M98/M99 are SubprogramCall effects); so are rotary letters the
-//   machine lacks.
+//   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99
+//   G234 G254 G255; M0-M9 M30 M128 M129 M428 M429 (other M codes pass through as comments with a notice; M91/M92 beside
+//   axis words, Heidenhain's machine coordinates, are refused); words A B C D F H I J K L N O P Q R S T X Y Z.
+//   G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control mode words (G05.1 Q1, G05 P10000,
+//   G08 P1) are dropped with a notice and Sinumerik G70/G71/ G700/G710 set the units (gcode_control_words.hpp). Dynamic
+//   compensation (G41.1/G42.1), G87/G88 and cycles under G91 or with L/K repeats, other G10 forms, G52/G92 offsets,
+//   rotation, scaling, polar coordinates, threading, probing, U V W and E are "not supported" errors (M97/M98/M99 are
+//   SubprogramCall effects); so are rotary letters the machine lacks.
 //
 // RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
 // (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
@@ -42,9 +41,9 @@ enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw, cycle };
 
 /// The modal canned cycle (G73, G74, G81-G86, G89): its words as last given, absolute mm.
 struct CycleModal {
-  int code10 = 0;                ///< 810 for G81, ...
+  int code10 = 0;  ///< 810 for G81, ...
   std::optional<double> bottom_z, r_z, q, p_s;
-  double initial_z = 0.0;        ///< Z when the cycle mode started (the G98 return level)
+  double initial_z = 0.0;  ///< Z when the cycle mode started (the G98 return level)
 };
 enum class FeedMode { per_minute, inverse_time, per_revolution };
 using cl::IntegerDwell;  // the unit of a dwell time without a decimal point (cl_record.hpp)
@@ -53,30 +52,30 @@ enum class Rtcp { off, m428, g43_4, g234, traori, m128 };
 struct ModalState {
   MotionMode motion = MotionMode::none;
   Plane plane = Plane::xy;
-  bool inch = false;                 ///< lengths in inch (G20, G70, G700)
-  bool feed_inch = false;            ///< feeds in inch (G20, G700; G70 leaves them)
-  bool units_programmed = false;     ///< a units word (G20/G21/G70/G71/G700/G710) was seen
+  bool inch = false;                                        ///< lengths in inch (G20, G70, G700)
+  bool feed_inch = false;                                   ///< feeds in inch (G20, G700; G70 leaves them)
+  bool units_programmed = false;                            ///< a units word (G20/G21/G70/G71/G700/G710) was seen
   cl::CutterComp::Side cutter = cl::CutterComp::Side::off;  ///< G40/G41/G42
   bool incremental = false;
   ArcCentre arc_centre = ArcCentre::incremental;  ///< what I J K give: --arc-centre, then G90.1/G91.1
-  int arc_centre_line = 0;           ///< the line of the G90.1/G91.1 in force (0: --arc-centre)
+  int arc_centre_line = 0;                        ///< the line of the G90.1/G91.1 in force (0: --arc-centre)
   FeedMode feed_mode = FeedMode::per_minute;
-  double feed = 0.0;                 ///< mm/min, mm/rev, or 1/min (G93), converted
+  double feed = 0.0;  ///< mm/min, mm/rev, or 1/min (G93), converted
   double spindle_rpm = 0.0;
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
-  int tool = 0;                      ///< the selected T
+  int tool = 0;  ///< the selected T
   Rtcp rtcp = Rtcp::off;
   /// The tool length: G43, G43.4, G43.5, G234 turn it on, G49 (or H0) cancels it.
   enum class Length { not_set, on, cancelled } length = Length::not_set;
-  int length_cancelled_line = 0;     ///< where it was cancelled
-  std::string work_offset;           ///< "G54", "G54.1 P2", ... ("": none programmed yet)
-  int work_offset_line = 0;          ///< where it was selected
-  bool moved_in_work = false;        ///< a motion in work coordinates (not G28's return, not G53)
-  bool retract_to_r = false;         ///< G99 (else G98)
-  CycleModal cycle;                  ///< while motion == cycle
-  ProgramPoint position{};           ///< the current position (mm, rad)
-  std::array<bool, 6> known{};       ///< the axis has been programmed (else its position is 0, assumed)
-  bool ended = false;                ///< M2/M30 seen
+  int length_cancelled_line = 0;  ///< where it was cancelled
+  std::string work_offset;        ///< "G54", "G54.1 P2", ... ("": none programmed yet)
+  int work_offset_line = 0;       ///< where it was selected
+  bool moved_in_work = false;     ///< a motion in work coordinates (not G28's return, not G53)
+  bool retract_to_r = false;      ///< G99 (else G98)
+  CycleModal cycle;               ///< while motion == cycle
+  ProgramPoint position{};        ///< the current position (mm, rad)
+  std::array<bool, 6> known{};    ///< the axis has been programmed (else its position is 0, assumed)
+  bool ended = false;             ///< M2/M30 seen
 };
 
 /// A move in the machine's own coordinates: G28/G30 (the named axes to their reference point,
@@ -84,44 +83,44 @@ struct ModalState {
 /// coordinates). The reader places it through the machine (gcode_cl_reader.cpp).
 struct MachineMove {
   enum class Kind { reference, machine } kind = Kind::reference;
-  std::string code;                            ///< "G28", "G30", "G53"
+  std::string code;  ///< "G28", "G30", "G53"
   int column = 0;
-  std::array<bool, 6> axes{};                  ///< the axes (X Y Z A B C slots) it moves
-  std::array<double, 6> machine_value{};       ///< G53: the machine coordinate of each (mm, rad)
+  std::array<bool, 6> axes{};             ///< the axes (X Y Z A B C slots) it moves
+  std::array<double, 6> machine_value{};  ///< G53: the machine coordinate of each (mm, rad)
 };
 
 /// A subprogram call or return of a block (Fanuc/Haas M98 P L, Haas M97 P L, M99): the reader
 /// follows it after the block's motion (gcode_subprogram_calls.hpp).
 struct SubprogramCall {
-  int m = 98;        ///< 97, 98 or 99
-  double p = 0.0;    ///< M98: the program number; M97: the block number
-  int times = 1;     ///< L (1 when not given)
-  int column = 0;    ///< of the M word
+  int m = 98;      ///< 97, 98 or 99
+  double p = 0.0;  ///< M98: the program number; M97: the block number
+  int times = 1;   ///< L (1 when not given)
+  int column = 0;  ///< of the M word
 };
 
 /// What one block does. Cleared by `Interpreter::apply` before it fills it.
 struct BlockEffect {
-  std::optional<cl::Feed> feed;            ///< F under G94/G95
-  std::optional<cl::Spindle> spindle;      ///< S while turning, or M3/M4/M5
+  std::optional<cl::Feed> feed;        ///< F under G94/G95
+  std::optional<cl::Spindle> spindle;  ///< S while turning, or M3/M4/M5
   std::optional<cl::ToolChange> tool_change;
   std::optional<cl::LengthOffset> length_offset;  ///< G43/G43.4/G43.5/G234 H<n>
   std::optional<cl::Coolant> coolant;
-  std::optional<cl::CutterComp> cutter_comp;  ///< G40, G41/G42 (D: the offset register)
+  std::optional<cl::CutterComp> cutter_comp;   ///< G40, G41/G42 (D: the offset register)
   std::vector<cl::Unsupported> before_motion;  ///< statements passed through as comments
   bool has_motion = false;
   MotionMode motion = MotionMode::none;
   ProgramPoint start{};
   ProgramPoint end{};
-  std::optional<ArcMove> arc;              ///< for G2/G3
-  std::array<bool, 6> assumed{};           ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
-  std::array<bool, 6> programmed{};        ///< axes with a word in this block
-  std::optional<MachineMove> machine_move; ///< G28/G30/G53
-  std::optional<double> dwell_s;           ///< G4: the dwell time (s)
-  std::optional<double> motion_feed;       ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
-  bool inverse_time = false;               ///< G93 active for this motion
-  std::vector<cl::Record> after_motion;   ///< M0/M1 (cl::Stop) and unknown M codes (passed through)
-  bool program_end = false;                ///< M2 / M30
-  std::optional<SubprogramCall> call;      ///< M97 / M98 / M99
+  std::optional<ArcMove> arc;               ///< for G2/G3
+  std::array<bool, 6> assumed{};            ///< axes (X Y Z A B C) of `end` not programmed yet (0 assumed)
+  std::array<bool, 6> programmed{};         ///< axes with a word in this block
+  std::optional<MachineMove> machine_move;  ///< G28/G30/G53
+  std::optional<double> dwell_s;            ///< G4: the dwell time (s)
+  std::optional<double> motion_feed;        ///< F given on this block: mm/min (G94) or 1/min (G93); not G95
+  bool inverse_time = false;                ///< G93 active for this motion
+  std::vector<cl::Record> after_motion;     ///< M0/M1 (cl::Stop) and unknown M codes (passed through)
+  bool program_end = false;                 ///< M2 / M30
+  std::optional<SubprogramCall> call;       ///< M97 / M98 / M99
   /// A canned-cycle block: the cycle of this hole (distances from the motion's end, the hole at
   /// its R plane, along machine Z), written before the motion; `cycle_off` ends a cycle first.
   std::optional<cl::Cycle> cycle;
@@ -209,13 +208,13 @@ class Interpreter {
   bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
   IntegerDwell integer_dwell_ = IntegerDwell::automatic;
   ArcCentre arc_centre_option_ = ArcCentre::incremental;  ///< --arc-centre
-  int last_arc_line_ = 0;          ///< the last arc (for the message of an arc without I J or R)
-  std::string last_arc_words_;     ///< its centre words ("I and J", "R")
+  int last_arc_line_ = 0;                                 ///< the last arc (for the message of an arc without I J or R)
+  std::string last_arc_words_;                            ///< its centre words ("I and J", "R")
   ModalState state_;
   WorkFrames frames_{nullptr, {}};
   cl::ControlFamily control_ = cl::ControlFamily::unknown;
-  int local_code_ = 0;   ///< 52 or 92: the word that set the local shift in force
-  int local_line_ = 0;   ///< and its line
+  int local_code_ = 0;  ///< 52 or 92: the word that set the local shift in force
+  int local_line_ = 0;  ///< and its line
   Reframe reframe_;
   std::vector<std::string> notices_;
   std::vector<std::string> noticed_keys_;

@@ -24,7 +24,7 @@ namespace ncpost::gcode {
 using OffsetValues = std::array<std::optional<double>, 6>;
 
 struct WorkOffsetTable {
-  std::string file;                          ///< where it was read (for messages)
+  std::string file;                             ///< where it was read (for messages)
   std::map<std::string, OffsetValues> offsets;  ///< by canonical name: "G54", "G59.1", "G54.1 P3"
 };
 

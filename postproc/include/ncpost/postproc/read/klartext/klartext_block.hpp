@@ -26,24 +26,24 @@
 namespace ncpost::klartext {
 
 struct Word {
-  std::string name;              ///< "X", "IX", "R", "RL", "DR", "FMAX", "M", "" (a bare number), "\"" (a string)
-  char sign = 0;                 ///< '+', '-' or 0 as written before the value (DR+ has a sign and no value)
-  std::optional<double> value;   ///< signed
-  std::string text;              ///< the string of a "..." word; the Q parameter of a q_parameter word ("Q1")
-  bool q_parameter = false;      ///< the value is a Q parameter, not a number
-  int column = 0;                ///< 1-based column of the word's first character
+  std::string name;             ///< "X", "IX", "R", "RL", "DR", "FMAX", "M", "" (a bare number), "\"" (a string)
+  char sign = 0;                ///< '+', '-' or 0 as written before the value (DR+ has a sign and no value)
+  std::optional<double> value;  ///< signed
+  std::string text;             ///< the string of a "..." word; the Q parameter of a q_parameter word ("Q1")
+  bool q_parameter = false;     ///< the value is a Q parameter, not a number
+  int column = 0;               ///< 1-based column of the word's first character
 };
 
 struct Block {
-  bool deleted = false;          ///< starts with '/' (block skip)
-  std::optional<long> number;    ///< the block number
-  std::string statement;         ///< upper case, single blanks: "L", "TOOL CALL", "BEGIN PGM", "*" ...; "" when none
-  int column = 0;                ///< 1-based column of the statement (0: none)
-  std::vector<Word> words;       ///< after the statement, in the order written
-  std::string text;              ///< what follows the statement as written, blanks trimmed (BEGIN PGM name MM)
-  std::string comment;           ///< the text after ';' (or after '*'), blanks trimmed
-  int comment_column = 0;        ///< 1-based column of ';' or '*' (0: none)
-  bool continued = false;        ///< the line ends with '~' (the block goes on on the next line)
+  bool deleted = false;        ///< starts with '/' (block skip)
+  std::optional<long> number;  ///< the block number
+  std::string statement;       ///< upper case, single blanks: "L", "TOOL CALL", "BEGIN PGM", "*" ...; "" when none
+  int column = 0;              ///< 1-based column of the statement (0: none)
+  std::vector<Word> words;     ///< after the statement, in the order written
+  std::string text;            ///< what follows the statement as written, blanks trimmed (BEGIN PGM name MM)
+  std::string comment;         ///< the text after ';' (or after '*'), blanks trimmed
+  int comment_column = 0;      ///< 1-based column of ';' or '*' (0: none)
+  bool continued = false;      ///< the line ends with '~' (the block goes on on the next line)
 
   bool empty() const { return statement.empty() && comment_column == 0; }
   /// The first word called `name`, or null.

@@ -13,8 +13,8 @@
 //
 // Read: BEGIN PGM name MM / END PGM, block numbers, ';' comments and '*' structure blocks
 // (cl::Comment), block skip '/', BLK FORM and TOOL DEF (noted), TOOL CALL n|"name" Z S F DL DR (tool
-// change, by number or by name: cl::ToolChange::name; spindle speed, the FAUTO feed), L with X Y Z and the machine's rotary words (I...:
-// incremental), R0 / RL / RR (cl::CutterComp: the post writes it or refuses), F / FMAX / F MAX /
+// change, by number or by name: cl::ToolChange::name; spindle speed, the FAUTO feed), L with X Y Z and the machine's
+// rotary words (I...: incremental), R0 / RL / RR (cl::CutterComp: the post writes it or refuses), F / FMAX / F MAX /
 // FAUTO (FMAX only for its block, as the TNC), M3 M4 M5 M8 M9 M13 M14 M0 M1 M2 M30, M126 (shortest
 // rotary path) / M127, M128 / M129, FUNCTION TCPM / FUNCTION RESET TCPM, M140 MB MAX|n (a rapid
 // along the tool axis: the machine Z, on a machine without a tilting head), M91 / M92 beside X Y Z
@@ -42,10 +42,10 @@
 namespace ncpost::klartext {
 
 struct ReaderOptions {
-  bool allow_unterminated = false;        ///< a program without END PGM / M2 / M30 is posted (notice), not refused
-  bool block_skip = true;                 ///< blocks that start with '/' are left out
-  double arc_chord_tolerance_mm = 1e-3;   ///< chord error bound of arcs expanded into points
-  bool check_limits = true;               ///< the machine's axis limits (Infeasible beyond)
+  bool allow_unterminated = false;       ///< a program without END PGM / M2 / M30 is posted (notice), not refused
+  bool block_skip = true;                ///< blocks that start with '/' are left out
+  double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of arcs expanded into points
+  bool check_limits = true;              ///< the machine's axis limits (Infeasible beyond)
 };
 
 class KlartextReader final : public cl::Reader {

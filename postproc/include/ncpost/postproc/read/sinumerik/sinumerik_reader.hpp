@@ -26,10 +26,10 @@
 namespace ncpost::sinumerik {
 
 struct ReaderOptions {
-  gcode::GcodeReaderOptions gcode;  ///< for the ISO blocks (units, dwell, circles, limits)
+  gcode::GcodeReaderOptions gcode;       ///< for the ISO blocks (units, dwell, circles, limits)
   double arc_chord_tolerance_mm = 1e-3;  ///< arcs in a tilted frame become points within this
-  int max_call_depth = 16;          ///< subprogram levels
-  long max_blocks = 50'000'000;     ///< blocks executed before the program is taken as an endless loop
+  int max_call_depth = 16;               ///< subprogram levels
+  long max_blocks = 50'000'000;          ///< blocks executed before the program is taken as an endless loop
 };
 
 class SinumerikReader final : public cl::Reader {
@@ -50,7 +50,8 @@ class SinumerikReader final : public cl::Reader {
 /// True when `head` (the start of a file) holds a construct of the Sinumerik language that plain
 /// ISO G-code lacks: a `%_N_..._MPF/SPF` line, `DEF REAL|INT|BOOL|STRING`, `PROC`, a CYCLE8..
 /// call, MCALL, GOTOF/GOTOB, SUPA, `T="..."`, a `name=value` assignment of an R parameter, an
-/// axis, an orientation or a `_NAME` (`R1=`, `X=`, `A3=`, `CR=`, `_CAMTOL=`), TRANS/ROT/ATRANS/AROT. Comments do not count.
+/// axis, an orientation or a `_NAME` (`R1=`, `X=`, `A3=`, `CR=`, `_CAMTOL=`), TRANS/ROT/ATRANS/AROT. Comments do not
+/// count.
 bool looks_like_sinumerik(std::string_view head);
 
 }  // namespace ncpost::sinumerik
