@@ -1,20 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/residuals.hpp"
 
-#include <unsupported/Eigen/AutoDiff>
-
 #include "ncpost/compensation/prediction.hpp"
+#include "ncpost/compensation/prediction_jacobian.hpp"
 
 namespace ncpost::comp {
-namespace {
-
-// Fixed-size derivatives: every operation of the forward pass works on kJetSize numbers without
-// size bookkeeping (a dynamic vector, even with inline storage, made the pass about twice as slow);
-// a chunk of fewer columns leaves its last entries at zero.
-using Derivatives = Eigen::Matrix<double, kJetSize, 1>;
-using Jet = Eigen::AutoDiffScalar<Derivatives>;
-
-}  // namespace
 
 Eigen::Index ResidualProblem::residual_count() const {
   Eigen::Index n = 0;
@@ -43,24 +33,7 @@ Eigen::VectorXd ResidualProblem::residuals(const std::vector<double>& values) co
 }
 
 Eigen::MatrixXd ResidualProblem::jacobian(const std::vector<double>& values, const std::vector<int>& columns) const {
-  Eigen::MatrixXd J(residual_count(), static_cast<Eigen::Index>(columns.size()));
-  for (std::size_t first = 0; first < columns.size(); first += kJetSize) {
-    const int chunk = static_cast<int>(std::min<std::size_t>(kJetSize, columns.size() - first));
-    std::vector<Jet> jets(values.size());
-    for (std::size_t p = 0; p < values.size(); ++p) jets[p] = Jet(values[p], Derivatives::Zero());
-    for (int c = 0; c < chunk; ++c)
-      jets[static_cast<std::size_t>(columns[first + static_cast<std::size_t>(c)])].derivatives()[c] = 1.0;
-    Eigen::Index i = 0;
-    for (const auto& s : *sets) {
-      const std::vector<Jet> p = predict_set<Jet>(*machine, s, layout, jets.data());
-      const double unit = value_unit_mm(s);
-      for (const Jet& v : p) {
-        for (int c = 0; c < chunk; ++c) J(i, static_cast<Eigen::Index>(first) + c) = unit * v.derivatives()[c];
-        ++i;
-      }
-    }
-  }
-  return J;
+  return prediction_jacobian_mm(*machine, *sets, layout, values, columns);
 }
 
 }  // namespace ncpost::comp

@@ -20,10 +20,12 @@
 
 namespace ncpost::comp {
 
-/// Predicted values of every row, flattened row by row (values_per_row each), in the file's
-/// units (mm; µm for laser).
-template <class P>
-std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const ModelLayout& layout, const P* values) {
+/// The rows of a set evaluated in order: `visit.begin_row(k)` before row k's own work (the home
+/// pose and the row states come before row 0), then `visit.row(k, values, n)` with its n values in
+/// the file's units; a laser row's value is before its run's zero is taken off (run_zero_rows).
+template <class P, class Visitor>
+void predict_rows(const Machine& m, const MeasurementSet& set, const ModelLayout& layout, const P* values,
+                  Visitor& visit) {
   using std::sqrt;
   std::vector<AxisPosition> commands;
   std::vector<double> times;
@@ -38,10 +40,8 @@ std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const Mo
   const Rigid<P> table_home_inv = home.bed_T_table.inverse();
   const Rigid<P> tool_home_inv = home.bed_T_tool.inverse();
 
-  std::vector<P> out;
-  out.reserve(set.rows.size() * static_cast<std::size_t>(set.values_per_row()));
-  std::map<int, P> run_zero;
   for (std::size_t k = 0; k < set.rows.size(); ++k) {
+    visit.begin_row(k);
     f.set_state(states[k]);
     const AxisPositionT<P> q = set.rows[k].command.template cast<P>();
     const ChainPose<P> raw = raw_chain_pose<P>(m, q, tl, f, false);
@@ -51,7 +51,8 @@ std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const Mo
       case MeasurementType::ballbar: {
         const Vec3<P> d = bed_T_tool.apply(set.tool_ball_mm.template cast<P>()) -
                           bed_T_table.apply(set.table_ball_mm.template cast<P>());
-        out.push_back(sqrt(d.squaredNorm()) + f.value(layout.ballbar_length()));
+        const P length = sqrt(d.squaredNorm()) + f.value(layout.ballbar_length());
+        visit.row(k, &length, 1);
         break;
       }
       case MeasurementType::sphere: {
@@ -60,7 +61,9 @@ std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const Mo
         const Vec3<P> actual = bed_T_table.apply(s) - bed_T_tool.t;
         const ChainPose<double> nom = chain_pose<double>(m, set.rows[k].command, tl, NominalErrors{});
         const Vec3d nominal = nom.bed_T_table.apply(set.sphere_mm) - nom.bed_T_tool.t;
-        for (int c = 0; c < 3; ++c) out.push_back(actual[c] - P(nominal[c]));
+        P deviation[3];
+        for (int c = 0; c < 3; ++c) deviation[c] = actual[c] - P(nominal[c]);
+        visit.row(k, deviation, 3);
         break;
       }
       case MeasurementType::laser: {
@@ -69,14 +72,40 @@ std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const Mo
         const Vec3d nominal = nom.table_T_tool().apply(set.tool_point_mm);
         const int c = set.component - 'X';
         const P e = P(1000.0) * (actual[c] - P(nominal[c]));
-        auto it = run_zero.find(set.rows[k].run);
-        if (it == run_zero.end()) it = run_zero.emplace(set.rows[k].run, e).first;
-        out.push_back(e - it->second);
+        visit.row(k, &e, 1);
         break;
       }
     }
   }
-  return out;
+}
+
+/// Per row of a laser set, the first row of its run: a laser value is the reading minus the
+/// reading at that row (the run's zero). Empty for the other kinds.
+inline std::vector<std::size_t> run_zero_rows(const MeasurementSet& set) {
+  std::vector<std::size_t> first;
+  if (set.type != MeasurementType::laser) return first;
+  std::map<int, std::size_t> first_of_run;
+  for (std::size_t k = 0; k < set.rows.size(); ++k)
+    first.push_back(first_of_run.emplace(set.rows[k].run, k).first->second);
+  return first;
+}
+
+/// Predicted values of every row, flattened row by row (values_per_row each), in the file's
+/// units (mm; µm for laser).
+template <class P>
+std::vector<P> predict_set(const Machine& m, const MeasurementSet& set, const ModelLayout& layout, const P* values) {
+  struct Collect {
+    std::vector<P> out;
+    void begin_row(std::size_t) {}
+    void row(std::size_t, const P* v, int n) { out.insert(out.end(), v, v + n); }
+  } collect;
+  collect.out.reserve(set.rows.size() * static_cast<std::size_t>(set.values_per_row()));
+  predict_rows<P>(m, set, layout, values, collect);
+  const std::vector<std::size_t> zero_row = run_zero_rows(set);
+  if (zero_row.empty()) return collect.out;
+  const std::vector<P> reading = collect.out;
+  for (std::size_t k = 0; k < reading.size(); ++k) collect.out[k] = reading[k] - reading[zero_row[k]];
+  return collect.out;
 }
 
 /// Scale from the file's value unit to mm (1 for ballbar and sphere, 1e-3 for laser µm).

@@ -2,9 +2,8 @@
 #pragma once
 // Residuals and their exact Jacobian for identification: predicted − measured for every value
 // of every measurement set, in mm (laser values converted from µm), stacked set by set, row by
-// row (prediction.hpp). The Jacobian with respect to chosen parameters comes from forward-mode
-// automatic differentiation (Eigen AutoDiffScalar) through the same templated chain, in chunks
-// of up to kJetSize parameters.
+// row (prediction.hpp). The Jacobian with respect to chosen parameters comes from reverse-mode
+// differentiation through the same templated chain (prediction_jacobian.hpp).
 #include <vector>
 
 #include <Eigen/Core>
@@ -13,8 +12,6 @@
 #include "ncpost/compensation/measurement.hpp"
 
 namespace ncpost::comp {
-
-constexpr int kJetSize = 16;
 
 struct ResidualProblem {
   const Machine* machine = nullptr;
