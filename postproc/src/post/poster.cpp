@@ -31,18 +31,7 @@ PostSummary Poster::run(cl::Reader& reader) {
   std::optional<Lookahead> ahead;
   if (options_.threads > 1) ahead.emplace(reader, solver_);
   // the next record from the input: read ahead (2 threads) or read here, errors kept in place
-  const Fetch fetch = [&]() -> AheadItem {
-    if (ahead) return ahead->next();
-    AheadItem item;
-    try {
-      item.record = reader.next();
-      item.notices = reader.take_notices();
-    } catch (...) {
-      item.record.reset();
-      item.error = std::current_exception();
-    }
-    return item;
-  };
+  const Fetch fetch = [&]() -> AheadItem { return ahead ? ahead->next() : read_item(reader); };
   for (;;) {
     AheadItem item;
     if (!pending_.empty()) {
