@@ -206,11 +206,6 @@ struct Family {
   std::vector<std::string> left_out;  ///< effects every file must list as left out, never as held
 };
 
-const Machine& vmc() {
-  static const Machine m = load_machine(test::source("machines/vmcl600.toml"));
-  return m;
-}
-
 /// ECC:t of issue 25: 36 nodes, a local error of C around 120° (76 µrad at 120°), zero elsewhere.
 ErrorParameters ecc_table() {
   ErrorParameters p;
@@ -234,7 +229,7 @@ std::vector<Family> families() {
     ErrorParameters p;
     for (int k = -11; k <= 11; ++k) p.set(fmt::format("EXX:t:{}", 25 * k), 1e-3 * ((k * 7 + 3) % 5) - 0.002);
     p.set("EYX:t:0", 0.001);  // straightness: left out
-    f.push_back({"linear table EXX:t", &vmc(), 'X', p, {"EXX:t (23 nodes)"}, {"EYX:t"}});
+    f.push_back({"linear table EXX:t", &test::vmcl600(), 'X', p, {"EXX:t (23 nodes)"}, {"EYX:t"}});
   }
   {
     ErrorParameters p;
@@ -249,7 +244,7 @@ std::vector<Family> families() {
     p.set("EYY:p1", 40e-6);   // scale: 40 µm/m
     p.set("EYY:p2", 1.5e-7);  // bow
     p.set("EYY:p3", -2e-10);
-    f.push_back({"scale and bow EYY:p", &vmc(), 'Y', p, {"EYY:p1", "EYY:p2", "EYY:p3"}, {}});
+    f.push_back({"scale and bow EYY:p", &test::vmcl600(), 'Y', p, {"EYY:p1", "EYY:p2", "EYY:p3"}, {}});
   }
   {
     ErrorParameters p = ecc_table();
@@ -260,7 +255,7 @@ std::vector<Family> families() {
     ErrorParameters p;
     p.set("EZZ:p1", -25e-6);
     p.set("reversal:Z", 0.003);
-    f.push_back({"reversal with a scale error, Z", &vmc(), 'Z', p, {"EZZ:p1", "reversal:Z"}, {}});
+    f.push_back({"reversal with a scale error, Z", &test::vmcl600(), 'Z', p, {"EZZ:p1", "reversal:Z"}, {}});
   }
   {
     ErrorParameters p;
@@ -409,7 +404,7 @@ TEST_CASE("export: a linear table is held at its end values beyond its nodes, sa
   p.set("EXX:t:-200", -0.004);
   p.set("EXX:t:0", 0.0);
   p.set("EXX:t:250", 0.006);
-  const MachineModel model(vmc(), p);  // X travels -300..300
+  const MachineModel model(test::vmcl600(), p);  // X travels -300..300
   const LinuxcncCompTable t = linuxcnc_comp_table(model, 'X');
   // held, not extrapolated: the end rows' trims are the end nodes' (-(-4 µm) and -6 µm)
   CHECK(t.rows.front()[0] == Approx(-300.0));
@@ -428,7 +423,7 @@ TEST_CASE("export: a linear table is held at its end values beyond its nodes, sa
   const std::string d = dir.string() + "/";
   ModelFile file;
   file.machine = "vmcl600";
-  file.axes = model_axes(vmc());
+  file.axes = model_axes(test::vmcl600());
   file.parameters = p;
   {
     std::FILE* out = std::fopen((d + "model.json").c_str(), "w");

@@ -13,6 +13,7 @@
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "input_output_tips.hpp"
+#include "shipped_machines.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 #include "text_file.hpp"
@@ -27,11 +28,6 @@ using namespace ncpost::test;
 
 namespace {
 
-const Machine& vmc() {
-  static const Machine m = load_machine(source("machines/vmcl600.toml"));
-  return m;
-}
-
 gcode::GcodeReaderOptions with_power_on(const std::string& codes) {
   gcode::GcodeReaderOptions o;
   o.power_on = codes;
@@ -41,7 +37,7 @@ gcode::GcodeReaderOptions with_power_on(const std::string& codes) {
 
 std::vector<cl::Motion> motions(const std::string& text, const gcode::GcodeReaderOptions& o) {
   std::istringstream in(text);
-  gcode::GcodeClReader r(in, "t.nc", vmc(), Setup{}, o);
+  gcode::GcodeClReader r(in, "t.nc", vmcl600(), Setup{}, o);
   return only<cl::Motion>(all_records(r));
 }
 
@@ -70,7 +66,7 @@ TEST_CASE("power-on: G43 Z30. H8 before any motion word posts on Fanuc, and the 
 
 TEST_CASE("power-on: without a power-on state the same program is refused at its first axis words") {
   std::istringstream in(kNoMotionWord);
-  gcode::GcodeClReader r(in, "t.nc", vmc(), Setup{});
+  gcode::GcodeClReader r(in, "t.nc", vmcl600(), Setup{});
   try {
     while (r.next()) {
     }

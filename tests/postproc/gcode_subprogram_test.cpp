@@ -13,6 +13,7 @@
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "input_output_tips.hpp"
+#include "shipped_machines.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 #include "text_file.hpp"
@@ -24,11 +25,6 @@ using namespace ncpost;
 using namespace ncpost::test;
 
 namespace {
-
-const Machine& vmc() {
-  static const Machine m = load_machine(source("machines/vmcl600.toml"));
-  return m;
-}
 
 /// Posts `input` on the VMCL600 (--tolerance none) and checks it block end by block end; returns
 /// the number of input block ends compared (0 when the post failed).
@@ -49,7 +45,7 @@ int posted_and_compared(const std::string& input, bool linuxcnc = false) {
 
 InputError error_of(const std::string& text) {
   std::istringstream in(text);
-  gcode::GcodeClReader r(in, "t.nc", vmc(), Setup{});
+  gcode::GcodeClReader r(in, "t.nc", vmcl600(), Setup{});
   try {
     while (r.next()) {
     }
@@ -139,7 +135,7 @@ TEST_CASE("subprograms: M98 P L under a modal canned cycle: P and L are the call
       "G21 G90 G94\nG0 X0 Y0 Z20\nG99 G82 R2 Z-5 P500 F100\nM98 P1002 L2\nG80\nG0 Z20\nM30\n"
       "O1002\nX10 Y10\nX20 Y10\nM99\n";
   std::istringstream in(text);
-  gcode::GcodeClReader r(in, "t.nc", vmc(), Setup{});
+  gcode::GcodeClReader r(in, "t.nc", vmcl600(), Setup{});
   const std::vector<cl::Record> records = all_records(r);
   std::vector<cl::Cycle> holes;
   for (const cl::Cycle& c : only<cl::Cycle>(records))

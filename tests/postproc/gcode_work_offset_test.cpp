@@ -29,11 +29,6 @@ using namespace ncpost::test;
 
 namespace {
 
-const Machine& vmcl600() {
-  static const Machine m = load_machine(source("machines/vmcl600.toml"));
-  return m;
-}
-
 struct Posted {
   int exit_code = -1;
   std::string program, log;

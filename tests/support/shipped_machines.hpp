@@ -12,4 +12,10 @@ inline const Machine& ac_trunnion() {
   return m;
 }
 
+/// machines/vmcl600.toml: the three-axis VMC (X -300 .. 300 mm).
+inline const Machine& vmcl600() {
+  static const Machine m = load_machine(source("machines/vmcl600.toml"));
+  return m;
+}
+
 }  // namespace ncpost::test

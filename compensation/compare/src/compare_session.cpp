@@ -9,6 +9,7 @@
 #include "ncpost/compensation/laser_iso230_2.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/formatters.hpp"
 
 namespace ncpost::comp {
 namespace {
@@ -24,8 +25,6 @@ std::string axes_moved(const Machine& m, const MeasurementSet& s) {
   return moved;
 }
 
-std::string vec_text(const Vec3d& v) { return fmt::format("({:.3f}, {:.3f}, {:.3f})", v.x(), v.y(), v.z()); }
-
 void add_circular(Session& out, const std::string& name, const report::CircularityFigures& f,
                   const UncertaintyBudget& b) {
   if (f.ok) out.figures.push_back({name, "G", "µm", f.G_um, b});
@@ -33,8 +32,8 @@ void add_circular(Session& out, const std::string& name, const report::Circulari
 
 Session ballbar_session(const Machine& m, const MeasurementSet& s) {
   Session out{s.file, s.conditions.date, "", {}};
-  out.test = fmt::format("ballbar: bar {:.3f} mm, table ball {} mm, tool ball {} mm, axes moved {}", s.bar_length_mm,
-                         vec_text(s.table_ball_mm), vec_text(s.tool_ball_mm), axes_moved(m, s));
+  out.test = fmt::format("ballbar: bar {:.3f} mm, table ball ({:.3f}) mm, tool ball ({:.3f}) mm, axes moved {}",
+                         s.bar_length_mm, s.table_ball_mm, s.tool_ball_mm, axes_moved(m, s));
   const sections::BallbarFigures f = sections::ballbar_figures(m, s);
   if (!f.both.ok)
     throw InputError({s.file, 0, 0},
@@ -60,9 +59,9 @@ Session laser_session(const MeasurementSet& s) {
   for (int j = 0; j < 3; ++j)
     if (j != moving)
       line += fmt::format("{}{} {:.3f}", line.empty() ? "" : ", ", char('X' + j), s.rows.front().command[j]);
-  out.test = fmt::format("laser positioning of {}: line at {} mm, tool point {} mm, {} targets {:.3f} … {:.3f} mm",
-                         g.axis, line, vec_text(s.tool_point_mm), g.targets.size(), g.targets.front().target_mm,
-                         g.targets.back().target_mm);
+  out.test = fmt::format(
+      "laser positioning of {}: line at {} mm, tool point ({:.3f}) mm, {} targets {:.3f} … {:.3f} mm", g.axis, line,
+      s.tool_point_mm, g.targets.size(), g.targets.front().target_mm, g.targets.back().target_mm);
   const std::pair<char, double> figures[] = {{'A', g.accuracy_A_um},
                                              {'B', g.reversal_B_um},
                                              {'E', g.systematic_E_um},

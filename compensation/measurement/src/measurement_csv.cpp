@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/measurement_csv.hpp"
+#include "ncpost/machines/formatters.hpp"
 
 #include <fmt/format.h>
 
@@ -60,8 +61,6 @@ Vec3d vector3(const std::string& value, const Context& where, const std::string&
   if (parts.size() != 3) where.fail(fmt::format("expected three comma-separated numbers (mm) for '{}'", key));
   return {number(parts[0], where, key), number(parts[1], where, key), number(parts[2], where, key)};
 }
-
-std::string format_vec(const Vec3d& v) { return fmt::format("{:.4f}, {:.4f}, {:.4f}", v.x(), v.y(), v.z()); }
 
 /// The largest deviation a reading of each instrument can show (README "Measurement files"): a
 /// ballbar's measuring range is about ±1 mm, a probed sphere centre or a laser reading off by more
@@ -494,14 +493,14 @@ std::string format_measurement_csv(const MeasurementSet& set, const Machine& m) 
   };
   switch (set.type) {
     case MeasurementType::ballbar:
-      out += fmt::format("# table_ball: {}\n# tool_ball: {}\n# bar_length: {:.4f}\n", format_vec(set.table_ball_mm),
-                         format_vec(set.tool_ball_mm), set.bar_length_mm);
+      out += fmt::format("# table_ball: {:.4f}\n# tool_ball: {:.4f}\n# bar_length: {:.4f}\n", set.table_ball_mm,
+                         set.tool_ball_mm, set.bar_length_mm);
       break;
     case MeasurementType::sphere:
-      out += fmt::format("# sphere: {}\n", format_vec(set.sphere_mm));
+      out += fmt::format("# sphere: {:.4f}\n", set.sphere_mm);
       break;
     case MeasurementType::laser:
-      out += fmt::format("# component: {}\n# tool_point: {}\n", set.component, format_vec(set.tool_point_mm));
+      out += fmt::format("# component: {}\n# tool_point: {:.4f}\n", set.component, set.tool_point_mm);
       break;
   }
   if (set.tool_length_mm != 0.0 || set.type == MeasurementType::laser || !set.meta("tool_length").empty())

@@ -9,6 +9,7 @@
 #include "ncpost/compensation/plans.hpp"
 #include "ncpost/kinematics/forward.hpp"
 #include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/formatters.hpp"
 
 namespace ncpost::comp {
 namespace {
@@ -23,8 +24,6 @@ constexpr double kUntimedRowS = 0.1;
 /// The reading of a static set takes this long; the dwell before the next row is the rest of the
 /// rows' time step, and the last row is read for this long too (s).
 constexpr double kReadingS = 1.0;
-
-std::string fmt_vec(const Vec3d& v) { return fmt::format("{:.4f}, {:.4f}, {:.4f}", v.x(), v.y(), v.z()); }
 
 std::string fmt_num(double v) { return fmt::format("{:g}", v); }
 
@@ -106,12 +105,12 @@ void describe_set(PlanProgram& p, const NamedPlan& named, const PlanProgramOptio
   const MeasurementSet& s = named.set;
   p.comment(fmt::format("--- set {}: {} ---", named.name, s.meta("test")));
   if (s.type == MeasurementType::ballbar)
-    p.comment(fmt::format("table ball at {} mm, bar {} mm, tool length {} mm", fmt_vec(s.table_ball_mm),
+    p.comment(fmt::format("table ball at {:.4f} mm, bar {} mm, tool length {} mm", s.table_ball_mm,
                           fmt_num(s.bar_length_mm), fmt_num(s.tool_length_mm)));
   if (s.type == MeasurementType::sphere)
     p.comment(
-        fmt::format("sphere centre at {} mm: the stylus turns {} mm from it, moves to it along the probe axis only",
-                    fmt_vec(s.sphere_mm), fmt_num(o.clearance_mm)));
+        fmt::format("sphere centre at {:.4f} mm: the stylus turns {} mm from it, moves to it along the probe axis only",
+                    s.sphere_mm, fmt_num(o.clearance_mm)));
 }
 
 }  // namespace

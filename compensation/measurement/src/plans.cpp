@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "ncpost/kinematics/inverse.hpp"
+#include "ncpost/machines/formatters.hpp"
 
 namespace ncpost::comp {
 namespace {
@@ -44,8 +45,6 @@ MeasurementRow row_at(const Machine& m, double t, const Eigen::Vector2d& rotary_
   return r;
 }
 
-std::string fmt_vec(const Vec3d& v) { return fmt::format("{:.4f}, {:.4f}, {:.4f}", v.x(), v.y(), v.z()); }
-
 std::string fmt_num(double v) { return fmt::format("{:g}", v); }
 
 }  // namespace
@@ -73,8 +72,8 @@ std::vector<NamedPlan> plan_ballbar_4axis(const Machine& m, const BallbarPlanOpt
     s.tool_ball_mm = Vec3d::Zero();
     s.bar_length_mm = o.bar_length_mm;
     s.metadata = {{"type", "ballbar"},
-                  {"table_ball", fmt_vec(s.table_ball_mm)},
-                  {"tool_ball", fmt_vec(s.tool_ball_mm)},
+                  {"table_ball", fmt::format("{:.4f}", s.table_ball_mm)},
+                  {"tool_ball", fmt::format("{:.4f}", s.tool_ball_mm)},
                   {"bar_length", fmt_num(o.bar_length_mm)},
                   {"test", "ballbar-4axis (seed 000)"},
                   {"height", fmt_num(height)}};
@@ -108,7 +107,8 @@ std::vector<NamedPlan> plan_sphere(const Machine& m, const SpherePlanOptions& o)
   s.type = MeasurementType::sphere;
   s.has_values = false;
   s.sphere_mm = o.sphere_mm;
-  s.metadata = {{"type", "sphere"}, {"sphere", fmt_vec(o.sphere_mm)}, {"test", "sphere (KinematicsOpt style)"}};
+  s.metadata = {
+      {"type", "sphere"}, {"sphere", fmt::format("{:.4f}", o.sphere_mm)}, {"test", "sphere (KinematicsOpt style)"}};
   const int n = static_cast<int>(std::floor(360.0 / o.step_deg + kAngleSlackDeg));
   std::vector<double> sweep_deg;
   for (int i = 0; i < n; ++i) sweep_deg.push_back(i * o.step_deg);
@@ -163,8 +163,8 @@ std::vector<NamedPlan> plan_bc_head(const Machine& m, const BcHeadPlanOptions& o
       s.bar_length_mm = o.bar_length_mm;
       s.tool_length_mm = tl;
       s.metadata = {{"type", "ballbar"},
-                    {"table_ball", fmt_vec(s.table_ball_mm)},
-                    {"tool_ball", fmt_vec(s.tool_ball_mm)},
+                    {"table_ball", fmt::format("{:.4f}", s.table_ball_mm)},
+                    {"tool_ball", fmt::format("{:.4f}", s.tool_ball_mm)},
                     {"bar_length", fmt_num(o.bar_length_mm)},
                     {"tool_length", fmt_num(tl)},
                     {"test", fmt::format("bc-head {} test, bar along {} (seed 002)", test.moving, test.direction)}};

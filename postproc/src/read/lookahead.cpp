@@ -44,18 +44,23 @@ Lookahead::~Lookahead() {
   solving_.join();
 }
 
+AheadItem read_item(cl::Reader& reader) {
+  AheadItem item;
+  try {
+    item.record = reader.next();
+    item.notices = reader.take_notices();
+  } catch (...) {
+    item.record.reset();
+    item.error = std::current_exception();
+  }
+  return item;
+}
+
 void Lookahead::read() {
   std::vector<AheadItem> batch;
   batch.reserve(kBatchSize);
   for (;;) {
-    AheadItem item;
-    try {
-      item.record = reader_.next();
-      item.notices = reader_.take_notices();
-    } catch (...) {
-      item.record.reset();
-      item.error = std::current_exception();
-    }
+    AheadItem item = read_item(reader_);
     const bool last = !item.record;
     batch.push_back(std::move(item));
     if (last || batch.size() == kBatchSize) {

@@ -52,6 +52,11 @@ struct AheadItem {
   std::exception_ptr error;  ///< the reader failed here
 };
 
+/// The next record of `reader` with the reader's notices about it; an error the reader throws is
+/// kept in the item (`error`, no record) to surface where it occurred. Used by the read-ahead
+/// thread and by the post reading on its own thread.
+AheadItem read_item(cl::Reader& reader);
+
 /// A bounded queue of batches between two threads; stop() wakes and releases both sides.
 class BatchQueue {
  public:

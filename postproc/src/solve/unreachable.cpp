@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/solve/unreachable.hpp"
 
+#include "ncpost/machines/formatters.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -77,9 +79,8 @@ std::string unreachable_message(const std::string& input, int line, const Kinema
                                 const ClPoint& cl, const AxisPosition& previous, const std::string& why) {
   bool linear = false;
   const std::string axes = axes_out_of_limits(solver, data, cl, previous, &linear);
-  return fmt::format("{}:{}: {}{}{} (tip {:.4f}, {:.4f}, {:.4f} mm, axis {:.6f}, {:.6f}, {:.6f}){}", input, line, why,
-                     axes.empty() ? "" : ": ", axes, cl.tip_mm.x(), cl.tip_mm.y(), cl.tip_mm.z(), cl.axis.x(),
-                     cl.axis.y(), cl.axis.z(),
+  return fmt::format("{}:{}: {}{}{} (tip {:.4f} mm, axis {:.6f}){}", input, line, why, axes.empty() ? "" : ": ", axes,
+                     cl.tip_mm, cl.axis,
                      linear ? "; a linear axis leaves its travel: check --workpiece-origin and the tool length" : "");
 }
 

@@ -10,6 +10,7 @@
 #include "ncpost/report/colour_scale.hpp"
 #include "ncpost/report/html_page.hpp"
 #include "ncpost/report/path_view_3d.hpp"
+#include "verify/pairwise_merge.hpp"
 
 namespace ncpost {
 
@@ -26,17 +27,11 @@ void MaxSeries::add(double x, double y) {
 }
 
 void MaxSeries::merge_pairs() {
-  std::vector<Bucket> merged;
-  for (std::size_t i = 0; i < buckets_.size(); i += 2) {
-    Bucket b = buckets_[i];
-    if (i + 1 < buckets_.size()) {
-      b.x1 = buckets_[i + 1].x1;
-      b.y = std::max(b.y, buckets_[i + 1].y);
-      b.n += buckets_[i + 1].n;
-    }
-    merged.push_back(b);
-  }
-  buckets_ = std::move(merged);
+  detail::merge_pairs(buckets_, [](Bucket& b, const Bucket& next) {
+    b.x1 = next.x1;
+    b.y = std::max(b.y, next.y);
+    b.n += next.n;
+  });
   per_bucket_ *= 2;
 }
 
@@ -59,36 +54,24 @@ void PathErrors::add_after(int line, double e) {
   }
   after_.push_back({line, line, e});
   if (after_.size() > 2 * max_points_) {  // merge neighbours: line ranges grow, the largest error stays
-    std::vector<Span> merged;
-    for (std::size_t i = 0; i < after_.size(); i += 2) {
-      Span m = after_[i];
-      if (i + 1 < after_.size()) {
-        m.line_first = std::min(m.line_first, after_[i + 1].line_first);
-        m.line_last = std::max(m.line_last, after_[i + 1].line_last);
-        m.value_mm = std::max(m.value_mm, after_[i + 1].value_mm);
-      }
-      merged.push_back(m);
-    }
-    after_ = std::move(merged);
+    detail::merge_pairs(after_, [](Span& m, const Span& next) {
+      m.line_first = std::min(m.line_first, next.line_first);
+      m.line_last = std::max(m.line_last, next.line_last);
+      m.value_mm = std::max(m.value_mm, next.value_mm);
+    });
   }
 }
 
 void PathErrors::add_before(int line, const Vec3d& tip, double e) {
   before_.push_back({tip, line, line, e, -1.0});
   if (before_.size() > max_points_) {
-    std::vector<Point> merged;
-    for (std::size_t i = 0; i < before_.size(); i += 2) {
-      if (i + 1 == before_.size()) {
-        merged.push_back(before_[i]);
-        break;
-      }
-      Point m = before_[i + 1];
-      m.line_first = std::min(before_[i].line_first, m.line_first);
-      m.line_last = std::max(before_[i].line_last, m.line_last);
-      m.before_mm = std::max(before_[i].before_mm, m.before_mm);
-      merged.push_back(m);
-    }
-    before_ = std::move(merged);
+    detail::merge_pairs(before_, [](Point& first, const Point& next) {  // the later point stays
+      Point m = next;
+      m.line_first = std::min(first.line_first, m.line_first);
+      m.line_last = std::max(first.line_last, m.line_last);
+      m.before_mm = std::max(first.before_mm, m.before_mm);
+      first = m;
+    });
   }
 }
 

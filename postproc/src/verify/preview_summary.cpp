@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "verify/pairwise_merge.hpp"
+
 namespace ncpost::preview {
 namespace {
 
@@ -82,17 +84,11 @@ void PreviewSummary::add(const BlockRow& row) {
 void PreviewSummary::push_series(const SeriesBucket& b) {
   series_.push_back(b);
   if (series_.size() < max_points_) return;
-  std::vector<SeriesBucket> merged;
-  for (std::size_t i = 0; i < series_.size(); i += 2) {
-    SeriesBucket m = series_[i];
-    if (i + 1 < series_.size()) {
-      m.last_block = series_[i + 1].last_block;
-      m.max_error_mm = std::max(m.max_error_mm, series_[i + 1].max_error_mm);
-      m.max_harmonic_mm = std::max(m.max_harmonic_mm, series_[i + 1].max_harmonic_mm);
-    }
-    merged.push_back(m);
-  }
-  series_ = std::move(merged);
+  detail::merge_pairs(series_, [](SeriesBucket& m, const SeriesBucket& next) {
+    m.last_block = next.last_block;
+    m.max_error_mm = std::max(m.max_error_mm, next.max_error_mm);
+    m.max_harmonic_mm = std::max(m.max_harmonic_mm, next.max_harmonic_mm);
+  });
   stride_ *= 2;
 }
 

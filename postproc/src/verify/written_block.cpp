@@ -50,6 +50,47 @@ std::optional<double> number_of(std::string_view s) {
   return v;
 }
 
+/// The index of the first word of a block's tokens: 1 after a block number ("N{n} ", "{n} ").
+std::size_t first_word(const std::vector<std::string>& tokens, const Dialect& dialect) {
+  if (!dialect.line_numbers || tokens.empty()) return 0;
+  const std::string& f = dialect.numbers.format;
+  const std::string prefix = f.substr(0, f.find("{n}"));
+  const std::string_view t = tokens[0];
+  return t.substr(0, prefix.size()) == prefix && number_of(t.substr(prefix.size())) ? 1 : 0;
+}
+
+/// A G word of ISO G-code (its number times ten: G93 is 930) applied to `state` as RS274 means it;
+/// false for a G word that is not a motion block's.
+bool apply_g_word(long code, WrittenState& state) {
+  switch (code) {
+    case 0:
+      state.motion = WrittenState::Motion::rapid;
+      return true;
+    case 10:
+      state.motion = WrittenState::Motion::linear;
+      return true;
+    case 20:
+      state.motion = WrittenState::Motion::clockwise, state.centre_offset_mm = {};
+      return true;
+    case 30:
+      state.motion = WrittenState::Motion::counter_clockwise, state.centre_offset_mm = {};
+      return true;
+    case 930:
+      state.inverse_time = true, state.feed.reset();
+      return true;
+    case 940:
+      state.inverse_time = false, state.feed.reset();
+      return true;
+    case 170:
+    case 180:
+    case 190:
+      state.plane = static_cast<int>(code / 10);
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 WrittenBlockReader::WrittenBlockReader(const Dialect& dialect, std::string letters)
@@ -57,13 +98,7 @@ WrittenBlockReader::WrittenBlockReader(const Dialect& dialect, std::string lette
 
 const WrittenState& WrittenBlockReader::read(std::string_view text) {
   std::vector<std::string> tokens = tokens_of(without_comment(text, dialect_.comments));
-  std::size_t first = 0;
-  if (dialect_.line_numbers && !tokens.empty()) {  // the block number ("N{n} ", "{n} ")
-    const std::string& f = dialect_.numbers.format;
-    const std::string prefix = f.substr(0, f.find("{n}"));
-    const std::string_view t = tokens[0];
-    if (t.substr(0, prefix.size()) == prefix && number_of(t.substr(prefix.size()))) first = 1;
-  }
+  const std::size_t first = first_word(tokens, dialect_);
   // the control's language, not the dialect file's words: Klartext (L for every straight move)
   // or ISO G-code, whose G0 G1 G2 G3 G93 G94 G17-G19 mean what RS274 says whatever the file wrote
   const bool klartext = dialect_.motion.rapid == dialect_.motion.linear;
@@ -86,34 +121,7 @@ const WrittenState& WrittenBlockReader::read(std::string_view text) {
     if (t.size() < 2 || !v) fail(t);
     const char letter = t[0];
     if (!klartext && letter == 'G') {
-      const long code = std::lround(*v * 10.0);
-      switch (code) {
-        case 0:
-          state_.motion = WrittenState::Motion::rapid;
-          break;
-        case 10:
-          state_.motion = WrittenState::Motion::linear;
-          break;
-        case 20:
-          state_.motion = WrittenState::Motion::clockwise, state_.centre_offset_mm = {};
-          break;
-        case 30:
-          state_.motion = WrittenState::Motion::counter_clockwise, state_.centre_offset_mm = {};
-          break;
-        case 930:
-          state_.inverse_time = true, state_.feed.reset();
-          break;
-        case 940:
-          state_.inverse_time = false, state_.feed.reset();
-          break;
-        case 170:
-        case 180:
-        case 190:
-          state_.plane = static_cast<int>(code / 10);
-          break;
-        default:
-          fail(t);
-      }
+      if (!apply_g_word(std::lround(*v * 10.0), state_)) fail(t);
       continue;
     }
     if (letter == 'F') {

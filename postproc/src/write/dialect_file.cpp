@@ -351,8 +351,10 @@ void read_stop(const Section& program, const char* key, std::vector<std::string>
                         "at least one block (a program that stops nowhere is not the CAM's program)");
 }
 
-Dialect parse_dialect(const std::string& text, const std::string& file) {
-  const toml::table root = toml_input::parse_toml(text, file);
+namespace {
+
+/// The root holds only the dialect's sections.
+void check_sections(const toml::table& root, const std::string& file) {
   const std::vector<std::string> sections{"dialect",  "program",      "blocks",       "motion",  "arcs",
                                           "comments", "tool",         "spindle",      "coolant", "cycles",
                                           "dwell",    "compensation", "tilted_plane", "input"};
@@ -362,14 +364,10 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
       for (const auto& k : sections) list += (list.empty() ? "" : ", ") + k;
       throw InputError(at(file, key.source()), fmt::format("unknown section [{}] (expected {})", key.str(), list));
     }
-  Dialect d;
-  d.file = file;
-  const Section head(file, root, "dialect");
-  head.known({"name"});
-  d.name = head.text("name");
-  if (d.name.empty()) throw head.wrong(head.node("name"), "name", "a name");
+}
 
-  const Section program(file, root, "program");
+/// [program]: framing, start and end blocks, program stops.
+void read_program(const Section& program, Dialect& d) {
   program.known({"percent_framing", "start", "end", "stop", "optional_stop"});
   d.percent_framing = program.boolean("percent_framing");
   d.program_start = program.blocks("start", {"{program}", "{comments}"});
@@ -379,13 +377,11 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   d.program_end = program.blocks("end", {"{program}"});
   read_stop(program, "stop", d.program_stop);                    // optional: M0 when absent
   read_stop(program, "optional_stop", d.program_optional_stop);  // optional: M1 when absent
+}
 
-  read_blocks(Section(file, root, "blocks"), d);
-  read_motion(Section(file, root, "motion"), d);
-  read_arcs(Section(file, root, "arcs"), d);
-  read_comments(Section(file, root, "comments"), d);
-
-  const Section tool(file, root, "tool");
+/// [tool]: the tool call (by number, and by name), length and RTCP words. Returns whether the
+/// tool call writes the spindle speed ({rpm}).
+bool read_tool(const Section& tool, Dialect& d) {
   tool.known({"call", "call_by_name", "length_on", "rtcp_on", "rtcp_off"});
   d.tool_call = tool.blocks("call", {"{tool}", "{rpm}"});
   tool.require("call", d.tool_call, "{tool}", "the tool number would not be written");
@@ -404,6 +400,27 @@ Dialect parse_dialect(const std::string& text, const std::string& file) {
   if (!d.tool_call_by_name.empty() && takes_speed(d.tool_call_by_name) != call_takes_speed)
     throw tool.wrong(tool.node("call_by_name"), "call_by_name",
                      call_takes_speed ? "{rpm}, as call names it" : "no {rpm}, as call names none");
+  return call_takes_speed;
+}
+
+}  // namespace
+
+Dialect parse_dialect(const std::string& text, const std::string& file) {
+  const toml::table root = toml_input::parse_toml(text, file);
+  check_sections(root, file);
+  Dialect d;
+  d.file = file;
+  const Section head(file, root, "dialect");
+  head.known({"name"});
+  d.name = head.text("name");
+  if (d.name.empty()) throw head.wrong(head.node("name"), "name", "a name");
+
+  read_program(Section(file, root, "program"), d);
+  read_blocks(Section(file, root, "blocks"), d);
+  read_motion(Section(file, root, "motion"), d);
+  read_arcs(Section(file, root, "arcs"), d);
+  read_comments(Section(file, root, "comments"), d);
+  const bool call_takes_speed = read_tool(Section(file, root, "tool"), d);
   read_spindle(Section(file, root, "spindle"), d, call_takes_speed);
   read_coolant(Section(file, root, "coolant"), d);
 
