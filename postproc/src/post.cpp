@@ -17,6 +17,7 @@
 #include "ncpost/postproc/verify/verify_arc.hpp"
 #include "write/post_cycle.hpp"
 #include "write/tool_call.hpp"
+#include "write/tool_offset_blocks.hpp"
 #include "verify/read_back.hpp"
 #include "verify/record_blocks.hpp"
 
@@ -411,6 +412,7 @@ class Poster {
   /// plane, like every modal frame, holds across M0/M1 on the controls of the dialects).
   void on(const cl::Stop& s) { records_.stop(s); }
   void on(const cl::End&) {}
+  void on(const cl::ToolOffset& t) { detail::write_tool_offset(writer_, t, input_); }
 
   // ---- motion ----------------------------------------------------------------------------
   void notice(cl::Location where, const std::string& what) {
