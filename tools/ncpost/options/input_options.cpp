@@ -56,8 +56,8 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
       ->check(CLI::ExistingFile);
   sub.add_option("--subprogram-dir", o.subprogram_dir,
                  "G-code input: the directory where M98 P<n> (O<n>.nc, <n>.nc, ...) and o<name> call (name.ngc) find "
-                 "a subprogram the program's file does not hold, before the program's own directory (docs/formats.md "
-                 "\"Subprograms in other files\")")
+                 "a subprogram the program's file does not hold, before the program's own directory; a "
+                 "subprogram found nowhere is refused")
       ->check(CLI::ExistingDirectory);
 }
 
