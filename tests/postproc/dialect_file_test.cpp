@@ -80,7 +80,7 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
       {"replaced = \"()%;\"        # characters that must not appear in a comment ...\nreplacements = \"[]  \"",
        "replaced = \"(%;\"\nreplacements = \"[  \"",
        ":47:12: replaced in [comments]: expected ')' among the characters"},
-      {"\n[dwell]", "\n[dwel]", ":87:2: unknown section [dwel]"},  // (line 87 since [cycles] tap_before)
+      {"\n[dwell]", "\n[dwel]", ":90:2: unknown section [dwel]"},  // (line 90 since [tool] set_offset)
       {"style = \"parentheses\"", "style = \"braces\"", "expected \"parentheses\" or \"semicolon\""},
       // the words that were C++ before: motion, feed, block numbers, arcs, spindle, cycles
       {"feed_modal = true", "feed_modal = \"yes\"", ":33:14: feed_modal in [motion]: expected true or false"},
@@ -94,15 +94,15 @@ TEST_CASE("a dialect file is validated: file:line:col, exit 2, no program", "[di
        ":18:17: unknown placeholder '{line}' in number_format"},
       {"planes = [\"G17\", \"G18\", \"G19\"]", "planes = [\"G17\", \"G18\"]",
        ":42:10: planes in [arcs]: expected three words"},
-      {"cancel = \"G80\"", "cancel = 80", ":82:10: cancel in [cycles]: expected a string"},
+      {"cancel = \"G80\"", "cancel = 80", ":85:10: cancel in [cycles]: expected a string"},
       // a missing placeholder would lose a word of the program
       {"call = [\"T{tool} M6\"]", "call = [\"M6\"]",
        ":53:8: call in [tool] names no {tool}: the tool number would not be written"},
-      {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} M3\"]", ":59:9: start in [spindle] names no {turn}"},
+      {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} M3\"]", ":62:9: start in [spindle] names no {turn}"},
       {"start = [\"S{rpm} {turn}\"]", "start = [\"S{rpm} {turn}\"]\nafter_call = [\"{turn}\"]",
-       ":60:14: after_call in [spindle]: expected no such key: [tool] call names no {rpm}"},
+       ":63:14: after_call in [spindle]: expected no such key: [tool] call names no {rpm}"},
       // a tool call that takes the speed (Klartext TOOL CALL 6 Z S2000) needs the blocks after it
-      {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 S{rpm}\"]", ":58:1: missing key 'after_call' in [spindle]"},
+      {"call = [\"T{tool} M6\"]", "call = [\"T{tool} M6 S{rpm}\"]", ":61:1: missing key 'after_call' in [spindle]"},
       {"inverse_time = \"G93\"     # inverse-time feed of simultaneous moves (\"\": none; such a cut then needs "
        "--rtcp)\n",
        "", ":26:1: missing key 'inverse_time' in [motion]"},

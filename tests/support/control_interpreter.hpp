@@ -10,18 +10,19 @@
 //
 // Words: G0 G1 (straight moves only), G90 G91, G54-G59, G59.1-G59.3, G54.1 P<n>, G10 L2 P<n>
 // (values), G10 L20 P<n> (Fanuc/Haas: G54.1 P<n>'s values; LinuxCNC: so that the current position
-// reads the words), G52 (a local shift: the words) and G92 (the local shift that makes the current
-// position read the words), both added in every offset, M2 M30, N, F S T M3 M5 M6 H G17 G21 G40
-// G43 G49 G80 G94 (no effect here).
-// Parameters: #1..#5399 numbered, `#n = expr`, `X#1`, `X[expr]` with + - * / and
-// EQ NE GT GE LT LE. Subprograms: Fanuc/Haas `M98 P<o> L<k>` to `O<o>` blocks (after M30 too),
-// Haas `M97 P<n> L<k>` to block N<n>, `M99` returns. LinuxCNC o-words: sub/endsub/call (with
-// [args] into #1..#30)/return, if/elseif/else/endif, while/endwhile, do/while, repeat/endrepeat,
-// break, continue.
+// reads the words), G10 L1/L10-L13 (tool offsets: no effect on the tip, which G43 puts at the words), G52 (a local
+// shift: the words) and G92 (the local shift that makes the current position read the words), both added in every
+// offset, G20 (X Y Z words in inches, of the motions only), M2 M30, N, F S T M3 M5 M6 H G17 G21 G40 G43 G49 G80 G94 (no
+// effect here). Parameters: #1..#5399 numbered, `#n = expr`, `X#1`, `X[expr]` with + - * / and EQ NE GT GE LT LE.
+// Subprograms: Fanuc/Haas `M98 P<o> L<k>` to `O<o>` blocks (after M30 too), Haas `M97 P<n> L<k>` to block N<n>, `M99`
+// returns (`M99 P<n>`: to block N<n>), Haas G154 P<n> (G54.1 P<n>); a target the program lacks from ControlSpec::files.
+// LinuxCNC o-words: sub/endsub/call (with [args] into #1..#30)/return, if/elseif/else/endif, while/endwhile, do/while,
+// repeat/endrepeat, break, continue.
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,9 @@ struct ControlSpec {
   bool linuxcnc = false;                                  ///< G10 L20's LinuxCNC meaning
   std::map<std::string, std::map<char, double>> offsets;  ///< "G54" -> X Y Z (mm) and rotary (deg)
   std::string axes = "XYZ";                               ///< the program's axis letters
+  /// Files beside the program by name ("O1234.nc", "drill.ngc"): a subprogram the program lacks is
+  /// taken from the one whose name before its '.' is O<n> or <n> (M98 P<n>) or <name>.ngc.
+  std::map<std::string, std::string> files;
 };
 
 struct ControlEnd {
@@ -209,6 +213,9 @@ class ControlInterpreter {
         const auto o = o_word(lines_[i]);
         if (o && o->first == label && o->second == "SUB") sub = i;
       }
+      if (sub == std::string::npos && label.size() > 2 && label[1] == '<' &&
+          append_file(label.substr(2, label.size() - 3) + ".NGC"))
+        return o_step(pc, label, kw);
       if (sub == std::string::npos) fail(pc, "no sub " + label);
       Frame f{pc + 1, sub + 1, 0, {}};
       for (int n = 1; n <= 30; ++n) f.saved[n] = params_[n];
@@ -273,11 +280,32 @@ class ControlInterpreter {
     return std::nullopt;
   }
   /// O<number>'s first line and the repeats: Fanuc's P<kkkk><oooo> where only O<oooo> exists.
-  std::pair<std::size_t, int> find_program(std::size_t pc, int number) const {
+  std::pair<std::size_t, int> find_program(std::size_t pc, int number) {
     if (const auto at = program_line(number)) return {*at, 1};
     if (number > 9999)
       if (const auto at = program_line(number % 10000)) return {*at, number / 10000};
+    for (const auto& [name, text] : spec_.files) {
+      std::string stem = name.substr(0, name.find('.'));
+      if (!stem.empty() && (stem[0] == 'O' || stem[0] == 'o')) stem.erase(0, 1);
+      if (!stem.empty() && stem.find_first_not_of("0123456789") == std::string::npos && std::stoi(stem) == number &&
+          append_file(name))
+        return find_program(pc, number);
+    }
     fail(pc, "no O" + std::to_string(number));
+  }
+  /// Appends the lines of the file `name` (upper case compared) once; false when none or appended.
+  bool append_file(const std::string& name) {
+    for (const auto& [n, text] : spec_.files) {
+      std::string upper = n;
+      for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (upper != name && n != name) continue;
+      if (appended_.count(n)) return false;
+      appended_.insert(n);
+      std::istringstream in(text);
+      for (std::string raw; std::getline(in, raw);) lines_.push_back(clean(raw));
+      return true;
+    }
+    return false;
   }
   std::size_t find_block(std::size_t pc, int number) const {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
@@ -337,6 +365,7 @@ class ControlInterpreter {
       case 593:
         return "G59.3";
       case 541:
+      case 1540:
         return "G54.1 P" + std::to_string(static_cast<int>(w.at('P')));
       default:
         return "";
@@ -350,6 +379,7 @@ class ControlInterpreter {
 
   void g10(const std::map<char, double>& w) {
     const int l = static_cast<int>(w.at('L')), p = static_cast<int>(w.at('P'));
+    if (l != 2 && l != 20) return;  // a tool offset (L1, L10 ..): the tip is where the words say
     static const char* names[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
     const bool fanuc_l20 = l == 20 && !spec_.linuxcnc;
     const std::string name = fanuc_l20 ? "G54.1 P" + std::to_string(p) : p == 0 ? active_ : names[p - 1];
@@ -381,6 +411,8 @@ class ControlInterpreter {
     for (int c : g) {
       if (c == 0 || c == 10)
         motion_ = c;
+      else if (c == 200 || c == 210)
+        inch_ = c == 200;
       else if (c == 900)
         absolute_ = true;
       else if (c == 910)
@@ -400,7 +432,8 @@ class ControlInterpreter {
     bool moves = false;
     for (char a : spec_.axes)
       if (w.count(a)) {
-        pos_[a] = absolute_ ? w.at(a) : pos_[a] + w.at(a);
+        const double v = w.at(a) * (inch_ && (a == 'X' || a == 'Y' || a == 'Z') ? 25.4 : 1.0);
+        pos_[a] = absolute_ ? v : pos_[a] + v;
         moves = true;
       }
     if (moves) {
@@ -433,7 +466,7 @@ class ControlInterpreter {
         if (f.repeats_left-- > 0) return f.start_pc;
         const std::size_t back = f.return_pc;
         frames_.pop_back();
-        return back;
+        return w.count('P') ? find_block(pc, static_cast<int>(w.at('P'))) : back;
       }
     }
     return pc + 1;
@@ -448,11 +481,13 @@ class ControlInterpreter {
   std::string active_ = "G54";
   int motion_ = 0;
   bool absolute_ = true;
+  bool inch_ = false;  ///< G20: X Y Z words in inches (converted to mm)
   bool ended_ = false;
   std::vector<Frame> frames_;
   std::map<std::string, int> repeat_left_;
   std::vector<ControlEnd> ends_;
   std::map<std::string, std::map<char, double>> first_values_;
+  std::set<std::string> appended_;  ///< files of ControlSpec::files read in
 };
 
 }  // namespace ncpost::test

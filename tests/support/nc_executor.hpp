@@ -8,7 +8,8 @@
 //
 // Supported words: G0 G1 G2 G3 (G17 arcs by I J, K for helices not needed), G90 G91, G93 G94,
 // G43.4 / G234 / M428 (tool tip control on: X Y Z are the tip in W) and G49 / M429 (off), G81/G83 (G98/G99
-// return, as straight moves), G80, N, F, comments in ( ), T M S H words (ignored).
+// return, as straight moves), G80, N, F, comments in ( ), T M S H words (ignored); G10 (an offset
+// setting: no motion, its words ignored).
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -192,6 +193,7 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
     std::vector<double> gs;
     double i_word = 0, j_word = 0;
     bool has_feed = false;
+    const double r_before = cycle_r;  // a G10's R is no cycle's R plane
     for (std::size_t k = 0; k < s.size();) {
       const char letter = s[k++];
       const std::size_t start = k;  // [+-]digits[.digits] (no exponent, no hex: "G0X27" is G0 X27)
@@ -244,6 +246,8 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
         return_initial = false;
       else if (c == 280 || c == 300 || c == 530)
         reference = true;
+      else if (c == 100)
+        reference = true, cycle_r = r_before;
     }
     // a reference return or a machine-coordinate move (the program's end): outside the tests' frame
     if (given.empty() || reference) continue;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "ncpost/postproc/write/cycle_words.hpp"
+#include "write/tool_offset_blocks.hpp"
 
 namespace ncpost {
 namespace detail {
@@ -107,6 +108,7 @@ void Poster::on(const cl::Dwell& d) {
 /// plane, like every modal frame, holds across M0/M1 on the controls of the dialects).
 void Poster::on(const cl::Stop& s) { records_.stop(s); }
 void Poster::on(const cl::End&) {}
+void Poster::on(const cl::ToolOffset& t) { detail::write_tool_offset(writer_, t, input_); }
 
 }  // namespace detail
 

@@ -59,6 +59,7 @@ class Poster {
   void on(const cl::Dwell& d);
   void on(const cl::Stop& s);
   void on(const cl::End&);
+  void on(const cl::ToolOffset& t);
 
   // ---- branch planning (motion_planning.cpp) ---------------------------------------------------
   /// The most feed motions planned at once (memory: the records held, one back-pointer per candidate).

@@ -92,6 +92,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   go.arc_centre = options.arc_centre;
   go.work_offsets = options.work_offsets;
   go.control = options.control;
+  go.tool_offset_writes = options.tool_offset_writes;
+  go.subprogram_dir = options.subprogram_dir;
   go.power_on = options.power_on;
   go.power_on_source = options.power_on_source;
   go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files

@@ -20,13 +20,17 @@ std::string echo_for(std::string_view line, int column) {
 }
 
 LineSource::LineSource(std::istream& in, std::string file_name, std::string expected)
-    : in_(in), origin_(in.tellg()), file_(std::move(file_name)), expected_(std::move(expected)), buffer_(kChunkBytes) {}
+    : in_(&in),
+      origin_(in.tellg()),
+      file_(std::move(file_name)),
+      expected_(std::move(expected)),
+      buffer_(kChunkBytes) {}
 
 bool LineSource::seek(std::uint64_t offset, int line_number) {
   if (origin_ == std::istream::pos_type(-1)) return false;
-  in_.clear();
-  in_.seekg(origin_ + static_cast<std::streamoff>(offset));
-  if (!in_) return false;
+  in_->clear();
+  in_->seekg(origin_ + static_cast<std::streamoff>(offset));
+  if (!*in_) return false;
   begin_ = end_ = 0;
   eof_ = false;
   bom_checked_ = offset != 0;  // a byte order mark stands only at offset 0
@@ -34,6 +38,14 @@ bool LineSource::seek(std::uint64_t offset, int line_number) {
   bytes_read_ = offset;
   line_number_ = line_number - 1;
   return true;
+}
+
+void LineSource::switch_input(std::istream& in, std::istream::pos_type origin, std::string file_name) {
+  in_ = &in;
+  origin_ = origin;
+  file_ = std::move(file_name);
+  begin_ = end_ = 0;
+  eof_ = false;
 }
 
 bool LineSource::refill() {
@@ -53,12 +65,12 @@ bool LineSource::refill() {
         echo_of(head, kEchoBytes - 1));
   }
   if (buffer_.size() - end_ < kChunkBytes) buffer_.resize(end_ + kChunkBytes);
-  in_.read(buffer_.data() + end_, static_cast<std::streamsize>(buffer_.size() - end_));
-  const auto got = static_cast<std::size_t>(in_.gcount());
-  if (in_.bad()) throw InputError({file_, line_number_ + 1, 0}, "read error");
+  in_->read(buffer_.data() + end_, static_cast<std::streamsize>(buffer_.size() - end_));
+  const auto got = static_cast<std::size_t>(in_->gcount());
+  if (in_->bad()) throw InputError({file_, line_number_ + 1, 0}, "read error");
   end_ += got;
   bytes_read_ += got;
-  if (got == 0 || in_.eof()) eof_ = true;
+  if (got == 0 || in_->eof()) eof_ = true;
   if (!bom_checked_ && (end_ >= 3 || eof_)) {
     bom_checked_ = true;
     if (end_ - begin_ >= 3 && std::memcmp(buffer_.data() + begin_, "\xEF\xBB\xBF", 3) == 0) begin_ += 3;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 
 #include "ncpost/machines/input_error.hpp"
@@ -310,8 +311,33 @@ bool power_on_code(const std::string& word) {
 
 /// [input] (optional): how a G-code program of this control reads where controls differ, and the
 /// modal state the control starts a program in (LinuxCNC's RS274NGC_STARTUP_CODE).
+/// [input] tool_offsets = { L10 = "length", ... }: what G10 L<n> sets (cl::ToolOffsetWrite).
+void read_tool_offsets(const Section& s, Dialect& d) {
+  static const std::map<std::string, cl::ToolOffsetWrite> kNames{
+      {"length", cl::ToolOffsetWrite::length},         {"length_wear", cl::ToolOffsetWrite::length_wear},
+      {"radius", cl::ToolOffsetWrite::radius},         {"radius_wear", cl::ToolOffsetWrite::radius_wear},
+      {"diameter", cl::ToolOffsetWrite::diameter},     {"diameter_wear", cl::ToolOffsetWrite::diameter_wear},
+      {"tool_table", cl::ToolOffsetWrite::tool_table}, {"length_reading", cl::ToolOffsetWrite::length_reading}};
+  const toml::node& n = s.node("tool_offsets");
+  const toml::table* t = n.as_table();
+  if (!t) throw s.wrong(n, "tool_offsets", "a table of G10 L numbers, e.g. { L10 = \"length\" }");
+  for (const auto& [key, value] : *t) {
+    const std::string k(key.str());
+    const auto v = value.value_exact<std::string>();
+    const bool l_number = k.size() >= 2 && k.size() <= 3 && k[0] == 'L' &&
+                          std::all_of(k.begin() + 1, k.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!l_number || !v || !kNames.count(*v))
+      throw s.wrong(value, "tool_offsets",
+                    "L<n> = one of \"length\", \"length_wear\", \"radius\", \"radius_wear\", \"diameter\", "
+                    "\"diameter_wear\", \"tool_table\", \"length_reading\" (got " +
+                        k + ")");
+    d.input_tool_offsets[std::stoi(k.substr(1))] = kNames.at(*v);
+  }
+}
+
 void read_input(const Section& s, Dialect& d) {
-  s.known({"control", "power_on"});
+  s.known({"control", "power_on", "tool_offsets"});
+  if (s.has("tool_offsets")) read_tool_offsets(s, d);
   if (s.has("control")) {
     const std::string control = s.text("control");
     if (control == "fanuc")
@@ -382,7 +408,9 @@ void read_program(const Section& program, Dialect& d) {
 /// [tool]: the tool call (by number, and by name), length and RTCP words. Returns whether the
 /// tool call writes the spindle speed ({rpm}).
 bool read_tool(const Section& tool, Dialect& d) {
-  tool.known({"call", "call_by_name", "length_on", "rtcp_on", "rtcp_off"});
+  tool.known({"call", "call_by_name", "length_on", "rtcp_on", "rtcp_off", "set_offset"});
+  if (tool.has("set_offset"))  // optional: the blocks that write a tool offset the input set with G10
+    d.tool_set_offset = tool.blocks("set_offset", {"{register}", "{length}", "{radius}", "{diameter}"});
   d.tool_call = tool.blocks("call", {"{tool}", "{rpm}"});
   tool.require("call", d.tool_call, "{tool}", "the tool number would not be written");
   if (tool.has("call_by_name")) {  // optional: controls that call tools by name

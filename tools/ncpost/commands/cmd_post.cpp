@@ -103,6 +103,7 @@ PostRequest post_request_of(const PostArgs& a) {
   r.reader = reader_options(a.job);
   if (!a.tool_table.empty()) r.tool_table = std::make_shared<const ToolTable>(load_tool_table(a.tool_table));
   r.reader.control = r.dialect.input_control;
+  r.reader.tool_offset_writes = r.dialect.input_tool_offsets;
   r.reader.power_on = r.dialect.input_power_on;
   r.reader.power_on_source = fmt::format("the {} dialect's [input] power_on", r.dialect.name);
   r.tolerance_mm = tolerance_of(a.tolerance);

@@ -54,6 +54,11 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                  "posted in the frame of its first, the others shifted by their values; without it a second offset "
                  "is refused")
       ->check(CLI::ExistingFile);
+  sub.add_option("--subprogram-dir", o.subprogram_dir,
+                 "G-code input: the directory where M98 P<n> (O<n>.nc, <n>.nc, ...) and o<name> call (name.ngc) find "
+                 "a subprogram the program's file does not hold, before the program's own directory; a "
+                 "subprogram found nowhere is refused")
+      ->check(CLI::ExistingDirectory);
 }
 
 Vec3d workpiece_origin_mm(const JobOptions& o) {
@@ -92,6 +97,7 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
                                                     : cl::ArcCentre::incremental;
   if (!o.work_offsets.empty())
     ro.work_offsets = std::make_shared<const gcode::WorkOffsetTable>(gcode::load_work_offsets(o.work_offsets));
+  ro.subprogram_dir = o.subprogram_dir;
   return ro;
 }
 

@@ -23,6 +23,7 @@ struct JobOptions {
   std::string dwell_p = "auto";            ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
   std::string arc_centre = "incremental";  ///< G-code I J K: "incremental", "centre-to-start" or "absolute"
   std::string work_offsets;                ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
+  std::string subprogram_dir;              ///< G-code: where subprograms in other files are looked for first, "" none
 };
 
 struct LoadedJob {

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include "ncpost/kinematics/forward.hpp"
@@ -110,6 +112,12 @@ struct GcodeClReader::State {
       rotary_axis[static_cast<std::size_t>(k)] = static_cast<int>(slot_letters.find(machine.rotary(k).letter));
     }
     interpreter.set_work_offsets(options.work_offsets, options.control);
+    interpreter.set_tool_offset_writes(options.tool_offset_writes);
+    std::vector<std::string> dirs;
+    if (!options.subprogram_dir.empty()) dirs.push_back(options.subprogram_dir);
+    const std::string own = std::filesystem::path(file).parent_path().string();
+    dirs.push_back(own.empty() ? std::string(".") : own);
+    calls.set_directories(std::move(dirs));
     if (!options.power_on.empty()) interpreter.power_on(options.power_on, options.power_on_source, options.units_given);
     interpreter.on_rtcp_switch([this](const ProgramPoint& p, bool rtcp_on) { return reframed(p, rtcp_on); });
   }
@@ -612,13 +620,20 @@ struct GcodeClReader::State {
     std::string_view line;
     const std::uint64_t line_offset = source.next_line_offset();
     if (!source.next(line)) {
+      if (calls.active())  // the rest of the caller would be lost
+        throw InputError({source.file(), source.line_number(), 0},
+                         fmt::format("{} ends at the end of its file without M99 (or endsub)", calls.innermost()));
       release_held(known_before);
       units_hint();
       finish_input();
       return false;
     }
     const int line_number = source.line_number();
-    if (line_number <= leader_lines) return true;
+    if (source.file() != file) {  // a subprogram's file, or back in the program's
+      file = source.file();
+      interpreter.set_file(file);
+    }
+    if (calls.in_main_file() && line_number <= leader_lines) return true;
     if (const std::optional<OWord> o = read_o_word(line)) {
       seen_content = true;
       oword_flow.follow(*o, line, line_offset, line_number);
@@ -672,7 +687,7 @@ struct GcodeClReader::State {
       else if (c.m == 97)
         calls.call_block(static_cast<int>(c.p), c.times, back, line_number, c.column);
       else
-        calls.leave(true, parameters, line_number, c.column);
+        calls.leave(true, parameters, line_number, c.column, static_cast<int>(c.p));
     } catch (const InputError& e) {
       if (!e.source_line().empty()) throw;
       throw InputError(e.where(), e.detail(), text);
@@ -891,10 +906,36 @@ struct GcodeClReader::State {
     interpreter.moved_to(p);
   }
 
+  // ---- tool offsets the program sets (G10 L1/L10/L12, gcode_tool_offsets.hpp): the post writes
+  // them again; on a machine whose tip depends on the tool length (a rotary axis in the head, the
+  // program read as machine axes) a length set for the register of G43 H must be the one the
+  // reading uses (--tool-length), else the tip would be placed off by the difference.
+  std::map<int, double> length_set_mm;  ///< by register, as the program set it
+
+  void note_tool_offset(const cl::ToolOffset& t) {
+    if (t.length_mm) length_set_mm[t.register_number] = *t.length_mm;
+    before.push_back(t);
+  }
+
+  void check_length_set(int register_number, cl::Location where) {
+    const auto set = length_set_mm.find(register_number);
+    if (set == length_set_mm.end() || options.word_forward || rtcp_now()) return;
+    const bool head = std::any_of(machine.axes.begin(), machine.axes.end(),
+                                  [](const Axis& a) { return a.is_rotary() && a.side == Side::tool; });
+    if (!head || std::abs(set->second - setup.tool_length_mm) <= 5e-4) return;
+    throw InputError({file, where.line, where.column},
+                     fmt::format("H{}: the program set this register's tool length to {:.4f} mm (G10), but the "
+                                 "machine {} turns the tool in its head and the program is read for a tool length of "
+                                 "{:.4f} mm (--tool-length): post with --tool-length {:.4f}",
+                                 register_number, set->second, machine.name, setup.tool_length_mm, set->second));
+  }
+
   /// Feed, tool, spindle, coolant, compensation and the other records before the block's motion.
   void queue_modal_records(const BlockEffect& fx, int line_number) {
     if (fx.feed) before.push_back(*fx.feed);
     if (fx.tool_change) before.push_back(*fx.tool_change);
+    if (fx.tool_offset) note_tool_offset(*fx.tool_offset);
+    if (fx.length_offset) check_length_set(fx.length_offset->register_number, fx.length_offset->where);
     if (fx.length_offset) before.push_back(*fx.length_offset);
     if (fx.spindle) before.push_back(*fx.spindle);
     if (fx.coolant) before.push_back(*fx.coolant);

@@ -60,13 +60,9 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
     case 100: {
       // an L beyond any G10 form is no kind (and must not overflow the int cast)
       const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
-      const std::string p_text = p ? fmt::format(" P{}", number(*p)) : std::string();
       if (kind == 2 || kind == 20) return {ControlWordAction::none, {}};  // work offsets (gcode_modal.cpp)
-      if (kind == 1 || kind == 10 || kind == 11)
-        return {ControlWordAction::refuse,
-                fmt::format("G10 L{}{} writes the tool table from within the program: not supported; remove it "
-                            "(tool lengths are the control's offsets, --tool-length for the post)",
-                            kind, p_text)};
+      if (kind == 1 || (kind >= 10 && kind <= 13))
+        return {ControlWordAction::none, {}};  // tool offsets, as the dialect reads them (gcode_tool_offsets.hpp)
       return {ControlWordAction::refuse,
               "G10 (writing offsets or parameters from within the program) is not supported: remove it and give the "
               "part's position with --workpiece-origin"};

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "ncpost/postproc/read/gcode/gcode_control_words.hpp"
+#include "read/gcode/gcode_tool_offsets.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -119,6 +120,7 @@ int g_group(int code10, const char*& why) {
       return g_return;
     case 540:
     case 541:
+    case 1540:  // Haas G154 P1 .. P99: G54.1 P1 .. P99
     case 550:
     case 560:
     case 570:
@@ -353,6 +355,7 @@ void BlockEffect::clear() {
   spindle.reset();
   tool_change.reset();
   length_offset.reset();
+  tool_offset.reset();
   coolant.reset();
   cutter_comp.reset();
   before_motion.clear();
@@ -744,7 +747,10 @@ void Interpreter::apply_modal_settings(const Context& cx, const Words& w, const 
                 "G254 (Haas dynamic work offset) is ignored: coordinates are taken in W as written");
   if (codes.in(g_distance)) st.incremental = codes.of(g_distance).code10 == 910;
   // after G90/G91 of the same block: under G91 both are refused
-  if (codes.is(g_non_modal, 100)) apply_g10(cx, w, codes);
+  if (codes.is(g_non_modal, 100) && w.has('L') && is_tool_offset_form(w.get('L')))
+    apply_tool_offset(cx, w, codes, fx);
+  else if (codes.is(g_non_modal, 100))
+    apply_g10(cx, w, codes);
   if (codes.is(g_non_modal, 520) || codes.is(g_non_modal, 920)) apply_local_offset(cx, w, codes);
   apply_arc_distance(cx, codes);
   if (codes.in(g_return)) st.retract_to_r = codes.of(g_return).code10 == 990;
@@ -778,11 +784,15 @@ void Interpreter::apply_work_offset(const Context& cx, const Words& w, const Cod
   if (!codes.in(g_coordinates)) return;
   const Code c = codes.of(g_coordinates);
   std::string name = g_name(c.code10);
-  if (c.code10 == 541) {
-    const std::optional<std::string> n =
-        w.has('P') ? work_offset_name(fmt::format("G54.1 P{}", w.get('P'))) : std::optional<std::string>();
+  if (c.code10 == 541 || c.code10 == 1540) {
+    const bool haas = c.code10 == 1540;  // Haas G154 P1 .. P99 is G54.1 P1 .. P99
+    const std::optional<std::string> n = w.has('P') && (!haas || w.get('P') <= 99.0)
+                                             ? work_offset_name(fmt::format("G54.1 P{}", w.get('P')))
+                                             : std::optional<std::string>();
     if (!n)
-      cx.fail(w.has('P') ? w.col('P') : c.column, "G54.1 needs P1 .. P300 (the number of the extended work offset)");
+      cx.fail(w.has('P') ? w.col('P') : c.column,
+              haas ? "G154 needs P1 .. P99 (the number of the Haas extended work offset, G54.1 P1 .. P99)"
+                   : "G54.1 needs P1 .. P300 (the number of the extended work offset)");
     name = *n;
   }
   const bool fixed = frames_.fixed();
@@ -910,6 +920,28 @@ void Interpreter::apply_g10(const Context& cx, const Words& w, const Codes& code
   const std::string why = reading ? frames_.set_reading(name, st.position, values) : frames_.set_value(name, values);
   if (!why.empty()) cx.fail(column, why);
   frames_.note_source(name, fmt::format("G10 at line {}", cx.line_number));
+}
+
+// G10 L1, L10 .. L13: a tool offset set in the program, as the dialect's [input] tool_offsets reads it
+void Interpreter::apply_tool_offset(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ToolOffsetBlock b;
+  b.l = static_cast<int>(w.get('L'));
+  b.column = codes.of(g_non_modal).column;
+  const auto word = [&](char c) {
+    return w.has(c) ? std::optional<ToolOffsetWord>(ToolOffsetWord{w.get(c), w.col(c)}) : std::nullopt;
+  };
+  b.p = word('P');
+  b.r = word('R');
+  b.z = word('Z');
+  for (char c = 'A'; c <= 'Z' && !b.other; ++c)
+    if (w.has(c) && std::string_view("GLNPRZ").find(c) == std::string_view::npos)
+      b.other = c, b.other_column = w.col(c);
+  b.incremental = state_.incremental;
+  b.mm_per_unit = state_.inch ? kMmPerInch : 1.0;
+  if (word_axes_)
+    cx.fail(b.column,
+            fmt::format("G10 on the machine {}, whose words are no Cartesian frame: not supported", axis_letters_));
+  fx.tool_offset = read_tool_offset(tool_offset_writes_, b, file_, cx.line_number, cx.fail.text);
 }
 
 // G52 (the local shift is the words) and G92 (the local shift that makes the current position read
@@ -1369,8 +1401,10 @@ void Interpreter::apply_call(const Context& cx, const Words& w, const Codes& cod
   SubprogramCall call;
   call.m = c.code10;
   call.column = c.column;
-  if (c.code10 == 99) {
-    if (w.has('P')) cx.fail(w.col('P'), "M99 P (return to a block number) is not supported");
+  if (c.code10 == 99) {  // P: the block of the calling program to return to (0: the one after the call)
+    if (w.has('P')) call.p = w.get('P');
+    if (w.has('P') && !(call.p >= 1.0 && call.p <= 99999.0 && call.p == std::floor(call.p)))
+      cx.fail(w.col('P'), "M99 P: expected the block number N1 .. N99999 to return to");
     fx.call = call;
     return;
   }

@@ -12,7 +12,7 @@
 namespace ncpost::gcode {
 
 void OWordFlow::fail(int line, int column, const std::string& what) const {
-  throw InputError({file_, line, column}, what + calls_.chain());
+  throw InputError({source_.file(), line, column}, what + calls_.chain());
 }
 
 double OWordFlow::value_at(std::string_view line, std::size_t at, int line_number, const OWord& w) const {

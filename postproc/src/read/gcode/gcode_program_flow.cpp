@@ -67,7 +67,7 @@ int loop_end_number(std::string_view line) {
 }
 
 void ProgramFlow::fail(int line, int column, const std::string& what) const {
-  throw InputError({file_, line, column}, what);
+  throw InputError({source_.file(), line, column}, what);
 }
 
 void ProgramFlow::follow(const MacroFlow& flow, std::uint64_t line_offset, int line_number, int first_line) {

@@ -6,6 +6,7 @@
 // Units: every length is in mm and every angle in degrees *as written* is converted by the
 // reader: positions in mm in W, tool axis unit vectors in W, feeds in mm/min (or mm/rev).
 // Every record carries the position of its first character in the source.
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,6 +75,18 @@ struct ToolChange {
 struct LengthOffset {
   Location where;
   int register_number = 0;
+};
+
+/// G10 L1/L10/L12 ... of G-code input (docs/formats.md "Tool offsets"): the program sets the length
+/// and/or the radius of offset register `register_number` (on LinuxCNC the tool table's entry of
+/// tool `register_number`), which a later G43 H / G41 D uses. The post writes it again with its
+/// dialect's [tool] set_offset blocks, or refuses where the dialect has none.
+struct ToolOffset {
+  Location where;
+  int register_number = 0;
+  std::optional<double> length_mm;  ///< the tool length set (mm)
+  std::optional<double> radius_mm;  ///< the cutter radius set (mm; a diameter is halved)
+  std::string text;                 ///< the block as written
 };
 
 /// CIRCLE/xc,yc,zc,i,j,k,r,...: the next Motion ends the arc (centre and axis in W, mm).
@@ -165,7 +178,7 @@ struct End {
 };
 
 using Record = std::variant<Motion, Feed, Spindle, Coolant, ToolChange, LengthOffset, Circle, Cycle, CutterComp,
-                            Comment, Unsupported, Dwell, Stop, End>;
+                            Comment, Unsupported, Dwell, Stop, End, ToolOffset>;
 
 /// Where a record starts.
 inline Location location_of(const Record& r) {
@@ -189,6 +202,21 @@ enum class ArcCentre { incremental, centre_to_start, absolute };
 /// Fanuc and Haas set an extended offset's value, LinuxCNC makes the current position read the value).
 enum class ControlFamily { unknown, fanuc, linuxcnc };
 
+/// G-code: what a control's G10 L<n> P<register> sets in its tool offsets (the dialect's [input]
+/// tool_offsets, by L): Fanuc L10 length, L11 length wear, L12 radius, L13 radius wear; Haas L10
+/// length, L1/L11 length wear, L12 diameter, L13 diameter wear; LinuxCNC L1 the tool table (Z the
+/// length, R the radius), L10/L11 the length that makes the current position read Z.
+enum class ToolOffsetWrite {
+  length,
+  length_wear,
+  radius,
+  radius_wear,
+  diameter,
+  diameter_wear,
+  tool_table,
+  length_reading
+};
+
 struct ReaderOptions {
   bool default_inch = false;  ///< the units of a file that does not say (UNITS/... overrides)
   bool units_given = false;   ///< `default_inch` is the user's word (--units), not the default
@@ -209,6 +237,12 @@ struct ReaderOptions {
   std::string power_on, power_on_source;
   /// G-code: the values of the work offsets (`--work-offsets FILE`); null: none given.
   std::shared_ptr<const gcode::WorkOffsetTable> work_offsets;
+  /// G-code: what G10 L<n> sets in the tool offsets, by n (the dialect's [input] tool_offsets; empty:
+  /// every G10 tool-offset form is refused).
+  std::map<int, ToolOffsetWrite> tool_offset_writes;
+  /// G-code: where `M98 P<n>` and `o<name> call` look for a subprogram the program's file does not
+  /// hold, before the program's own directory (--subprogram-dir; "" none).
+  std::string subprogram_dir;
 };
 
 /// A pull-style stream of records; readers stream so memory stays flat in the input size.

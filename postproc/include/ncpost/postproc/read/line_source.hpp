@@ -38,6 +38,12 @@ class LineSource {
   /// when the stream cannot be positioned (a pipe).
   bool seek(std::uint64_t offset, int line_number);
 
+  /// Reads on from another input (a subprogram in another file): `in`, which started at `origin`,
+  /// named `file_name` in messages from now on; seek() then says where. `in` must outlive the reading.
+  void switch_input(std::istream& in, std::istream::pos_type origin, std::string file_name);
+  std::istream& input() const { return *in_; }
+  std::istream::pos_type origin() const { return origin_; }  ///< where the input started (-1: not seekable)
+
   int line_number() const { return line_number_; }  ///< 1-based number of the last line returned
   const std::string& file() const { return file_; }
   bool last_line_terminated() const { return terminated_; }  ///< the last line ended with a line break
@@ -46,7 +52,7 @@ class LineSource {
  private:
   bool refill();
 
-  std::istream& in_;
+  std::istream* in_;
   std::istream::pos_type origin_;  ///< where the input started in the stream (-1: not seekable)
   std::string file_;
   std::string expected_;

@@ -15,6 +15,7 @@
 // tool call names "{rpm}", the change waits for the next spindle record and takes its speed
 // (Klartext `TOOL CALL 6 Z S2000`), the spindle then writes `SpindleWords::after_call`.
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -121,14 +122,18 @@ struct Dialect {
   /// blocks of a change to a tool called by name ("{tool_name}"); empty: the control calls tools by
   /// number only (a named tool takes its number from --tool-table)
   std::vector<std::string> tool_call_by_name;
-  std::vector<std::string> tool_length_on;     ///< after the tool call without RTCP (empty: the call does it)
-  std::vector<std::string> rtcp_on;            ///< RTCP/TCPM on with the tool's length
-  std::vector<std::string> rtcp_off;           ///< RTCP/TCPM and the length off (before a tool change, at the end)
-  std::vector<std::string> dwell{"G4 P{ms}"};  ///< "{ms}": milliseconds, "{s}": seconds with 3 decimals
-  std::optional<CycleWords> cycles;            ///< none: every hole as explicit moves
-  std::optional<CompWords> compensation;       ///< none: CUTCOM is refused
-  int linear_decimals = 4;                     ///< mm
-  int angle_decimals = 4;                      ///< deg
+  std::vector<std::string> tool_length_on;  ///< after the tool call without RTCP (empty: the call does it)
+  std::vector<std::string> rtcp_on;         ///< RTCP/TCPM on with the tool's length
+  std::vector<std::string> rtcp_off;        ///< RTCP/TCPM and the length off (before a tool change, at the end)
+  /// [tool] set_offset: the blocks that set a tool offset register the input program set with G10
+  /// ("{register}", "{length}", "{radius}", "{diameter}"; a block is written when one of its values
+  /// is set, a word whose value is not set is left out); empty: such an input is refused.
+  std::vector<std::string> tool_set_offset;
+  std::vector<std::string> dwell{"G4 P{ms}"};            ///< "{ms}": milliseconds, "{s}": seconds with 3 decimals
+  std::optional<CycleWords> cycles;                      ///< none: every hole as explicit moves
+  std::optional<CompWords> compensation;                 ///< none: CUTCOM is refused
+  int linear_decimals = 4;                               ///< mm
+  int angle_decimals = 4;                                ///< deg
   std::shared_ptr<const TiltedPlaneWords> tilted_plane;  ///< none: `post --tilted-plane` writes today's blocks
   /// [input] control: how the G-code input of a re-post reads where controls differ (G10 L20, G10
   /// L2 P0); unknown: those forms are refused.
@@ -136,6 +141,9 @@ struct Dialect {
   /// [input] power_on: the G codes of the modal state the control starts a program in ("G0 G17 G90
   /// G94 G54"), applied before a G-code input's first block; "" none.
   std::string input_power_on;
+  /// [input] tool_offsets: what the control's G10 L<n> sets in its tool offsets, by n (empty: none
+  /// read, G10 L1/L10-L13 refused).
+  std::map<int, cl::ToolOffsetWrite> input_tool_offsets;
 };
 
 /// The built-in dialect names, in the order of the help text.

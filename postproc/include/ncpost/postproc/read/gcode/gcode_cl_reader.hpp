@@ -82,6 +82,11 @@ struct GcodeReaderOptions {
   /// of G10 L20 and G10 L2 P0 applies (work_frames.hpp).
   std::shared_ptr<const WorkOffsetTable> work_offsets;
   cl::ControlFamily control = cl::ControlFamily::unknown;
+  /// What the control's G10 L<n> sets in its tool offsets (cl::ReaderOptions::tool_offset_writes).
+  std::map<int, cl::ToolOffsetWrite> tool_offset_writes;
+  /// Where subprograms in other files are looked for before the program's directory ("" none;
+  /// docs/formats.md "Subprograms in other files").
+  std::string subprogram_dir;
   /// The modal state the control starts in ("G0 G17 G90 G94 G54", Interpreter::power_on) and where it
   /// was given; the posted program's header names it. "" none: the program must set what it uses.
   std::string power_on, power_on_source;

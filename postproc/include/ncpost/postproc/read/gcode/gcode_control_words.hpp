@@ -7,7 +7,8 @@
 //     with a notice (the posted program's control keeps its own setting);
 //   - Sinumerik G70/G71 (lengths in inch/mm, feeds stay in the control's basic unit) and
 //     G700/G710 (lengths and feeds in inch/mm);
-//   - G10 (offset and tool-table writes from the program): refused with what to do;
+//   - G10 forms other than L2/L20 (work offsets) and L1, L10-L13 (tool offsets, read as the dialect
+//     says: gcode_tool_offsets.hpp): refused with what to do;
 //   - the cancel words of refused modes (G15, G50, G50.1, G69) and G97 (rpm, constant surface
 //     speed G96 off) without geometry: nothing to do; G96 itself is refused;
 //     Haas G187 P E (smoothness; its E is read only there) and G103 P (look-ahead): dropped.

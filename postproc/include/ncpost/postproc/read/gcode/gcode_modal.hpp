@@ -12,19 +12,20 @@
 //
 // Supported and rejected words (InputError with the exact column):
 //   G0 G1 G2 G3 G4 G17 G18 G19 G20 G21 G28 G30 G40 G43 G43.1 G43.4 G43.5 G49 G53 G54-G59.3 G54.1 P1-P300
-//   (work offsets: placed in one frame, work_frames.hpp) G10 L2/L20 (their values)
-//   G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1 G91.1 G93 G94 G95 G98 G99
-//   G234 G254 G255; M0-M9 M30 M128 M129 M428 M429 (other M codes pass through as comments with a notice; M91/M92 beside
-//   axis words, Heidenhain's machine coordinates, are refused); words A B C D F H I J K L N O P Q R S T X Y Z.
-//   G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control mode words (G05.1 Q1, G05 P10000,
-//   G08 P1) are dropped with a notice and Sinumerik G70/G71/ G700/G710 set the units (gcode_control_words.hpp). Dynamic
-//   compensation (G41.1/G42.1), G87/G88 and cycles under G91 or with L/K repeats, other G10 forms, G52/G92 offsets,
-//   rotation, scaling, polar coordinates, threading, probing, U V W and E are "not supported" errors (M97/M98/M99 are
-//   SubprogramCall effects); so are rotary letters the machine lacks.
+//   (work offsets: placed in one frame, work_frames.hpp) G10 L2/L20 (their values), G10 L1/L10-L13 (tool offsets,
+//   gcode_tool_offsets.hpp) G61 G61.1 G64 G73 G74 G80 G81-G86 G89 (canned cycles, as cl::Cycle records) G90 G91 G90.1
+//   G91.1 G93 G94 G95 G98 G99 G234 G254 G255; M0-M9 M30 M128 M129 M428 M429 (other M codes pass through as comments
+//   with a notice; M91/M92 beside axis words, Heidenhain's machine coordinates, are refused); words A B C D F H I J K L
+//   N O P Q R S T X Y Z. G40/G41/G42 (with D: the offset register) become cl::CutterComp records. Control mode words
+//   (G05.1 Q1, G05 P10000, G08 P1) are dropped with a notice and Sinumerik G70/G71/ G700/G710 set the units
+//   (gcode_control_words.hpp). Dynamic compensation (G41.1/G42.1), G87/G88 and cycles under G91 or with L/K repeats,
+//   other G10 forms, G52/G92 offsets, rotation, scaling, polar coordinates, threading, probing, U V W and E are "not
+//   supported" errors (M97/M98/M99 are SubprogramCall effects); so are rotary letters the machine lacks.
 //
 // RTCP (tool-tip programming) is modal: on with M428 (LinuxCNC), G43.4/G43.5 (Fanuc), G234
 // (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -93,7 +94,7 @@ struct MachineMove {
 /// follows it after the block's motion (gcode_subprogram_calls.hpp).
 struct SubprogramCall {
   int m = 98;      ///< 97, 98 or 99
-  double p = 0.0;  ///< M98: the program number; M97: the block number
+  double p = 0.0;  ///< M98: the program number; M97: the block number; M99: the block to return to (0: none)
   int times = 1;   ///< L (1 when not given)
   int column = 0;  ///< of the M word
 };
@@ -104,6 +105,7 @@ struct BlockEffect {
   std::optional<cl::Spindle> spindle;  ///< S while turning, or M3/M4/M5
   std::optional<cl::ToolChange> tool_change;
   std::optional<cl::LengthOffset> length_offset;  ///< G43/G43.4/G43.5/G234 H<n>
+  std::optional<cl::ToolOffset> tool_offset;      ///< G10 L1/L10/L12 ...: a tool offset set (gcode_tool_offsets.hpp)
   std::optional<cl::Coolant> coolant;
   std::optional<cl::CutterComp> cutter_comp;   ///< G40, G41/G42 (D: the offset register)
   std::vector<cl::Unsupported> before_motion;  ///< statements passed through as comments
@@ -162,6 +164,10 @@ class Interpreter {
   /// left out where the user gave the units (`units_given`).
   void power_on(const std::string& codes, const std::string& source, bool units_given);
   const WorkFrames& work_frames() const { return frames_; }
+  /// What the control's G10 L<n> sets in its tool offsets (the dialect's [input] tool_offsets).
+  /// The file whose lines are applied from now on (a subprogram's file), for messages.
+  void set_file(std::string file_name) { file_ = std::move(file_name); }
+  void set_tool_offset_writes(std::map<int, cl::ToolOffsetWrite> writes) { tool_offset_writes_ = std::move(writes); }
   /// The machine's axis words are U V W ... (no X Y Z A B C slots).
   bool word_axes() const { return word_axes_; }
 
@@ -183,6 +189,7 @@ class Interpreter {
   void apply_arc_distance(const Context& cx, const Codes& codes);
   void apply_work_offset(const Context& cx, const Words& w, const Codes& codes);
   void apply_g10(const Context& cx, const Words& w, const Codes& codes);
+  void apply_tool_offset(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_local_offset(const Context& cx, const Words& w, const Codes& codes);
   void note_moved(const Context& cx);
   std::string g10_offset_name(const Context& cx, const Words& w, int kind, int column) const;
@@ -213,6 +220,7 @@ class Interpreter {
   ModalState state_;
   WorkFrames frames_{nullptr, {}};
   cl::ControlFamily control_ = cl::ControlFamily::unknown;
+  std::map<int, cl::ToolOffsetWrite> tool_offset_writes_;
   int local_code_ = 0;  ///< 52 or 92: the word that set the local shift in force
   int local_line_ = 0;  ///< and its line
   Reframe reframe_;
