@@ -17,11 +17,10 @@
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/simulate.hpp"
 #include "ncpost/machines/machine_file.hpp"
+#include "shipped_machines.hpp"
 #include "test_paths.hpp"
 
 namespace ncpost::test {
-
-inline Machine vmcl600() { return load_machine(source("machines/vmcl600.toml")); }
 
 /// Least-squares slope of c1·x + c2·x² + c3·x³ over the points.
 inline double ls_slope_of(const std::array<double, 3>& c, const std::vector<double>& xs) {
