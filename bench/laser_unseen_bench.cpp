@@ -109,7 +109,9 @@ int main(int argc, char** argv) {
       continue;
     }
     const comp::MachineModel on_truth(m, truth.parameters);
-    const comp::MachineModel tables(m, with_curves(r, -1)), through(m, with_curves(r, 0)), model(m, r.parameters);
+    // the identified model (curves through the nodes, the default) and the two alternatives
+    const comp::MachineModel tables(m, with_curves(r, -1)), through(m, r.parameters),
+        model(m, with_curves(r, comp::kMaxLegendreDegree));
     for (const auto* mm : {&tables, &through, &model}) {
       const Figures d = cut_figures(m, *mm, on_truth, dome, dir + "/laser_unseen_bench.nc");
       const Figures v = cut_figures(m, *mm, on_truth, volume, dir + "/laser_unseen_bench.nc");
