@@ -156,11 +156,44 @@ TEST_CASE("heidenhain: a function of position is left out with the effect it has
   CHECK(left_um == Approx(8.0).margin(0.01));  // the wobble at C = 90° and 270°: 4 (−1 − 1) µm
 }
 
-TEST_CASE("heidenhain: axes that do not turn the table about +X, +Y, +Z are refused", "[export][heidenhain]") {
+TEST_CASE("heidenhain: axes along -Y and -Z (Haas UMC-750) read back as the control chains them",
+          "[export][heidenhain]") {
   const Machine haas = load_machine(test::source("machines/haas-umc750.toml"));  // B along -Y, C along -Z
+  REQUIRE(haas.axes[static_cast<std::size_t>(haas.index_of('B'))].direction.y() == -1.0);
+  ErrorParameters p;  // offsets and tilts of both lines, of a few tens of µm and µrad
+  p.set("EX0C", 0.012);
+  p.set("EY0C", -0.008);
+  p.set("EA0C", 30e-6);
+  p.set("EB0C", -20e-6);
+  p.set("EX0B", 0.015);
+  p.set("EZ0B", 0.010);
+  p.set("EA0B", -25e-6);
+  p.set("EC0B", 40e-6);
+  const MachineModel model(haas, p);
+  const std::string text = format_heidenhain(heidenhain_kinematics(model), model, kFrom);
+  const std::vector<Row> rows = entry_rows(text);
+  const std::vector<AxisPosition> poses = travel_grid(haas);
+  CHECK(largest_gap_um(rows, model, poses) < 0.001);
+  CHECK(largest_gap_um(rows, MachineModel(haas, ErrorParameters{}), poses) > 10.0);
+  // each axis's first orientation entry is half a turn (nominal 180°) and changes by its tilt only
+  const std::regex half_turn(R"(^\d+\s+Trans\s+[ABC]\s+(179\.9\d+|180\.0\d+)\s+180\.000000000\s+([-+][0-9.]+)\s.*$)");
+  int half_turns = 0;
+  std::istringstream in(text);
+  for (std::string s; std::getline(in, s);) {
+    std::smatch m;
+    if (!std::regex_match(s, m, half_turn)) continue;
+    ++half_turns;
+    CHECK(std::abs(std::stod(m[2])) < 100.0);  // µrad: a tilt, never a whole turn
+  }
+  CHECK(half_turns == 2);
+}
+
+TEST_CASE("heidenhain: axes that do not turn the table about ±X, ±Y, ±Z are refused", "[export][heidenhain]") {
+  Machine tilted = load_machine(test::source("machines/haas-umc750.toml"));
+  tilted.axes[static_cast<std::size_t>(tilted.index_of('C'))].direction = Vec3d(0.0, 0.6, -0.8);
   ErrorParameters p;
   p.set("EX0C", 0.01);
-  CHECK_THROWS_WITH(heidenhain_kinematics(MachineModel(haas, p)), Catch::Contains("+X, +Y, +Z"));
+  CHECK_THROWS_WITH(heidenhain_kinematics(MachineModel(tilted, p)), Catch::Contains("±X, ±Y, ±Z"));
 }
 
 TEST_CASE("ncpost export --format heidenhain: exit codes, and docs/exports/ac-trunnion-heidenhain.txt is current",

@@ -14,79 +14,22 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <fstream>
-#include <sstream>
-
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/machines/machine_file.hpp"
-#include "ncpost/postproc/solve/actual_solver.hpp"
-#include "ncpost/postproc/read/apt/apt_reader.hpp"
-#include "ncpost/postproc/write/atomic_file.hpp"
-#include "ncpost/postproc/solve/executed_on.hpp"
-#include "ncpost/postproc/solve/tolerance_subdivider.hpp"
 #include "test_paths.hpp"
-#include "vmcl600_setup.hpp"
+#include "text_file.hpp"
+#include "vmc_cut.hpp"
 
 using namespace ncpost;
 
 namespace {
 
-/// A hemisphere of radius 120 mm around W's origin: rings every `step` deg of latitude, points
-/// every `step` deg of longitude.
-std::string dome_cl(int step) {
-  std::string cl = "PARTNO/DOME\nUNITS/MM\nFEDRAT/2000\n";
-  for (int lat = step; lat < 90; lat += step)
-    for (int lon = 0; lon <= 360; lon += step) {
-      const double t = lat * kPi / 180, p = lon * kPi / 180;
-      cl += fmt::format("GOTO/{:.4f},{:.4f},{:.4f}\n", 120 * std::sin(t) * std::cos(p), 120 * std::sin(t) * std::sin(p),
-                        120 * std::cos(t));
-    }
-  return cl + "END\n";
-}
+using test::vmc_dome_cl;
+using Cut = test::VmcCut;
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct Cut {
-  PostSummary summary;
-  std::string failure;
-};
-
-/// Posts `cl` for `model` (nullptr: the nominal machine, no compensation) with `tolerance_mm`
-/// (<= 0: none, one block per CL motion) and executes it on `truth`.
 Cut cut_on(const Machine& m, const comp::MachineModel* model, const comp::MachineModel& truth, const std::string& cl,
            double tolerance_mm) {
-  const Setup setup = test::vmcl600_setup();
-  std::istringstream in(cl);
-  cl::AptReader reader(in, "cut.cls");
-  const comp::MachineModel nominal(m, comp::ErrorParameters{});
-  const ActualSolver actual(model ? *model : nominal, setup);
-  const ExecutedOn on_truth(actual, truth, setup);
-  const Dialect dialect = dialect_named("fanuc");
-  PostOptions options;
-  options.threads = 1;
-  options.verify = true;
-  if (tolerance_mm > 0) {
-    nonlinear::CompensationOptions comp;
-    comp.tolerance_mm = tolerance_mm;
-    options.take_up_reversal = true;
-    options.subdivide = make_tolerance_subdivider(actual, comp, dialect);
-  }
-  Cut c;
-  AtomicFile out("vmc_compensated_cut_test.nc");
-  NcWriter writer(out, dialect, "XYZ");
-  try {
-    c.summary = post_program(reader, "cut.cls", on_truth, writer, options);
-  } catch (const std::exception& e) {
-    c.failure = e.what();
-  }
-  return c;
+  return test::vmc_cut_on(m, model, truth, cl, tolerance_mm, "vmc_compensated_cut_test.nc");
 }
 
 struct Vmc {
@@ -101,7 +44,7 @@ struct Vmc {
 
 TEST_CASE("VMC dome, laser model: >= 10x on the true machine with the default tolerance, within 2 µm", "[vmc]") {
   const Vmc v;
-  const std::string dome = dome_cl(5);  // 17 rings x 73 points = 1241 CL points, blocks of 0.9 to 10.5 mm
+  const std::string dome = vmc_dome_cl(5);  // 17 rings x 73 points = 1241 CL points, blocks of 0.9 to 10.5 mm
   const Cut before = cut_on(v.m, nullptr, v.truth, dome, -1);         // nominal commands, one block per point
   const Cut plain = cut_on(v.m, &v.model, v.truth, dome, -1);         // --tolerance none
   const Cut by_default = cut_on(v.m, &v.model, v.truth, dome, 0.01);  // the CLI's default
@@ -131,7 +74,7 @@ TEST_CASE("VMC dome, laser model: >= 10x on the true machine with the default to
 
 TEST_CASE("VMC volume path, laser model: >= 10x with the default tolerance, within 2 µm with 0.002", "[vmc]") {
   const Vmc v;
-  const std::string path = file_text(test::source("samples/measurements/vmcl600/volume_test.cls"));
+  const std::string path = test::read_text_file(test::source("samples/measurements/vmcl600/volume_test.cls"));
   const Cut before = cut_on(v.m, nullptr, v.truth, path, -1);
   const Cut by_default = cut_on(v.m, &v.model, v.truth, path, 0.01);
   const Cut tight = cut_on(v.m, &v.model, v.truth, path, 0.002);

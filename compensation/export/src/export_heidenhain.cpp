@@ -22,29 +22,34 @@ std::string why_left_out(const ParameterSpec& s) {
   return "error motion of an axis: the control's axis error compensation, not the kinematics description";
 }
 
-/// The index k of +X, +Y, +Z the axis A, B, C turns about nominally; ExportRefusal otherwise.
+/// The index k of X, Y, Z the axis A, B, C turns about nominally (along +e_k or −e_k: an axis
+/// along −e_k is the +e_k axis turned half a turn by its orientation entries); ExportRefusal otherwise.
 int nominal_about(const Axis& a, const Machine& m) {
   const int k = a.letter - 'A';
-  if (k < 0 || k > 2 || !(a.direction - Vec3d::Unit(k)).isZero(1e-12))
+  if (k < 0 || k > 2 || !(a.direction.cwiseAbs() - Vec3d::Unit(k)).isZero(1e-12))
     throw ExportRefusal(ExportRefusal::Source::machine,
                         fmt::format("the Heidenhain entries are written for rotary axes A, B, C that turn the table "
-                                    "right-handed about +X, +Y, +Z for a positive command; '{}' has {} along [{}]",
+                                    "about ±X, ±Y, ±Z; '{}' has {} along [{}]",
                                     m.name, a.letter, fmt::join(a.direction, ", ")));
   return k;
 }
 
 /// The turn about axis i (a) and then axis j (b), i = k+1, j = k+2 (cyclic), taking +e_k to d:
 /// Rot_i(a) Rot_j(b) e_k = (…) with d[i] = sin b, d[j] = −sin a cos b, d[k] = cos a cos b.
+/// For d near −e_k, a is near ±180°; it is taken on the side of `near_deg` (the nominal's), so
+/// that a small tilt is a small change and never a whole turn.
 struct Turn {
   int i = 0, j = 0;
   double a_rad = 0.0, b_rad = 0.0;
 };
-Turn turn_to(const Vec3d& d, int k) {
+Turn turn_to(const Vec3d& d, int k, double near_rad = 0.0) {
   Turn t;
   t.i = (k + 1) % 3;
   t.j = (k + 2) % 3;
   t.b_rad = std::asin(d[t.i]);
   t.a_rad = std::atan2(-d[t.j], d[k]);
+  constexpr double turn = 2.0 * 3.14159265358979323846;
+  t.a_rad += turn * std::round((near_rad - t.a_rad) / turn);
   return t;
 }
 
@@ -53,17 +58,18 @@ char rotary_letter(int c) { return static_cast<char>('A' + c); }
 
 /// Trans p, the turn, MachAxis, the turn undone: one rotary axis and the shift that leads to it.
 void add_axis(std::vector<HeidenhainEntry>& out, char letter, int k, const Vec3d& shift_mm, const Vec3d& nominal_mm,
-              const Turn& t) {
+              const Turn& t, const Turn& nominal) {
   const std::string name(1, letter);
   for (int c = 0; c < 3; ++c)
     out.push_back({"Trans", linear_letter(c), shift_mm[c], nominal_mm[c],
                    c == k ? "position of " + name + " along its line (not measured)"
                           : "position of " + name + " (KinematicsOpt)"});
-  out.push_back({"Trans", rotary_letter(t.i), t.a_rad * kDeg, 0.0, "orientation of " + name + " (KinematicsOpt)"});
-  out.push_back({"Trans", rotary_letter(t.j), t.b_rad * kDeg, 0.0, "orientation of " + name + " (KinematicsOpt)"});
+  const double a = t.a_rad * kDeg, b = t.b_rad * kDeg, na = nominal.a_rad * kDeg, nb = nominal.b_rad * kDeg;
+  out.push_back({"Trans", rotary_letter(t.i), a, na, "orientation of " + name + " (KinematicsOpt)"});
+  out.push_back({"Trans", rotary_letter(t.j), b, nb, "orientation of " + name + " (KinematicsOpt)"});
   out.push_back({"MachAxis", letter, 0.0, 0.0, "rotary axis " + name});
-  out.push_back({"Trans", rotary_letter(t.j), -t.b_rad * kDeg, 0.0, "orientation of " + name + " undone"});
-  out.push_back({"Trans", rotary_letter(t.i), -t.a_rad * kDeg, 0.0, "orientation of " + name + " undone"});
+  out.push_back({"Trans", rotary_letter(t.j), -b, -nb, "orientation of " + name + " undone"});
+  out.push_back({"Trans", rotary_letter(t.i), -a, -na, "orientation of " + name + " undone"});
 }
 
 std::string number(double x) { return fmt::format("{:.9f}", std::abs(x) < 5e-10 ? 0.0 : x); }
@@ -83,9 +89,10 @@ HeidenhainKinematics heidenhain_kinematics(const MachineModel& model) {
   h.axis1 = a1.letter;
   h.axis2 = a2.letter;
   h.entries.push_back({"MachBase", ' ', 0.0, 0.0, "the machine base; the table side follows"});
-  add_axis(h.entries, a1.letter, k1, a1.pivot_mm, n1.pivot_mm, turn_to(a1.direction.normalized(), k1));
+  const Turn t1 = turn_to(n1.direction, k1), t2 = turn_to(n2.direction, k2);
+  add_axis(h.entries, a1.letter, k1, a1.pivot_mm, n1.pivot_mm, turn_to(a1.direction.normalized(), k1, t1.a_rad), t1);
   add_axis(h.entries, a2.letter, k2, a2.pivot_mm - a1.pivot_mm, n2.pivot_mm - n1.pivot_mm,
-           turn_to(a2.direction.normalized(), k2));
+           turn_to(a2.direction.normalized(), k2, t2.a_rad), t2);
   for (int c = 0; c < 3; ++c)
     h.entries.push_back({"Trans", linear_letter(c), -a2.pivot_mm[c], -n2.pivot_mm[c], "back to the table datum"});
   h.held = corrected.applied;

@@ -30,13 +30,16 @@ std::string LaserFunction::kind() const {
 }
 
 double LaserFunction::at(double x) const {
-  if (nodes_mm.empty()) return 0.0;
-  if (x <= nodes_mm.front()) return values.front();
-  if (x >= nodes_mm.back()) return values.back();
+  const bool dense = !curve.nodes_mm.empty();
+  const std::vector<double>& n = dense ? curve.nodes_mm : nodes_mm;
+  const std::vector<double>& v = dense ? curve.values : values;
+  if (n.empty()) return 0.0;
+  if (x <= n.front()) return v.front();
+  if (x >= n.back()) return v.back();
   std::size_t i = 1;
-  while (nodes_mm[i] < x) ++i;
-  const double w = (x - nodes_mm[i - 1]) / (nodes_mm[i] - nodes_mm[i - 1]);
-  return values[i - 1] + w * (values[i] - values[i - 1]);
+  while (n[i] < x) ++i;
+  const double w = (x - n[i - 1]) / (n[i] - n[i - 1]);
+  return v[i - 1] + w * (v[i] - v[i - 1]);
 }
 
 double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y, double& range_about) {

@@ -177,7 +177,7 @@ Fit fit_tables(const Problem& pb, const Eigen::VectorXd& typical, const LaserIde
 
 /// The error functions of every measured axis (straightness to the ISO 230-1 reference line),
 /// the squareness from the straightness slopes, and the reversals, into res.
-void collect_functions(const Problem& pb, const Fit& fit, LaserIdentifyResult& res) {
+void collect_functions(const Problem& pb, const Fit& fit, const LaserIdentifyOptions& o, LaserIdentifyResult& res) {
   std::vector<bool> seen(pb.names.size(), true);
   for (int c : res.rank.pinned) seen[static_cast<std::size_t>(pb.param_of[static_cast<std::size_t>(c)])] = false;
   std::map<std::string, double> slope;  // "EYX" → s
@@ -205,6 +205,14 @@ void collect_functions(const Problem& pb, const Fit& fit, LaserIdentifyResult& r
       }
       std::vector<double> yv = f.values;
       f.polynomial_rms = fit_polynomial_through_home(f.nodes_mm, yv, f.polynomial);
+      // the curve between the targets: chosen by cross-validation where every node was seen
+      f.curve = o.smooth && f.fully_seen()
+                    ? choose_laser_curve(f.nodes_mm, f.values, o.dense_step_mm, o.max_legendre_degree)
+                    : LaserCurve{};
+      if (f.curve.nodes_mm.empty() || f.curve.basis == LaserBasis::linear) {
+        f.curve.nodes_mm = f.nodes_mm;
+        f.curve.values = f.values;
+      }
       res.functions.push_back(f);
     }
   }
@@ -234,8 +242,8 @@ void collect_functions(const Problem& pb, const Fit& fit, LaserIdentifyResult& r
 /// The model as written (functions, squareness, reversal) and the residual it leaves.
 void write_model(const Machine& m, const Problem& pb, LaserIdentifyResult& res) {
   for (const auto& f : res.functions)
-    for (std::size_t i = 0; i < f.nodes_mm.size(); ++i)
-      res.parameters.set(table_parameter_name(f.component, f.axis, f.nodes_mm[i]), f.values[i]);
+    for (std::size_t i = 0; i < f.curve.nodes_mm.size(); ++i)
+      res.parameters.set(table_parameter_name(f.component, f.axis, f.curve.nodes_mm[i]), f.curve.values[i]);
   for (std::size_t i = 0; i < res.squareness.size(); ++i)
     res.parameters.set(res.squareness.names()[i], res.squareness.values()[i]);
   for (std::size_t i = 0; i < res.reversal.size(); ++i)
@@ -289,6 +297,7 @@ void describe_unseen(LaserIdentifyResult& res) {
 std::string LaserIdentifyOptions::validate() const {
   if (!(rank_tolerance > 0.0 && rank_tolerance < 1.0)) return "rank tolerance must be in (0, 1)";
   if (max_iterations < 1) return "at least one iteration";
+  if (!(dense_step_mm > 0.0)) return "the dense table step must be > 0 mm";
   return {};
 }
 
@@ -326,7 +335,7 @@ LaserIdentifyResult identify_laser(const Machine& m, const std::vector<Measureme
   }
   const Eigen::VectorXd typical = order_columns(pb, std::move(cand), res);
   const Fit fit = fit_tables(pb, typical, o, res);
-  collect_functions(pb, fit, res);
+  collect_functions(pb, fit, o, res);
   write_model(m, pb, res);
   describe_unseen(res);
   // ISO 230-2 figures of every positioning line

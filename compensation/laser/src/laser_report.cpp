@@ -143,7 +143,8 @@ std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
     o += fmt::format("  {:<12} {}  A {:7.2f}  R {:6.2f}  B {:6.2f} ({:+6.2f})  E {:7.2f}  M {:7.2f}\n",
                      g.file.substr(g.file.find_last_of('/') + 1), g.axis, g.accuracy_A_um, g.repeatability_R_um,
                      g.reversal_B_um, g.mean_reversal_um, g.systematic_E_um, g.mean_bidirectional_M_um);
-  o += "\nerror functions (tables at every target; ISO 230-1 reference; p1..p3 fitted through home)\n";
+  o += "\nerror functions (values at every target; ISO 230-1 reference; p1..p3 fitted through home; the curve between\n"
+       "targets by leave-one-out cross-validation)\n";
   for (const auto& f : r.functions) {
     double lo = 0, hi = 0, sig = 0;
     for (std::size_t i = 0; i < f.values.size(); ++i) {
@@ -160,6 +161,12 @@ std::string laser_text_report(const Machine& m, const LaserIdentifyResult& r) {
       o += fmt::format(
           "      straightness {:.2f} µm about its least-squares line, slope {:.2f} µrad moved into squareness\n",
           f.iso_straightness_um, f.iso_slope * 1e6);
+    o += f.curve.basis == LaserBasis::linear
+             ? fmt::format("      between targets: linear (leave-one-out rms {:.2f} {})\n",
+                           shown(f, f.curve.cv_linear_rms), unit(f))
+             : fmt::format("      between targets: {} (leave-one-out rms {:.2f} {}; linear {:.2f}), {} nodes\n",
+                           f.curve.label(), shown(f, f.curve.cv_rms), unit(f), shown(f, f.curve.cv_linear_rms),
+                           f.curve.nodes_mm.size());
   }
   o += "\nsquareness (from the straightness slopes)\n";
   for (std::size_t i = 0; i < r.squareness.size(); ++i)

@@ -17,8 +17,10 @@
 // the actual lines of the model (export_machine.hpp corrected_machine), tilts included; the last
 // entry makes the table frame the machine frame at home (the preset holds the workpiece). The
 // linear axes keep their own entries and are not listed. Lengths in mm in ncpost's machine frame M,
-// angles in degrees. The rotary axes must turn the table right-handed about +X, +Y or +Z for a
-// positive command (the machine file's nominal directions); otherwise ExportRefusal.
+// angles in degrees. The rotary axes must turn the table about ±X, ±Y or ±Z (the machine file's
+// nominal directions); otherwise ExportRefusal. An axis along −X, −Y or −Z (e.g. the Haas UMC-750's
+// B along −Y, C along −Z) is the MachAxis turned half a turn by its first orientation entry (nominal
+// 180°; the CHANGE column is the difference from it).
 // KinematicsOpt measures a line's position perpendicular to it (not along it) and its orientation:
 // the entries are marked so. Functions of position (tables, harmonics, coupled terms), squareness and
 // reversal are not held and are listed with their effect (kinematics_left_out.hpp).
@@ -46,7 +48,7 @@ struct HeidenhainKinematics {
 };
 
 /// The entries of `model`'s machine. Throws ExportRefusal when it is not a table-table machine with
-/// rotary axes along +X, +Y or +Z, or the model has no location error.
+/// rotary axes along ±X, ±Y or ±Z, or the model has no location error.
 HeidenhainKinematics heidenhain_kinematics(const MachineModel& model);
 
 /// The table as text: `;` notes (convention, held, left out with effects), then one line per entry

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// One identified component error function of a linear axis (issue 7): a table over the axis
-// position (mm) with linear interpolation, as the error model evaluates `E<c><axis>:t:<pos>`
-// (parameter_name.hpp), its polynomial p1..p3 through home, and for a straightness its ISO 230-1
-// least-squares reference line. Values in mm (X Y Z components) or rad (A B C).
+// One identified component error function of a linear axis (issue 7): its values at the targets
+// and home, the curve the model carries between them (laser_smooth.hpp: the table itself, a cubic
+// spline or a Legendre polynomial, by cross-validation; written as a dense table that the error model
+// evaluates as `E<c><axis>:t:<pos>`, parameter_name.hpp), its polynomial p1..p3 through home, and for
+// a straightness its ISO 230-1 least-squares reference line. Values in mm (X Y Z components) or rad (A B C).
 #include <array>
 #include <string>
 #include <vector>
+
+#include "ncpost/compensation/laser_smooth.hpp"
 
 namespace ncpost::comp {
 
@@ -22,6 +25,7 @@ struct LaserFunction {
   double polynomial_rms = 0.0;                      ///< rms of the table about the polynomial (mm / rad)
   double iso_slope = 0.0;                           ///< straightness: least-squares slope moved into squareness (rad)
   double iso_straightness_um = 0.0;                 ///< straightness: max − min about the least-squares line
+  LaserCurve curve;                                 ///< the model between the nodes (linear: the nodes themselves)
 
   std::string name() const { return std::string{'E', component, axis}; }
   bool is_angle() const { return component >= 'A' && component <= 'C'; }
@@ -29,7 +33,7 @@ struct LaserFunction {
   bool partly_seen() const;
   /// "positioning", "straightness in Y", "roll", "pitch", "yaw" (ISO 230-1 words for a VMC).
   std::string kind() const;
-  /// Interpolated value at x (mm / rad), as the error model does.
+  /// The model's value at x (mm / rad): the curve's dense table interpolated, as the error model does.
   double at(double x_mm) const;
 };
 
