@@ -15,6 +15,9 @@
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/machines/input_error.hpp"
 
+namespace ncpost {
+struct ToolTable;  // ncpost/postproc/read/tool_table.hpp
+}
 namespace ncpost::gcode {
 struct WorkOffsetTable;  // ncpost/postproc/read/gcode/work_offsets.hpp
 }
@@ -209,6 +212,8 @@ struct ReaderOptions {
   std::string power_on, power_on_source;
   /// G-code: the values of the work offsets (`--work-offsets FILE`); null: none given.
   std::shared_ptr<const gcode::WorkOffsetTable> work_offsets;
+  /// Klartext: the tools' diameters (`--tool-table FILE`, CYCL DEF 208); null: none given.
+  std::shared_ptr<const ToolTable> tool_table;
 };
 
 /// A pull-style stream of records; readers stream so memory stays flat in the input size.
