@@ -266,9 +266,9 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
           "M92 Z10: machine coordinates count from the axis's second reference point "
           "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
           "does not give; add [axes.Z] reference2");
-  refused("3 L X+10 FMAX M99\n", "a cycle call without CYCL DEF 200 before it");
-  refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n",
-          "'CYCL DEF 203 UNIVERSAL DRILLING': this cycle");
+  refused("3 L X+10 FMAX M99\n", "a cycle call without a hole cycle (CYCL DEF 200, 203, 207, 208 or 241) before it");
+  refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 203 without Q206");
+  refused("3 CYCL DEF 201 REAMING ~\n  Q200=2 ~\n  Q201=-10\n", "'CYCL DEF 201 REAMING': this cycle");
   refused("3 M89\n", "M89: a modal cycle call");
   refused("3 M114\n", "M114");
   refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");

@@ -13,7 +13,12 @@
 //     W_R_plane = Rz(SPC) Ry(SPB) Rx(SPA), and Q120 .. Q122 are set from `angles` (the test's own
 //     computation of the control's angles); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
-//     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves).
+//     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
+//   - CYCL DEF 200 / 203 / 207 / 208 / 241 with their Q parameters on the `~` lines (set as Q
+//     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (klartext_cycles.hpp:
+//     an end after each of the cycle's moves); M3 / M4 for the direction of 208.
+// `path()` is the tip's path: every block end and, along arcs, points every degree, each flagged
+// whether the move into it cuts (at a feed) or not (FMAX).
 // Anything else throws, so a test cannot pass by skipping a statement.
 #include <functional>
 #include <map>
@@ -22,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "klartext_cycles.hpp"
 #include "nc_executor.hpp"
 
 namespace ncpost::test {
@@ -33,6 +39,12 @@ struct KlartextEnd {
   V3 axis_W = V3::UnitZ();
 };
 
+/// A point of the tip's path and whether the move into it cuts.
+struct KlartextPathPoint {
+  V3 tip_W = V3::Zero();
+  bool cut = false;
+};
+
 /// The control's rotary angles (deg, by letter) for a plane and its SEQ (+1, -1, 0).
 using PlaneAnglesFn = std::function<std::map<char, double>(const M3& W_R_plane, int seq)>;
 
@@ -42,6 +54,10 @@ class KlartextInterpreter {
       : m_(m), job_(job), angles_(std::move(angles)) {
     for (char c : m_.rotary_letters) rot_[c] = 0.0;
   }
+
+  /// The tool's diameter for CYCL DEF 208.
+  void set_tool_diameter(double mm) { tool_diameter_mm_ = mm; }
+  const std::vector<KlartextPathPoint>& path() const { return path_; }
 
   std::vector<KlartextEnd> run(const std::string& text) {
     std::istringstream in(text);
@@ -121,9 +137,20 @@ class KlartextInterpreter {
       return;
     }
     if (s.rfind("PLANE ", 0) == 0) return plane(s);
+    if (s.rfind("CYCL DEF ", 0) == 0) {
+      cycle_ = std::stoi(s.substr(9));
+      return;
+    }
+    if (s == "CYCL CALL") return call_cycle(line);
+    spindle_words(s);
     if (s == "M128" || s == "M129") return set_rtcp(s == "M128");
     static const std::regex m_alone(R"(^M\d+( M\d+)*$)");
     if (std::regex_match(s, m_alone) || s.rfind("END PGM", 0) == 0) return;  // spindle, coolant, end: no position
+    if (s.size() > 1 && s[0] == 'Q' && s.back() == '~') {  // a cycle's parameter line without a comment
+      std::string t = s.substr(0, s.size() - 1);
+      while (!t.empty() && t.back() == ' ') t.pop_back();
+      return statement(t, line);
+    }
     if (s.rfind("L ", 0) == 0) return motion(s, line);
     throw std::runtime_error("the test interpreter does not read: " + s);
   }
@@ -180,7 +207,7 @@ class KlartextInterpreter {
     std::istringstream w(s.substr(2));
     V3 xyz = xyz_;
     std::map<char, double> rot = rot_;
-    bool linear = false;
+    bool linear = false, rapid = false;
     for (std::string word; w >> word;) {
       const bool inc = word.size() > 2 && word[0] == 'I' && std::string("XYZ").find(word[1]) != std::string::npos;
       const char letter = inc ? word[1] : word[0];
@@ -191,7 +218,9 @@ class KlartextInterpreter {
         linear = true;
       } else if (m_.rotary_letters.find(letter) != std::string::npos && !v.empty() && (v[0] == '+' || v[0] == '-')) {
         rot[letter] = value_of(v);
-      }  // F, FMAX, R0, M words: no position
+      } else if (word == "FMAX" || word == "MAX") {  // (FMAX or F MAX)
+        rapid = true;
+      }  // F, R0, M words: no position
     }
     if (!linear && !rtcp_) {  // rotary axes alone: the machine's linear axes stay
       const V3 machine = plane_ ? machine_xyz(tip_W(), rot_) : xyz_;
@@ -203,6 +232,39 @@ class KlartextInterpreter {
       rot_ = rot;
     }
     ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
+    path_.push_back({tip_W(), !rapid});
+    if (s.find(" M99") != std::string::npos) call_cycle(line);
+  }
+
+  /// M3 / M4 / M5 anywhere in a block.
+  void spindle_words(const std::string& s) {
+    std::istringstream w(s);
+    for (std::string word; w >> word;)
+      if (word == "M3" || word == "M4" || word == "M5" || word == "M13" || word == "M14")
+        m3_ = word == "M3" || word == "M13";
+  }
+
+  /// The defined cycle at the tool's X Y (no plane, no M128): its moves from the hole's top.
+  void call_cycle(int line) {
+    if (plane_ || rtcp_) throw std::runtime_error("the test interpreter calls cycles outside planes and M128 only");
+    const V3 top(xyz_.x(), xyz_.y(), q_.at("Q203"));
+    for (const CycleMove& c : cycle_moves(cycle_, q_, m3_, tool_diameter_mm_)) {
+      if (c.arc) {
+        const V3 from = xyz_, centre = top + c.centre;
+        const double a0 = std::atan2(from.y() - centre.y(), from.x() - centre.x());
+        const double r = std::hypot(from.x() - centre.x(), from.y() - centre.y());
+        const int n = std::max(2, static_cast<int>(std::ceil(std::abs(c.sweep_rad) * 180 / M_PI)));
+        for (int i = 1; i <= n; ++i) {
+          const double t = static_cast<double>(i) / n, a = a0 + t * c.sweep_rad;
+          xyz_ = V3(centre.x() + r * std::cos(a), centre.y() + r * std::sin(a),
+                    from.z() + t * (top.z() + c.to.z() - from.z()));
+          path_.push_back({tip_W(), true});
+        }
+      }
+      xyz_ = top + c.to;
+      path_.push_back({tip_W(), c.cut});
+      ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
+    }
   }
 
   const ExecMachine& m_;
@@ -216,6 +278,10 @@ class KlartextInterpreter {
   std::optional<M3> plane_;
   bool rtcp_ = false;
   std::vector<KlartextEnd> ends_;
+  std::vector<KlartextPathPoint> path_;
+  int cycle_ = 0;
+  bool m3_ = true;
+  double tool_diameter_mm_ = 0.0;
 };
 
 }  // namespace ncpost::test

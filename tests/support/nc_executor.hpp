@@ -8,8 +8,8 @@
 //
 // Supported words: G0 G1 G2 G3 (G17 arcs by I J, K for helices not needed), G90 G91, G93 G94,
 // G43.4 / G234 / M428 (tool tip control on: X Y Z are the tip in W) and G49 / M429 (off), G81/G83 (G98/G99
-// return, as straight moves), G80, N, F, comments in ( ), T M S H words (ignored); G10 (an offset
-// setting: no motion, its words ignored).
+// return, as straight moves), G84/G74 (the same, fed back out to the R plane), G80, N, F, comments in ( ),
+// T M S H words (ignored); G10 (an offset setting: no motion, its words ignored).
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -172,7 +172,7 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
   for (char c : rotary_letters) pos[c] = 0.0;
   std::map<char, bool> known;  // axes given so far
   int motion = 0;              // 0 1 2 3
-  bool absolute = true, inverse = false, rtcp = false, cycle = false, return_initial = true;
+  bool absolute = true, inverse = false, rtcp = false, cycle = false, return_initial = true, tap = false;
   double feed = 0.0, cycle_r = 0.0, cycle_z = 0.0;
   std::istringstream lines(text);
   int line_no = 0;
@@ -236,8 +236,8 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
         rtcp = true;
       else if (c == 490)
         rtcp = false;
-      else if (c == 810 || c == 830)
-        cycle = true, starts_cycle = true;
+      else if (c == 810 || c == 830 || c == 840 || c == 740)
+        cycle = true, starts_cycle = true, tap = c == 840 || c == 740;
       else if (c == 800)
         cycle = false;
       else if (c == 980)
@@ -278,9 +278,10 @@ inline std::vector<ExecBlock> read_blocks(const std::string& text, const std::st
       push(ExecBlock::Kind::rapid, pos, over);
       push(ExecBlock::Kind::rapid, over, r_plane);
       push(ExecBlock::Kind::linear, r_plane, bottom);
-      std::map<char, double> back = bottom;
+      if (tap) push(ExecBlock::Kind::linear, bottom, r_plane);  // the thread followed out
+      std::map<char, double> back = tap ? r_plane : bottom;
       back['Z'] = return_initial ? initial_z : cycle_r;
-      push(ExecBlock::Kind::rapid, bottom, back);
+      push(ExecBlock::Kind::rapid, tap ? r_plane : bottom, back);
       pos = back;
       continue;
     }

@@ -79,6 +79,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
                                    machine.name, axis_letters(machine)));
     klartext::ReaderOptions ko;
     ko.allow_unterminated = options.allow_unterminated;
+    ko.tool_table = options.tool_table;
     return std::make_unique<klartext::KlartextReader>(in, name, machine, setup, ko);
   }
   if (sinumerik && word_forward)

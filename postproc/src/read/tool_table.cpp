@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tool tables: TOML, [tools] name = number | { number, length } (tool_table.hpp).
+// Tool tables: TOML, [tools] name = number | { number, length, diameter } (tool_table.hpp).
 #include "ncpost/postproc/read/tool_table.hpp"
 
 #include <fmt/format.h>
@@ -37,7 +37,15 @@ double length_of(const toml::node& n, const std::string& file, const std::string
   return *v;
 }
 
-/// `name = 12` or `name = { number = 12, length = 154.0 }`.
+double diameter_of(const toml::node& n, const std::string& file, const std::string& name) {
+  const std::optional<double> v = n.value<double>();
+  if (!v || !std::isfinite(*v) || *v <= 0.0 || *v > kMaxToolLengthMm)
+    throw InputError(at(file, n.source()), fmt::format("tool \"{}\": expected a diameter in mm, > 0 and at most {:g}",
+                                                       name, kMaxToolLengthMm));
+  return *v;
+}
+
+/// `name = 12` or `name = { number = 12, length = 154.0, diameter = 8.0 }`.
 ToolTableEntry entry_of(const toml::node& n, const std::string& file, const std::string& name) {
   ToolTableEntry e;
   e.line = static_cast<int>(n.source().begin.line);
@@ -47,13 +55,15 @@ ToolTableEntry entry_of(const toml::node& n, const std::string& file, const std:
     return e;
   }
   for (const auto& [key, value] : *t)
-    if (key.str() != "number" && key.str() != "length")
-      throw InputError(at(file, key.source()),
-                       fmt::format("tool \"{}\": unknown key '{}' (expected number, length)", name, key.str()));
+    if (key.str() != "number" && key.str() != "length" && key.str() != "diameter")
+      throw InputError(
+          at(file, key.source()),
+          fmt::format("tool \"{}\": unknown key '{}' (expected number, length, diameter)", name, key.str()));
   const toml::node* number = t->get("number");
   if (!number) throw InputError(at(file, n.source()), fmt::format("tool \"{}\": no number", name));
   e.number = number_of(*number, file, name);
   if (const toml::node* length = t->get("length")) e.length_mm = length_of(*length, file, name);
+  if (const toml::node* diameter = t->get("diameter")) e.diameter_mm = diameter_of(*diameter, file, name);
   return e;
 }
 

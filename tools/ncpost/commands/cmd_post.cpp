@@ -102,6 +102,7 @@ PostRequest post_request_of(const PostArgs& a) {
   r.input_kind = input_kind_named(a.job.input_kind);
   r.reader = reader_options(a.job);
   if (!a.tool_table.empty()) r.tool_table = std::make_shared<const ToolTable>(load_tool_table(a.tool_table));
+  r.reader.tool_table = r.tool_table;  // (Klartext CYCL DEF 208: the tools' diameters)
   r.reader.control = r.dialect.input_control;
   r.reader.tool_offset_writes = r.dialect.input_tool_offsets;
   r.reader.power_on = r.dialect.input_power_on;

@@ -72,6 +72,14 @@ class Cursor {
       digits = digits || p > frac;
     }
     if (!digits) return std::nullopt;
+    if (p + 1 < line_.size() && line_[p] == ',' && is_digit(line_[p + 1])) {  // 50,022: a decimal comma
+      std::size_t end = p + 1;
+      while (end < line_.size() && is_digit(line_[end])) ++end;
+      fail(column(), fmt::format("'{}': a decimal comma is not read; program the number with a decimal point ({})",
+                                 line_.substr(start, end - start),
+                                 std::string(line_.substr(start, p - start)) + "." +
+                                     std::string(line_.substr(p + 1, end - p - 1))));
+    }
     double v = 0.0;
     std::string text(line_.substr(start, p - start));
     if (text.front() == '.') text.insert(text.begin(), '0');

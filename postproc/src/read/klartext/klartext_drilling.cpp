@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 
 namespace ncpost::klartext {
 
@@ -79,6 +80,34 @@ std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double
     c.kind = cl::Cycle::Kind::deep;
     c.peck_mm = c.first_peck_mm = peck;
   }
+  d.surface_mm = *get(203);
+  d.return_mm = std::max(clearance, second);
+  return d;
+}
+
+std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>& q, cl::Location where) {
+  const auto get = [&q](int n) -> std::optional<double> {
+    const auto it = q.find(n);
+    return it == q.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  for (int n : {200, 201, 239, 203, 204})
+    if (!get(n)) return fmt::format("CYCL DEF 207 without Q{} (expected Q200 Q201 Q239 Q203 Q204)", n);
+  const double clearance = *get(200), depth = *get(201), pitch = *get(239), second = *get(204);
+  if (!(clearance > 0.0)) return fmt::format("CYCL DEF 207: Q200={} (the set-up clearance must be > 0)", clearance);
+  if (!(depth < 0.0)) return fmt::format("CYCL DEF 207: Q201={} (the thread's depth must be < 0)", depth);
+  if (pitch == 0.0 || std::abs(pitch) > 100.0)
+    return fmt::format("CYCL DEF 207: Q239={} (the pitch in mm: + right-hand, - left-hand)", pitch);
+  DrillingCycle d;
+  cl::Cycle& c = d.cycle;
+  c.where = where;
+  c.kind = cl::Cycle::Kind::tap;
+  c.kind_word = "CYCL DEF 207";
+  c.text = "CYCL DEF 207 RIGID TAPPING";
+  c.depth_mm = -depth;
+  c.rapid_to_mm = clearance;
+  if (second > clearance) c.retract_mm = second;
+  c.pitch_mm = std::abs(pitch);
+  c.left_hand = pitch < 0.0;
   d.surface_mm = *get(203);
   d.return_mm = std::max(clearance, second);
   return d;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// CYCL DEF 200 DRILLING (TNC user manual, "Cycles: drilling") as a cl::Cycle: its Q parameters,
+// CYCL DEF 200 DRILLING and 207 RIGID TAPPING (TNC user manual, "Cycles: drilling") as a cl::Cycle: its Q parameters,
 // written on the `~` continuation lines (`Q200=+2 ;SET-UP CLEARANCE ~`).
 //   Q200 set-up clearance above the surface (> 0), Q201 depth below it (< 0), Q206 plunging feed
 //   (mm/min), Q202 plunging depth (the hole in one plunge when >= the depth, else pecks with a
@@ -36,5 +36,13 @@ struct DrillingCycle {
 
 /// CYCL DEF 200 from its parameters, or why not (a sentence naming the parameter).
 std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double>& q, cl::Location where);
+
+/// CYCL DEF 207 RIGID TAPPING (the TNC's tapping without a floating holder): Q200 set-up
+/// clearance, Q201 depth of the thread (< 0), Q239 pitch (mm; > 0 right-hand, the spindle M3 in,
+/// < 0 left-hand, M4), Q203 surface, Q204 2nd set-up clearance, Q336 the spindle's orientation
+/// angle (where the spindle stops: no motion). The tool goes at FMAX to the set-up clearance,
+/// taps to the depth at the feed of pitch x speed, reverses the spindle, comes back to the set-up
+/// clearance at the same feed, and goes at FMAX to the 2nd set-up clearance (cl::Cycle::Kind::tap).
+std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>& q, cl::Location where);
 
 }  // namespace ncpost::klartext

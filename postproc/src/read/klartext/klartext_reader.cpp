@@ -20,10 +20,12 @@
 #include "ncpost/postproc/read/klartext/klartext_arc.hpp"
 #include "ncpost/postproc/read/klartext/klartext_block.hpp"
 #include "ncpost/postproc/read/line_source.hpp"
+#include "ncpost/postproc/read/tool_table.hpp"
 
 #include "read/klartext/klartext_cycle_def.hpp"
 #include "read/klartext/klartext_drilling.hpp"
 #include "read/klartext/klartext_flow.hpp"
+#include "read/klartext/klartext_hole_path.hpp"
 #include "read/klartext/klartext_plane.hpp"
 #include "read/klartext/klartext_q.hpp"
 #include "read/klartext/klartext_refusals.hpp"
@@ -110,7 +112,10 @@ struct KlartextReader::State {
   std::set<std::string> noticed;
 
   std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
-  std::optional<DrillingCycle> drilling;                  ///< CYCL DEF 200, for CYCL CALL and M99
+  std::optional<DrillingCycle> drilling;                  ///< CYCL DEF 200 / 207, for CYCL CALL and M99
+  std::optional<ExpandedCycle> expanded;                  ///< CYCL DEF 203 / 208 / 241, for CYCL CALL and M99
+  std::string tool_called;                                ///< the last TOOL CALL's tool as written ("" none)
+  double delta_radius_mm = 0.0;                           ///< its DR
   std::optional<double> preset_number;                    ///< CYCL DEF 247 Q339
   int shift_in_plane = 0;  ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
 
@@ -602,6 +607,9 @@ struct KlartextReader::State {
       }
     }
     delta_radius = dr_nonzero;  // each TOOL CALL sets its own deltas
+    delta_radius_mm = 0.0;
+    if (const Word* dr = b.find("DR"); dr && dr->value) delta_radius_mm = *dr->value;
+    if (tool || name) tool_called = name ? fmt::format("\"{}\"", *name) : std::to_string(*tool);
     if (tool && name) fail(b.column, "TOOL CALL with both a number and a name: call the tool by one of them");
     if (tool || name) {
       cl::ToolChange change;
@@ -644,8 +652,8 @@ struct KlartextReader::State {
                   "tolerance is its own (--tolerance)");
       return;
     }
-    if (c.number == 200 && c.part < 0) {
-      define_drilling(b);
+    if ((c.number == 200 || c.number == 203 || c.number == 207 || c.number == 208 || c.number == 241) && c.part < 0) {
+      define_hole_cycle(b, c.number);
       return;
     }
     if ((c.number == 332 || c.number == 392) && c.part < 0) {  // DMG's TUNING / ATC: servo dynamics, no motion
@@ -705,8 +713,8 @@ struct KlartextReader::State {
                             *number));
   }
 
-  /// CYCL DEF 200 with its Q parameters on the '~' lines.
-  void define_drilling(const Block& b) {
+  /// CYCL DEF 200 / 203 / 207 / 208 / 241 with its Q parameters on the '~' lines.
+  void define_hole_cycle(const Block& b, int number) {
     std::map<int, double> q;
     for (const auto& [text, line] : continuation) {
       const std::optional<QAssignment> a = q_assignment(text);
@@ -722,27 +730,45 @@ struct KlartextReader::State {
                          echo_of(text));
       q[a->number] = *value;
     }
-    auto d = drilling_200(q, at(b.column));
-    if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
-    drilling = std::get<DrillingCycle>(d);
+    drilling.reset();
+    expanded.reset();
+    if (number == 200 || number == 207) {
+      auto d = number == 200 ? drilling_200(q, at(b.column)) : tapping_207(q, at(b.column));
+      if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
+      drilling = std::get<DrillingCycle>(d);
+      return;
+    }
+    auto e = expanded_cycle(number, q);
+    if (const std::string* why = std::get_if<std::string>(&e)) fail(b.column, *why);
+    expanded = std::get<ExpandedCycle>(e);
+    for (const std::string& note : expanded->notes) notice_once(note.substr(0, 16), b.column, note);
   }
 
-  /// CYCL CALL or M99: one hole of CYCL DEF 200 where the tool stands (X Y), its top at Q203.
+  /// CYCL CALL or M99: one hole of the hole cycle where the tool stands (X Y), its top at Q203.
   void call_cycle(cl::Location where, int column) {
-    if (!drilling) fail(column, "a cycle call without CYCL DEF 200 before it (other cycles are not read)");
+    if (!drilling && !expanded)
+      fail(column,
+           "a cycle call without a hole cycle (CYCL DEF 200, 203, 207, 208 or 241) before it (other cycles are not "
+           "read)");
     if (rtcp)
       fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
     if (!settled || !known[0] || !known[1] || !known[2])
       fail(column, "a cycle call before X, Y and Z are programmed: the hole's position is not known");
     check_no_stale_shift(column);
     ProgramPoint top = pos;  // (in a plane: its coordinates, the datum shift in its origin)
-    top[2] = drilling->surface_mm + (plane ? 0.0 : datum_shift_mm.z());
+    top[2] = (drilling ? drilling->surface_mm : expanded->surface_mm) + (plane ? 0.0 : datum_shift_mm.z());
     cl::Motion hole = locate(top, tip_mode(), where);
     ProgramPoint below = top;
     below[2] -= 1.0;
     if ((hole.point.tip_mm - tip_of(below, tip_mode()) - hole.point.axis).norm() > 1e-6)
       fail(column, plane ? "a cycle call in a tilted plane with the rotary axes not at the plane's angles is not read"
                          : "a cycle call where machine Z is not the tool axis (a tilted head) is not read");
+    if (expanded) {
+      run_hole_steps(top, where, column);
+      pos[2] = top[2] + expanded->return_mm;
+      return;
+    }
+    if (drilling->cycle.kind == cl::Cycle::Kind::tap) check_tap_spindle(column);
     cl::Cycle c = drilling->cycle;
     c.where = where;
     emit(c);
@@ -751,6 +777,63 @@ struct KlartextReader::State {
     off.where = where;
     emit(off);
     pos[2] = top[2] + drilling->return_mm;  // where the TNC leaves the tool
+  }
+
+  /// CYCL DEF 207 taps with the spindle turning the thread's way (Q239 > 0: M3, < 0: M4).
+  void check_tap_spindle(int column) const {
+    const bool left = drilling->cycle.left_hand;
+    if (spindle == cl::Spindle::Direction::off || !(rpm > 0.0))
+      fail(column,
+           "CYCL DEF 207 called with the spindle stopped: the tapping feed is pitch x speed (program M3 "
+           "with S before the call)");
+    if ((spindle == cl::Spindle::Direction::ccw) != left)
+      fail(column, fmt::format("CYCL DEF 207 with a {}-hand thread (Q239) called with the spindle {}: program {}",
+                               left ? "left" : "right", left ? "M3" : "M4", left ? "M4" : "M3"));
+  }
+
+  /// The diameter of the tool called (the tool table's, plus twice DR), if known.
+  std::optional<double> tool_diameter_mm() const {
+    if (!options.tool_table || tool_called.empty()) return std::nullopt;
+    std::optional<double> d;
+    for (const auto& [name, e] : options.tool_table->by_name)
+      if (tool_called == (tool_called.front() == '"' ? fmt::format("\"{}\"", name) : std::to_string(e.number)))
+        d = e.diameter_mm;
+    if (d) *d += 2.0 * delta_radius_mm;
+    return d;
+  }
+
+  /// One hole of CYCL DEF 203 / 208 / 241: its steps from the hole's top `top` (klartext_hole_path.hpp).
+  void run_hole_steps(const ProgramPoint& top, cl::Location where, int column) {
+    const auto steps = hole_steps(*expanded, HoleContext{spindle, rpm, tool_diameter_mm(), tool_called});
+    if (const std::string* why = std::get_if<std::string>(&steps)) fail(column, *why);
+    std::optional<double> feed_now;
+    const auto set_feed = [&](double f) {
+      if (feed_now != f) emit(cl::Feed{where, f, false});
+      feed_now = f;
+    };
+    for (const HoleStep& s : std::get<std::vector<HoleStep>>(steps)) {
+      ProgramPoint p = top;
+      p[0] += s.dx;
+      p[1] += s.dy;
+      p[2] += s.z;
+      using K = HoleStep::Kind;
+      if (s.kind == K::rapid || s.kind == K::feed) {
+        if (s.kind == K::feed) set_feed(s.feed_mm_min);
+        emit_motion(p, where, s.kind == K::rapid, std::nullopt);
+        pos = p;
+      } else if (s.kind == K::arc) {
+        set_feed(s.feed_mm_min);
+        const ArcResult r = arc_polar(pos, Eigen::Vector2d(top[0] + s.cx, top[1] + s.cy), s.sweep_rad, p[2]);
+        if (!r.arc) fail(column, fmt::format("CYCL DEF {}: {}", expanded->number, r.error));
+        arc_motion(*r.arc, where, false, std::nullopt, column);
+        pos = r.arc->end;
+      } else if (s.kind == K::dwell) {
+        emit(cl::Dwell{where, s.dwell_s});
+      } else {
+        emit(cl::Spindle{where, s.kind == K::spindle ? s.direction : spindle, s.kind == K::spindle ? s.rpm : rpm});
+      }
+    }
+    if (feed && feed_now) emit(cl::Feed{where, *feed, false});  // the program's F again
   }
 
   // FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS [REFPNT TIP-TIP]
@@ -1180,18 +1263,18 @@ struct KlartextReader::State {
       r = arc_polar(pos, *centre, sweep, end[2]);
     }
     if (!r.arc) fail(b.column, fmt::format("{}: {}", s, r.error));
-    arc_motion(*r.arc, where, bw.rapid, block_feed, b);
+    arc_motion(*r.arc, where, bw.rapid, block_feed, b.column);
     pos = r.arc->end;
     note_programmed(bw.programmed, bw.rapid);
     tangent = end_tangent(*r.arc);
   }
 
   /// The arc as a cl::Circle and its end (one turn at most), else as points.
-  void arc_motion(const ArcMove& a, cl::Location where, bool rapid, std::optional<double> block_feed, const Block& b) {
+  void arc_motion(const ArcMove& a, cl::Location where, bool rapid, std::optional<double> block_feed, int column) {
     const long n = gcode::arc_segments(a, options.arc_chord_tolerance_mm);
     if (n > gcode::kMaxArcSegments)
-      fail(b.column, fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
-                                 gcode::kMaxArcSegments, options.arc_chord_tolerance_mm));
+      fail(column, fmt::format("the arc would need more than {} points at a chord tolerance of {} mm",
+                               gcode::kMaxArcSegments, options.arc_chord_tolerance_mm));
     const bool circle =
         std::abs(a.sweep_rad) <= 2.0 * kPi + 1e-9 && std::abs(a.radius_start_mm - a.radius_end_mm) < 5e-4;
     if (circle) {

@@ -20,7 +20,7 @@ struct Refusal {
 constexpr Refusal kStatements[] = {
     {"CYCL DEF",
      "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
-     "shift, 32 tolerance and 200 drilling are)",
+     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 203, 207, 208 and 241 are)",
      kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
@@ -44,7 +44,9 @@ struct MRefusal {
 };
 
 constexpr MRefusal kMFunctions[] = {
-    {89, "a modal cycle call: cycles are not read; post the CL data"},
+    {89,
+     "a modal cycle call (the cycle after every positioning block) is not read; call the cycle with M99 on each "
+     "hole's block"},
     {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
     {97, "a small contour step (radius compensation) is not read"},
     {101, "automatic tool change with a replacement tool is not read"},

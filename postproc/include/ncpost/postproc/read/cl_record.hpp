@@ -16,6 +16,9 @@
 #include "ncpost/kinematics/machine.hpp"
 #include "ncpost/machines/input_error.hpp"
 
+namespace ncpost {
+struct ToolTable;  // ncpost/postproc/read/tool_table.hpp
+}
 namespace ncpost::gcode {
 struct WorkOffsetTable;  // ncpost/postproc/read/gcode/work_offsets.hpp
 }
@@ -243,6 +246,8 @@ struct ReaderOptions {
   /// G-code: where `M98 P<n>` and `o<name> call` look for a subprogram the program's file does not
   /// hold, before the program's own directory (--subprogram-dir; "" none).
   std::string subprogram_dir;
+  /// Klartext: the tools' diameters (`--tool-table FILE`, CYCL DEF 208); null: none given.
+  std::shared_ptr<const ToolTable> tool_table;
 };
 
 /// A pull-style stream of records; readers stream so memory stays flat in the input size.

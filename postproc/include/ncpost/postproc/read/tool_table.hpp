@@ -19,8 +19,9 @@ namespace ncpost {
 
 struct ToolTableEntry {
   int number = 0;
-  std::optional<double> length_mm;  ///< the tool's length, where the file gives it
-  int line = 0;                     ///< where the file gives it
+  std::optional<double> length_mm;    ///< the tool's length, where the file gives it
+  std::optional<double> diameter_mm;  ///< the tool's diameter, where the file gives it (Klartext CYCL DEF 208)
+  int line = 0;                       ///< where the file gives it
 };
 
 struct ToolTable {

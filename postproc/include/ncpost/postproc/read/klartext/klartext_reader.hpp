@@ -20,8 +20,10 @@
 // along the tool axis: the machine Z, on a machine without a tilting head), M91 / M92 beside X Y Z
 // (machine coordinates from the machine file's reference / reference2), STOP, and the paths
 // CC, C, CR, CT, CP (klartext_arc.hpp): a cl::Circle and its end motion for a single-turn arc,
-// else points within `arc_chord_tolerance_mm`; CYCL DEF 7 (datum shift), 32 (noted), 200 (drilling,
-// klartext_drilling.hpp) called by CYCL CALL or M99; PLANE RESET STAY (noted).
+// else points within `arc_chord_tolerance_mm`; CYCL DEF 7 (datum shift), 32 (noted), 200 (drilling)
+// and 207 (rigid tapping) as cl::Cycle (klartext_drilling.hpp), 203 (universal drilling), 208 (bore
+// milling) and 241 (single-lip deep-hole drilling) expanded into motions (klartext_hole_path.hpp),
+// called by CYCL CALL or M99; PLANE RESET STAY (noted).
 // Refused by name with file:line:column and what to do: everything else (other cycles, PLANE, RND, CHF,
 // LP, APPR/DEP, Q parameters, FN, LBL / CALL, M91 / M92 without the machine file's reference data,
 // M89, M114, M116, M94, DL, INCH programs, FUNCTION TCPM with AXIS SPAT / F CONT / REFPNT other than
@@ -46,6 +48,7 @@ struct ReaderOptions {
   bool block_skip = true;                ///< blocks that start with '/' are left out
   double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of arcs expanded into points
   bool check_limits = true;              ///< the machine's axis limits (Infeasible beyond)
+  std::shared_ptr<const ToolTable> tool_table;  ///< the tools' diameters (CYCL DEF 208); null: none
 };
 
 class KlartextReader final : public cl::Reader {

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Heidenhain hole cycles 203, 207, 208 and 241 (issue 28) re-posted for a Fanuc control and
+// both sides executed independently: the Klartext input by the tests' interpreter
+// (klartext_interpreter.hpp, the cycles' runs in klartext_cycles.hpp), the written program by
+// nc_executor.hpp. Every end of an input move (each move of each cycle) must be reached by an
+// output block end, in order, within 1 µm; every output feed block, sampled, must lie within the
+// tolerance the output's header states of the input's cutting path.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+#include "input_output_tips.hpp"
+#include "klartext_interpreter.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
+#include "ncpost/postproc/post_request.hpp"
+#include "ncpost/postproc/read/tool_table.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
+#include "polyline_distance.hpp"
+#include "test_paths.hpp"
+#include "vmcl600_setup.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+const std::string kMachine = "machines/vmcl600.toml";
+
+/// The programs call "DRILL8" by name; the fanuc dialect takes its number from the table.
+std::string post_cycles(const std::string& text, const std::string& tool_table = "[tools]\nDRILL8 = 8\n") {
+  PostRequest r;
+  r.machine = serial_post_machine(load_machine(test::source(kMachine)));
+  r.setup = test::vmcl600_setup();
+  r.dialect = dialect_named("fanuc");
+  r.threads = 1;
+  r.input_name = "cycles.h";
+  r.tool_table = std::make_shared<const ToolTable>(parse_tool_table(tool_table, "tools.toml"));
+  r.reader.tool_table = r.tool_table;
+  std::istringstream in(text);
+  std::ostringstream out;
+  post(in, out, r);
+  return out.str();
+}
+
+/// The input's ends reached in order within 1 µm, and the output's feed blocks on the input's
+/// cutting path within the stated tolerance. Returns the number of input ends.
+std::size_t check_cycles(const std::string& text, const std::string& nc, double tool_diameter_mm = 0.0) {
+  INFO(nc);
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::vmcl600_setup().workpiece_origin_mm;
+  job.tool_length_mm = test::vmcl600_setup().tool_length_mm;
+  const test::ExecMachine m = test::ExecMachine::load(test::source(kMachine));
+  test::KlartextInterpreter input(m, job, {});
+  input.set_tool_diameter(tool_diameter_mm);
+  const std::vector<test::KlartextEnd> want = input.run(text);
+  const test::Executor out(test::source(kMachine), job, nc);
+  std::size_t next = 0;
+  for (const test::KlartextEnd& e : want) {
+    INFO("input line " << e.line << " tip " << e.tip_W.transpose());
+    while (next < out.blocks.size() && (out.at(out.blocks[next], 1.0).tip_W - e.tip_W).norm() > 1e-3) ++next;
+    REQUIRE(next < out.blocks.size());
+  }
+  const double tolerance_mm = test::stated_tolerance_mm(nc, 1e-3) + 1e-6;
+  const auto& path = input.path();
+  for (const test::ExecBlock& b : out.blocks) {
+    if (b.kind == test::ExecBlock::Kind::rapid) continue;
+    for (int i = 1; i < 16; ++i) {
+      const Vec3d p = out.at(b, i / 16.0).tip_W;
+      double best = 1e9;
+      for (std::size_t k = 1; k < path.size(); ++k)
+        if (path[k].cut) best = std::min(best, test::segment_distance_mm(p, path[k - 1].tip_W, path[k].tip_W));
+      INFO("output line " << b.line << ": " << b.text << " at " << i << "/16");
+      REQUIRE(best <= tolerance_mm);
+    }
+  }
+  return want.size();
+}
+
+std::string refusal(const std::string& text, const std::string& tool_table = "[tools]\nDRILL8 = 8\n") {
+  try {
+    post_cycles(text, tool_table);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(posted)";
+}
+
+const std::string kHead =
+    "0 BEGIN PGM CYCLES MM\n"
+    "1 TOOL CALL \"DRILL8\" Z S2000 DL+0 DR+0\n"
+    "2 L X+0 Y+0 Z+50 R0 FMAX M3\n";
+
+}  // namespace
+
+TEST_CASE("klartext CYCL DEF 203: shrinking pecks, chip breaks and retractions where the cycle run puts them") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 203 UNIVERSAL DRILLING ~\n"
+                           "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-12 ;DEPTH ~\n"
+                           "  Q206=+150 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q202=+4 ;PLUNGING DEPTH ~\n"
+                           "  Q210=+0 ;DWELL TIME AT TOP ~\n"
+                           "  Q203=+1 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+20 ;2ND SET-UP CLEARANCE ~\n"
+                           "  Q212=+1 ;DECREMENT ~\n"
+                           "  Q213=+2 ;BREAKS ~\n"
+                           "  Q205=+2 ;MIN. PLUNGING DEPTH ~\n"
+                           "  Q211=+0.5 ;DWELL TIME AT DEPTH ~\n"
+                           "  Q208=+2000 ;RETRACTION FEED RATE ~\n"
+                           "  Q256=+0.2 ;DIST FOR CHIP BRKNG\n"
+                           "4 L X+30 Y+20 R0 FMAX M99\n"
+                           "5 L X+60 R0 FMAX M99\n"
+                           "6 L Z+50 FMAX M5\n"
+                           "7 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  // plunges of 4, 3, 2, 2, 1 (the last to the depth): breaks after the 1st and 2nd, out after the
+  // 3rd, breaks after the 4th ... per hole: 1 + 5 plunges + 2 breaks + 2 (out, back) + 1 break + out + 2nd
+  CHECK(check_cycles(text, nc) >= 2 * 12);
+  CHECK(nc.find("G4") != std::string::npos);  // the dwell at the depth
+  CHECK(nc.find("F2000.") != std::string::npos);
+}
+
+TEST_CASE("klartext CYCL DEF 207: a rigid tap at pitch x speed, refused against the spindle's direction") {
+  const std::string cycle =
+      "3 CYCL DEF 207 RIGID TAPPING NEW ~\n"
+      "  Q200=+3 ;SET-UP CLEARANCE ~\n"
+      "  Q201=-13 ;DEPTH OF THREAD ~\n"
+      "  Q239=+1.25 ;THREAD PITCH ~\n"
+      "  Q203=+0 ;SURFACE COORDINATE ~\n"
+      "  Q204=+28 ;2ND SET-UP CLEARANCE\n"
+      "4 L X+10 Y-15 R0 FMAX M99\n"
+      "5 L Z+50 FMAX M5\n"
+      "6 END PGM CYCLES MM\n";
+  const std::string text = kHead + cycle;
+  const std::string nc = post_cycles(text);
+  check_cycles(text, nc);
+  CHECK(nc.find("G84") != std::string::npos);
+  CHECK(nc.find("F2500.") != std::string::npos);  // 1.25 mm x 2000 rpm
+  std::string m4 = text;
+  m4.replace(m4.find("FMAX M3"), 7, "FMAX M4");
+  CHECK_THAT(refusal(m4), Catch::Contains("cycles.h:10:") && Catch::Contains("CYCL DEF 207 with a right-hand thread") &&
+                              Catch::Contains("program M3"));
+}
+
+TEST_CASE(
+    "klartext CYCL DEF 208: the helix on the bore's circle less the tool, with the diameter from the tool table") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 208 BORE MILLING ~\n"
+                           "  Q200=+1 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-6 ;DEPTH ~\n"
+                           "  Q206=+600 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q334=+1.5 ;PLUNGING DEPTH ~\n"
+                           "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+30 ;2ND SET-UP CLEARANCE ~\n"
+                           "  Q335=+20 ;NOMINAL DIAMETER ~\n"
+                           "  Q342=+0 ;ROUGHING DIAMETER ~\n"
+                           "  Q351=+1 ;CLIMB OR UP-CUT\n"
+                           "4 L X+40 Y+30 R0 FMAX M99\n"
+                           "5 L Z+50 FMAX M5\n"
+                           "6 END PGM CYCLES MM\n";
+  const std::string table = "[tools]\nDRILL8 = { number = 8, diameter = 8.0 }\n";
+  const std::string nc = post_cycles(text, table);
+  check_cycles(text, nc, 8.0);
+  // climb milling with M3 inside a bore runs counter-clockwise: G3 arcs (r = (20 - 8) / 2 = 6)
+  CHECK(nc.find("G3") != std::string::npos);
+  CHECK(nc.find("G2 ") == std::string::npos);
+  // a DR in the TOOL CALL widens the tool: the helix's radius shrinks by it
+  std::string wider = text;
+  wider.replace(wider.find("DR+0"), 4, "DR+1");
+  check_cycles(wider, post_cycles(wider, table), 10.0);
+  CHECK_THAT(refusal(text), Catch::Contains("cycles.h:14:") &&
+                                Catch::Contains("CYCL DEF 208 with the tool \"DRILL8\"") &&
+                                Catch::Contains("--tool-table"));
+}
+
+TEST_CASE("klartext CYCL DEF 241: pre-positioning into the pilot hole, its speeds in and out, the drilling speed") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 241 SINGLE-LIP DEEP-HOLE DRILLING ~\n"
+                           "  Q200=+3 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-60 ;DEPTH ~\n"
+                           "  Q206=+80 ;FEED RATE FOR PLUNGING ~\n"
+                           "  Q211=+0 ;DWELL TIME AT BOTTOM ~\n"
+                           "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+30 ;2ND SET-UP CLEARANCE ~\n"
+                           "  Q379=+15 ;STARTING POINT ~\n"
+                           "  Q253=+50 ;F PRE-POSITIONING ~\n"
+                           "  Q208=+300 ;RETRACTION FEED TIME ~\n"
+                           "  Q426=+4 ;DIR. OF SPINDLE ROT. ~\n"
+                           "  Q427=+50 ;ROT. SPEED INFEED/OUT ~\n"
+                           "  Q428=+1790 ;DRILLING SPEED ~\n"
+                           "  Q429=+7 ;COOLANT ON ~\n"
+                           "  Q430=+7 ;COOLANT OFF ~\n"
+                           "  Q435=+0 ;DWELL DEPTH\n"
+                           "4 L X-20 Y+7 R0 FMAX M99\n"
+                           "5 L Z+50 FMAX M5\n"
+                           "6 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  check_cycles(text, nc);
+  // in at 50 rpm counter-clockwise, the drilling at 1790 rpm clockwise (M3 before the cycle), out at 50 again
+  const auto in = nc.find("S50 M4"), drill = nc.find("S1790 M3"), out = nc.rfind("S50 M4");
+  CHECK(in != std::string::npos);
+  CHECK(drill != std::string::npos);
+  CHECK((in < drill && drill < out));
+  std::string dwell_depth = text;
+  dwell_depth.replace(dwell_depth.find("Q435=+0"), 7, "Q435=+5");
+  CHECK_THAT(refusal(dwell_depth), Catch::Contains("cycles.h:4:") && Catch::Contains("CYCL DEF 241: Q435=5"));
+}
+
+TEST_CASE("klartext: a decimal comma (X+50,022, older TNC programs) is refused naming the number") {
+  const std::string text = kHead + "3 L X+50,022 Y+80 R0 FMAX\n4 END PGM CYCLES MM\n";
+  CHECK_THAT(refusal(text), Catch::Contains("cycles.h:4:") && Catch::Contains("'50,022': a decimal comma") &&
+                                Catch::Contains("(50.022)"));
+}
