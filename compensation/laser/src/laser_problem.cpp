@@ -32,30 +32,32 @@ void fill_approach(MeasurementSet& set) {
   }
 }
 
-std::vector<int> Problem::support(int set_index, const MeasurementRow& row) const {
-  std::vector<int> out;
+std::vector<Problem::Support> Problem::support(int set_index, const MeasurementRow& row) const {
+  std::vector<Support> out;
+  auto fitted = [&](int p) { return column_of[static_cast<std::size_t>(p)] >= 0 ? p : -1; };
   for (int a = 0; a < 3; ++a) {
     const auto& x = nodes[static_cast<std::size_t>(a)];
     if (x.empty()) continue;
     const double q = row.command[a];
-    std::vector<std::size_t> idx;
-    if (q <= x.front())
-      idx = {0};
-    else if (q >= x.back())
-      idx = {x.size() - 1};
-    else {
-      std::size_t i = 1;
+    std::size_t i = 1;
+    double w = 1.0;  // weight of node i (node i − 1 has 1 − w)
+    if (q <= x.front()) {
+      i = 0;
+    } else if (q >= x.back()) {
+      i = x.size() - 1;
+    } else {
       while (x[i] < q) ++i;
-      idx = {i - 1, i};
+      w = (q - x[i - 1]) / (x[i] - x[i - 1]);
     }
-    for (int c = 0; c < 6; ++c)
-      for (std::size_t i : idx) {
-        const int p = node_param[static_cast<std::size_t>(a)][static_cast<std::size_t>(c)][i];
-        if (column_of[static_cast<std::size_t>(p)] >= 0) out.push_back(p);
-      }
+    for (int c = 0; c < 6; ++c) {
+      const auto& to = node_param[static_cast<std::size_t>(a)][static_cast<std::size_t>(c)];
+      Support g{{fitted(to[i]), -1}, {w, 0.0}};
+      if (w < 1.0) g = {{fitted(to[i]), fitted(to[i - 1])}, {w, 1.0 - w}};
+      if (g.index[0] >= 0 || g.index[1] >= 0) out.push_back(g);
+    }
   }
   const int rev = reversal_param[static_cast<std::size_t>(moving[static_cast<std::size_t>(set_index)])];
-  if (rev >= 0) out.push_back(rev);
+  if (rev >= 0 && column_of[static_cast<std::size_t>(rev)] >= 0) out.push_back({{rev, -1}, {1.0, 0.0}});
   return out;
 }
 
@@ -75,6 +77,30 @@ Eigen::VectorXd Problem::residual(const std::vector<double>& values) const {
   return r;
 }
 
+double Problem::value_derivative(int set_index, const MeasurementRow& row, const Support& g,
+                                 std::vector<double>& values) const {
+  // the reading depends on a table through its value at the row's position only: the fitted nodes
+  // around it moved by h move that value by h·(their weights), one pair of readings for both nodes
+  double moved = 0.0, h = 0.0;
+  std::array<double, 2> keep{};
+  for (int n = 0; n < 2; ++n) {
+    if (g.index[n] < 0) continue;
+    keep[n] = values[static_cast<std::size_t>(g.index[n])];
+    moved += g.weight[n];
+    h = layout.spec(g.index[n]).is_angle() ? 1e-5 : 1e-3;
+  }
+  if (moved <= 0.0) return 0.0;
+  double reading[2] = {0.0, 0.0};
+  for (int side = 0; side < 2; ++side) {
+    for (int n = 0; n < 2; ++n)
+      if (g.index[n] >= 0) values[static_cast<std::size_t>(g.index[n])] = keep[n] + (side == 0 ? h : -h);
+    reading[side] = raw(set_index, row, values);
+  }
+  for (int n = 0; n < 2; ++n)
+    if (g.index[n] >= 0) values[static_cast<std::size_t>(g.index[n])] = keep[n];
+  return (reading[0] - reading[1]) / (2.0 * h * moved);
+}
+
 Eigen::MatrixXd Problem::jacobian(const std::vector<double>& values) const {
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, static_cast<Eigen::Index>(param_of.size()));
   std::vector<double> v = values;
@@ -83,15 +109,10 @@ Eigen::MatrixXd Problem::jacobian(const std::vector<double>& values) const {
     const MeasurementSet& set = sets[s];
     std::map<int, Eigen::Index> first_of_run;
     for (const auto& row : set.rows) {
-      for (int p : support(static_cast<int>(s), row)) {
-        const double h = layout.spec(p).is_angle() ? 1e-5 : 1e-3;
-        const double keep = v[static_cast<std::size_t>(p)];
-        v[static_cast<std::size_t>(p)] = keep + h;
-        const double up = raw(static_cast<int>(s), row, v);
-        v[static_cast<std::size_t>(p)] = keep - h;
-        const double down = raw(static_cast<int>(s), row, v);
-        v[static_cast<std::size_t>(p)] = keep;
-        J(k, column_of[static_cast<std::size_t>(p)]) = (up - down) / (2.0 * h);
+      for (const Support& g : support(static_cast<int>(s), row)) {
+        const double d_value = value_derivative(static_cast<int>(s), row, g, v);
+        for (int n = 0; n < 2; ++n)
+          if (g.index[n] >= 0) J(k, column_of[static_cast<std::size_t>(g.index[n])]) = g.weight[n] * d_value;
       }
       auto it = first_of_run.find(row.run);
       if (it == first_of_run.end()) first_of_run.emplace(row.run, k);

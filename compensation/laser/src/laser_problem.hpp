@@ -2,7 +2,8 @@
 #pragma once
 // The least-squares problem of laser identification (laser_identify.hpp; internal): table nodes
 // of the measured axes, the model layout, residuals and the Jacobian by central differences
-// over the nodes that carry each row (every row is zeroed at its run's first row).
+// over the nodes that carry each row (every row is zeroed at its run's first row): a row reads a
+// table at its own position only, so the two nodes around it share one pair of readings.
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -36,8 +37,17 @@ struct Problem {
   std::vector<int> moving;     ///< per set
   Eigen::Index rows = 0;
 
-  /// Layout indices of the fitted parameters that can change this row's raw reading.
-  std::vector<int> support(int set_index, const MeasurementRow& row) const;
+  /// What a row's raw reading depends on: per function the fitted nodes (layout index, −1: none or
+  /// not fitted) around the row's position with their interpolation weights, and the reversal.
+  struct Support {
+    std::array<int, 2> index;
+    std::array<double, 2> weight;
+  };
+  std::vector<Support> support(int set_index, const MeasurementRow& row) const;
+  /// d raw reading / d (the function's value at the row's position) by central differences on the
+  /// nodes of `g` (0 when it has none); `values` (layout order) restored on return.
+  double value_derivative(int set_index, const MeasurementRow& row, const Support& g,
+                          std::vector<double>& values) const;
   /// Raw reading (µm) of a row for the values (layout order).
   double raw(int set_index, const MeasurementRow& row, const std::vector<double>& values) const;
   /// measured − predicted (µm), stacked set by set.
