@@ -55,7 +55,30 @@ double interpolate(const Curve& c, double a, bool& inside) {
   return lo.second + w * (hi.second - lo.second);
 }
 
+/// The largest |ccw − cw| at the counter-clockwise angles the clockwise curve covers; < 0 if none.
+double largest_difference(Curve ccw, Curve cw) {
+  if (ccw.size() < 2 || cw.size() < 2) return -1.0;
+  std::sort(ccw.begin(), ccw.end());
+  std::sort(cw.begin(), cw.end());
+  double h = -1.0;
+  for (const auto& [angle, d] : ccw) {
+    bool inside = false;
+    const double other = interpolate(cw, angle, inside);
+    if (inside) h = std::max(h, std::abs(d - other));
+  }
+  return h;
+}
+
 }  // namespace
+
+double circular_hysteresis_um(const std::vector<double>& ccw_angle, const std::vector<double>& ccw_um,
+                              const std::vector<double>& cw_angle, const std::vector<double>& cw_um) {
+  Curve ccw, cw;
+  for (std::size_t k = 0; k < std::min(ccw_angle.size(), ccw_um.size()); ++k)
+    ccw.push_back({wrap(ccw_angle[k]), ccw_um[k]});
+  for (std::size_t k = 0; k < std::min(cw_angle.size(), cw_um.size()); ++k) cw.push_back({wrap(cw_angle[k]), cw_um[k]});
+  return largest_difference(std::move(ccw), std::move(cw));
+}
 
 CircularityFigures iso230_4_circularity(const std::vector<double>& ang, const std::vector<double>& r) {
   CircularityFigures f;
@@ -110,21 +133,7 @@ CircularityFigures iso230_4_circularity(const std::vector<double>& ang, const st
       cw.push_back({wrap(ang[k]), d});
   }
   f.G_um = dmax - dmin;
-  if (f.direction == 0 && ccw.size() >= 2 && cw.size() >= 2) {
-    std::sort(ccw.begin(), ccw.end());
-    std::sort(cw.begin(), cw.end());
-    double h = 0.0;
-    bool any = false;
-    for (const auto& [angle, d] : ccw) {
-      bool inside = false;
-      const double other = interpolate(cw, angle, inside);
-      if (inside) {
-        h = std::max(h, std::abs(d - other));
-        any = true;
-      }
-    }
-    if (any) f.H_um = h;
-  }
+  if (f.direction == 0) f.H_um = largest_difference(std::move(ccw), std::move(cw));
   f.ok = true;
   return f;
 }

@@ -27,6 +27,21 @@ MeasurementSet one_way_ballbar(const Machine& m) {
   return parse_measurement_csv(csv, "ballbar_c.csv", m);
 }
 
+/// One C run of the test of one_way_ballbar in one file: counter-clockwise 0…350° (step 10°) or
+/// clockwise 350…0°, ΔL = 6 cos 2C + lift µm.
+MeasurementSet c_run(const Machine& m, bool clockwise, double lift_um, double bar_mm, const std::string& file) {
+  std::string csv = fmt::format(
+      "# type: ballbar\n# table_ball: 0, -100, 0\n# tool_ball: 0, 0, 0\n# bar_length: {}\n"
+      "# instrument_uncertainty: 0.2\nt,X,Y,Z,A,C,L\n",
+      bar_mm);
+  for (int k = 0; k < 36; ++k) {
+    const int c = clockwise ? 350 - 10 * k : 10 * k;
+    csv +=
+        fmt::format("{},0,0,0,0,{},{:.9f}\n", k, c, bar_mm + 1e-3 * (6.0 * std::cos(2.0 * c * M_PI / 180.0) + lift_um));
+  }
+  return parse_measurement_csv(csv, file, m);
+}
+
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
@@ -97,4 +112,23 @@ TEST_CASE("laser identification summary: one row per positioning line, the worst
             "x1.csv: ISO 230-2 of X</td><td>A 12.00 ± 0.85; B 3.00 ± 0.85; E 10.00 ± 0.85; M 8.00 ± 0.85; R 4.00 ± "));
   CHECK(has(html, " µm (U lacks temperature)</td>"));  // said once for the row
   CHECK(has(html, "A ≤ 10, B ≤ 5 µm</td><td class=\"fail\">FAIL"));
+}
+
+TEST_CASE("identification summary: the hysteresis H of a clockwise and a counter-clockwise run in two files",
+          "[summary]") {
+  const Machine m = load_machine(std::string(NCPOST_SOURCE_DIR) + "/machines/ac-trunnion.toml");
+  // the same angles both ways, the clockwise run lifted by 1.5 µm: H = 1.5 µm (ISO 230-4: the
+  // largest radial difference of the two directions at one angle)
+  const std::vector<MeasurementSet> pair{c_run(m, false, 0.0, 100.0, "ccw.csv"), c_run(m, true, 1.5, 100.0, "cw.csv")};
+  IdentifyResult r;
+  const std::string html = summary_page_html(identification_summary(m, pair, r, {}, "out/id.html"));
+  CHECK(has(html, "ccw.csv with cw.csv: hysteresis H</td><td>1.50 µm"));
+  CHECK_FALSE(has(html, "cw.csv with ccw.csv"));  // one row per pair
+  // not a pair: two runs the same way, or another bar
+  const std::vector<MeasurementSet> same_way{c_run(m, false, 0.0, 100.0, "a.csv"),
+                                             c_run(m, false, 1.5, 100.0, "b.csv")};
+  CHECK_FALSE(has(summary_page_html(identification_summary(m, same_way, r, {}, "out/id.html")), "hysteresis"));
+  const std::vector<MeasurementSet> other_bar{c_run(m, false, 0.0, 100.0, "a.csv"),
+                                              c_run(m, true, 1.5, 150.0, "b.csv")};
+  CHECK_FALSE(has(summary_page_html(identification_summary(m, other_bar, r, {}, "out/id.html")), "hysteresis"));
 }

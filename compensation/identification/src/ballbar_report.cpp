@@ -123,9 +123,36 @@ BallbarFigures ballbar_figures(const Machine& m, const MeasurementSet& s) {
   return out;
 }
 
+std::optional<double> two_file_hysteresis_um(const Machine& m, const MeasurementSet& a, const MeasurementSet& b) {
+  if (&a == &b || a.type != MeasurementType::ballbar || b.type != MeasurementType::ballbar || a.rows.size() < 8 ||
+      b.rows.size() < 8 || a.bar_length_mm != b.bar_length_mm || a.table_ball_mm != b.table_ball_mm ||
+      a.tool_ball_mm != b.tool_ball_mm || axes_moved(m, a) != axes_moved(m, b))
+    return std::nullopt;
+  const BallbarFigures fa = ballbar_figures(m, a), fb = ballbar_figures(m, b);
+  if (!fa.both.ok || !fb.both.ok || fa.both.direction == 0 || fa.both.direction != -fb.both.direction)
+    return std::nullopt;
+  const MeasurementSet& ccw = fa.both.direction > 0 ? a : b;
+  const MeasurementSet& cw = fa.both.direction > 0 ? b : a;
+  auto delta_l_um = [](const MeasurementSet& s) {
+    std::vector<double> out;
+    for (const auto& r : s.rows) out.push_back(1e3 * (r.value[0] - s.bar_length_mm));
+    return out;
+  };
+  const double h = report::circular_hysteresis_um(test_angle(m, ccw).angle, delta_l_um(ccw), test_angle(m, cw).angle,
+                                                  delta_l_um(cw));
+  if (h < 0) return std::nullopt;
+  return h;
+}
+
+const MeasurementSet* opposite_run(const Machine& m, const std::vector<MeasurementSet>& sets, std::size_t s) {
+  for (const MeasurementSet& other : sets)
+    if (two_file_hysteresis_um(m, sets[s], other)) return &other;
+  return nullptr;
+}
+
 std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std::vector<double>& fitted,
                             const std::vector<double>& nominal, std::optional<double> tol,
-                            const std::vector<double>& repeat_G_um) {
+                            const std::vector<double>& repeat_G_um, const MeasurementSet* opposite) {
   if (s.rows.size() < 8 || fitted.size() < s.rows.size() || nominal.size() < s.rows.size()) return "";
   const TestAngle t = test_angle(m, s);
   std::vector<double> measured_um, fitted_um, nominal_um, residual_um;
@@ -135,7 +162,9 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
     nominal_um.push_back(1e3 * (nominal[k] - s.bar_length_mm));
     residual_um.push_back(measured_um.back() - fitted_um.back());
   }
-  const report::CircularityFigures before = report::iso230_4_circularity(t.angle, measured_um);
+  report::CircularityFigures before = report::iso230_4_circularity(t.angle, measured_um);
+  const std::optional<double> paired_H = opposite ? two_file_hysteresis_um(m, s, *opposite) : std::nullopt;
+  if (paired_H) before.H_um = *paired_H;  // with the other direction's file (ISO 230-4 H)
   const report::CircularityFigures after = report::iso230_4_circularity(t.angle, residual_um);
   const std::string name = report::base_name(s.file);
   const std::string subtitle = "axes moved: " + axes_moved(m, s) + "; " + feed_and_direction(t, s, before.direction);
@@ -166,6 +195,12 @@ std::string ballbar_section(const Machine& m, const MeasurementSet& s, const std
          figures_row("measured, clockwise run", by_direction.cw, budget, tol);
   }
   h += figures_row("residual after identification (left by the model)", after, budget, tol) + "</table>";
+  if (paired_H)
+    h += fmt::format(
+        "<p class=\"note\">Circular hysteresis H {:.2f} µm: this {} run against the {} run of {} (the same "
+        "test in the other direction).</p>",
+        *paired_H, before.direction > 0 ? "counter-clockwise" : "clockwise",
+        before.direction > 0 ? "clockwise" : "counter-clockwise", escape(report::base_name(opposite->file)));
   h += budget_table_html("G of " + name, budget);
   return h;
 }

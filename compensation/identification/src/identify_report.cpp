@@ -160,7 +160,7 @@ std::string html_report(const Machine& m, const std::vector<MeasurementSet>& set
   for (std::size_t s = 0; s < sets.size() && s < r.fitted.size() && s < r.nominal.size(); ++s) {
     if (sets[s].type == MeasurementType::ballbar)
       ballbar += sections::ballbar_section(m, sets[s], r.fitted[s], r.nominal[s], tolerance_for(in, "G"),
-                                           repeated_G_um(m, sets, s));
+                                           repeated_G_um(m, sets, s), sections::opposite_run(m, sets, s));
     else if (sets[s].type == MeasurementType::sphere)
       sphere += sections::sphere_section(m, sets[s], r.fitted[s], r.nominal[s]);
   }

@@ -70,14 +70,19 @@ std::pair<std::string, std::string> residual_fact(double rms_nominal, double max
                       max_nominal, rms_after, max_after)};
 }
 
-void add_ballbar_figures(IdentificationSummary& s, const Machine& m, const MeasurementSet& set,
-                         const IdentifyReportInputs& in) {
+void add_ballbar_figures(IdentificationSummary& s, const Machine& m, const std::vector<MeasurementSet>& sets,
+                         std::size_t i, const IdentifyReportInputs& in) {
+  const MeasurementSet& set = sets[i];
   const sections::BallbarFigures f = sections::ballbar_figures(m, set);
   if (!f.both.ok) return;
   const UncertaintyBudget b = circularity_budget(set, {});
   const std::string name = report::base_name(set.file);
   const std::optional<double> tol = tolerance_for(in, "G");
   s.figures.push_back(judged(name + ": G (ISO 230-4)", f.both.G_um, b, tol, "G"));
+  // the other direction in another file: H of the pair, once (at the counter-clockwise file)
+  if (const MeasurementSet* other = sections::opposite_run(m, sets, i); other && f.both.direction > 0)
+    s.figures.push_back({name + " with " + report::base_name(other->file) + ": hysteresis H",
+                         fmt::format("{:.2f} µm", *sections::two_file_hysteresis_um(m, set, *other)), "", ""});
   if (f.both.direction != 0) return;
   if (f.ccw.ok) s.figures.push_back(judged(name + ": G counter-clockwise", f.ccw.G_um, b, tol, "G"));
   if (f.cw.ok) s.figures.push_back(judged(name + ": G clockwise", f.cw.G_um, b, tol, "G"));
@@ -125,8 +130,8 @@ IdentificationSummary identification_summary(const Machine& m, const std::vector
     s.figures.push_back(judged(name + ": largest residual with the model", r.files[i].max_after_um, b,
                                in.pass_tolerance_um, "deviation"));
   }
-  for (const MeasurementSet& set : sets)
-    if (set.type == MeasurementType::ballbar) add_ballbar_figures(s, m, set, in);
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    if (sets[i].type == MeasurementType::ballbar) add_ballbar_figures(s, m, sets, i, in);
   const std::size_t shown = std::min(r.parameters.size(), kParametersShown);
   for (std::size_t i = 0; i < shown; ++i) {
     const std::string& n = r.parameters.names()[i];

@@ -25,6 +25,13 @@ struct CircularityFigures {
 
 CircularityFigures iso230_4_circularity(const std::vector<double>& angle_rad, const std::vector<double>& radial_um);
 
+/// Circular hysteresis H (µm) of two runs of one test in opposite directions, e.g. one file each:
+/// the largest |r_ccw(θ) − r_cw(θ)| at the angles of the counter-clockwise points where the
+/// clockwise run has points less than ~11° away on both sides (linear between them). A centre
+/// offset adds the same at one angle to both runs, so none is removed. < 0: no angle in common.
+double circular_hysteresis_um(const std::vector<double>& ccw_angle_rad, const std::vector<double>& ccw_um,
+                              const std::vector<double>& cw_angle_rad, const std::vector<double>& cw_um);
+
 /// ISO 230-4 asks for the figures of each direction of travel: `both` of the whole path (with H),
 /// `ccw` of the points reached with θ rising, `cw` of those reached with θ falling (the first point
 /// takes the direction of the move that leaves it), each with its own LSC centre and G. A direction
