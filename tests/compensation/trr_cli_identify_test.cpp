@@ -2,7 +2,9 @@
 // The TRR-XY measurement loop through the CLI: plan sphere → simulate → identify → the model
 // predicts the true machine; bad probing data fail with file and line.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -39,7 +41,7 @@ TEST_CASE("plan sphere, simulate, identify on the TRR-XY machine") {
   REQUIRE(run("plan --machine " + machine + " sphere -o trr_plan") == 0);
   REQUIRE(run("simulate --machine " + machine +
               " --model trr_truth.json --noise-um 0.2 --seed 3 -o trr_data.csv trr_plan.csv") == 0);
-  REQUIRE(run("identify --machine " + machine + " -o trr_identified.json trr_data.csv") == 0);
+  REQUIRE(run("identify --machine " + machine + " --report trr_id.html -o trr_identified.json trr_data.csv") == 0);
 
   std::ifstream in("trr_identified.json");
   const nlohmann::json j = nlohmann::json::parse(in);
@@ -49,6 +51,28 @@ TEST_CASE("plan sphere, simulate, identify on the TRR-XY machine") {
   CHECK(j["fit"]["rms_before_um"].get<double>() > 10.0);
   CHECK_FALSE(j["uncertainty"].contains("dzs_a"));
   CHECK(j["uncertainty"].contains("gp_a"));
+  // the report and its one-page summary (issue 25 item 5): the residual and the parameters ± U = 2u
+  // as the model file holds them, the undetermined ones and the null space named as limits
+  const std::string html = test::read_text_file("trr_id.html"), page = test::read_text_file("trr_id-summary.html");
+  CHECK(html.find(fmt::format("{:.3f} / {:.3f} µm", j["fit"]["rms_after_um"].get<double>(),
+                              j["fit"]["max_after_um"].get<double>())) != std::string::npos);
+  CHECK(html.find("</td><td colspan=\"2\">not determined") != std::string::npos);
+  CHECK(html.find("<td class=n>gp_a</td><td colspan") == std::string::npos);
+  const std::string row = "<td class=n>gp_a</td><td>";  // gp is an angle: µrad
+  const std::size_t at = html.find(row);
+  REQUIRE(at != std::string::npos);
+  double value = 0, u = 0, U = 0;
+  REQUIRE(std::sscanf(html.c_str() + at + row.size(), "%lf</td><td>%lf</td><td>%lf", &value, &u, &U) == 3);
+  CHECK(value == Approx(1e6 * j["parameters"]["gp_a"].get<double>()).margin(1e-3));
+  CHECK(u == Approx(1e6 * j["uncertainty"]["gp_a"].get<double>()).margin(1e-3));
+  CHECK(U == Approx(2.0 * u).margin(2e-3));
+  // the parameters without an uncertainty in the model file are the ones the summary calls undetermined
+  const std::size_t undetermined = kParameterCount - j["uncertainty"].size();
+  CHECK(undetermined >= 6);  // at least one per direction not seen
+  CHECK(page.find(fmt::format("{} parameters not determined", undetermined)) != std::string::npos);
+  CHECK(page.find("trr_data.csv: measured (date not given)") != std::string::npos);
+  CHECK(page.find("approved by") != std::string::npos);
+  CHECK(page.find("href=\"trr_id.html\"") != std::string::npos);
 
   const Kinematics actual(m, truth), model(m, read_errors_json("trr_identified.json")), nominal(m);
   double worst_um = 0.0;

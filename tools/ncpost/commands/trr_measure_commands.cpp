@@ -11,6 +11,7 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/compensation/trr_probing_csv.hpp"
+#include "ncpost/compensation/trr_summary.hpp"
 #include "ncpost/machines/trr_xy_file.hpp"
 #include "ncpost/postproc/write/plan_nc.hpp"
 #include "ncpost/postproc/solve/trr_solver.hpp"
@@ -101,17 +102,17 @@ SimulateOutput simulate_trr_xy(const SimulateArgs& a) {
 }
 
 IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
-  const std::string serial_only = !a.params.empty()   ? "--params"
-                                  : !a.fixed.empty()  ? "--fixed"
-                                  : !a.report.empty() ? "--report"
-                                                      : "";
+  const std::string serial_only = !a.params.empty() ? "--params" : !a.fixed.empty() ? "--fixed" : "";
   if (!serial_only.empty())
     throw UsageError(
         fmt::format("{}: not available for the TRR-XY machine (its 30 parameters are always fitted)", serial_only));
   const trr::Machine m = load_trr_xy_machine(a.machine);
   std::vector<trr::ProbeMeasurement> data;
-  for (const auto& f : a.data)
-    for (const auto& pm : trr::measurements(trr::read_probing_csv(f, false))) data.push_back(pm);
+  trr::TrrReportInputs report{a.machine, a.output, a.report, a.data, {}};
+  for (const auto& f : a.data) {
+    report.data.push_back(trr::read_probing_csv(f, false));
+    for (const auto& pm : trr::measurements(report.data.back())) data.push_back(pm);
+  }
   trr::IdentifyResult id;
   try {
     id = trr::identify(m, data);
@@ -150,9 +151,11 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
     for (const auto& [name, w] : dir) s += fmt::format(" {}{:+.3f}", name, w);
     fmt::print("  {}\n", s);
   }
+  const bool reported = !a.report.empty();
   return {.model_json = comp::format_model_json(file),
-          .report_html = {},
-          .summary_html = {},
+          .report_html = reported ? trr::trr_identify_report_html(m, id, report) : std::string(),
+          .summary_html =
+              reported ? comp::summary_page_html(trr::trr_identification_summary(m, id, report)) : std::string(),
           .closing = fmt::format("model -> {}\n", a.output)};
 }
 
