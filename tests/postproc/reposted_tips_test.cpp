@@ -131,9 +131,11 @@ TEST_CASE("the re-post comparison passes a right program and names the first dif
   // the arc the other way round: through -Y
   CHECK_THAT(compare(output("G3 X10 Y0 I5 J0")).failure, Catch::Contains("input line 5"));
   // an end 2 um off
-  CHECK_THAT(compare(output("G2 X10 Y0 I5 J0", "G1 X10 Y10.002")).failure, Catch::Contains("no output block ends there"));
+  CHECK_THAT(compare(output("G2 X10 Y0 I5 J0", "G1 X10 Y10.002")).failure,
+             Catch::Contains("no output block ends there"));
   // a feed written as a rapid
-  CHECK_THAT(compare(output("G2 X10 Y0 I5 J0", "G0 X10 Y10\nG1")).failure, Catch::Contains("is a rapid where the input feeds"));
+  CHECK_THAT(compare(output("G2 X10 Y0 I5 J0", "G0 X10 Y10\nG1")).failure,
+             Catch::Contains("is a rapid where the input feeds"));
   // G28 Z0 left out of the output: the tool never reaches Z's reference
   CHECK_THAT(compare(output("G2 X10 Y0 I5 J0", "G1 X10 Y10", "")).failure, Catch::Contains("input line 8"));
 }

@@ -10,11 +10,11 @@
 //   output block).
 // - Between the ends of an input feed move (G1, G2/G3, a cycle's feed) every output block that
 //   realises it is sampled at 16 points (a straight block against a straight path: at its two ends,
-//   where the distance to a segment, convex along a line, is largest); each sample must lie within the tolerance the output's
-//   header states (+ 1 µm) of the input's path: under RTCP the tip moves straight in W from end to
-//   end, an arc turns about its centre in its plane (the radius and the third axis change linearly
-//   with the angle: a slightly spiral arc and a helix as the control runs them). None of those
-//   output blocks may be a rapid. Rapids are not sampled: their path is the control's own.
+//   where the distance to a segment, convex along a line, is largest); each sample must lie within the tolerance the
+//   output's header states (+ 1 µm) of the input's path: under RTCP the tip moves straight in W from end to end, an arc
+//   turns about its centre in its plane (the radius and the third axis change linearly with the angle: a slightly
+//   spiral arc and a helix as the control runs them). None of those output blocks may be a rapid. Rapids are not
+//   sampled: their path is the control's own.
 // - Machine-coordinate moves (G28/G30/G53) place the machine's axes at the machine file's
 //   reference points (Z without one: the top of its travel, as docs/formats.md says a control's
 //   reference is), read from the file by ExecMachine; the tip follows through the closure.
@@ -86,8 +86,9 @@ struct InputPath {
     if (e.motion < 2) return;
     arc = true;
     centre = centre_W;
-    axes = e.plane == 17 ? std::array<int, 3>{0, 1, 2}
-                         : e.plane == 18 ? std::array<int, 3>{2, 0, 1} : std::array<int, 3>{1, 2, 0};
+    axes = e.plane == 17   ? std::array<int, 3>{0, 1, 2}
+           : e.plane == 18 ? std::array<int, 3>{2, 0, 1}
+                           : std::array<int, 3>{1, 2, 0};
     const int u = axes[0], v = axes[1];
     a0 = std::atan2(a[v] - centre[v], a[u] - centre[u]);
     const double a1 = std::atan2(b[v] - centre[v], b[u] - centre[u]);
