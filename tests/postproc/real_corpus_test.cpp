@@ -139,17 +139,7 @@ ncpost::test::ControlSpec control_for(const std::string& text, const std::string
   spec.axes = "XYZ";
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
-    std::string bare;
-    int depth = 0;
-    for (char c : line) {
-      if (c == ';' && depth == 0) break;
-      if (c == '(')
-        ++depth;
-      else if (c == ')')
-        depth = std::max(0, depth - 1);
-      else if (depth == 0 && c != ' ')
-        bare += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    }
+    const std::string bare = ncpost::test::ControlInterpreter::clean(line);
     for (std::size_t k = 0; k + 1 < bare.size(); ++k) {
       const char next = bare[k + 1];
       const bool value =

@@ -81,6 +81,22 @@ class ControlInterpreter {
       for (std::size_t i = 0; i < percent.front(); ++i) lines_[i].clear();
   }
 
+  /// A line as the interpreter reads it: comments out, blanks out, upper case.
+  static std::string clean(const std::string& raw) {
+    std::string s;
+    int depth = 0;
+    for (char c : raw) {
+      if (c == ';' && depth == 0) break;
+      if (c == '(')
+        ++depth;
+      else if (c == ')')
+        --depth;
+      else if (depth == 0 && c != ' ' && c != '\t' && c != '\r')
+        s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    return s;
+  }
+
   /// The axes the program never programmed (after run()).
   std::string never_programmed() const {
     std::string out;
@@ -117,21 +133,6 @@ class ControlInterpreter {
     int repeats_left;
     std::map<int, double> saved;  ///< #1..#30 of the caller (o-word calls)
   };
-
-  static std::string clean(const std::string& raw) {
-    std::string s;
-    int depth = 0;
-    for (char c : raw) {
-      if (c == ';' && depth == 0) break;
-      if (c == '(')
-        ++depth;
-      else if (c == ')')
-        --depth;
-      else if (depth == 0 && c != ' ' && c != '\t' && c != '\r')
-        s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    }
-    return s;
-  }
 
   [[noreturn]] void fail(std::size_t pc, const std::string& what) const {
     throw std::runtime_error("test interpreter line " + std::to_string(pc + 1) + ": " + what);
