@@ -132,6 +132,37 @@ struct InputPath {
   }
 };
 
+/// The output blocks [first, last) that realise one input feed move along `path`: none a rapid that
+/// moves, every sample within `between_mm` (components where `mask` is 0 not compared). The
+/// failure ("" none); counts and the largest distance go into `r`.
+inline std::string check_between(const Executor& ex, const InputPath& path, const std::vector<ExecPose>& out_ends,
+                                 std::size_t first, std::size_t last, const V3& mask, double between_mm,
+                                 RepostCheck& r) {
+  for (std::size_t b = first; b < last; ++b) {
+    const ExecBlock& ob = ex.blocks[b];
+    const std::string block = "output line " + std::to_string(ob.line) + " '" + ob.text + "'";
+    const bool moves = (ex.at(ob, 0.0).tip_W - out_ends[b].tip_W).cwiseProduct(mask).norm() >= 1e-3;
+    if (ob.kind == ExecBlock::Kind::rapid && moves) return block + " is a rapid where the input feeds";
+    // a straight output block (no rotary axis turning) against a straight input path: the distance
+    // to a segment is convex along a line, its largest at the block's ends
+    bool straight = !path.arc && ob.kind == ExecBlock::Kind::linear;
+    for (char c : ex.machine.rotary_letters)
+      straight = straight && (ob.from.count(c) ? ob.from.at(c) : 0.0) == (ob.to.count(c) ? ob.to.at(c) : 0.0);
+    for (int k = straight ? 0 : 1; k <= 16; k += straight ? 16 : 1) {
+      V3 p = ex.at(ob, k / 16.0).tip_W;
+      for (int i = 0; i < 3; ++i)
+        if (mask[i] == 0.0) p[i] = path.at(0.0)[i];  // an axis never programmed: not compared
+      const double d = path.distance(p);
+      ++r.samples;
+      r.worst_between_mm = std::max(r.worst_between_mm, d);
+      if (d > between_mm)
+        return block + " at " + std::to_string(k) + "/16 lies " + std::to_string(d) +
+               " mm from the input's path (allowed " + std::to_string(between_mm) + " mm)";
+    }
+  }
+  return {};
+}
+
 /// Executes `input` (tool-tip reading) and `output` and compares them as the header says.
 inline RepostCheck compare_reposted_tips(const std::string& input, ControlSpec spec, const std::string& machine_file,
                                          const ExecJob& job, const std::string& output) {
@@ -199,32 +230,10 @@ inline RepostCheck compare_reposted_tips(const std::string& input, ControlSpec s
       V3 centre = V3::Zero();
       for (int i = 0; i < 3 && e.motion >= 2; ++i) centre[i] = e.centre.at("XYZ"[i]) - base.at("XYZ"[i]);
       const InputPath path(previous->tip_W, in.tip_W, e, centre);
-      for (std::size_t b = first_block; b < next; ++b) {
-        const std::string block = "output line " + std::to_string(ex.blocks[b].line) + " '" + ex.blocks[b].text + "'";
-        const bool moves = gap(ex.at(ex.blocks[b], 0.0).tip_W, out_ends[b].tip_W) >= kTipToleranceMm;
-        if (ex.blocks[b].kind == ExecBlock::Kind::rapid && moves) {
-          r.failure = where() + block + " is a rapid where the input feeds";
-          return r;
-        }
-        // a straight output block (no rotary axis turning) against a straight input path: the distance
-        // to a segment is convex along a line, its largest at the block's ends
-        const ExecBlock& ob = ex.blocks[b];
-        bool straight = !path.arc && ob.kind == ExecBlock::Kind::linear;
-        for (char c : ex.machine.rotary_letters)
-          straight = straight && (ob.from.count(c) ? ob.from.at(c) : 0.0) == (ob.to.count(c) ? ob.to.at(c) : 0.0);
-        for (int k = straight ? 0 : 1; k <= 16; k += straight ? 16 : 1) {
-          V3 p = ex.at(ex.blocks[b], k / 16.0).tip_W;
-          for (int i = 0; i < 3; ++i)
-            if (mask[i] == 0.0) p[i] = path.at(0.0)[i];  // an axis never programmed: not compared
-          const double d = path.distance(p);
-          ++r.samples;
-          r.worst_between_mm = std::max(r.worst_between_mm, d);
-          if (d > between_mm) {
-            r.failure = where() + block + " at " + std::to_string(k) + "/16 lies " + std::to_string(d) +
-                        " mm from the input's path (allowed " + std::to_string(between_mm) + " mm)";
-            return r;
-          }
-        }
+      const std::string failure = check_between(ex, path, out_ends, first_block, next, mask, between_mm, r);
+      if (!failure.empty()) {
+        r.failure = where() + failure;
+        return r;
       }
     }
     previous = in;
