@@ -6,9 +6,15 @@
 // (G2/G3), the cutter compensation (G41/G42), the units, and at least one block per motion that
 // moves — or refuses it with exit 2 or 3 and a message naming the line. The expectations were read
 // from the files themselves (tools/corpus_counts.py recounts them), never from ncpost's output.
+// Every posted G-code program is also checked by EXECUTION (issue 24): the input as its control
+// runs it (tests/support/control_interpreter.hpp, tool-tip reading) against the written program
+// through the machine's forward kinematics (nc_executor.hpp), tip within 1 µm at every input block
+// end and within the header's tolerance between them (reposted_tips.hpp).
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +28,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "reposted_tips.hpp"
 #include "test_paths.hpp"
 
 namespace {
@@ -121,6 +128,29 @@ std::string temp_dir() {
   char pattern[] = "/tmp/ncpost_real_corpus_XXXXXX";
   const char* dir = mkdtemp(pattern);
   return dir ? dir : ".";
+}
+
+/// The tests' control for a G-code input: the work offsets at zero (W is the program's frame: the
+/// corpus gives no offset values; a program's own G10 L2 sets them), the program's axis letters
+/// (X Y Z and the rotary letters it writes outside comments), LinuxCNC's meanings under its dialect.
+ncpost::test::ControlSpec control_for(const std::string& text, const std::string& rotary_letters, bool linuxcnc) {
+  ncpost::test::ControlSpec spec;
+  spec.linuxcnc = linuxcnc;
+  spec.axes = "XYZ";
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const std::string bare = ncpost::test::ControlInterpreter::clean(line);
+    for (std::size_t k = 0; k + 1 < bare.size(); ++k) {
+      const char next = bare[k + 1];
+      const bool value =
+          std::isdigit(static_cast<unsigned char>(next)) || std::string("-+.[#").find(next) != std::string::npos;
+      if (value && rotary_letters.find(bare[k]) != std::string::npos && spec.axes.find(bare[k]) == std::string::npos)
+        spec.axes += bare[k];
+    }
+  }
+  for (const char* name : {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"})
+    for (char a : spec.axes) spec.offsets[name][a] = 0.0;
+  return spec;
 }
 
 std::string join(const std::vector<int>& v) {
@@ -241,6 +271,25 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       const int motions = e.at("motions").at("count").get<int>() - e.at("motions").at("repeats").get<int>();
       INFO("G0/G1 blocks " << p.linear << " for " << motions << " motions that move");
       CHECK(p.linear >= motions);
+
+      // executed: the input as its control runs it, the output through the machine's kinematics
+      if (e.at("kind") == "gcode") {
+        const std::string machine_file =
+            ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml");
+        const std::string input = ncpost::test::read_text_file(ncpost::test::data("real/" + file));
+        const std::string dialect = (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>();
+        const ncpost::test::ExecMachine em = ncpost::test::ExecMachine::load(machine_file);
+        ncpost::test::ExecJob job;
+        job.workpiece_origin_mm = ncpost::test::V3(o[0], o[1], o[2]);
+        const ncpost::test::RepostCheck c =
+            ncpost::test::compare_reposted_tips(input, control_for(input, em.rotary_letters, dialect == "linuxcnc"),
+                                                machine_file, job, ncpost::test::read_text_file(out));
+        std::printf("%-40s executed: %d ends, %d samples, worst %.6f mm at ends, %.6f mm between\n", file.c_str(),
+                    c.ends, c.samples, c.worst_end_mm, c.worst_between_mm);
+        INFO(c.failure);
+        CHECK(c.failure.empty());
+        CHECK(c.ends > 0);
+      }
     }
   }
 }

@@ -35,6 +35,8 @@ struct ExecAxis {
   V3 direction = V3::UnitZ();
   V3 pivot = V3::Zero();
   bool workpiece_side = false;
+  std::optional<double> limit_max;              ///< the top of the travel (mm, deg)
+  std::optional<double> reference, reference2;  ///< G28's and G30's point in M (mm, deg)
 };
 
 /// A machine file read by the test: the chain and its axes (rotary angles in deg in the program).
@@ -43,6 +45,7 @@ struct ExecMachine {
   std::vector<ExecAxis> tool_side;       ///< rotary axes from the bed outward
   std::vector<ExecAxis> workpiece_side;  ///< rotary axes from the bed outward
   std::string rotary_letters;            ///< in the order the chain names them
+  std::map<char, ExecAxis> all_axes;     ///< every [axes.L] of the file, by letter
 
   static ExecMachine load(const std::string& path) {
     // [machine] chain = "..." and [axes.L] type = "rotary", direction = [..], pivot = [..]
@@ -86,6 +89,9 @@ struct ExecMachine {
         if (key == "type") a.rotary = unquoted(value) == "rotary";
         if (key == "direction") a.direction = vector_of(value).normalized();
         if (key == "pivot") a.pivot = vector_of(value);
+        if (key == "limits") a.limit_max = std::stod(value.substr(value.find(',') + 1));
+        if (key == "reference") a.reference = std::stod(value);
+        if (key == "reference2") a.reference2 = std::stod(value);
       }
     }
     std::istringstream words(m.chain);
@@ -105,6 +111,7 @@ struct ExecMachine {
       (workpiece ? wp : m.tool_side).push_back(a);
     }
     m.workpiece_side.assign(wp.rbegin(), wp.rend());  // listed from w to b: the bed outward is reversed
+    m.all_axes = axes;
     return m;
   }
 };
@@ -133,8 +140,9 @@ struct ExecJob {
 /// Forward kinematics by the conventions: T_j(q) = Trans(P_j) Rot(d_j, q) Trans(-P_j), composed
 /// from the bed outward on each side; head pivots + (0, 0, L); closure
 /// (X, Y, Z) + T_t(q) 0 = T_w(q) (origin + p), R_t e_z = R_w u.
-inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_mm,
-                        const std::map<char, double>& rotary_deg) {
+/// The workpiece side's and the tool side's transforms at the angles `rotary_deg`.
+inline std::pair<Rt, Rt> chain_transforms(const ExecMachine& m, const ExecJob& job,
+                                          const std::map<char, double>& rotary_deg) {
   auto turn = [&](const ExecAxis& a, bool tool) {
     const double q = rotary_deg.count(a.letter) ? rotary_deg.at(a.letter) * M_PI / 180.0 : 0.0;
     const V3 p = a.pivot + (tool ? V3(0, 0, job.tool_length_mm) : V3::Zero());
@@ -146,10 +154,24 @@ inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_
   Rt Tw, Tt;
   for (const ExecAxis& a : m.workpiece_side) Tw = Tw * turn(a, false);
   for (const ExecAxis& a : m.tool_side) Tt = Tt * turn(a, true);
+  return {Tw, Tt};
+}
+
+inline ExecPose forward(const ExecMachine& m, const ExecJob& job, const V3& xyz_mm,
+                        const std::map<char, double>& rotary_deg) {
+  const auto [Tw, Tt] = chain_transforms(m, job, rotary_deg);
   ExecPose pose;
   pose.tip_W = Tw.inverse() * (xyz_mm + Tt * V3::Zero()) - job.workpiece_origin_mm;
   pose.axis_W = Tw.R.transpose() * Tt.R * V3::UnitZ();
   return pose;
+}
+
+/// The closure solved for the linear axes: where X Y Z stand (mm) with the tip at `tip_W` and the
+/// rotary axes at `rotary_deg`: (X, Y, Z) = T_w(q) (origin + p) - T_t(q) 0.
+inline V3 machine_xyz_for_tip(const ExecMachine& m, const ExecJob& job, const V3& tip_W,
+                              const std::map<char, double>& rotary_deg) {
+  const auto [Tw, Tt] = chain_transforms(m, job, rotary_deg);
+  return Tw * (tip_W + job.workpiece_origin_mm) - Tt * V3::Zero();
 }
 
 /// One motion block as the control reads it.
