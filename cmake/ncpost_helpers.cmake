@@ -36,6 +36,7 @@ function(ncpost_library name)
     endif()
     ncpost_precompile(ncpost_${name} ${_eigen} ${NCPOST_LIBRARY_PCH_HEADERS})
   endif()
+  ncpost_unity(ncpost_${name})
   install(TARGETS ncpost_${name} EXPORT ncpostTargets
     ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
     LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
@@ -128,8 +129,8 @@ function(ncpost_precompile target)
   endif()
 endfunction()
 
-# ncpost_test_units(TARGET FOLDER FILES...): TARGET's test files are compiled 8 to a unit (CMake's
-# unity build): Catch2's, Eigen's and the library headers' inline code is then compiled once for 8
+# ncpost_test_units(TARGET FOLDER FILES...): TARGET's test files are compiled NCPOST_TEST_UNITY_BATCH to a unit (CMake's
+# unity build): Catch2's, Eigen's and the library headers' inline code is then compiled once for all the
 # files instead of once for each (issue 26). Each file stays a namespace of its own
 # (NCPOST_UNITY_ID, one per file), so helpers of the same name in two files, or a `using
 # namespace` in one, do not meet; every header any file of the folder includes is included first,
@@ -147,7 +148,47 @@ function(ncpost_test_units target folder)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ARGN})
   target_include_directories(${target} PRIVATE "${folder}")
   target_compile_definitions(${target} PRIVATE NCPOST_TEST_TMP_ROOT="${CMAKE_BINARY_DIR}/test-tmp")
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8 UNITY_BUILD_UNIQUE_ID NCPOST_UNITY_ID
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${NCPOST_TEST_UNITY_BATCH} UNITY_BUILD_UNIQUE_ID NCPOST_UNITY_ID
     UNITY_BUILD_CODE_BEFORE_INCLUDE "#include \"${_header}\"\nnamespace NCPOST_UNITY_ID {"
     UNITY_BUILD_CODE_AFTER_INCLUDE "}  // namespace NCPOST_UNITY_ID")
+endfunction()
+
+# ncpost_unity(TARGET): TARGET's files compiled up to NCPOST_UNITY_BATCH to a unit when NCPOST_UNITY is
+# ON (CMake's unity build, in groups): the files of one folder only, in their order, so that a unit
+# never mixes two folders (the fuzz build, tests/fuzz/CMakeLists.txt, replaces every unit of
+# postproc/src/read/ by its own instrumented objects). Files of one folder may then meet in one
+# unit: names local to a file (an anonymous namespace, `static`) must differ between the files of a
+# folder, as the build checks. Files marked SKIP_UNITY_BUILD_INCLUSION stay units of their own.
+function(ncpost_unity target)
+  if(NOT NCPOST_UNITY)
+    return()
+  endif()
+  get_target_property(_srcs ${target} SOURCES)
+  set(_dirs "")
+  foreach(_src ${_srcs})
+    if(_src MATCHES "\\.cpp$")
+      get_filename_component(_dir "${_src}" DIRECTORY)
+      string(MAKE_C_IDENTIFIER "${_dir}" _key)
+      list(APPEND _in_${_key} "${_src}")
+      list(APPEND _dirs "${_key}")
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES _dirs)
+  set(_group 0)
+  foreach(_key ${_dirs})
+    set(_count 0)
+    foreach(_src ${_in_${_key}})
+      if(_count EQUAL NCPOST_UNITY_BATCH)
+        math(EXPR _group "${_group} + 1")
+        set(_count 0)
+      endif()
+      set_source_files_properties("${_src}" TARGET_DIRECTORY ${target} PROPERTIES UNITY_GROUP "${target}_${_group}")
+      math(EXPR _count "${_count} + 1")
+    endforeach()
+    math(EXPR _group "${_group} + 1")
+  endforeach()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+  # a type of one file holding a type of that file's anonymous namespace is fine in a unit of
+  # several files too (GCC warns because the file is then an included one)
+  target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
 endfunction()

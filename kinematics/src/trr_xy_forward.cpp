@@ -3,7 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include <fmt/format.h>
 #include <stdexcept>
 
 namespace ncpost::trr {
@@ -11,13 +12,6 @@ namespace {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
-
-template <class... A>
-std::string format(const char* f, A... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, args...);
-  return buf;
-}
 
 }  // namespace
 
@@ -45,12 +39,12 @@ std::string link_reach_failure(const Geometry& g, const std::array<ChainFrame, 3
     const Vec3d link = c.pin_mm(slider_mm[i]) - machine_T_plate.apply(c.ball_in_plate_mm);  // from S up to B
     const double angle = std::acos(std::clamp(link.normalized().dot(c.screw_down), -1.0, 1.0));
     if (link.dot(c.screw_down) <= 0.0 || angle > g.max_link_angle_rad)
-      return format(
-          "link of chain %c at %.2f deg from its screw line (reach: hanging below its pin joint within "
-          "%.1f deg)",
+      return fmt::format(
+          "link of chain {} at {:.2f} deg from its screw line (reach: hanging below its pin joint within "
+          "{:.1f} deg)",
           "abc"[i], rad_to_deg(angle), rad_to_deg(g.max_link_angle_rad));
     if (link.dot(c.radial) <= 0.0)
-      return format("link of chain %c leans outward (its ball joint is outside the screw line)", "abc"[i]);
+      return fmt::format("link of chain {} leans outward (its ball joint is outside the screw line)", "abc"[i]);
   }
   return {};
 }
@@ -77,8 +71,8 @@ PlateOutcome solve_plate(const Geometry& g, const std::array<ChainFrame, 3>& cha
     converged = step.head<3>().norm() < 1e-11 && step.tail<3>().norm() < 1e-13;
   }
   if (!converged) {
-    out.failure = format("forward kinematics: Newton-Raphson did not converge for sliders %.4f %.4f %.4f mm",
-                         slider_mm[0], slider_mm[1], slider_mm[2]);
+    out.failure = fmt::format("forward kinematics: Newton-Raphson did not converge for sliders {:.4f} {:.4f} {:.4f} mm",
+                              slider_mm[0], slider_mm[1], slider_mm[2]);
     return out;
   }
   // re-orthonormalise the rotation (accumulated products of exact rotations drift slowly)

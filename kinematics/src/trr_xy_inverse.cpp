@@ -2,17 +2,11 @@
 #include "ncpost/kinematics/trr_xy_inverse.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include <fmt/format.h>
 
 namespace ncpost::trr {
 namespace {
-
-template <class... A>
-std::string format(const char* f, A... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, args...);
-  return buf;
-}
 
 /// The rotation taking e_z to the unit `axis` about e_z × axis (no spin).
 Mat3d align_z_to(const Vec3d& axis) {
@@ -67,8 +61,9 @@ std::optional<Vec3d> nominal_sliders_for(const Geometry& g, const Rigidd& machin
     const double h2 = h.x() * h.x() + h.y() * h.y();
     if (h2 >= l * l) {
       if (why)
-        *why = format("link of chain %c cannot reach its screw line (ball joint %.1f mm from it, link %.1f mm)",
-                      "abc"[i], std::sqrt(h2), l);
+        *why =
+            fmt::format("link of chain {} cannot reach its screw line (ball joint {:.1f} mm from it, link {:.1f} mm)",
+                        "abc"[i], std::sqrt(h2), l);
       return std::nullopt;
     }
     s[i] = H - S.z() - std::sqrt(l * l - h2);  // the root with the pin joint above the ball joint
@@ -87,7 +82,7 @@ std::string limits_failure(const Machine& m, const Command& c) {
   for (int j = 0; j < 5; ++j) {
     const std::optional<AxisLimits>& lim = j < 2 ? m.table_limits[j] : m.slider_limits[j - 2];
     if (lim && !lim->contains(v[j], 1e-6))
-      return format("%c%.4f is outside the limits [%g, %g] mm", kWords[j], v[j], lim->min, lim->max);
+      return fmt::format("{}{:.4f} is outside the limits [{:g}, {:g}] mm", kWords[j], v[j], lim->min, lim->max);
   }
   return {};
 }

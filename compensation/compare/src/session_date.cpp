@@ -18,7 +18,7 @@ long long days_from_civil(long long y, unsigned m, unsigned d) {
   return era * 146097 + static_cast<long long>(doe) - 719468;
 }
 
-int digits(const std::string& s, std::size_t at, std::size_t n) {
+int digits_at(const std::string& s, std::size_t at, std::size_t n) {
   int v = 0;
   for (std::size_t k = at; k < at + n; ++k) v = v * 10 + (s[k] - '0');
   return v;
@@ -28,14 +28,14 @@ int digits(const std::string& s, std::size_t at, std::size_t n) {
 
 std::optional<double> days_since_epoch(const std::string& s) {
   if (!is_iso8601_date(s)) return std::nullopt;
-  double day = double(days_from_civil(digits(s, 0, 4), unsigned(digits(s, 5, 2)), unsigned(digits(s, 8, 2))));
+  double day = double(days_from_civil(digits_at(s, 0, 4), unsigned(digits_at(s, 5, 2)), unsigned(digits_at(s, 8, 2))));
   if (s.size() == 10) return day;
   std::size_t k = 11;  // after 'T'
-  double minutes = digits(s, k, 2) * 60.0 + digits(s, k + 3, 2);
+  double minutes = digits_at(s, k, 2) * 60.0 + digits_at(s, k + 3, 2);
   k += 5;
-  if (k < s.size() && s[k] == ':') minutes += digits(s, k + 1, 2) / 60.0, k += 3;
+  if (k < s.size() && s[k] == ':') minutes += digits_at(s, k + 1, 2) / 60.0, k += 3;
   if (k < s.size() && (s[k] == '+' || s[k] == '-')) {
-    const double offset = digits(s, k + 1, 2) * 60.0 + digits(s, k + 4, 2);
+    const double offset = digits_at(s, k + 1, 2) * 60.0 + digits_at(s, k + 4, 2);
     minutes -= s[k] == '+' ? offset : -offset;  // local time = UTC + offset
   }
   return day + minutes / 1440.0;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_axis_table.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -13,7 +14,6 @@ namespace ncpost::comp {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 /// A rotary axis's direction has a component along X, Y or Z when it is above this.
 constexpr double kDirectionComponent = 1e-9;
 /// A location component lies along the axis (its zero-position error) when |direction| is 1 within this.

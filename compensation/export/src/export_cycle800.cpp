@@ -12,9 +12,9 @@ namespace ncpost::comp {
 
 namespace {
 
-bool is_location(const ParameterSpec& s) { return s.kind == ParameterKind::location; }
+bool is_cycle800_location(const ParameterSpec& s) { return s.kind == ParameterKind::location; }
 
-std::string why_left_out(const ParameterSpec& s) {
+std::string why_cycle800_leaves_out(const ParameterSpec& s) {
   if (s.kind == ParameterKind::coupled) return "location changing with another axis: the record holds constants";
   if (s.kind == ParameterKind::squareness) return "squareness: the record assumes orthogonal linear axes";
   if (s.kind == ParameterKind::reversal) return "reversal: the axis's backlash compensation (MD32450)";
@@ -42,7 +42,7 @@ Cycle800Record cycle800_record(const MachineModel& model) {
   r.v2 = a2.direction.normalized();
   r.l4_mm = -(r.l2_mm + r.l3_mm);
   r.held = corrected.applied;
-  r.left_out = left_out_of(model, is_location, why_left_out);
+  r.left_out = left_out_of(model, is_cycle800_location, why_cycle800_leaves_out);
   return r;
 }
 

@@ -15,7 +15,7 @@ constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 bool is_location(const ParameterSpec& s) { return s.kind == ParameterKind::location; }
 
-std::string why_left_out(const ParameterSpec& s) {
+std::string why_heidenhain_leaves_out(const ParameterSpec& s) {
   if (s.kind == ParameterKind::coupled) return "location changing with another axis: the description holds constants";
   if (s.kind == ParameterKind::squareness) return "squareness: the description assumes orthogonal linear axes";
   if (s.kind == ParameterKind::reversal) return "reversal: the axis's backlash compensation (machine parameters)";
@@ -72,7 +72,7 @@ void add_axis(std::vector<HeidenhainEntry>& out, char letter, int k, const Vec3d
   out.push_back({"Trans", rotary_letter(t.i), -a, -na, "orientation of " + name + " undone"});
 }
 
-std::string number(double x) { return fmt::format("{:.9f}", std::abs(x) < 5e-10 ? 0.0 : x); }
+std::string fixed9(double x) { return fmt::format("{:.9f}", std::abs(x) < 5e-10 ? 0.0 : x); }
 
 }  // namespace
 
@@ -96,7 +96,7 @@ HeidenhainKinematics heidenhain_kinematics(const MachineModel& model) {
   for (int c = 0; c < 3; ++c)
     h.entries.push_back({"Trans", linear_letter(c), -a2.pivot_mm[c], -n2.pivot_mm[c], "back to the table datum"});
   h.held = corrected.applied;
-  h.left_out = left_out_of(model, is_location, why_left_out);
+  h.left_out = left_out_of(model, is_location, why_heidenhain_leaves_out);
   return h;
 }
 
@@ -129,8 +129,8 @@ std::string format_heidenhain(const HeidenhainKinematics& k, const MachineModel&
     }
     const bool angle = e.axis >= 'A' && e.axis <= 'C';
     const double change = (e.coord - e.nominal) * (angle ? 1e6 / kDeg : 1e3);
-    out += fmt::format("{:<3} {:<9} {:<5} {:<17} {:<17} {:<13} {}\n", r, e.key, e.axis, number(e.coord),
-                       number(e.nominal), fmt::format("{:+.3f}", std::abs(change) < 5e-4 ? 0.0 : change), e.role);
+    out += fmt::format("{:<3} {:<9} {:<5} {:<17} {:<17} {:<13} {}\n", r, e.key, e.axis, fixed9(e.coord),
+                       fixed9(e.nominal), fmt::format("{:+.3f}", std::abs(change) < 5e-4 ? 0.0 : change), e.role);
   }
   return out;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_isg.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -10,8 +11,6 @@
 namespace ncpost::comp {
 
 namespace {
-
-constexpr double kDegPerRad = 57.295779513082320876798154814105;
 
 /// Counts of the list per model unit (mm or rad).
 double counts_per_unit(const AxisExport& a) { return a.rotary ? kIsgCountsPerDeg * kDegPerRad : kIsgCountsPerMm; }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_linuxcnc.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +13,6 @@ namespace ncpost::comp {
 
 namespace {
 
-constexpr double kDegPerRad = 57.295779513082320876798154814105;
 /// Decimals of the file: nominals, and trims of a linear / rotary axis.
 constexpr int kNominalDecimals = 6;
 constexpr int kLinearTrimDecimals = 7;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_machine.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include "ncpost/compensation/export_axis_table.hpp"
 
@@ -12,15 +13,13 @@ namespace ncpost::comp {
 
 namespace {
 
-constexpr double kDegPerRad = 57.295779513082320876798154814105;
-
 std::string vector_text(const Vec3d& v) {
   auto number = [](double x) { return x == 0.0 ? std::string("0") : fmt::format("{:.17g}", x); };
   return fmt::format("[{}, {}, {}]", number(v.x()), number(v.y()), number(v.z()));
 }
 
 /// Limits: 15 significant digits, so that -120° read in radians and written back is -120 again.
-std::string number_text(double x) { return x == 0.0 ? std::string("0") : fmt::format("{:.15g}", x); }
+std::string machine_file_number(double x) { return x == 0.0 ? std::string("0") : fmt::format("{:.15g}", x); }
 
 }  // namespace
 
@@ -100,8 +99,8 @@ std::vector<std::string> machine_axis_lines(const Axis& a) {
   }
   if (a.limits) {
     const double unit = a.is_rotary() ? kDegPerRad : 1.0;
-    lines.push_back(
-        fmt::format("limits = [{}, {}]", number_text(a.limits->min * unit), number_text(a.limits->max * unit)));
+    lines.push_back(fmt::format("limits = [{}, {}]", machine_file_number(a.limits->min * unit),
+                                machine_file_number(a.limits->max * unit)));
   }
   return lines;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_nodes.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +12,6 @@ namespace ncpost::comp {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 /// Intervals of the even grid of a smooth error (harmonics, polynomials): at most, for a table of the
 /// commanded position (as many as the rows allow), and at least, for an equidistant one.
 constexpr int kSmoothIntervalsMax = 1000;

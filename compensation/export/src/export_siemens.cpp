@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/export_siemens.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -12,8 +13,6 @@
 namespace ncpost::comp {
 
 namespace {
-
-constexpr double kDegPerRad = 57.295779513082320876798154814105;
 
 /// Decimals of the values: mm, degrees.
 constexpr int kLinearDecimals = 7;

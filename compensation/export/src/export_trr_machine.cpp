@@ -9,7 +9,7 @@ namespace ncpost::comp {
 namespace {
 
 /// Round-trips through the TOML reader: 17 significant digits.
-std::string number_text(double v) { return fmt::format("{:.17g}", v); }
+std::string exact_number(double v) { return fmt::format("{:.17g}", v); }
 
 /// A TOML basic string.
 std::string quoted(const std::string& s) {
@@ -43,17 +43,17 @@ std::string format_trr_machine_toml(const trr::Machine& m, const std::vector<std
   out += fmt::format(
       "\n[trr_xy]\nbase_radius = {}\nplatform_radius = {}\nlink_length = {}\nball_joint_height = {}\n"
       "tool_offset = {}\nmax_link_angle = {}\n",
-      number_text(g.base_radius_mm), number_text(g.platform_radius_mm), number_text(g.link_length_mm),
-      number_text(g.ball_joint_height_mm), number_text(g.tool_offset_mm),
-      number_text(rad_to_deg(g.max_link_angle_rad)));
+      exact_number(g.base_radius_mm), exact_number(g.platform_radius_mm), exact_number(g.link_length_mm),
+      exact_number(g.ball_joint_height_mm), exact_number(g.tool_offset_mm),
+      exact_number(rad_to_deg(g.max_link_angle_rad)));
   out += "\n[trr_xy.calibration]  # mm; ar, at, gp in rad (docs/trr-xy.md \"Error parameters\")\n";
   for (int k = 0; k < trr::kParameterCount; ++k)
-    if (m.calibration[k] != 0.0) out += fmt::format("{} = {}\n", trr::Errors::name(k), number_text(m.calibration[k]));
+    if (m.calibration[k] != 0.0) out += fmt::format("{} = {}\n", trr::Errors::name(k), exact_number(m.calibration[k]));
   const char* letters = "XYUVW";
   for (int i = 0; i < 5; ++i) {
     const std::optional<AxisLimits>& lim = i < 2 ? m.table_limits[i] : m.slider_limits[i - 2];
     out += fmt::format("\n[axes.{}]\ntype = \"linear\"\n", letters[i]);
-    if (lim) out += fmt::format("limits = [{}, {}]\n", number_text(lim->min), number_text(lim->max));
+    if (lim) out += fmt::format("limits = [{}, {}]\n", exact_number(lim->min), exact_number(lim->max));
   }
   return out;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/kinematics_left_out.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -13,8 +14,6 @@ namespace ncpost::comp {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegPerRad = 180.0 / kPi;
 constexpr double kUnlimitedLinearMm = 100.0;     ///< quarter points of an axis without limits
 constexpr double kUnlimitedTiltRad = kPi / 2.0;  ///< limits of a tilting axis without limits
 
@@ -40,7 +39,7 @@ int inner_rotary(const Machine& m) {
   return -1;
 }
 
-std::string number_text(double x) { return fmt::format("{:g}", std::abs(x) < 1e-9 ? 0.0 : x); }
+std::string short_number(double x) { return fmt::format("{:g}", std::abs(x) < 1e-9 ? 0.0 : x); }
 
 /// The family a term is listed under (export_machine.cpp groups the same way).
 std::string group_of(const ParameterSpec& s) {
@@ -76,7 +75,7 @@ std::string representative_poses_text(const Machine& machine) {
     const double unit = a.is_rotary() ? kDegPerRad : 1.0;
     std::vector<std::string> values;
     for (double v : axis_positions(a, a.is_rotary() && static_cast<int>(i) != inner))
-      values.push_back(number_text(v * unit));
+      values.push_back(short_number(v * unit));
     parts.push_back(fmt::format("{} {} {}", a.letter, fmt::join(values, "/"), a.is_rotary() ? "deg" : "mm"));
   }
   return fmt::format("{}", fmt::join(parts, ", "));

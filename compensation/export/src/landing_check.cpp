@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/compensation/landing_check.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -8,9 +9,7 @@
 
 namespace ncpost::comp {
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+namespace {}
 
 LandingCheck check_landing(const MachineModel& model, const AxisExport& a, const MotorCommand& motor,
                            bool both_directions) {

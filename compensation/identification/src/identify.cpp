@@ -15,7 +15,7 @@
 namespace ncpost::comp {
 namespace {
 
-void stats(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
+void residual_stats_um(const Eigen::VectorXd& r, double& rms_um, double& max_um) {
   rms_um = r.size() ? 1e3 * std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
   max_um = r.size() ? 1e3 * r.cwiseAbs().maxCoeff() : 0.0;
 }
@@ -51,7 +51,7 @@ double typical_size(const Machine& m, const ParameterSpec& s) {
 /// A null vector's component below this is left out of the null direction ...
 constexpr double kNullComponent = 1e-12;
 /// ... and below this out of the combinations reported for a pinned parameter.
-constexpr double kCombinationWeight = 0.05;
+constexpr double kCombinationWeightBallbar = 0.05;
 
 /// Row weights of the fit (IdentifyOptions::set_weights), scaled to rms 1; ones without weights.
 Eigen::VectorXd row_weights(const std::vector<MeasurementSet>& sets, const IdentifyOptions& o, Eigen::Index m_count) {
@@ -134,7 +134,7 @@ void describe_identifiability(const RankAnalysis& prior_rank, const std::vector<
     std::string text;
     const double up = v[col] / prior_rank.column_norms[col];
     for (Eigen::Index c = 0; c < v.size(); ++c) {
-      if (c == col || std::abs(v[c]) < kCombinationWeight || prior_rank.column_norms[c] <= 0.0) continue;
+      if (c == col || std::abs(v[c]) < kCombinationWeightBallbar || prior_rank.column_norms[c] <= 0.0) continue;
       const double coef = -(v[c] / prior_rank.column_norms[c]) / up;
       const std::string& kname = names[static_cast<std::size_t>(free[static_cast<std::size_t>(c)])];
       text += fmt::format("{}{} stands for {} {} {:.6g}·{}", text.empty() ? "" : "; ", kname, kname,
@@ -156,8 +156,8 @@ void file_residuals(const std::vector<MeasurementSet>& sets, const Eigen::Vector
     f.type = s.type;
     const Eigen::Index len = static_cast<Eigen::Index>(s.rows.size()) * s.values_per_row();
     f.values = static_cast<std::size_t>(len);
-    stats(r0.segment(at, len), f.rms_nominal_um, f.max_nominal_um);
-    stats(r.segment(at, len), f.rms_after_um, f.max_after_um);
+    residual_stats_um(r0.segment(at, len), f.rms_nominal_um, f.max_nominal_um);
+    residual_stats_um(r.segment(at, len), f.rms_after_um, f.max_after_um);
     res.files.push_back(f);
     at += len;
   }
@@ -209,7 +209,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 
   const Eigen::VectorXd r0 = prob.residuals(values);
   res.nominal = prob.predictions(values);
-  stats(r0, res.rms_nominal_um, res.max_nominal_um);
+  residual_stats_um(r0, res.rms_nominal_um, res.max_nominal_um);
   const Eigen::VectorXd row_weight = row_weights(sets, o, r0.size());
 
   // 1. identifiability at the prior
@@ -245,7 +245,7 @@ IdentifyResult identify(const Machine& m, const std::vector<MeasurementSet>& set
 
   res.fitted = prob.predictions(values);
   const Eigen::VectorXd r = prob.residuals(values);  // statistics unweighted, in mm
-  stats(r, res.rms_after_um, res.max_after_um);
+  residual_stats_um(r, res.rms_after_um, res.max_after_um);
   file_residuals(sets, r0, r, res);
   return res;
 }

@@ -30,7 +30,7 @@ int position_in(const std::vector<int>& side, int axis) {
   return it == side.end() ? -1 : static_cast<int>(it - side.begin());
 }
 
-double round_to(double v, double quantum) {
+double rounded_to_quantum(double v, double quantum) {
   const double r = std::round(v / quantum) * quantum;
   return r == 0.0 ? 0.0 : r;
 }
@@ -74,13 +74,13 @@ std::vector<double> laser_targets(const Machine& m, int j, const LaserPlanOption
     // a grid through home, plus the travel ends where they are more than a quarter step away
     const double q = o.rounding.linear_mm;
     for (double k = std::ceil(lo / o.step_mm - kStepSlack); k * o.step_mm <= hi + kStepSlack; k += 1.0)
-      t.push_back(round_to(k * o.step_mm, q));
-    if (t.empty() || t.front() - lo > kEndBeyondGridSteps * o.step_mm) t.insert(t.begin(), round_to(lo, q));
-    if (t.back() < hi - kEndBeyondGridSteps * o.step_mm) t.push_back(round_to(hi, q));
+      t.push_back(rounded_to_quantum(k * o.step_mm, q));
+    if (t.empty() || t.front() - lo > kEndBeyondGridSteps * o.step_mm) t.insert(t.begin(), rounded_to_quantum(lo, q));
+    if (t.back() < hi - kEndBeyondGridSteps * o.step_mm) t.push_back(rounded_to_quantum(hi, q));
   } else {
     const int n = static_cast<int>(std::floor((hi - lo) / o.step_mm + kStepSlack)) + 1;
     const double start = lo + 0.5 * ((hi - lo) - (n - 1) * o.step_mm);
-    for (int i = 0; i < n; ++i) t.push_back(round_to(start + i * o.step_mm, o.rounding.linear_mm));
+    for (int i = 0; i < n; ++i) t.push_back(rounded_to_quantum(start + i * o.step_mm, o.rounding.linear_mm));
   }
   return t;
 }
@@ -102,7 +102,8 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
       commanded[n] = moves_abbe_offset(m, j, k);
       if (commanded[n]) {
         const auto [lo, hi] = travel(m, k, o.margin_mm);
-        at[n] = {round_to(lo + 0.25 * (hi - lo), kLineGridMm), round_to(lo + 0.75 * (hi - lo), kLineGridMm)};
+        at[n] = {rounded_to_quantum(lo + 0.25 * (hi - lo), kLineGridMm),
+                 rounded_to_quantum(lo + 0.75 * (hi - lo), kLineGridMm)};
       } else {
         at[n] = {-o.reflector_offset_mm, o.reflector_offset_mm};
       }

@@ -25,7 +25,7 @@ constexpr double kUntimedRowS = 0.1;
 /// rows' time step, and the last row is read for this long too (s).
 constexpr double kReadingS = 1.0;
 
-std::string fmt_num(double v) { return fmt::format("{:g}", v); }
+std::string short_text(double v) { return fmt::format("{:g}", v); }
 
 /// The dwell that reads row k of the set.
 void read_row(PlanProgram& p, const MeasurementSet& s, std::size_t k) {
@@ -106,11 +106,11 @@ void describe_set(PlanProgram& p, const NamedPlan& named, const PlanProgramOptio
   p.comment(fmt::format("--- set {}: {} ---", named.name, s.meta("test")));
   if (s.type == MeasurementType::ballbar)
     p.comment(fmt::format("table ball at {:.4f} mm, bar {} mm, tool length {} mm", s.table_ball_mm,
-                          fmt_num(s.bar_length_mm), fmt_num(s.tool_length_mm)));
+                          short_text(s.bar_length_mm), short_text(s.tool_length_mm)));
   if (s.type == MeasurementType::sphere)
     p.comment(
         fmt::format("sphere centre at {:.4f} mm: the stylus turns {} mm from it, moves to it along the probe axis only",
-                    s.sphere_mm, fmt_num(o.clearance_mm)));
+                    s.sphere_mm, short_text(o.clearance_mm)));
 }
 
 }  // namespace

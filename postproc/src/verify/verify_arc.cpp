@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ncpost/postproc/verify/verify_arc.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,6 @@
 
 namespace ncpost {
 namespace {
-
-constexpr double kTwoPi = 2.0 * kPi;
 
 /// The part of `v` in the plane normal to the unit `n`.
 Vec3d in_plane(const Vec3d& v, const Vec3d& n) { return v - v.dot(n) * n; }

@@ -11,6 +11,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "ncpost/kinematics/units.hpp"
+
 namespace ncpost {
 
 template <class S>
@@ -106,9 +108,5 @@ struct Rigid {
 using Rigidd = Rigid<double>;
 using Vec3d = Vec3<double>;
 using Mat3d = Mat3<double>;
-
-constexpr double kPi = 3.14159265358979323846;
-inline double deg_to_rad(double deg) { return deg * (kPi / 180.0); }
-inline double rad_to_deg(double rad) { return rad * (180.0 / kPi); }
 
 }  // namespace ncpost

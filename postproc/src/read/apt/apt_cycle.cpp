@@ -2,6 +2,7 @@
 // CYCLE/ statements of NX/CATIA APT, Creo and SOLIDWORKS CAM (apt_cycle.hpp). The kinds and the
 // parameter words are tables; anything else stops the post naming the line.
 #include "ncpost/postproc/read/apt/apt_cycle.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +10,6 @@
 
 namespace ncpost::cl {
 namespace {
-
-constexpr double kMmPerInch = 25.4;
 
 /// The leading words of a CYCLE statement that name its kind, as the CAM systems write them.
 struct KindEntry {

@@ -2,6 +2,7 @@
 // Meaning of APT statements: units, motions, feeds, tool, spindle, coolant, stops, dwells,
 // circles, cycles, comments. Unknown statements become Unsupported records with a notice.
 #include <fmt/format.h>
+#include "ncpost/kinematics/units.hpp"
 
 #include <cmath>
 #include <deque>
@@ -19,7 +20,6 @@ namespace {
 /// The largest DEGREE or ORDER read from a NURBS record (the curve check then wants 1 to 30).
 constexpr double kMaxNurbsOrder = 1000.0;
 
-constexpr double kMmPerInch = 25.4;
 constexpr double kMmPerMetre = 1000.0;  // SPINDL/v,SMM: v in m/min
 constexpr double kMmPerFoot = 304.8;    // SPINDL/v,SFM: v in ft/min
 constexpr double kSecondsPerMinute = 60.0;

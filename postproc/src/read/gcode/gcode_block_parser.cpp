@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "ncpost/postproc/read/gcode/gcode_block.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -58,8 +59,6 @@ template <class Ctx>
 ParseState& state(const Ctx& ctx) {
   return x3::get<state_tag>(ctx).get();
 }
-
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
 const auto on_delete = [](auto& ctx) { state(ctx).block.deleted = true; };
 
@@ -169,8 +168,6 @@ const auto colon_number = x3::rule<struct colon_tag>{"colon program number"} = x
 const auto block_grammar = -x3::lit('/')[on_delete] >> -(program_name | colon_number) >>
                            *(paren_comment | keyword | message | word) >> -semicolon_comment;
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 /// Words that follow the block number of a Heidenhain conversational (plain-language) block.
 constexpr std::string_view kHeidenhainWords[] = {
     "BEGIN PGM", "END PGM", "BLK FORM", "TOOL CALL", "TOOL DEF", "CYCL DEF", "CYCL CALL", "LBL ", "CALL LBL", "FN ",
@@ -230,14 +227,12 @@ std::string explain(const ParseState& s, Iterator at, Iterator end, const char* 
   return fmt::format("expected {}, found '{}'", expected, c);
 }
 
-bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
 /// A name where a word was expected (`MCALL`, `CYCLE81(...)`, `TRANS`): what it is, when known
 /// (empty otherwise).
 std::string keyword_message(Iterator at, Iterator end) {
   Iterator p = at;
   std::string name;
-  while (p != end && (is_letter(*p) || is_digit(*p) || *p == '_') && name.size() < 32) name += upper(*p++);
+  while (p != end && (is_alpha(*p) || is_digit(*p) || *p == '_') && name.size() < 32) name += upper(*p++);
   struct Known {
     const char* name;
     const char* what;
@@ -320,7 +315,7 @@ void parse_block(std::string_view line, Block& block, const std::string& file, i
     if (e.which() == "number") {
       const char letter = block.words.back().letter;
       const Iterator letter_at = s.line_begin + block.words.back().column - 1;
-      if (letter != 'O' && at == letter_at + 1 && at != end && is_letter(*at))
+      if (letter != 'O' && at == letter_at + 1 && at != end && is_alpha(*at))
         if (const std::string known = keyword_message(letter_at, end); !known.empty()) s.fail(letter_at, known);
       if (at != end && (*at == '#' || *at == '[' || *at == '=' || *at == '<'))
         s.fail(at, explain(s, at, end, "a number"));

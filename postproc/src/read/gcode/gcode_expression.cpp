@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The parameter and expression evaluator (see gcode_expression.hpp for the rules).
 #include "ncpost/postproc/read/gcode/gcode_expression.hpp"
+#include "ncpost/kinematics/units.hpp"
+#include "read/char_scan.hpp"
 
 #include <fmt/format.h>
 
@@ -9,24 +11,6 @@
 
 namespace ncpost::gcode {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
-
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
-void skip_blanks(std::string_view s, std::size_t& at) {
-  while (at < s.size() && (s[at] == ' ' || s[at] == '\t')) ++at;
-}
-
-/// The upper-case letters at `at` (a function or operator name), not consumed.
-std::string word_at(std::string_view s, std::size_t at) {
-  std::string w;
-  while (at < s.size() && is_alpha(s[at]) && w.size() < 8) w += upper(s[at++]);
-  return w;
-}
 
 bool whole(double v) { return std::abs(v - std::round(v)) < 1e-9; }
 

@@ -8,6 +8,7 @@
 
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/read/gcode/gcode_macro.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -50,11 +51,6 @@ class HeadLines {
 };
 
 constexpr std::string_view kListing = "Information listing";
-
-bool is_percent_line(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first != std::string_view::npos && line[first] == '%';
-}
 
 }  // namespace
 

@@ -11,19 +11,10 @@
 #include <vector>
 
 #include "ncpost/machines/input_error.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::gcode {
 namespace {
-
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-std::string word_at(std::string_view s, std::size_t at) {
-  std::string w;
-  while (at < s.size() && is_alpha(s[at]) && w.size() < 8) w += upper(s[at++]);
-  return w;
-}
 
 bool is_keyword(const std::string& w) {
   return w == "IF" || w == "WHILE" || w == "GOTO" || w == "END" || w == "DO" || w == "THEN";
@@ -44,10 +35,6 @@ std::size_t comment_end(std::string_view s, std::size_t at) {
 std::size_t string_end(std::string_view s, std::size_t at) {
   const std::size_t close = s.find('"', at + 1);
   return close == std::string_view::npos ? s.size() : close + 1;
-}
-
-void skip_blanks(std::string_view s, std::size_t& at) {
-  while (at < s.size() && (s[at] == ' ' || s[at] == '\t')) ++at;
 }
 
 /// One line being rewritten.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Modal interpretation of RS274 blocks (see gcode_modal.hpp for what is supported).
 #include "ncpost/postproc/read/gcode/gcode_modal.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -15,7 +16,6 @@
 namespace ncpost::gcode {
 namespace {
 
-constexpr double kMmPerInch = 25.4;
 using cl::kMaxDwellSeconds;
 /// IntegerDwell::automatic: a time without a decimal point from this value on is milliseconds
 /// (as seconds it would be a dwell of minutes); below it, down to 1, both readings are plausible.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "read/gcode/gcode_oword.hpp"
+#include "read/char_scan.hpp"
 
 #include <array>
 #include <cctype>
@@ -31,12 +32,6 @@ constexpr std::array<Named, 15> kKeywords{{{"sub", K::sub},
 
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-
-void skip_blanks(std::string_view s, std::size_t& at) {
-  while (at < s.size() && is_blank(s[at])) ++at;
-}
 
 /// Past a leading '/' and N number.
 std::size_t statement_start(std::string_view line) {

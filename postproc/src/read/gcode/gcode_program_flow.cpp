@@ -7,16 +7,10 @@
 #include <optional>
 
 #include "ncpost/machines/input_error.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::gcode {
 namespace {
-
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
-void skip_blanks(std::string_view s, std::size_t& at) {
-  while (at < s.size() && (s[at] == ' ' || s[at] == '\t')) ++at;
-}
 
 /// The block number N of `line` (`N10`, `/N0010`), or nullopt.
 std::optional<long> block_number(std::string_view line) {
@@ -32,12 +26,6 @@ std::optional<long> block_number(std::string_view line) {
   while (at < line.size() && is_digit(line[at]) && digits < 12) n = n * 10 + (line[at++] - '0'), ++digits;
   if (digits == 0) return std::nullopt;
   return n;
-}
-
-bool is_percent_line(std::string_view line) {
-  std::size_t at = 0;
-  skip_blanks(line, at);
-  return at < line.size() && line[at] == '%';
 }
 
 }  // namespace

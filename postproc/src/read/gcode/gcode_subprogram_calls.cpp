@@ -11,14 +11,13 @@
 #include "ncpost/machines/input_error.hpp"
 #include "read/gcode/gcode_oword.hpp"
 #include "read/gcode/gcode_subprogram_files.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::gcode {
 namespace {
 
 constexpr long kMaxProgramNumber = 99'999'999;
 constexpr int kMaxRepeats = 9999;
-
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 /// The number after the letter `letter` (or ':' for 'O') that starts the statement of `line`
 /// (past blanks and a '/'; for 'O' also past an N number), or -1.
@@ -53,11 +52,6 @@ bool opens(std::string_view line, const std::string& label) {
   if (label[0] == 'N') return leading_number(line, 'N') == std::stol(label.substr(1));
   const std::optional<OWord> w = read_o_word(line);
   return w && w->keyword == OWord::Keyword::sub && w->label == label;
-}
-
-bool is_percent_line(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first != std::string_view::npos && line[first] == '%';
 }
 
 }  // namespace

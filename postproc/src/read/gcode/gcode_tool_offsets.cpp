@@ -14,7 +14,7 @@ namespace {
 using W = cl::ToolOffsetWrite;
 
 /// Largest register (P) and value (mm) accepted.
-constexpr double kMaxRegister = 1e6;
+constexpr double kMaxOffsetRegister = 1e6;
 constexpr double kMaxValueMm = 1e5;
 
 std::string_view meaning(W w) {
@@ -62,7 +62,7 @@ cl::ToolOffset read_tool_offset(const std::map<int, cl::ToolOffsetWrite>& writes
                                   "table): post with the --dialect of the program's control (fanuc, haas, linuxcnc), "
                                   "whose [input] tool_offsets says",
                                   b.l, b.l));
-  if (!b.p || b.p->value < 1.0 || b.p->value > kMaxRegister || b.p->value != std::floor(b.p->value))
+  if (!b.p || b.p->value < 1.0 || b.p->value > kMaxOffsetRegister || b.p->value != std::floor(b.p->value))
     at.fail(b.p ? b.p->column : b.column, fmt::format("G10 L{} needs P, the register (tool) it sets: a whole number "
                                                       "from 1",
                                                       b.l));

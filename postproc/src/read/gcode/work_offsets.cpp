@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Work offset files: TOML or a LinuxCNC var-file subset (see work_offsets.hpp).
 #include "ncpost/postproc/read/gcode/work_offsets.hpp"
+#include "ncpost/kinematics/units.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -17,8 +18,6 @@
 namespace ncpost::gcode {
 namespace {
 
-constexpr double kMmPerInch = 25.4;
-constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 constexpr int kMaxExtendedOffset = 300;  ///< G54.1 P1 .. P300 (Fanuc 30i; 48 on a 0i)
 constexpr double kMaxOffsetMm = 1e6;     ///< beyond: a typing slip, not a machine
 constexpr int kVarFirst = 5221;          ///< LinuxCNC: G54's X
@@ -27,7 +26,7 @@ constexpr int kVarOffsets = 9;           ///< G54 .. G59.3
 
 const char* const kRegisterNames[kVarOffsets] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
 
-std::string upper(std::string_view s) {
+std::string upper_without_blanks(std::string_view s) {
   std::string out;
   for (const char c : s)
     if (c != ' ' && c != '\t') out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -40,7 +39,7 @@ using toml_input::at;
 OffsetValues read_values(const toml::table& t, double length_scale, const std::string& file, const std::string& name) {
   OffsetValues v;
   for (const auto& [key, node] : t) {
-    const std::string letter = upper(key.str());
+    const std::string letter = upper_without_blanks(key.str());
     const std::size_t slot = letter.size() == 1 ? std::string_view("XYZABC").find(letter[0]) : std::string_view::npos;
     if (slot == std::string_view::npos)
       throw InputError(at(file, key.source()),
@@ -127,7 +126,7 @@ bool looks_like_var_file(const std::string& text) {
 }  // namespace
 
 std::optional<std::string> work_offset_name(std::string_view text) {
-  const std::string s = upper(text);
+  const std::string s = upper_without_blanks(text);
   for (const char* name : kRegisterNames)
     if (s == name) return std::string(name);
   if (s.rfind("G54.1P", 0) != 0) return std::nullopt;

@@ -8,14 +8,12 @@
 #include <charconv>
 
 #include "read/klartext/klartext_q.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::klartext {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
 
 /// Statements of two words: the first word and the ones that may follow it.
 struct TwoWord {
@@ -47,13 +45,13 @@ class Cursor {
   }
   std::string letters() {
     std::string s;
-    while (!done() && is_letter(line_[at_])) s += upper(line_[at_++]);
+    while (!done() && is_alpha(line_[at_])) s += upper(line_[at_++]);
     return s;
   }
   /// The letters at the cursor, without moving.
   std::string peek_letters() const {
     std::string s;
-    for (std::size_t i = at_; i < line_.size() && is_letter(line_[i]); ++i) s += upper(line_[i]);
+    for (std::size_t i = at_; i < line_.size() && is_alpha(line_[i]); ++i) s += upper(line_[i]);
     return s;
   }
   void advance(std::size_t n) { at_ += n; }
@@ -101,7 +99,7 @@ class Cursor {
   std::size_t at_ = 0;
 };
 
-std::string trimmed(std::string_view s) {
+std::string trimmed_cr(std::string_view s) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
   return std::string(s);
@@ -114,8 +112,8 @@ void read_statement(Cursor& c, Block& b) {
     c.advance(1);
     b.statement = "*";
     b.comment_column = b.column;
-    std::string text = trimmed(c.rest());
-    if (text.rfind("- ", 0) == 0 || text == "-") text = trimmed(text.substr(1));
+    std::string text = trimmed_cr(c.rest());
+    if (text.rfind("- ", 0) == 0 || text == "-") text = trimmed_cr(text.substr(1));
     b.comment = text;
     c.advance(c.rest().size());
     return;
@@ -245,7 +243,7 @@ Block parse_block(std::string_view line, const std::string& file, int line_numbe
     if (line[i] == '"') quoted = !quoted;
     if (line[i] == ';' && !quoted) {
       b.comment_column = static_cast<int>(i) + 1;
-      b.comment = trimmed(line.substr(i + 1));
+      b.comment = trimmed_cr(line.substr(i + 1));
       line = line.substr(0, i);
       break;
     }
@@ -269,7 +267,7 @@ Block parse_block(std::string_view line, const std::string& file, int line_numbe
   if (c.done()) return b;
   read_statement(c, b);
   if (b.statement == "*") return b;
-  b.text = trimmed(c.rest());
+  b.text = trimmed_cr(c.rest());
   if (!has_words(b.statement)) return b;  // refused by name by the reader; its words are not read
   for (c.skip_blanks(); !c.done(); c.skip_blanks()) read_word(c, b);
   return b;

@@ -6,21 +6,10 @@
 #include <cctype>
 
 #include "read/klartext/klartext_q.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost::klartext {
 namespace {
-
-std::string trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return std::string(s);
-}
-
-std::string upper_of(std::string_view s) {
-  std::string u;
-  for (char c : s) u += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
 
 /// `text` split at the blank-separated word `word` (upper case): left, right; nullopt without it.
 std::optional<std::pair<std::string, std::string>> split_at_word(std::string_view text, std::string_view word) {

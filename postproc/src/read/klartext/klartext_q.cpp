@@ -2,6 +2,7 @@
 // Q parameters and formulas of Klartext, evaluated by the G-code expression evaluator
 // (klartext_q.hpp).
 #include "read/klartext/klartext_q.hpp"
+#include "read/char_scan.hpp"
 
 #include <fmt/format.h>
 
@@ -13,22 +14,7 @@
 namespace ncpost::klartext {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
-
-std::string upper_of(std::string_view s) {
-  std::string u;
-  for (char c : s) u += upper(c);
-  return u;
-}
-
-std::string trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return std::string(s);
-}
 
 /// A formula function: written before its argument, rewritten as `prefix arg suffix`.
 struct Function {
@@ -62,7 +48,7 @@ class Rewriter {
         emit("**", at_++);
       } else if (c == '%') {
         return fail(error, "'%' (the remainder) in a Q formula is not read");
-      } else if (is_letter(c)) {
+      } else if (is_alpha(c)) {
         if (!word(error)) return false;
       } else if (is_digit(c) || c == '.' || c == '+' || c == '-' || c == '*' || c == '/' || c == ' ' || c == '\t') {
         emit(std::string(1, c), at_++);
@@ -100,7 +86,7 @@ class Rewriter {
     }
     std::string name;
     const std::size_t start = at_;
-    while (at_ < in_.size() && is_letter(in_[at_])) name += upper(in_[at_++]);
+    while (at_ < in_.size() && is_alpha(in_[at_])) name += upper(in_[at_++]);
     if (name == "PI") {
       emit("3.14159265358979323846", start);
       return true;
@@ -166,7 +152,7 @@ std::optional<std::string> q_name_at(std::string_view text, std::size_t& length)
   if (p < text.size() && (upper(text[p]) == 'L' || upper(text[p]) == 'R')) name += upper(text[p++]);
   const std::size_t digits = p;
   while (p < text.size() && is_digit(text[p])) ++p;
-  if (p == digits || p - digits > 5 || (p < text.size() && is_letter(text[p]))) return std::nullopt;
+  if (p == digits || p - digits > 5 || (p < text.size() && is_alpha(text[p]))) return std::nullopt;
   const long n = std::stol(std::string(text.substr(digits, p - digits)));
   if (n > (name == "Q" ? 1999 : 499)) return std::nullopt;
   length = p;

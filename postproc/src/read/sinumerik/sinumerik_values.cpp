@@ -13,7 +13,7 @@
 namespace ncpost::sinumerik {
 namespace {
 
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
 
 std::string key_of(const std::string& name) {
   std::string k;
@@ -141,7 +141,7 @@ double Values::evaluate(std::string_view e) const {
 /// evaluator's syntax, appended to `out`; the index after it.
 std::size_t Values::name_token(std::string_view e, std::size_t i, std::string& out, std::vector<Level>& levels) const {
   std::size_t j = i;
-  while (j < e.size() && is_name_char(e[j])) ++j;
+  while (j < e.size() && is_identifier_char(e[j])) ++j;
   const std::string name = upper(e.substr(i, j - i));
   std::size_t k = j;
   while (k < e.size() && e[k] == ' ') ++k;
