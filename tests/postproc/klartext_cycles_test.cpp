@@ -212,3 +212,45 @@ TEST_CASE("klartext: a decimal comma (X+50,022, older TNC programs) is refused n
   CHECK_THAT(refusal(text), Catch::Contains("cycles.h:4:") && Catch::Contains("'50,022': a decimal comma") &&
                                 Catch::Contains("(50.022)"));
 }
+
+TEST_CASE("klartext M89: the cycle after every positioning block until M99 (which calls it once more)") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 203 UNIVERSAL DRILLING ~\n"
+                           "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-6 ;DEPTH ~\n"
+                           "  Q206=+150 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q202=+6 ;PLUNGING DEPTH ~\n"
+                           "  Q210=+0 ;DWELL TIME AT TOP ~\n"
+                           "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+20 ;2ND SET-UP CLEARANCE ~\n"
+                           "  Q212=+0 ;DECREMENT ~\n"
+                           "  Q213=+0 ;BREAKS ~\n"
+                           "  Q205=+0 ;MIN. PLUNGING DEPTH ~\n"
+                           "  Q211=+0 ;DWELL TIME AT DEPTH ~\n"
+                           "  Q208=+1000 ;RETRACTION FEED RATE ~\n"
+                           "  Q256=+0.2 ;DIST FOR CHIP BRKNG\n"
+                           "4 L X+10 Y+10 R0 FMAX M89\n"
+                           "5 L X+20 R0 FMAX\n"
+                           "6 L Y+20 R0 FMAX\n"
+                           "7 L X+10 R0 FMAX M99\n"
+                           "8 L X+0 Y+0 R0 FMAX\n"
+                           "9 L Z+50 FMAX M5\n"
+                           "10 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  check_cycles(text, nc);
+  // four holes (lines 4 to 7), none after M99 (line 8): the input's and the output's ends at the depth
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::vmcl600_setup().workpiece_origin_mm;
+  job.tool_length_mm = test::vmcl600_setup().tool_length_mm;
+  const test::ExecMachine m = test::ExecMachine::load(test::source(kMachine));
+  test::KlartextInterpreter input(m, job, {});
+  const std::vector<test::KlartextEnd> ends = input.run(text);
+  double deepest = 1e9;
+  for (const test::KlartextEnd& e : ends) deepest = std::min(deepest, e.tip_W.z());
+  int in_bottoms = 0, out_bottoms = 0;
+  for (const test::KlartextEnd& e : ends) in_bottoms += std::abs(e.tip_W.z() - deepest) < 1e-9;
+  const test::Executor out(test::source(kMachine), job, nc);
+  for (const test::ExecBlock& b : out.blocks) out_bottoms += std::abs(out.at(b, 1.0).tip_W.z() - deepest) < 1e-6;
+  CHECK(in_bottoms == 4);
+  CHECK(out_bottoms == 4);
+}

@@ -210,3 +210,18 @@ TEST_CASE("klartext Q parameters, a section repeat and a subprogram: executed as
   CHECK(reached(test::V3(30, 0, 5)));
   CHECK(reached(test::V3(-20, -5, 5)));
 }
+
+TEST_CASE(
+    "klartext PLANE POINTS ... STAY SEQ+ on the AC trunnion: the plane through three points, the control's angles") {
+  const Case ac{"ac-trunnion.toml", setup_of(100.0, Vec3d(0, 0, 0)), ac_angles};
+  const std::string text =
+      plane_program("PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+10 P2Y+10 P2Z+0 P3X-5 P3Y+5 P3Z+5 STAY SEQ+", "A+Q120 C+Q122");
+  check_reposted(text, ac);
+  // by hand: X = (1, 1, 0)/sqrt2, P3 - P1 = (-5, 5, 5) is square to X, so Y = (-1, 1, 1)/sqrt3 and the
+  // tool axis Z = X x Y = (1, -1, 2)/sqrt6: A = acos(2/sqrt6) = 35.26 deg (SEQ+), C = atan2(1, -1) = 135 deg
+  const double a = std::acos(2.0 / std::sqrt(6.0)) / kDeg;
+  bool found = false;
+  for (const auto& w : rotary_words(post_text(text, ac), ac))
+    found = found || (std::abs(w.at('A') - a) < 1e-3 && std::abs(std::remainder(w.at('C') - 135.0, 360.0)) < 1e-3);
+  CHECK(found);
+}

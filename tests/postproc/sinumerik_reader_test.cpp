@@ -352,10 +352,19 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
       {"G0 X0 Y0 Z0\nCIP X1 Y1 I1=0 J1=1\nM30\n", "CIP (a circle through an intermediate point) is not read", 2},
       {"G0 X0 Y0 Z0\nWHILE 1\nM30\n", "WHILE without its ENDWHILE", 2},
       {"G0 X0 Y0 Z0\nGOTOF NOWHERE\nM30\n", "no label NOWHERE", 2},
-      {"G0 X0 Y0 Z0\nCYCLE800(0,\"TC\",0,27,0,0,0,10,20,30,0,0,0,1)\nM30\n", "CYCLE800 _MODE=27", 2},
+      {"G0 X0 Y0 Z0\nCYCLE800(0,\"TC\",0,64,0,0,0,10,20,30,0,0,0,1)\nM30\n", "CYCLE800 _MODE=64", 2},
+      {"G0 X0 Y0 Z0\nCYCLE800(0,\"TC\",0,24,0,0,0,10,20,30,0,0,0,1)\nM30\n", "axis 1 of the sequence is not set", 2},
       {"G0 X0 Y0 Z0\nG1 X=FOO F1\nM30\n", "FOO is not a defined variable", 2},
       {"G0 X0 Y0 Z0\nH5\nM30\n", "H (an auxiliary function", 2},
       {"DEF INT K\nM30\n", "DEF K: a name starts with two letters", 1},
+      {"G0 X0 Y0 Z9 F100\nCYCLE86(10,0,2,-5,,0,3,0.2,0,0,0)\nM30\n", "CYCLE86 with a lift-off", 2},
+      {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-5,,-0.8,0,0,1,1)\nM30\n", "CYCLE83 DAM < 0", 2},
+      {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-5,,1,0,0,1,2)\nM30\n", "CYCLE83 VARI=2", 2},
+      {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-25,,1,0,0,1,1)\nM30\n", "first depth -25 lies below", 2},
+      {"G0 X0 Y0 Z9\nCYCLE85(10,0,2,-5,,0,100,200)\nM30\n", "CYCLE85 before any F", 2},
+      {"G0 X0 Y0 Z9 F100\nCYCLE85(10,0,2,-5,,0,0,200)\nM30\n", "CYCLE85: FFR=0", 2},
+      {"G0 X0 Y0 Z9 F100\nG18\nCYCLE81(10,0,2,-5)\nM30\n", "CYCLE81 under G18", 3},
+      {"G0 X0 Y0 Z9 F100\nMCALL CYCLE84(10,0,2,-5)\nM30\n", "other than CYCLE81, 82, 83, 85 or 86", 2},
   };
   for (const Case& c : cases) {
     INFO(c.text);

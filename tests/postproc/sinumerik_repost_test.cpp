@@ -74,6 +74,14 @@ void check_ends(const std::string& input, const std::string& output) {
   }
 }
 
+/// The program re-posted, every input block end checked against it (check_ends).
+std::string reposted_and_checked(const std::string& text, bool rtcp) {
+  const std::string out = repost(text, rtcp);
+  INFO(out);
+  check_ends(text, out);
+  return out;
+}
+
 /// The words in force after the first output block that turns A away from 0.
 std::map<char, double> first_tilt(const std::string& output) {
   const test::Executor ex(test::source("machines/ac-trunnion.toml"), exec_job(), output);
@@ -194,4 +202,93 @@ TEST_CASE(
   const test::ExecPose pose = test::forward(m, exec_job(), test::V3::Zero(), {{'A', got.at('A')}, {'C', got.at('C')}});
   CHECK((pose.axis_W - normal).norm() < kAxisTolerance);
   CHECK(got.at('A') < 0);
+}
+
+TEST_CASE("sinumerik re-post: the tests' CYCLE83 infeeds follow the manual's degression rule (hand-computed)") {
+  // first 10 from RFP, DAM 3, 32 deep: 10, 7, 4, then 3 while more than 6 is left (3, 3), the last 5 split 2.5 + 2.5
+  const std::vector<double> want = {10, 7, 4, 3, 3, 2.5, 2.5};
+  const std::vector<double> got = test::cycle83_infeeds(10, 32, 3);
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) CHECK(got[i] == Approx(want[i]).margin(1e-12));
+  // no degression: every infeed as long as the first, the last what is left
+  CHECK(test::cycle83_infeeds(5, 12, 0) == std::vector<double>{5, 5, 2});
+}
+
+TEST_CASE(
+    "sinumerik re-post: MCALL CYCLE83 (chip removal, degression), CYCLE83 (chip breaking), CYCLE85, CYCLE86 as "
+    "motions") {
+  const std::string text =
+      "N10 G17 G90 G71 G94 T1 M6\n"
+      "N20 G0 X0 Y0 Z50 A0 C0 S2000 M3\n"
+      "N30 G1 Z40 F200\n"
+      "N40 MCALL CYCLE83(20, 0, 2, -32, , -10, , 3, 0.2, 0.1, 0.5, 1)\n"
+      "N50 G0 X10 Y5\n"
+      "N60 X30 Y5\n"
+      "N70 MCALL\n"
+      "N80 G0 X30 Y-20 Z20\n"
+      "N90 CYCLE83(20, 0, 2, -12, , -5, , 0, 0, 0, 1, 0, 0, 0, 0.5)\n"
+      "N100 G0 X0 Y-20\n"
+      "N110 CYCLE85(20, 0, 2, -8, , 0.3, 150, 400)\n"
+      "N120 G1 X-10 Y-20\n"
+      "N130 G0 X-20 Y-20\n"
+      "N140 CYCLE86(20, 0, 2, , 6, 0.5, 3, 0, 0, 0, 0)\n"
+      "N150 G0 Z50\n"
+      "N160 M30\n";
+  const std::string out = reposted_and_checked(text, false);
+  // the feeds: the first infeed at F * FRF (100), the later ones at F (200); CYCLE85 in at FFR, out at
+  // RFF; after the cycle the programmed F (200) again
+  const test::ExecMachine m = test::ExecMachine::load(test::source("machines/ac-trunnion.toml"));
+  const test::Executor ex(test::source("machines/ac-trunnion.toml"), exec_job(), out);
+  const auto feed_ending_at = [&](double x, double y, double z) {
+    const test::V3 tip = test::forward(m, exec_job(), test::V3(x, y, z), {{'A', 0.0}, {'C', 0.0}}).tip_W;
+    for (const auto& b : ex.blocks) {
+      if (b.kind == test::ExecBlock::Kind::linear && (ex.at(b, 1.0).tip_W - tip).norm() < 1e-6) return b.feed;
+    }
+    return -1.0;
+  };
+  CHECK(feed_ending_at(10, 5, -10) == Approx(100));
+  CHECK(feed_ending_at(10, 5, -17) == Approx(200));
+  CHECK(feed_ending_at(30, 5, -32) == Approx(200));
+  CHECK(feed_ending_at(0, -20, -8) == Approx(150));
+  CHECK(feed_ending_at(0, -20, 2) == Approx(400));
+  CHECK(feed_ending_at(-10, -20, 20) == Approx(200));
+}
+
+TEST_CASE("sinumerik re-post: MCALL CYCLE83 and CYCLE81 in a plane tilted by CYCLE800, along the plane's Z") {
+  const std::string text =
+      "N10 G17 G90 G71 G94 T1 M6\n"
+      "N20 G0 X0 Y0 Z100 A0 C0 S3000 M3 F250\n"
+      "N30 CYCLE800(0,\"TC1\",200000,57,10,0,0,-20,0,15,0,0,0,1,100,1)\n"
+      "N40 G0 X0 Y0 Z30\n"
+      "N50 MCALL CYCLE83(30, 0, 3, -14, , -4, , 1, 0, 0, 0.8, 0, 0, 0, 0.4)\n"
+      "N60 X5 Y5\n"
+      "N70 X-5 Y5\n"
+      "N80 MCALL\n"
+      "N90 X0 Y-8\n"
+      "N100 CYCLE81(30, 0, 2, -6)\n"
+      "N110 CYCLE800()\n"
+      "N120 M30\n";
+  const std::string out = reposted_and_checked(text, true);
+}
+
+TEST_CASE("sinumerik re-post: CYCLE800 _MODE=27 turns about Z, then Y', then X'' (the order ncpost's output writes)") {
+  const std::string text =
+      "N10 G17 G90 G71 G94 T1 M6\n"
+      "N20 G0 X0 Y0 Z100 A0 C0 S3000 M3 F400\n"
+      "N30 CYCLE800(0,\"TC1\",200000,27,5,-5,0,30,20,0,0,0,0,1,100,1)\n"
+      "N40 G0 X0 Y0 Z20\n"
+      "N50 G1 Z-1\n"
+      "N60 X15 Y10\n"
+      "N70 G0 Z20\n"
+      "N80 CYCLE800()\n"
+      "N90 M30\n";
+  const std::string out = reposted_and_checked(text, true);
+  // by hand: Rz(30) Ry(20) e_z = (sin20 cos30, sin20 sin30, cos20)
+  const double s20 = std::sin(20 * M_PI / 180), c20 = std::cos(20 * M_PI / 180);
+  const test::V3 normal(s20 * std::cos(M_PI / 6), s20 * std::sin(M_PI / 6), c20);
+  const test::ExecMachine m = test::ExecMachine::load(test::source("machines/ac-trunnion.toml"));
+  const std::map<char, double> got = first_tilt(out);
+  REQUIRE(got.count('A'));
+  const test::ExecPose pose = test::forward(m, exec_job(), test::V3::Zero(), {{'A', got.at('A')}, {'C', got.at('C')}});
+  CHECK((pose.axis_W - normal).norm() < kAxisTolerance);
 }

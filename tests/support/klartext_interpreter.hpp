@@ -11,11 +11,13 @@
 //     from LBL n to the call run m more times);
 //   - PLANE SPATIAL SPA SPB SPC STAY [SEQ+|SEQ-]: X Y Z are then the tip in the plane,
 //     W_R_plane = Rz(SPC) Ry(SPB) Rx(SPA), and Q120 .. Q122 are set from `angles` (the test's own
-//     computation of the control's angles); PLANE RESET STAY;
+//     computation of the control's angles); PLANE POINTS P1X.. P3Z.. STAY [SEQ±] (X along P1 -> P2,
+//     Y toward P3, the datum kept); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
 //     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
 //   - CYCL DEF 200 / 203 / 207 / 208 / 241 with their Q parameters on the `~` lines (set as Q
-//     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (klartext_cycles.hpp:
+//     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (M89: on it and on every
+//     later L block until M99) (klartext_cycles.hpp:
 //     an end after each of the cycle's moves); M3 / M4 for the direction of 208.
 // `path()` is the tip's path: every block end and, along arcs, points every degree, each flagged
 // whether the move into it cuts (at a feed) or not (FMAX).
@@ -160,6 +162,21 @@ class KlartextInterpreter {
       keep_tip([&] { plane_.reset(); });
       return;
     }
+    static const std::regex points(
+        R"(^PLANE POINTS P1X([-+][\d.]+) P1Y([-+][\d.]+) P1Z([-+][\d.]+) P2X([-+][\d.]+) P2Y([-+][\d.]+) )"
+        R"(P2Z([-+][\d.]+) P3X([-+][\d.]+) P3Y([-+][\d.]+) P3Z([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
+    std::smatch p;
+    if (std::regex_match(s, p, points)) {  // X from P1 to P2; Y the part of P1 -> P3 square to X; Z = X x Y
+      const auto at = [&](int i) { return V3(std::stod(p[i]), std::stod(p[i + 1]), std::stod(p[i + 2])); };
+      const V3 x = (at(4) - at(1)).normalized();
+      const V3 y = ((at(7) - at(1)) - (at(7) - at(1)).dot(x) * x).normalized();
+      M3 R;
+      R << x, y, x.cross(y);
+      const int seq = !p[10].matched ? 0 : p[10].str() == "+" ? 1 : -1;
+      for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+      keep_tip([&] { plane_ = R; });
+      return;
+    }
     static const std::regex spatial(
         R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
     std::smatch m;
@@ -233,7 +250,9 @@ class KlartextInterpreter {
     }
     ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
     path_.push_back({tip_W(), !rapid});
-    if (s.find(" M99") != std::string::npos) call_cycle(line);
+    const bool m89 = s.find(" M89") != std::string::npos, m99 = s.find(" M99") != std::string::npos;
+    if (m89 || m99) every_positioning_ = m89;  // M89: the cycle after this and every later L block, until M99
+    if (m89 || m99 || every_positioning_) call_cycle(line);
   }
 
   /// M3 / M4 / M5 anywhere in a block.
@@ -280,6 +299,7 @@ class KlartextInterpreter {
   std::vector<KlartextEnd> ends_;
   std::vector<KlartextPathPoint> path_;
   int cycle_ = 0;
+  bool every_positioning_ = false;  ///< M89 in force
   bool m3_ = true;
   double tool_diameter_mm_ = 0.0;
 };

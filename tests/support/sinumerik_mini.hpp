@@ -8,10 +8,13 @@
 //   - without TRAORI/CYCLE800: X Y Z and the rotary words are machine axes;
 //   - TRAORI: X Y Z are the tool tip in W, the orientation the rotary words or A3= B3= C3=
 //     (the unit vector in W itself);
-//   - CYCLE800(_FR,_TC,_ST,57,X0,Y0,Z0,A,B,C,X1,Y1,Z1,_DIR): the plane frame
-//     Trans(X0) Rx(A) Ry(B) Rz(C) Trans(X1); X Y Z after it are the tip in that frame, the tool
-//     axis its Z; CYCLE800() ends it;
-//   - TRANS X Y Z: a shift of the programmable frame.
+//   - CYCLE800(_FR,_TC,_ST,_MODE,X0,Y0,Z0,A,B,C,X1,Y1,Z1,_DIR): the plane frame
+//     Trans(X0) R Trans(X1), R axis by axis in _MODE's order (57: Rx(A) Ry(B) Rz(C); 27: Rz(A) Ry(B) Rx(C)); X Y Z
+//     after it are the tip in that frame, the tool axis its Z; CYCLE800() ends it;
+//   - TRANS X Y Z: a shift of the programmable frame;
+//   - CYCLE81 82 83 85 86 (sinumerik_mini_cycles.hpp) at the X Y where the tool stands after the
+//     block, in the plane's frame; MCALL CYCLE8x(...) after every following motion block, MCALL
+//     alone ends it.
 // Other words are skipped (S F T M D ..., and text between quotes: T="name"). Lengths mm, angles deg.
 #include <cmath>
 #include <map>
@@ -21,6 +24,7 @@
 #include <vector>
 
 #include "nc_executor.hpp"
+#include "sinumerik_mini_cycles.hpp"
 
 namespace ncpost::test {
 
@@ -32,6 +36,15 @@ struct SinumerikEnd {
 
 inline M3 sin_rot(int axis, double deg) {
   return Eigen::AngleAxisd(deg * M_PI / 180.0, V3::Unit(axis)).toRotationMatrix();
+}
+
+/// CYCLE800's axis-by-axis rotation: _MODE's bit pairs 1-0, 3-2, 5-4 give the first, second and
+/// third axis (1 X, 2 Y, 3 Z); each turn about the axis as the turns before left it.
+inline M3 sin_axis_by_axis(int mode, double first_deg, double second_deg, double third_deg) {
+  const double deg[3] = {first_deg, second_deg, third_deg};
+  M3 R = M3::Identity();
+  for (int k = 0; k < 3; ++k) R = R * sin_rot(((mode >> (2 * k)) & 3) - 1, deg[k]);
+  return R;
 }
 
 /// The value after `key` in `line` (e.g. "X", "A3="); nullopt when absent.
@@ -60,6 +73,30 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
   Rt plane;  // CYCLE800's frame
   V3 shift = V3::Zero();
   std::optional<V3> vector;
+  std::string modal_cycle;  // "MCALL CYCLE83(...)" as written, without MCALL
+  const auto end_at = [&](int line_no, const V3& p) {
+    SinumerikEnd e;
+    e.line = line_no;
+    std::map<char, double> rot;
+    for (char c : m.rotary_letters) rot[c] = words[c];
+    if (swivel) {
+      e.tip_W = plane * (p + shift);
+      e.axis_W = plane.R * V3::UnitZ();
+    } else if (traori) {
+      e.tip_W = p + shift;
+      e.axis_W = vector ? *vector : forward(m, job, V3::Zero(), rot).axis_W;
+    } else {
+      const ExecPose pose = forward(m, job, p + shift, rot);
+      e.tip_W = pose.tip_W;
+      e.axis_W = pose.axis_W;
+    }
+    return e;
+  };
+  const auto run_cycle = [&](int line_no, const std::string& call) {
+    const std::size_t open = call.find('(');
+    for (double z : sinumerik_cycle_heights(call.substr(0, open), sin_call_args(call, open)))
+      out.push_back(end_at(line_no, V3(words['X'], words['Y'], z))), words['Z'] = z;
+  };
   std::istringstream in(text);
   int line_no = 0;
   for (std::string raw; std::getline(in, raw);) {
@@ -86,7 +123,7 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
       swivel = a.size() >= 14;
       if (swivel) {
         plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
-                Rt{sin_rot(0, a[7]) * sin_rot(1, a[8]) * sin_rot(2, a[9]), V3::Zero()} *
+                Rt{sin_axis_by_axis(static_cast<int>(a[3]), a[7], a[8], a[9]), V3::Zero()} *
                 Rt{M3::Identity(), V3(a[10], a[11], a[12])};
       }
       continue;
@@ -100,24 +137,15 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
       vec = V3(sin_word(line, "A3=").value_or(0), sin_word(line, "B3=").value_or(0), sin_word(line, "C3=").value_or(0))
                 .normalized();
     if (vec) vector = vec, moved = true;
-    if (!moved) continue;
-    SinumerikEnd e;
-    e.line = line_no;
-    const V3 p(words['X'], words['Y'], words['Z']);
-    std::map<char, double> rot;
-    for (char c : m.rotary_letters) rot[c] = words[c];
-    if (swivel) {
-      e.tip_W = plane * (p + shift);
-      e.axis_W = plane.R * V3::UnitZ();
-    } else if (traori) {
-      e.tip_W = p + shift;
-      e.axis_W = vector ? *vector : forward(m, job, V3::Zero(), rot).axis_W;
-    } else {
-      const ExecPose pose = forward(m, job, p + shift, rot);
-      e.tip_W = pose.tip_W;
-      e.axis_W = pose.axis_W;
+    if (const std::size_t mcall = line.find("MCALL"); mcall != std::string::npos) {
+      const std::size_t cycle = line.find("CYCLE", mcall);
+      modal_cycle = cycle == std::string::npos ? "" : line.substr(cycle);
+      continue;
     }
-    out.push_back(e);
+    if (moved) out.push_back(end_at(line_no, V3(words['X'], words['Y'], words['Z'])));
+    if (moved && !modal_cycle.empty()) run_cycle(line_no, modal_cycle);
+    for (const char* c : {"CYCLE81(", "CYCLE82(", "CYCLE83(", "CYCLE85(", "CYCLE86("})
+      if (const std::size_t at = line.find(c); at != std::string::npos) run_cycle(line_no, line.substr(at));
   }
   return out;
 }

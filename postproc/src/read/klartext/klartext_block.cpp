@@ -169,6 +169,7 @@ bool has_words(std::string_view statement) {
                              "PLANE EULER",
                              "PLANE VECTOR",
                              "PLANE AXIAL",
+                             "PLANE POINTS",
                              "PLANE RESET"})
     if (s == statement) return true;
   return false;
@@ -189,6 +190,12 @@ void read_word(Cursor& c, Block& b) {
     return;
   }
   w.name = c.letters();
+  if (w.name == "P" && c.peek() >= '1' && c.peek() <= '3' &&
+      (c.peek(1) == 'X' || c.peek(1) == 'Y' || c.peek(1) == 'Z')) {
+    w.name += c.peek();  // P1X+0 (PLANE POINTS)
+    c.advance(1);
+    w.name += c.letters();
+  }
   if (w.name == "DR" && c.peek() == '2' && (c.peek(1) == '+' || c.peek(1) == '-')) {  // DR2+0.1 (TOOL CALL)
     w.name = "DR2";
     c.advance(1);

@@ -22,9 +22,30 @@ const std::map<std::string, std::vector<std::string>>& angle_words() {
       {"PLANE EULER", {"EULPR", "EULNU", "EULROT"}},
       {"PLANE VECTOR", {"BX", "BY", "BZ", "NX", "NY", "NZ"}},
       {"PLANE AXIAL", {"A", "B", "C"}},
+      {"PLANE POINTS", {"P1X", "P1Y", "P1Z", "P2X", "P2Y", "P2Z", "P3X", "P3Y", "P3Z"}},
       {"PLANE RESET", {}},
   };
   return k;
+}
+
+/// PLANE POINTS: X along P1 -> P2, Z = X x (P3 - P1) (P3 on the plane's +Y side); the datum stays.
+std::variant<Mat3d, std::string> points_frame(const std::map<std::string, double>& v) {
+  const auto point = [&](char n) {
+    const auto get = [&](char axis) {
+      const auto it = v.find(fmt::format("P{}{}", n, axis));
+      return it == v.end() ? 0.0 : it->second;
+    };
+    return Vec3d(get('X'), get('Y'), get('Z'));
+  };
+  const Vec3d x = point('2') - point('1'), to3 = point('3') - point('1');
+  const Vec3d z = x.cross(to3);
+  if (x.norm() < 1e-9 || z.norm() < 1e-9 * std::max(1.0, x.norm() * to3.norm()))
+    return std::string("PLANE POINTS: the three points lie on one line (or two coincide): they define no plane");
+  Mat3d r;
+  r.col(0) = x.normalized();
+  r.col(2) = z.normalized();
+  r.col(1) = r.col(2).cross(r.col(0));
+  return r;
 }
 
 std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::map<std::string, double>& v) {
@@ -35,6 +56,7 @@ std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::ma
   if (kind == "PLANE EULER")
     return Mat3d(rot(Vec3d::UnitZ(), deg("EULPR")) * rot(Vec3d::UnitX(), deg("EULNU")) *
                  rot(Vec3d::UnitZ(), deg("EULROT")));
+  if (kind == "PLANE POINTS") return points_frame(v);
   if (kind == "PLANE VECTOR") {
     const Vec3d n(get("NX"), get("NY"), get("NZ"));
     const Vec3d base(get("BX"), get("BY"), get("BZ"));
@@ -116,7 +138,7 @@ std::variant<PlaneRequest, std::string> plane_request(const Block& b, const Mach
   const auto kind = angle_words().find(b.statement);
   if (kind == angle_words().end())
     return fmt::format(
-        "{} is not read (PLANE SPATIAL, EULER, VECTOR, AXIAL and RESET are); have the CAM system "
+        "{} is not read (PLANE SPATIAL, EULER, VECTOR, POINTS, AXIAL and RESET are); have the CAM system "
         "write PLANE SPATIAL",
         b.statement);
   PlaneRequest r;

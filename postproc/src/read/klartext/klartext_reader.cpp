@@ -84,6 +84,7 @@ struct KlartextReader::State {
   std::optional<PlaneFrame> plane;        ///< PLANE ...: X Y Z are the tool tip in the plane
   std::optional<RotaryAngles> plane_rad;  ///< the rotary angles the plane asks (Q120 .. Q122)
   bool shortest_rotary = false;           ///< M126
+  bool modal_cycle_call = false;          ///< M89 until M99
   std::optional<double> feed;
   std::optional<double> auto_feed;  ///< TOOL CALL F, for FAUTO
   cl::CutterComp::Side comp = cl::CutterComp::Side::off;
@@ -1111,9 +1112,14 @@ struct KlartextReader::State {
     int cycle_call_column = 0;
     std::vector<cl::Record> after;
     for (const auto& [code, column] : bw.m) {
-      if (code == 99) {  // the cycle, at the end of the block's positioning
+      if (code == 99 || code == 89) {  // the cycle, at the end of the block's positioning (M89: and of every later one)
         cycle_call = true;
         cycle_call_column = column;
+        modal_cycle_call = code == 89;
+        if (code == 89)
+          notice_once("M89", column,
+                      "M89 is read as the modal cycle call (the cycle after every positioning block until M99), "
+                      "as the TNC's machine parameters usually set it");
         continue;
       }
       if (auto why = refused_m(code)) fail(column, *why);
@@ -1186,6 +1192,7 @@ struct KlartextReader::State {
       emit(cl::Feed{where, *bw.feed, false});
     }
     if (path) path_of(b, bw, where);
+    if (!cycle_call && modal_cycle_call && path && bw.any_axis) cycle_call = true, cycle_call_column = b.column;
     if (cycle_call) call_cycle(at(cycle_call_column), cycle_call_column);
     if (b.statement == "STOP") after.push_back(cl::Stop{where, false, ""});
     if (m140) retract(bw);

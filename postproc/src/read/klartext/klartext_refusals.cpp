@@ -44,9 +44,6 @@ struct MRefusal {
 };
 
 constexpr MRefusal kMFunctions[] = {
-    {89,
-     "a modal cycle call (the cycle after every positioning block) is not read; call the cycle with M99 on each "
-     "hole's block"},
     {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
     {97, "a small contour step (radius compensation) is not read"},
     {101, "automatic tool change with a replacement tool is not read"},

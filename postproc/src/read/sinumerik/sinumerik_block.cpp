@@ -116,6 +116,8 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
     const double v = number ? *item.value : value(l, item.column, item.text);
     if (n == "F" && w.dwell_s)
       w.dwell_s = v;  // G4 F: the dwell in seconds
+    else if (n == "F")
+      feed_ = v, w.iso.push_back(n + gcode::word_number(v));
     else if (n == "CR")
       w.radius = v;
     else if (n == "D") {
@@ -158,6 +160,7 @@ void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {
     return;
   }
   if (g == 17 || g == 18 || g == 19) plane_ = g;
+  if (g == 93 || g == 94 || g == 95) feed_mode_ = g;
   if (g == 70 || g == 700 || g == 71 || g == 710) inch_ = g == 70 || g == 700;
   if (g == 500) {
     notice_once(l, "G500",
@@ -218,7 +221,7 @@ void Translator::called(const ProgramLine& l, const Item& item, Words& w) {
     bare.kind = Item::Kind::name;
     return named(l, bare, w);
   }
-  if (n == "CYCLE800" || n == "CYCLE81" || n == "CYCLE82" || program_.unit_named.count(n)) {
+  if (n == "CYCLE800" || is_hole_cycle(n) || program_.unit_named.count(n)) {
     w.after.push_back(&item);
     return;
   }
@@ -257,7 +260,7 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
   for (const Item* item : w.after) {
     if (item->name == "CYCLE800")
       cycle800(l, *item);
-    else if (item->name == "CYCLE81" || item->name == "CYCLE82")
+    else if (is_hole_cycle(item->name))
       drill(l, drilling(l, *item));
     else if (!call_if_subprogram(l, *item))
       fail(l, item->column, fmt::format("{}{} is not read", item->name, item->text));

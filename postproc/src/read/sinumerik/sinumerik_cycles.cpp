@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// CYCLE800 (swivel plane) and CYCLE81/CYCLE82 (drilling) of the Sinumerik translator
+// CYCLE800 (swivel plane) and CYCLE81/CYCLE82 (drilling; the parameters all drilling cycles share) of the
+// Sinumerik translator
 // (sinumerik_translator.hpp). Parameters as in the SINUMERIK 840D sl "Programming Manual
 // Measuring/Standard cycles":
 //   CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I, _DMODE)
 //     _FR retract before swivelling (0 none; 1 machine Z: here to Z's reference point, G53 Z0),
 //     _TC the tool carrier (the machine file gives the kinematics), _ST units digit 0 (a new plane;
-//     1 additive: refused), _MODE 57 (axis by axis X, then Y', then Z'': the frame
-//     Rx(_A) Ry(_B) Rz(_C)), _X0.._Z0 the shift before the rotation, _X1.._Z1 after it, _DIR the
-//     direction of the reference (first) rotary axis (+1/-1; 0: rotary axes not positioned:
-//     refused for a tilted plane). CYCLE800() resets the plane.
+//     1 additive: refused), _MODE axis by axis (57: X, then Y', then Z'': the frame
+//     Rx(_A) Ry(_B) Rz(_C); 27: Rz(_A) Ry(_B) Rx(_C); Translator::axis_by_axis), _X0.._Z0 the shift before the
+//     rotation, _X1.._Z1 after it, _DIR the direction of the reference (first) rotary axis (+1/-1; 0: rotary axes not
+//     positioned: refused for a tilted plane). CYCLE800() resets the plane.
 //   CYCLE81(RTP, RFP, SDIS, DP, DPR), CYCLE82(RTP, RFP, SDIS, DP, DPR, DTB): rapid to RFP + SDIS,
 //     feed to RFP - DPR (DPR not 0) or DP, dwell DTB s (CYCLE82), rapid to RTP; at the current X Y, along
 //     the current frame's Z: G81/G82 (a cl::Cycle) where that is the same motion, else the motions.
@@ -22,14 +23,6 @@
 #include "read/sinumerik/sinumerik_words.hpp"
 
 namespace ncpost::sinumerik {
-namespace {
-
-struct Args {
-  std::vector<std::string> text;
-  bool given(std::size_t i) const { return i < text.size() && !text[i].empty(); }
-};
-
-}  // namespace
 
 void Translator::cycle800_reset(const ProgramLine& l) {
   swivel_ = Frame{};
@@ -44,8 +37,30 @@ void Translator::cycle800_reset(const ProgramLine& l) {
   emit(l, "TRAFOOF");
 }
 
+/// _MODE axis by axis (bits 7-6 00): bits 1-0, 3-2, 5-4 name the first, second, third axis (01 X,
+/// 10 Y, 11 Z; 57: X Y Z, 27: Z Y X); the plane is turned by _A about the first, then _B about the
+/// second and _C about the third as they are after the turns before (R = R1(_A) R2(_B) R3(_C)).
+Eigen::Matrix3d Translator::axis_by_axis(const ProgramLine& l, const Item& item, double mode,
+                                         const Eigen::Vector3d& angles_deg) const {
+  const int bits = static_cast<int>(mode);
+  if (bits != mode || bits < 0 || bits > 255 || (bits >> 6) != 0)
+    fail(l, item.column,
+         fmt::format("CYCLE800 _MODE={}: only axis-by-axis angles (_MODE below 64, e.g. 57: X Y Z, 27: Z Y X) are "
+                     "read, not projection or solid angles or rotary axes directly; have the CAM system write "
+                     "axis-by-axis angles",
+                     mode));
+  Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+  for (int k = 0; k < 3; ++k) {
+    const int axis = (bits >> (2 * k)) & 3;
+    if (axis == 0)
+      fail(l, item.column, fmt::format("CYCLE800 _MODE={}: axis {} of the sequence is not set", mode, k + 1));
+    r = r * about_axis(axis - 1, angles_deg[k]);
+  }
+  return r;
+}
+
 void Translator::cycle800(const ProgramLine& l, const Item& item) {
-  const Args args{split_arguments(item.text)};
+  const Arguments args{split_arguments(item.text)};
   if (args.text.empty()) return cycle800_reset(l);
   const auto num = [&](std::size_t i) { return args.given(i) ? value(l, item.column, args.text[i]) : 0.0; };
   if (traori_) fail(l, item.column, "CYCLE800 under TRAORI is not read (program TRAFOOF first)");
@@ -57,13 +72,8 @@ void Translator::cycle800(const ProgramLine& l, const Item& item) {
   if (std::fmod(std::abs(st), 10.0) != 0.0)
     fail(l, item.column, "CYCLE800 _ST: an additive swivel plane is not read (only a new plane, units digit 0)");
   const bool tilted = angles.norm() > 1e-12;
-  if (tilted && mode != 57.0)
-    fail(l, item.column,
-         fmt::format("CYCLE800 _MODE={}: only 57 (axis by axis, X Y Z) is read; have the CAM system "
-                     "write axis-by-axis angles in the order X Y Z",
-                     mode));
   Frame r;
-  r.rotation = about_axis(0, angles.x()) * about_axis(1, angles.y()) * about_axis(2, angles.z());
+  r.rotation = tilted ? axis_by_axis(l, item, mode, angles) : Eigen::Matrix3d::Identity();
   if (tilted && dir == 0.0)
     fail(l, item.column, "CYCLE800 _DIR=0 (the plane without positioning the rotary axes) is not read");
   if (fr == 1.0) {
@@ -120,7 +130,7 @@ void Translator::position_swivel(const ProgramLine& l, const Item& item, const E
 }
 
 Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
-  const Args args{split_arguments(item.text)};
+  const Arguments args{split_arguments(item.text)};
   const auto need = [&](std::size_t i, const char* name) {
     if (!args.given(i)) fail(l, item.column, fmt::format("{}: {} is not given", item.name, name));
     return value(l, item.column, args.text[i]);
@@ -145,10 +155,14 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
     fail(l, item.column, fmt::format("{}: neither DP nor DPR (the depth) is given", item.name));
   }
   if (item.name == "CYCLE82" && args.given(5)) d.dwell_s = value(l, item.column, args.text[5]);
-  if (args.text.size() > (item.name == "CYCLE82" ? 6u : 5u))
-    fail(l, item.column,
-         fmt::format("{}: more parameters than RTP, RFP, SDIS, DP, DPR{} are not read", item.name,
-                     item.name == "CYCLE82" ? ", DTB" : ""));
+  if (item.name == "CYCLE81" || item.name == "CYCLE82") {
+    if (args.text.size() > (item.name == "CYCLE82" ? 6u : 5u))
+      fail(l, item.column,
+           fmt::format("{}: more parameters than RTP, RFP, SDIS, DP, DPR{} are not read", item.name,
+                       item.name == "CYCLE82" ? ", DTB" : ""));
+  } else {
+    hole_parameters(l, item, args, d);
+  }
   if (d.depth >= d.reference + d.safety)
     fail(l, item.column, fmt::format("{}: the depth lies above the safety plane", item.name));
   if (d.dwell_s < 0.0) fail(l, item.column, "CYCLE82: DTB < 0");
@@ -160,6 +174,8 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
 /// (or the retract plane is the safety plane) it is the canned cycle G81/G82 with G98 (G99), which
 /// the G-code reader gives as a cl::Cycle; otherwise those motions.
 void Translator::drill(const ProgramLine& l, const Drilling& d) {
+  if (plane_ != 17) fail(l, 1, fmt::format("{} under G{}: only G17 (drilling along Z) is read", d.name, plane_));
+  if (d.name != "CYCLE81" && d.name != "CYCLE82") return expand_hole(l, d);
   const Eigen::Vector3d at = current_prog(l, 1);
   if (!base_known_[0] || !base_known_[1]) fail(l, 1, fmt::format("{}: X and Y of the hole are not known", d.name));
   const std::array<bool, 3> z_only{false, false, true};

@@ -65,6 +65,12 @@ std::size_t expression_end(std::string_view text, std::size_t at);
 /// argument is "".
 std::vector<std::string> split_arguments(std::string_view inside);
 
+/// A call's arguments (split_arguments) and which of them are given.
+struct Arguments {
+  std::vector<std::string> text;
+  bool given(std::size_t i) const { return i < text.size() && !text[i].empty(); }
+};
+
 /// Upper case of ASCII letters.
 std::string upper(std::string_view s);
 

@@ -112,11 +112,8 @@ constexpr NameEntry kRefused[] = {
     {"TCARR", "a tool carrier selected by the program"},
     {"TOFRAME", "a frame along the tool"},
     {"PAROT", "a frame aligned with the workpiece"},
-    {"CYCLE83", "deep-hole drilling (not read yet)"},
     {"CYCLE84", "rigid tapping"},
     {"CYCLE840", "tapping with compensating chuck"},
-    {"CYCLE85", "reaming"},
-    {"CYCLE86", "boring"},
     {"SPOS", "spindle positioning"},
     {"OFFN", "contour offset"},
     {"CUT3DC", "3-D radius compensation"},
@@ -126,6 +123,12 @@ constexpr NameEntry kRefused[] = {
 };
 
 }  // namespace
+
+bool is_hole_cycle(const std::string& name) {
+  for (const char* n : {"CYCLE81", "CYCLE82", "CYCLE83", "CYCLE85", "CYCLE86"})
+    if (name == n) return true;
+  return false;
+}
 
 GAction kept_g(int g) {
   for (const GEntry& e : kG)

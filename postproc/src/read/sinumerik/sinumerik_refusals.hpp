@@ -9,6 +9,9 @@ namespace ncpost::sinumerik {
 
 enum class GAction { pass, note, dwell, refuse };
 
+/// Whether `name` is a drilling or boring cycle the reader runs (CYCLE81 82 83 85 86), also under MCALL.
+bool is_hole_cycle(const std::string& name);
+
 /// What a G code does in the reader (G0-G3, G90/G91, G500 are the translator's own).
 GAction kept_g(int g);
 /// What a noted G code is, for the notice.

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "ncpost/machines/input_error.hpp"
+#include "read/sinumerik/sinumerik_refusals.hpp"
 #include "read/sinumerik/sinumerik_words.hpp"
 
 namespace ncpost::sinumerik {
@@ -307,7 +308,7 @@ void Translator::return_from_unit() {
   calls_.pop_back();
 }
 
-/// MCALL CYCLE81(...) / CYCLE82(...): the hole after every following motion; MCALL alone ends it.
+/// MCALL CYCLE81(...) ... CYCLE86(...): the hole after every following motion; MCALL alone ends it.
 void Translator::modal_call(const ProgramLine& l) {
   if (l.block.rest.empty()) {
     mcall_.reset();
@@ -319,9 +320,9 @@ void Translator::modal_call(const ProgramLine& l) {
   } catch (const LexError& e) {
     fail(l, l.block.rest_column + static_cast<int>(e.offset), e.what);
   }
-  if (called.items.size() != 1 || called.items[0].kind != Item::Kind::call ||
-      (called.items[0].name != "CYCLE81" && called.items[0].name != "CYCLE82"))
-    fail(l, l.block.rest_column, "MCALL of a subprogram or of a cycle other than CYCLE81/CYCLE82 is not read");
+  if (called.items.size() != 1 || called.items[0].kind != Item::Kind::call || !is_hole_cycle(called.items[0].name))
+    fail(l, l.block.rest_column,
+         "MCALL of a subprogram or of a cycle other than CYCLE81, 82, 83, 85 or 86 is not read");
   Item item = called.items[0];
   item.column += l.block.rest_column - 1;
   mcall_ = drilling(l, item);

@@ -14,7 +14,8 @@
 //     angles (the solution nearest the current angles, within the limits);
 //   - CYCLE800 positions the rotary axes (the solution for the plane's normal, _DIR choosing
 //     between two) and reads what follows as tool-tip positions in the swivelled plane;
-//   - CYCLE81/CYCLE82 (also under MCALL) become their motions;
+//   - CYCLE81/CYCLE82 (also under MCALL) become G81/G82 or their motions; CYCLE83/85/86 become
+//     their motions (sinumerik_holes.cpp);
 //   - SUPA blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
 //   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
 //     puts into the tool change (cl::ToolChange::name).
@@ -49,10 +50,22 @@ struct IsoBlock {
   std::optional<std::string> tool_name;
 };
 
-/// A drilling cycle (CYCLE81/82) with its values (program unit, absolute along the frame's Z).
+/// A drilling or boring cycle (CYCLE81 82 83 85 86) with its values (lengths in the program unit,
+/// absolute along the frame's Z; feeds in the program's feed unit).
 struct Drilling {
   std::string name;
   double retract = 0.0, reference = 0.0, safety = 0.0, depth = 0.0, dwell_s = 0.0;
+  // CYCLE83
+  std::vector<double> stroke_bottoms;  ///< where each infeed ends, the last at `depth`
+  bool chip_removal = false;           ///< VARI=1: out to the safety plane after each infeed; 0: back off only
+  double first_feed_factor = 1.0;      ///< FRF: the first infeed at F * FRF
+  double back_off = 1.0;               ///< _VRT (VARI=0): the retract for chip breaking
+  double anticipation = 0.0;           ///< (VARI=1) the rapid re-entry stops this far above the last bottom
+  double top_dwell_s = 0.0;            ///< DTS (VARI=1): at the safety plane
+  double final_dwell_s = 0.0;          ///< _DTD, else DTB: at the final depth
+  // CYCLE85: the feeds in and out; CYCLE86: the spindle after the cycle (3: M3, 4: M4)
+  double feed_in = 0.0, feed_out = 0.0;
+  int spindle_after = 0;
 };
 
 class Translator {
@@ -120,9 +133,18 @@ class Translator {
   // cycles (sinumerik_cycles.cpp)
   void cycle800(const ProgramLine& l, const Item& item);
   void cycle800_reset(const ProgramLine& l);
+  Eigen::Matrix3d axis_by_axis(const ProgramLine& l, const Item& item, double mode,
+                               const Eigen::Vector3d& angles_deg) const;
   void position_swivel(const ProgramLine& l, const Item& item, const Eigen::Vector3d& axis_W, int dir, bool tilted);
   Drilling drilling(const ProgramLine& l, const Item& item);
   void drill(const ProgramLine& l, const Drilling& d);
+
+  // CYCLE83/85/86 (sinumerik_holes.cpp)
+  void hole_parameters(const ProgramLine& l, const Item& item, const Arguments& args, Drilling& d) const;
+  void deep_hole_parameters(const ProgramLine& l, const Item& item, const Arguments& args, Drilling& d) const;
+  void expand_hole(const ProgramLine& l, const Drilling& d);
+  void deep_hole_motions(const ProgramLine& l, const Drilling& d, const Eigen::Vector3d& at);
+  void hole_move(const ProgramLine& l, const Eigen::Vector3d& at, const char* g, double z, double feed);
 
   [[noreturn]] void fail(const ProgramLine& l, int column, const std::string& what) const;
   void notice_once(const ProgramLine& l, const std::string& key, const std::string& what);
@@ -151,6 +173,8 @@ class Translator {
   bool swivel_tip_ = false;   ///< CYCLE800 made the reader take tool-tip positions
   bool length_off_ = false;   ///< D0 in force
   bool inch_ = false;         ///< G70/G700 in force (lengths in inch)
+  int feed_mode_ = 94;        ///< G93 G94 G95
+  double feed_ = 0.0;         ///< F as last programmed (0: none yet)
   Frame programmable_;
   Frame swivel_;
   Eigen::Vector3d base_ = Eigen::Vector3d::Zero();  ///< the last position in W (program unit)
