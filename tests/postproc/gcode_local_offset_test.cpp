@@ -18,21 +18,11 @@ using namespace ncpost::test;
 
 namespace {
 
-struct Posted {
-  int exit_code = -1;
-  std::string program, log;
-};
-
-Posted post_local(const std::string& input, const std::string& dialect) {
+PostRun post_local(const std::string& input, const std::string& dialect) {
   const std::string dir = make_temp_dir("local_offsets");
   const std::string in = write_text_file(dir + "/in.nc", input);
-  Posted p;
-  p.exit_code = run_ncpost("post --machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " +
-                               dialect + " -o " + dir + "/out.nc " + in,
-                           dir + "/log");
-  p.program = read_text_file(dir + "/out.nc");
-  p.log = read_text_file(dir + "/log");
-  return p;
+  return run_post("--machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " + dialect, in,
+                  dir + "/out.nc", dir + "/log");
 }
 
 ControlSpec g54_only(bool linuxcnc) {
@@ -50,7 +40,7 @@ TEST_CASE("local offsets: G92 X0 between tiles, each tile cut by one subprogram 
   const std::string input =
       "%\nO1000\nG21 G90 G17 G94\nG54 G0 X-5 Y-5 Z10\nM98 P200\nG0 X30\nG92 X0\nM98 P200\nG0 X30\nG92 X0\n"
       "M98 P200\nM30\nO200\nG0 X0 Y0 Z3\nG1 Z-1 F200\nX10\nY5\nX0\nG0 Z5\nM99\n%\n";
-  const Posted p = post_local(input, "fanuc");
+  const PostRun p = post_local(input, "fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK_THAT(p.log, Catch::Contains("G92 X0: the coordinates after it are shifted by X+30.0000"));
@@ -63,7 +53,7 @@ TEST_CASE("local offsets: Fanuc G52 shifts the work offset in force and G52 X0 Y
   const std::string input =
       "G21 G90 G17 G94\nG54 G0 X0 Y0 Z5\nG1 Z0 F100\nX10\nG52 X100 Y-20\nG0 X0 Y0\nG1 X10\n"
       "Y10\nG52 X0 Y0\nG0 X5 Y5\nM30\n";
-  const Posted p = post_local(input, "fanuc");
+  const PostRun p = post_local(input, "fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK(compare_tips(input, g54_only(false), "G54", "vmcl600.toml", p.program) == 7);
@@ -73,7 +63,7 @@ TEST_CASE("local offsets: Fanuc G52 shifts the work offset in force and G52 X0 Y
 
 TEST_CASE("local offsets: LinuxCNC G92 on two axes after moves, in G91 moves too") {
   const std::string input = "G21 G90 G17 G94\nG0 X12 Y7 Z5\nG92 X0 Y0\nG1 Z-1 F100\nX20\nG91 Y4\nG90 X0\nM2\n";
-  const Posted p = post_local(input, "linuxcnc");
+  const PostRun p = post_local(input, "linuxcnc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK(compare_tips(input, g54_only(true), "G54", "vmcl600.toml", p.program) == 5);
@@ -84,14 +74,14 @@ TEST_CASE("local offsets: LinuxCNC G92 X[#5420 - d] reads the current position (
   // the tool stands at X10 Y5 (inch); G92 X[#5420-3] makes it read X7: later words lie 3 inch
   // (76.2 mm) further in X, so X0 is posted at X76.2 mm, and #5421 reads Y5 there
   const std::string input = "G20 G90 G17 G94\nG0 X10 Y5 Z1\nG92 X[#5420-3]\nG1 Z-0.1 F10\nX0\nY[#5421+1]\nM2\n";
-  const Posted p = post_local(input, "linuxcnc");
+  const PostRun p = post_local(input, "linuxcnc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK_THAT(p.log, Catch::Contains("G92 X7: the coordinates after it are shifted by X+76.2000"));
   CHECK_THAT(p.program, Catch::Contains("X76.2000"));
   CHECK_THAT(p.program, Catch::Contains("Y152.4000"));  // Y6 inch
   // on Fanuc #5420 is no position: refused by its number
-  const Posted fanuc = post_local(input, "fanuc");
+  const PostRun fanuc = post_local(input, "fanuc");
   CHECK(fanuc.exit_code == 2);
   CHECK_THAT(fanuc.log, Catch::Contains("#5420 is a system variable"));
   // a position variable is read, never set; one not programmed yet has no value
@@ -113,7 +103,7 @@ TEST_CASE("local offsets: refused where the shift is not known or the controls d
       {"G21 G90\nG0 X0 Y0 Z5\nG91 G10 L2 P2 X10\nM30\n", "G10 under G91"},  // G91 in the same block
   };
   for (const Case& c : cases) {
-    const Posted p = post_local(c.input, "fanuc");
+    const PostRun p = post_local(c.input, "fanuc");
     INFO(c.input << "\n" << p.log);
     CHECK(p.exit_code == 2);
     CHECK_THAT(p.log, Catch::Contains(c.message));

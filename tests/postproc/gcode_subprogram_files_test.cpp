@@ -21,16 +21,11 @@ using namespace ncpost::test;
 
 namespace {
 
-struct Posted {
-  int exit_code = -1;
-  std::string program, log;
-};
-
 /// Posts `main` (named `name`) with `files` written beside it (or into `sub_dir` of the same
 /// temporary directory, then given as --subprogram-dir).
-Posted post_with_files(const std::string& main, const std::string& name,
-                       const std::map<std::string, std::string>& files, const std::string& dialect,
-                       const std::string& sub_dir = "", const std::string& extra = "") {
+PostRun post_with_files(const std::string& main, const std::string& name,
+                        const std::map<std::string, std::string>& files, const std::string& dialect,
+                        const std::string& sub_dir = "", const std::string& extra = "") {
   const std::string dir = make_temp_dir("subprogram_files");
   std::string where = dir;
   if (!sub_dir.empty()) {
@@ -39,13 +34,9 @@ Posted post_with_files(const std::string& main, const std::string& name,
   }
   for (const auto& [file, text] : files) write_text_file(where + "/" + file, text);
   const std::string in = write_text_file(dir + "/" + name, main);
-  std::string args = "post --machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " + dialect;
+  std::string args = "--machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " + dialect;
   if (!sub_dir.empty()) args += " --subprogram-dir " + where;
-  Posted p;
-  p.exit_code = run_ncpost(args + " " + extra + " -o " + dir + "/out.nc " + in, dir + "/log");
-  p.program = read_text_file(dir + "/out.nc");
-  p.log = read_text_file(dir + "/log");
-  return p;
+  return run_post(args + " " + extra, in, dir + "/out.nc", dir + "/log");
 }
 
 ControlSpec spec_with(const std::map<std::string, std::string>& files, bool linuxcnc) {
@@ -64,14 +55,14 @@ const std::string kO1234 = "%\nO1234 (STEP)\nG91 G1 X10\nY5\nG90\nM99\n%\n";
 
 TEST_CASE("subprogram files: M98 P1234 runs O1234 from O1234.nc beside the program, or from --subprogram-dir") {
   const std::map<std::string, std::string> files{{"O1234.nc", kO1234}};
-  const Posted beside = post_with_files(kFanucMain, "main.nc", files, "fanuc");
+  const PostRun beside = post_with_files(kFanucMain, "main.nc", files, "fanuc");
   INFO(beside.log);
   REQUIRE(beside.exit_code == 0);
   // ends: 2 + 2 x 2 + 1
   CHECK(compare_tips(kFanucMain, spec_with(files, false), "G54", "vmcl600.toml", beside.program) == 7);
   // 1234.tap in the directory given: the same program
   const std::map<std::string, std::string> numbered{{"1234.tap", kO1234}};
-  const Posted given = post_with_files(kFanucMain, "main.nc", numbered, "fanuc", "subs");
+  const PostRun given = post_with_files(kFanucMain, "main.nc", numbered, "fanuc", "subs");
   INFO(given.log);
   REQUIRE(given.exit_code == 0);
   CHECK(compare_tips(kFanucMain, spec_with(numbered, false), "G54", "vmcl600.toml", given.program) == 7);
@@ -83,7 +74,7 @@ TEST_CASE("subprogram files: LinuxCNC o<drill> call finds drill.ngc, whose own s
   const std::map<std::string, std::string> files{
       {"drill.ngc", "o<drill> sub\n  G0 X#1 Y#2\n  G0 Z2\n  G1 Z#3 F100\n  o<lift> call [3]\no<drill> endsub\nM2\n"},
       {"lift.ngc", "o<lift> sub\n  G0 Z#1\no<lift> endsub\nM2\n"}};
-  const Posted p = post_with_files(main, "part.ngc", files, "linuxcnc");
+  const PostRun p = post_with_files(main, "part.ngc", files, "linuxcnc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   // ends: 1 + 2 x 4 + 1
@@ -91,18 +82,18 @@ TEST_CASE("subprogram files: LinuxCNC o<drill> call finds drill.ngc, whose own s
 }
 
 TEST_CASE("subprogram files: missing, ambiguous and failing subprogram files are refused naming each file") {
-  const Posted missing = post_with_files(kFanucMain, "main.nc", {}, "fanuc");
+  const PostRun missing = post_with_files(kFanucMain, "main.nc", {}, "fanuc");
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.log, Catch::Contains("main.nc:6") && Catch::Contains("M98 P1234") &&
                               Catch::Contains("no file O1234.* or 1234.*") && Catch::Contains("--subprogram-dir"));
-  const Posted two = post_with_files(kFanucMain, "main.nc", {{"O1234.nc", kO1234}, {"1234.tap", kO1234}}, "fanuc");
+  const PostRun two = post_with_files(kFanucMain, "main.nc", {{"O1234.nc", kO1234}, {"1234.tap", kO1234}}, "fanuc");
   CHECK(two.exit_code == 2);
   CHECK_THAT(two.log, Catch::Contains("could both hold O1234"));
-  const Posted wrong = post_with_files(kFanucMain, "main.nc", {{"O1234.nc", "%\nO1235\nM99\n%\n"}}, "fanuc");
+  const PostRun wrong = post_with_files(kFanucMain, "main.nc", {{"O1234.nc", "%\nO1235\nM99\n%\n"}}, "fanuc");
   CHECK(wrong.exit_code == 2);
   CHECK_THAT(wrong.log, Catch::Contains("O1234.nc' holds no O1234"));
   // an error on line 3 of drill.ngc names that file and the call in part.ngc
-  const Posted inside =
+  const PostRun inside =
       post_with_files("G21 G90\nG0 X0 Y0 Z10\no<drill> call [1]\nM2\n", "part.ngc",
                       {{"drill.ngc", "o<drill> sub\n  G0 X#1\n  G1 E5\no<drill> endsub\n"}}, "linuxcnc");
   CHECK(inside.exit_code == 2);
@@ -113,7 +104,7 @@ TEST_CASE("subprogram files: missing, ambiguous and failing subprogram files are
 TEST_CASE("subprogram files: Fanuc M99 P<n> returns to block N<n> of the caller; duplicates are refused") {
   const std::string input =
       "%\nO0001\nG21 G90 G17\nG0 X0 Y0 Z10\nM98 P2000\nN20 G0 X50\nN30 G0 Y40\nM30\nO2000\nG1 Z0 F100\nM99 P30\n%\n";
-  const Posted p = post_with_files(input, "main.nc", {}, "fanuc");
+  const PostRun p = post_with_files(input, "main.nc", {}, "fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   // ends: X0 Y0 Z10, Z0, then N30's Y40 (N20 skipped)
@@ -121,10 +112,10 @@ TEST_CASE("subprogram files: Fanuc M99 P<n> returns to block N<n> of the caller;
   CHECK(p.program.find("X50.") == std::string::npos);
   const std::string twice =
       "%\nO0001\nG21 G90\nN30 G0 X0 Y0 Z10\nM98 P2000\nN30 G0 Y40\nM30\nO2000\nG1 Z0 F100\nM99 P30\n%\n";
-  const Posted dup = post_with_files(twice, "main.nc", {}, "fanuc");
+  const PostRun dup = post_with_files(twice, "main.nc", {}, "fanuc");
   CHECK(dup.exit_code == 2);
   CHECK_THAT(dup.log, Catch::Contains("main.nc:10") && Catch::Contains("N30 at lines 4 and 6"));
-  const Posted none = post_with_files("G21 G90\nG0 X0 Y0 Z10\nM98 P2000\nM30\nO2000\nM99 P77\n", "m.nc", {}, "fanuc");
+  const PostRun none = post_with_files("G21 G90\nG0 X0 Y0 Z10\nM98 P2000\nM30\nO2000\nM99 P77\n", "m.nc", {}, "fanuc");
   CHECK(none.exit_code == 2);
   CHECK_THAT(none.log, Catch::Contains("has no block N77"));
 }
@@ -134,14 +125,14 @@ TEST_CASE("subprogram files: Haas G154 P5 is G54.1 P5 (values from --work-offset
   const std::string dir = make_temp_dir("g154");
   const std::string offsets = write_text_file(
       dir + "/o.toml", "[G54]\nX = -200\nY = -100\nZ = -300\n[\"G54.1 P5\"]\nX = -150\nY = -90\nZ = -302\n");
-  const Posted p = post_with_files(input, "g.nc", {}, "haas", "", "--work-offsets " + offsets);
+  const PostRun p = post_with_files(input, "g.nc", {}, "haas", "", "--work-offsets " + offsets);
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   ControlSpec spec = spec_with({}, false);
   spec.offsets["G54"] = {{'X', -200.0}, {'Y', -100.0}, {'Z', -300.0}};
   spec.offsets["G54.1 P5"] = {{'X', -150.0}, {'Y', -90.0}, {'Z', -302.0}};
   CHECK(compare_tips(input, spec, "G54", "vmcl600.toml", p.program) == 5);
-  const Posted beyond = post_with_files("G21 G90\nG154 P100 G0 X0 Y0 Z0\nM30\n", "b.nc", {}, "haas");
+  const PostRun beyond = post_with_files("G21 G90\nG154 P100 G0 X0 Y0 Z0\nM30\n", "b.nc", {}, "haas");
   CHECK(beyond.exit_code == 2);
   CHECK_THAT(beyond.log, Catch::Contains("G154 needs P1 .. P99"));
 }

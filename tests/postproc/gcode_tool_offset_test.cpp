@@ -25,21 +25,11 @@ using namespace ncpost::test;
 
 namespace {
 
-struct Posted {
-  int exit_code = -1;
-  std::string program, log;
-};
-
-Posted post(const std::string& input, const std::string& dialect, const std::string& name = "in.nc") {
+PostRun post(const std::string& input, const std::string& dialect, const std::string& name = "in.nc") {
   const std::string dir = make_temp_dir("tool_offsets");
   const std::string in = write_text_file(dir + "/" + name, input);
-  Posted p;
-  p.exit_code = run_ncpost("post --machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " +
-                               dialect + " -o " + dir + "/out.nc " + in,
-                           dir + "/log");
-  p.program = read_text_file(dir + "/out.nc");
-  p.log = read_text_file(dir + "/log");
-  return p;
+  return run_post("--machine " + source("machines/vmcl600.toml") + " --tolerance none --dialect " + dialect, in,
+                  dir + "/out.nc", dir + "/log");
 }
 
 /// The value of `letter` in the first line of `program` that starts with `head` (e.g. "G10 L12 P1").
@@ -75,7 +65,7 @@ TEST_CASE("tool offsets: Fanuc G10 L10 / L12 are written again before the G43 H 
   const std::string input =
       "%\nO0001\nG21 G90 G17 G94\nG10 L10 P1 R152.5\nG10 L12 P1 R4.\nT1 M6\nG43 H1 Z50.\nG0 X0 Y0\nG1 Z-2. F200\n"
       "G41 D1 X20.\nY20.\nG40 X0 Y0\nG0 Z50.\nM30\n%\n";
-  const Posted p = post(input, "fanuc");
+  const PostRun p = post(input, "fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   // the values as the program gives them (mm): the length 152.5, the radius 4
@@ -91,7 +81,7 @@ TEST_CASE("tool offsets: LinuxCNC G10 L1 in inches is the tool table's entry in 
   // R.125 in = 3.175 mm radius; the length Z0
   const std::string linuxcnc =
       "G20 G90 G17\nG10 L1 P1 Z0.0 R.125\nT1 M6\nG43\nG0 X0 Y0 Z.5\nG1 Z-.1 F10\nX1.\nG0 Z.5\nM2\n";
-  const Posted l = post(linuxcnc, "linuxcnc", "in.ngc");
+  const PostRun l = post(linuxcnc, "linuxcnc", "in.ngc");
   INFO(l.log);
   REQUIRE(l.exit_code == 0);
   REQUIRE(word_after(l.program, "G10 L1 P1", 'R'));
@@ -102,14 +92,14 @@ TEST_CASE("tool offsets: LinuxCNC G10 L1 in inches is the tool table's entry in 
   // Haas: G10 L12 R10. is a 10 mm diameter, written again as the diameter; the radius alone
   // (LinuxCNC's form) keeps the length: no Z word
   const std::string haas = "G21 G90 G17\nG10 L12 P3 R10.\nT3 M6\nG43 H3 Z20.\nG0 X5 Y5\nG1 Z0 F100\nG0 Z20.\nM30\n";
-  const Posted h = post(haas, "haas");
+  const PostRun h = post(haas, "haas");
   INFO(h.log);
   REQUIRE(h.exit_code == 0);
   REQUIRE(word_after(h.program, "G10 L12 P3", 'R'));
   CHECK(*word_after(h.program, "G10 L12 P3", 'R') == Approx(10.0).margin(1e-9));
   CHECK(h.program.find("G10 L10 P3") == std::string::npos);
   CHECK(compare_tips(haas, g54_zero(false), "G54", "vmcl600.toml", h.program) == 3);
-  const Posted radius_only = post("G21 G90\nG10 L1 P2 R3.\nG0 X0 Y0 Z5\nM2\n", "linuxcnc", "r.ngc");
+  const PostRun radius_only = post("G21 G90\nG10 L1 P2 R3.\nG0 X0 Y0 Z5\nM2\n", "linuxcnc", "r.ngc");
   REQUIRE(radius_only.exit_code == 0);
   REQUIRE(word_after(radius_only.program, "G10 L1 P2", 'R'));
   CHECK(*word_after(radius_only.program, "G10 L1 P2", 'R') == Approx(3.0).margin(1e-9));
@@ -117,13 +107,13 @@ TEST_CASE("tool offsets: LinuxCNC G10 L1 in inches is the tool table's entry in 
 }
 
 TEST_CASE("tool offsets: wear, LinuxCNC's L10, no dialect and a dialect without set_offset are refused") {
-  const Posted wear = post("G21 G90\nG10 L11 P1 R-.02\nG0 X0 Y0 Z5\nM30\n", "fanuc");
+  const PostRun wear = post("G21 G90\nG10 L11 P1 R-.02\nG0 X0 Y0 Z5\nM30\n", "fanuc");
   CHECK(wear.exit_code == 2);
   CHECK_THAT(wear.log, Catch::Contains("in.nc:2:1") && Catch::Contains("length wear of register 1"));
-  const Posted reading = post("G21 G90\nG0 X0 Y0 Z5\nG10 L10 P1 Z0\nM2\n", "linuxcnc", "in.ngc");
+  const PostRun reading = post("G21 G90\nG0 X0 Y0 Z5\nG10 L10 P1 Z0\nM2\n", "linuxcnc", "in.ngc");
   CHECK(reading.exit_code == 2);
   CHECK_THAT(reading.log, Catch::Contains("from where Z stands"));
-  const Posted unknown = post("G21 G90\nG10 L10 P1 R100.\nG0 X0 Y0 Z5\nM30\n", "heidenhain");
+  const PostRun unknown = post("G21 G90\nG10 L10 P1 R100.\nG0 X0 Y0 Z5\nM30\n", "heidenhain");
   CHECK(unknown.exit_code == 2);
   CHECK_THAT(unknown.log, Catch::Contains("tool table") && Catch::Contains("[input] tool_offsets"));
   // a copy of the fanuc dialect without [tool] set_offset reads the block but cannot write it
@@ -133,7 +123,7 @@ TEST_CASE("tool offsets: wear, LinuxCNC's L10, no dialect and a dialect without 
   REQUIRE(at != std::string::npos);
   fanuc.erase(at, fanuc.find('\n', at) - at);
   const std::string dialect = write_text_file(dir + "/no-set.toml", fanuc);
-  const Posted cannot = post("G21 G90\nG10 L10 P1 R100.\nG0 X0 Y0 Z5\nM30\n", dialect);
+  const PostRun cannot = post("G21 G90\nG10 L10 P1 R100.\nG0 X0 Y0 Z5\nM30\n", dialect);
   CHECK(cannot.exit_code == 2);
   CHECK_THAT(cannot.log, Catch::Contains("cannot write") && Catch::Contains("set_offset"));
   CHECK(cannot.program.empty());

@@ -29,24 +29,15 @@ using namespace ncpost::test;
 
 namespace {
 
-struct Posted {
-  int exit_code = -1;
-  std::string program, log;
-};
-
 /// `ncpost post` of the G-code `input` on `machine` (a file under machines/) with the work
 /// offsets file `offsets` ("": none) and `extra` options.
-Posted post_program(const std::string& input, const std::string& machine, const std::string& offsets,
-                    const std::string& extra, const std::string& offsets_name = "offsets.toml") {
+PostRun post_program(const std::string& input, const std::string& machine, const std::string& offsets,
+                     const std::string& extra, const std::string& offsets_name = "offsets.toml") {
   const std::string dir = make_temp_dir("work_offsets");
   const std::string in = write_text_file(dir + "/in.nc", input);
-  std::string args = "post --machine " + source("machines/" + machine) + " --tolerance none " + extra;
+  std::string args = "--machine " + source("machines/" + machine) + " --tolerance none " + extra;
   if (!offsets.empty()) args += " --work-offsets " + write_text_file(dir + "/" + offsets_name, offsets);
-  Posted p;
-  p.exit_code = run_ncpost(args + " -o " + dir + "/out.nc " + in, dir + "/log");
-  p.program = read_text_file(dir + "/out.nc");
-  p.log = read_text_file(dir + "/log");
-  return p;
+  return run_post(args, in, dir + "/out.nc", dir + "/log");
 }
 
 InputError reader_error(const std::string& text, std::shared_ptr<const gcode::WorkOffsetTable> table,
@@ -89,7 +80,7 @@ ControlSpec spec_of(std::map<std::string, std::map<char, double>> offsets, bool 
 }  // namespace
 
 TEST_CASE("work offsets: G54, G55 and G58 from a TOML file, each operation in its own frame") {
-  const Posted p = post_program(kThreeOperations, "vmcl600.toml", kThreeOffsets, "");
+  const PostRun p = post_program(kThreeOperations, "vmcl600.toml", kThreeOffsets, "");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK_THAT(p.log, Catch::Contains("G55: its coordinates are placed in the frame of G54"));
@@ -108,7 +99,7 @@ TEST_CASE("work offsets: a LinuxCNC var file gives G54 .. G59.3 (5221 .. 5389)")
       "5241\t-100.000000\n5242\t-120.000000\n5243\t-310.000000\n"
       "5341\t12.5\n5342\t-7.25\n5343\t-300.0\n";
   const std::string input = "G21 G90 G17 G94\nG54 G0 X10 Y10 Z20\nG1 Z0 F200\nG55 G1 X20\nG59.1 G1 Y5\nG0 Z20\nM2\n";
-  const Posted p = post_program(input, "vmcl600.toml", var, "--dialect linuxcnc", "linuxcnc.var");
+  const PostRun p = post_program(input, "vmcl600.toml", var, "--dialect linuxcnc", "linuxcnc.var");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const ControlSpec spec = spec_of({{"G54", {{'X', -250.0}, {'Y', -120.0}, {'Z', -310.0}}},
@@ -127,7 +118,7 @@ TEST_CASE("work offsets: G54.1 P<n> and G59.3 from the file; inch values convert
       "units = \"inch\"\n[G57]\nX = 1\nY = 2\nZ = -10\n[\"G54.1 P7\"]\nX = 3\nY = 2\nZ = -10\n"
       "[\"g59.3\"]\nX = -1\nY = 0.5\nZ = -9.5\n";
   const std::string input = "G21 G90 G17 G94\nG57 G0 X0 Y0 Z10\nG1 Z0 F100\nG54.1 P7 G1 X5\nG59.3 G1 Y5\nG0 Z10\nM30\n";
-  const Posted p = post_program(input, "vmcl600.toml", toml, "");
+  const PostRun p = post_program(input, "vmcl600.toml", toml, "");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const ControlSpec spec = spec_of({{"G57", {{'X', 25.4}, {'Y', 50.8}, {'Z', -254.0}}},
@@ -143,7 +134,7 @@ TEST_CASE("work offsets: the program's own G10 L2 (Mastercam's #501 = 1 / G10 L2
       "%\nO0100\nG21 G90 G17 G94\n#501 = 1\n#510 = -200.\n#511 = -100.\n#512 = -300.\n"
       "G10 L2 P#501 X#510 Y#511 Z#512\nG10 L2 P2 X[#510 + 80.] Y#511 Z[#512 + 5.]\n"
       "G54 G0 X0 Y0 Z10\nG1 Z0 F100\nX20\nG55 G1 X20\nY15\nG0 Z10\nM30\n%\n";
-  const Posted p = post_program(input, "vmcl600.toml", "", "");
+  const PostRun p = post_program(input, "vmcl600.toml", "", "");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const ControlSpec spec = spec_of({});
@@ -155,13 +146,13 @@ TEST_CASE("work offsets: LinuxCNC G10 L20 makes the current position read the wo
   const std::string input =
       "G21 G90 G17 G94\nG54 G0 X30 Y20 Z10\nG10 L20 P2 X0 Y0 Z10\nG55 G1 X5 F100\nY5\n"
       "G10 L20 P0 X100\nG1 X110\nG54 G0 X0 Y0\nM2\n";
-  const Posted p = post_program(input, "vmcl600.toml", "", "--dialect linuxcnc");
+  const PostRun p = post_program(input, "vmcl600.toml", "", "--dialect linuxcnc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   ControlSpec spec = spec_of({{"G54", {{'X', -123.0}, {'Y', 45.0}, {'Z', -222.0}}}}, true);
   CHECK(compare_tips(input, spec, "G54", "vmcl600.toml", p.program) == 5);
   // the same program for a Fanuc control: G10 L20 P2 sets G54.1 P2, not G55; G55 is then unknown
-  const Posted fanuc = post_program(input, "vmcl600.toml", "", "--dialect fanuc");
+  const PostRun fanuc = post_program(input, "vmcl600.toml", "", "--dialect fanuc");
   CHECK(fanuc.exit_code == 2);
   CHECK_THAT(fanuc.log, Catch::Contains("--work-offsets"));
 }
@@ -170,7 +161,7 @@ TEST_CASE("work offsets: Fanuc G10 L20 P<n> sets G54.1 P<n>") {
   const std::string input =
       "G21 G90 G17 G94\nG10 L20 P3 X-40 Y-50 Z-200\nG10 L2 P1 X-90 Y-50 Z-200\n"
       "G54 G0 X0 Y0 Z10\nG1 Z0 F100\nG54.1 P3 G1 X0\nG0 Z10\nM30\n";
-  const Posted p = post_program(input, "vmcl600.toml", "", "--dialect fanuc");
+  const PostRun p = post_program(input, "vmcl600.toml", "", "--dialect fanuc");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   CHECK(compare_tips(input, spec_of({}), "G54", "vmcl600.toml", p.program) == 4);
@@ -181,7 +172,7 @@ TEST_CASE("work offsets: a five-axis program with a rotary value in the offset (
   const std::string input =
       "G21 G90 G17 G94\nG54 G0 X10 Y0 Z60 A0 C0\nG1 Z50 F500\nA20 C45\n"
       "G55 G1 X10 Y0 Z50 A15 C10\nX20 C-20\nG0 Z80\nM30\n";
-  const Posted p = post_program(input, "ac-trunnion.toml", toml, "");
+  const PostRun p = post_program(input, "ac-trunnion.toml", toml, "");
   INFO(p.log);
   REQUIRE(p.exit_code == 0);
   const ControlSpec spec = spec_of({{"G54", {{'X', 0}, {'Y', 0}, {'Z', 0}, {'A', 0}, {'C', 0}}},
@@ -218,9 +209,9 @@ TEST_CASE("work offsets: refusals name --work-offsets, the axis and the line") {
 
 TEST_CASE("work offsets: without a file one offset posts as before, and the CLI names the option") {
   const std::string one = "G21 G90\nG56 G0 X0 Y0 Z10\nG1 Z0 F100\nX10\nM30\n";
-  const Posted p = post_program(one, "vmcl600.toml", "", "");
+  const PostRun p = post_program(one, "vmcl600.toml", "", "");
   CHECK(p.exit_code == 0);
-  const Posted two = post_program("G21 G90\nG54 G0 X0 Y0 Z10\nG1 Z0 F100\nG55 G1 X10\nM30\n", "vmcl600.toml", "", "");
+  const PostRun two = post_program("G21 G90\nG54 G0 X0 Y0 Z10\nG1 Z0 F100\nG55 G1 X10\nM30\n", "vmcl600.toml", "", "");
   CHECK(two.exit_code == 2);
   CHECK_THAT(two.log, Catch::Contains("--work-offsets"));
 }

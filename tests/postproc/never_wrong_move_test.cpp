@@ -23,22 +23,12 @@ using namespace ncpost::test;
 
 namespace {
 
-struct Posted {
-  int exit_code = -1;
-  std::string program;  ///< the written program ("" when none)
-  std::string log;      ///< stdout and stderr
-};
-
 /// `ncpost post ARGS` of the CL text `cl` (an .apt file); the written program and the log.
-Posted post_cl(const std::string& cl, const std::string& args, const std::string& name) {
+PostRun post_cl(const std::string& cl, const std::string& args, const std::string& name) {
   const std::string dir = make_temp_dir("never_wrong_move");
   const std::string in = write_text_file(dir + "/" + name + ".apt", cl);
   const std::string out = dir + "/" + name + ".nc", log = dir + "/" + name + ".log";
-  Posted p;
-  p.exit_code = run_ncpost("post " + args + " -o " + out + " " + in, log);
-  p.program = read_text_file(out);
-  p.log = read_text_file(log);
-  return p;
+  return run_post(args, in, out, log);
 }
 
 /// "GOTO/x,y,z,i,j,k" of a CL point.
@@ -82,7 +72,7 @@ std::pair<double, int> worst_rapid_off_axis(const Executor& ex, const V3& top, c
 }  // namespace
 
 TEST_CASE("a drill leaves and enters a tilted hole along its axis (RTCP, AC table)", "[post][retract]") {
-  const Posted p =
+  const PostRun p =
       post_cl(kTiltedHole, "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50 --rtcp",
               "hole_rtcp");
   INFO(p.log);
@@ -102,7 +92,7 @@ TEST_CASE("a drill leaves and enters a tilted hole along its axis (RTCP, AC tabl
 }
 
 TEST_CASE("a drill leaves a tilted hole along its axis on a head machine (machine axes)", "[post][retract]") {
-  const Posted p =
+  const PostRun p =
       post_cl(kTiltedHole,
               "--machine " + source("machines/gantry-bc-head.toml") + " --workpiece-origin 0,0,0 --tool-length 100",
               "hole_head");
@@ -124,10 +114,10 @@ TEST_CASE("a rapid retract along a tilted tool axis stays on the axis line (head
                          fmt_point(50 * V3(s, 0, c), V3(s, 0, c)) + "FINI\n";
   for (const bool rtcp : {false, true}) {
     // (W 300 mm below the tip at home: the positioning from home comes from far above the part)
-    const Posted p = post_cl(cl,
-                             "--machine " + source("machines/gantry-bc-head.toml") + " --tool-length 100" +
-                                 " --workpiece-origin 0,0,-300" + (rtcp ? " --rtcp" : "") + " --tolerance none",
-                             rtcp ? "head_rtcp" : "head_axes");
+    const PostRun p = post_cl(cl,
+                              "--machine " + source("machines/gantry-bc-head.toml") + " --tool-length 100" +
+                                  " --workpiece-origin 0,0,-300" + (rtcp ? " --rtcp" : "") + " --tolerance none",
+                              rtcp ? "head_rtcp" : "head_axes");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
     const Executor ex(source("machines/gantry-bc-head.toml"), ExecJob{V3(0, 0, -300), 100.0}, p.program);
@@ -144,7 +134,7 @@ TEST_CASE("inverse time: a G93 block runs for its tip path length over the feed"
   const V3 u0(std::sin(a0), 0, std::cos(a0)), u1(std::sin(a1), 0, std::cos(a1));
   const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), u0) + "FEDRAT/MMPM,500\n" +
                          fmt_point(V3(0, 0, 0), u0) + fmt_point(V3(10, 0, 0), u1) + "FINI\n";
-  const Posted p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93");
+  const PostRun p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93");
   INFO(p.log);
   INFO(p.program);
   REQUIRE(p.exit_code == 0);
@@ -168,7 +158,7 @@ TEST_CASE("inverse time: a pure reorientation runs its rotary travel at the feed
   const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(0, 0, 30), us) + "FEDRAT/MMPM,400\n" +
                          fmt_point(V3(0, 0, 0), us) + fmt_point(V3(0, 0, 0), u1) + "FINI\n";
   (void)u0;
-  const Posted p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93_turn");
+  const PostRun p = post_cl(cl, "--machine " + source("machines/haas-umc750.toml") + " --tolerance none", "g93_turn");
   INFO(p.log);
   INFO(p.program);
   REQUIRE(p.exit_code == 0);
@@ -199,14 +189,14 @@ std::string two_tools(double length1_mm, double length2_mm) {
 TEST_CASE("LOADTL lengths: used where they agree with the solved length, refused where they do not", "[post][tool]") {
   const std::string head = "--machine " + source("machines/gantry-bc-head.toml") + " --tool-length 100";
   SECTION("another length on a head machine is refused, naming the tool and both lengths") {
-    const Posted p = post_cl(two_tools(100, 150), head, "two_lengths");
+    const PostRun p = post_cl(two_tools(100, 150), head, "two_lengths");
     CHECK(p.exit_code != 0);
     CHECK(p.program.empty());
     CHECK(p.log.find("tool 2 is 150.0000 mm long") != std::string::npos);
     CHECK(p.log.find("--tool-length 150.0000") != std::string::npos);
   }
   SECTION("the same length: every cut point reached by the tool of that length") {
-    const Posted p = post_cl(two_tools(100, 100), head, "same_length");
+    const PostRun p = post_cl(two_tools(100, 100), head, "same_length");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
     const Executor ex(source("machines/gantry-bc-head.toml"), ExecJob{V3::Zero(), 100.0}, p.program);
@@ -217,7 +207,7 @@ TEST_CASE("LOADTL lengths: used where they agree with the solved length, refused
     CHECK(p.program.find("T2 length 100.0000 mm from the CL data: the axes are solved for it") != std::string::npos);
   }
   SECTION("a table machine: the control's register applies the length, said in the program") {
-    const Posted p =
+    const PostRun p =
         post_cl(two_tools(100, 150), "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50",
                 "table_lengths");
     INFO(p.log);
@@ -234,7 +224,7 @@ TEST_CASE("small tilts away from a vertical tool axis are posted, the tip held o
     const std::string cl = "UNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n" + fmt_point(V3(20, 0, 30), V3(0, 0, 1)) +
                            "FEDRAT/MMPM,500\n" + fmt_point(V3(20, 0, 0), V3(0, 0, 1)) + fmt_point(V3(20, 0, 0), u) +
                            "FINI\n";
-    const Posted p =
+    const PostRun p =
         post_cl(cl, "--machine " + source("machines/ac-trunnion.toml") + " --workpiece-origin 0,0,50", "small_tilt");
     INFO(p.log);
     REQUIRE(p.exit_code == 0);
@@ -257,13 +247,13 @@ TEST_CASE("a CUTCOM radius register that the dialect cannot write is refused, no
       "CUTCOM/LEFT,14\nGOTO/10,0,-1\nGOTO/10,10,-1\nCUTCOM/OFF\nFINI\n";
   const std::string machine = "--machine " + source("machines/vmcl600.toml");
   SECTION("sinumerik: G41 takes the edge of the tool call (D1): register 14 would be lost") {
-    const Posted p = post_cl(cl, machine + " --dialect sinumerik", "cutcom_sinumerik");
+    const PostRun p = post_cl(cl, machine + " --dialect sinumerik", "cutcom_sinumerik");
     CHECK(p.exit_code == 2);
     CHECK(p.program.empty());
     CHECK(p.log.find("radius register 14 cannot be written in the sinumerik dialect") != std::string::npos);
   }
   SECTION("fanuc writes the register") {
-    const Posted p = post_cl(cl, machine + " --dialect fanuc", "cutcom_fanuc");
+    const PostRun p = post_cl(cl, machine + " --dialect fanuc", "cutcom_fanuc");
     INFO(p.log);
     CHECK(p.exit_code == 0);
     CHECK(p.program.find("G41 D14") != std::string::npos);

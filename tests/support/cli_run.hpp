@@ -18,4 +18,21 @@ inline int run_ncpost(const std::string& args, const std::string& log) {
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
+/// What one `ncpost post` run left: its exit code, the written program ("" when none) and its log.
+struct PostRun {
+  int exit_code = -1;
+  std::string program;  ///< the written program ("" when none)
+  std::string log;      ///< stdout and stderr
+};
+
+/// `ncpost post ARGS -o OUT INPUT > LOG 2>&1`; the exit code, the program at OUT and the log.
+inline PostRun run_post(const std::string& args, const std::string& input, const std::string& out,
+                        const std::string& log) {
+  PostRun r;
+  r.exit_code = run_ncpost("post " + args + " -o " + out + " " + input, log);
+  r.program = read_text_file(out);
+  r.log = read_text_file(log);
+  return r;
+}
+
 }  // namespace ncpost::test
