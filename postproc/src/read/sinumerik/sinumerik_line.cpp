@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Sinumerik block tokenizer (sinumerik_line.hpp).
 #include "read/sinumerik/sinumerik_line.hpp"
+#include "read/char_scan.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +12,6 @@ namespace ncpost::sinumerik {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
 bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
 
