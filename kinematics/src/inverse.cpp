@@ -158,6 +158,25 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   return out;
 }
 
+bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W) {
+  // An angle is free where angle_about() gets a projection under 1e-9: one of its two vectors along
+  // its axis. Per layout these are (plane1_vec or v along d1) and (plane2_vec or v along d2), and v
+  // makes the same angle with d1 (d2) as plane1_vec (plane2_vec) does, up to the reach tolerance's
+  // rounding (< 1e-9 in the cosine): 1 mrad leaves a wide margin.
+  constexpr double kClearRad = 1e-3;
+  const Vec3d& u = axis_W;  // (unnormalised: the test divides by the lengths)
+  const Vec3d ez = Vec3d::UnitZ();
+  auto along = [](const Vec3d& a, const Vec3d& d) {
+    return a.cross(d).squaredNorm() < kClearRad * kClearRad * a.squaredNorm() * d.squaredNorm();
+  };
+  if (m.rotary_count() == 0) return false;
+  if (m.rotary_count() == 1) return along(ez, m.rotary(0).direction) || along(u, m.rotary(0).direction);
+  const RotaryLayout l = layout_of(m);
+  const bool head_head = l.kind == RotaryLayout::head_head;
+  return along(head_head ? u : ez, m.rotary(l.outer).direction) ||
+         along(head_head ? ez : u, m.rotary(l.inner).direction);
+}
+
 Vec3d linear_for(const Machine& m, const RotaryAngles& rotary_rad, const Vec3d& tip_W, const Setup& setup) {
   const AxisPosition q(Vec3d::Zero(), rotary_rad);
   const ChainPose<double> pose = chain_pose<double>(m, q, setup.tool_length_mm, NominalErrors{});

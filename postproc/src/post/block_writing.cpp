@@ -144,8 +144,16 @@ Vec3d Poster::tool_axis_in_program(const ClPoint& cl, const RotaryAngles& rotary
 }
 
 /// The length (mm) of the tool tip's path in W while the axes run linearly from `q0` to `q1`.
+/// The ends are the tips at q0 and q1 themselves; a model whose execute() has no state gives the
+/// same tip at the same commands, so the start of a block is the end of the block before it.
 double Poster::executed_tip_path_mm(const AxisPosition& q0, const AxisPosition& q1) const {
-  return tip_path_length_mm([&](double t) { return feed_solver().execute(nonlinear::lerp(q0, q1, t), data_).tip_mm; });
+  const KinematicModel& feeds = feed_solver();
+  auto tip_at = [&](const AxisPosition& q) { return feeds.execute(q, data_).tip_mm; };
+  const bool stateless = feeds.stateless_execute();
+  const Vec3d start_mm = stateless && last_feed_tip_ && last_feed_tip_->q == q0 ? last_feed_tip_->tip_mm : tip_at(q0);
+  const Vec3d end_mm = tip_at(q1);
+  if (stateless) last_feed_tip_ = FeedTip{q1, end_mm};
+  return tip_path_length_mm([&](double t) { return tip_at(nonlinear::lerp(q0, q1, t)); }, start_mm, end_mm);
 }
 
 }  // namespace ncpost::detail

@@ -124,7 +124,12 @@ void Poster::write_motion(const SolvedPoint& next, int line, bool rapid) {
     SolvedPoint from = previous_;
     std::vector<SolvedPoint> points;
     try {
-      points = options_.subdivide(previous_, next, data_);
+      if (ahead_cut_ && ahead_cut_->fits(previous_, next)) {  // cut on the read-ahead thread (once)
+        points = std::move(ahead_cut_->points);
+        ahead_cut_ = nullptr;
+      } else {
+        points = options_.subdivide(previous_, next, data_);
+      }
     } catch (const Infeasible& e) {
       throw Infeasible(fmt::format("{}:{}: {}", input_, line, e.what()));
     }

@@ -30,7 +30,7 @@ Poster::Poster(const std::string& input, const KinematicModel& solver, SolverDat
 PostSummary Poster::run(cl::Reader& reader) {
   writer_.begin_program(options_.program_name, options_.header_comments);
   std::optional<Lookahead> ahead;
-  if (options_.threads > 1) ahead.emplace(reader, solver_);
+  if (options_.threads > 1) ahead.emplace(reader, solver_, options_.subdivide ? &options_.subdivide : nullptr);
   // the next record from the input: read ahead (2 threads) or read here, errors kept in place
   const Fetch fetch = [&]() -> AheadItem { return ahead ? ahead->next() : read_item(reader); };
   for (;;) {
@@ -49,9 +49,11 @@ PostSummary Poster::run(cl::Reader& reader) {
     if (item.error) std::rethrow_exception(item.error);
     if (!item.record) break;
     ahead_ = item.solved ? &*item.solved : nullptr;
+    ahead_cut_ = item.cut ? &*item.cut : nullptr;
     planned_rotary_ = item.planned_rotary_rad;
     std::visit([this](const auto& r) { on(r); }, *item.record);
     ahead_ = nullptr;
+    ahead_cut_ = nullptr;
     planned_rotary_.reset();
     for (auto& n : item.notices) summary_.notices.push_back(std::move(n));
   }

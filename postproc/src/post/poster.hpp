@@ -159,6 +159,7 @@ class Poster {
   // ---- state -----------------------------------------------------------------------------------
   const std::string& input_;
   const AheadSolve* ahead_ = nullptr;           ///< the current record's motion solved ahead
+  AheadCut* ahead_cut_ = nullptr;               ///< ... and cut ahead (its points are moved out)
   std::optional<RotaryAngles> planned_rotary_;  ///< the current record's rotary angles chosen by the branch plan
   bool unplanned_run_ = false;                  ///< in a run too long to plan (continues_unplanned_run)
   std::deque<AheadItem> pending_;               ///< records read and planned, not posted yet
@@ -173,6 +174,12 @@ class Poster {
   PostSummary summary_;
   SolvedPoint previous_{};
   AxisPosition last_executed_{};
+  /// The tool tip (W, mm) the feed model gave at the end of the last block's path (q), for the next.
+  struct FeedTip {
+    AxisPosition q;
+    Vec3d tip_mm;
+  };
+  mutable std::optional<FeedTip> last_feed_tip_;
   std::optional<PerAxis<double>> last_values_;   ///< words of the last motion block (mm, deg)
   std::optional<WrittenBlockReader> read_back_;  ///< --verify: the blocks as written, read back
   std::optional<ReadBackBlock> last_rapid_;      ///< the last rapid written (an approach if a feed follows)

@@ -34,14 +34,22 @@ void BatchQueue::stop() {
   changed_.notify_all();
 }
 
-Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver)
-    : reader_(reader), solver_(solver), reading_([this] { read(); }), solving_([this] { solve(); }) {}
+Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter)
+    : reader_(reader),
+      solver_(solver),
+      cutter_(cutter && *cutter && solver.concurrent() ? cutter : nullptr),
+      reading_([this] { read(); }),
+      solving_([this] { solve(); }) {
+  if (cutter_) cutting_ = std::thread([this] { cut(); });
+}
 
 Lookahead::~Lookahead() {
   parsed_.stop();
   solved_.stop();
+  cut_.stop();
   reading_.join();
   solving_.join();
+  if (cutting_.joinable()) cutting_.join();
 }
 
 AheadItem read_item(cl::Reader& reader) {
@@ -98,9 +106,36 @@ void Lookahead::solve() {
   }
 }
 
+/// Each motion solved ahead, cut from the one solved before it (as solve() chains them).
+void Lookahead::cut() {
+  std::optional<SolvedPoint> before;
+  for (;;) {
+    std::optional<std::vector<AheadItem>> batch = solved_.pop();
+    if (!batch) return;
+    bool last = false;
+    for (AheadItem& item : *batch) {
+      if (!item.record) {
+        last = true;
+        break;
+      }
+      if (!item.solved || !item.solved->ik.ok()) continue;  // (records that move nothing among them)
+      const SolvedPoint to{item.solved->cl, *item.solved->ik.position, item.solved->ik.executed};
+      if (before && before->q == item.solved->previous) {
+        try {
+          item.cut = AheadCut{*before, to, (*cutter_)(*before, to, cutting_data_)};
+        } catch (...) {
+          // the post cuts this motion itself and meets the same failure there
+        }
+      }
+      before = to;
+    }
+    if (!cut_.push(std::move(*batch)) || last) return;
+  }
+}
+
 AheadItem Lookahead::next() {
   if (position_ == current_.size()) {
-    std::optional<std::vector<AheadItem>> batch = solved_.pop();
+    std::optional<std::vector<AheadItem>> batch = cutter_ ? cut_.pop() : solved_.pop();
     if (!batch) return {};  // stopped: only while the object is being destroyed
     current_ = std::move(*batch);
     position_ = 0;

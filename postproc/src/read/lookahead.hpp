@@ -4,12 +4,14 @@
 // a reading thread parses the next CL records and a solving thread solves their motions
 // (KinematicModel::solve_quiet, the expensive part under `--model`), each from the commands of the
 // motion before it, with working data of its own (SolverData; the post records the figures of the
-// motions it uses in its own). Three stages on two cores: reading is light, so it shares a core with the post.
+// motions it uses in its own). Three or four stages on two cores, the operating system sharing them.
 //
 // The post uses a motion solved ahead only when it reaches that motion with the same CL point and
 // the same previous commands, bit for bit (`AheadSolve::fits`): anything that made the post's
 // sequence differ (arcs, cycles, retracts) just means it solves the motion itself. The program
-// is therefore the same as with one thread. Only solvers whose commands depend on nothing the
+// is therefore the same as with one thread. A fourth stage (with the post's subdivider) cuts each
+// motion solved ahead from the one solved before it, used on the same condition: the post reaches
+// it with those two points. Only solvers whose commands depend on nothing the
 // post's progress changes (`KinematicModel::concurrent`, i.e. no reversal state) solve ahead; for
 // the others the records are only read ahead.
 //
@@ -25,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include "ncpost/postproc/post.hpp"
 #include "ncpost/postproc/read/cl_record.hpp"
 #include "ncpost/postproc/solve/motion_solver.hpp"
 
@@ -41,11 +44,27 @@ struct AheadSolve {
   }
 };
 
+/// The blocks of a motion cut ahead (PostOptions::subdivide) from the motion solved before it,
+/// used only when the post cuts the same two points, bit for bit.
+struct AheadCut {
+  SolvedPoint from, to;
+  std::vector<SolvedPoint> points;
+  bool fits(const SolvedPoint& f, const SolvedPoint& t) const { return same(f, from) && same(t, to); }
+
+ private:
+  static bool same(const SolvedPoint& a, const SolvedPoint& b) {
+    if (!(a.cl.tip_mm == b.cl.tip_mm && a.cl.axis == b.cl.axis && a.q == b.q)) return false;
+    if (a.executed.has_value() != b.executed.has_value()) return false;
+    return !a.executed || (a.executed->tip_mm == b.executed->tip_mm && a.executed->axis == b.executed->axis);
+  }
+};
+
 /// One record in input order, with the reader's notices about it and its motion solved ahead.
 struct AheadItem {
   std::optional<cl::Record> record;  ///< nullopt: the end of the input (or `error`)
   std::vector<std::string> notices;
   std::optional<AheadSolve> solved;
+  std::optional<AheadCut> cut;  ///< its blocks from the motion solved before it
   /// The rotary angles (rad) the branch plan chose for this motion (post.cpp, branch_plan.hpp);
   /// nullopt: the solution nearest the previous commands.
   std::optional<RotaryAngles> planned_rotary_rad;
@@ -78,9 +97,11 @@ class Lookahead {
   static constexpr std::size_t kBatchSize = 256;
   static constexpr std::size_t kMaxBatches = 8;
 
-  /// Starts reading. `reader` and `solver` must outlive the object. Motions are solved ahead only
-  /// for a solver that is concurrent(); otherwise the records are only read ahead.
-  Lookahead(cl::Reader& reader, const KinematicModel& solver);
+  /// Starts reading. `reader`, `solver` and `cutter` must outlive the object. Motions are solved
+  /// ahead only for a solver that is concurrent(); otherwise the records are only read ahead. With
+  /// a `cutter` (the post's subdivider; nullptr: none) a fourth stage cuts each motion solved ahead
+  /// from the one before it, on a thread of its own.
+  Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter = nullptr);
   ~Lookahead();  ///< stops the threads (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
@@ -91,16 +112,21 @@ class Lookahead {
  private:
   void read();
   void solve();
+  void cut();
 
   cl::Reader& reader_;
   const KinematicModel& solver_;
-  SolverData solving_data_;  ///< the solver's working data on the solving thread (that thread's only)
+  const Subdivider* cutter_;  ///< nullptr: no cutting stage
+  SolverData solving_data_;   ///< the solver's working data on the solving thread (that thread's only)
+  SolverData cutting_data_;   ///< the same on the cutting thread
   BatchQueue parsed_{kMaxBatches};
   BatchQueue solved_{kMaxBatches};
+  BatchQueue cut_{kMaxBatches};
   alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
   std::size_t position_ = 0;
   std::thread reading_;
   std::thread solving_;
+  std::thread cutting_;
 };
 
 }  // namespace ncpost::detail

@@ -29,8 +29,11 @@ double refined(const std::function<Vec3d(double)>& tip_at, double t0, const Vec3
 }  // namespace
 
 double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at) {
-  const Vec3d p0 = tip_at(0.0), p1 = tip_at(1.0);
-  return refined(tip_at, 0.0, p0, 1.0, p1, 1);
+  return tip_path_length_mm(tip_at, tip_at(0.0), tip_at(1.0));
+}
+
+double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at, const Vec3d& start_mm, const Vec3d& end_mm) {
+  return refined(tip_at, 0.0, start_mm, 1.0, end_mm, 1);
 }
 
 }  // namespace ncpost

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/machines/input_error.hpp"
 #include "ncpost/postproc/solve/play_subdivision.hpp"
 
@@ -38,6 +39,7 @@ std::string rounded_in(std::string words, double value) {
 /// exactly singular, or no turn needed.
 std::optional<RotaryAngles> swing_at_pole(const Machine& machine, const Vec3d& pole_axis, const SolvedPoint& from,
                                           const SolvedPoint& to) {
+  if (!may_have_free_rotary(machine, pole_axis)) return std::nullopt;  // (far from any pole: most blocks)
   for (const RotarySolution& r : rotary_solutions(machine, pole_axis)) {
     if (r.free_axis < 0) continue;
     RotaryAngles d = RotaryAngles::Zero(2);

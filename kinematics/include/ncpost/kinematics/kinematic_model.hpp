@@ -40,6 +40,8 @@ class KinematicModel {
   /// Where the tool is at the commands q (tip and axis in W) on the machine the program is for,
   /// the axes standing where `data` says.
   virtual ToolPoseT<double> execute(const AxisPosition& q, const SolverData& data) const = 0;
+  /// True when execute() depends on q alone, not on where `data` says the axes stand.
+  virtual bool stateless_execute() const { return concurrent(); }
   /// The axes, their letters and limits (a serial chain's Machine; the TRR-XY machine's X Y U V W).
   virtual const Machine& machine() const = 0;
   /// The inverse with all its branches: every solution of `cl` within the limits (unwound near

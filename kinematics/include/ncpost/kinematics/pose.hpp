@@ -23,8 +23,17 @@ using Mat3 = Eigen::Matrix<S, 3, 3>;
 /// Skew-symmetric matrix [w]x with [w]x v = w x v.
 template <class S>
 Mat3<S> skew(const Vec3<S>& w) {
+  // (element by element: Eigen's comma initializer is not inlined, and this is in every chain)
   Mat3<S> m;
-  m << S(0), -w.z(), w.y(), w.z(), S(0), -w.x(), -w.y(), w.x(), S(0);
+  m(0, 0) = S(0);
+  m(0, 1) = -w.z();
+  m(0, 2) = w.y();
+  m(1, 0) = w.z();
+  m(1, 1) = S(0);
+  m(1, 2) = -w.x();
+  m(2, 0) = -w.y();
+  m(2, 1) = w.x();
+  m(2, 2) = S(0);
   return m;
 }
 

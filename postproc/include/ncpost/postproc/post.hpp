@@ -127,7 +127,8 @@ struct PostOptions {
   /// Two-rotary serial machines whose solver is concurrent() (not models with reversal).
   enum class BranchChoice { greedy, lookahead } branch_choice = BranchChoice::greedy;
   /// 2: other threads read the CL records and solve their motions ahead (solving only for a
-  /// concurrent() solver; the program is the same as with 1). The subdivider runs on the post's thread.
+  /// concurrent() solver; the program is the same as with 1). With such a solver another thread
+  /// also runs the subdivider on each motion solved ahead (used where the post cuts the same two points).
   int threads = 1;
   /// `--tilted-plane`: a run of motions with a constant tool axis other than +Z of W, opened by a
   /// rapid (or the first motion), is written in a tilted work plane (the dialect's [tilted_plane]

@@ -11,6 +11,7 @@
 #include "ncpost/postproc/read/apt/apt_nurbs.hpp"
 #include "ncpost/postproc/read/apt/apt_reader.hpp"
 #include "ncpost/postproc/read/apt/apt_cycle.hpp"
+#include "read/char_scan.hpp"
 
 #include <cctype>
 
@@ -79,10 +80,9 @@ constexpr double kMaxCoordinateMm = 1e7;
 std::size_t knot_with_control_point(const std::string& statement) {
   const std::size_t b = statement.find_first_not_of(" \t");
   if (b == std::string::npos || statement.size() < b + 4) return std::string::npos;
-  std::string head;
-  for (std::size_t i = b; i < statement.size(); ++i)
-    head += static_cast<char>(std::toupper(static_cast<unsigned char>(statement[i])));
-  if (head.rfind("KNOT", 0) != 0) return std::string::npos;
+  for (std::size_t k = 0; k < 4; ++k)  // (every statement comes here: a GOTO leaves at its first letter)
+    if (upper(statement[b + k]) != "KNOT"[k]) return std::string::npos;
+  const std::string head = upper_of(std::string_view(statement).substr(b));
   const std::size_t c = head.find("CNTRL");
   if (c == std::string::npos) return std::string::npos;
   const std::size_t comma = head.find_last_of(',', c);

@@ -22,6 +22,7 @@ class ExecutedOn final : public KinematicModel {
     return commands_.solve_quiet(cl, previous, data, figures);
   }
   bool concurrent() const override { return commands_.concurrent(); }
+  bool stateless_execute() const override { return !executing_.has_reversal(); }
   AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const override {
     return commands_.with_rotary(cl, rotary_rad, data);
   }

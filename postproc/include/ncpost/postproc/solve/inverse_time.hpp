@@ -31,5 +31,7 @@ double feed_for_minutes(double tip_path_mm, bool tip_moves, double rotary_travel
 /// bows: each half is split again until splitting changes its length by less than 1e-9 mm
 /// (at least 4, at most 2^12 pieces). `tip_at` is the tool tip (W) at the commands interpolated linearly.
 double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at);
+/// The same with the ends tip_at(0) = `start_mm` and tip_at(1) = `end_mm` given.
+double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at, const Vec3d& start_mm, const Vec3d& end_mm);
 
 }  // namespace ncpost
