@@ -129,3 +129,41 @@ TEST_CASE("README, branch planning: retracts on the BC head, greedy and planned"
     CHECK(after(log[0]) == after(log[1]));
   }
 }
+
+TEST_CASE("README, worked example: a Heidenhain and a Sinumerik program re-posted with the identified model",
+          "[readme][cli][model]") {
+  const std::string dir = ncpost::test::make_temp_dir("readme_programs_in");
+  const std::string S = data("scenarios/public-clean/");
+  const std::string model = dir + "/model.json", log = dir + "/run.log";
+  REQUIRE(run_ncpost("identify --machine " + S + "machine.toml -o " + model + " " + S + "ballbar_h250.csv " + S +
+                         "ballbar_h300.csv " + S + "sphere.csv",
+                     log) == 0);
+  const std::string machine = "--machine " + S + "machine.toml --workpiece-origin 0,0,80 ";
+  // the dome as the controls' programs: Klartext with M128 (tool tip and A C), Sinumerik in machine axes
+  REQUIRE(run_ncpost("post " + machine + "--dialect heidenhain --rtcp -o " + dir + "/dome.h " + S + "path.cls", log) ==
+          0);
+  REQUIRE(run_ncpost("post " + machine + "--dialect sinumerik -o " + dir + "/dome.mpf " + S + "path.cls", log) == 0);
+  CHECK_THAT(read_text_file(log), Catch::Contains("1201 CL motions -> 2114 blocks"));
+  const std::string repost = "post " + machine + "--tolerance 0.002 --verify-on " + S + "truth.json ";
+  struct Case {
+    const char* input;
+    const char* motions;
+    const char* compensated;
+    const char* plain;
+  };
+  for (const Case& c : {Case{"dome.h", "1201 CL motions -> 4017 blocks", "largest contour error 0.0018 mm",
+                             "largest contour error 0.0782 mm"},
+                        Case{"dome.mpf", "2114 CL motions -> 4434 blocks", "largest contour error 0.0014 mm",
+                             "largest contour error 0.0781 mm"}}) {
+    INFO(c.input);
+    REQUIRE(run_ncpost(repost + "--model " + model + " -o " + dir + "/re.nc " + dir + "/" + c.input, log) == 0);
+    const std::string compensated = read_text_file(log);
+    INFO(compensated);
+    CHECK_THAT(compensated, Catch::Contains(c.motions));
+    CHECK_THAT(compensated, Catch::Contains(c.compensated));
+    REQUIRE(run_ncpost(repost + "-o " + dir + "/plain.nc " + dir + "/" + c.input, log) == 0);
+    const std::string plain = read_text_file(log);
+    INFO(plain);
+    CHECK_THAT(plain, Catch::Contains(c.plain));
+  }
+}
