@@ -110,7 +110,7 @@ void Poster::before_motion(int line, bool rapid) {
 
 /// An actual machine with reversal: take up the play of reversing axes first (tool still).
 void Poster::take_up_reversal(const SolvedPoint& next, int line) {
-  if (auto q = solver_.take_up(previous_.q, next.q, data_)) {
+  if (auto q = hooks_.take_up(previous_.q, next.q, data_)) {
     const SolvedPoint still{previous_.cl, *q};
     emit(previous_, still, line, false);
     previous_ = still;

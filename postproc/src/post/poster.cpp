@@ -14,6 +14,7 @@ Poster::Poster(const std::string& input, const KinematicModel& solver, SolverDat
                const PostOptions& options)
     : input_(input),
       solver_(solver),
+      hooks_(post_hooks_of(solver)),
       data_(data),
       writer_(writer),
       options_(options),
