@@ -27,7 +27,8 @@ void Poster::move_to(const ClPoint& cl, int line, bool rapid, std::optional<Rota
   before_motion(line, rapid);
   if (have_position_ && !rapid && options_.take_up_reversal && !options_.subdivide.takes_up_play())
     take_up_reversal(next, line);
-  if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
+  if (have_position_ && !rapid && !rotary && words_.branches_chosen && words_.rotary_count == 2 &&
+      branch_changed(cl, next.q)) {
     if (options_.retract_mm <= 0.0)
       throw Infeasible(
           fmt::format("{}:{}: the axis limits force a change of solution (rotary {} -> {} deg) and "

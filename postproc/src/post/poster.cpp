@@ -86,7 +86,7 @@ void Poster::on(const cl::Motion& m) {
     drill(m);
     return;
   }
-  move_to(m.point, m.where.line, rapid, words_.serial ? m.rotary_rad : std::nullopt);  // angles: serial chains
+  move_to(m.point, m.where.line, rapid, words_.angles_are_programmed ? m.rotary_rad : std::nullopt);
 }
 
 void Poster::on(const cl::Feed& f) {
