@@ -22,7 +22,7 @@
 #include "ncpost/compensation/export_machine.hpp"
 #include "ncpost/compensation/export_siemens.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
 
@@ -169,7 +169,7 @@ const ExportFormat& checked_format(const ExportArgs& args) {
 /// the model read against it.
 Machine export_machine(const ExportArgs& args, const ExportFormat& format, comp::ModelFile& file) {
   if (!args.machine.empty()) {
-    Machine machine = load_machine(args.machine);
+    Machine machine = machines::load_as<Machine>(args.machine);
     file = read_model_for(args.model, machine, args.force);
     return machine;
   }
