@@ -37,6 +37,9 @@ TEST_CASE("a four-axis machine has X Y Z and one rotary axis: positions, words a
   CHECK(w.count == 4);
   CHECK(w.letters == std::vector<char>{'X', 'Y', 'Z', 'B'});
   CHECK(w.angle == std::vector<bool>{false, false, false, true});
+  // a serial chain's words: every capability of the post (command_words.hpp)
+  CHECK((w.angles_are_programmed && w.cutter_comp_supported && w.tilted_plane_capable && w.branches_chosen &&
+         w.limits_name_the_axis));
   CHECK(home_of(m).size() == 4);
   CHECK(home_of(load_machine(test::source("machines/vmcl600.toml"))).size() == 3);
   CHECK(home_of(load_machine(test::source("machines/ac-trunnion.toml"))).size() == 5);

@@ -96,7 +96,13 @@ TEST_CASE("kinematic model: the TRR-XY machine's one branch and its error hook",
   CHECK((pose.tip_mm - cl.tip_mm).norm() < 1e-6);
   CHECK(k.deviation(all[0], data).tip_mm.norm() == 0.0);  // executed on the machine it was solved for
   CHECK(k.words().count == 5);
-  CHECK_FALSE(k.words().serial);
+  // five lengths: none of a serial chain's capabilities (command_words.hpp)
+  const CommandWords w = k.words();
+  CHECK_FALSE(w.angles_are_programmed);
+  CHECK_FALSE(w.cutter_comp_supported);
+  CHECK_FALSE(w.tilted_plane_capable);
+  CHECK_FALSE(w.branches_chosen);
+  CHECK_FALSE(w.limits_name_the_axis);
 }
 
 TEST_CASE("kinematic model: kinematics/ includes nothing of postproc/ or compensation/",

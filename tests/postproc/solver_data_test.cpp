@@ -53,7 +53,7 @@ Run run(const KinematicModel& solver, const std::vector<ClPoint>& points) {
     previous = *ik.position;
     r.commands.push_back(previous);
     r.poses.push_back(solver.execute(previous, r.data));
-    solver.advance(previous, r.data);
+    post_hooks_of(solver).advance(previous, r.data);
   }
   return r;
 }

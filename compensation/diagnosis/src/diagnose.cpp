@@ -235,89 +235,109 @@ std::string separation_text(const AddedEffect& e, bool has_alternatives) {
       e.f_statistic);
 }
 
+/// The columns a separation test looks at: the names and values of the model's layout, the
+/// fitted ones (indices into names), and for each added harmonic its alternatives.
+struct SeparationColumns {
+  std::vector<std::string> names;
+  std::vector<double> values;
+  std::vector<int> fitted;
+  std::vector<std::vector<int>> alternatives;  ///< per added effect: the alternatives' columns (into fitted)
+  std::vector<std::vector<std::string>> alternative_names;
+};
+
+/// Whether `n` is a parameter of the machine that the first `model_names` names do not hold.
+bool usable_alternative(const Machine& m, const std::vector<std::string>& names, std::size_t model_names,
+                        const std::string& n) {
+  const auto end = names.begin() + static_cast<long>(model_names);
+  return std::find(names.begin(), end, n) == end && parse_parameter_name(n, m).spec;
+}
+
+/// The alternatives of each added harmonic: the same order of the axis's other components that
+/// are not in the model (for a radial EXC:h2, the tilts EAC:h2 and EBC:h2 among them), at 0,
+/// appended to the columns (one column each, shared by the effects).
+void add_alternatives(const Machine& m, const std::vector<AddedEffect>& added, SeparationColumns& cols) {
+  cols.alternatives.assign(added.size(), {});
+  cols.alternative_names.assign(added.size(), {});
+  const std::size_t model_names = cols.names.size();
+  std::map<std::string, int> alternative_column;
+  for (std::size_t a = 0; a < added.size(); ++a) {
+    const std::string& e = added[a].candidate.effect;
+    const ParseResult spec = parse_parameter_name(added[a].candidate.parameters.front(), m);
+    if (!spec.spec || spec.spec->kind != ParameterKind::harmonic) continue;
+    for (const char c : std::string("XYZABC")) {
+      if (c == e[1]) continue;
+      const std::string alt = fmt::format("E{}{}", c, e.substr(2));
+      bool usable = true;
+      for (const char* part : {":cos", ":sin"})
+        if (!usable_alternative(m, cols.names, model_names, alt + part)) usable = false;
+      if (!usable) continue;
+      cols.alternative_names[a].push_back(alt);
+      for (const char* part : {":cos", ":sin"}) {
+        const std::string n = alt + part;
+        if (!alternative_column.count(n)) {
+          cols.names.push_back(n);
+          cols.values.push_back(0.0);
+          alternative_column[n] = static_cast<int>(cols.fitted.size());
+          cols.fitted.push_back(static_cast<int>(cols.names.size()) - 1);
+        }
+        cols.alternatives[a].push_back(alternative_column[n]);
+      }
+    }
+  }
+}
+
+/// The columns (into `fitted`) of a candidate's parameters.
+std::vector<int> columns_of(const SeparationColumns& cols, const Candidate& c) {
+  std::vector<int> out;
+  for (std::size_t j = 0; j < cols.fitted.size(); ++j)
+    if (std::find(c.parameters.begin(), c.parameters.end(), cols.names[static_cast<std::size_t>(cols.fitted[j])]) !=
+        c.parameters.end())
+      out.push_back(static_cast<int>(j));
+  return out;
+}
+
+/// The separation of the added effect `a` from the rest of the model's columns of J, the added
+/// effects it correlates with, and the evidence against its alternatives.
+void separate_effect(const Eigen::MatrixXd& J, const SeparationColumns& cols, std::size_t a,
+                     std::vector<AddedEffect>& added) {
+  AddedEffect& e = added[a];
+  const std::vector<int> own = columns_of(cols, e.candidate);
+  if (own.empty()) return;
+  std::vector<int> rest;
+  for (int j = 0; j < static_cast<int>(cols.fitted.size()); ++j)
+    if (std::find(own.begin(), own.end(), j) == own.end()) rest.push_back(j);
+  const Eigen::MatrixXd Q = basis_of(J, rest), E = basis_of(J, own);
+  const Eigen::MatrixXd off = E - Q * (Q.transpose() * E);
+  e.separation_sine = Eigen::JacobiSVD<Eigen::MatrixXd>(off).singularValues().minCoeff();
+  e.correlated.clear();
+  for (const auto& other : added) {
+    if (&other == &e) continue;
+    const std::vector<int> theirs = columns_of(cols, other.candidate);
+    if (theirs.empty()) continue;
+    const Eigen::MatrixXd F = basis_of(J, theirs);
+    const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
+    if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
+  }
+  alias_evidence(J, Q, off, cols.alternatives[a], cols.alternative_names[a], e);
+  e.separation = separation_text(e, !cols.alternatives[a].empty());
+}
+
 /// Whether the data can tell each added effect from the rest of the final model (issue 17):
 /// the sine of its columns to the span of all other fitted columns, and the added effects its
 /// columns correlate with (largest canonical correlation above 0.9).
 void separate_effects(const Machine& m, const std::vector<MeasurementSet>& sets, const Model& model,
                       const DiagnoseOptions& o, DiagnoseResult& out) {
   if (out.added.empty() || !model.fit.converged) return;
-  // two named variables, not a structured binding: the lambda below captures names, and
-  // clang 14 (the fuzz build) cannot capture a structured binding
-  std::vector<std::string> names;
-  std::vector<double> values;
-  std::tie(names, values) = layout_with_values(model, o.identify.fixed);
-  std::vector<int> fitted;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (model.fit.uncertainty.contains(names[i])) fitted.push_back(static_cast<int>(i));
-  // the alternatives of each added harmonic: the same order of the axis's other components that
-  // are not in the model (for a radial EXC:h2, the tilts EAC:h2 and EBC:h2 among them), at 0
-  std::vector<std::vector<int>> alternatives(out.added.size());
-  std::vector<std::vector<std::string>> alternative_names(out.added.size());
-  const std::size_t model_columns = fitted.size();
-  const std::size_t model_names = names.size();
-  std::map<std::string, int> alternative_column;  // shared by the effects: one column each
-  for (std::size_t a = 0; a < out.added.size(); ++a) {
-    const std::string& e = out.added[a].candidate.effect;
-    const ParseResult spec = parse_parameter_name(out.added[a].candidate.parameters.front(), m);
-    if (!spec.spec || spec.spec->kind != ParameterKind::harmonic) continue;
-    for (const char c : std::string("XYZABC")) {
-      if (c == e[1]) continue;
-      const std::string alt = fmt::format("E{}{}", c, e.substr(2));
-      bool usable = true;
-      for (const char* part : {":cos", ":sin"}) {
-        const std::string n = alt + part;
-        if (std::find(names.begin(), names.begin() + static_cast<long>(model_names), n) !=
-                names.begin() + static_cast<long>(model_names) ||
-            !parse_parameter_name(n, m).spec)
-          usable = false;
-      }
-      if (!usable) continue;
-      alternative_names[a].push_back(alt);
-      for (const char* part : {":cos", ":sin"}) {
-        const std::string n = alt + part;
-        if (!alternative_column.count(n)) {
-          names.push_back(n);
-          values.push_back(0.0);
-          alternative_column[n] = static_cast<int>(fitted.size());
-          fitted.push_back(static_cast<int>(names.size()) - 1);
-        }
-        alternatives[a].push_back(alternative_column[n]);
-      }
-    }
-  }
-  const ResidualProblem prob{&m, &sets, ModelLayout(m, names)};
-  const Eigen::MatrixXd J = prob.jacobian(values, fitted);
-  fitted.resize(model_columns);
-  auto columns_of = [&](const Candidate& c) {
-    std::vector<int> cols;
-    for (std::size_t j = 0; j < fitted.size(); ++j)
-      if (std::find(c.parameters.begin(), c.parameters.end(), names[static_cast<std::size_t>(fitted[j])]) !=
-          c.parameters.end())
-        cols.push_back(static_cast<int>(j));
-    return cols;
-  };
-  for (std::size_t a = 0; a < out.added.size(); ++a) {
-    AddedEffect& e = out.added[a];
-    const std::vector<int> own = columns_of(e.candidate);
-    if (own.empty()) continue;
-    std::vector<int> rest;
-    for (int j = 0; j < static_cast<int>(fitted.size()); ++j)
-      if (std::find(own.begin(), own.end(), j) == own.end()) rest.push_back(j);
-    const Eigen::MatrixXd Q = basis_of(J, rest), E = basis_of(J, own);
-    const Eigen::MatrixXd off = E - Q * (Q.transpose() * E);
-    e.separation_sine = Eigen::JacobiSVD<Eigen::MatrixXd>(off).singularValues().minCoeff();
-    e.correlated.clear();
-    for (const auto& other : out.added) {
-      if (&other == &e) continue;
-      const std::vector<int> theirs = columns_of(other.candidate);
-      if (theirs.empty()) continue;
-      const Eigen::MatrixXd F = basis_of(J, theirs);
-      const double rho = Eigen::JacobiSVD<Eigen::MatrixXd>(E.transpose() * F).singularValues().maxCoeff();
-      if (rho > 0.9) e.correlated.emplace_back(other.candidate.effect, rho);
-    }
-    alias_evidence(J, Q, off, alternatives[a], alternative_names[a], e);
-    e.separation = separation_text(e, !alternatives[a].empty());
-  }
+  SeparationColumns cols;
+  std::tie(cols.names, cols.values) = layout_with_values(model, o.identify.fixed);
+  for (std::size_t i = 0; i < cols.names.size(); ++i)
+    if (model.fit.uncertainty.contains(cols.names[i])) cols.fitted.push_back(static_cast<int>(i));
+  const std::size_t model_columns = cols.fitted.size();
+  add_alternatives(m, out.added, cols);
+  const ResidualProblem prob{&m, &sets, ModelLayout(m, cols.names)};
+  const Eigen::MatrixXd J = prob.jacobian(cols.values, cols.fitted);
+  cols.fitted.resize(model_columns);
+  for (std::size_t a = 0; a < out.added.size(); ++a) separate_effect(J, cols, a, out.added);
 }
 
 /// Step 1 of diagnose(): the candidates screened at the current solution (linearised), sorted by

@@ -69,68 +69,71 @@ double table_spacing_deg(const AxisSampling& sampling) {
   return 120.0;
 }
 
-std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<MeasurementSet>& sets,
-                                           const std::vector<std::string>& present) {
+namespace {
+
+/// Adds a candidate to the catalogue unless every one of its parameters is in the model already.
+struct Catalogue {
+  const std::vector<std::string>& present;
   std::vector<Candidate> out;
-  auto add = [&](Candidate c) {
+  void add(Candidate c) {
     const bool all_in = std::all_of(c.parameters.begin(), c.parameters.end(), [&](const std::string& p) {
       return std::find(present.begin(), present.end(), p) != present.end();
     });
     if (!all_in) out.push_back(std::move(c));
-  };
-  std::vector<AxisSampling> sampling;
-  for (int k = 0; k < m.rotary_count(); ++k) sampling.push_back(axis_sampling(sets, 3 + k));
-  for (int k = 0; k < m.rotary_count(); ++k) {
-    const char a = m.rotary(k).letter;
-    for (int order = 1; order <= 4; ++order)
-      for (int c = 0; c < 6; ++c) {
-        const std::string e = fmt::format("E{}{}:h{}", kComponents[c], a, order);
-        add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
-      }
   }
-  // orders beyond 4 where the data resolve them (an axis they turn): the order the data show
-  for (int k = 0; k < m.rotary_count(); ++k) {
-    const char a = m.rotary(k).letter;
-    if (!sampling[static_cast<std::size_t>(k)].turns) continue;
-    for (int order = 5; order <= sampling[static_cast<std::size_t>(k)].max_order; ++order)
-      for (int c = 0; c < 6; ++c) {
-        const std::string e = fmt::format("E{}{}:h{}", kComponents[c], a, order);
-        add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
-      }
-  }
+};
+
+/// The harmonics of every component of rotary axis `a`, orders `first` to `last`.
+void add_harmonics(Catalogue& cat, char a, int first, int last) {
+  for (int order = first; order <= last; ++order)
+    for (int c = 0; c < 6; ++c) {
+      const std::string e = fmt::format("E{}{}:h{}", kComponents[c], a, order);
+      cat.add({e, CandidateKind::component, {e + ":cos", e + ":sin"}, {}, false});
+    }
+}
+
+/// Squareness, then the polynomials (degree 1 to 3) of every component of the linear axes.
+void add_linear_terms(Catalogue& cat, const Machine& m) {
   // squareness before the polynomials: EXY:p1 acts as EC0Y, EXZ:p1 as EB0Z, EYZ:p1 as EA0Z, and
   // the ISO name is the one to give
-  for (const char* e : {"EC0Y", "EB0Z", "EA0Z"}) add({e, CandidateKind::squareness, {e}, {}, false});
+  for (const char* e : {"EC0Y", "EB0Z", "EA0Z"}) cat.add({e, CandidateKind::squareness, {e}, {}, false});
   for (int i = 0; i < 3; ++i) {
     const char a = m.axes[static_cast<std::size_t>(i)].letter;
     for (int order = 1; order <= 3; ++order)
       for (int c = 0; c < 6; ++c) {
         const std::string e = fmt::format("E{}{}:p{}", kComponents[c], a, order);
-        add({e, CandidateKind::component, {e}, {}, false});
+        cat.add({e, CandidateKind::component, {e}, {}, false});
       }
   }
+}
+
+/// Reversal of the axes whose command falls, drift in time, and the instruments of the data.
+void add_reversal_drift_instruments(Catalogue& cat, const Machine& m, const std::vector<MeasurementSet>& sets) {
   for (std::size_t i = 0; i < m.axes.size(); ++i)
     if (axis_falls(sets, static_cast<int>(i))) {
       const std::string e = fmt::format("reversal:{}", m.axes[i].letter);
-      add({e, CandidateKind::reversal, {e}, {}, false});
+      cat.add({e, CandidateKind::reversal, {e}, {}, false});
     }
   for (const char c : {'X', 'Y', 'Z'}) {
     const std::string e = fmt::format("drift:{}:t", c);
     Candidate d{e, CandidateKind::drift, {e + ":lin", e + ":exp"}, {}, true};
     d.held.set(e + ":tau", 600.0);  // replaced by the best time constant before it is scored
-    add(std::move(d));
+    cat.add(std::move(d));
   }
   if (has_type(sets, MeasurementType::ballbar))
-    add({"ballbar:length", CandidateKind::instrument, {"ballbar:length"}, {}, true});
+    cat.add({"ballbar:length", CandidateKind::instrument, {"ballbar:length"}, {}, true});
   if (has_type(sets, MeasurementType::sphere))
-    add({"sphere:position",
-         CandidateKind::instrument,
-         {"sphere:position:x", "sphere:position:y", "sphere:position:z"},
-         {},
-         true});
-  // location errors of a rotary axis that change with the rotary axis carrying it (a tilt of C on a
-  // cradle that sags with A, issue 17): degree 1 and 2 in the carrier's command, where the data
-  // move the carrier
+    cat.add({"sphere:position",
+             CandidateKind::instrument,
+             {"sphere:position:x", "sphere:position:y", "sphere:position:z"},
+             {},
+             true});
+}
+
+/// Location errors of a rotary axis that change with the rotary axis carrying it (a tilt of C on
+/// a cradle that sags with A, issue 17): degree 1 and 2 in the carrier's command, where the data
+/// move the carrier.
+void add_carried_terms(Catalogue& cat, const Machine& m, const std::vector<MeasurementSet>& sets) {
   for (int k = 0; k < m.rotary_count(); ++k)
     for (int j = 0; j < m.rotary_count(); ++j) {
       const char carrier = m.rotary(k).letter, carried = m.rotary(j).letter;
@@ -139,11 +142,14 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
         for (int c = 0; c < 6; ++c) {
           const std::string e = fmt::format("E{}0{}:{}:p{}", kComponents[c], carried, carrier, order);
           if (!parse_parameter_name(e, m).spec) continue;  // not carried, or an offset along its own line
-          add({e, CandidateKind::component, {e}, {}, false});
+          cat.add({e, CandidateKind::component, {e}, {}, false});
         }
     }
-  // the non-parametric form last: a periodic table of every component of an axis the data turn,
-  // on the grid they resolve; the node at home is held at 0 (only differences from home act)
+}
+
+/// The non-parametric form: a periodic table of every component of an axis the data turn, on the
+/// grid they resolve; the node at home is held at 0 (only differences from home act).
+void add_tables(Catalogue& cat, const Machine& m, const std::vector<AxisSampling>& sampling) {
   for (int k = 0; k < m.rotary_count(); ++k) {
     const AxisSampling& sm = sampling[static_cast<std::size_t>(k)];
     if (!sm.turns) continue;
@@ -155,10 +161,28 @@ std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<M
       Candidate t{fmt::format("E{}{}:t", kComponents[c], a), CandidateKind::component, {}, {}, false};
       for (int i = 1; i < nodes; ++i) t.parameters.push_back(table_parameter_name(kComponents[c], a, i * d));
       t.held.set(table_parameter_name(kComponents[c], a, 0.0), 0.0);
-      add(std::move(t));
+      cat.add(std::move(t));
     }
   }
-  return out;
+}
+
+}  // namespace
+
+std::vector<Candidate> candidate_catalogue(const Machine& m, const std::vector<MeasurementSet>& sets,
+                                           const std::vector<std::string>& present) {
+  Catalogue cat{present, {}};
+  std::vector<AxisSampling> sampling;
+  for (int k = 0; k < m.rotary_count(); ++k) sampling.push_back(axis_sampling(sets, 3 + k));
+  for (int k = 0; k < m.rotary_count(); ++k) add_harmonics(cat, m.rotary(k).letter, 1, 4);
+  // orders beyond 4 where the data resolve them (an axis they turn): the order the data show
+  for (int k = 0; k < m.rotary_count(); ++k)
+    if (sampling[static_cast<std::size_t>(k)].turns)
+      add_harmonics(cat, m.rotary(k).letter, 5, sampling[static_cast<std::size_t>(k)].max_order);
+  add_linear_terms(cat, m);
+  add_reversal_drift_instruments(cat, m, sets);
+  add_carried_terms(cat, m, sets);
+  add_tables(cat, m, sampling);  // last
+  return cat.out;
 }
 
 }  // namespace ncpost::comp

@@ -210,34 +210,35 @@ std::string text_diagnose_report(const Machine& m, const std::vector<Measurement
   return o;
 }
 
-std::string html_diagnose_report(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d,
-                                 const ToolTipComparison& tt, const IdentifyReportInputs& inputs) {
-  std::string page = html_report(m, sets, d.final_fit, inputs);
-  std::string h = "<h1>Residual analysis</h1>";
-  h += fmt::format(
-      "<p>Basic model: rms {:.3f} µm, max {:.3f} µm; final model: rms {:.3f} µm, max {:.3f} µm. Noise level "
-      "estimated from the data: {:.3f} µm. Stopped: {}.</p>",
-      d.basic.rms_after_um, d.basic.max_after_um, d.final_fit.rms_after_um, d.final_fit.max_after_um, d.noise_um,
-      escape(d.stop_reason));
-  h += "<table><tr><th class=n>effect</th><th class=n>size</th><th>rms before µm</th><th>rms after µm</th><th>max "
-       "before µm</th>"
-       "<th>max after µm</th><th>F</th><th>p</th><th class=n>posted</th></tr>";
+namespace {
+
+/// "effect (≡ a, b)": the effect and those the data cannot tell from it.
+std::string effect_name(const AddedEffect& e) {
+  if (e.equivalent.empty()) return escape(e.candidate.effect);
+  std::string l;
+  for (const auto& q : e.equivalent) l += (l.empty() ? "" : ", ") + q;
+  return escape(e.candidate.effect) + " (≡ " + l + ")";
+}
+
+/// The effects added, one row each.
+std::string html_effects(const DiagnoseResult& d) {
+  std::string h =
+      "<table><tr><th class=n>effect</th><th class=n>size</th><th>rms before µm</th><th>rms after µm</th><th>max "
+      "before µm</th>"
+      "<th>max after µm</th><th>F</th><th>p</th><th class=n>posted</th></tr>";
   for (const auto& e : d.added)
     h += fmt::format(
         "<tr><td class=n>{}</td><td class=n>{} {}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
         "<td>{:.4g}</td><td>{:.2g}</td><td class=n>{}</td></tr>",
-        escape(e.candidate.effect) + (e.equivalent.empty() ? std::string()
-                                                           : " (≡ " +
-                                                                 [&] {
-                                                                   std::string l;
-                                                                   for (const auto& q : e.equivalent)
-                                                                     l += (l.empty() ? "" : ", ") + q;
-                                                                   return l;
-                                                                 }() +
-                                                                 ")"),
-        what_size(e), size_text(e), e.rms_before_um, e.rms_after_um, e.max_before_um, e.max_after_um, e.f_statistic,
-        e.p_value, e.candidate.measurement_only ? "no (measuring only)" : "yes");
+        effect_name(e), what_size(e), size_text(e), e.rms_before_um, e.rms_after_um, e.max_before_um, e.max_after_um,
+        e.f_statistic, e.p_value, e.candidate.measurement_only ? "no (measuring only)" : "yes");
   h += "</table>";
+  return h;
+}
+
+/// The candidates the last step rejected, and the structure no candidate explains.
+std::string html_left_over(const DiagnoseResult& d) {
+  std::string h;
   if (!d.last_rejected.empty()) {
     h += "<p>Not added in the last step:</p><ul>";
     for (const auto& r : d.last_rejected) h += "<li>" + escape(r.effect + ": " + r.reason) + "</li>";
@@ -253,8 +254,14 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
            "</li>";
     h += "</ul><p>To resolve it: " + escape(d.unexplained.front().proposal) + ".</p>";
   }
-  h += "<h2>Residual per file</h2><table><tr><th class=n>file</th><th>basic rms µm</th><th>basic max µm</th><th>final "
-       "rms µm</th><th>final max µm</th></tr>";
+  return h;
+}
+
+/// The residual of each file, basic and final model; then the predicted tool-tip error.
+std::string html_residuals_and_tool_tip(const DiagnoseResult& d, const ToolTipComparison& tt) {
+  std::string h =
+      "<h2>Residual per file</h2><table><tr><th class=n>file</th><th>basic rms µm</th><th>basic max µm</th><th>final "
+      "rms µm</th><th>final max µm</th></tr>";
   for (std::size_t i = 0; i < d.basic.files.size() && i < d.final_fit.files.size(); ++i)
     h += fmt::format("<tr><td class=n>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>",
                      escape(base_name(d.basic.files[i].file)), d.basic.files[i].rms_after_um,
@@ -269,23 +276,31 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
       tt.poses, tt.uncompensated_max_um, tt.uncompensated_rms_um, tt.basic_left_max_um, tt.basic_left_rms_um,
       tt.final_sigma_max_um, tt.final_sigma_rms_um);
   h += "<p>" + escape(region_claim(tt)) + "</p>";
-  h += "<h2>Residual signature</h2><p>Harmonic amplitudes against each rotary angle that turns most of a turn, "
-       "correlation with the direction each axis last moved and with time; basic model → final model.</p><pre>" +
-       escape(signature_text(m, sets, d)) + "</pre>";
-  h +=
+  return h;
+}
+
+/// The abscissae a set's residual is plotted against: each rotary axis it turns through 9 or more
+/// angles (label, axis index), then time (index -1).
+std::vector<std::pair<std::string, int>> plot_abscissae(const Machine& m, const MeasurementSet& s) {
+  std::vector<std::pair<std::string, int>> xs;
+  for (int k = 0; k < m.rotary_count(); ++k) {
+    std::set<long long> distinct;
+    for (const auto& row : s.rows) distinct.insert(std::llround(row.command[3 + k] * 1e6));
+    if (distinct.size() >= 9) xs.push_back({std::string(1, m.rotary(k).letter) + " (deg)", 3 + k});
+  }
+  xs.push_back({"t (s)", -1});
+  return xs;
+}
+
+/// The residual of every set against angle and time, basic and final model.
+std::string html_residual_plots(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d) {
+  std::string h =
       "<h2>Residual against angle and time</h2><p><span style=\"color:#999\">basic model</span>, "
       "<span style=\"color:#1f5fbf\">final model</span>; sphere sets show dx, dy and dz together.</p><div class=plots>";
   Eigen::Index at = 0;
   for (const auto& s : sets) {
     const int nv = s.values_per_row();
-    std::vector<std::pair<std::string, int>> xs;  // label, axis index (-1 time)
-    for (int k = 0; k < m.rotary_count(); ++k) {
-      std::set<long long> distinct;
-      for (const auto& row : s.rows) distinct.insert(std::llround(row.command[3 + k] * 1e6));
-      if (distinct.size() >= 9) xs.push_back({std::string(1, m.rotary(k).letter) + " (deg)", 3 + k});
-    }
-    xs.push_back({"t (s)", -1});
-    for (const auto& [label, axis] : xs) {
+    for (const auto& [label, axis] : plot_abscissae(m, s)) {
       Series before, after;
       for (std::size_t k = 0; k < s.rows.size(); ++k)
         for (int v = 0; v < nv; ++v) {
@@ -301,6 +316,27 @@ std::string html_diagnose_report(const Machine& m, const std::vector<Measurement
     at += static_cast<Eigen::Index>(s.rows.size()) * nv;
   }
   h += "</div>";
+  return h;
+}
+
+}  // namespace
+
+std::string html_diagnose_report(const Machine& m, const std::vector<MeasurementSet>& sets, const DiagnoseResult& d,
+                                 const ToolTipComparison& tt, const IdentifyReportInputs& inputs) {
+  std::string page = html_report(m, sets, d.final_fit, inputs);
+  std::string h = "<h1>Residual analysis</h1>";
+  h += fmt::format(
+      "<p>Basic model: rms {:.3f} µm, max {:.3f} µm; final model: rms {:.3f} µm, max {:.3f} µm. Noise level "
+      "estimated from the data: {:.3f} µm. Stopped: {}.</p>",
+      d.basic.rms_after_um, d.basic.max_after_um, d.final_fit.rms_after_um, d.final_fit.max_after_um, d.noise_um,
+      escape(d.stop_reason));
+  h += html_effects(d);
+  h += html_left_over(d);
+  h += html_residuals_and_tool_tip(d, tt);
+  h += "<h2>Residual signature</h2><p>Harmonic amplitudes against each rotary angle that turns most of a turn, "
+       "correlation with the direction each axis last moved and with time; basic model → final model.</p><pre>" +
+       escape(signature_text(m, sets, d)) + "</pre>";
+  h += html_residual_plots(m, sets, d);
   const auto end = page.rfind("</body>");
   if (end == std::string::npos) return page + h;
   return page.substr(0, end) + h + page.substr(end);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -85,6 +86,99 @@ std::vector<double> laser_targets(const Machine& m, int j, const LaserPlanOption
   return t;
 }
 
+namespace {
+
+/// The two directions other than axis j (XYZ order) and their two line coordinates each: a
+/// commanded axis's (1/4 and 3/4 of its travel), else the reflector's offset on the tool.
+struct LineLayout {
+  std::array<int, 2> other{};
+  std::array<std::array<double, 2>, 2> at{};
+  std::array<bool, 2> commanded{};
+};
+
+LineLayout line_layout(const Machine& m, int j, const LaserPlanOptions& o) {
+  LineLayout l;
+  for (int k = 0, n = 0; k < 3; ++k) {
+    if (k == j) continue;
+    l.other[n] = k;
+    l.commanded[n] = moves_abbe_offset(m, j, k);
+    if (l.commanded[n]) {
+      const auto [lo, hi] = travel(m, k, o.margin_mm);
+      l.at[n] = {rounded_to_quantum(lo + 0.25 * (hi - lo), kLineGridMm),
+                 rounded_to_quantum(lo + 0.75 * (hi - lo), kLineGridMm)};
+    } else {
+      l.at[n] = {-o.reflector_offset_mm, o.reflector_offset_mm};
+    }
+    ++n;
+  }
+  return l;
+}
+
+/// Where one measuring line lies: the other axes' commands, the reflector on the tool, and the
+/// line's two coordinates as commanded.
+struct LinePose {
+  AxisPosition base;
+  Vec3d tool_point = Vec3d::Zero();
+  std::array<double, 2> line_cmd{0.0, 0.0};
+};
+
+LinePose line_pose(const LineLayout& l, int line) {
+  // lines (a1, b2), (a2, b2), (a1, b1): not collinear, so pitch, yaw and roll are all seen
+  const std::array<std::array<int, 2>, 3> pick{{{0, 1}, {1, 1}, {0, 0}}};
+  LinePose p;
+  for (int n = 0; n < 2; ++n) {
+    const double v = l.at[n][static_cast<std::size_t>(pick[static_cast<std::size_t>(line)][n])];
+    if (l.commanded[n]) {
+      p.base[l.other[n]] = v;
+      p.line_cmd[n] = v;
+    } else {
+      p.tool_point[l.other[n]] = v;
+    }
+  }
+  return p;
+}
+
+/// The set of component c of axis `letter` on one line (0-based): the ISO 230-2 cycle, `runs`
+/// times up and down the targets, time stamps from `t` (advanced past the set and the optics' set-up).
+NamedPlan laser_set(char letter, char c, int line, const LinePose& pose, const std::vector<double>& targets,
+                    const LaserPlanOptions& o, double& t) {
+  const int j = letter - 'X';
+  NamedPlan p;
+  p.name = c == letter ? fmt::format("{}{}_pos", letter, line + 1) : fmt::format("{}{}_str{}", letter, line + 1, c);
+  MeasurementSet& s = p.set;
+  s.file = p.name;
+  s.type = MeasurementType::laser;
+  s.has_values = false;
+  s.component = c;
+  s.tool_point_mm = pose.tool_point;
+  s.tool_length_mm = o.tool_length_mm;
+  s.set_meta("axis", std::string(1, letter));
+  s.set_meta("line", fmt::format("{:.4f}, {:.4f}", pose.line_cmd[0], pose.line_cmd[1]));
+  s.set_meta("approach", "bidirectional");
+  s.set_meta("test",
+             fmt::format("laser {} of axis {}, line {} (ISO 230-2 cycle, {} runs)",
+                         c == letter ? "positioning" : fmt::format("straightness in {}", c), letter, line + 1, o.runs));
+  for (int run = 1; run <= o.runs; ++run) {
+    for (int pass = 0; pass < 2; ++pass) {
+      for (std::size_t i = 0; i < targets.size(); ++i) {
+        const double x = pass == 0 ? targets[i] : targets[targets.size() - 1 - i];
+        MeasurementRow r;
+        r.command = pose.base;
+        r.command[j] = x;
+        r.run = run;
+        r.approach = pass == 0 ? 1 : -1;
+        r.time_s = std::round(t * kTimeStampsPerS) / kTimeStampsPerS;
+        t += o.dt_s;
+        s.rows.push_back(r);
+      }
+    }
+  }
+  t += kOpticsSetupS;
+  return p;
+}
+
+}  // namespace
+
 std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
   if (const std::string why = o.validate(); !why.empty()) throw std::invalid_argument(why);
   std::vector<NamedPlan> plans;
@@ -92,76 +186,13 @@ std::vector<NamedPlan> plan_laser(const Machine& m, const LaserPlanOptions& o) {
   for (char letter : o.axes) {
     const int j = letter - 'X';
     const std::vector<double> targets = laser_targets(m, j, o);
-    // the other two directions, XYZ order, and their two line coordinates each
-    std::array<int, 2> other{};
-    std::array<std::array<double, 2>, 2> at{};
-    std::array<bool, 2> commanded{};
-    for (int k = 0, n = 0; k < 3; ++k) {
-      if (k == j) continue;
-      other[n] = k;
-      commanded[n] = moves_abbe_offset(m, j, k);
-      if (commanded[n]) {
-        const auto [lo, hi] = travel(m, k, o.margin_mm);
-        at[n] = {rounded_to_quantum(lo + 0.25 * (hi - lo), kLineGridMm),
-                 rounded_to_quantum(lo + 0.75 * (hi - lo), kLineGridMm)};
-      } else {
-        at[n] = {-o.reflector_offset_mm, o.reflector_offset_mm};
-      }
-      ++n;
-    }
-    // lines (a1, b2), (a2, b2), (a1, b1): not collinear, so pitch, yaw and roll are all seen
-    const std::array<std::array<int, 2>, 3> pick{{{0, 1}, {1, 1}, {0, 0}}};
+    const LineLayout layout = line_layout(m, j, o);
     for (int line = 0; line < o.lines; ++line) {
-      AxisPosition base;
-      Vec3d tool_point = Vec3d::Zero();
-      std::array<double, 2> line_cmd{0.0, 0.0};
-      for (int n = 0; n < 2; ++n) {
-        const double v = at[n][static_cast<std::size_t>(pick[static_cast<std::size_t>(line)][n])];
-        if (commanded[n]) {
-          base[other[n]] = v;
-          line_cmd[n] = v;
-        } else {
-          tool_point[other[n]] = v;
-        }
-      }
+      const LinePose pose = line_pose(layout, line);
       std::vector<char> components{letter};
       if (o.straightness)
-        for (int n = 0; n < 2; ++n) components.push_back(static_cast<char>('X' + other[n]));
-      for (char c : components) {
-        NamedPlan p;
-        p.name =
-            c == letter ? fmt::format("{}{}_pos", letter, line + 1) : fmt::format("{}{}_str{}", letter, line + 1, c);
-        MeasurementSet& s = p.set;
-        s.file = p.name;
-        s.type = MeasurementType::laser;
-        s.has_values = false;
-        s.component = c;
-        s.tool_point_mm = tool_point;
-        s.tool_length_mm = o.tool_length_mm;
-        s.set_meta("axis", std::string(1, letter));
-        s.set_meta("line", fmt::format("{:.4f}, {:.4f}", line_cmd[0], line_cmd[1]));
-        s.set_meta("approach", "bidirectional");
-        s.set_meta("test", fmt::format("laser {} of axis {}, line {} (ISO 230-2 cycle, {} runs)",
-                                       c == letter ? "positioning" : fmt::format("straightness in {}", c), letter,
-                                       line + 1, o.runs));
-        for (int run = 1; run <= o.runs; ++run) {
-          for (int pass = 0; pass < 2; ++pass) {
-            for (std::size_t i = 0; i < targets.size(); ++i) {
-              const double x = pass == 0 ? targets[i] : targets[targets.size() - 1 - i];
-              MeasurementRow r;
-              r.command = base;
-              r.command[j] = x;
-              r.run = run;
-              r.approach = pass == 0 ? 1 : -1;
-              r.time_s = std::round(t * kTimeStampsPerS) / kTimeStampsPerS;
-              t += o.dt_s;
-              s.rows.push_back(r);
-            }
-          }
-        }
-        t += kOpticsSetupS;
-        plans.push_back(std::move(p));
-      }
+        for (int n = 0; n < 2; ++n) components.push_back(static_cast<char>('X' + layout.other[n]));
+      for (char c : components) plans.push_back(laser_set(letter, c, line, pose, targets, o, t));
     }
   }
   return plans;

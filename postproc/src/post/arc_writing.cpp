@@ -103,7 +103,7 @@ void Poster::write_native_arc(const NcArc& arc, const Vec3d& xe, const Vec3d& no
   else
     for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, next.q.linear_mm[i]);
   if (written && !options_.rtcp) verify_native_arc(*written, arc, start_words, normal, angle, c, end, executed);
-  solver_.advance(executed, data_);
+  hooks_.advance(executed, data_);
   last_executed_ = executed;
   previous_ = next;
   ++summary_.arcs_out;

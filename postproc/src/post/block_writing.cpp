@@ -34,7 +34,7 @@ void Poster::emit(const SolvedPoint& from, const SolvedPoint& to, int line, bool
   if (read_back_) check_written(from, to, line, rapid, m, first_block, block);
   if (written && options_.on_block && have_position_)
     options_.on_block(WrittenBlock{line, rapid, from.cl, to.cl, last_executed_, executed});
-  solver_.advance(executed, data_);
+  hooks_.advance(executed, data_);
   last_executed_ = executed;
 }
 
@@ -47,7 +47,7 @@ NcMotion Poster::motion_words(const SolvedPoint& to, bool rapid) const {
     const Vec3d in_plane = plane_->words.to_plane(to.cl.tip_mm + home_offset_);
     for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = in_plane[i];
   } else if (options_.rtcp) {
-    const Vec3d tip_mm = solver_.programmed_tip(to.cl, to.q);
+    const Vec3d tip_mm = hooks_.programmed_tip(to.cl, to.q);
     for (int i = 0; i < 3; ++i) m.values[static_cast<std::size_t>(i)] = tip_mm[i];
   }
   for (int i = (options_.rtcp || plane_) ? 3 : 0; i < words_.count; ++i) {  // the words of the solver (CommandWords)

@@ -14,14 +14,14 @@ namespace ncpost::detail {
 /// CUTCOM/LEFT|RIGHT|OFF as G41/G42 D<n> / G40 (cycle_words.hpp `comp_words`).
 void Poster::on(const cl::CutterComp& c) {
   const SourcePosition at{input_, c.where.line, c.where.column};
-  if (!words_.serial && c.side != cl::CutterComp::Side::off)
+  if (!words_.cutter_comp_supported && c.side != cl::CutterComp::Side::off)
     throw InputError(at,
                      fmt::format("cutter radius compensation is not posted on the {} machine (its control "
                                  "compensates in no plane of these axes): post the tool centre path without "
                                  "CUTCOM",
                                  machine_.name),
                      "CUTCOM/" + c.text);
-  if (!words_.serial) return;  // CUTCOM/OFF: nothing was on
+  if (!words_.cutter_comp_supported) return;  // CUTCOM/OFF: nothing was on
   const auto words = comp_words(writer_.dialect());
   if (!words)
     throw InputError(at,

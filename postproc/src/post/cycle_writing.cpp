@@ -57,7 +57,7 @@ bool Poster::native_hole(const HolePlanes& p, double feed, int line) {
   const RotaryAngles rotary = ik.position->rotary_rad;
   const std::function<Vec3d(const ClPoint&)> frame = [&](const ClPoint& c) -> Vec3d {
     if (plane_) return plane_->words.to_plane(c.tip_mm + home_offset_);
-    return options_.rtcp ? solver_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary, data_).linear_mm;
+    return options_.rtcp ? hooks_.programmed_tip(c, *ik.position) : solver_.with_rotary(c, rotary, data_).linear_mm;
   };
   const Vec3d xt = frame(p.retract), xr = frame(p.r_plane), xb = frame(p.bottom);
   // in a tilted plane its Z (rounded angles) is within ~1e-6 rad of the hole: the hole is native
@@ -82,7 +82,7 @@ bool Poster::native_hole(const HolePlanes& p, double feed, int line) {
       executed = plane_executed(xt);
     else
       for (int i = 0; i < 3; ++i) executed.linear_mm[i] = writer_.rounded(i, executed.linear_mm[i]);
-    solver_.advance(executed, data_);
+    hooks_.advance(executed, data_);
     last_executed_ = executed;
     previous_ = at_retract;
     if (last_values_)

@@ -27,7 +27,8 @@ void Poster::move_to(const ClPoint& cl, int line, bool rapid, std::optional<Rota
   before_motion(line, rapid);
   if (have_position_ && !rapid && options_.take_up_reversal && !options_.subdivide.takes_up_play())
     take_up_reversal(next, line);
-  if (have_position_ && !rapid && !rotary && words_.serial && words_.rotary_count == 2 && branch_changed(cl, next.q)) {
+  if (have_position_ && !rapid && !rotary && words_.branches_chosen && words_.rotary_count == 2 &&
+      branch_changed(cl, next.q)) {
     if (options_.retract_mm <= 0.0)
       throw Infeasible(
           fmt::format("{}:{}: the axis limits force a change of solution (rotary {} -> {} deg) and "
@@ -110,7 +111,7 @@ void Poster::before_motion(int line, bool rapid) {
 
 /// An actual machine with reversal: take up the play of reversing axes first (tool still).
 void Poster::take_up_reversal(const SolvedPoint& next, int line) {
-  if (auto q = solver_.take_up(previous_.q, next.q, data_)) {
+  if (auto q = hooks_.take_up(previous_.q, next.q, data_)) {
     const SolvedPoint still{previous_.cl, *q};
     emit(previous_, still, line, false);
     previous_ = still;

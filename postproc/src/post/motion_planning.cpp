@@ -38,8 +38,8 @@ const ClPoint& point_of(const std::deque<AheadItem>& items, const std::vector<st
 /// True when `item` (read from the input, not planned yet) opens a run of feed motions to plan:
 /// a two-rotary serial machine whose solver depends on nothing the post's progress changes.
 bool Poster::starts_run(const AheadItem& item) const {
-  if (options_.branch_choice != PostOptions::BranchChoice::lookahead || !words_.serial || words_.rotary_count != 2 ||
-      !solver_.concurrent() || item.error || !item.record)
+  if (options_.branch_choice != PostOptions::BranchChoice::lookahead || !words_.branches_chosen ||
+      words_.rotary_count != 2 || !solver_.concurrent() || item.error || !item.record)
     return false;
   const auto* m = std::get_if<cl::Motion>(&*item.record);
   return m && (plannable(*m) || free_start(*m)) && cycle_.kind == cl::Cycle::Kind::off && !pending_circle_;

@@ -18,7 +18,8 @@ Vec3d Poster::home_offset() const {
 /// Before a CL motion: stay in the plane (same tool axis), leave it, or open one (a rapid, or the
 /// first motion, to a tool axis other than +Z of W).
 void Poster::update_plane(const cl::Motion& m, bool rapid) {
-  if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 || !words_.serial)
+  if (!options_.tilted_plane || !writer_.dialect().tilted_plane || machine_.rotary_count() != 2 ||
+      !words_.tilted_plane_capable)
     return;
   const Vec3d k = m.point.axis.normalized();
   if (plane_ && (k - plane_->axis_W).norm() <= 1e-9) return;

@@ -14,6 +14,7 @@ Poster::Poster(const std::string& input, const KinematicModel& solver, SolverDat
                const PostOptions& options)
     : input_(input),
       solver_(solver),
+      hooks_(post_hooks_of(solver)),
       data_(data),
       writer_(writer),
       options_(options),
@@ -87,7 +88,7 @@ void Poster::on(const cl::Motion& m) {
     drill(m);
     return;
   }
-  move_to(m.point, m.where.line, rapid, words_.serial ? m.rotary_rad : std::nullopt);  // angles: serial chains
+  move_to(m.point, m.where.line, rapid, words_.angles_are_programmed ? m.rotary_rad : std::nullopt);
 }
 
 void Poster::on(const cl::Feed& f) {

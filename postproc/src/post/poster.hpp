@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "ncpost/postproc/post.hpp"
+#include "ncpost/postproc/solve/post_hooks.hpp"
 #include "ncpost/postproc/write/tilted_plane.hpp"
 #include "read/lookahead.hpp"
 #include "verify/read_back.hpp"
@@ -166,7 +167,8 @@ class Poster {
   std::optional<AheadItem> carry_;              ///< a rapid read by the last plan: it opens the next run
   SolverData plan_data_;                        ///< the solver's working data of the branch plan
   const KinematicModel& solver_;
-  SolverData& data_;  ///< the solver's working data on the post's thread
+  const PostHooks& hooks_;  ///< the solver's post hooks (reversal, RTCP tip)
+  SolverData& data_;        ///< the solver's working data on the post's thread
   NcWriter& writer_;
   const PostOptions& options_;
   const Machine& machine_;

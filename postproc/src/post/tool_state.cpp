@@ -50,7 +50,7 @@ void Poster::on(const cl::ToolChange& change) {
 /// True when the axis positions the post writes depend on the tool length: a rotary axis on the
 /// tool side (a head) and no RTCP (with RTCP the control places the tip with its own length).
 bool Poster::length_in_kinematics() const {
-  if (options_.rtcp || !words_.serial) return false;
+  if (options_.rtcp) return false;
   return std::any_of(machine_.axes.begin(), machine_.axes.end(),
                      [](const Axis& a) { return a.is_rotary() && a.side == Side::tool; });
 }

@@ -71,6 +71,49 @@ bool same_commands(const AxisPosition& a, const AxisPosition& b) {
          max_abs_step(a.rotary_rad, b.rotary_rad) <= 1e-12;
 }
 
+/// The commands the stretch from `cur` ends at: `to.q` where the actual machine reaches `to.cl`
+/// with it (the axes standing at `stands`), else solved there; nullopt with `failure`.
+std::optional<AxisPosition> stretch_end(const ActualSolver& actual, SolverData& data, const SolvedPoint& cur,
+                                        const SolvedPoint& to, const std::optional<AxisPosition>& stands,
+                                        std::string& failure) {
+  if (actual.reaches(to.cl, to.q, stands)) return to.q;
+  const IkOutcome o = actual.solve_standing(to.cl, cur.q, data, nullptr, stands);
+  if (!o.ok()) {
+    failure = o.failure.message;
+    return std::nullopt;
+  }
+  return *o.position;
+}
+
+/// The way each axis starts: points along the stretch from `cur` to `to` (its end `end`), solved
+/// with the axes standing at `stands`, for take_up_before.
+std::vector<nonlinear::BlockNode> start_probes(const ActualSolver& actual, SolverData& data, const SolvedPoint& cur,
+                                               const SolvedPoint& to, const AxisPosition& end,
+                                               const AxisPosition& stands) {
+  std::vector<nonlinear::BlockNode> probes;
+  for (double t : {1.0 / 256, 1.0 / 64, 1.0 / 16, 0.25, 0.5}) {
+    const ClPoint p = nonlinear::cl_at(cur.cl, to.cl, t);
+    const IkOutcome o = actual.solve_standing(p, cur.q, data, nullptr, stands);
+    if (o.ok()) probes.push_back({t, p, *o.position});
+  }
+  probes.push_back({1.0, to.cl, end});
+  return probes;
+}
+
+/// How many of the nodes, replayed in sequence through the dead band from `stands`, stand where
+/// the stretch's model (every node from `stands`) puts them.
+std::size_t nodes_in_sequence(const ActualSolver& actual, const std::vector<nonlinear::BlockNode>& nodes,
+                              const AxisPosition& stands) {
+  AxisPosition in_sequence = stands;
+  std::size_t k = 0;
+  for (; k < nodes.size(); ++k) {
+    const AxisPosition next = actual.stands_after(nodes[k].q, in_sequence);
+    if (turned_by(actual.model(), next, actual.stands_after(nodes[k].q, stands)) > 1.0) break;
+    in_sequence = next;
+  }
+  return k;
+}
+
 }  // namespace
 
 std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup& setup, const ActualSolver& actual,
@@ -82,27 +125,11 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
   SolvedPoint cur{from.cl, from.q};
   bool taken_up = false;  // at most one take-up per stretch start
   for (int stretch = 0; stretch < kMaxStretches; ++stretch) {
-    AxisPosition end = to.q;
-    if (!actual.reaches(to.cl, to.q, stands)) {
-      const IkOutcome o = actual.solve_standing(to.cl, cur.q, data, nullptr, stands);
-      if (!o.ok()) {
-        failure = o.failure.message;
-        return {};
-      }
-      end = *o.position;
-    }
-    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) {
-      return actual.solve_standing(cl, previous, data, nullptr, stands);
-    };
+    const std::optional<AxisPosition> end = stretch_end(actual, data, cur, to, stands, failure);
+    if (!end) return {};
     if (stands && !taken_up) {
       // the way each axis starts, from points along the stretch: take up the play before it
-      std::vector<nonlinear::BlockNode> probes;
-      for (double t : {1.0 / 256, 1.0 / 64, 1.0 / 16, 0.25, 0.5}) {
-        const ClPoint p = nonlinear::cl_at(cur.cl, to.cl, t);
-        const IkOutcome o = ik(p, cur.q);
-        if (o.ok()) probes.push_back({t, p, *o.position});
-      }
-      probes.push_back({1.0, to.cl, end});
+      const std::vector<nonlinear::BlockNode> probes = start_probes(actual, data, cur, to, *end, *stands);
       taken_up = true;
       if (auto q = take_up_before(actual, cur.q, *stands, probes, steps)) {
         cur = {cur.cl, *q};
@@ -110,7 +137,10 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
         continue;  // the stretch again from the taken-up commands
       }
     }
-    const nonlinear::ClBlock block{cur.cl, to.cl, cur.q, end};
+    auto ik = [&](const ClPoint& cl, const AxisPosition& previous) {
+      return actual.solve_standing(cl, previous, data, nullptr, stands);
+    };
+    const nonlinear::ClBlock block{cur.cl, to.cl, cur.q, *end};
     const nonlinear::SplitBlock split =
         nonlinear::compensate_block(machine, setup, block, actual.errors_from(stands), ik, options);
     if (!split.ok()) {
@@ -122,22 +152,16 @@ std::vector<SolvedPoint> subdivide_with_play(const Machine& machine, const Setup
       return out;
     }
     // replay the nodes in sequence through the dead band
-    AxisPosition in_sequence = *stands;
-    std::size_t k = 0;
-    for (; k < split.nodes.size(); ++k) {
-      const AxisPosition next = actual.stands_after(split.nodes[k].q, in_sequence);
-      if (turned_by(actual.model(), next, actual.stands_after(split.nodes[k].q, stands)) > 1.0) break;
-      in_sequence = next;
-    }
+    std::size_t k = nodes_in_sequence(actual, split.nodes, *stands);
     if (k == split.nodes.size()) {
       for (const auto& node : split.nodes) out.push_back({node.cl, node.q});
-      if (!same_commands(end, to.q)) out.push_back({to.cl, to.q});  // the held end, inside the play
+      if (!same_commands(*end, to.q)) out.push_back({to.cl, to.q});  // the held end, inside the play
       return out;
     }
     k = std::max<std::size_t>(k, 1);  // the first node follows the stretch's model by construction
     for (std::size_t i = 0; i < k; ++i) out.push_back({split.nodes[i].cl, split.nodes[i].q});
     cur = {split.nodes[k - 1].cl, split.nodes[k - 1].q};
-    in_sequence = *stands;
+    AxisPosition in_sequence = *stands;
     for (std::size_t i = 0; i < k; ++i) in_sequence = actual.stands_after(split.nodes[i].q, in_sequence);
     stands = in_sequence;
     taken_up = false;

@@ -44,7 +44,11 @@ CommandWords TrrSolver::words() const {
   w.letters = {'X', 'Y', 'U', 'V', 'W'};
   w.angle = {false, false, false, false, false};
   w.rotary_count = 0;
-  w.serial = false;
+  w.angles_are_programmed = false;
+  w.cutter_comp_supported = false;
+  w.tilted_plane_capable = false;
+  w.branches_chosen = false;
+  w.limits_name_the_axis = false;
   return w;
 }
 

@@ -36,7 +36,7 @@ std::string out_of_limits(const Axis& axis, double value) {
 
 std::string axes_out_of_limits(const KinematicModel& solver, SolverData& data, const ClPoint& cl,
                                const AxisPosition& previous, bool* linear_out) {
-  if (!solver.words().serial) return {};  // the solver's failure names the axis (e.g. the TRR-XY sliders)
+  if (!solver.words().limits_name_the_axis) return {};  // the solver's failure names the axis (e.g. the TRR-XY sliders)
   const Machine& m = solver.machine();
   std::vector<RotaryAngles> rotaries;
   const RotaryAngles before = rotary_of(previous, m.rotary_count());

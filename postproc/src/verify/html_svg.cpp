@@ -121,10 +121,16 @@ std::string bar_chart(const ChartFrame& f, const std::vector<double>& heights, c
   return s + "</svg>\n";
 }
 
-std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segments, double value_max,
-                      const std::string& unit, int log_decades) {
-  Box b = plot_box(f);
-  b.width -= 100;  // colour bar and its labels
+namespace {
+
+/// The plot's scale from the segments' bounds, equal aspect: the larger span fills its side.
+struct PathScale {
+  double span = 1.0;  ///< mm across
+  double scale = 1.0;
+  double cx = 0.0, cy = 0.0;
+};
+
+PathScale path_scale(const Box& b, const std::vector<PathSegment>& segments) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const PathSegment& p : segments) {
     x0 = std::min({x0, p.x0, p.x1});
@@ -136,12 +142,45 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
     x0 = y0 = 0;
     x1 = y1 = 1;
   }
-  // equal aspect: the larger span fills its side
-  const double span = std::max({x1 - x0, (y1 - y0) * b.width / b.height, 1e-9});
-  const double scale = b.width / span;
-  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
-  auto px = [&](double x) { return b.left + b.width / 2 + (x - cx) * scale; };
-  auto py = [&](double y) { return b.top + b.height / 2 - (y - cy) * scale; };
+  PathScale ps;
+  ps.span = std::max({x1 - x0, (y1 - y0) * b.width / b.height, 1e-9});
+  ps.scale = b.width / ps.span;
+  ps.cx = 0.5 * (x0 + x1), ps.cy = 0.5 * (y0 + y1);
+  return ps;
+}
+
+/// The colour bar right of the box: 0 (or vmin) to vmax, linear or over log_decades decades.
+std::string colour_bar(const Box& b, double vmax, double vmin, const std::string& unit, int log_decades) {
+  std::string s;
+  const double bar_x = b.left + b.width + 25;
+  for (int i = 0; i < 50; ++i) {
+    const double frac = 1.0 - i / 49.0;
+    s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.2f}\" width=\"14\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
+                     b.top + b.height * i / 50.0, b.height / 50.0 + 0.5, colour(frac));
+  }
+  s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} {}</text>\n", bar_x - 5, b.top - 6, format_tick(vmax),
+                   escape(unit));
+  if (log_decades > 0) {
+    for (int d = 1; d < log_decades; ++d)
+      s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", bar_x + 18,
+                       b.top + b.height * d / log_decades + 4, format_tick(vmax * std::pow(10.0, -d)));
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">&#8804;{}</text>\n", bar_x + 18, b.top + b.height,
+                     format_tick(vmin));
+  } else {
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">0</text>\n", bar_x + 18, b.top + b.height);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segments, double value_max,
+                      const std::string& unit, int log_decades) {
+  Box b = plot_box(f);
+  b.width -= 100;  // colour bar and its labels
+  const PathScale ps = path_scale(b, segments);
+  auto px = [&](double x) { return b.left + b.width / 2 + (x - ps.cx) * ps.scale; };
+  auto py = [&](double y) { return b.top + b.height / 2 - (y - ps.cy) * ps.scale; };
   std::string s = open_svg(f);
   s += fmt::format(
       "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#888\"/>\n", b.left,
@@ -164,28 +203,11 @@ std::string path_plot(const ChartFrame& f, const std::vector<PathSegment>& segme
         "stroke-linecap=\"round\"/>\n",
         px(p.x0), py(p.y0), px(p.x1), py(p.y1), colour(fraction(p.value)));
   }
-  // colour bar
-  const double bar_x = b.left + b.width + 25;
-  for (int i = 0; i < 50; ++i) {
-    const double frac = 1.0 - i / 49.0;
-    s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.2f}\" width=\"14\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
-                     b.top + b.height * i / 50.0, b.height / 50.0 + 0.5, colour(frac));
-  }
-  s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} {}</text>\n", bar_x - 5, b.top - 6, format_tick(vmax),
-                   escape(unit));
-  if (log_decades > 0) {
-    for (int d = 1; d < log_decades; ++d)
-      s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", bar_x + 18,
-                       b.top + b.height * d / log_decades + 4, format_tick(vmax * std::pow(10.0, -d)));
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">&#8804;{}</text>\n", bar_x + 18, b.top + b.height,
-                     format_tick(vmin));
-  } else {
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">0</text>\n", bar_x + 18, b.top + b.height);
-  }
+  s += colour_bar(b, vmax, vmin, unit, log_decades);
   s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n", b.left + b.width / 2,
                    f.height - 8.0, escape(f.x_label));
   s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{:.4g} mm across</text>\n",
-                   b.left + b.width / 2, f.height - 24.0, span);
+                   b.left + b.width / 2, f.height - 24.0, ps.span);
   return s + "</svg>\n";
 }
 

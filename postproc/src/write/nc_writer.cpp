@@ -168,24 +168,14 @@ void NcWriter::rtcp(bool on, int tool, int length_register) {
   tool_blocks(on ? dialect_.rtcp_on : dialect_.rtcp_off, tool, length_register);
 }
 
-bool NcWriter::motion(const NcMotion& m, const std::string& note) {
-  write_held("");
-  if (active_cycle_) {
-    // the cancel word first if this motion writes a block (a move to where the tool is writes none)
-    bool moves = false;
-    for (std::size_t i = 0; i < word_count(); ++i)
-      if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) moves = true;
-    if (!moves) return false;
-    end_cycle();
-  }
+bool NcWriter::moves_to(const NcMotion& m) const {
+  for (std::size_t i = 0; i < word_count(); ++i)
+    if (!last_[i] || *last_[i] != rounded(static_cast<int>(i), m.values[i])) return true;
+  return false;
+}
+
+void NcWriter::append_motion_words(const NcMotion& m) {
   const MotionWords& w = dialect_.motion;
-  const std::size_t line_start = buf_.size();
-  const long number_before = line_number_;
-  const auto saved_motion = last_motion_;
-  const auto saved_mode = last_feed_mode_;
-  const auto saved_feed = last_feed_;
-  int words = 0;
-  start_line();
   const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
   if (!m.rapid && (!last_feed_mode_ || *last_feed_mode_ != m.feed_mode)) {
     const std::string& mode = inverse ? w.inverse_time : w.per_minute;
@@ -201,23 +191,25 @@ bool NcWriter::motion(const NcMotion& m, const std::string& note) {
     buf_.append(m.rapid ? w.rapid : w.linear);
     last_motion_ = g;
   }
+}
+
+int NcWriter::append_axis_words(const NcMotion& m) {
+  int words = 0;
   for (std::size_t i = 0; i < word_count(); ++i) {
     const double v = rounded(static_cast<int>(i), m.values[i]);
     if (last_[i] && *last_[i] == v) continue;
     if (buf_.size() && buf_[buf_.size() - 1] != ' ' && buf_[buf_.size() - 1] != '\n') buf_.push_back(' ');
     buf_.push_back(letters_[i]);
-    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, w.plus_sign);
+    append_fixed(buf_, v, i < 3 ? dialect_.linear_decimals : dialect_.angle_decimals, dialect_.motion.plus_sign);
     last_[i] = v;
     ++words;
   }
-  if (words == 0) {  // the control is already there: no block
-    buf_.resize(line_start);
-    line_number_ = number_before;
-    last_motion_ = saved_motion;
-    last_feed_mode_ = saved_mode;
-    last_feed_ = saved_feed;
-    return false;
-  }
+  return words;
+}
+
+void NcWriter::append_feed_word(const NcMotion& m) {
+  const MotionWords& w = dialect_.motion;
+  const bool inverse = m.feed_mode == NcMotion::FeedMode::inverse_time;
   if (m.rapid) {
     if (!w.rapid_feed.empty()) {
       buf_.push_back(' ');
@@ -229,6 +221,31 @@ bool NcWriter::motion(const NcMotion& m, const std::string& note) {
     append_fixed(buf_, m.feed, inverse ? w.inverse_time_decimals : w.feed_decimals);
     last_feed_ = m.feed;
   }
+}
+
+bool NcWriter::motion(const NcMotion& m, const std::string& note) {
+  write_held("");
+  if (active_cycle_) {
+    // the cancel word first if this motion writes a block (a move to where the tool is writes none)
+    if (!moves_to(m)) return false;
+    end_cycle();
+  }
+  const std::size_t line_start = buf_.size();
+  const long number_before = line_number_;
+  const auto saved_motion = last_motion_;
+  const auto saved_mode = last_feed_mode_;
+  const auto saved_feed = last_feed_;
+  start_line();
+  append_motion_words(m);
+  if (append_axis_words(m) == 0) {  // the control is already there: no block
+    buf_.resize(line_start);
+    line_number_ = number_before;
+    last_motion_ = saved_motion;
+    last_feed_mode_ = saved_mode;
+    last_feed_ = saved_feed;
+    return false;
+  }
+  append_feed_word(m);
   append_note(note);
   end_line();
   ++blocks_;

@@ -22,7 +22,7 @@
 #include "ncpost/compensation/export_machine.hpp"
 #include "ncpost/compensation/export_siemens.hpp"
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
 
@@ -154,120 +154,142 @@ void print_landing(const comp::AxisExport& axis, const comp::LandingCheck& check
       check.with_file * to_micro, axis.rotary ? "µrad" : "µm", check.positions, check.model_only * to_micro);
 }
 
-}  // namespace
-
-int export_serial(const ExportArgs& args) {
-  std::vector<NamedPath> inputs{{"MODEL", args.model}};
-  if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
-  check_files({{"-o", args.output}}, inputs);
+/// The format of --format, checked against --axis.
+const ExportFormat& checked_format(const ExportArgs& args) {
   const ExportFormat* format = find_format(args.format);
   if (format == nullptr)
     throw UsageError(fmt::format("--format: expected one of {}, got '{}'", format_names(), args.format));
   if (!format->one_axis && !args.axis.empty())
     throw UsageError(fmt::format("--axis {}: --format {} writes every rotary axis of the machine, not one axis's table",
                                  args.axis, args.format));
-  Machine machine;
-  comp::ModelFile file;
+  return *format;
+}
+
+/// The machine of --machine, or without it the three-axis machine of the model's axes; `file` gets
+/// the model read against it.
+Machine export_machine(const ExportArgs& args, const ExportFormat& format, comp::ModelFile& file) {
   if (!args.machine.empty()) {
-    machine = load_machine(args.machine);
+    Machine machine = machines::load_as<Machine>(args.machine);
     file = read_model_for(args.model, machine, args.force);
-  } else {
-    file = comp::read_model_json(args.model, nullptr);
-    if (format->needs_machine)
-      throw UsageError(
-          fmt::format("--format {} needs --machine M.toml: the machine whose rotary axes the model "
-                      "locates",
-                      args.format));
-    if (!file.axes.empty() && file.axes != "XYZ")
-      throw UsageError(
-          fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
-                      "need their directions)",
-                      file.axes));
-    machine = three_axis_machine(file.machine.empty() ? "three-axis" : file.machine);
-    file = read_model_for(args.model, machine, args.force);  // every name checked against X Y Z
+    return machine;
   }
-  const comp::MachineModel model(machine, file.parameters);
-  const comp::ExportSource source{args.model, args.machine, ncpost::version()};
-  const auto refused = [&](const comp::ExportRefusal& e) {
-    const bool machine_at_fault = e.source == comp::ExportRefusal::Source::machine && !args.machine.empty();
-    return InputError({machine_at_fault ? args.machine : args.model, 0, 0}, e.what());
-  };
-  try {
-    if (args.format == "machine") {
-      const comp::MachineExport out = comp::corrected_machine(model);
-      std::vector<std::string> notes{
-          fmt::format("ncpost {} export --format machine: '{}' with the location errors of model '{}' applied",
-                      source.version, machine.name, args.model),
-          fmt::format("(from '{}'), as a control's kinematics calibration: read it NOMINALLY (post without --model);",
-                      args.machine),
-          "the name differs from the original's so that this model is not applied a second time.",
-          fmt::format("Applied: {}", fmt::join(out.applied, ", "))};
-      if (out.left_out.empty()) {
-        notes.push_back("Left out: nothing");
-      } else {
-        notes.push_back(fmt::format("Left out (NOT in this machine file, {} term(s)):", out.left_out.size()));
-        for (const std::string& s : out.left_out) notes.push_back("  " + s);
-      }
-      write_file_atomically(args.output, comp::format_machine_toml(out.corrected, notes));
-      print_left_out(out.left_out, "a machine file");
-      fmt::print("exported {} location error(s) of '{}' into the machine file '{}' ({})\n", out.applied.size(),
-                 machine.name, args.output, out.corrected.name);
-      return 0;
-    }
-    if (args.format == "linuxcnc-trt") {
-      const comp::TrtKinematics k = comp::linuxcnc_trt_kinematics(model);
-      write_file_atomically(args.output, comp::format_linuxcnc_trt(k, model, source));
-      print_left_out_effects(k.left_out, fmt::format("LinuxCNC's {}", k.module));
-      fmt::print("exported {} line offset(s) of '{}' as {} parameters -> {}\n", k.held.size(), machine.name, k.module,
-                 args.output);
-      return 0;
-    }
-    if (args.format == "siemens-cycle800") {
-      const comp::Cycle800Record r = comp::cycle800_record(model);
-      write_file_atomically(args.output, comp::format_cycle800(r, model, source));
-      print_left_out_effects(r.left_out, "a CYCLE800 swivel data record");
-      fmt::print("exported {} location error(s) of '{}' as the CYCLE800 record (type P, axes {} {}) -> {}\n",
-                 r.held.size(), machine.name, r.axis1, r.axis2, args.output);
-      return 0;
-    }
-    if (args.format == "heidenhain") {
-      const comp::HeidenhainKinematics k = comp::heidenhain_kinematics(model);
-      write_file_atomically(args.output, comp::format_heidenhain(k, model, source));
-      print_left_out_effects(k.left_out, "a Heidenhain kinematics description");
-      fmt::print("exported {} location error(s) of '{}' as {} Heidenhain kinematics entries (axes {} {}) -> {}\n",
-                 k.held.size(), machine.name, k.entries.size(), k.axis1, k.axis2, args.output);
-      return 0;
-    }
-    const char letter = chosen_axis(args, model);
-    if (args.format == "linuxcnc") {
-      const comp::LinuxcncCompTable table = comp::linuxcnc_comp_table(model, letter);
-      write_file_atomically(args.output, comp::format_linuxcnc_comp(table, model, source));
-      print_left_out(table.axis.left_out, fmt::format("a LinuxCNC compensation file of {}", letter));
-      print_held_beyond(table.axis);
-      fmt::print("exported {} rows for axis {} (COMP_FILE_TYPE = 1) -> {}\n", table.rows.size(), letter, args.output);
-      print_landing(table.axis, table.landing);
-      return 0;
-    }
-    if (args.format == "isg") {
-      const comp::IsgLsecTable table = comp::isg_lsec_table(model, letter);
-      write_file_atomically(args.output, comp::format_isg_lsec(table, model, source));
-      print_left_out(table.axis.left_out, fmt::format("an ISG leadscrew error compensation list of {}", letter));
-      print_held_beyond(table.axis);
-      fmt::print("exported {} points for axis {} (kw.ssfk, bilateral, 0.1 µm) -> {}\n", table.setpoints.size(), letter,
-                 args.output);
-      print_landing(table.axis, table.landing);
-      return 0;
-    }
-    const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
-    write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
-    print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
+  file = comp::read_model_json(args.model, nullptr);
+  if (format.needs_machine)
+    throw UsageError(
+        fmt::format("--format {} needs --machine M.toml: the machine whose rotary axes the model "
+                    "locates",
+                    args.format));
+  if (!file.axes.empty() && file.axes != "XYZ")
+    throw UsageError(
+        fmt::format("--machine M.toml is needed: the model's machine has the axes {} (rotary axes "
+                    "need their directions)",
+                    file.axes));
+  Machine machine = three_axis_machine(file.machine.empty() ? "three-axis" : file.machine);
+  file = read_model_for(args.model, machine, args.force);  // every name checked against X Y Z
+  return machine;
+}
+
+/// --format machine: the machine file with the location errors applied.
+int export_machine_file(const ExportArgs& args, const comp::MachineModel& model, const comp::ExportSource& source) {
+  const Machine& machine = model.machine();
+  const comp::MachineExport out = comp::corrected_machine(model);
+  std::vector<std::string> notes{
+      fmt::format("ncpost {} export --format machine: '{}' with the location errors of model '{}' applied",
+                  source.version, machine.name, args.model),
+      fmt::format("(from '{}'), as a control's kinematics calibration: read it NOMINALLY (post without --model);",
+                  args.machine),
+      "the name differs from the original's so that this model is not applied a second time.",
+      fmt::format("Applied: {}", fmt::join(out.applied, ", "))};
+  if (out.left_out.empty()) {
+    notes.push_back("Left out: nothing");
+  } else {
+    notes.push_back(fmt::format("Left out (NOT in this machine file, {} term(s)):", out.left_out.size()));
+    for (const std::string& s : out.left_out) notes.push_back("  " + s);
+  }
+  write_file_atomically(args.output, comp::format_machine_toml(out.corrected, notes));
+  print_left_out(out.left_out, "a machine file");
+  fmt::print("exported {} location error(s) of '{}' into the machine file '{}' ({})\n", out.applied.size(),
+             machine.name, args.output, out.corrected.name);
+  return 0;
+}
+
+/// The rotary axes' errors as a control's kinematics: linuxcnc-trt, siemens-cycle800, heidenhain.
+int export_kinematics(const ExportArgs& args, const comp::MachineModel& model, const comp::ExportSource& source) {
+  const Machine& machine = model.machine();
+  if (args.format == "linuxcnc-trt") {
+    const comp::TrtKinematics k = comp::linuxcnc_trt_kinematics(model);
+    write_file_atomically(args.output, comp::format_linuxcnc_trt(k, model, source));
+    print_left_out_effects(k.left_out, fmt::format("LinuxCNC's {}", k.module));
+    fmt::print("exported {} line offset(s) of '{}' as {} parameters -> {}\n", k.held.size(), machine.name, k.module,
+               args.output);
+    return 0;
+  }
+  if (args.format == "siemens-cycle800") {
+    const comp::Cycle800Record r = comp::cycle800_record(model);
+    write_file_atomically(args.output, comp::format_cycle800(r, model, source));
+    print_left_out_effects(r.left_out, "a CYCLE800 swivel data record");
+    fmt::print("exported {} location error(s) of '{}' as the CYCLE800 record (type P, axes {} {}) -> {}\n",
+               r.held.size(), machine.name, r.axis1, r.axis2, args.output);
+    return 0;
+  }
+  const comp::HeidenhainKinematics k = comp::heidenhain_kinematics(model);
+  write_file_atomically(args.output, comp::format_heidenhain(k, model, source));
+  print_left_out_effects(k.left_out, "a Heidenhain kinematics description");
+  fmt::print("exported {} location error(s) of '{}' as {} Heidenhain kinematics entries (axes {} {}) -> {}\n",
+             k.held.size(), machine.name, k.entries.size(), k.axis1, k.axis2, args.output);
+  return 0;
+}
+
+/// One axis's table: linuxcnc, isg, siemens.
+int export_axis_table(const ExportArgs& args, const comp::MachineModel& model, const comp::ExportSource& source) {
+  const char letter = chosen_axis(args, model);
+  if (args.format == "linuxcnc") {
+    const comp::LinuxcncCompTable table = comp::linuxcnc_comp_table(model, letter);
+    write_file_atomically(args.output, comp::format_linuxcnc_comp(table, model, source));
+    print_left_out(table.axis.left_out, fmt::format("a LinuxCNC compensation file of {}", letter));
     print_held_beyond(table.axis);
-    fmt::print("exported {} points for axis {} ($AA_ENC_COMP, step {:.6g}) -> {}\n", table.values.size(), letter,
-               table.step, args.output);
+    fmt::print("exported {} rows for axis {} (COMP_FILE_TYPE = 1) -> {}\n", table.rows.size(), letter, args.output);
     print_landing(table.axis, table.landing);
     return 0;
+  }
+  if (args.format == "isg") {
+    const comp::IsgLsecTable table = comp::isg_lsec_table(model, letter);
+    write_file_atomically(args.output, comp::format_isg_lsec(table, model, source));
+    print_left_out(table.axis.left_out, fmt::format("an ISG leadscrew error compensation list of {}", letter));
+    print_held_beyond(table.axis);
+    fmt::print("exported {} points for axis {} (kw.ssfk, bilateral, 0.1 µm) -> {}\n", table.setpoints.size(), letter,
+               args.output);
+    print_landing(table.axis, table.landing);
+    return 0;
+  }
+  const comp::SiemensLecTable table = comp::siemens_lec_table(model, letter);
+  write_file_atomically(args.output, comp::format_siemens_lec(table, model, source));
+  print_left_out(table.axis.left_out, fmt::format("a SINUMERIK LEC table of {}", letter));
+  print_held_beyond(table.axis);
+  fmt::print("exported {} points for axis {} ($AA_ENC_COMP, step {:.6g}) -> {}\n", table.values.size(), letter,
+             table.step, args.output);
+  print_landing(table.axis, table.landing);
+  return 0;
+}
+
+}  // namespace
+
+int export_serial(const ExportArgs& args) {
+  std::vector<NamedPath> inputs{{"MODEL", args.model}};
+  if (!args.machine.empty()) inputs.push_back({"--machine", args.machine});
+  check_files({{"-o", args.output}}, inputs);
+  const ExportFormat& format = checked_format(args);
+  comp::ModelFile file;
+  const Machine machine = export_machine(args, format, file);
+  const comp::MachineModel model(machine, file.parameters);
+  const comp::ExportSource source{args.model, args.machine, ncpost::version()};
+  try {
+    if (args.format == "machine") return export_machine_file(args, model, source);
+    if (!format.one_axis) return export_kinematics(args, model, source);
+    return export_axis_table(args, model, source);
   } catch (const comp::ExportRefusal& e) {
-    throw refused(e);
+    const bool machine_at_fault = e.source == comp::ExportRefusal::Source::machine && !args.machine.empty();
+    throw InputError({machine_at_fault ? args.machine : args.model, 0, 0}, e.what());
   }
 }
 

@@ -29,7 +29,7 @@
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/parameter_name.hpp"
 #include "ncpost/compensation/thermal_correction.hpp"
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/machines/machine_record.hpp"
 
 namespace ncpost::cli {
@@ -90,7 +90,7 @@ IdentifyOutput run_diagnose(const Machine& m, const std::vector<comp::Measuremen
 /// The serial machines: the basic model and --params fitted to ballbar, sphere or laser data, with
 /// the residual analysis unless --no-diagnose.
 IdentifyOutput identify_serial(const IdentifyArgs& a) {
-  const Machine m = load_machine(a.machine);
+  const Machine m = machines::load_as<Machine>(a.machine);
   const comp::Tolerances tolerances = tolerances_from(a.tolerance, a.machine);  // over the machine file's
   const MachineRecord record = load_machine_record(a.machine);
   const std::vector<comp::MeasurementSet> sets = comp::read_measurement_files(a.data, m);

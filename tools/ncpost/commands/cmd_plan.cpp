@@ -16,7 +16,7 @@
 #include "ncpost/compensation/laser_plan.hpp"
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/plans.hpp"
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/write/plan_nc.hpp"
 
 namespace ncpost::cli {
@@ -88,7 +88,7 @@ std::vector<comp::NamedPlan> make_plans(PlanArgs& a, const Machine& m, const com
 /// The serial machines' plans (plans.hpp, laser_plan.hpp), the program in the chosen dialect.
 PlanOutput plan_serial(const PlanArgs& given) {
   PlanArgs a = given;
-  const Machine m = load_machine(a.machine);
+  const Machine m = machines::load_as<Machine>(a.machine);
   std::vector<comp::NamedPlan> plans;
   comp::PlanProgramOptions program;
   const Dialect dialect = dialect_named(a.dialect);

@@ -13,13 +13,13 @@
 #include "ncpost/compensation/measurement_csv.hpp"
 #include "ncpost/compensation/model_json.hpp"
 #include "ncpost/compensation/simulate.hpp"
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 
 namespace ncpost::cli {
 
 /// A measurement plan on the serial machine of the model JSON (simulate.hpp).
 SimulateOutput simulate_serial(const SimulateArgs& a) {
-  const Machine m = load_machine(a.machine);
+  const Machine m = machines::load_as<Machine>(a.machine);
   const comp::ModelFile model = read_model_for(a.model, m, a.force_model);
   const comp::MeasurementSet plan = comp::read_measurement_csv(a.plan, m, {true});
   const comp::MeasurementSet data = comp::simulate(m, plan, model.parameters, {a.noise_um, a.seed});

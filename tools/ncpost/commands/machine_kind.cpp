@@ -2,7 +2,7 @@
 #include "machine_kind.hpp"
 
 #include "ncpost/compensation/model_json.hpp"
-#include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/machines/load.hpp"
 
 namespace ncpost::cli {
 namespace {
@@ -20,7 +20,7 @@ const MachineKind& default_kind() { return kKinds[0]; }
 }  // namespace
 
 const MachineKind& machine_kind(const std::string& path) {
-  const std::string name = machine_file_kind(path);
+  const std::string name = machines::kind_of(path);
   for (const MachineKind& k : kKinds)
     if (name == k.name) return k;
   return default_kind();

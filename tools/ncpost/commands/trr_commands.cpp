@@ -4,7 +4,7 @@
 
 #include "kind_steps.hpp"
 #include "ncpost/compensation/trr_model.hpp"
-#include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/machine/trr_xy_post_machine.hpp"
 #include "ncpost/postproc/solve/trr_preview_evaluator.hpp"
 #include "ncpost/postproc/solve/trr_solver.hpp"
@@ -74,7 +74,7 @@ trr::Errors read_trr_model(const std::string& path, const std::string& machine_n
 }
 
 std::unique_ptr<PreviewMachine> load_trr_xy_preview(const PreviewArgs& a) {
-  trr::Machine m = load_trr_xy_machine(a.job.machine);
+  trr::Machine m = machines::load_as<trr::Machine>(a.job.machine);
   const Vec3d origin_mm = workpiece_origin_mm(a.job);
   refuse_serial_options(a.job);
   trr::Errors e;
@@ -89,7 +89,7 @@ void load_trr_xy_post(const PostJobArgs& a, PostRequest& r) {
         "--tilted-plane: the TRR-XY machine has no tilted work plane (its control has no rotary axes to "
         "turn a plane with, only the table X Y and the sliders U V W); post without --tilted-plane");
   refuse_serial_options(a.job);
-  trr::Machine machine = load_trr_xy_machine(a.job.machine);
+  trr::Machine machine = machines::load_as<trr::Machine>(a.job.machine);
   std::optional<trr::Errors> model, verify_on;
   if (!a.model.empty()) model = read_trr_model(a.model, machine.name, a.force_model);
   if (!a.verify_on.empty()) verify_on = read_trr_model(a.verify_on, machine.name, a.force_model);

@@ -10,7 +10,7 @@
 #include "kind_steps.hpp"
 #include "ncpost/compensation/export_trr_machine.hpp"
 #include "ncpost/kinematics/trr_xy_geometry.hpp"
-#include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/write/atomic_file.hpp"
 #include "ncpost/version.hpp"
 #include "trr_model_input.hpp"
@@ -36,7 +36,7 @@ int export_trr_xy(const ExportArgs& args) {
     throw UsageError("--axis: a TRR-XY machine file takes the whole model, not one axis (leave out --axis)");
   if (args.machine.empty())
     throw UsageError("--format machine needs --machine M.toml: the TRR-XY machine file to correct");
-  const trr::Machine machine = load_trr_xy_machine(args.machine);
+  const trr::Machine machine = machines::load_as<trr::Machine>(args.machine);
   const trr::Errors model = read_trr_model(args.model, machine.name, args.force);
   comp::TrrMachineExport out;
   try {

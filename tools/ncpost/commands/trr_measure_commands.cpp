@@ -12,7 +12,7 @@
 #include "ncpost/compensation/trr_model.hpp"
 #include "ncpost/compensation/trr_probing_csv.hpp"
 #include "ncpost/compensation/trr_summary.hpp"
-#include "ncpost/machines/trr_xy_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/write/plan_nc.hpp"
 #include "ncpost/postproc/solve/trr_solver.hpp"
 #include "trr_model_input.hpp"
@@ -54,7 +54,7 @@ comp::PlanProgram sphere_program(const trr::Machine& m, const trr::ProbingData& 
 PlanOutput plan_trr_xy(const PlanArgs& a) {
   if (a.test != "sphere")
     throw UsageError(fmt::format("plan {}: the TRR-XY machine has the sphere-probing plan only", a.test));
-  const trr::Machine m = load_trr_xy_machine(a.machine);
+  const trr::Machine m = machines::load_as<trr::Machine>(a.machine);
   const Dialect dialect = dialect_named(a.dialect);
   trr::ProbingData plan;
   plan.metadata["machine"] = m.name;
@@ -78,7 +78,7 @@ PlanOutput plan_trr_xy(const PlanArgs& a) {
 }
 
 SimulateOutput simulate_trr_xy(const SimulateArgs& a) {
-  const trr::Machine m = load_trr_xy_machine(a.machine);
+  const trr::Machine m = machines::load_as<trr::Machine>(a.machine);
   const trr::Errors e = read_trr_model(a.model, m.name, a.force_model);
   std::optional<trr::Kinematics> truth;
   try {
@@ -106,7 +106,7 @@ IdentifyOutput identify_trr_xy(const IdentifyArgs& a) {
   if (!serial_only.empty())
     throw UsageError(
         fmt::format("{}: not available for the TRR-XY machine (its 30 parameters are always fitted)", serial_only));
-  const trr::Machine m = load_trr_xy_machine(a.machine);
+  const trr::Machine m = machines::load_as<trr::Machine>(a.machine);
   std::vector<trr::ProbeMeasurement> data;
   trr::TrrReportInputs report{a.machine, a.output, a.report, a.data, {}};
   for (const auto& f : a.data) {

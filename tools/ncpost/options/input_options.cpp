@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/read/cl_input.hpp"
 #include "ncpost/postproc/read/gcode/work_offsets.hpp"
 #include "number_checks.hpp"
@@ -77,7 +77,7 @@ Vec3d workpiece_origin_mm(const JobOptions& o) {
 
 LoadedJob load_job(const JobOptions& o) {
   LoadedJob job;
-  job.machine = load_machine(o.machine);
+  job.machine = machines::load_as<Machine>(o.machine);
   job.setup.tool_length_mm = o.tool_length_mm;
   job.setup.workpiece_origin_mm = workpiece_origin_mm(o);
   return job;

@@ -19,9 +19,20 @@ struct CommandWords {
   std::vector<char> letters{'X', 'Y', 'Z'};
   std::vector<bool> angle{false, false, false};
   int rotary_count = 0;  ///< how many words are angles (slots 3 and up on a serial machine)
-  /// True for a serial chain (Machine, closed-form inverse): with_rotary() and the rotary-axis
-  /// strategies of the post (branch changes, native arcs and cycles, cutter compensation) apply.
-  bool serial = true;
+  // What the post may do with these words, set by the model's kind (a serial chain: all of them,
+  // CommandWords::of; the TRR-XY machine: none, its words are five lengths).
+  /// A program's own rotary angles (G-code input) are taken as they are (with_rotary()).
+  bool angles_are_programmed = true;
+  /// The control compensates the tool radius (G41/G42) in a plane of these axes.
+  bool cutter_comp_supported = true;
+  /// Work planes can be tilted by the rotary axes (PLANE / CYCLE800 / G68.2 words).
+  bool tilted_plane_capable = true;
+  /// The inverse has rotary branches the post chooses among (branch plan, change of solution
+  /// with a retract).
+  bool branches_chosen = true;
+  /// machine() is the chain the commands solve (its axes and limits name the axis a point
+  /// leaves the travel of).
+  bool limits_name_the_axis = true;
 
   /// The words of a serial machine (X Y Z, then its rotary axes).
   static CommandWords of(const Machine& m) {

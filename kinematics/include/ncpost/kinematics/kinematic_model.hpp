@@ -3,12 +3,13 @@
 // One kinematic model interface for every machine, like the kinematics modules of LinuxCNC and
 // the Model/Data split of Pinocchio: the model (this class) is immutable — its axes and their NC
 // words, their limits, the forward kinematics (execute), the inverse with the post's choice of
-// solution (solve) and with all branches (branches), the error hook (error_at) — and the working
-// data (SolverData, solver_data.hpp) is passed explicitly, one per thread. Implementations: the
+// solution (solve) and with all branches (branches), the error hook (deviation) — and the working
+// data (SolverData, solver_data.hpp) is passed explicitly, one per thread. What only the post asks
+// (following a written block, reversal take-up, the tip an RTCP program writes) is not here: the
+// post's hooks (postproc/solve/post_hooks.hpp), implemented by the models that need them. Implementations: the
 // serial chain (serial_chain_model.hpp), the serial chain with an error model (ActualSolver,
 // postproc/actual_solver.hpp, on compensation/'s MachineModel) and the TRR-XY machine (TrrSolver,
 // postproc/trr_solver.hpp). Frames: CL in W (mm, unit axis), commands in mm and rad.
-#include <optional>
 #include <vector>
 
 #include "ncpost/kinematics/command_words.hpp"
@@ -58,17 +59,6 @@ class KinematicModel {
   }
   /// The NC words of the commands (default: those of machine(), a serial chain).
   virtual CommandWords words() const { return CommandWords::of(machine()); }
-  /// Called once a block to the commands q is written: machines with state (reversal) follow it in `data`.
-  virtual void advance(const AxisPosition& /*q*/, SolverData& /*data*/) const {}
-  /// Before a feed block from `from` to `to`: commands that take up the reversal play of the axes
-  /// whose direction reverses (the tool stands still), so that the block itself runs without lag;
-  /// nullopt when there is nothing to take up (machines without reversal).
-  virtual std::optional<AxisPosition> take_up(const AxisPosition& /*from*/, const AxisPosition& /*to*/,
-                                              const SolverData& /*data*/) const {
-    return std::nullopt;
-  }
-  /// The tool tip (W) an RTCP program writes for `cl` solved as q (the control inverts it nominally).
-  virtual Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& /*q*/) const { return cl.tip_mm; }
 };
 
 }  // namespace ncpost

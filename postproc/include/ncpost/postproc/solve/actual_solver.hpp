@@ -21,10 +21,11 @@
 #include "ncpost/compensation/actual_ik.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/postproc/solve/motion_solver.hpp"
+#include "ncpost/postproc/solve/post_hooks.hpp"
 
 namespace ncpost {
 
-class ActualSolver final : public KinematicModel {
+class ActualSolver final : public KinematicModel, public PostHooks {
  public:
   /// Convergence of the compensated IK when posting: a tenth of the NC words' resolution
   /// (4 decimals: 1e-4 mm, 1e-4 deg = 1.7e-6 rad). One fixed-point step reaches it on smooth

@@ -10,10 +10,11 @@
 #include "ncpost/compensation/actual_ik.hpp"
 #include "ncpost/compensation/machine_model.hpp"
 #include "ncpost/postproc/solve/motion_solver.hpp"
+#include "ncpost/postproc/solve/post_hooks.hpp"
 
 namespace ncpost {
 
-class ExecutedOn final : public KinematicModel {
+class ExecutedOn final : public KinematicModel, public PostHooks {
  public:
   ExecutedOn(const KinematicModel& commands, const comp::MachineModel& executing, const Setup& setup)
       : commands_(commands), executing_(executing), setup_(setup) {}
@@ -31,15 +32,15 @@ class ExecutedOn final : public KinematicModel {
     return executing_.tool_pose(q, setup_, comp::reversal_state(executing_, q, data.executing_stands));
   }
   void advance(const AxisPosition& q, SolverData& data) const override {
-    commands_.advance(q, data);
+    post_hooks_of(commands_).advance(q, data);
     if (executing_.has_reversal()) data.executing_stands = comp::actual_after(executing_, q, data.executing_stands);
   }
   Vec3d programmed_tip(const ClPoint& cl, const AxisPosition& q) const override {
-    return commands_.programmed_tip(cl, q);
+    return post_hooks_of(commands_).programmed_tip(cl, q);
   }
   std::optional<AxisPosition> take_up(const AxisPosition& from, const AxisPosition& to,
                                       const SolverData& data) const override {
-    return commands_.take_up(from, to, data);
+    return post_hooks_of(commands_).take_up(from, to, data);
   }
   const Machine& machine() const override { return commands_.machine(); }
 

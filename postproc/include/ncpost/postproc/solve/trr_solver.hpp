@@ -4,7 +4,7 @@
 // its programs, with --tolerance (trr_subdivider.hpp), --verify, --verify-on and --report.
 //
 // Commands: AxisPosition slots 0..4 (operator[]) are the words X Y (table) U V W (sliders of chains
-// a, b, c), all in mm (CommandWords: no angles, not a serial chain). The commands come from the
+// a, b, c), all in mm (CommandWords: no angles, none of a serial chain's capabilities). The commands come from the
 // TRR-XY inverse kinematics on `commanded` (the nominal machine, or the machine of `--model`); the
 // written program is re-executed (execute()) on `executing` (the same machine, or that of
 // `--verify-on`): forward kinematics, Newton from the machine's home plate pose, so the solver keeps
@@ -30,7 +30,8 @@ class TrrSolver final : public KinematicModel {
   /// The commands of `cl` (the machine keeps no state: no data, no previous commands needed).
   IkOutcome inverse(const ClPoint& cl) const;
   bool concurrent() const override { return true; }
-  /// The TRR-XY machine has no rotary words: the angles are ignored (the post never asks: words().serial is false).
+  /// The TRR-XY machine has no rotary words: the angles are ignored (the post never asks: words().angles_are_programmed
+  /// is false).
   AxisPosition with_rotary(const ClPoint& cl, const RotaryAngles& rotary_rad, SolverData& data) const override;
   /// Tool tip and axis in W at the commands; throws Infeasible when the plate pose cannot be solved.
   ToolPoseT<double> execute(const AxisPosition& q, const SolverData& /*data*/) const override { return execute(q); }

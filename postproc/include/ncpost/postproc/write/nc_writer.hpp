@@ -134,6 +134,14 @@ class NcWriter {
   std::string rpm_text(double rpm) const;
   /// The feed-per-minute word if another feed mode is in force.
   void per_minute_mode();
+  /// True when a motion to `m` writes an axis word (a move to where the tool is writes none).
+  bool moves_to(const NcMotion& m) const;
+  /// The feed-mode and motion words of a motion block where they change.
+  void append_motion_words(const NcMotion& m);
+  /// The axis words of a motion block that change; how many.
+  int append_axis_words(const NcMotion& m);
+  /// The feed word of a motion block (a rapid's: the dialect's rapid feed word, if any).
+  void append_feed_word(const NcMotion& m);
   /// The axis words a motion block may carry: X Y Z only in a tilted plane.
   std::size_t word_count() const { return tilted_ ? std::min<std::size_t>(3, letters_.size()) : letters_.size(); }
 
