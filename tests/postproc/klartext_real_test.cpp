@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Real Klartext programs (tests/data/real/heidenhain_aptpp_*.h, GPL-3.0, see SOURCES.md: written by
-// the AptPostProcessor project's own post from SOLIDWORKS CAM APT, and by hand for its TNC 310).
-// Each is read by the Klartext reader (machines/head-table-bc.toml) and must post, or be refused at the line whose
-// statement the reader does not take, with a message naming it. The expected line is found here in the file itself (the
-// first line holding that statement), not taken from the reader's output.
+// Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0, see SOURCES.md: written by the AptPostProcessor
+// project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the Unigraphics/NX.Postprocessor
+// library, and a training program kept beside them). Each is read by the Klartext reader (machines/head-table-bc.toml,
+// or the machine the case names) and must post, or be refused at the line whose statement the reader does not take,
+// with a message naming it. The expected line is found here in the file itself (the first line holding that
+// statement), not taken from the reader's output.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -37,11 +38,10 @@ int line_with(const std::string& text, const std::string& what) {
   return 0;
 }
 
-/// The reader's message for the file, or "" when it reads to the end.
-std::string outcome(const std::string& name) {
+/// The reader's message for the file read on machines/<machine_name>.toml, or "" when it reads to the end.
+std::string outcome(const std::string& name, const std::string& machine_name) {
   std::istringstream in(text_of(name));
-  // a machine whose file gives reference points (the programs retract with M91)
-  static const Machine machine = load_machine(test::source("machines/head-table-bc.toml"));
+  const Machine machine = load_machine(test::source("machines/" + machine_name + ".toml"));
   Setup setup;
   setup.tool_length_mm = 100.0;
   setup.workpiece_origin_mm = Vec3d(0, 0, -400);
@@ -61,6 +61,9 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
     const char* file;
     const char* statement;  ///< as written in the file ("" : posts)
     const char* message;    ///< what the refusal must say
+    /// the machine (machines/<name>.toml): one whose file gives reference points (the programs retract with M91),
+    /// with the rotary axes the program writes
+    const char* machine = "head-table-bc";
   };
   const Expected cases[] = {
       {"heidenhain_aptpp_profile.h", "FN18: SYSREAD", "FN 18 is not read"},
@@ -69,10 +72,16 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       {"heidenhain_aptpp_boss_12.h", "L Z 25.000", "Z without a value"},
       {"heidenhain_aptpp_sacrifice_912.h", "CYCL DEF 7.1 Xnan", "CYCL DEF 7: a shift of XNAN is not read"},
       {"heidenhain_aptpp_dem_target2_11setup.h", "", ""},
+      // NX posts write the unit of an inch program as IN (the TNC's word is INCH, which is refused by name)
+      {"heidenhain_nx_bridgeport412.h", "BEGIN PGM 100 IN", "BEGIN PGM"},
+      {"heidenhain_nx_dmc70v.h", "BEGIN PGM T IN", "BEGIN PGM"},
+      {"heidenhain_nx_dmc100.h", "BEGIN PGM PROGRAM IN", "BEGIN PGM"},
+      // A and C: an A-axis machine; CYCL DEF 19's angles depend on a machine parameter
+      {"heidenhain_training_dmc75v.h", "CYCL DEF 19.0", "CYCL DEF 19 (working plane)", "ac-trunnion"},
   };
   for (const Expected& c : cases) {
     INFO(c.file);
-    const std::string e = outcome(c.file);
+    const std::string e = outcome(c.file, c.machine);
     if (std::string(c.statement).empty()) {
       CHECK(e.empty());
       continue;

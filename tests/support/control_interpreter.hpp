@@ -488,9 +488,9 @@ class ControlInterpreter {
       arc_absolute_ = c == 901;
     else if (c == 980 || c == 990)
       return_r_ = c == 990;
-    else
-      return c == 170 || c == 400 || c == 410 || c == 420 || c == 430 || c == 434 || c == 490 || c == 610 || c == 640 ||
-             c == 930 || c == 940 || c == 2340 || c == 2550;
+    else  // and G50: scaling off, the state a mill starts in (with axis words it is a lathe's, which ncpost refuses)
+      return c == 170 || c == 400 || c == 410 || c == 420 || c == 430 || c == 434 || c == 490 || c == 500 || c == 610 ||
+             c == 640 || c == 930 || c == 940 || c == 2340 || c == 2550;
     return true;
   }
 
