@@ -132,3 +132,30 @@ TEST_CASE("gcode reference: without the keys the refusals name them") {
   CHECK(g28.where().line == 4);
   CHECK_THAT(g28.detail(), Catch::Contains("[axes.X] reference"));
 }
+
+TEST_CASE("gcode reference: a G28/G53 before any position, then a cut that does not place those axes, is refused") {
+  // The machine stands at the reference point (or the G53 position) in X and Y when Z plunges: the
+  // posted program may not start at X0 Y0 (or anywhere else) instead. Refused at the G28/G53 line,
+  // naming the axes and the cut, with or without the machine file's references.
+  for (const Machine* m : {&with_references(), &test::ac_trunnion()}) {
+    const InputError g28 = error_of(
+        "%\nO2\nG21 G90 G17\nT1 M6\nS1000 M3\nG91 G28 X0 Y0\nG90 G0 G43 Z10. H1\nG1 Z-1. F100.\nX20. Y5.\nG0 "
+        "Z10.\nM30\n%\n",
+        *m);
+    CHECK(g28.where().line == 6);
+    CHECK_THAT(g28.detail(), Catch::Contains("G28 moves X, Y"));
+    CHECK_THAT(g28.detail(), Catch::Contains("the cutting motion at line 8"));
+    const InputError g53 =
+        error_of("G21 G90\nT1 M6\nG53 G0 G90 X6.6957 Y2.1793\nG0 G43 Z1.35 H1\nZ.1\nG1 Z0. F22.\nM30\n", *m);
+    CHECK(g53.where().line == 3);
+    CHECK_THAT(g53.detail(), Catch::Contains("G53 moves X, Y"));
+  }
+  // programmed absolutely again before the cut: read as before (the first values place the start)
+  const Read placed = read("G21 G90\nT1 M6\nG91 G28 X0 Y0\nG90 G0 X20 Y5\nG43 Z10 H1\nG1 Z-1 F100\nM30\n");
+  REQUIRE(placed.motions.size() == 3);
+  CHECK(placed.motions[2].point.tip_mm.isApprox(Vec3d(20, 5, -1)));
+  // incremental words after the return do not place the axis
+  const InputError incremental =
+      error_of("G21 G90\nT1 M6\nG91 G28 X0 Y0\nG91 G0 X20 Y5\nG90 G43 Z10 H1\nG1 Z-1 F100\nM30\n", with_references());
+  CHECK(incremental.where().line == 3);
+}

@@ -481,6 +481,7 @@ struct GcodeClReader::State {
   /// the first time starts from 0 in it, as the notice says; the held rapids end there too).
   /// `cutting_line`: the line of the feed motion or arc that releases them (0: the program end).
   void release_held(const std::array<bool, 6>& usable, int cutting_line = 0) {
+    if (cutting_line > 0 || !held.empty()) refuse_unplaced_machine_moves(cutting_line);
     start_settled = true;
     if (held.empty()) return;
     for (HeldMotion& h : held_motions) {
@@ -503,6 +504,51 @@ struct GcodeClReader::State {
     before.insert(before.begin(), std::make_move_iterator(held.begin()), std::make_move_iterator(held.end()));
     held.clear();
     held_motions.clear();
+  }
+
+  /// Axes that a G28/G30/G53 before the program's start was settled moved to a machine position
+  /// (the line and the code), until the program programs them absolutely again.
+  std::array<int, 6> unplaced_line{};
+  std::array<std::string, 6> unplaced_code;
+
+  /// The start settles with an axis where a G28/G30/G53 left it, at a position in the program frame
+  /// nothing gives: taken from a first value or 0 it would be wrong, so the post stops there.
+  void refuse_unplaced_machine_moves(int cutting_line) {
+    std::string axes;
+    int line = 0;
+    std::string code;
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (!unplaced_line[i]) continue;
+      axes += axes.empty() ? std::string(1, "XYZABC"[i]) : std::string(", ") + "XYZABC"[i];
+      if (!line) line = unplaced_line[i], code = unplaced_code[i];
+    }
+    if (axes.empty()) return;
+    const std::string then = cutting_line > 0 ? fmt::format("the cutting motion at line {}", cutting_line)
+                                              : std::string("the rapids that follow");
+    throw InputError({file, line, 0},
+                     fmt::format("{} moves {} in machine coordinates before the program has given a position, and "
+                                 "{} start{} there without programming {} again: where that is in the program frame "
+                                 "is not known, so the posted program would start elsewhere; program {} absolutely "
+                                 "after the {} (before the first cut), or post from the CL data",
+                                 code, axes, then, cutting_line > 0 ? "s" : "", axes, axes, code));
+  }
+
+  /// A rotary axis not programmed yet is taken at 0 where the program first moves: right when the
+  /// machine move puts it at angle 0 (its machine angle under G53, the machine file's reference
+  /// under G28/G30), as the programs that turn the table home this way expect.
+  bool lands_where_assumed(const MachineMove& mm, std::size_t i) const {
+    if (i < 3 || known_before[i]) return false;
+    const Axis& axis = machine.axes[static_cast<std::size_t>(machine.index_of("XYZABC"[i]))];
+    if (mm.kind == MachineMove::Kind::machine) return mm.machine_value[i] == 0.0;
+    const std::optional<double> ref = reference_point(axis, mm.code == "G30");
+    return ref && *ref == 0.0;
+  }
+
+  /// After a block: an axis programmed absolutely (not by a G28/G30/G53) is placed again.
+  void note_placed_axes(const BlockEffect& fx) {
+    if (fx.machine_move || interpreter.state().incremental) return;
+    for (std::size_t i = 0; i < 6; ++i)
+      if (fx.programmed[i]) unplaced_line[i] = 0;
   }
 
   std::array<double, 6> first_value{};  ///< of each axis, once known (program units: mm, rad)
@@ -746,6 +792,7 @@ struct GcodeClReader::State {
     check_rtcp_forced(line_number);
     for (auto& n : interpreter.take_notices()) notices.push_back(std::move(n));
     const BlockEffect& fx = effect;
+    note_placed_axes(fx);
     queue_modal_records(fx, line_number);
     const cl::Location where{line_number, block.column};
     if (fx.has_motion && !fx.machine_move) check_reference_axes(fx, where, line);
@@ -836,6 +883,11 @@ struct GcodeClReader::State {
                                    mm.code, machine.name, program_letters(machine, options)),
                        std::string(line));
     if (!start_settled) {
+      for (std::size_t i = 0; i < 6; ++i)
+        if (mm.axes[i] && machine.index_of("XYZABC"[i]) >= 0 && !lands_where_assumed(mm, i)) {
+          unplaced_line[i] = where.line;
+          unplaced_code[i] = mm.code;
+        }
       notices.push_back(
           fmt::format("{}:{}:{}: {} before the first programmed position moves nothing in the "
                       "posted program (where the tool stands is not known yet): the program's first "
