@@ -79,11 +79,14 @@ void Lookahead::read() {
   }
 }
 
-void Lookahead::solve() {
-  const bool ahead = solver_.concurrent();
-  AxisPosition previous = solver_.words().home();  // the post starts from home too
+namespace {
+
+/// Each batch of `from`, every record of it up to the end of the input given to `each`, then on
+/// into `to`; returns at the end of the input or once a queue is stopped.
+template <class Each>
+void relay(BatchQueue& from, BatchQueue& to, Each each) {
   for (;;) {
-    std::optional<std::vector<AheadItem>> batch = parsed_.pop();
+    std::optional<std::vector<AheadItem>> batch = from.pop();
     if (!batch) return;
     bool last = false;
     for (AheadItem& item : *batch) {
@@ -91,46 +94,46 @@ void Lookahead::solve() {
         last = true;
         break;
       }
-      const auto* m = ahead ? std::get_if<cl::Motion>(&*item.record) : nullptr;
-      if (!m || m->rotary_rad) continue;
-      AheadSolve s{m->point, previous, {}, {}};
-      try {
-        s.ik = solver_.solve_quiet(m->point, previous, solving_data_, &s.figures);
-        if (s.ik.ok()) previous = *s.ik.position;
-        item.solved = std::move(s);
-      } catch (...) {
-        // the post solves this motion itself and meets the same failure there
-      }
+      each(item);
     }
-    if (!solved_.push(std::move(*batch)) || last) return;
+    if (!to.push(std::move(*batch)) || last) return;
   }
+}
+
+}  // namespace
+
+void Lookahead::solve() {
+  const bool ahead = solver_.concurrent();
+  AxisPosition previous = solver_.words().home();  // the post starts from home too
+  relay(parsed_, solved_, [&](AheadItem& item) {
+    const auto* m = ahead ? std::get_if<cl::Motion>(&*item.record) : nullptr;
+    if (!m || m->rotary_rad) return;
+    AheadSolve s{m->point, previous, {}, {}};
+    try {
+      s.ik = solver_.solve_quiet(m->point, previous, solving_data_, &s.figures);
+      if (s.ik.ok()) previous = *s.ik.position;
+      item.solved = std::move(s);
+    } catch (...) {
+      // the post solves this motion itself and meets the same failure there
+    }
+  });
 }
 
 /// Each motion solved ahead, cut from the one solved before it (as solve() chains them).
 void Lookahead::cut() {
   std::optional<SolvedPoint> before;
-  for (;;) {
-    std::optional<std::vector<AheadItem>> batch = solved_.pop();
-    if (!batch) return;
-    bool last = false;
-    for (AheadItem& item : *batch) {
-      if (!item.record) {
-        last = true;
-        break;
+  relay(solved_, cut_, [&](AheadItem& item) {
+    if (!item.solved || !item.solved->ik.ok()) return;  // (records that move nothing among them)
+    const SolvedPoint to{item.solved->cl, *item.solved->ik.position, item.solved->ik.executed};
+    if (before && before->q == item.solved->previous) {
+      try {
+        item.cut = AheadCut{*before, to, (*cutter_)(*before, to, cutting_data_)};
+      } catch (...) {
+        // the post cuts this motion itself and meets the same failure there
       }
-      if (!item.solved || !item.solved->ik.ok()) continue;  // (records that move nothing among them)
-      const SolvedPoint to{item.solved->cl, *item.solved->ik.position, item.solved->ik.executed};
-      if (before && before->q == item.solved->previous) {
-        try {
-          item.cut = AheadCut{*before, to, (*cutter_)(*before, to, cutting_data_)};
-        } catch (...) {
-          // the post cuts this motion itself and meets the same failure there
-        }
-      }
-      before = to;
     }
-    if (!cut_.push(std::move(*batch)) || last) return;
-  }
+    before = to;
+  });
 }
 
 AheadItem Lookahead::next() {
