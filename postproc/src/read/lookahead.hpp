@@ -117,11 +117,13 @@ class Lookahead {
   cl::Reader& reader_;
   const KinematicModel& solver_;
   const Subdivider* cutter_;  ///< nullptr: no cutting stage
-  SolverData solving_data_;   ///< the solver's working data on the solving thread (that thread's only)
-  SolverData cutting_data_;   ///< the same on the cutting thread
-  BatchQueue parsed_{kMaxBatches};
-  BatchQueue solved_{kMaxBatches};
-  BatchQueue cut_{kMaxBatches};
+  /// the solver's working data on the solving thread (that thread's only), and on the cutting
+  /// thread: each on cache lines of its own (both are written at every solve)
+  alignas(64) SolverData solving_data_;
+  alignas(64) SolverData cutting_data_;
+  alignas(64) BatchQueue parsed_{kMaxBatches};  // (each queue's lock and state on lines of their own too)
+  alignas(64) BatchQueue solved_{kMaxBatches};
+  alignas(64) BatchQueue cut_{kMaxBatches};
   alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
   std::size_t position_ = 0;
   std::thread reading_;
