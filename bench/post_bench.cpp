@@ -4,9 +4,11 @@
 //   spiral  a dense spiral over a dome, tool axis along the normal (bows far below 5 µm: the
 //           cheap bound screens nearly every block);
 //   dome    the public dome path repeated (1201 points per copy; 80% of its blocks bow over 5 µm)
+//   dense   the spiral with 400 turns, tool axis 5 -> 70 deg (issue 26's second path: larger steps,
+//           the compensated IK iterates more)
 // posted to files: one block per motion, --tolerance 0.005 adaptive, harmonic, and adaptive on the
 // actual machine of truth.json (compensated IK, `--model`). Wall time and peak memory (ru_maxrss).
-// Usage: post_bench [N=1000000] [work dir=.] [spiral|dome] [verify] [model] [write-only]
+// Usage: post_bench [N=1000000] [work dir=.] [spiral|dense|dome] [verify] [model] [write-only]
 // (write-only: just the CL file DIR/bench_path.cls, for bench/run_post_bench.sh)
 // The gcode-parser comparison parses out_adaptive.nc (README).
 #include <fmt/format.h>
@@ -31,13 +33,15 @@ using namespace ncpost;
 
 namespace {
 
-void write_path(const std::string& path, long n) {
+/// The spiral: `turns` turns over the dome, the tool axis from `polar0_rad` to `polar1_rad` off +Z.
+void write_path(const std::string& path, long n, double turns = 40.0, double polar0_rad = 0.08,
+                double polar1_rad = 1.03) {
   std::FILE* f = std::fopen(path.c_str(), "w");
   std::fputs("PARTNO/BENCH\nUNITS/MM\nMULTAX/ON\nLOADTL/1\nRAPID\n", f);
-  const double radius = 60.0, turns = 40.0;
+  const double radius = 60.0;
   for (long i = 0; i < n; ++i) {
     const double s = static_cast<double>(i) / static_cast<double>(n - 1);
-    const double polar = 0.08 + 0.95 * s;  // from near the pole down to ~60 deg
+    const double polar = polar0_rad + (polar1_rad - polar0_rad) * s;  // spiral: near the pole down to ~60 deg
     const double azimuth = 2.0 * kPi * turns * s;
     const Vec3d normal(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
     const Vec3d tip = radius * normal - Vec3d(0, 0, 20);
@@ -159,6 +163,8 @@ int main(int argc, char** argv) {
   const std::string cl = dir + "/bench_path.cls";
   if (kind == "dome")
     write_dome_copies(cl, scenario + "path.cls", n);
+  else if (kind == "dense")
+    write_path(cl, n, 400.0, deg_to_rad(5.0), deg_to_rad(70.0));
   else
     write_path(cl, n);
   if (write_only) {

@@ -5,7 +5,8 @@
 #   ncpost post --model truth.json --tolerance 0.005   (public-clean AC trunnion)
 # on 2 threads (the default) and on 1, against the cncjs `gcode-parser` npm package merely parsing
 # the program that comes out (parseFile: its streaming API; parseLine: the parser alone), in one run.
-#   bench/run_post_bench.sh [N=1000000]      (run from the repository root; builds in build/)
+#   bench/run_post_bench.sh [N=1000000] [spiral|dense]   (from the repository root; builds in build/)
+# (dense: 400 turns, tool axis 5 -> 70 deg, issue 26's second path)
 # Wall time and peak memory from /usr/bin/time (GNU time, Debian package `time`, or the shell's
 # clock when absent). gcode-parser is installed with npm into a temporary directory.
 set -eu
@@ -21,7 +22,7 @@ ninja -C "$ROOT/build" -j2 ncpost post_bench >/dev/null
 cp "$ROOT/bench/gcode_parser_time.js" "$WORK/"
 echo "gcode-parser $(node -p "require('$WORK/node_modules/gcode-parser/package.json').version"), node $(node --version), $(nproc) cores"
 
-"$ROOT/build/bench/post_bench" "$N" "$WORK" spiral write-only
+"$ROOT/build/bench/post_bench" "$N" "$WORK" "${2:-spiral}" write-only
 run() {  # label, then the command
   label=$1; shift
   if [ -x /usr/bin/time ]; then
