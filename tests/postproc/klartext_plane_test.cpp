@@ -152,7 +152,7 @@ TEST_CASE(
 
 TEST_CASE("klartext PLANE PROJECTED ... STAY on the AC trunnion: the plane from its two traces, the control's angles") {
   const Case ac{"ac-trunnion.toml", setup_of(100.0, Vec3d(0, 0, 0)), ac_angles};
-  const std::string plane = "PLANE PROJECTED PROPR+20 PROMIN+30 PROROT+15 STAY SEQ+";
+  const std::string plane = "PLANE PROJECTED PROPR+20 PROMIN+30 ROT+15 STAY SEQ+";
   const std::string text = plane_program(plane, "A+Q120 C+Q122");
   check_reposted(text, ac);
   // the tool axis by hand: the plane z = -tan(20) x + tan(30) y, its normal (tan 20, -tan 30, 1)

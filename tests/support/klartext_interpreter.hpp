@@ -18,7 +18,7 @@
 //     Y toward P3, the datum kept); PLANE PROJECTED PROPR PROMIN PROROT STAY [SEQ±] (the plane
 //     z = p x + q y whose trace in ZX falls by PROPR along +X, whose trace in YZ rises by PROMIN
 //     along +Y: p = -tan PROPR, q = tan PROMIN; X along its ZX trace (1, 0, p), then turned by
-//     PROROT about the plane's normal); PLANE RESET STAY;
+//     ROT (PROROT) about the plane's normal); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
 //     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
 //   - CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with their Q parameters on the `~` lines (set as Q
@@ -196,7 +196,7 @@ class KlartextInterpreter {
       return;
     }
     static const std::regex projected(
-        R"(^PLANE PROJECTED PROPR([-+][\d.]+) PROMIN([-+][\d.]+) PROROT([-+][\d.]+) STAY(?: SEQ([-+]))?$)");
+        R"(^PLANE PROJECTED PROPR([-+][\d.]+) PROMIN([-+][\d.]+) (?:PRO)?ROT([-+][\d.]+) STAY(?: SEQ([-+]))?$)");
     std::smatch pr;
     if (std::regex_match(s, pr, projected)) {
       const double p = -std::tan(std::stod(pr[1]) * M_PI / 180.0), q = std::tan(std::stod(pr[2]) * M_PI / 180.0);

@@ -20,7 +20,7 @@ const std::map<std::string, std::vector<std::string>>& angle_words() {
   static const std::map<std::string, std::vector<std::string>> k = {
       {"PLANE SPATIAL", {"SPA", "SPB", "SPC"}},
       {"PLANE EULER", {"EULPR", "EULNU", "EULROT"}},
-      {"PLANE PROJECTED", {"PROPR", "PROMIN", "PROROT"}},
+      {"PLANE PROJECTED", {"PROPR", "PROMIN", "ROT", "PROROT"}},
       {"PLANE VECTOR", {"BX", "BY", "BZ", "NX", "NY", "NZ"}},
       {"PLANE AXIAL", {"A", "B", "C"}},
       {"PLANE POINTS", {"P1X", "P1Y", "P1Z", "P2X", "P2Y", "P2Z", "P3X", "P3Y", "P3Z"}},
@@ -50,7 +50,7 @@ std::variant<Mat3d, std::string> points_frame(const std::map<std::string, double
 }
 
 /// PLANE PROJECTED: the plane's traces in the ZX plane (along Ry(PROPR)·e_x) and in the YZ plane
-/// (along Rx(PROMIN)·e_y); its X along the first trace, Z = first × second, then PROROT about Z.
+/// (along Rx(PROMIN)·e_y); its X along the first trace, Z = first × second, then ROT (PROROT) about Z.
 std::variant<Mat3d, std::string> projected_frame(double principal_rad, double minor_rad, double rotation_rad) {
   const Vec3d in_zx = rot(Vec3d::UnitY(), principal_rad) * Vec3d::UnitX();
   const Vec3d in_yz = rot(Vec3d::UnitX(), minor_rad) * Vec3d::UnitY();
@@ -73,7 +73,11 @@ std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::ma
     return Mat3d(rot(Vec3d::UnitZ(), deg("EULPR")) * rot(Vec3d::UnitX(), deg("EULNU")) *
                  rot(Vec3d::UnitZ(), deg("EULROT")));
   if (kind == "PLANE POINTS") return points_frame(v);
-  if (kind == "PLANE PROJECTED") return projected_frame(deg("PROPR"), deg("PROMIN"), deg("PROROT"));
+  if (kind == "PLANE PROJECTED") {
+    if (v.count("ROT") && v.count("PROROT"))
+      return std::string("PLANE PROJECTED with both ROT and PROROT (the rotation about the tilted tool axis)");
+    return projected_frame(deg("PROPR"), deg("PROMIN"), deg(v.count("ROT") ? "ROT" : "PROROT"));
+  }
   if (kind == "PLANE VECTOR") {
     const Vec3d n(get("NX"), get("NY"), get("NZ"));
     const Vec3d base(get("BX"), get("BY"), get("BZ"));
