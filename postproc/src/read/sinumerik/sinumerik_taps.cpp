@@ -121,6 +121,25 @@ void Translator::tap_parameters(const ProgramLine& l, const Item& item, const Ar
   d.retract_spindle = static_cast<int>(retract_dir);
 }
 
+/// The thread's hand (true: left): CYCLE84's pitch sign; CYCLE840 taps as the spindle turns (with
+/// an encoder its pitch sign must agree); refused where they disagree or SDR goes the way in.
+bool Translator::tap_left_hand(const ProgramLine& l, const Drilling& d) const {
+  if (d.tap == Drilling::Tap::rigid) return d.pitch_mm < 0.0;
+  const bool m4_before = spindle_direction_ == 4;
+  if (spindle_direction_ != 3 && spindle_direction_ != 4)
+    fail(l, 1, "CYCLE840 with the spindle not turning (no M3 or M4 before): the thread's hand is not known");
+  if (!(spindle_rpm_ > 0.0)) fail(l, 1, "CYCLE840 before any spindle speed S: the thread's pitch (F / S) is not known");
+  const bool left = d.with_encoder ? d.pitch_mm < 0.0 : m4_before;
+  if (d.with_encoder && left != m4_before)
+    fail(l, 1,
+         fmt::format("CYCLE840 with a {}-hand thread (the sign of MPIT/PIT) and the spindle {}: program {}",
+                     left ? "left" : "right", m4_before ? "M4" : "M3", left ? "M4" : "M3"));
+  if (d.retract_spindle != 0 && (d.retract_spindle == 4) == left)
+    fail(l, 1,
+         fmt::format("CYCLE840: SDR={} turns the spindle out of the thread the way it went in", d.retract_spindle));
+  return left;
+}
+
 /// The tap at the current X Y: G84 / G74 with G98 (the tool on RTP) or G99 (RTP is the safety
 /// plane), the thread's feed, the spindle as SDAC says after it and the programmed F again.
 void Translator::tap(const ProgramLine& l, const Drilling& d) {
@@ -138,28 +157,12 @@ void Translator::tap(const ProgramLine& l, const Drilling& d) {
   const double safety = d.reference + d.safety;
   if (at.z() < safety - 1e-9)
     fail(l, 1, fmt::format("{}: the tool stands below the safety plane RFP + SDIS = {}", d.name, safety));
-  // the thread's hand and the speed: CYCLE84 sets them; CYCLE840 taps as the spindle turns
-  const bool m4_before = spindle_direction_ == 4;
-  if (d.tap == Drilling::Tap::floating && spindle_direction_ != 3 && spindle_direction_ != 4)
-    fail(l, 1, "CYCLE840 with the spindle not turning (no M3 or M4 before): the thread's hand is not known");
-  if (d.tap == Drilling::Tap::floating && !(spindle_rpm_ > 0.0))
-    fail(l, 1, "CYCLE840 before any spindle speed S: the thread's pitch (F / S) is not known");
-  const bool left = d.tap == Drilling::Tap::rigid ? d.pitch_mm < 0.0 : d.with_encoder ? d.pitch_mm < 0.0 : m4_before;
-  if (d.tap == Drilling::Tap::floating && d.with_encoder && left != m4_before)
-    fail(l, 1,
-         fmt::format("CYCLE840 with a {}-hand thread (the sign of MPIT/PIT) and the spindle {}: program {}",
-                     left ? "left" : "right", m4_before ? "M4" : "M3", left ? "M4" : "M3"));
-  if (d.tap == Drilling::Tap::floating && d.retract_spindle != 0 && (d.retract_spindle == 4) == left)
-    fail(l, 1,
-         fmt::format("CYCLE840: SDR={} turns the spindle out of the thread the way it went in", d.retract_spindle));
+  const bool left = tap_left_hand(l, d);
   const double rpm = d.tap == Drilling::Tap::rigid ? d.tap_rpm : spindle_rpm_;
-  const bool per_revolution = feed_mode_ == 95;
-  double feed = 0.0;
+  double feed = feed_mode_ == 95 ? std::abs(d.pitch_mm) : std::abs(d.pitch_mm) * rpm;
   if (d.tap == Drilling::Tap::floating && !d.with_encoder) {
     if (!(feed_ > 0.0)) fail(l, 1, "CYCLE840 without encoder (ENC=1) before any F: the tapping feed is the F before");
     feed = feed_;
-  } else {
-    feed = per_revolution ? std::abs(d.pitch_mm) : std::abs(d.pitch_mm) * rpm;
   }
   const Eigen::Vector3d hole = f.apply(at);
   const double dz = f.offset.z();

@@ -159,6 +159,7 @@ class Translator {
   double tap_pitch(const ProgramLine& l, const Item& item, const Arguments& args, std::size_t mpit, std::size_t pit,
                    std::size_t unit) const;
   void tap_parameters(const ProgramLine& l, const Item& item, const Arguments& args, Drilling& d) const;
+  bool tap_left_hand(const ProgramLine& l, const Drilling& d) const;
   void tap(const ProgramLine& l, const Drilling& d);
 
   [[noreturn]] void fail(const ProgramLine& l, int column, const std::string& what) const;
