@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Heidenhain hole cycles 203, 207, 208 and 241 (issue 28) re-posted for a Fanuc control and
+// The Heidenhain hole cycles 201, 203, 207, 208, 240 and 241, the polar line LP and the corners RND
+// and CHF (issue 28) re-posted for a Fanuc control and
 // both sides executed independently: the Klartext input by the tests' interpreter
 // (klartext_interpreter.hpp, the cycles' runs in klartext_cycles.hpp), the written program by
 // nc_executor.hpp. Every end of an input move (each move of each cycle) must be reached by an
@@ -84,6 +85,18 @@ std::string refusal(const std::string& text, const std::string& tool_table = "[t
     return e.what();
   }
   return "(posted)";
+}
+
+/// Whether a block of the written program `nc` ends at the program point `p` (the VMC's program X Y Z
+/// are W's plus the workpiece origin's), within 1 µm.
+bool nc_reaches(const std::string& nc, const Eigen::Vector3d& p) {
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::vmcl600_setup().workpiece_origin_mm;
+  job.tool_length_mm = test::vmcl600_setup().tool_length_mm;
+  const test::Executor out(test::source(kMachine), job, nc);
+  for (const test::ExecBlock& b : out.blocks)
+    if ((out.at(b, 1.0).tip_W + job.workpiece_origin_mm - p).norm() < 1e-3) return true;
+  return false;
 }
 
 const std::string kHead =
@@ -207,6 +220,52 @@ TEST_CASE("klartext CYCL DEF 241: pre-positioning into the pilot hole, its speed
   CHECK_THAT(refusal(dwell_depth), Catch::Contains("cycles.h:4:") && Catch::Contains("CYCL DEF 241: Q435=5"));
 }
 
+TEST_CASE("klartext CYCL DEF 201 and 240: reaming out at its own feed, centering out at FMAX, each with its dwell") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 201 REAMING ~\n"
+                           "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-15 ;DEPTH ~\n"
+                           "  Q206=+100 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q211=+0.5 ;DWELL TIME AT DEPTH ~\n"
+                           "  Q208=+250 ;RETRACTION FEED RATE ~\n"
+                           "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+25 ;2ND SET-UP CLEARANCE\n"
+                           "4 L X+12 Y+8 R0 FMAX M99\n"
+                           "5 CYCL DEF 240 CENTERING ~\n"
+                           "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+                           "  Q343=+0 ;SELECT DEPTH/DIA. ~\n"
+                           "  Q201=-3 ;DEPTH ~\n"
+                           "  Q344=-9 ;DIAMETER ~\n"
+                           "  Q206=+180 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q211=+0.2 ;DWELL TIME AT DEPTH ~\n"
+                           "  Q203=-1 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+40 ;2ND SET-UP CLEARANCE\n"
+                           "6 L X+40 Y-6 R0 FMAX M99\n"
+                           "7 L Z+50 FMAX M5\n"
+                           "8 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  // per hole: to Q200, to the depth, back to Q200, to Q204
+  CHECK(check_cycles(text, nc) == 4 + 2 * 4);    // the four L blocks and four ends per hole
+  CHECK(nc.find("F250.") != std::string::npos);  // 201's retraction feed
+  CHECK(nc.find("F180.") != std::string::npos);
+  CHECK(nc.find("G4") != std::string::npos);
+  // 240 leaves the hole at FMAX: the block after the centering's bottom (Z-4 in the program) is a rapid
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::vmcl600_setup().workpiece_origin_mm;
+  job.tool_length_mm = test::vmcl600_setup().tool_length_mm;
+  const test::Executor out(test::source(kMachine), job, nc);
+  int rapids_out = 0, feeds_out = 0;  // (the program's Z is W's plus the origin's: the bottom Q203 + Q201 = -4)
+  for (std::size_t i = 0; i + 1 < out.blocks.size(); ++i)
+    if (std::abs(out.at(out.blocks[i], 1.0).tip_W.z() + job.workpiece_origin_mm.z() + 4.0) < 1e-6)
+      (out.blocks[i + 1].kind == test::ExecBlock::Kind::rapid ? rapids_out : feeds_out) += 1;
+  CHECK(rapids_out == 1);
+  CHECK(feeds_out == 0);
+  std::string by_diameter = text;
+  by_diameter.replace(by_diameter.find("Q343=+0"), 7, "Q343=+1");
+  CHECK_THAT(refusal(by_diameter),
+             Catch::Contains("cycles.h:13:") && Catch::Contains("CYCL DEF 240: Q343=1") && Catch::Contains("T-ANGLE"));
+}
+
 TEST_CASE("klartext: a decimal comma (X+50,022, older TNC programs) is refused naming the number") {
   const std::string text = kHead + "3 L X+50,022 Y+80 R0 FMAX\n4 END PGM CYCLES MM\n";
   CHECK_THAT(refusal(text), Catch::Contains("cycles.h:4:") && Catch::Contains("'50,022': a decimal comma") &&
@@ -253,4 +312,57 @@ TEST_CASE("klartext M89: the cycle after every positioning block until M99 (whic
   for (const test::ExecBlock& b : out.blocks) out_bottoms += std::abs(out.at(b, 1.0).tip_W.z() - deepest) < 1e-6;
   CHECK(in_bottoms == 4);
   CHECK(out_bottoms == 4);
+}
+
+TEST_CASE("klartext LP: lines in polar coordinates about CC, absolute and incremental PR / PA, with Z") {
+  const std::string text = kHead +
+                           "3 L X+30 Y+10 Z+2 FMAX\n"
+                           "4 CC X+10 Y+10\n"
+                           "5 LP PR+20 PA+0 Z-3 F300\n"
+                           "6 LP PA+90\n"
+                           "7 LP IPR-5 IPA+45\n"
+                           "8 CC IX+5 IY+0\n"
+                           "9 LP PR+8 PA-30 IZ-1\n"
+                           "10 L Z+50 FMAX M5\n"
+                           "11 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  CHECK(check_cycles(text, nc) == 7);
+  // by hand: PA+90 about (10, 10) at 20 is (10, 30); then 15 at 135 deg; the pole 5 further along X
+  const double r135 = 15.0 / std::sqrt(2.0);
+  const Eigen::Vector3d pole2(10.0 - r135 + 5.0, 10.0 + r135, 0.0);
+  const Eigen::Vector3d want[] = {{10, 30, -3},
+                                  {10 - r135, 10 + r135, -3},
+                                  pole2 + Eigen::Vector3d(8 * std::cos(M_PI / 6), -8 * std::sin(M_PI / 6), -4)};
+  for (const Eigen::Vector3d& w : want) CHECK(nc_reaches(nc, w));
+  CHECK_THAT(refusal(kHead + "3 LP PR+5 PA+0\n4 END PGM CYCLES MM\n"),
+             Catch::Contains("cycles.h:4:") && Catch::Contains("LP without a CC"));
+}
+
+TEST_CASE("klartext RND and CHF: the corner rounded by an arc tangent to both lines, or cut by a chamfer") {
+  const std::string text = kHead +
+                           "3 L X+0 Y+0 Z+2 FMAX\n"
+                           "4 L Z-2 F200\n"
+                           "5 L X+40 F400\n"
+                           "6 RND R5\n"
+                           "7 L Y+30\n"
+                           "8 CHF 4\n"
+                           "9 L X+10 Y+40\n"
+                           "10 RND R3 F100\n"
+                           "11 L X+0 Y+0\n"
+                           "12 L Z+50 FMAX M5\n"
+                           "13 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  CHECK(check_cycles(text, nc) == 11);
+  // by hand: the left turn at (40, 0) rounded from (35, 0) to (40, 5) about (35, 5), counter-clockwise;
+  // the chamfer at (40, 30) from 4 mm before it to 4 mm along (-30, 10) after it
+  const double k = 4.0 / std::sqrt(1000.0);
+  const Eigen::Vector3d reached[] = {{35, 0, -2}, {40, 5, -2}, {40, 26, -2}, {40 - 30 * k, 30 + 10 * k, -2}};
+  const Eigen::Vector3d corners[] = {{40, 0, -2}, {40, 30, -2}, {10, 40, -2}};
+  for (const Eigen::Vector3d& p : reached) CHECK(nc_reaches(nc, p));
+  for (const Eigen::Vector3d& p : corners) CHECK_FALSE(nc_reaches(nc, p));
+  CHECK_THAT(nc, Catch::Contains("G3") && Catch::Contains("F100.") && Catch::Contains("I0.0000 J5.0000"));
+  CHECK_THAT(refusal(kHead + "3 L X+0 Y+0 Z+2 FMAX\n4 L X+5 F100\n5 RND R6\n6 L Y+20\n7 END PGM CYCLES MM\n"),
+             Catch::Contains("cycles.h:6:") && Catch::Contains("RND 6: the rounding needs 6.0000 mm of each line"));
+  CHECK_THAT(refusal(kHead + "3 L X+0 Y+0 Z+2 FMAX\n4 L X+5 F100\n5 CHF 1\n6 CC X+0 Y+0\n7 END PGM CYCLES MM\n"),
+             Catch::Contains("cycles.h:7:") && Catch::Contains("'CC' after CHF (line 6)"));
 }

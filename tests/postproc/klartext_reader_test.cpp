@@ -247,12 +247,14 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 CYCL DEF 7.1 C+10\n", "a shift of C is not read");
   refused("3 PLANE RESET MOVE DIST50 F1000\n", "PLANE RESET MOVE DIST: a swivel about a point");
   refused("3 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE ~\n  Q201=-10 ;DEPTH\n", "CYCL DEF 200");
-  refused("3 PLANE PROJECTED PROPR+0 PROMIN+45 ROT+0 STAY\n", "PLANE PROJECTED is not read");
+  refused("3 PLANE RELATIV SPA+10 STAY\n", "PLANE RELATIV is not read");
+  refused("3 PLANE PROJECTED PROPR+90 PROMIN+0 PROROT+0 STAY\n", "a projection angle of 90 deg gives no plane");
+  refused("3 PLANE PROJECTED PROPR+0 PROMIN+45 ROT+0 PROROT+0 STAY\n", "PLANE PROJECTED with both ROT and PROROT");
   refused("3 PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+10 P2Y+0 P2Z+0 P3X+20 P3Y+0 P3Z+0 STAY\n",
           "PLANE POINTS: the three points lie on one line");
-  refused("3 RND R5\n", "'RND R5': a rounding");
-  refused("3 CHF 2\n", "'CHF 2': a chamfer");
-  refused("3 LP PR+10 PA+30\n", "polar coordinates");
+  refused("3 RND R5\n", "RND without a straight line in X Y at a feed (L or LP) just before it");
+  refused("3 CHF 2\n", "CHF without a straight line in X Y at a feed (L or LP) just before it");
+  refused("3 LP PR+10 PA+30\n", "LP without a CC before it");
   refused("3 FN 14: ERROR = 1000\n", "FN 14 is not read");
   refused("3 Q1 = Q7 + 1\n", "Q7 is not set in this program");
   refused("3 Q1 = LOG(10)\n", "LOG in a Q formula is not read");
@@ -267,9 +269,12 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
           "M92 Z10: machine coordinates count from the axis's second reference point "
           "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
           "does not give; add [axes.Z] reference2");
-  refused("3 L X+10 FMAX M99\n", "a cycle call without a hole cycle (CYCL DEF 200, 203, 207, 208 or 241) before it");
+  refused("3 L X+10 FMAX M99\n",
+          "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 207, 208, 240 or 241) before it");
   refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 203 without Q206");
-  refused("3 CYCL DEF 201 REAMING ~\n  Q200=2 ~\n  Q201=-10\n", "'CYCL DEF 201 REAMING': this cycle");
+  refused("3 CYCL DEF 201 REAMING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 201 without Q206");
+  refused("3 CYCL DEF 205 UNIVERSAL PECKING ~\n  Q200=2 ~\n  Q201=-10\n",
+          "'CYCL DEF 205 UNIVERSAL PECKING': this cycle");
   refused("3 M114\n", "M114");
   refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");
   refused("3 TOOL CALL 5 \"D10\" Z S100\n", "both a number and a name");

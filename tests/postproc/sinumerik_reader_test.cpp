@@ -345,7 +345,7 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
   const std::vector<Case> cases = {
       {"G0 X0 Y0 Z0\nT=\"\" M6\nM30\n", "expected a tool name between quotes", 2},
       {"G0 X0 Y0 Z0\nMIRROR X0\nM30\n", "MIRROR is not read", 2},
-      {"G0 X0 Y0 Z0\nCYCLE84(10,0,2,-5)\nM30\n", "CYCLE84 (rigid tapping) is not read", 2},
+      {"G0 X0 Y0 Z0\nCYCLE84(10,0,2,-5)\nM30\n", "CYCLE84: SDAC=0 (the spindle after the cycle", 2},
       {"G0 X0 Y0 Z0\nG505\nM30\n", "G505: a settable work offset beyond G57 is not read", 2},
       {"G0 X0 Y0 Z0\nR1=$AA_IM[X]\nM30\n", "$AA_IM is a system variable", 2},
       {"DEF REAL AA\nIF AA==1 AND AA==2\nENDIF\nM30\n", "Sinumerik binds comparisons last", 2},
@@ -364,7 +364,7 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
       {"G0 X0 Y0 Z9\nCYCLE85(10,0,2,-5,,0,100,200)\nM30\n", "CYCLE85 before any F", 2},
       {"G0 X0 Y0 Z9 F100\nCYCLE85(10,0,2,-5,,0,0,200)\nM30\n", "CYCLE85: FFR=0", 2},
       {"G0 X0 Y0 Z9 F100\nG18\nCYCLE81(10,0,2,-5)\nM30\n", "CYCLE81 under G18", 3},
-      {"G0 X0 Y0 Z9 F100\nMCALL CYCLE84(10,0,2,-5)\nM30\n", "other than CYCLE81, 82, 83, 85 or 86", 2},
+      {"G0 X0 Y0 Z9 F100\nMCALL CYCLE87(10,0,2,-5)\nM30\n", "other than CYCLE81, 82, 83, 84, 840, 85 or 86", 2},
   };
   for (const Case& c : cases) {
     INFO(c.text);

@@ -292,3 +292,50 @@ TEST_CASE("sinumerik re-post: CYCLE800 _MODE=27 turns about Z, then Y', then X''
   const test::ExecPose pose = test::forward(m, exec_job(), test::V3::Zero(), {{'A', got.at('A')}, {'C', got.at('C')}});
   CHECK((pose.axis_W - normal).norm() < kAxisTolerance);
 }
+
+TEST_CASE("sinumerik re-post: CYCLE84 (rigid, MPIT and PIT, left-hand) and MCALL CYCLE840 as the tap G84 / G74") {
+  const std::string text =
+      "N10 G17 G90 G71 G94 T1 M6\n"
+      "N20 G0 X0 Y0 Z30 A0 C0 S500 M3\n"
+      "N30 G0 X10 Y5 Z20\n"
+      "N40 CYCLE84(20, 0, 2, -12, , 0, 3, 8, , 0, 400, 0)\n"  // M8: 1.25 mm at 400 rpm, on RTP
+      "N50 G0 X-15 Y5 Z25\n"
+      "N60 CYCLE84(2, 0, 2, , 9, 0, 5, , -1.5, 0, 300, 300)\n"  // left-hand 1.5 mm, RTP = the safety plane
+      "N70 G1 Y0 F333\n"
+      "N80 G0 Z20 S600 M3\n"
+      "N90 MCALL CYCLE840(20, 0, 3, -10, , 0, 0, 3, 0, 0, 1.0)\n"  // with encoder: 1 mm x 600 rpm
+      "N100 G0 X30 Y-10\n"
+      "N110 X40\n"
+      "N120 MCALL\n"
+      "N130 G0 Z50\n"
+      "N140 M30\n";
+  const std::string out = reposted_and_checked(text, false);
+  // the thread's feed pitch x speed (hand-computed: M8 1.25 x 400, 1.5 x 300, 1.0 x 600) and its hand
+  CHECK_THAT(out, Catch::Contains("G84") && Catch::Contains("F500.") && Catch::Contains("G74") &&
+                      Catch::Contains("F450.") && Catch::Contains("F600."));
+  const test::Executor ex(test::source("machines/ac-trunnion.toml"), exec_job(), out);
+  int threads_followed_out = 0;
+  for (const auto& b : ex.blocks)
+    if (b.kind == test::ExecBlock::Kind::linear && b.to.at('Z') > b.from.at('Z') + 1.0) ++threads_followed_out;
+  CHECK(threads_followed_out == 4);
+}
+
+TEST_CASE("sinumerik CYCLE84 / CYCLE840: what the posted tap cannot hold is refused by name") {
+  const auto refusal = [](const std::string& call) {
+    try {
+      repost("G0 X0 Y0 Z20 A0 C0 S500 M3 F100\n" + call + "\nM30\n", false);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("(posted)");
+  };
+  CHECK_THAT(refusal("CYCLE84(20, 0, 2, -12, , 0.5, 3, 8, , 0, 400, 0)"),
+             Catch::Contains("repost.mpf:2:") && Catch::Contains("DTB=0.5"));
+  CHECK_THAT(refusal("CYCLE84(20, 0, 2, -12, , 0, 3, 8, , 0, 400, 800)"), Catch::Contains("SST1=800"));
+  CHECK_THAT(refusal("CYCLE84(20, 0, 2, -12, , 0, 3, 7, , 0, 400, 0)"), Catch::Contains("MPIT=7"));
+  CHECK_THAT(refusal("CYCLE84(20, 0, 2, -12, , 0, 3, 8, 1.5, 0, 400, 0)"), Catch::Contains("disagree"));
+  CHECK_THAT(refusal("CYCLE84(20, 0, 2, -12, , 0, 3, 8, , 0, 400, 0, 0, 0, 0, 1)"), Catch::Contains("_VARI=1"));
+  CHECK_THAT(refusal("CYCLE840(20, 0, 2, -12, , 0, 0, 3, 0, 0, -1.0)"),
+             Catch::Contains("left-hand thread") && Catch::Contains("program M4"));
+  CHECK_THAT(refusal("ROT Z30\nCYCLE84(20, 0, 2, -12, , 0, 3, 8, , 0, 400, 0)"), Catch::Contains("rotated"));
+}

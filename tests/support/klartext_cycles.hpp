@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The tool tip's path of the Heidenhain hole cycles 200, 203, 207, 208 and 241 for the tests'
+// The tool tip's path of the Heidenhain hole cycles 200, 201, 203, 207, 208, 240 and 241 for the tests'
 // Klartext interpreter (klartext_interpreter.hpp), written from the cycle runs of the TNC 640 /
 // iTNC 530 cycle programming manual as the tests read them, independently of the product:
 //   200 DRILLING: FMAX to Q200 above the surface Q203, to Q201 at Q206, FMAX out (pecks of Q202
@@ -16,7 +16,10 @@
 //       Q201; one more turn there; to the centre; FMAX to Q200, to Q204 when higher; climb (Q351
 //       +1) with M3 counter-clockwise;
 //   241 SINGLE-LIP DEEP HOLE: FMAX to Q200; at Q253 to Q200 above the deepened start Q379; at
-//       Q206 to Q201; out to Q200 at Q208; FMAX to Q204 when higher.
+//       Q206 to Q201; out to Q200 at Q208; FMAX to Q204 when higher;
+//   201 REAMING: FMAX to Q200; at Q206 to Q201; (dwell Q211); at Q208 back to Q200; FMAX to Q204;
+//   240 CENTERING (Q343=0, the depth Q201): FMAX to Q200; at Q206 to Q201; (dwell Q211); FMAX to
+//       Q200; FMAX to Q204.
 // Moves are relative to the hole's top (X Y of the call, Z = Q203), in the working plane X Y Z.
 #include <Eigen/Dense>
 
@@ -52,9 +55,9 @@ inline std::vector<CycleMove> cycle_moves(int n, const std::map<std::string, dou
   const auto line = [&](double x, double y, double z, bool cut) { out.push_back({{x, y, z}, cut, false, {}, 0.0}); };
   const double setup = Q(200), depth = Q(201), second = Q(204);
   line(0, 0, setup, false);
-  if (n == 200 || n == 207) {
+  if (n == 200 || n == 207 || n == 201 || n == 240) {
     line(0, 0, depth, true);
-    line(0, 0, setup, n == 207);
+    line(0, 0, setup, n == 207 || n == 201);
   } else if (n == 203) {
     const bool breaking = Qor(213, 0) > 0;
     double reached = 0, plunge = Q(202);

@@ -3,6 +3,9 @@
 // A small interpreter of Heidenhain Klartext for the tests, independent of the product's reader:
 // it runs only what the tests' programs use and reports where the tool tip is (in W) at the end of
 // each L block, by the TNC's rules as the tests read them from the TNC 640 manual:
+//   - CC X Y (the pole) and LP PR PA / IPR IPA (a line to polar coordinates about it);
+//   - RND R / CHF s between two L blocks in X Y (the rounding arc tangent to both, the chamfer s
+//     from the corner along each; the corner not reached);
 //   - L X Y Z A B C (+n, -n, +Qn, -Qn; IX IY IZ incremental), FMAX / F / R0 / M words (M128 / M129
 //     switch tool-tip programming on and off; others ignored, also in blocks of their own);
 //     TOOL CALL, BLK FORM and END PGM hold no position;
@@ -12,18 +15,24 @@
 //   - PLANE SPATIAL SPA SPB SPC STAY [SEQ+|SEQ-]: X Y Z are then the tip in the plane,
 //     W_R_plane = Rz(SPC) Ry(SPB) Rx(SPA), and Q120 .. Q122 are set from `angles` (the test's own
 //     computation of the control's angles); PLANE POINTS P1X.. P3Z.. STAY [SEQ±] (X along P1 -> P2,
-//     Y toward P3, the datum kept); PLANE RESET STAY;
+//     Y toward P3, the datum kept); PLANE PROJECTED PROPR PROMIN PROROT STAY [SEQ±] (the plane
+//     z = p x + q y whose trace in ZX falls by PROPR along +X, whose trace in YZ rises by PROMIN
+//     along +Y: p = -tan PROPR, q = tan PROMIN; X along its ZX trace (1, 0, p), then turned by
+//     ROT (PROROT) about the plane's normal); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
 //     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
-//   - CYCL DEF 200 / 203 / 207 / 208 / 241 with their Q parameters on the `~` lines (set as Q
+//   - CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with their Q parameters on the `~` lines (set as Q
 //     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (M89: on it and on every
 //     later L block until M99) (klartext_cycles.hpp:
 //     an end after each of the cycle's moves); M3 / M4 for the direction of 208.
 // `path()` is the tip's path: every block end and, along arcs, points every degree, each flagged
 // whether the move into it cuts (at a feed) or not (FMAX).
 // Anything else throws, so a test cannot pass by skipping a statement.
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -153,6 +162,15 @@ class KlartextInterpreter {
       while (!t.empty() && t.back() == ' ') t.pop_back();
       return statement(t, line);
     }
+    if (s.rfind("CC ", 0) == 0) return pole(s);
+    if (s.rfind("RND R", 0) == 0 || s.rfind("CHF ", 0) == 0) {  // the length: the first number after the statement
+      std::istringstream w(s.substr(s[0] == 'R' ? 5 : 4));
+      std::string length;
+      w >> length;
+      corner_ = Corner{s[0] == 'R', value_of(length), line};
+      return;
+    }
+    if (s.rfind("LP ", 0) == 0) return motion(polar_as_cartesian(s), line);
     if (s.rfind("L ", 0) == 0) return motion(s, line);
     throw std::runtime_error("the test interpreter does not read: " + s);
   }
@@ -177,6 +195,21 @@ class KlartextInterpreter {
       keep_tip([&] { plane_ = R; });
       return;
     }
+    static const std::regex projected(
+        R"(^PLANE PROJECTED PROPR([-+][\d.]+) PROMIN([-+][\d.]+) (?:PRO)?ROT([-+][\d.]+) STAY(?: SEQ([-+]))?$)");
+    std::smatch pr;
+    if (std::regex_match(s, pr, projected)) {
+      const double p = -std::tan(std::stod(pr[1]) * M_PI / 180.0), q = std::tan(std::stod(pr[2]) * M_PI / 180.0);
+      const V3 normal = V3(-p, -q, 1.0).normalized();
+      const V3 x0 = V3(1.0, 0.0, p).normalized();
+      const Eigen::AngleAxisd turn(std::stod(pr[3]) * M_PI / 180.0, normal);
+      M3 R;
+      R << turn * x0, turn * normal.cross(x0), normal;
+      const int seq = !pr[4].matched ? 0 : pr[4].str() == "+" ? 1 : -1;
+      for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+      keep_tip([&] { plane_ = R; });
+      return;
+    }
     static const std::regex spatial(
         R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
     std::smatch m;
@@ -188,6 +221,85 @@ class KlartextInterpreter {
     const int seq = !m[4].matched ? 0 : m[4].str() == "+" ? 1 : -1;
     for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
     keep_tip([&] { plane_ = R; });
+  }
+
+  /// CC X Y (IX IY from the current position; a coordinate left out: the current one).
+  void pole(const std::string& s) {
+    std::istringstream w(s.substr(3));
+    pole_ = Eigen::Vector2d(xyz_.x(), xyz_.y());
+    for (std::string word; w >> word;) {
+      const bool inc = word[0] == 'I';
+      const int i = (inc ? word[1] : word[0]) - 'X';
+      (*pole_)[i] = (inc ? xyz_[i] : 0.0) + value_of(word.substr(inc ? 2 : 1));
+    }
+  }
+
+  /// LP PR PA (IPR IPA: added to the current position's polar radius and angle about CC; left out:
+  /// the current ones) as the L block to the same point; its other words as written.
+  std::string polar_as_cartesian(const std::string& s) const {
+    const Eigen::Vector2d d = Eigen::Vector2d(xyz_.x(), xyz_.y()) - pole_.value();
+    double r = d.norm(), a_deg = std::atan2(d.y(), d.x()) * 180.0 / M_PI;
+    std::istringstream w(s.substr(3));
+    std::string rest;
+    for (std::string word; w >> word;) {
+      if (word.rfind("PR", 0) == 0)
+        r = value_of(word.substr(2));
+      else if (word.rfind("IPR", 0) == 0)
+        r += value_of(word.substr(3));
+      else if (word.rfind("PA", 0) == 0)
+        a_deg = value_of(word.substr(2));
+      else if (word.rfind("IPA", 0) == 0)
+        a_deg += value_of(word.substr(3));
+      else
+        rest += " " + word;
+    }
+    const Eigen::Vector2d end =
+        *pole_ + r * Eigen::Vector2d(std::cos(a_deg * M_PI / 180.0), std::sin(a_deg * M_PI / 180.0));
+    std::ostringstream l;
+    l.precision(17);
+    l << "L X" << (end.x() < 0 ? "-" : "+") << std::abs(end.x()) << " Y" << (end.y() < 0 ? "-" : "+")
+      << std::abs(end.y()) << rest;
+    return l.str();
+  }
+
+  /// The tip of the program point `p` in the current mode.
+  V3 tip_at(const V3& p) const {
+    if (plane_) return *plane_ * p;
+    if (rtcp_) return p;
+    return forward(m_, job_, p, rot_).tip_W;
+  }
+
+  /// RND / CHF between the line just run (from line_from_ to the corner xyz_) and the line to `to`:
+  /// the centre of the rounding lies on the corner's bisector, R / sin(half the corner's angle) from
+  /// the corner; the arc touches the lines where the perpendiculars from the centre meet them. A
+  /// chamfer cuts each line `length` from the corner. The last line's end moves there; the arc (points
+  /// every degree) or the chamfer follow, ending on the next line there (returned).
+  V3 round_or_chamfer(const V3& to) {
+    const Corner c = *corner_;
+    corner_.reset();
+    const V3 p1 = xyz_;
+    V3 a = line_from_ - p1, b = to - p1;
+    a.z() = b.z() = 0;
+    a.normalize(), b.normalize();
+    const double half = std::acos(std::clamp(a.dot(b), -1.0, 1.0)) / 2.0;
+    const double along = c.rounding ? c.length / std::tan(half) : c.length;
+    const V3 t1 = p1 + along * a, t2 = p1 + along * b;
+    ends_.back().tip_W = tip_at(t1);
+    path_.back().tip_W = tip_at(t1);
+    if (c.rounding) {
+      const V3 centre = p1 + (a + b).normalized() * (c.length / std::sin(half));
+      const double a0 = std::atan2(t1.y() - centre.y(), t1.x() - centre.x());
+      const double sweep = std::remainder(std::atan2(t2.y() - centre.y(), t2.x() - centre.x()) - a0, 2 * M_PI);
+      const int n = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) * 180 / M_PI)));
+      for (int i = 1; i < n; ++i) {
+        const double ang = a0 + sweep * i / n;
+        path_.push_back(
+            {tip_at(V3(centre.x() + c.length * std::cos(ang), centre.y() + c.length * std::sin(ang), p1.z())), true});
+      }
+    }
+    path_.push_back({tip_at(t2), true});
+    ends_.push_back({c.line, tip_at(t2), forward(m_, job_, V3::Zero(), rot_).axis_W});
+    return t2;
   }
 
   void set_rtcp(bool on) {
@@ -239,7 +351,8 @@ class KlartextInterpreter {
         rapid = true;
       }  // F, R0, M words: no position
     }
-    if (!linear && !rtcp_) {  // rotary axes alone: the machine's linear axes stay
+    line_from_ = corner_ ? round_or_chamfer(xyz) : xyz_;  // (after a corner the line starts where it joined)
+    if (!linear && !rtcp_) {                              // rotary axes alone: the machine's linear axes stay
       const V3 machine = plane_ ? machine_xyz(tip_W(), rot_) : xyz_;
       rot_ = rot;
       const V3 tip = forward(m_, job_, machine, rot_).tip_W;
@@ -295,6 +408,14 @@ class KlartextInterpreter {
   V3 xyz_ = V3::Zero();
   std::map<char, double> rot_;
   std::optional<M3> plane_;
+  std::optional<Eigen::Vector2d> pole_;  ///< CC
+  struct Corner {
+    bool rounding = true;
+    double length = 0.0;  ///< RND R, CHF side
+    int line = 0;
+  };
+  std::optional<Corner> corner_;  ///< RND / CHF read, for the next L
+  V3 line_from_ = V3::Zero();     ///< where the last L started
   bool rtcp_ = false;
   std::vector<KlartextEnd> ends_;
   std::vector<KlartextPathPoint> path_;

@@ -12,7 +12,7 @@
 //     Trans(X0) R Trans(X1), R axis by axis in _MODE's order (57: Rx(A) Ry(B) Rz(C); 27: Rz(A) Ry(B) Rx(C)); X Y Z
 //     after it are the tip in that frame, the tool axis its Z; CYCLE800() ends it;
 //   - TRANS X Y Z: a shift of the programmable frame;
-//   - CYCLE81 82 83 85 86 (sinumerik_mini_cycles.hpp) at the X Y where the tool stands after the
+//   - CYCLE81 82 83 84 840 85 86 (sinumerik_mini_cycles.hpp) at the X Y where the tool stands after the
 //     block, in the plane's frame; MCALL CYCLE8x(...) after every following motion block, MCALL
 //     alone ends it.
 // Other words are skipped (S F T M D ..., and text between quotes: T="name"). Lengths mm, angles deg.
@@ -144,7 +144,7 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
     }
     if (moved) out.push_back(end_at(line_no, V3(words['X'], words['Y'], words['Z'])));
     if (moved && !modal_cycle.empty()) run_cycle(line_no, modal_cycle);
-    for (const char* c : {"CYCLE81(", "CYCLE82(", "CYCLE83(", "CYCLE85(", "CYCLE86("})
+    for (const char* c : {"CYCLE81(", "CYCLE82(", "CYCLE83(", "CYCLE84(", "CYCLE840(", "CYCLE85(", "CYCLE86("})
       if (const std::size_t at = line.find(c); at != std::string::npos) run_cycle(line_no, line.substr(at));
   }
   return out;

@@ -5,6 +5,8 @@
 // motions end, in order, from the sequences in the SINUMERIK 840D sl cycles manual:
 //   CYCLE81/82(RTP,RFP,SDIS,DP,DPR[,DTB]): RFP+SDIS, the depth, RTP;
 //   CYCLE85(...,DTB,FFR,RFF) and CYCLE86(...,DTB,SDIR,0,0,0,POSS): RFP+SDIS, the depth, RFP+SDIS, RTP;
+//   CYCLE84 (rigid tapping) and CYCLE840 (compensating chuck): RFP+SDIS, the depth (tapping), RFP+SDIS
+//     (the thread followed out), RTP;
 //   CYCLE83(RTP,RFP,SDIS,DP,DPR,FDEP,FDPR,DAM,DTB,DTS,FRF,VARI,_AXN,_MDEP,_VRT,_DTD,_DIS1):
 //     infeeds measured from RFP: the first to FDEP (or RFP-FDPR), each later one DAM shorter than the
 //     one before but not shorter than DAM; while no more than twice DAM is left over, the last two
@@ -48,14 +50,15 @@ inline std::vector<double> cycle83_infeeds(double first, double total, double da
   return feeds;
 }
 
-/// Where along Z the cycle `name` (CYCLE81 ... CYCLE86) with arguments `a` ends its motions.
+/// Where along Z the cycle `name` (CYCLE81 ... CYCLE86, CYCLE840) with arguments `a` ends its motions.
 inline std::vector<double> sinumerik_cycle_heights(const std::string& name,
                                                    const std::vector<std::optional<double>>& a) {
   const auto arg = [&](std::size_t i) { return i < a.size() && a[i] ? *a[i] : 0.0; };
   const double rtp = arg(0), rfp = arg(1), safe = rfp + std::abs(arg(2));
   const double bottom = arg(4) != 0 ? rfp - std::abs(arg(4)) : arg(3);
   if (name == "CYCLE81" || name == "CYCLE82") return {safe, bottom, rtp};
-  if (name == "CYCLE85" || name == "CYCLE86") return {safe, bottom, safe, rtp};
+  if (name == "CYCLE85" || name == "CYCLE86" || name == "CYCLE84" || name == "CYCLE840")
+    return {safe, bottom, safe, rtp};
   const double total = rfp - bottom;
   const double first = arg(6) != 0 ? std::abs(arg(6)) : a.size() > 5 && a[5] ? rfp - *a[5] : total;
   const std::vector<double> feeds = cycle83_infeeds(first, total, arg(7));

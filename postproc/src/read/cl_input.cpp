@@ -14,6 +14,58 @@
 #include "ncpost/postproc/read/sinumerik/sinumerik_reader.hpp"
 
 namespace ncpost {
+namespace {
+
+/// The first 4 KiB of `in`, the stream put back where it was.
+std::string read_head(std::istream& in) {
+  const std::istream::pos_type start = in.tellg();
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  in.clear();
+  in.seekg(start);
+  return head;
+}
+
+/// --input-kind machine|rtcp on a Klartext or Sinumerik program: refused, naming the language.
+void refuse_other_language(std::istream& in, const std::string& name, InputKind kind) {
+  const bool seekable = in.tellg() != std::istream::pos_type(-1);
+  if ((kind != InputKind::machine && kind != InputKind::rtcp) || !seekable) return;
+  const char* asked = kind == InputKind::machine ? "machine" : "rtcp";
+  if (klartext::looks_like_klartext(read_head(in)))
+    throw InputError({name, 1, 0}, fmt::format("a Heidenhain Klartext program (BEGIN PGM), read as G-code as "
+                                               "--input-kind {} asks: use --input-kind klartext (or auto)",
+                                               asked));
+  if (sinumerik::looks_like_sinumerik(read_head(in)))
+    throw InputError({name, 1, 0}, fmt::format("a Sinumerik program (DEF, CYCLE800, %_N_ ...), read as plain G-code as "
+                                               "--input-kind {} asks: use --input-kind sinumerik (or auto)",
+                                               asked));
+}
+
+/// The G-code reader's options from the post's.
+gcode::GcodeReaderOptions gcode_options(
+    const cl::ReaderOptions& options, InputKind kind,
+    const std::function<std::optional<ToolPoseT<double>>(const AxisPosition&, std::string*)>& word_forward) {
+  gcode::GcodeReaderOptions go;
+  go.default_inch = options.default_inch;
+  go.units_given = options.units_given;
+  go.integer_dwell = options.integer_dwell;
+  go.arc_centre = options.arc_centre;
+  go.work_offsets = options.work_offsets;
+  go.control = options.control;
+  go.tool_offset_writes = options.tool_offset_writes;
+  go.subprogram_dir = options.subprogram_dir;
+  go.power_on = options.power_on;
+  go.power_on_source = options.power_on_source;
+  go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
+  go.word_forward = word_forward;
+  go.kind = kind == InputKind::machine ? gcode::InputKind::machine
+            : kind == InputKind::rtcp  ? gcode::InputKind::rtcp
+                                       : gcode::InputKind::automatic;
+  return go;
+}
+
+}  // namespace
 
 InputKind input_kind_named(const std::string& name) {
   if (name == "auto") return InputKind::automatic;
@@ -40,27 +92,9 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   bool apt = kind == InputKind::cl;
   bool klartext = kind == InputKind::klartext;
   bool sinumerik = kind == InputKind::sinumerik;
-  const auto read_head = [&in] {
-    const std::istream::pos_type start = in.tellg();
-    std::string head(4096, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    in.clear();
-    in.seekg(start);
-    return head;
-  };
-  const bool seekable = in.tellg() != std::istream::pos_type(-1);
-  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable && klartext::looks_like_klartext(read_head()))
-    throw InputError({name, 1, 0}, fmt::format("a Heidenhain Klartext program (BEGIN PGM), read as G-code as "
-                                               "--input-kind {} asks: use --input-kind klartext (or auto)",
-                                               kind == InputKind::machine ? "machine" : "rtcp"));
-  if ((kind == InputKind::machine || kind == InputKind::rtcp) && seekable &&
-      sinumerik::looks_like_sinumerik(read_head()))
-    throw InputError({name, 1, 0}, fmt::format("a Sinumerik program (DEF, CYCLE800, %_N_ ...), read as plain G-code as "
-                                               "--input-kind {} asks: use --input-kind sinumerik (or auto)",
-                                               kind == InputKind::machine ? "machine" : "rtcp"));
+  refuse_other_language(in, name, kind);
   if (kind == InputKind::automatic) {
-    const std::string head = read_head();
+    const std::string head = read_head(in);
     std::string_view body(head);
     if (body.rfind("\xEF\xBB\xBF", 0) == 0) body.remove_prefix(3);
     if (body.find_first_not_of(" \t\r\n") == std::string_view::npos)
@@ -86,22 +120,7 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     throw InputError({name, 0, 0}, fmt::format("a Sinumerik program on the machine {}, whose words {} are no Cartesian "
                                                "frame: not supported (post the CL data)",
                                                machine.name, axis_letters(machine)));
-  gcode::GcodeReaderOptions go;
-  go.default_inch = options.default_inch;
-  go.units_given = options.units_given;
-  go.integer_dwell = options.integer_dwell;
-  go.arc_centre = options.arc_centre;
-  go.work_offsets = options.work_offsets;
-  go.control = options.control;
-  go.tool_offset_writes = options.tool_offset_writes;
-  go.subprogram_dir = options.subprogram_dir;
-  go.power_on = options.power_on;
-  go.power_on_source = options.power_on_source;
-  go.circles = !word_forward;  // planar arcs reach the post (and preview) as CIRCLE records do from CL files
-  go.word_forward = word_forward;
-  go.kind = kind == InputKind::machine ? gcode::InputKind::machine
-            : kind == InputKind::rtcp  ? gcode::InputKind::rtcp
-                                       : gcode::InputKind::automatic;
+  const gcode::GcodeReaderOptions go = gcode_options(options, kind, word_forward);
   if (sinumerik) {
     sinumerik::ReaderOptions so;
     so.gcode = go;

@@ -91,6 +91,38 @@ struct CycleParams {
   std::optional<double> fedto, depth, rapto, clear, feed, first_peck, sub_peck, step, tpi, pitch;
 };
 
+/// The parameters that are lengths in the program's unit, and where they go.
+struct LengthParam {
+  Param param;
+  std::optional<double> CycleParams::*field;
+};
+constexpr LengthParam kLengthParams[] = {
+    {Param::fedto, &CycleParams::fedto},       {Param::depth, &CycleParams::depth},
+    {Param::rapto, &CycleParams::rapto},       {Param::clear, &CycleParams::clear},
+    {Param::step, &CycleParams::step},         {Param::first_peck, &CycleParams::first_peck},
+    {Param::sub_peck, &CycleParams::sub_peck}, {Param::pitch, &CycleParams::pitch},
+};
+
+/// One parameter's value `v` (as written, `u` the length unit in mm) into `p`, or into `c` (RTRCTO,
+/// DWELL, the feed mode).
+void set_param(Param param, double v, double u, CycleParams& p, Cycle& c) {
+  for (const LengthParam& l : kLengthParams)
+    if (l.param == param) {
+      p.*l.field = v * u;
+      return;
+    }
+  if (param == Param::rtrcto) {
+    c.retract_mm = v * u;
+  } else if (param == Param::dwell) {
+    c.dwell_s = v;
+  } else if (param == Param::tpi) {
+    p.tpi = v;
+  } else {  // MMPM, IPM, MMPR, IPR
+    p.feed = param == Param::mmpm || param == Param::mmpr ? v : v * kMmPerInch;
+    c.feed_per_rev = param == Param::mmpr || param == Param::ipr;
+  }
+}
+
 /// The parameters from args[i] on (word and value, or classic APT positional depth and clearance);
 /// RTRCTO, DWELL and the feed mode go straight into `c`.
 CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::size_t i, double u, const Fail& fail,
@@ -126,54 +158,7 @@ CycleParams read_params(const std::vector<AptStatement::Argument>& args, std::si
     }
     if (i + 1 >= args.size() || !args[i + 1].is_number)
       fail(a.column, fmt::format("CYCLE word {} expects a number", a.word));
-    const double v = args[i + 1].number;
-    switch (e->param) {
-      case Param::fedto:
-        p.fedto = v * u;
-        break;
-      case Param::depth:
-        p.depth = v * u;
-        break;
-      case Param::rapto:
-        p.rapto = v * u;
-        break;
-      case Param::clear:
-        p.clear = v * u;
-        break;
-      case Param::rtrcto:
-        c.retract_mm = v * u;
-        break;
-      case Param::step:
-        p.step = v * u;
-        break;
-      case Param::first_peck:
-        p.first_peck = v * u;
-        break;
-      case Param::sub_peck:
-        p.sub_peck = v * u;
-        break;
-      case Param::mmpm:
-        p.feed = v, c.feed_per_rev = false;
-        break;
-      case Param::ipm:
-        p.feed = v * kMmPerInch, c.feed_per_rev = false;
-        break;
-      case Param::mmpr:
-        p.feed = v, c.feed_per_rev = true;
-        break;
-      case Param::ipr:
-        p.feed = v * kMmPerInch, c.feed_per_rev = true;
-        break;
-      case Param::dwell:
-        c.dwell_s = v;
-        break;
-      case Param::tpi:
-        p.tpi = v;
-        break;
-      case Param::pitch:
-        p.pitch = v * u;
-        break;
-    }
+    set_param(e->param, args[i + 1].number, u, p, c);
     i += 2;
   }
   return p;

@@ -510,6 +510,28 @@ struct AptReader::State {
     return degree;
   }
 
+  /// The GOTO after a curve, when it stands at the curve's end `end`: the curve's last motion, whose
+  /// axis (if given) ends the curve.
+  struct CurveEnd {
+    bool consumed = false;
+    Location where;
+    std::optional<Vec3d> axis;
+  };
+  CurveEnd curve_end(const AptStatement* next, const Vec3d& end, Location curve_where, double tol) {
+    CurveEnd e;
+    e.where = curve_where;
+    if (!next || next->major != "GOTO") return e;
+    const std::vector<double>& v = numbers_into(*next, numbers);
+    if ((v.size() == 3 || v.size() == 6) && v.size() == next->arguments.size() &&
+        (to_w(scale * Vec3d(v[0], v[1], v[2])) - end).norm() <= tol) {
+      e.consumed = true;
+      e.where = next->where;
+      if (v.size() == 6 && Vec3d(v[3], v[4], v[5]).norm() > 1e-9)
+        e.axis = dir_to_w(Vec3d(v[3], v[4], v[5]).normalized());
+    }
+    return e;
+  }
+
   /// Ends the NURBS curve being collected: its chords become motions. `next` is the statement
   /// after the curve: a GOTO at the curve's end is the curve's last motion (its axis ends it).
   /// Returns true if `next` was consumed so.
@@ -532,21 +554,10 @@ struct AptReader::State {
                       "to start where the previous motion ended",
                       (start - position).norm(), position.x(), position.y(), position.z()),
           "");
-    const Vec3d end = c.point_at(c.u_end());
-    // the GOTO after the curve, when it is the curve's end, gives the end tool axis
-    std::optional<Vec3d> end_axis;
-    bool consumed = false;
-    Location end_where = b.where;
-    if (next && next->major == "GOTO") {
-      const std::vector<double>& v = numbers_into(*next, numbers);
-      if ((v.size() == 3 || v.size() == 6) && v.size() == next->arguments.size() &&
-          (to_w(scale * Vec3d(v[0], v[1], v[2])) - end).norm() <= tol) {
-        consumed = true;
-        end_where = next->where;
-        if (v.size() == 6 && Vec3d(v[3], v[4], v[5]).norm() > 1e-9)
-          end_axis = dir_to_w(Vec3d(v[3], v[4], v[5]).normalized());
-      }
-    }
+    const CurveEnd ending = curve_end(next, c.point_at(c.u_end()), b.where, tol);
+    const std::optional<Vec3d>& end_axis = ending.axis;
+    const bool consumed = ending.consumed;
+    const Location end_where = ending.where;
     const Vec3d axis0 = axis;
     const Vec3d axis1 = end_axis.value_or(axis0);
     const std::vector<double> us = linearize(c, options.curve_tolerance_mm);

@@ -56,6 +56,46 @@ bool carries_free_text(const std::string& major) {
          major == "TOOL PATH" || major.rfind("PARTNO", 0) == 0;
 }
 
+/// The major word in upper case, runs of blanks inside folded ("TOOL  PATH" -> "TOOL PATH").
+std::string folded_major(const std::string& major) {
+  std::string folded;
+  for (char c : upper(trim(major))) {
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      if (!folded.empty() && folded.back() != ' ') folded += ' ';
+    } else {
+      folded += c;
+    }
+  }
+  return folded;
+}
+
+/// One trimmed field `t` (not empty) as a number or a word; InputError at `a.column` otherwise.
+void read_field(std::string_view t, const std::string& text, const std::string& file, int line,
+                AptStatement::Argument& a) {
+  double value = 0.0;
+  const char* nb = t.data();
+  const char* ne = t.data() + t.size();
+  const bool starts_numeric =
+      std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
+  if (starts_numeric && x3::parse(nb, ne, x3::double_, value) && nb == ne) {
+    if (!std::isfinite(value))
+      throw InputError({file, line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
+                       echo_for(text, a.column));
+    a.is_number = true;
+    a.number = value;
+  } else if (is_digit_first_word(t)) {
+    a.word = upper(std::string(t));
+  } else if (starts_numeric) {
+    throw InputError({file, line, a.column}, fmt::format("malformed number '{}'", echo_of(t, 40)),
+                     echo_for(text, a.column));
+  } else {
+    a.word = upper(std::string(t));
+    if (a.word == "NAN" || a.word == "INF" || a.word == "INFINITY" || a.word == "-NAN")
+      throw InputError({file, line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
+                       echo_for(text, a.column));
+  }
+}
+
 }  // namespace
 
 AptStatement parse_apt_statement(const std::string& text, const std::string& file, Location where) {
@@ -67,17 +107,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
   if (!x3::parse(first, last, major_word, major))
     throw InputError({file, where.line, where.column}, "expected a major word before '/'",
                      echo_for(text, where.column));
-  st.major = upper(trim(major));
-  // Fold runs of blanks inside the major word ("TOOL  PATH" -> "TOOL PATH").
-  std::string folded;
-  for (char c : st.major) {
-    if (std::isspace(static_cast<unsigned char>(c))) {
-      if (!folded.empty() && folded.back() != ' ') folded += ' ';
-    } else {
-      folded += c;
-    }
-  }
-  st.major = folded;
+  st.major = folded_major(major);
   if (first == last) return st;
   st.has_slash = true;
   ++first;  // '/'
@@ -106,29 +136,7 @@ AptStatement parse_apt_statement(const std::string& text, const std::string& fil
       throw InputError({file, where.line, a.column}, "empty argument (expected a number or a word)",
                        echo_for(text, a.column));
     }
-    const std::string_view t = f.substr(lead, f.find_last_not_of(" \t\r\n") - lead + 1);
-    double value = 0.0;
-    const char* nb = t.data();
-    const char* ne = t.data() + t.size();
-    const bool starts_numeric =
-        std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' || t[0] == '-' || t[0] == '+';
-    if (starts_numeric && x3::parse(nb, ne, x3::double_, value) && nb == ne) {
-      if (!std::isfinite(value))
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
-                         echo_for(text, a.column));
-      a.is_number = true;
-      a.number = value;
-    } else if (is_digit_first_word(t)) {
-      a.word = upper(std::string(t));
-    } else if (starts_numeric) {
-      throw InputError({file, where.line, a.column}, fmt::format("malformed number '{}'", echo_of(t, 40)),
-                       echo_for(text, a.column));
-    } else {
-      a.word = upper(std::string(t));
-      if (a.word == "NAN" || a.word == "INF" || a.word == "INFINITY" || a.word == "-NAN")
-        throw InputError({file, where.line, a.column}, fmt::format("'{}' is not a finite number", echo_of(t, 40)),
-                         echo_for(text, a.column));
-    }
+    read_field(f.substr(lead, f.find_last_not_of(" \t\r\n") - lead + 1), text, file, where.line, a);
     st.arguments.push_back(std::move(a));
     if (last_field) break;
     start = comma + 1;

@@ -867,6 +867,55 @@ struct GcodeClReader::State {
     return std::nullopt;
   }
 
+  /// What G28 / G30 / G53 do with the machine axes: the point, the machine's linear axes placed, and
+  /// the notice's parts (the axes placed, the axes whose reference is not known).
+  struct Placement {
+    ProgramPoint p;
+    std::array<std::optional<double>, 3> machine_mm{};
+    bool moves = false;
+    std::string placed, unknown;
+  };
+
+  /// Axis `i` of a G28 / G30 / G53 block placed at its reference (plus the G53 value), or noted as unknown.
+  void place_axis(const MachineMove& mm, std::size_t i, cl::Location where, std::string_view line, Placement& to) {
+    const bool given = mm.kind == MachineMove::Kind::machine;
+    const bool second = mm.code == "G30";
+    const char L = "XYZABC"[i];
+    const int ai = machine.index_of(L);
+    if (ai < 0) return;  // G28 alone names X Y Z; the interpreter refuses letters the machine lacks
+    const Axis& axis = machine.axes[static_cast<std::size_t>(ai)];
+    const std::optional<double> ref = reference_point(axis, second);
+    const double offset = given ? mm.machine_value[i] : 0.0;
+    if (second && !ref)
+      throw InputError({file, where.line, mm.column},
+                       fmt::format("G30 {}: the second reference point of {} is not in the machine file {}: give "
+                                   "it as [axes.{}] reference2 = ... ({})",
+                                   L, L, machine.name, L, axis.is_rotary() ? "deg" : "mm"),
+                       std::string(line));
+    const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
+    if (ref || (given && axis.is_rotary())) {
+      const double target = ref.value_or(0.0) + offset;
+      if (i < 3)
+        to.machine_mm[i] = target;
+      else
+        to.p[i] = target;
+      to.moves = true;
+      const char* unit = axis.is_rotary() ? "deg" : "mm";
+      const std::string from = !ref            ? std::string("its machine angle")
+                               : offset != 0.0 ? fmt::format("{:.3f} {} from", offset * scale, unit)
+                                               : std::string("at");
+      const std::string point = L == 'Z' && !axis.reference && !second ? "the top of its travel (machine file)"
+                                : second                               ? "its second reference point (machine file)"
+                                                                       : "its reference point (machine file)";
+      to.placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", to.placed.empty() ? "" : "; ", L, target * scale, unit,
+                               from, ref ? " " + point : std::string());
+    } else {
+      at_reference[i] = true;
+      reference_line = where.line;
+      to.unknown += to.unknown.empty() ? std::string(1, L) : fmt::format(", {}", L);
+    }
+  }
+
   /// G28/G30 (the intermediate point, then the named axes to their reference point) or G53 (the
   /// motion to machine coordinates, counted from the reference point): the machine file's
   /// `reference`/`reference2` place them (Z's reference is the top of its travel when not given).
@@ -897,49 +946,12 @@ struct GcodeClReader::State {
       return;
     }
     if (mm.kind == MachineMove::Kind::reference && fx.has_motion) queue_linear(fx, where, known_prior);
-    ProgramPoint p = interpreter.state().position;
-    std::array<std::optional<double>, 3> machine_mm{};
+    Placement to{interpreter.state().position};
+    for (std::size_t i = 0; i < 6; ++i)
+      if (mm.axes[i]) place_axis(mm, i, where, line, to);
     const bool given = mm.kind == MachineMove::Kind::machine;
-    const bool second = mm.code == "G30";
-    bool moves = false;
-    std::string placed, unknown;
-    for (std::size_t i = 0; i < 6; ++i) {
-      if (!mm.axes[i]) continue;
-      const char L = "XYZABC"[i];
-      const int ai = machine.index_of(L);
-      if (ai < 0) continue;  // G28 alone names X Y Z; the interpreter refuses letters the machine lacks
-      const Axis& axis = machine.axes[static_cast<std::size_t>(ai)];
-      const std::optional<double> ref = reference_point(axis, second);
-      const double offset = given ? mm.machine_value[i] : 0.0;
-      if (second && !ref)
-        throw InputError({file, where.line, mm.column},
-                         fmt::format("G30 {}: the second reference point of {} is not in the machine file {}: give "
-                                     "it as [axes.{}] reference2 = ... ({})",
-                                     L, L, machine.name, L, axis.is_rotary() ? "deg" : "mm"),
-                         std::string(line));
-      const double scale = axis.is_rotary() ? 180.0 / kPi : 1.0;
-      if (ref || (given && axis.is_rotary())) {
-        const double target = ref.value_or(0.0) + offset;
-        if (i < 3)
-          machine_mm[i] = target;
-        else
-          p[i] = target;
-        moves = true;
-        const char* unit = axis.is_rotary() ? "deg" : "mm";
-        const std::string from = !ref            ? std::string("its machine angle")
-                                 : offset != 0.0 ? fmt::format("{:.3f} {} from", offset * scale, unit)
-                                                 : std::string("at");
-        const std::string point = L == 'Z' && !axis.reference && !second ? "the top of its travel (machine file)"
-                                  : second                               ? "its second reference point (machine file)"
-                                                                         : "its reference point (machine file)";
-        placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", placed.empty() ? "" : "; ", L, target * scale, unit, from,
-                              ref ? " " + point : std::string());
-      } else {
-        at_reference[i] = true;
-        reference_line = where.line;
-        unknown += unknown.empty() ? std::string(1, L) : fmt::format(", {}", L);
-      }
-    }
+    const std::string& placed = to.placed;
+    const std::string& unknown = to.unknown;
     notices.push_back(fmt::format(
         "{}:{}:{}: {}: {}{}", file, where.line, mm.column, mm.code,
         placed.empty() ? std::string("Z does not move") : placed + ", as a rapid",
@@ -947,8 +959,8 @@ struct GcodeClReader::State {
                         : fmt::format("; {} go(es) to (or count(s) from) a reference point the machine file does not "
                                       "give ([axes.{}] reference): the next motion must program it",
                                       unknown, unknown.front())));
-    if (!moves) return;
-    p = with_machine_linear(p, machine_mm);
+    if (!to.moves) return;
+    const ProgramPoint p = with_machine_linear(to.p, to.machine_mm);
     cl::Motion m = motion_at(p, where);
     m.rapid = !given || fx.motion == MotionMode::rapid;
     if (!m.rapid) {

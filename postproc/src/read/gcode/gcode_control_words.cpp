@@ -12,11 +12,56 @@ bool is_switch(std::optional<double> v, double on) { return v && (*v == on || *v
 
 std::string number(double v) { return fmt::format("{}", v); }
 
+/// A mode word that changes nothing the reader reads where it stands alone (dropped, with `dropped`
+/// as the notice, "" none) and is refused beside axis or arc words.
+struct ModeWord {
+  int code10;
+  const char* dropped;
+  const char* with_geometry;
+};
+
+constexpr const char* kCancelWithAxes = "a cancel word (G15, G50.1, G69) with axis words is not supported";
+
+// the cancel words of modes the reader refuses when they are switched on (scaling G51, rotation
+// G68, polar coordinates G16, mirror image G51.1): in a safe-start line they change nothing
+constexpr ModeWord kModeWords[] = {
+    {500, "", "G50 with axis words (a lathe's coordinate setting) is not supported"},
+    {690, "", kCancelWithAxes},
+    {150, "", kCancelWithAxes},
+    {501, "", kCancelWithAxes},
+    // G97: spindle speed in rpm (constant surface speed G96 off), what S always is here
+    {970, "", "G97 with axis words is not supported"},
+    // Haas G187 P1..3 E<corner rounding>: the smoothness of the control's path
+    {1870,
+     "G187 (Haas smoothness and corner rounding) is a control mode word, not a motion: dropped (the posted program "
+     "runs with its control's own setting)",
+     "G187 with axis words is not supported"},
+    // Haas G103 P<n>: limit block look-ahead
+    {1030, "G103 (Haas block look-ahead limit) is a control mode word, not a motion: dropped",
+     "G103 with axis words is not supported"},
+};
+
+/// G10 L..: the offsets the reader takes (work and tool offsets) pass; any other kind is refused.
+ControlWord g10(std::optional<double> l) {
+  // an L beyond any G10 form is no kind (and must not overflow the int cast)
+  const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
+  if (kind == 2 || kind == 20) return {ControlWordAction::none, {}};  // work offsets (gcode_modal.cpp)
+  if (kind == 1 || (kind >= 10 && kind <= 13))
+    return {ControlWordAction::none, {}};  // tool offsets, as the dialect reads them (gcode_tool_offsets.hpp)
+  return {ControlWordAction::refuse,
+          "G10 (writing offsets or parameters from within the program) is not supported: remove it and give the "
+          "part's position with --workpiece-origin"};
+}
+
 }  // namespace
 
 ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, std::optional<double> p,
                                   std::optional<double> q, std::optional<double> l) {
   const bool geometry = axis_words || arc_words;
+  for (const ModeWord& m : kModeWords)
+    if (m.code10 == code10)
+      return geometry ? ControlWord{ControlWordAction::refuse, m.with_geometry}
+                      : ControlWord{ControlWordAction::drop, m.dropped};
   switch (code10) {
     case 51:  // Fanuc G05.1 Q1/Q0; LinuxCNC G5.1 is a quadratic B-spline (I J with X Y)
       if (!geometry && is_switch(q, 1.0))
@@ -57,43 +102,11 @@ ControlWord classify_control_word(int code10, bool axis_words, bool arc_words, s
       return {ControlWordAction::units_inch, {}};
     case 7100:
       return {ControlWordAction::units_mm, {}};
-    case 100: {
-      // an L beyond any G10 form is no kind (and must not overflow the int cast)
-      const int kind = l && std::abs(*l) < 1000.0 ? static_cast<int>(*l) : -1;
-      if (kind == 2 || kind == 20) return {ControlWordAction::none, {}};  // work offsets (gcode_modal.cpp)
-      if (kind == 1 || (kind >= 10 && kind <= 13))
-        return {ControlWordAction::none, {}};  // tool offsets, as the dialect reads them (gcode_tool_offsets.hpp)
-      return {ControlWordAction::refuse,
-              "G10 (writing offsets or parameters from within the program) is not supported: remove it and give the "
-              "part's position with --workpiece-origin"};
-    }
-    // the cancel words of modes the reader refuses when they are switched on (scaling G51, rotation
-    // G68, polar coordinates G16, mirror image G51.1): in a safe-start line they change nothing
-    case 500:
-    case 690:
-    case 150:
-    case 501:
-      if (!geometry) return {ControlWordAction::drop, {}};
-      return {ControlWordAction::refuse, code10 == 500
-                                             ? "G50 with axis words (a lathe's coordinate setting) is not supported"
-                                             : "a cancel word (G15, G50.1, G69) with axis words is not supported"};
-    case 970:  // G97: spindle speed in rpm (constant surface speed G96 off), what S always is here
-      if (!geometry) return {ControlWordAction::drop, {}};
-      return {ControlWordAction::refuse, "G97 with axis words is not supported"};
+    case 100:
+      return g10(l);
     case 960:  // G96: constant surface speed (S in m/min or ft/min)
       return {ControlWordAction::refuse,
               "G96 (constant surface speed: S in m/min or ft/min) is not supported: program the speed in rpm (G97)"};
-    case 1870:  // Haas G187 P1..3 E<corner rounding>: the smoothness of the control's path
-      if (!geometry)
-        return {ControlWordAction::drop,
-                "G187 (Haas smoothness and corner rounding) is a control mode word, not a motion: dropped (the posted "
-                "program runs with its control's own setting)"};
-      return {ControlWordAction::refuse, "G187 with axis words is not supported"};
-    case 1030:  // Haas G103 P<n>: limit block look-ahead
-      if (!geometry)
-        return {ControlWordAction::drop,
-                "G103 (Haas block look-ahead limit) is a control mode word, not a motion: dropped"};
-      return {ControlWordAction::refuse, "G103 with axis words is not supported"};
     default:
       return {ControlWordAction::none, {}};
   }

@@ -206,35 +206,35 @@ ParamValue Evaluator::binary(std::string_view s, std::size_t& at, int level) con
   }
 }
 
+/// EXISTS[#<name>] (LinuxCNC): 1 when the parameter is set, else 0.
+ParamValue Evaluator::exists(std::string_view s, std::size_t& at, std::size_t start) const {
+  skip_blanks(s, at);
+  if (at >= s.size() || s[at] != '[') throw ExpressionError(at, "expected '[' after EXISTS");
+  ++at;
+  skip_blanks(s, at);
+  if (at >= s.size() || s[at] != '#') throw ExpressionError(at, "EXISTS takes a named parameter: EXISTS[#<name>]");
+  const ParamRef ref = reference(s, at);
+  skip_blanks(s, at);
+  if (at >= s.size() || s[at] != ']') throw ExpressionError(at, "expected ']' closing EXISTS");
+  ++at;
+  if (ref.name.empty()) return read(ref, start).has_value() ? 1.0 : 0.0;
+  return params_.exists(ref.name) ? 1.0 : 0.0;
+}
+
 ParamValue Evaluator::function(std::string_view s, std::size_t& at, const std::string& name, std::size_t start) const {
   const auto bracketed = [&]() -> ParamValue {
     skip_blanks(s, at);
     if (at >= s.size() || s[at] != '[') throw ExpressionError(at, fmt::format("expected '[' after {}", name));
     return value(s, at);
   };
-  if (name == "EXISTS") {
-    skip_blanks(s, at);
-    if (at >= s.size() || s[at] != '[') throw ExpressionError(at, "expected '[' after EXISTS");
-    ++at;
-    skip_blanks(s, at);
-    if (at >= s.size() || s[at] != '#') throw ExpressionError(at, "EXISTS takes a named parameter: EXISTS[#<name>]");
-    const ParamRef ref = reference(s, at);
-    skip_blanks(s, at);
-    if (at >= s.size() || s[at] != ']') throw ExpressionError(at, "expected ']' closing EXISTS");
-    ++at;
-    if (ref.name.empty()) return read(ref, start).has_value() ? 1.0 : 0.0;
-    return params_.exists(ref.name) ? 1.0 : 0.0;
-  }
+  if (name == "EXISTS") return exists(s, at, start);
   if (name == "ATAN") {
     const double y = need(bracketed(), start, "ATAN");
     std::size_t look = at;
     skip_blanks(s, look);
-    if (look < s.size() && s[look] == '/') {
-      at = look + 1;
-      const double x = need(bracketed(), start, "ATAN");
-      return std::atan2(y, x) / kRadPerDeg;
-    }
-    return std::atan(y) / kRadPerDeg;
+    if (look >= s.size() || s[look] != '/') return std::atan(y) / kRadPerDeg;
+    at = look + 1;
+    return std::atan2(y, need(bracketed(), start, "ATAN")) / kRadPerDeg;
   }
   using Fn = double (*)(double);
   struct Known {

@@ -62,75 +62,97 @@ bool has_motion_words(const Block& block, std::string_view axis_letters) {
   return false;
 }
 
-Leader find_leader(std::string_view head, bool complete, const std::string& file, std::string_view axis_letters) {
-  HeadLines lines(head, complete);
-  std::string_view line;
-  Block block;
+namespace {
+
+/// What the lines before the first '%' hold.
+struct BeforePercent {
   int content_lines = 0, motion_line = 0, percent_line = 0;
   bool not_gcode = false, ended = false;
-  int listing_line = 0, listing_column = 0;  // NX's "Information listing" header
+  int listing_line = 0, listing_column = 0;  ///< NX's "Information listing" header
   std::string listing_text;
+};
+
+BeforePercent scan_to_percent(HeadLines& lines, const std::string& file, std::string_view axis_letters) {
+  BeforePercent h;
+  std::string_view line;
+  Block block;
   while (lines.next(line)) {
     if (is_percent_line(line)) {
-      percent_line = lines.number();
+      h.percent_line = lines.number();
       break;
     }
     const auto first = line.find_first_not_of(" \t");
     if (first == std::string_view::npos) continue;
-    if (content_lines++ == 0 && line.substr(first, kListing.size()) == kListing) {
-      listing_line = lines.number();
-      listing_column = static_cast<int>(first) + 1;
-      listing_text = std::string(line);
+    if (h.content_lines++ == 0 && line.substr(first, kListing.size()) == kListing) {
+      h.listing_line = lines.number();
+      h.listing_column = static_cast<int>(first) + 1;
+      h.listing_text = std::string(line);
     }
     try {
       parse_block(line, block, file, lines.number());
-      if (!motion_line && has_motion_words(block, axis_letters)) motion_line = lines.number();
-      ended = ended || ends_program(block);
+      if (!h.motion_line && has_motion_words(block, axis_letters)) h.motion_line = lines.number();
+      h.ended = h.ended || ends_program(block);
     } catch (const InputError&) {
       // a macro statement may move (X#1), an o-word statement calls or loops over blocks that may:
       // counted as a motion, never skipped as a leader
       if (may_hold_macro(line) || read_o_word(line))
-        motion_line = motion_line ? motion_line : lines.number();
+        h.motion_line = h.motion_line ? h.motion_line : lines.number();
       else
-        not_gcode = true;
+        h.not_gcode = true;
     }
   }
-  if (listing_line && !percent_line)
-    throw InputError({file, listing_line, listing_column},
+  return h;
+}
+
+/// The first line with a motion after the '%' before the next '%' (0: none, or text that is no G-code).
+int motion_after_percent(HeadLines& lines, const std::string& file, std::string_view axis_letters) {
+  std::string_view line;
+  Block block;
+  while (lines.next(line)) {
+    if (is_percent_line(line)) return 0;
+    try {
+      parse_block(line, block, file, lines.number());
+      if (has_motion_words(block, axis_letters)) return lines.number();
+    } catch (const InputError&) {
+      if (!may_hold_macro(line) && !read_o_word(line))
+        return 0;  // not G-code after the '%': text after the closing '%'
+      return lines.number();
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+Leader find_leader(std::string_view head, bool complete, const std::string& file, std::string_view axis_letters) {
+  HeadLines lines(head, complete);
+  const BeforePercent h = scan_to_percent(lines, file, axis_letters);
+  if (h.listing_line && !h.percent_line)
+    throw InputError({file, h.listing_line, h.listing_column},
                      "an NX 'Information listing' (the listing window of NX saved into a file) with no program "
                      "framed by '%' after it: what it holds is NX's listing, not a program as NX's post wrote it; "
                      "post the program file NX's post processor wrote, or the CL data",
-                     listing_text);
-  if (listing_line)
-    return {percent_line - 1,
+                     h.listing_text);
+  if (h.listing_line)
+    return {h.percent_line - 1,
             fmt::format("{}:{}: an NX 'Information listing' header ({} line(s) before the opening '%' at line {}) is "
                         "skipped: the program NX's post wrote follows it",
-                        file, listing_line, percent_line - 1, percent_line)};
-  if (!percent_line || content_lines == 0) return {};
-  if (not_gcode || !motion_line)
-    return {percent_line - 1,
+                        file, h.listing_line, h.percent_line - 1, h.percent_line)};
+  if (!h.percent_line || h.content_lines == 0) return {};
+  if (h.not_gcode || !h.motion_line)
+    return {h.percent_line - 1,
             fmt::format("{}:1: {} line(s) before the opening '%' at line {} are a leader ({}), skipped as the "
                         "control skips what precedes the first '%'",
-                        file, percent_line - 1, percent_line, not_gcode ? "not G-code" : "no motion in them")};
-  if (ended) return {};  // `... M30 / %`: the '%' closes the program
+                        file, h.percent_line - 1, h.percent_line, h.not_gcode ? "not G-code" : "no motion in them")};
+  if (h.ended) return {};  // `... M30 / %`: the '%' closes the program
   // motions before the first '%': it closes the program unless more motions follow it
-  int motion_after = 0;
-  while (!motion_after && lines.next(line)) {
-    if (is_percent_line(line)) break;
-    try {
-      parse_block(line, block, file, lines.number());
-      if (has_motion_words(block, axis_letters)) motion_after = lines.number();
-    } catch (const InputError&) {
-      if (!may_hold_macro(line) && !read_o_word(line)) break;  // not G-code after the '%': text after the closing '%'
-      motion_after = lines.number();
-    }
-  }
+  const int motion_after = motion_after_percent(lines, file, axis_letters);
   if (!motion_after) return {};
-  throw InputError({file, percent_line, 1},
+  throw InputError({file, h.percent_line, 1},
                    fmt::format("motions stand both before this '%' (line {}) and after it (line {}): a control skips "
                                "what precedes the opening '%' (a leader), so the program would be only the part after "
                                "it; remove the lines before the '%' (a leader) or this '%' (a program that ends here)",
-                               motion_line, motion_after));
+                               h.motion_line, motion_after));
 }
 
 }  // namespace ncpost::gcode

@@ -70,137 +70,113 @@ enum GGroup : int {
   g_group_count
 };
 
-/// The modal group of a supported G code, or -1 with `why` naming what is not supported.
+/// A G code (x10: G54.1 is 541) and its modal group, or -1 with what it is, for the refusal.
+struct GCodeGroup {
+  int code10;
+  int group;
+  const char* refused;  ///< (group -1) what the code does that is not supported
+};
+
+constexpr GCodeGroup kGGroups[] = {
+    {40, g_non_modal, nullptr},
+    {100, g_non_modal, nullptr},
+    {280, g_non_modal, nullptr},
+    {300, g_non_modal, nullptr},
+    {530, g_non_modal, nullptr},
+    {520, g_non_modal, nullptr},
+    {920, g_non_modal, nullptr},
+    {0, g_motion, nullptr},
+    {10, g_motion, nullptr},
+    {20, g_motion, nullptr},
+    {30, g_motion, nullptr},
+    {800, g_motion, nullptr},
+    {730, g_motion, nullptr},
+    {740, g_motion, nullptr},
+    {810, g_motion, nullptr},
+    {820, g_motion, nullptr},
+    {830, g_motion, nullptr},
+    {840, g_motion, nullptr},
+    {850, g_motion, nullptr},
+    {860, g_motion, nullptr},
+    {890, g_motion, nullptr},
+    {170, g_plane, nullptr},
+    {180, g_plane, nullptr},
+    {190, g_plane, nullptr},
+    {900, g_distance, nullptr},
+    {910, g_distance, nullptr},
+    {901, g_arc_distance, nullptr},
+    {911, g_arc_distance, nullptr},
+    {930, g_feed, nullptr},
+    {940, g_feed, nullptr},
+    {950, g_feed, nullptr},
+    {200, g_units, nullptr},
+    {210, g_units, nullptr},
+    {400, g_cutter, nullptr},
+    {410, g_cutter, nullptr},
+    {420, g_cutter, nullptr},
+    {430, g_length, nullptr},
+    {431, g_length, nullptr},
+    {434, g_length, nullptr},
+    {435, g_length, nullptr},
+    {490, g_length, nullptr},
+    {2340, g_length, nullptr},
+    {980, g_return, nullptr},
+    {990, g_return, nullptr},
+    {540, g_coordinates, nullptr},
+    {541, g_coordinates, nullptr},
+    {1540, g_coordinates, nullptr},  // Haas G154 P1 .. P99: G54.1 P1 .. P99
+    {550, g_coordinates, nullptr},
+    {560, g_coordinates, nullptr},
+    {570, g_coordinates, nullptr},
+    {580, g_coordinates, nullptr},
+    {590, g_coordinates, nullptr},
+    {591, g_coordinates, nullptr},
+    {592, g_coordinates, nullptr},
+    {593, g_coordinates, nullptr},
+    {610, g_path, nullptr},
+    {611, g_path, nullptr},
+    {640, g_path, nullptr},
+    {2540, g_dynamic_offset, nullptr},  // Haas DWO on/off
+    {2550, g_dynamic_offset, nullptr},
+    {411, -1, "dynamic cutter radius compensation"},
+    {421, -1, "dynamic cutter radius compensation"},
+    {330, -1, "threading"},
+    {331, -1, "threading"},
+    {760, -1,
+     "fine boring with a spindle orientation and shift on Fanuc and Haas mills; threading on lathes and LinuxCNC"},
+    {382, -1, "probing"},
+    {383, -1, "probing"},
+    {384, -1, "probing"},
+    {385, -1, "probing"},
+    {50, -1, "splines"},
+    {51, -1, "splines"},
+    {52, -1, "splines"},
+    {53, -1, "splines"},
+    {70, -1, "lathe diameter/radius mode"},
+    {80, -1, "lathe diameter/radius mode"},
+    {921, -1, "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)"},
+    {922, -1, "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)"},
+    {923, -1, "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)"},
+    {680, -1, "coordinate rotation"},
+    {690, -1, "coordinate rotation"},
+    {681, -1, "coordinate rotation"},
+    {500, -1, "scaling"},
+    {510, -1, "scaling"},
+    {150, -1, "polar coordinates"},
+    {160, -1, "polar coordinates"},
+    {870, -1, "back boring and manual boring cycles"},
+    {880, -1, "back boring and manual boring cycles"},
+};
+
+/// The modal group of a supported G code, or -1 with `why` naming what is not supported (null: unknown).
 int g_group(int code10, const char*& why) {
-  switch (code10) {
-    case 40:
-    case 100:
-    case 280:
-    case 300:
-    case 530:
-    case 520:
-    case 920:
-      return g_non_modal;
-    case 0:
-    case 10:
-    case 20:
-    case 30:
-    case 800:
-      return g_motion;
-    case 170:
-    case 180:
-    case 190:
-      return g_plane;
-    case 900:
-    case 910:
-      return g_distance;
-    case 901:
-    case 911:
-      return g_arc_distance;
-    case 930:
-    case 940:
-    case 950:
-      return g_feed;
-    case 200:
-    case 210:
-      return g_units;
-    case 400:
-    case 410:
-    case 420:
-      return g_cutter;
-    case 430:
-    case 431:
-    case 434:
-    case 435:
-    case 490:
-    case 2340:
-      return g_length;
-    case 980:
-    case 990:
-      return g_return;
-    case 540:
-    case 541:
-    case 1540:  // Haas G154 P1 .. P99: G54.1 P1 .. P99
-    case 550:
-    case 560:
-    case 570:
-    case 580:
-    case 590:
-    case 591:
-    case 592:
-    case 593:
-      return g_coordinates;
-    case 610:
-    case 611:
-    case 640:
-      return g_path;
-    case 2540:
-    case 2550:
-      return g_dynamic_offset;  // Haas DWO on/off
-    case 411:
-    case 421:
-      why = "dynamic cutter radius compensation";
-      return -1;
-    case 330:
-    case 331:
-      why = "threading";
-      return -1;
-    case 760:
-      why =
-          "fine boring with a spindle orientation and shift on Fanuc and Haas mills; threading on lathes and LinuxCNC";
-      return -1;
-    case 382:
-    case 383:
-    case 384:
-    case 385:
-      why = "probing";
-      return -1;
-    case 50:
-    case 51:
-    case 52:
-    case 53:
-      why = "splines";
-      return -1;
-    case 70:
-    case 80:
-      why = "lathe diameter/radius mode";
-      return -1;
-    case 921:
-    case 922:
-    case 923:
-      why = "cancelling or restoring coordinate offsets (G92.1, G92.2, G92.3)";
-      return -1;
-    case 680:
-    case 690:
-    case 681:
-      why = "coordinate rotation";
-      return -1;
-    case 500:
-    case 510:
-      why = "scaling";
-      return -1;
-    case 150:
-    case 160:
-      why = "polar coordinates";
-      return -1;
-    case 730:
-    case 740:
-    case 810:
-    case 820:
-    case 830:
-    case 840:
-    case 850:
-    case 860:
-    case 890:
-      return g_motion;
-    case 870:
-    case 880:
-      why = "back boring and manual boring cycles";
-      return -1;
-    default:
-      why = nullptr;
-      return -1;
-  }
+  for (const GCodeGroup& g : kGGroups)
+    if (g.code10 == code10) {
+      why = g.refused;
+      return g.group;
+    }
+  why = nullptr;
+  return -1;
 }
 
 /// G80 beside G0 G1 G2 or G3 in one block (Fanuc's safe-start line `G00 G17 G40 G49 G80 G90`): on
@@ -1214,29 +1190,45 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
   const bool moves =
       home_return ? has_axis && intermediate_known : (has_axis || (is_arc && codes.in(g_motion) && arc_words));
   if (!moves) return;
-  if (fx.machine_move && !home_return) {  // G53: the reader places the machine coordinates
-    if (st.motion != MotionMode::rapid && st.motion != MotionMode::linear)
-      fail(codes.of(g_non_modal).column, "G53 (machine coordinates) with an arc or a canned cycle: expected G0 or G1");
-    if (st.motion == MotionMode::linear && st.feed_mode == FeedMode::inverse_time)
-      fail(codes.of(g_non_modal).column, "G53 G1 under inverse-time feed (G93) is not supported: use G0 or G94");
-    fx.has_motion = true;
-    fx.motion = st.motion;
-    fx.start = fx.end = st.position;
-    for (std::size_t i = 0; i < 6; ++i) fx.programmed[i] = slots_[i] && w.has(slots_[i]);
-    return;
-  }
-  if (home_return) {  // the intermediate point: a rapid, whatever the modal motion (G28 is non-modal)
-    fx.has_motion = true;
-    fx.motion = MotionMode::rapid;
-    fx.start = st.position;
-    fx.end = motion_end(cx, w, axis_column, fx);
-    st.position = fx.end;
-    fx.has_motion = fx.end != fx.start;  // G91 G28 Z0: no intermediate move
-    if (fx.has_motion) check_length_in_force(cx, w, MotionMode::rapid, axis_column);
-    st.moved_in_work = st.moved_in_work || fx.has_motion;
-    if (fx.has_motion) note_moved(cx);
-    return;
-  }
+  if (fx.machine_move && !home_return) return machine_coordinates_motion(cx, w, codes, fx);
+  if (home_return) return intermediate_motion(cx, w, axis_column, fx);
+  programmed_motion(cx, w, codes, {axis_column, first_axis_column}, fx);
+}
+
+/// G53: the reader places the machine coordinates; the block's motion holds the modal mode.
+void Interpreter::machine_coordinates_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  const ModalState& st = state_;
+  if (st.motion != MotionMode::rapid && st.motion != MotionMode::linear)
+    cx.fail(codes.of(g_non_modal).column, "G53 (machine coordinates) with an arc or a canned cycle: expected G0 or G1");
+  if (st.motion == MotionMode::linear && st.feed_mode == FeedMode::inverse_time)
+    cx.fail(codes.of(g_non_modal).column, "G53 G1 under inverse-time feed (G93) is not supported: use G0 or G94");
+  fx.has_motion = true;
+  fx.motion = st.motion;
+  fx.start = fx.end = st.position;
+  for (std::size_t i = 0; i < 6; ++i) fx.programmed[i] = slots_[i] && w.has(slots_[i]);
+}
+
+/// G28 / G30: the intermediate point, a rapid whatever the modal motion (G28 is non-modal).
+void Interpreter::intermediate_motion(const Context& cx, const Words& w, int axis_column, BlockEffect& fx) {
+  ModalState& st = state_;
+  fx.has_motion = true;
+  fx.motion = MotionMode::rapid;
+  fx.start = st.position;
+  fx.end = motion_end(cx, w, axis_column, fx);
+  st.position = fx.end;
+  fx.has_motion = fx.end != fx.start;  // G91 G28 Z0: no intermediate move
+  if (fx.has_motion) check_length_in_force(cx, w, MotionMode::rapid, axis_column);
+  st.moved_in_work = st.moved_in_work || fx.has_motion;
+  if (fx.has_motion) note_moved(cx);
+}
+
+/// A motion in the modal mode (G0 G1 G2 G3, a canned cycle's hole) to the block's axis words.
+void Interpreter::programmed_motion(const Context& cx, const Words& w, const Codes& codes, AxisColumns columns,
+                                    BlockEffect& fx) {
+  ModalState& st = state_;
+  const Fail& fail = cx.fail;
+  const int axis_column = columns.first_or_block;
+  const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
   if (st.motion == MotionMode::none)
     fail(axis_column,
          "axis words without a motion mode (expected G0, G1, G2 or G3): the control's power-on mode "
@@ -1260,7 +1252,7 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
     fx.inverse_time = true;
   }
   if (st.motion == MotionMode::cycle)
-    cycle_hole(st, cx.line_number, w.has('Z') ? w.col('Z') : first_axis_column, fail, end, fx);
+    cycle_hole(st, cx.line_number, w.has('Z') ? w.col('Z') : columns.first_axis, fail, end, fx);
   fx.end = end;
   st.position = end;
   if (st.motion == MotionMode::cycle)
@@ -1346,14 +1338,7 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   } else {
     const char l1 = offset_letter[ax.a1], l2 = offset_letter[ax.a2];
     if (!w.has(l1) && !w.has(l2)) {
-      // NX posts for some controls leave them out where they equal the last arc's: they are not modal
-      const std::string last =
-          last_arc_line_ ? fmt::format(
-                               "; they are not modal: the {} of the arc at line {} {} not carried over (write "
-                               "the centre or R on every arc)",
-                               last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are")
-                         : std::string();
-      fail(column, fmt::format("an arc needs {} and {} (its centre) or R{}", l1, l2, last));
+      fail(column, fmt::format("an arc needs {} and {} (its centre) or R{}", l1, l2, not_modal_hint()));
     }
     const double o1 = w.has(l1) ? w.get(l1) * length_scale : 0.0;
     const double o2 = w.has(l2) ? w.get(l2) * length_scale : 0.0;
@@ -1375,6 +1360,14 @@ void Interpreter::read_arc(const Context& cx, const Words& w, const Codes& codes
   fx.arc = outcome.arc;
   last_arc_line_ = cx.line_number;
   last_arc_words_ = w.has('R') ? "R" : fmt::format("{} and {}", offset_letter[ax.a1], offset_letter[ax.a2]);
+}
+
+// NX posts for some controls leave the centre words out where they equal the last arc's: they are not modal
+std::string Interpreter::not_modal_hint() const {
+  if (!last_arc_line_) return {};
+  return fmt::format(
+      "; they are not modal: the {} of the arc at line {} {} not carried over (write the centre or R on every arc)",
+      last_arc_words_, last_arc_line_, last_arc_words_ == "R" ? "is" : "are");
 }
 
 // M2/M30 end the program; M0/M1 stop it (after the block's motion: RS274NGC order); M60 (a pallet

@@ -166,6 +166,7 @@ bool has_words(std::string_view statement) {
                              "CHF",
                              "LP",
                              "PLANE SPATIAL",
+                             "PLANE PROJECTED",
                              "PLANE EULER",
                              "PLANE VECTOR",
                              "PLANE AXIAL",

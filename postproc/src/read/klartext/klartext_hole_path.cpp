@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// CYCL DEF 203, 241 and 208 expanded into the tool tip's path (klartext_hole_path.hpp).
+// CYCL DEF 201, 203, 208, 240 and 241 expanded into the tool tip's path (klartext_hole_path.hpp).
 #include "read/klartext/klartext_hole_path.hpp"
 
 #include <fmt/format.h>
@@ -100,6 +100,23 @@ std::string check_208(const Q& q) {
   return check_common(208, q);
 }
 
+std::string check_201(const Q& q) {
+  if (auto m = missing(201, q, {200, 201, 206, 203, 204}); !m.empty()) return m;
+  if (get(q, 208).value_or(0.0) < 0.0) return fmt::format("CYCL DEF 201: Q208={} (a feed >= 0)", *get(q, 208));
+  return check_common(201, q);
+}
+
+std::string check_240(const Q& q) {
+  if (auto m = missing(240, q, {200, 343, 206, 203, 204}); !m.empty()) return m;
+  if (*get(q, 343) != 0.0)
+    return fmt::format(
+        "CYCL DEF 240: Q343={} (the depth from the countersinking diameter Q344) needs the tool's point angle "
+        "(T-ANGLE of the TNC's tool table), which the post does not have; program Q343=0 and the depth Q201",
+        *get(q, 343));
+  if (auto m = missing(240, q, {201}); !m.empty()) return m;
+  return check_common(240, q);
+}
+
 HoleStep step(HoleStep::Kind kind, double dx, double dy, double z, double feed = 0.0) {
   HoleStep s;
   s.kind = kind;
@@ -163,6 +180,23 @@ std::variant<std::vector<HoleStep>, std::string> steps_203(const ExpandedCycle& 
   }
   if (get(q, 211).value_or(0.0) > 0.0) out.push_back(dwell(*get(q, 211)));
   out.push_back(step(HoleStep::Kind::feed, 0, 0, s, out_feed));
+  to_second_clearance(c, out);
+  return out;
+}
+
+/// 201: FMAX to the set-up clearance, at Q206 to the depth, the dwell Q211, out at Q208 (0: Q206) to
+/// the set-up clearance, FMAX to the 2nd. 240: the same but out at FMAX.
+std::vector<HoleStep> steps_201_240(const ExpandedCycle& c) {
+  const Q& q = c.q;
+  const double s = *get(q, 200), feed = *get(q, 206);
+  std::vector<HoleStep> out{step(HoleStep::Kind::rapid, 0, 0, s), step(HoleStep::Kind::feed, 0, 0, *get(q, 201), feed)};
+  if (get(q, 211).value_or(0.0) > 0.0) out.push_back(dwell(*get(q, 211)));
+  if (c.number == 240) {
+    out.push_back(step(HoleStep::Kind::rapid, 0, 0, s));
+  } else {
+    const double out_feed = get(q, 208).value_or(0.0) > 0.0 ? *get(q, 208) : feed;
+    out.push_back(step(HoleStep::Kind::feed, 0, 0, s, out_feed));
+  }
   to_second_clearance(c, out);
   return out;
 }
@@ -259,6 +293,8 @@ std::variant<ExpandedCycle, std::string> expanded_cycle(int number, const std::m
   const std::string why = number == 203   ? check_203(q)
                           : number == 241 ? check_241(q)
                           : number == 208 ? check_208(q)
+                          : number == 201 ? check_201(q)
+                          : number == 240 ? check_240(q)
                                           : "not expanded";
   if (!why.empty()) return why;
   ExpandedCycle c;
@@ -285,6 +321,9 @@ std::variant<std::vector<HoleStep>, std::string> hole_steps(const ExpandedCycle&
       return steps_203(c);
     case 241:
       return steps_241(c, at_call);
+    case 201:
+    case 240:
+      return steps_201_240(c);
     default:
       return steps_208(c, at_call);
   }

@@ -5,7 +5,9 @@
 // it (docs/formats.md "Heidenhain hole cycles"):
 //   203 UNIVERSAL DRILLING: pecks that shrink by a decrement, chip breaks, retraction at a feed;
 //   241 SINGLE-LIP DEEP-HOLE DRILLING: pre-positioning into a pilot hole, its own spindle speeds;
-//   208 BORE MILLING: a helix to the depth on the circle of the bore's diameter less the tool's.
+//   208 BORE MILLING: a helix to the depth on the circle of the bore's diameter less the tool's;
+//   201 REAMING: in at a feed, a dwell, out at its own feed (no cl::Cycle kind has both feeds);
+//   240 CENTERING: in at a feed to the depth, a dwell, out at FMAX.
 // Steps are in the hole's frame: X Y offsets from the hole's centre and Z above the surface Q203,
 // along the working plane's axes (the program's X Y Z; the tool axis is Z).
 #include <map>

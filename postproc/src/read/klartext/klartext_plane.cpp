@@ -20,6 +20,7 @@ const std::map<std::string, std::vector<std::string>>& angle_words() {
   static const std::map<std::string, std::vector<std::string>> k = {
       {"PLANE SPATIAL", {"SPA", "SPB", "SPC"}},
       {"PLANE EULER", {"EULPR", "EULNU", "EULROT"}},
+      {"PLANE PROJECTED", {"PROPR", "PROMIN", "ROT", "PROROT"}},
       {"PLANE VECTOR", {"BX", "BY", "BZ", "NX", "NY", "NZ"}},
       {"PLANE AXIAL", {"A", "B", "C"}},
       {"PLANE POINTS", {"P1X", "P1Y", "P1Z", "P2X", "P2Y", "P2Z", "P3X", "P3Y", "P3Z"}},
@@ -48,6 +49,21 @@ std::variant<Mat3d, std::string> points_frame(const std::map<std::string, double
   return r;
 }
 
+/// PLANE PROJECTED: the plane's traces in the ZX plane (along Ry(PROPR)·e_x) and in the YZ plane
+/// (along Rx(PROMIN)·e_y); its X along the first trace, Z = first × second, then ROT (PROROT) about Z.
+std::variant<Mat3d, std::string> projected_frame(double principal_rad, double minor_rad, double rotation_rad) {
+  const Vec3d in_zx = rot(Vec3d::UnitY(), principal_rad) * Vec3d::UnitX();
+  const Vec3d in_yz = rot(Vec3d::UnitX(), minor_rad) * Vec3d::UnitY();
+  const Vec3d z = in_zx.cross(in_yz);
+  if (z.norm() < 1e-9 || std::abs(std::cos(principal_rad)) < 1e-9 || std::abs(std::cos(minor_rad)) < 1e-9)
+    return std::string("PLANE PROJECTED: a projection angle of 90 deg gives no plane (its trace is along Z)");
+  Mat3d r;
+  r.col(2) = z.normalized();
+  r.col(0) = in_zx;
+  r.col(1) = r.col(2).cross(r.col(0));
+  return Mat3d(rot(r.col(2), rotation_rad) * r);
+}
+
 std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::map<std::string, double>& v) {
   const auto get = [&](const char* n) { return v.count(n) ? v.at(n) : 0.0; };
   const auto deg = [&](const char* n) { return deg_to_rad(get(n)); };
@@ -57,6 +73,11 @@ std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::ma
     return Mat3d(rot(Vec3d::UnitZ(), deg("EULPR")) * rot(Vec3d::UnitX(), deg("EULNU")) *
                  rot(Vec3d::UnitZ(), deg("EULROT")));
   if (kind == "PLANE POINTS") return points_frame(v);
+  if (kind == "PLANE PROJECTED") {
+    if (v.count("ROT") && v.count("PROROT"))
+      return std::string("PLANE PROJECTED with both ROT and PROROT (the rotation about the tilted tool axis)");
+    return projected_frame(deg("PROPR"), deg("PROMIN"), deg(v.count("ROT") ? "ROT" : "PROROT"));
+  }
   if (kind == "PLANE VECTOR") {
     const Vec3d n(get("NX"), get("NY"), get("NZ"));
     const Vec3d base(get("BX"), get("BY"), get("BZ"));
@@ -138,7 +159,7 @@ std::variant<PlaneRequest, std::string> plane_request(const Block& b, const Mach
   const auto kind = angle_words().find(b.statement);
   if (kind == angle_words().end())
     return fmt::format(
-        "{} is not read (PLANE SPATIAL, EULER, VECTOR, POINTS, AXIAL and RESET are); have the CAM system "
+        "{} is not read (PLANE SPATIAL, PROJECTED, EULER, VECTOR, POINTS, AXIAL and RESET are); have the CAM system "
         "write PLANE SPATIAL",
         b.statement);
   PlaneRequest r;

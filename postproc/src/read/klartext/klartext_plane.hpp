@@ -9,8 +9,13 @@
 //   PLANE EULER EULPR EULNU EULROT: Rz(EULPR) · Rx(EULNU) · Rz(EULROT)
 //   PLANE VECTOR BX BY BZ NX NY NZ: Z along N, X along B made normal to N, Y = Z × X
 //   PLANE AXIAL A.. B.. C..:     the machine's rotary axes at those angles: R_w(q)ᵀ · R_t(q)
-// Angles in degrees in the program, radians here. PLANE PROJECTED, POINTS and RELATIV are refused
-// by name.
+//   PLANE POINTS P1.. P2.. P3..: X along P1 -> P2, Z = X × (P3 - P1)
+//   PLANE PROJECTED PROPR PROMIN ROT (PROROT): the plane's trace in the principal plane ZX runs along
+//     Ry(PROPR)·e_x, its trace in the minor plane YZ along Rx(PROMIN)·e_y (each angle turning as the
+//     spatial angle about that axis does: PROPR alone is SPB, PROMIN alone SPA); X along the first
+//     trace, Z = first × second, then turned by ROT about Z: Rz'(ROT) · [x y z]. The manual's planes
+//     Z/X and Y/Z (angles positive from the first axis to the second) give these signs.
+// Angles in degrees in the program, radians here. PLANE RELATIV is refused by name.
 //
 // Rotary angles (Q120 .. Q122 after STAY): the two solutions of the tool axis W_R_plane · e_z
 // (rotary_solutions), within the limits. SEQ+ / SEQ- pick the one whose master axis is >= 0 / <= 0;

@@ -22,6 +22,7 @@
 #include "ncpost/postproc/read/line_source.hpp"
 #include "ncpost/postproc/read/tool_table.hpp"
 
+#include "read/klartext/klartext_corner.hpp"
 #include "read/klartext/klartext_cycle_def.hpp"
 #include "read/klartext/klartext_drilling.hpp"
 #include "read/klartext/klartext_flow.hpp"
@@ -35,6 +36,13 @@ namespace {
 
 constexpr const char* kWhatALineIs = "a Klartext block";
 constexpr std::string_view kSlots = "XYZABC";  ///< ProgramPoint order
+
+/// The hole cycles read (klartext_drilling.hpp, klartext_hole_path.hpp).
+bool is_hole_cycle(int number) {
+  for (int n : {200, 201, 203, 207, 208, 240, 241})
+    if (number == n) return true;
+  return false;
+}
 
 /// The slot (0..5) of an axis word X..C or IX..IC, or -1; `incremental` set for I words.
 int axis_slot(const std::string& name, bool& incremental) {
@@ -57,10 +65,12 @@ struct BlockWords {
   std::optional<double> retract_mm;    ///< M140 MB: the distance (infinity: MAX)
   int retract_column = 0;
   // arcs
-  std::optional<bool> counter_clockwise;  ///< DR+ / DR-
-  std::optional<double> radius_mm;        ///< CR R
-  std::optional<double> polar_rad;        ///< CP PA
-  std::optional<double> polar_step_rad;   ///< CP IPA
+  std::optional<bool> counter_clockwise;       ///< DR+ / DR-
+  std::optional<double> radius_mm;             ///< CR R
+  std::optional<double> polar_rad;             ///< CP / LP PA
+  std::optional<double> polar_step_rad;        ///< CP / LP IPA
+  std::optional<double> polar_radius_mm;       ///< LP PR
+  std::optional<double> polar_radius_step_mm;  ///< LP IPR
 };
 
 }  // namespace
@@ -94,6 +104,22 @@ struct KlartextReader::State {
   Vec3d datum_shift_mm = Vec3d::Zero();    ///< CYCL DEF 7: added to absolute X Y Z words
   std::optional<Eigen::Vector2d> centre;   ///< CC
   std::optional<Eigen::Vector2d> tangent;  ///< direction of the last contour element in X Y
+  /// The last straight line in X Y at a feed, its motion held back while the next block may be RND / CHF.
+  struct HeldLine {
+    cl::Motion motion;
+    ProgramPoint from;
+  };
+  std::optional<HeldLine> corner_line;
+  /// An RND / CHF read, waiting for the line after it.
+  struct PendingCorner {
+    bool rounding = true;
+    double length_mm = 0.0;  ///< RND R, CHF side length
+    std::optional<double> feed;
+    cl::Location where;
+  };
+  std::optional<PendingCorner> corner;
+  std::optional<ProgramPoint> line_start;   ///< where the last L block started
+  std::optional<ProgramPoint> corner_join;  ///< where the last RND / CHF joined the line after it
   bool begun = false;
   bool ended = false;
 
@@ -114,11 +140,11 @@ struct KlartextReader::State {
 
   std::vector<std::pair<std::string, int>> continuation;  ///< the '~' lines of the current block, with their line
   std::optional<DrillingCycle> drilling;                  ///< CYCL DEF 200 / 207, for CYCL CALL and M99
-  std::optional<ExpandedCycle> expanded;                  ///< CYCL DEF 203 / 208 / 241, for CYCL CALL and M99
-  std::string tool_called;                                ///< the last TOOL CALL's tool as written ("" none)
-  double delta_radius_mm = 0.0;                           ///< its DR
-  std::optional<double> preset_number;                    ///< CYCL DEF 247 Q339
-  int shift_in_plane = 0;  ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
+  std::optional<ExpandedCycle> expanded;  ///< CYCL DEF 201 / 203 / 208 / 240 / 241, for CYCL CALL and M99
+  std::string tool_called;                ///< the last TOOL CALL's tool as written ("" none)
+  double delta_radius_mm = 0.0;           ///< its DR
+  std::optional<double> preset_number;    ///< CYCL DEF 247 Q339
+  int shift_in_plane = 0;                 ///< a CYCL DEF 7 changed the shift in a plane (its column; 0: none)
 
   // the current line, for messages
   int line_number = 0;
@@ -351,53 +377,57 @@ struct KlartextReader::State {
       begin_program(b);
       return true;
     }
-    if (!b.comment.empty()) emit(cl::Comment{at(b.comment_column), b.comment});
+    return act_on(b);
+  }
+
+  /// A block of the program after BEGIN PGM; false when it ends the program.
+  bool act_on(Block& b) {
     const std::string& s = b.statement;
+    if (corner && !s.empty() && s != "*" && s != "L" && s != "LP")
+      fail(b.column, fmt::format("'{}' after {} (line {}): the rounding or chamfer is read between two straight "
+                                 "lines (L, LP) in X Y only",
+                                 s, corner->rounding ? "RND" : "CHF", corner->where.line));
+    if (corner_line && !corner && s != "RND" && s != "CHF") flush_corner_line();
+    if (!b.comment.empty()) emit(cl::Comment{at(b.comment_column), b.comment});
     if (s.empty() || s == "*") return true;
     if (program_flow(b)) return true;
     resolve_q_words(b);
     if (s == "BEGIN PGM") fail(b.column, "a second BEGIN PGM (the previous program has no END PGM)");
     if (s == "END PGM") return end_program(at(b.column));
-    if (s == "BLK FORM") {
-      notice_once("BLK FORM", b.column, "BLK FORM (the blank, for the TNC's graphics) is noted, not posted");
-      return true;
-    }
-    if (s == "TOOL DEF") {
-      notice_once("TOOL DEF", b.column, "TOOL DEF (the tool preselection) is noted, not posted");
-      return true;
-    }
-    if (s == "TOOL CALL") {
-      tool_call(b);
-      return true;
-    }
-    if (s == "FUNCTION TCPM") {
-      tcpm(b);
-      return true;
-    }
-    if (s == "FUNCTION RESET") {
-      if (b.words.size() != 1 || b.words[0].name != "TCPM") fail(b.column, refused_statement(b));
-      switch_mode([&] { rtcp = false; });
-      return true;
-    }
-    if (s == "CYCL DEF") {
-      cycle_def(b);
-      return true;
-    }
-    if (s == "CYCL CALL") {
-      if (!b.text.empty()) fail(b.column, refused_statement(b));
-      call_cycle(at(b.column), b.column);
-      return true;
-    }
+    if (s == "L" || s == "LP" || s == "M" || s == "STOP" || s == "C" || s == "CR" || s == "CT" || s == "CP")
+      return motion_block(b);
+    using Act = void (State::*)(const Block&);
+    static const std::map<std::string, Act, std::less<>> kActs = {
+        {"BLK FORM", &State::noted},       {"TOOL DEF", &State::noted},       {"TOOL CALL", &State::tool_call},
+        {"FUNCTION TCPM", &State::tcpm},   {"FUNCTION RESET", &State::reset}, {"CYCL DEF", &State::cycle_def},
+        {"CYCL CALL", &State::cycle_call}, {"CC", &State::circle_centre},     {"RND", &State::corner_block},
+        {"CHF", &State::corner_block},
+    };
     if (s.rfind("PLANE ", 0) == 0) {
       tilt(b);
       return true;
     }
-    if (s == "CC") {
-      circle_centre(b);
-      return true;
-    }
-    if (s == "L" || s == "M" || s == "STOP" || s == "C" || s == "CR" || s == "CT" || s == "CP") return motion_block(b);
-    fail(b.column, refused_statement(b));
+    const auto act = kActs.find(s);
+    if (act == kActs.end()) fail(b.column, refused_statement(b));
+    (this->*(act->second))(b);
+    return true;
+  }
+
+  /// BLK FORM, TOOL DEF: noted, nothing to post.
+  void noted(const Block& b) {
+    notice_once(b.statement, b.column,
+                b.statement == "BLK FORM" ? "BLK FORM (the blank, for the TNC's graphics) is noted, not posted"
+                                          : "TOOL DEF (the tool preselection) is noted, not posted");
+  }
+  /// FUNCTION RESET TCPM
+  void reset(const Block& b) {
+    if (b.words.size() != 1 || b.words[0].name != "TCPM") fail(b.column, refused_statement(b));
+    switch_mode([&] { rtcp = false; });
+  }
+  /// CYCL CALL: the hole cycle where the tool stands.
+  void cycle_call(const Block& b) {
+    if (!b.text.empty()) fail(b.column, refused_statement(b));
+    call_cycle(at(b.column), b.column);
   }
 
   // ---- Q parameters and program flow (klartext_q.hpp, klartext_flow.hpp) ------------------
@@ -539,6 +569,10 @@ struct KlartextReader::State {
   }
 
   bool finish_input() {
+    if (corner)
+      throw InputError({file, corner->where.line, corner->where.column},
+                       "the program ends after an RND or CHF, before the line after the corner");
+    flush_corner_line();
     if (!begun) throw InputError({file, source.line_number(), 0}, "no BEGIN PGM: not a Klartext program");
     if (!options.allow_unterminated)
       throw InputError({file, source.line_number(), 0},
@@ -653,7 +687,7 @@ struct KlartextReader::State {
                   "tolerance is its own (--tolerance)");
       return;
     }
-    if ((c.number == 200 || c.number == 203 || c.number == 207 || c.number == 208 || c.number == 241) && c.part < 0) {
+    if (is_hole_cycle(c.number) && c.part < 0) {
       define_hole_cycle(b, c.number);
       return;
     }
@@ -714,7 +748,7 @@ struct KlartextReader::State {
                             *number));
   }
 
-  /// CYCL DEF 200 / 203 / 207 / 208 / 241 with its Q parameters on the '~' lines.
+  /// CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with its Q parameters on the '~' lines.
   void define_hole_cycle(const Block& b, int number) {
     std::map<int, double> q;
     for (const auto& [text, line] : continuation) {
@@ -749,7 +783,8 @@ struct KlartextReader::State {
   void call_cycle(cl::Location where, int column) {
     if (!drilling && !expanded)
       fail(column,
-           "a cycle call without a hole cycle (CYCL DEF 200, 203, 207, 208 or 241) before it (other cycles are not "
+           "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 207, 208, 240 or 241) before it (other cycles "
+           "are not "
            "read)");
     if (rtcp)
       fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
@@ -982,7 +1017,6 @@ struct KlartextReader::State {
   BlockWords words_of(const Block& b) {
     BlockWords bw;
     bw.target = pos;
-    const bool cr = b.statement == "CR";
     for (std::size_t i = 0; i < b.words.size(); ++i) {
       const Word& w = b.words[i];
       if (w.q_parameter)
@@ -990,73 +1024,103 @@ struct KlartextReader::State {
              fmt::format("{}{}{}: Q parameters are not read", w.name, w.sign ? std::string(1, w.sign) : "", w.text));
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
-      if (slot >= 0) {
-        if (!machine_has(slot))
-          fail(w.column, fmt::format("{}: the machine {} has no {} axis", w.name, machine.name,
-                                     kSlots[static_cast<std::size_t>(slot)]));
-        if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
-        const auto s = static_cast<std::size_t>(slot);
-        if (incremental && !known[s] && slot < 3)
-          fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
-        const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
-        bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 && !plane ? datum_shift_mm[slot] : 0.0);
-        if (!incremental && slot >= 3 && shortest_rotary && known[s] &&
-            machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
-          bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
-        bw.programmed[s] = true;
-        bw.any_axis = true;
-      } else if (w.name == "R" && cr) {
-        if (!w.value || *w.value == 0.0) fail(w.column, "CR: expected the radius R+ (up to 180 deg) or R- (beyond)");
-        bw.radius_mm = *w.value;
-      } else if (w.name == "R") {
-        if (!w.value || *w.value != 0.0) fail(w.column, "expected R0, RL or RR (the radius compensation)");
-        bw.comp = cl::CutterComp::Side::off;
-      } else if (w.name == "RL" || w.name == "RR") {
-        bw.comp = w.name == "RL" ? cl::CutterComp::Side::left : cl::CutterComp::Side::right;
-        if (delta_radius)
-          fail(w.column, fmt::format("{} with a delta radius DR from the TOOL CALL: the post's radius compensation "
-                                     "would use the tool's own radius; program DR+0 or post the tool centre path",
-                                     w.name));
-      } else if (w.name == "DR") {
-        if (w.sign == 0 || w.value) fail(w.column, "expected DR+ (counter-clockwise) or DR- (clockwise)");
-        bw.counter_clockwise = w.sign == '+';
-      } else if (w.name == "PA" || w.name == "IPA") {
-        if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
-        (w.name == "PA" ? bw.polar_rad : bw.polar_step_rad) = deg_to_rad(*w.value);
-      } else if (w.name == "F") {
-        if (!w.value || *w.value < 0.0) fail(w.column, "expected a feed (mm/min >= 0), FMAX or FAUTO");
-        bw.feed = *w.value;
-      } else if (w.name == "FMAX") {
-        bw.rapid = true;
-      } else if (w.name == "FAUTO") {
-        if (!auto_feed) fail(w.column, "FAUTO without a feed in the TOOL CALL (F)");
-        bw.feed = *auto_feed;
-      } else if (w.name == "FQ" || w.name == "FU" || w.name == "FZ") {
-        fail(w.column, fmt::format("{}: {} is not read; program F in mm/min",
-                                   w.name + (w.value ? fmt::format("{:g}", *w.value) : ""),
-                                   w.name == "FQ"   ? "a feed from a Q parameter"
-                                   : w.name == "FU" ? "a feed per revolution"
-                                                    : "a feed per tooth"));
-      } else if (w.name == "M") {
-        if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value))
-          fail(w.column, "expected an M function number");
-        bw.m.emplace_back(static_cast<int>(*w.value), w.column);
-      } else if (w.name == "MB") {
-        bw.retract_column = w.column;
-        if (w.value) {
-          if (*w.value <= 0.0) fail(w.column, "M140 MB: expected a distance > 0 or MAX");
-          bw.retract_mm = *w.value;
-        } else if (i + 1 < b.words.size() && b.words[i + 1].name == "MAX") {
-          bw.retract_mm = std::numeric_limits<double>::infinity();
-          ++i;
-        } else {
-          fail(w.column, "M140 MB: expected a distance or MAX");
-        }
-      } else {
+      if (slot >= 0)
+        axis_word(w, slot, incremental, bw);
+      else if (w.name == "MB")
+        retract_word(b, i, bw);
+      else if (!path_word(b, w, bw))
         fail(w.column, fmt::format("'{}' in {} is not read", w.name, b.statement));
-      }
     }
     return bw;
+  }
+
+  /// X .. C, IX .. IC: the target of the axis in `slot` (M126: a continuous rotary axis the short way).
+  void axis_word(const Word& w, int slot, bool incremental, BlockWords& bw) const {
+    if (!machine_has(slot))
+      fail(w.column, fmt::format("{}: the machine {} has no {} axis", w.name, machine.name,
+                                 kSlots[static_cast<std::size_t>(slot)]));
+    if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
+    const auto s = static_cast<std::size_t>(slot);
+    if (incremental && !known[s] && slot < 3)
+      fail(w.column, fmt::format("{} before {} is programmed: the start is not known", w.name, kSlots[s]));
+    const double v = slot >= 3 ? deg_to_rad(*w.value) : *w.value;
+    bw.target[s] = incremental ? pos[s] + v : v + (slot < 3 && !plane ? datum_shift_mm[slot] : 0.0);
+    if (!incremental && slot >= 3 && shortest_rotary && known[s] &&
+        machine.axes[static_cast<std::size_t>(3 + rotary_index(slot))].continuous())
+      bw.target[s] = pos[s] + std::remainder(v - pos[s], 2.0 * kPi);  // M126: the short way
+    bw.programmed[s] = true;
+    bw.any_axis = true;
+  }
+
+  /// MB d|MAX of M140 (the word at `i`; MAX is the next one).
+  void retract_word(const Block& b, std::size_t& i, BlockWords& bw) const {
+    const Word& w = b.words[i];
+    bw.retract_column = w.column;
+    if (w.value) {
+      if (*w.value <= 0.0) fail(w.column, "M140 MB: expected a distance > 0 or MAX");
+      bw.retract_mm = *w.value;
+    } else if (i + 1 < b.words.size() && b.words[i + 1].name == "MAX") {
+      bw.retract_mm = std::numeric_limits<double>::infinity();
+      ++i;
+    } else {
+      fail(w.column, "M140 MB: expected a distance or MAX");
+    }
+  }
+
+  /// R, RL, RR, DR, PA, IPA, PR, IPR, F, FMAX, FAUTO, M: false for any other word.
+  bool path_word(const Block& b, const Word& w, BlockWords& bw) const {
+    const auto polar = [&](std::optional<double>& absolute, std::optional<double>& step, bool angle) {
+      if (!w.value) fail(w.column, fmt::format("{} without a value", w.name));
+      (w.name[0] == 'I' ? step : absolute) = angle ? deg_to_rad(*w.value) : *w.value;
+    };
+    if (w.name == "R" && b.statement == "CR") {
+      if (!w.value || *w.value == 0.0) fail(w.column, "CR: expected the radius R+ (up to 180 deg) or R- (beyond)");
+      bw.radius_mm = *w.value;
+    } else if (w.name == "R") {
+      if (!w.value || *w.value != 0.0) fail(w.column, "expected R0, RL or RR (the radius compensation)");
+      bw.comp = cl::CutterComp::Side::off;
+    } else if (w.name == "RL" || w.name == "RR") {
+      bw.comp = w.name == "RL" ? cl::CutterComp::Side::left : cl::CutterComp::Side::right;
+      if (delta_radius)
+        fail(w.column, fmt::format("{} with a delta radius DR from the TOOL CALL: the post's radius compensation "
+                                   "would use the tool's own radius; program DR+0 or post the tool centre path",
+                                   w.name));
+    } else if (w.name == "DR") {
+      if (w.sign == 0 || w.value) fail(w.column, "expected DR+ (counter-clockwise) or DR- (clockwise)");
+      bw.counter_clockwise = w.sign == '+';
+    } else if (w.name == "PA" || w.name == "IPA") {
+      polar(bw.polar_rad, bw.polar_step_rad, true);
+    } else if ((w.name == "PR" || w.name == "IPR") && b.statement == "LP") {
+      polar(bw.polar_radius_mm, bw.polar_radius_step_mm, false);
+    } else if (w.name == "M") {
+      if (!w.value || *w.value < 0 || *w.value != std::floor(*w.value)) fail(w.column, "expected an M function number");
+      bw.m.emplace_back(static_cast<int>(*w.value), w.column);
+    } else {
+      return feed_word(w, bw);
+    }
+    return true;
+  }
+
+  /// F, FMAX, FAUTO (FQ, FU, FZ refused): false for any other word.
+  bool feed_word(const Word& w, BlockWords& bw) const {
+    if (w.name == "F") {
+      if (!w.value || *w.value < 0.0) fail(w.column, "expected a feed (mm/min >= 0), FMAX or FAUTO");
+      bw.feed = *w.value;
+    } else if (w.name == "FMAX") {
+      bw.rapid = true;
+    } else if (w.name == "FAUTO") {
+      if (!auto_feed) fail(w.column, "FAUTO without a feed in the TOOL CALL (F)");
+      bw.feed = *auto_feed;
+    } else if (w.name == "FQ" || w.name == "FU" || w.name == "FZ") {
+      fail(w.column, fmt::format("{}: {} is not read; program F in mm/min",
+                                 w.name + (w.value ? fmt::format("{:g}", *w.value) : ""),
+                                 w.name == "FQ"   ? "a feed from a Q parameter"
+                                 : w.name == "FU" ? "a feed per revolution"
+                                                  : "a feed per tooth"));
+    } else {
+      return false;
+    }
+    return true;
   }
 
   /// M91 / M92: the block's X Y Z words are machine coordinates, counted from each axis's
@@ -1102,83 +1166,96 @@ struct KlartextReader::State {
   /// the path, M functions at the end. False when the block ends the program.
   bool motion_block(const Block& b) {
     BlockWords bw = words_of(b);
+    if (b.statement == "LP") bw = polar_line(b, bw);
+    if (corner) finish_corner(b, bw);
     for (const auto& [code, column] : bw.m)
       if ((code == 91 || code == 92) && bw.any_axis) machine_coordinates(b, bw, code, column);
     const cl::Location where = at(b.column);
     const bool path = b.statement != "M" && b.statement != "STOP";
     if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
       fail(b.column, fmt::format("{} with path words: program them in an L block", b.statement));
+    BlockM m;
+    for (const auto& [code, column] : bw.m) m_function(code, column, bw.any_axis, m);
+    if (bw.retract_mm && !m.m140) fail(bw.retract_column, "MB without M140");
+    if (m.m140 && !bw.retract_mm) fail(b.column, "M140 without MB (expected M140 MB MAX or M140 MB distance)");
+    compensation_and_feed(bw, where);
+    if (path) path_of(b, bw, where);
+    if (!m.cycle_call && modal_cycle_call && path && bw.any_axis) m.cycle_call = true, m.cycle_call_column = b.column;
+    if (m.cycle_call) call_cycle(at(m.cycle_call_column), m.cycle_call_column);
+    if (b.statement == "STOP") m.after.push_back(cl::Stop{where, false, ""});
+    if (m.m140) retract(bw);
+    const bool records_after = !m.after.empty();
+    for (auto& r : m.after) emit(std::move(r));
+    if (m.program_end) return end_program(where);
+    if (!records_after && !m.cycle_call && !m.m140) hold_corner_line(b, bw);
+    return true;
+  }
+
+  /// What the M functions of a block ask besides what they emit at its start.
+  struct BlockM {
     bool m140 = false, program_end = false, cycle_call = false;
     int cycle_call_column = 0;
-    std::vector<cl::Record> after;
-    for (const auto& [code, column] : bw.m) {
-      if (code == 99 || code == 89) {  // the cycle, at the end of the block's positioning (M89: and of every later one)
-        cycle_call = true;
-        cycle_call_column = column;
-        modal_cycle_call = code == 89;
-        if (code == 89)
-          notice_once("M89", column,
-                      "M89 is read as the modal cycle call (the cycle after every positioning block until M99), "
-                      "as the TNC's machine parameters usually set it");
-        continue;
-      }
-      if (auto why = refused_m(code)) fail(column, *why);
-      const cl::Location mat = at(column);
-      switch (code) {
-        case 3:
-        case 4:
-        case 13:
-        case 14:
-          spindle = code == 3 || code == 13 ? cl::Spindle::Direction::cw : cl::Spindle::Direction::ccw;
-          emit(cl::Spindle{mat, spindle, rpm});
-          if (code >= 13) emit(cl::Coolant{mat, true, "FLOOD"});
-          break;
-        case 5:
-          spindle = cl::Spindle::Direction::off;
-          after.push_back(cl::Spindle{mat, spindle, rpm});
-          break;
-        case 8:
-          emit(cl::Coolant{mat, true, "FLOOD"});
-          break;
-        case 9:
-          after.push_back(cl::Coolant{mat, false, "OFF"});
-          break;
-        case 0:
-        case 1:
-          after.push_back(cl::Stop{mat, code == 1, ""});
-          break;
-        case 2:
-        case 30:
-          program_end = true;
-          break;
-        case 126:
-          shortest_rotary = true;
-          break;
-        case 127:
-          shortest_rotary = false;
-          break;
-        case 128:
-        case 129: {
-          const bool on = code == 128;
-          if (plane && on) fail(column, "M128 in a tilted plane (PLANE ...) is not read; PLANE RESET first");
-          switch_mode([&] { rtcp = on; });
-          break;
-        }
-        case 140:
-          m140 = true;
-          break;
-        case 91:
-        case 92:
-          if (bw.any_axis) break;  // (machine coordinates: machine_coordinates() above)
-          [[fallthrough]];
-        default:
-          after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});
-          notice_once(fmt::format("M{}", code), column,
-                      fmt::format("M{} is not acted on; passed through as a comment", code));
-      }
+    std::vector<cl::Record> after;  ///< records at the end of the block (M5, M9, M0 ...)
+  };
+
+  /// One M function of a motion block: at its start (spindle on, coolant on, modes) or at its end.
+  void m_function(int code, int column, bool any_axis, BlockM& m) {
+    if (code == 99 || code == 89) {  // the cycle, at the end of the block's positioning (M89: and of every later one)
+      m.cycle_call = true;
+      m.cycle_call_column = column;
+      modal_cycle_call = code == 89;
+      if (code == 89)
+        notice_once("M89", column,
+                    "M89 is read as the modal cycle call (the cycle after every positioning block until M99), "
+                    "as the TNC's machine parameters usually set it");
+      return;
     }
-    if (bw.retract_mm && !m140) fail(bw.retract_column, "MB without M140");
-    if (m140 && !bw.retract_mm) fail(b.column, "M140 without MB (expected M140 MB MAX or M140 MB distance)");
+    if (auto why = refused_m(code)) fail(column, *why);
+    const cl::Location mat = at(column);
+    switch (code) {
+      case 3:
+      case 4:
+      case 13:
+      case 14:
+        spindle = code == 3 || code == 13 ? cl::Spindle::Direction::cw : cl::Spindle::Direction::ccw;
+        emit(cl::Spindle{mat, spindle, rpm});
+        if (code >= 13) emit(cl::Coolant{mat, true, "FLOOD"});
+        return;
+      case 5:
+        spindle = cl::Spindle::Direction::off;
+        return m.after.push_back(cl::Spindle{mat, spindle, rpm});
+      case 8:
+        return emit(cl::Coolant{mat, true, "FLOOD"});
+      case 9:
+        return m.after.push_back(cl::Coolant{mat, false, "OFF"});
+      case 0:
+      case 1:
+        return m.after.push_back(cl::Stop{mat, code == 1, ""});
+      case 2:
+      case 30:
+        m.program_end = true;
+        return;
+      case 126:
+      case 127:
+        shortest_rotary = code == 126;
+        return;
+      case 128:
+      case 129:
+        if (plane && code == 128) fail(column, "M128 in a tilted plane (PLANE ...) is not read; PLANE RESET first");
+        return switch_mode([&] { rtcp = code == 128; });
+      case 140:
+        m.m140 = true;
+        return;
+      default:
+        if ((code == 91 || code == 92) && any_axis) return;  // (machine coordinates: machine_coordinates())
+        m.after.push_back(cl::Unsupported{mat, fmt::format("M{}", code)});
+        notice_once(fmt::format("M{}", code), column,
+                    fmt::format("M{} is not acted on; passed through as a comment", code));
+    }
+  }
+
+  /// RL / RR / R0 and F of a block, where they change.
+  void compensation_and_feed(const BlockWords& bw, cl::Location where) {
     if (bw.comp && *bw.comp != comp) {
       comp = *bw.comp;
       cl::CutterComp c;
@@ -1191,25 +1268,123 @@ struct KlartextReader::State {
       feed = bw.feed;
       emit(cl::Feed{where, *bw.feed, false});
     }
-    if (path) path_of(b, bw, where);
-    if (!cycle_call && modal_cycle_call && path && bw.any_axis) cycle_call = true, cycle_call_column = b.column;
-    if (cycle_call) call_cycle(at(cycle_call_column), cycle_call_column);
-    if (b.statement == "STOP") after.push_back(cl::Stop{where, false, ""});
-    if (m140) retract(bw);
-    for (auto& r : after) emit(std::move(r));
-    if (program_end) return end_program(where);
-    return true;
   }
 
-  void path_of(const Block& b, const BlockWords& bw, cl::Location where) {
+  // ---- RND / CHF (klartext_corner.hpp) ------------------------------------------------------
+  /// An L (LP) in X Y at a feed whose motion ends `out`: held back, since an RND or CHF after it
+  /// moves its end.
+  void hold_corner_line(const Block& b, const BlockWords& bw) {
+    if ((b.statement != "L" && b.statement != "LP") || !bw.any_axis || bw.rapid || !settled || out.empty()) return;
+    const cl::Motion* m = std::get_if<cl::Motion>(&out.back());
+    if (!m || m->where.line != line_number || !line_start) return;
+    for (std::size_t i = 2; i < 6; ++i)
+      if (pos[i] != (*line_start)[i]) return;
+    corner_line = HeldLine{*m, *line_start};
+    out.pop_back();
+  }
+
+  void flush_corner_line() {
+    if (!corner_line) return;
+    out.push_back(std::move(corner_line->motion));
+    corner_line.reset();
+  }
+
+  /// RND R.. [F..] / CHF s [F..]: after a held line; the path is made with the line after it.
+  void corner_block(const Block& b) {
+    const bool rounding = b.statement == "RND";
+    if (!corner_line)
+      fail(b.column, fmt::format("{} without a straight line in X Y at a feed (L or LP) just before it: the rounding "
+                                 "or chamfer is read between two such lines only",
+                                 b.statement));
+    PendingCorner c;
+    c.rounding = rounding;
+    c.where = at(b.column);
+    for (const Word& w : b.words) {
+      if (rounding ? w.name == "R" : w.name.empty()) {
+        if (!w.value || !(*w.value > 0.0))
+          fail(w.column, fmt::format("{}: expected {} > 0", b.statement, rounding ? "the radius R" : "the length"));
+        c.length_mm = *w.value;
+      } else if (w.name == "F" && w.value && *w.value > 0.0) {
+        c.feed = *w.value;
+      } else {
+        fail(w.column, fmt::format("'{}' in {} is not read (expected {} and F)", w.name, b.statement,
+                                   rounding ? "R" : "the chamfer's side length"));
+      }
+    }
+    if (!(c.length_mm > 0.0))
+      fail(b.column, fmt::format("{} without {}", b.statement, rounding ? "a radius R" : "a side length"));
+    corner = c;
+  }
+
+  /// The held line up to where the corner leaves it, then the rounding or the chamfer to where it
+  /// joins the line `bw` (at the feed in force, or the RND's / CHF's own F for it alone).
+  void finish_corner(const Block& b, const BlockWords& bw) {
+    const PendingCorner c = *corner;
+    const HeldLine line = *corner_line;
+    corner.reset();
+    corner_line.reset();
+    const char* what = c.rounding ? "RND" : "CHF";
+    bool in_plane = bw.any_axis && !bw.rapid;
+    for (std::size_t i = 2; i < 6; ++i) in_plane = in_plane && bw.target[i] == pos[i];
+    if (!in_plane)
+      fail(b.column, fmt::format("{} (line {}) followed by a line that is no straight line in X Y at a feed: the "
+                                 "rounding or chamfer is read between two such lines only",
+                                 what, c.where.line));
+    if (bw.comp && *bw.comp != comp)
+      fail(b.column, fmt::format("a change of the radius compensation right after {} (line {})", what, c.where.line));
+    const auto xy = [](const ProgramPoint& p) { return Eigen::Vector2d(p[0], p[1]); };
+    const auto made = corner_of(xy(line.from), xy(pos), xy(bw.target), c.length_mm, c.rounding);
+    if (const std::string* why = std::get_if<std::string>(&made))
+      throw InputError({file, c.where.line, c.where.column}, *why);
+    const Corner& k = std::get<Corner>(made);
+    ProgramPoint leave = pos, join = pos;
+    leave[0] = k.leave_xy.x(), leave[1] = k.leave_xy.y();
+    join[0] = k.join_xy.x(), join[1] = k.join_xy.y();
+    cl::Motion shortened = locate(leave, tip_mode(), line.motion.where);
+    shortened.feed = line.motion.feed;
+    out.push_back(std::move(shortened));
+    if (c.feed) emit(cl::Feed{c.where, *c.feed, false});
+    if (c.rounding) {
+      const ArcResult r = arc_about_centre(leave, join, k.centre_xy, k.counter_clockwise);
+      if (!r.arc) fail(b.column, fmt::format("RND (line {}): {}", c.where.line, r.error));
+      arc_motion(*r.arc, c.where, false, std::nullopt, c.where.column);
+    } else {
+      emit_motion(join, c.where, false, std::nullopt);
+    }
+    if (c.feed && feed) emit(cl::Feed{c.where, *feed, false});
+    corner_join = join;
+  }
+
+  /// LP PR|IPR PA|IPA [Z|IZ]: the end in polar coordinates about the pole CC, a coordinate not
+  /// given (or given incrementally) from the polar coordinates of the current position.
+  BlockWords polar_line(const Block& b, BlockWords bw) const {
+    if (!centre) fail(b.column, "LP without a CC before it: the pole is not known");
+    if (bw.programmed[0] || bw.programmed[1]) fail(b.column, "LP with X or Y: a polar line gives PR and PA");
+    if (bw.polar_rad && bw.polar_step_rad) fail(b.column, "LP with both PA and IPA");
+    if (bw.polar_radius_mm && bw.polar_radius_step_mm) fail(b.column, "LP with both PR and IPR");
+    if (!known[0] || !known[1]) fail(b.column, "LP before X and Y are programmed: the polar start is not known");
+    const Eigen::Vector2d from = Eigen::Vector2d(pos[0], pos[1]) - *centre;
+    const double radius_mm = bw.polar_radius_mm.value_or(from.norm() + bw.polar_radius_step_mm.value_or(0.0));
+    const double angle_rad = bw.polar_rad.value_or(std::atan2(from.y(), from.x()) + bw.polar_step_rad.value_or(0.0));
+    bw.target[0] = centre->x() + radius_mm * std::cos(angle_rad);
+    bw.target[1] = centre->y() + radius_mm * std::sin(angle_rad);
+    bw.programmed[0] = bw.programmed[1] = bw.any_axis = true;
+    bw.polar_rad = bw.polar_step_rad = std::nullopt;
+    return bw;
+  }
+
+  void path_of(const Block& b, const BlockWords& given, cl::Location where) {
     const std::string& s = b.statement;
+    const BlockWords& bw = given;
     const std::optional<double> block_feed = bw.rapid ? std::nullopt : bw.feed;
-    if (s == "L") {
+    if (s == "L" || s == "LP") {
       if (!bw.any_axis) return;
       if (bw.radius_mm || bw.counter_clockwise || bw.polar_rad || bw.polar_step_rad)
         fail(b.column, "L with arc words (R, DR, PA, IPA): program C, CR or CP");
       const bool rotary_only = !bw.programmed[0] && !bw.programmed[1] && !bw.programmed[2];
       const ProgramPoint from = pos;
+      line_start = corner_join.value_or(from);  // (after RND / CHF the line starts where the corner joined it)
+      corner_join.reset();
       if (plane && rotary_only && position_known()) {  // in a plane: the linear axes stay, the tip moves
         pos = turned(pos, bw.target);
       } else {

@@ -20,13 +20,9 @@ struct Refusal {
 constexpr Refusal kStatements[] = {
     {"CYCL DEF",
      "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
-     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 203, 207, 208 and 241 are)",
+     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 201, 203, 207, 208, 240 and 241 are)",
      kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
-    {"RND", "a rounding between two contour elements is not read", "have the CAM system write the rounding as CR or C"},
-    {"CHF", "a chamfer between two contour elements is not read",
-     "have the CAM system write the chamfer as an L block"},
-    {"LP", "a line in polar coordinates is not read", "have the CAM system write Cartesian L blocks"},
     {"APPR", "an approach contour is not read", kPostCl},
     {"DEP", "a departure contour is not read", kPostCl},
     {"LN", "a line with a surface normal (3-D tool compensation) is not read", kPostCl},
@@ -71,7 +67,7 @@ std::string refused_statement(const Block& b) {
       return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
   }
   return fmt::format(
-      "'{}' is not a Klartext statement ncpost reads (L, C, CC, CR, CT, CP, TOOL CALL, M functions, "
+      "'{}' is not a Klartext statement ncpost reads (L, LP, C, CC, CR, CT, CP, RND, CHF, TOOL CALL, M functions, "
       "FUNCTION TCPM, PLANE, Q parameters, FN, LBL, CALL LBL); {}",
       shown, kPostCl);
 }

@@ -58,6 +58,7 @@ void Translator::collect(const ProgramLine& l, const Item& item, Words& w) {
           fail(l, item.column, *why);
         else
           w.iso.push_back("M" + item.text);
+        if (v == 3.0 || v == 4.0 || v == 5.0) spindle_direction_ = static_cast<int>(v);
         return;
       }
       return assignment(l, as_assign, w);
@@ -74,65 +75,12 @@ void Translator::collect(const ProgramLine& l, const Item& item, Words& w) {
 /// An address with a value (X10, X=IC(5), F=R1, CR=5, A3=0.7) or a variable assignment.
 void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
   const std::string& n = item.name;
-  const bool number = item.value.has_value();
-  if (int s = slot_of(n, "XYZ"); s >= 0 || slot_of(n, "ABC") >= 0 || slot_of(n, "IJK") >= 0) {
-    const auto [ref, expr] = number ? std::make_pair(Reference::modal, item.text) : referenced(item.text);
-    const double v = number ? *item.value : value(l, item.column, expr);
-    if (s >= 0) {
-      w.xyz[static_cast<std::size_t>(s)] = v;
-      w.xyz_ref[static_cast<std::size_t>(s)] = ref;
-      if (!w.any_linear() || w.axis_column == 1) w.axis_column = item.column;
-    } else if ((s = slot_of(n, "ABC")) >= 0) {
-      w.abc[static_cast<std::size_t>(s)] = v;
-      w.abc_ref[static_cast<std::size_t>(s)] = ref;
-    } else {
-      s = slot_of(n, "IJK");
-      if (ref == Reference::incremental)
-        fail(l, item.column, fmt::format("{}=IC(...): I J K are incremental already", n));
-      w.ijk[static_cast<std::size_t>(s)] = v;
-      w.ijk_absolute[static_cast<std::size_t>(s)] = ref == Reference::absolute;
-    }
-    return;
-  }
+  if (axis_address(l, item, w) || tool_name_address(l, item, w)) return;
   if (n == "A3" || n == "B3" || n == "C3") {
     w.orientation[static_cast<std::size_t>(n[0] - 'A')] = value(l, item.column, item.text);
     return;
   }
-  const std::string& t = item.text;
-  if (n == "T" && !number && t.size() > 2 && t.front() == '"' && t.back() == '"' &&
-      t.find_first_not_of("0123456789", 1) == t.size() - 1) {  // T="12": the tool number as a string
-    w.iso.push_back("T" + t.substr(1, t.size() - 2));
-    w.tool_name = "";
-    return;
-  }
-  if (n == "T" && !number && !item.text.empty() && item.text.front() == '"') {  // T="name" (tool management)
-    if (t.size() < 3 || t.back() != '"' || t.find('"', 1) != t.size() - 1)
-      fail(l, item.column, fmt::format("T={}: expected a tool name between quotes (T=\"NAME\")", t));
-    w.iso.push_back("T0");
-    w.tool_name = t.substr(1, t.size() - 2);
-    return;
-  }
-  if (n == "CR" || n == "F" || n == "S" || n == "T" || n == "D") {
-    const double v = number ? *item.value : value(l, item.column, item.text);
-    if (n == "F" && w.dwell_s)
-      w.dwell_s = v;  // G4 F: the dwell in seconds
-    else if (n == "F")
-      feed_ = v, w.iso.push_back(n + gcode::word_number(v));
-    else if (n == "CR")
-      w.radius = v;
-    else if (n == "D") {
-      if (v == 0.0)
-        w.iso.push_back("G49"), length_off_ = true;
-      else if (length_off_)
-        w.iso.push_back("G43"), length_off_ = false;
-    } else {
-      if (n != "F" && (v < 0 || v != std::floor(v)))
-        fail(l, item.column, fmt::format("{}: expected a whole number >= 0", n));
-      w.iso.push_back(n + gcode::word_number(v));
-      if (n == "T") w.tool_name = "";
-    }
-    return;
-  }
+  if (n == "CR" || n == "F" || n == "S" || n == "T" || n == "D") return value_address(l, item, w);
   if (values_.known(n)) {
     try {
       if (values_.string_value(n))
@@ -144,7 +92,71 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
     }
     return;
   }
-  fail(l, item.column, refused_address(n, number));
+  fail(l, item.column, refused_address(n, item.value.has_value()));
+}
+
+/// X Y Z, A B C, I J K (a number, an expression, IC() / AC()): false for other names.
+bool Translator::axis_address(const ProgramLine& l, const Item& item, Words& w) {
+  const std::string& n = item.name;
+  const bool number = item.value.has_value();
+  int s = slot_of(n, "XYZ");
+  if (s < 0 && slot_of(n, "ABC") < 0 && slot_of(n, "IJK") < 0) return false;
+  const auto [ref, expr] = number ? std::make_pair(Reference::modal, item.text) : referenced(item.text);
+  const double v = number ? *item.value : value(l, item.column, expr);
+  if (s >= 0) {
+    w.xyz[static_cast<std::size_t>(s)] = v;
+    w.xyz_ref[static_cast<std::size_t>(s)] = ref;
+    if (!w.any_linear() || w.axis_column == 1) w.axis_column = item.column;
+  } else if ((s = slot_of(n, "ABC")) >= 0) {
+    w.abc[static_cast<std::size_t>(s)] = v;
+    w.abc_ref[static_cast<std::size_t>(s)] = ref;
+  } else {
+    s = slot_of(n, "IJK");
+    if (ref == Reference::incremental)
+      fail(l, item.column, fmt::format("{}=IC(...): I J K are incremental already", n));
+    w.ijk[static_cast<std::size_t>(s)] = v;
+    w.ijk_absolute[static_cast<std::size_t>(s)] = ref == Reference::absolute;
+  }
+  return true;
+}
+
+/// T="12" (the tool number as a string) and T="name" (tool management): false for anything else.
+bool Translator::tool_name_address(const ProgramLine& l, const Item& item, Words& w) {
+  const std::string& t = item.text;
+  if (item.name != "T" || item.value || t.empty() || t.front() != '"') return false;
+  if (t.size() > 2 && t.back() == '"' && t.find_first_not_of("0123456789", 1) == t.size() - 1) {
+    w.iso.push_back("T" + t.substr(1, t.size() - 2));
+    w.tool_name = "";
+    return true;
+  }
+  if (t.size() < 3 || t.back() != '"' || t.find('"', 1) != t.size() - 1)
+    fail(l, item.column, fmt::format("T={}: expected a tool name between quotes (T=\"NAME\")", t));
+  w.iso.push_back("T0");
+  w.tool_name = t.substr(1, t.size() - 2);
+  return true;
+}
+
+/// CR, F (G4 F: the dwell), S, T, D (D0: no tool length, G49) with a number or an expression.
+void Translator::value_address(const ProgramLine& l, const Item& item, Words& w) {
+  const std::string& n = item.name;
+  const double v = item.value ? *item.value : value(l, item.column, item.text);
+  if (n == "F" && w.dwell_s) {
+    w.dwell_s = v;  // G4 F: the dwell in seconds
+  } else if (n == "F") {
+    feed_ = v, w.iso.push_back(n + gcode::word_number(v));
+  } else if (n == "CR") {
+    w.radius = v;
+  } else if (n == "D") {
+    if (v == 0.0)
+      w.iso.push_back("G49"), length_off_ = true;
+    else if (length_off_)
+      w.iso.push_back("G43"), length_off_ = false;
+  } else {
+    if (v < 0 || v != std::floor(v)) fail(l, item.column, fmt::format("{}: expected a whole number >= 0", n));
+    w.iso.push_back(n + gcode::word_number(v));
+    if (n == "T") w.tool_name = "";
+    if (n == "S") spindle_rpm_ = v;
+  }
 }
 
 void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {

@@ -175,6 +175,7 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
 /// the G-code reader gives as a cl::Cycle; otherwise those motions.
 void Translator::drill(const ProgramLine& l, const Drilling& d) {
   if (plane_ != 17) fail(l, 1, fmt::format("{} under G{}: only G17 (drilling along Z) is read", d.name, plane_));
+  if (d.tap != Drilling::Tap::none) return tap(l, d);
   if (d.name != "CYCLE81" && d.name != "CYCLE82") return expand_hole(l, d);
   const Eigen::Vector3d at = current_prog(l, 1);
   if (!base_known_[0] || !base_known_[1]) fail(l, 1, fmt::format("{}: X and Y of the hole are not known", d.name));

@@ -59,6 +59,7 @@ void Translator::hole_parameters(const ProgramLine& l, const Item& item, const A
     fail(l, item.column,
          fmt::format("{}: DTB={} (a dwell in spindle turns) is not read; give seconds", item.name, d.dwell_s));
   if (item.name == "CYCLE83") return deep_hole_parameters(l, item, args, d);
+  if (item.name == "CYCLE84" || item.name == "CYCLE840") return tap_parameters(l, item, args, d);
   if (item.name == "CYCLE85") {
     unread_after(8, "RTP, RFP, SDIS, DP, DPR, DTB, FFR, RFF");
     d.feed_in = num(6), d.feed_out = num(7);

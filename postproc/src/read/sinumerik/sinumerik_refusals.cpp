@@ -112,8 +112,6 @@ constexpr NameEntry kRefused[] = {
     {"TCARR", "a tool carrier selected by the program"},
     {"TOFRAME", "a frame along the tool"},
     {"PAROT", "a frame aligned with the workpiece"},
-    {"CYCLE84", "rigid tapping"},
-    {"CYCLE840", "tapping with compensating chuck"},
     {"SPOS", "spindle positioning"},
     {"OFFN", "contour offset"},
     {"CUT3DC", "3-D radius compensation"},
@@ -125,7 +123,7 @@ constexpr NameEntry kRefused[] = {
 }  // namespace
 
 bool is_hole_cycle(const std::string& name) {
-  for (const char* n : {"CYCLE81", "CYCLE82", "CYCLE83", "CYCLE85", "CYCLE86"})
+  for (const char* n : {"CYCLE81", "CYCLE82", "CYCLE83", "CYCLE84", "CYCLE840", "CYCLE85", "CYCLE86"})
     if (name == n) return true;
   return false;
 }

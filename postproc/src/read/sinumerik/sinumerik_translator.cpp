@@ -308,7 +308,7 @@ void Translator::return_from_unit() {
   calls_.pop_back();
 }
 
-/// MCALL CYCLE81(...) ... CYCLE86(...): the hole after every following motion; MCALL alone ends it.
+/// MCALL CYCLE81(...) ... CYCLE86(...) (also CYCLE84/840): the hole after every following motion; MCALL alone ends it.
 void Translator::modal_call(const ProgramLine& l) {
   if (l.block.rest.empty()) {
     mcall_.reset();
@@ -322,7 +322,7 @@ void Translator::modal_call(const ProgramLine& l) {
   }
   if (called.items.size() != 1 || called.items[0].kind != Item::Kind::call || !is_hole_cycle(called.items[0].name))
     fail(l, l.block.rest_column,
-         "MCALL of a subprogram or of a cycle other than CYCLE81, 82, 83, 85 or 86 is not read");
+         "MCALL of a subprogram or of a cycle other than CYCLE81, 82, 83, 84, 840, 85 or 86 is not read");
   Item item = called.items[0];
   item.column += l.block.rest_column - 1;
   mcall_ = drilling(l, item);

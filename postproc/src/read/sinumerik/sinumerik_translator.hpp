@@ -15,7 +15,7 @@
 //   - CYCLE800 positions the rotary axes (the solution for the plane's normal, _DIR choosing
 //     between two) and reads what follows as tool-tip positions in the swivelled plane;
 //   - CYCLE81/CYCLE82 (also under MCALL) become G81/G82 or their motions; CYCLE83/85/86 become
-//     their motions (sinumerik_holes.cpp);
+//     their motions (sinumerik_holes.cpp); CYCLE84/840 the tap G84/G74 (sinumerik_taps.cpp);
 //   - SUPA blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
 //   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
 //     puts into the tool change (cl::ToolChange::name).
@@ -63,9 +63,15 @@ struct Drilling {
   double anticipation = 0.0;           ///< (VARI=1) the rapid re-entry stops this far above the last bottom
   double top_dwell_s = 0.0;            ///< DTS (VARI=1): at the safety plane
   double final_dwell_s = 0.0;          ///< _DTD, else DTB: at the final depth
-  // CYCLE85: the feeds in and out; CYCLE86: the spindle after the cycle (3: M3, 4: M4)
+  // CYCLE85: the feeds in and out; CYCLE86, CYCLE84, CYCLE840: the spindle after the cycle (3: M3, 4: M4, 5: M5)
   double feed_in = 0.0, feed_out = 0.0;
   int spindle_after = 0;
+  // CYCLE84 / CYCLE840 (sinumerik_taps.cpp)
+  enum class Tap { none, rigid, floating } tap = Tap::none;
+  double pitch_mm = 0.0;      ///< signed: > 0 right-hand (CYCLE840 without encoder: 0, the F before)
+  double tap_rpm = 0.0;       ///< CYCLE84 SST
+  bool with_encoder = false;  ///< CYCLE840 ENC=0
+  int retract_spindle = 0;    ///< CYCLE840 SDR (0: reversed)
 };
 
 class Translator {
@@ -112,6 +118,9 @@ class Translator {
   void g_word(const ProgramLine& l, const Item& item, Words& w);
   void named(const ProgramLine& l, const Item& item, Words& w);
   void assignment(const ProgramLine& l, const Item& item, Words& w);
+  bool axis_address(const ProgramLine& l, const Item& item, Words& w);
+  bool tool_name_address(const ProgramLine& l, const Item& item, Words& w);
+  void value_address(const ProgramLine& l, const Item& item, Words& w);
   void called(const ProgramLine& l, const Item& item, Words& w);
   void write_block(const ProgramLine& l, Words& w);
   void frame_statement(const ProgramLine& l);
@@ -146,6 +155,13 @@ class Translator {
   void deep_hole_motions(const ProgramLine& l, const Drilling& d, const Eigen::Vector3d& at);
   void hole_move(const ProgramLine& l, const Eigen::Vector3d& at, const char* g, double z, double feed);
 
+  // CYCLE84/840 (sinumerik_taps.cpp)
+  double tap_pitch(const ProgramLine& l, const Item& item, const Arguments& args, std::size_t mpit, std::size_t pit,
+                   std::size_t unit) const;
+  void tap_parameters(const ProgramLine& l, const Item& item, const Arguments& args, Drilling& d) const;
+  bool tap_left_hand(const ProgramLine& l, const Drilling& d) const;
+  void tap(const ProgramLine& l, const Drilling& d);
+
   [[noreturn]] void fail(const ProgramLine& l, int column, const std::string& what) const;
   void notice_once(const ProgramLine& l, const std::string& key, const std::string& what);
   void emit(const ProgramLine& l, std::string text);
@@ -168,13 +184,15 @@ class Translator {
   // modal state
   int motion_ = -1;  ///< 0 1 2 3 (G0..G3); -1 none yet
   int plane_ = 17;
-  bool incremental_ = false;  ///< G91
-  bool traori_ = false;       ///< TRAORI programmed
-  bool swivel_tip_ = false;   ///< CYCLE800 made the reader take tool-tip positions
-  bool length_off_ = false;   ///< D0 in force
-  bool inch_ = false;         ///< G70/G700 in force (lengths in inch)
-  int feed_mode_ = 94;        ///< G93 G94 G95
-  double feed_ = 0.0;         ///< F as last programmed (0: none yet)
+  bool incremental_ = false;   ///< G91
+  bool traori_ = false;        ///< TRAORI programmed
+  bool swivel_tip_ = false;    ///< CYCLE800 made the reader take tool-tip positions
+  bool length_off_ = false;    ///< D0 in force
+  bool inch_ = false;          ///< G70/G700 in force (lengths in inch)
+  int feed_mode_ = 94;         ///< G93 G94 G95
+  double feed_ = 0.0;          ///< F as last programmed (0: none yet)
+  double spindle_rpm_ = 0.0;   ///< S as last programmed (0: none yet)
+  int spindle_direction_ = 0;  ///< 3 4 5 as last programmed by M3 M4 M5 (0: none yet)
   Frame programmable_;
   Frame swivel_;
   Eigen::Vector3d base_ = Eigen::Vector3d::Zero();  ///< the last position in W (program unit)

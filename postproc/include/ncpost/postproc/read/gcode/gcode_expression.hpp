@@ -95,6 +95,7 @@ class Evaluator {
  private:
   ParamValue binary(std::string_view line, std::size_t& at, int level) const;
   ParamValue function(std::string_view line, std::size_t& at, const std::string& name, std::size_t start) const;
+  ParamValue exists(std::string_view line, std::size_t& at, std::size_t start) const;
   const Parameters& params_;
 };
 

@@ -199,12 +199,21 @@ class Interpreter {
   void apply_motion_mode(const Codes& codes, BlockEffect& fx);
   void read_cycle_words(const Context& cx, const Words& w, const Codes& codes);
   void apply_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  /// The columns a motion's messages point at: the first axis word (else the block) and the first axis word.
+  struct AxisColumns {
+    int first_or_block = 0;
+    int first_axis = 0;
+  };
+  void machine_coordinates_motion(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
+  void intermediate_motion(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
+  void programmed_motion(const Context& cx, const Words& w, const Codes& codes, AxisColumns columns, BlockEffect& fx);
   void read_dwell(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   double dwell_seconds(const Context& cx, const Words& w, char letter, std::string_view code);
   void note_reference_return(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void note_machine_coordinates(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   ProgramPoint motion_end(const Context& cx, const Words& w, int axis_column, BlockEffect& fx);
   void read_arc(const Context& cx, const Words& w, const Codes& codes, const ProgramPoint& end, BlockEffect& fx);
+  std::string not_modal_hint() const;
   void apply_stop(const Context& cx, const Codes& codes, BlockEffect& fx);
   void apply_call(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
 
