@@ -248,8 +248,9 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 PLANE RESET MOVE DIST50 F1000\n", "PLANE RESET MOVE DIST: a swivel about a point");
   refused("3 CYCL DEF 200 DRILLING ~\n  Q200=2 ;SET-UP CLEARANCE ~\n  Q201=-10 ;DEPTH\n", "CYCL DEF 200");
   refused("3 PLANE RELATIV SPA+10 STAY\n", "PLANE RELATIV is not read");
-  refused("3 PLANE PROJECTED PROPR+90 PROMIN+0 PROROT+0 STAY\n", "a projection angle of 90 deg gives no plane");
-  refused("3 PLANE PROJECTED PROPR+0 PROMIN+45 ROT+0 PROROT+0 STAY\n", "PLANE PROJECTED with both ROT and PROROT");
+  refused("3 PLANE PROJECTED PROPR+90 PROMIN+0 PROROT+0 STAY\n", "the sign convention of those angles");
+  refused("3 PLANE PROJECTED PROPR+20 PROMIN+30 ROT+15 STAY\n", "PLANE PROJECTED with a projection angle");
+  refused("3 PLANE PROJECTED PROPR+0 PROMIN+0 ROT+0 PROROT+0 STAY\n", "PLANE PROJECTED with both ROT and PROROT");
   refused("3 PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+10 P2Y+0 P2Z+0 P3X+20 P3Y+0 P3Z+0 STAY\n",
           "PLANE POINTS: the three points lie on one line");
   refused("3 RND R5\n", "RND without a straight line in X Y at a feed (L or LP) just before it");

@@ -74,6 +74,12 @@ std::variant<Mat3d, std::string> frame_of(const std::string& kind, const std::ma
                  rot(Vec3d::UnitZ(), deg("EULROT")));
   if (kind == "PLANE POINTS") return points_frame(v);
   if (kind == "PLANE PROJECTED") {
+    // the sign of the projection angles is the manual's figure, not confirmed on a control: a
+    // mirrored plane would be a wrong program, so only the rotation alone is read
+    if (get("PROPR") != 0.0 || get("PROMIN") != 0.0)
+      return std::string(
+          "PLANE PROJECTED with a projection angle (PROPR, PROMIN) is not read: the sign convention of those "
+          "angles is not confirmed against a control; have the CAM system write PLANE SPATIAL or PLANE VECTOR");
     if (v.count("ROT") && v.count("PROROT"))
       return std::string("PLANE PROJECTED with both ROT and PROROT (the rotation about the tilted tool axis)");
     return projected_frame(deg("PROPR"), deg("PROMIN"), deg(v.count("ROT") ? "ROT" : "PROROT"));
