@@ -17,6 +17,20 @@ using ncpost::test::read_text_file;
 using ncpost::test::run_ncpost;
 using ncpost::test::source;
 
+namespace {
+
+/// `ncpost identify` on the public-clean measurements into `model` (the worked example's first step);
+/// what it printed.
+std::string identify_public_clean(const std::string& model, const std::string& log) {
+  const std::string S = data("scenarios/public-clean/");
+  REQUIRE(run_ncpost("identify --machine " + S + "machine.toml -o " + model + " " + S + "ballbar_h250.csv " + S +
+                         "ballbar_h300.csv " + S + "sphere.csv",
+                     log) == 0);
+  return read_text_file(log);
+}
+
+}  // namespace
+
 TEST_CASE("README, Conventions / worked example: the hemisphere with one block per CL motion", "[readme][cli]") {
   const std::string dir = ncpost::test::make_temp_dir("readme_hemisphere");
   const std::string log = dir + "/post.log";
@@ -67,10 +81,7 @@ TEST_CASE("README, worked example: measure, identify, post compensated, cut on t
   const std::string dir = ncpost::test::make_temp_dir("readme_public_clean");
   const std::string S = data("scenarios/public-clean/");
   const std::string model = dir + "/model.json", log = dir + "/run.log";
-  REQUIRE(run_ncpost("identify --machine " + S + "machine.toml -o " + model + " " + S + "ballbar_h250.csv " + S +
-                         "ballbar_h300.csv " + S + "sphere.csv",
-                     log) == 0);
-  const std::string identified = read_text_file(log);
+  const std::string identified = identify_public_clean(model, log);
   INFO(identified);
   // residual 43.5 -> 0.62 µm rms over all sets
   CHECK_THAT(identified, Catch::Matches("[\\s\\S]*\\n  all +43\\.5\\d / [0-9.]+ +0\\.6[12]\\d / [\\s\\S]*"));
@@ -135,9 +146,7 @@ TEST_CASE("README, worked example: a Heidenhain and a Sinumerik program re-poste
   const std::string dir = ncpost::test::make_temp_dir("readme_programs_in");
   const std::string S = data("scenarios/public-clean/");
   const std::string model = dir + "/model.json", log = dir + "/run.log";
-  REQUIRE(run_ncpost("identify --machine " + S + "machine.toml -o " + model + " " + S + "ballbar_h250.csv " + S +
-                         "ballbar_h300.csv " + S + "sphere.csv",
-                     log) == 0);
+  identify_public_clean(model, log);
   const std::string machine = "--machine " + S + "machine.toml --workpiece-origin 0,0,80 ";
   // the dome as the controls' programs: Klartext with M128 (tool tip and A C), Sinumerik in machine axes
   REQUIRE(run_ncpost("post " + machine + "--dialect heidenhain --rtcp -o " + dir + "/dome.h " + S + "path.cls", log) ==

@@ -161,13 +161,19 @@ std::string join(const std::vector<int>& v) {
 
 }  // namespace
 
-TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line") {
+namespace {
+
+/// Posts each file of expected.json of `kind` whose place among the files of that kind is `part`
+/// modulo `parts` (the corpus in a few test cases, which CTest runs side by side), and checks it.
+void check_real_corpus(const std::string& kind, int part, int parts) {
   const json manifest = json::parse(ncpost::test::read_text_file(ncpost::test::data("real/expected.json")));
   REQUIRE(manifest.at("files").size() >= 15);
   const double tolerance_mm = manifest.at("tolerance_mm").get<double>();
   const std::string dir = temp_dir();
 
+  int place = -1;
   for (const json& e : manifest.at("files")) {
+    if (e.at("kind") != kind || ++place % parts != part) continue;
     const std::string file = e.at("file").get<std::string>();
     DYNAMIC_SECTION(file) {
       const std::vector<double> o = e.at("workpiece_origin").get<std::vector<double>>();
@@ -292,4 +298,19 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
       }
     }
   }
+}
+
+}  // namespace
+
+TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: CL files") {
+  check_real_corpus("apt", 0, 1);
+}
+TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: NC programs, 1 of 3") {
+  check_real_corpus("gcode", 0, 3);
+}
+TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: NC programs, 2 of 3") {
+  check_real_corpus("gcode", 1, 3);
+}
+TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: NC programs, 3 of 3") {
+  check_real_corpus("gcode", 2, 3);
 }

@@ -109,11 +109,11 @@ struct InputPath {
     return p;
   }
 
-  /// The distance from p: exact for a line; for an arc the nearest of fine samples, refined.
+  /// The distance from p: exact for a line; for an arc the nearest of samples 1/32 rad apart (the
+  /// distance to a circle or helix has one minimum within each such bracket), refined.
   double distance(const V3& p) const {
     if (!arc) return from_segment(p, from, to);
-    const double length = std::abs(sweep) * std::max(r0, r1) + (to - from).norm();
-    const int n = std::clamp(static_cast<int>(length / 0.2), 16, 4096);
+    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(sweep) * 32.0)), 16, 4096);
     int best = 0;
     double best_d = 1e300;
     for (int i = 0; i <= n; ++i) {
