@@ -530,3 +530,16 @@ TEST_CASE("gcode reader: ':' program numbers and labels (ISO O address) move not
   REQUIRE(ms.size() == 1);
   check_tip(ms[0], 1, 2, 3);
 }
+
+TEST_CASE("gcode reader: a coordinate with leading zeros and no decimal point (tape format) is refused") {
+  // X0019685 is 1.9685 in on a Fanuc reading least increments (0.0001 in), 19685 in as whole units:
+  // neither reading is the program's to choose, so it is refused naming the word
+  const InputError e = error_of("G20 G90\nG0 X0019685 Y-0008937 Z1. A0 C0\nG1 Z-.1 F10.\nM30\n");
+  CHECK(e.where().line == 2);
+  CHECK(e.where().column == 4);
+  CHECK_THAT(e.detail(), Catch::StartsWith("X0019685: a number without a decimal point but with leading zeros"));
+  // whole numbers without leading zeros, and zeros, are read as they are written
+  const std::vector<cl::Motion> m = motions("G21 G90\nG0 X20 Y00 Z5 A0 C0\nG1 Z-1 F100\nM30\n");
+  REQUIRE(m.size() == 2);
+  check_tip(m[1], 20, 0, -1);
+}

@@ -418,9 +418,33 @@ struct Interpreter::Codes {
   bool is(int g, int code10) const { return in(g) && of(g).code10 == code10; }
 };
 
+namespace {
+
+/// A coordinate written without a decimal point but with leading zeros (`X0019685`) is a fixed-format
+/// (tape) value: where its decimal point stands is the control's input format (on a Fanuc, least
+/// increments), not the program's; read as whole units it would be thousands of times too large.
+void refuse_tape_format(const Block& block, std::string_view line, const Fail& fail) {
+  constexpr std::string_view kCoordinates = "XYZIJKRABCUVW";
+  for (const Word& word : block.words) {
+    if (word.has_point || word.value == 0.0 || kCoordinates.find(word.letter) == std::string_view::npos) continue;
+    std::size_t at = static_cast<std::size_t>(word.column);  // the character after the letter (1-based column)
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '+' || line[at] == '-')) ++at;
+    if (!(at + 1 < line.size() && line[at] == '0' && line[at + 1] >= '0' && line[at + 1] <= '9')) continue;
+    std::size_t end = at;
+    while (end < line.size() && line[end] >= '0' && line[end] <= '9') ++end;
+    fail(word.column, fmt::format("{}{}: a number without a decimal point but with leading zeros is a fixed-format "
+                                  "(tape) value whose decimal place the control's input format sets (on a Fanuc, "
+                                  "least increments): not read; write the program with decimal points",
+                                  word.letter, line.substr(at, end - at)));
+  }
+}
+
+}  // namespace
+
 void Interpreter::apply(const Block& block, int line_number, std::string_view line, BlockEffect& fx) {
   fx.clear();
   const Context cx{block, line_number, Fail{file_, line_number, line}};
+  refuse_tape_format(block, line, cx.fail);
   const Words w = read_words(cx);
   Codes codes;
   group_g_codes(cx, w, codes);
