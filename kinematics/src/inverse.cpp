@@ -67,6 +67,23 @@ RotaryLayout layout_of(const Machine& m) {
   return l;
 }
 
+/// The vectors the outer (d1) and inner (d2) rotations relate to the tool axis v between them:
+/// v·d1 = plane1·d1 and v·d2 = plane2·d2 (see the header).
+struct LayoutPlanes {
+  Vec3d plane1, plane2;
+};
+LayoutPlanes planes_of(const RotaryLayout& l, const Vec3d& u) {
+  const Vec3d ez = Vec3d::UnitZ();
+  switch (l.kind) {
+    case RotaryLayout::head_head:  // R1 R2 e_z = u ; v = R2 e_z = R1^T u
+      return {u, ez};
+    case RotaryLayout::table_table:  // R1 R2 u = e_z ; v = R2 u = R1^T e_z
+    case RotaryLayout::head_table:   // Rt e_z = Rw u ; v = Rt e_z = Rw u (outer = head, inner = table)
+      break;
+  }
+  return {ez, u};
+}
+
 }  // namespace
 
 std::optional<double> angle_about(const Vec3d& d, const Vec3d& from, const Vec3d& to, double tolerance) {
@@ -114,22 +131,8 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   const Vec3d d1 = m.rotary(l.outer).direction;
   const Vec3d d2 = m.rotary(l.inner).direction;
   // Tool-axis direction v between the rotations, and the vectors it relates (see header).
-  Vec3d from2, to1, plane2_vec, plane1_vec;
-  switch (l.kind) {
-    case RotaryLayout::table_table:  // R1 R2 u = e_z ; v = R2 u = R1^T e_z
-      plane2_vec = u;
-      plane1_vec = ez;
-      break;
-    case RotaryLayout::head_head:  // R1 R2 e_z = u ; v = R2 e_z = R1^T u
-      plane2_vec = ez;
-      plane1_vec = u;
-      break;
-    case RotaryLayout::head_table:  // Rt e_z = Rw u ; v = Rt e_z = Rw u (outer = head, inner = table)
-      plane2_vec = u;
-      plane1_vec = ez;
-      break;
-  }
-  const auto vs = sphere_plane_plane(d2, plane2_vec.dot(d2), d1, plane1_vec.dot(d1), tolerance);
+  const LayoutPlanes p = planes_of(l, u);
+  const auto vs = sphere_plane_plane(d2, p.plane2.dot(d2), d1, p.plane1.dot(d1), tolerance);
   const double free_tol = 1e-9;
   for (const Vec3d& v : vs) {
     RotarySolution s;
@@ -172,9 +175,8 @@ bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W) {
   if (m.rotary_count() == 0) return false;
   if (m.rotary_count() == 1) return along(ez, m.rotary(0).direction) || along(u, m.rotary(0).direction);
   const RotaryLayout l = layout_of(m);
-  const bool head_head = l.kind == RotaryLayout::head_head;
-  return along(head_head ? u : ez, m.rotary(l.outer).direction) ||
-         along(head_head ? ez : u, m.rotary(l.inner).direction);
+  const LayoutPlanes p = planes_of(l, u);
+  return along(p.plane1, m.rotary(l.outer).direction) || along(p.plane2, m.rotary(l.inner).direction);
 }
 
 Vec3d linear_for(const Machine& m, const RotaryAngles& rotary_rad, const Vec3d& tip_W, const Setup& setup) {

@@ -31,7 +31,9 @@ Poster::Poster(const std::string& input, const KinematicModel& solver, SolverDat
 PostSummary Poster::run(cl::Reader& reader) {
   writer_.begin_program(options_.program_name, options_.header_comments);
   std::optional<Lookahead> ahead;
-  if (options_.threads > 1) ahead.emplace(reader, solver_, options_.subdivide ? &options_.subdivide : nullptr);
+  // (the post cuts motions with its subdivider except under RTCP: write_motion)
+  const Subdivider* cutter = options_.subdivide && !options_.rtcp ? &options_.subdivide : nullptr;
+  if (options_.threads > 1) ahead.emplace(reader, solver_, cutter, options_.subdivide_rapids);
   // the next record from the input: read ahead (2 threads) or read here, errors kept in place
   const Fetch fetch = [&]() -> AheadItem { return ahead ? ahead->next() : read_item(reader); };
   for (;;) {

@@ -34,10 +34,11 @@ void BatchQueue::stop() {
   changed_.notify_all();
 }
 
-Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter)
+Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter, bool cut_rapids)
     : reader_(reader),
       solver_(solver),
       cutter_(cutter && *cutter && solver.concurrent() ? cutter : nullptr),
+      cut_rapids_(cut_rapids),
       reading_([this] { read(); }),
       solving_([this] { solve(); }) {
   if (cutter_) cutting_ = std::thread([this] { cut(); });
@@ -125,7 +126,8 @@ void Lookahead::cut() {
   relay(solved_, cut_, [&](AheadItem& item) {
     if (!item.solved || !item.solved->ik.ok()) return;  // (records that move nothing among them)
     const SolvedPoint to{item.solved->cl, *item.solved->ik.position, item.solved->ik.executed};
-    if (before && before->q == item.solved->previous) {
+    const cl::Motion& m = std::get<cl::Motion>(*item.record);  // (only motions are solved ahead)
+    if (before && before->q == item.solved->previous && (cut_rapids_ || !(m.rapid || m.from))) {
       try {
         item.cut = AheadCut{*before, to, (*cutter_)(*before, to, cutting_data_)};
       } catch (...) {

@@ -99,9 +99,11 @@ class Lookahead {
 
   /// Starts reading. `reader`, `solver` and `cutter` must outlive the object. Motions are solved
   /// ahead only for a solver that is concurrent(); otherwise the records are only read ahead. With
-  /// a `cutter` (the post's subdivider; nullptr: none) a fourth stage cuts each motion solved ahead
-  /// from the one before it, on a thread of its own.
-  Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter = nullptr);
+  /// a `cutter` (the post's subdivider where it cuts motions; nullptr: none) a fourth stage cuts
+  /// each motion solved ahead from the one before it, on a thread of its own; rapids (and FROM) only
+  /// with `cut_rapids`, as the post cuts them.
+  Lookahead(cl::Reader& reader, const KinematicModel& solver, const Subdivider* cutter = nullptr,
+            bool cut_rapids = false);
   ~Lookahead();  ///< stops the threads (also when the post failed half-way)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
@@ -117,6 +119,7 @@ class Lookahead {
   cl::Reader& reader_;
   const KinematicModel& solver_;
   const Subdivider* cutter_;  ///< nullptr: no cutting stage
+  bool cut_rapids_;
   /// the solver's working data on the solving thread (that thread's only), and on the cutting
   /// thread: each on cache lines of its own (both are written at every solve)
   alignas(64) SolverData solving_data_;

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "ncpost/postproc/read/gcode/gcode_control_words.hpp"
+#include "read/char_scan.hpp"
 #include "read/gcode/gcode_tool_offsets.hpp"
 
 namespace ncpost::gcode {
@@ -429,9 +430,9 @@ void refuse_tape_format(const Block& block, std::string_view line, const Fail& f
     if (word.has_point || word.value == 0.0 || kCoordinates.find(word.letter) == std::string_view::npos) continue;
     std::size_t at = static_cast<std::size_t>(word.column);  // the character after the letter (1-based column)
     while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '+' || line[at] == '-')) ++at;
-    if (!(at + 1 < line.size() && line[at] == '0' && line[at + 1] >= '0' && line[at + 1] <= '9')) continue;
+    if (!(at + 1 < line.size() && line[at] == '0' && is_digit(line[at + 1]))) continue;
     std::size_t end = at;
-    while (end < line.size() && line[end] >= '0' && line[end] <= '9') ++end;
+    while (end < line.size() && is_digit(line[end])) ++end;
     fail(word.column, fmt::format("{}{}: a number without a decimal point but with leading zeros is a fixed-format "
                                   "(tape) value whose decimal place the control's input format sets (on a Fanuc, "
                                   "least increments): not read; write the program with decimal points",
