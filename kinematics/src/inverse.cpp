@@ -33,6 +33,7 @@ SmallList<Vec3d, 2> sphere_plane_plane(const Vec3d& a_dir, double a, const Vec3d
 }
 
 double wrap_pi(double a) {
+  if (a > -kPi && a <= kPi) return a;  // (what remainder() returns for these: atan2's results are)
   a = std::remainder(a, 2.0 * kPi);
   return a <= -kPi ? a + 2.0 * kPi : a;
 }
@@ -161,16 +162,15 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
   return out;
 }
 
-bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W) {
+bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W, double clear_rad) {
   // An angle is free where angle_about() gets a projection under 1e-9: one of its two vectors along
   // its axis. Per layout these are (plane1_vec or v along d1) and (plane2_vec or v along d2), and v
   // makes the same angle with d1 (d2) as plane1_vec (plane2_vec) does, up to the reach tolerance's
-  // rounding (< 1e-9 in the cosine): 1 mrad leaves a wide margin.
-  constexpr double kClearRad = 1e-3;
+  // rounding (< 1e-9 in the cosine): the default 1 mrad leaves a wide margin.
   const Vec3d& u = axis_W;  // (unnormalised: the test divides by the lengths)
   const Vec3d ez = Vec3d::UnitZ();
-  auto along = [](const Vec3d& a, const Vec3d& d) {
-    return a.cross(d).squaredNorm() < kClearRad * kClearRad * a.squaredNorm() * d.squaredNorm();
+  auto along = [clear_rad](const Vec3d& a, const Vec3d& d) {
+    return a.cross(d).squaredNorm() < clear_rad * clear_rad * a.squaredNorm() * d.squaredNorm();
   };
   if (m.rotary_count() == 0) return false;
   if (m.rotary_count() == 1) return along(ez, m.rotary(0).direction) || along(u, m.rotary(0).direction);

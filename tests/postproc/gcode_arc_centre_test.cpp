@@ -16,6 +16,7 @@
 #include "cli_run.hpp"
 #include "ncpost/machines/machine_file.hpp"
 #include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 
 using namespace ncpost;
@@ -218,9 +219,8 @@ TEST_CASE("gcode arc centre: G90.1 and G91.1 beside a --arc-centre they contradi
 }
 
 TEST_CASE("gcode arc centre: ncpost post --arc-centre centre-to-start writes the arc with RS274 I J") {
-  char pattern[] = "/tmp/ncpost_arc_centre_XXXXXX";
-  const char* dir = mkdtemp(pattern);
-  REQUIRE(dir);
+  const std::string dir = ncpost::test::make_temp_dir("ncpost_arc_centre");
+  REQUIRE(dir != ".");
   const std::string program = std::string(dir) + "/c2s.ngc";
   std::ofstream(program) << "G21 G90 G17\nG0 X10 Y0 Z10 A0 C0\nG1 Z0 F100\nG3 X0 Y10 I10 J0\nG0 Z10\nM30\n";
   const std::string out = std::string(dir) + "/out.nc", log = std::string(dir) + "/log";

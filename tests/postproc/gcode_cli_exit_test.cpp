@@ -9,14 +9,14 @@
 #include <string>
 
 #include "cli_run.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 
 namespace {
 
 std::string temp_dir() {
-  char pattern[] = "/tmp/ncpost_gcode_cli_XXXXXX";
-  const char* dir = mkdtemp(pattern);
-  REQUIRE(dir);
+  const std::string dir = ncpost::test::make_temp_dir("ncpost_gcode_cli");
+  REQUIRE(dir != ".");
   return dir;
 }
 

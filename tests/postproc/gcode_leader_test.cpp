@@ -12,6 +12,7 @@
 #include "cl_records.hpp"
 #include "cli_run.hpp"
 #include "shipped_machines.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 #include "text_file.hpp"
 #include "ncpost/postproc/read/gcode/gcode_cl_reader.hpp"
@@ -114,10 +115,8 @@ TEST_CASE("gcode leader: a program that moves nothing while the file has motion 
 }
 
 TEST_CASE("gcode leader: the issue 27.5 reproducer through the executable is never exit 0 with 0 motions") {
-  char pattern[] = "/tmp/ncpost_gcode_leader_XXXXXX";
-  const char* dir_c = mkdtemp(pattern);
-  REQUIRE(dir_c);
-  const std::string dir = dir_c;
+  const std::string dir = ncpost::test::make_temp_dir("ncpost_gcode_leader");
+  REQUIRE(dir != ".");
   const auto post = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir + "/" + name) << text;
     return test::run_ncpost("post --machine " + test::source("machines/vmcl600.toml") + " -o " + dir + "/" + name +

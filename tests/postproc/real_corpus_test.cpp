@@ -29,6 +29,7 @@
 
 #include "cli_run.hpp"
 #include "reposted_tips.hpp"
+#include "temp_dir.hpp"
 #include "test_paths.hpp"
 
 namespace {
@@ -124,11 +125,7 @@ ProgramRecords read_program(const std::string& text) {
 /// The G-code number of a manifest word such as "G83".
 int gnumber(const std::string& word) { return std::stoi(word.substr(1)); }
 
-std::string temp_dir() {
-  char pattern[] = "/tmp/ncpost_real_corpus_XXXXXX";
-  const char* dir = mkdtemp(pattern);
-  return dir ? dir : ".";
-}
+std::string temp_dir() { return ncpost::test::make_temp_dir("ncpost_real_corpus"); }
 
 /// The tests' control for a G-code input: the work offsets at zero (W is the program's frame: the
 /// corpus gives no offset values; a program's own G10 L2 sets them), the program's axis letters

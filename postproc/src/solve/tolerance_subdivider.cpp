@@ -22,6 +22,10 @@ constexpr double kSingularJumpRad = 1e-3;   ///< a rotary change above this ...
 constexpr double kSingularPaceFactor = 10;  ///< ... and this many times the block's own pace is a swing
 constexpr double kTurnAxisDriftRad = 1e-3;  ///< the turn may tilt the tool axis this little (near-singular)
 constexpr int kMaxTurnBlocks = 4096;
+/// A start whose tool axis is this far (rad) from every singular pose cannot swing: the free angle
+/// moves about (axis change) / sin(distance), under 20 times the axis's own change here, while the
+/// probes look for a change of >= 1 mrad within the first 1e-6 of the block (axis change <= 3.2 µrad).
+constexpr double kSwingClearRad = 0.05;
 
 /// `words` with `value` as printed by "{}" replaced by its 4 significant digits (the compensation
 /// library prints the inner tolerance in full).
@@ -63,6 +67,7 @@ std::optional<RotaryAngles> exactly_singular_swing(const Machine& machine, const
 /// axis turns). nullopt: no such swing.
 std::optional<RotaryAngles> near_singular_swing(const Machine& machine, const KinematicModel& solver, SolverData& data,
                                                 const SolvedPoint& from, const SolvedPoint& to) {
+  if (!may_have_free_rotary(machine, from.cl.axis, kSwingClearRad)) return std::nullopt;  // (most blocks)
   const ClPoint probe = nonlinear::cl_at(from.cl, to.cl, kSingularProbeT[0]);
   // cheap screen on the nominal closed form (no linear axes): does any rotary solution just after
   // the start lie near the start's angles?

@@ -63,9 +63,10 @@ struct RotarySolution {
 SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axis_W, double tolerance = 1e-9);
 
 /// False when no rotary angle of rotary_solutions(m, axis_W) can be free: the tool axis and e_z are
-/// more than 1 mrad from every axis direction they are compared with (a cheap test for callers that
-/// want only the free axis of a singular pose; true does not mean an angle is free).
-bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W);
+/// more than `clear_rad` (default 1 mrad) from every axis direction they are compared with (a cheap
+/// test for callers that want only the free axis of a singular pose, or only poses near one; true
+/// does not mean an angle is free).
+bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W, double clear_rad = 1e-3);
 
 /// X Y Z (mm) that put the tool tip on `tip_W` for the given rotary angles.
 Vec3d linear_for(const Machine& m, const RotaryAngles& rotary_rad, const Vec3d& tip_W, const Setup& setup);
