@@ -266,10 +266,15 @@ TEST_CASE("klartext CYCL DEF 201 and 240: reaming out at its own feed, centering
              Catch::Contains("cycles.h:13:") && Catch::Contains("CYCL DEF 240: Q343=1") && Catch::Contains("T-ANGLE"));
 }
 
-TEST_CASE("klartext: a decimal comma (X+50,022, older TNC programs) is refused naming the number") {
-  const std::string text = kHead + "3 L X+50,022 Y+80 R0 FMAX\n4 END PGM CYCLES MM\n";
-  CHECK_THAT(refusal(text), Catch::Contains("cycles.h:4:") && Catch::Contains("'50,022': a decimal comma") &&
-                                Catch::Contains("(50.022)"));
+TEST_CASE("klartext: a decimal comma (X+50,022, older TNC programs) is read as the decimal point") {
+  // (in coordinates, feeds and Q formulas: Q5 = -0,625 * 2 is -1.25)
+  const std::string commas =
+      kHead + "3 Q5 = -0,625 * 2\n4 L X+50,022 Y+80,5 R0 FMAX\n5 L Z+Q5 F150,0\n6 END PGM CYCLES MM\n";
+  const std::string points =
+      kHead + "3 Q5 = -0.625 * 2\n4 L X+50.022 Y+80.5 R0 FMAX\n5 L Z+Q5 F150.0\n6 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(commas);
+  CHECK(nc == post_cycles(points));
+  CHECK(nc_reaches(nc, Eigen::Vector3d(50.022, 80.5, -1.25)));
 }
 
 TEST_CASE("klartext M89: the cycle after every positioning block until M99 (which calls it once more)") {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <algorithm>
 #include <charconv>
 
 #include "read/klartext/klartext_q.hpp"
@@ -57,29 +58,25 @@ class Cursor {
   void advance(std::size_t n) { at_ += n; }
   std::string_view rest() const { return line_.substr(std::min(at_, line_.size())); }
 
-  /// digits [ '.' digits ] | '.' digits, unsigned; nullopt (cursor unmoved) when none.
+  /// digits [ ('.' | ',') digits ] | '.' digits, unsigned; nullopt (cursor unmoved) when none. A
+  /// comma between digits is a decimal comma (X+50,022, as older TNCs and some CAM posts write it:
+  /// a comma has no other meaning inside a number, and NC words have no thousands separators).
   std::optional<double> number() {
     const std::size_t start = at_;
     std::size_t p = at_;
     while (p < line_.size() && is_digit(line_[p])) ++p;
     bool digits = p > start;
-    if (p < line_.size() && line_[p] == '.') {
+    const bool decimal_comma = digits && p + 1 < line_.size() && line_[p] == ',' && is_digit(line_[p + 1]);
+    if (p < line_.size() && (line_[p] == '.' || decimal_comma)) {
       ++p;
       const std::size_t frac = p;
       while (p < line_.size() && is_digit(line_[p])) ++p;
       digits = digits || p > frac;
     }
     if (!digits) return std::nullopt;
-    if (p + 1 < line_.size() && line_[p] == ',' && is_digit(line_[p + 1])) {  // 50,022: a decimal comma
-      std::size_t end = p + 1;
-      while (end < line_.size() && is_digit(line_[end])) ++end;
-      fail(column(), fmt::format("'{}': a decimal comma is not read; program the number with a decimal point ({})",
-                                 line_.substr(start, end - start),
-                                 std::string(line_.substr(start, p - start)) + "." +
-                                     std::string(line_.substr(p + 1, end - p - 1))));
-    }
     double v = 0.0;
     std::string text(line_.substr(start, p - start));
+    std::replace(text.begin(), text.end(), ',', '.');
     if (text.front() == '.') text.insert(text.begin(), '0');
     if (text.back() == '.') text.pop_back();
     const auto r = std::from_chars(text.data(), text.data() + text.size(), v);

@@ -52,6 +52,8 @@ class Rewriter {
         if (!word(error)) return false;
       } else if (is_digit(c) || c == '.' || c == '+' || c == '-' || c == '*' || c == '/' || c == ' ' || c == '\t') {
         emit(std::string(1, c), at_++);
+      } else if (decimal_comma_at(at_)) {  // -54,887: a decimal comma (as in coordinates: klartext_block)
+        emit(".", at_++);
       } else {
         return fail(error, fmt::format("unexpected '{}' in a Q formula", c));
       }
@@ -67,6 +69,9 @@ class Rewriter {
   }
 
  private:
+  bool decimal_comma_at(std::size_t i) const {
+    return in_[i] == ',' && i > 0 && is_digit(in_[i - 1]) && i + 1 < in_.size() && is_digit(in_[i + 1]);
+  }
   void emit(std::string_view s, std::size_t from) {
     out_ += s;
     map_.insert(map_.end(), s.size(), from);
@@ -121,7 +126,8 @@ class Rewriter {
       parameter(*q);
       at_ += length;
     } else if (at_ < in_.size() && (is_digit(in_[at_]) || in_[at_] == '.')) {
-      while (at_ < in_.size() && (is_digit(in_[at_]) || in_[at_] == '.')) emit(std::string(1, in_[at_]), at_), ++at_;
+      while (at_ < in_.size() && (is_digit(in_[at_]) || in_[at_] == '.' || decimal_comma_at(at_)))
+        emit(in_[at_] == ',' ? "." : std::string(1, in_[at_]), at_), ++at_;
     } else {
       return fail(error, fmt::format("{}: expected its argument, a number, a Q parameter or ( ... )", f.name));
     }
