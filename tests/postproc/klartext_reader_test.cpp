@@ -216,6 +216,25 @@ TEST_CASE("klartext: M128 and FUNCTION TCPM programs give the tool tip in W; M12
   CHECK((ms[3].point.axis - ac_axis(90, 0)).norm() < 1e-12);
 }
 
+TEST_CASE("klartext: M128 F in a block of its own limits the compensating moves; the path's feed stays") {
+  // (the TNC's M128 F: a feed for the control's compensating moves of the linear axes, not a path feed)
+  const Read r =
+      read(program("1 TOOL CALL 1 Z S1000\n"
+                   "2 L X+0 Y+0 Z+100 A+0 C+0 R0 F300\n"
+                   "3 M128 F900000\n"
+                   "4 L X+10 Y+20 Z+30\n"));
+  const auto feeds = only<cl::Feed>(r.records);
+  REQUIRE(feeds.size() == 1);
+  CHECK(feeds[0].value == 300.0);
+  const auto ms = only<cl::Motion>(r.records);
+  REQUIRE(ms.size() == 2);
+  CHECK_FALSE(ms[1].rapid);
+  check_tip(ms[1], 10, 20, 30);
+  CHECK(any_contains(r.notices, "t.h:4:"));  // (line 1 is BEGIN PGM)
+  CHECK(any_contains(r.notices, "M128 F900000: the feed limit"));
+  CHECK_THAT(error_of(program("1 L X+0 Y+0 Z+100 A+0 C+0 R0 F300\n2 M3 F500\n")), Catch::Contains("with path words"));
+}
+
 TEST_CASE("klartext: M140 MB MAX retracts machine Z to the top of its travel; MB d by d") {
   const auto ms =
       motions(program("1 TOOL CALL 1 Z S100\n2 L X+10 Y+0 Z+5 R0 FMAX\n3 M140 MB+50\n4 L Z+5 FMAX\n"

@@ -1172,6 +1172,12 @@ struct KlartextReader::State {
       if ((code == 91 || code == 92) && bw.any_axis) machine_coordinates(b, bw, code, column);
     const cl::Location where = at(b.column);
     const bool path = b.statement != "M" && b.statement != "STOP";
+    if (!path && bw.feed && bw.m.size() == 1 && bw.m.front().first == 128) {  // M128 F: not the path's feed
+      notice(b.column, fmt::format("M128 F{}: the feed limit of the control's compensating moves (the path's feed "
+                                   "stays as programmed)",
+                                   *bw.feed));
+      bw.feed.reset();
+    }
     if (!path && (bw.any_axis || bw.comp || bw.feed || bw.rapid))
       fail(b.column, fmt::format("{} with path words: program them in an L block", b.statement));
     BlockM m;
