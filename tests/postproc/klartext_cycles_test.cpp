@@ -132,6 +132,28 @@ TEST_CASE("klartext CYCL DEF 203: shrinking pecks, chip breaks and retractions w
   CHECK(check_cycles(text, nc) >= 2 * 12);
   CHECK(nc.find("G4") != std::string::npos);  // the dwell at the depth
   CHECK(nc.find("F2000.") != std::string::npos);
+  // Q208=MAX (as the TNC shows FMAX): the same moves, each retraction (3 breaks, the retraction
+  // after the 3rd plunge and the last one out, per hole) a rapid instead of a move at Q208
+  std::string fmax = text;
+  fmax.replace(fmax.find("Q208=+2000"), 10, "Q208=MAX");
+  const std::string nc_fmax = post_cycles(fmax);
+  CHECK(nc_fmax.find("F2000.") == std::string::npos);
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::vmcl600_setup().workpiece_origin_mm;
+  job.tool_length_mm = test::vmcl600_setup().tool_length_mm;
+  const test::Executor fed(test::source(kMachine), job, nc), rapid(test::source(kMachine), job, nc_fmax);
+  REQUIRE(fed.blocks.size() == rapid.blocks.size());
+  int became_rapid = 0;
+  for (std::size_t i = 0; i < fed.blocks.size(); ++i) {
+    CHECK((fed.at(fed.blocks[i], 1.0).tip_W - rapid.at(rapid.blocks[i], 1.0).tip_W).norm() < 1e-9);
+    const bool was_feed = fed.blocks[i].kind == test::ExecBlock::Kind::linear;
+    const bool now_rapid = rapid.blocks[i].kind == test::ExecBlock::Kind::rapid;
+    if (was_feed && now_rapid) {
+      ++became_rapid;
+      CHECK(fed.blocks[i].feed == 2000.0);
+    }
+  }
+  CHECK(became_rapid == 2 * 5);
 }
 
 TEST_CASE("klartext CYCL DEF 207: a rigid tap at pitch x speed, refused against the spindle's direction") {

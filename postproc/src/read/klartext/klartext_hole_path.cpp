@@ -119,7 +119,7 @@ std::string check_240(const Q& q) {
 
 HoleStep step(HoleStep::Kind kind, double dx, double dy, double z, double feed = 0.0) {
   HoleStep s;
-  s.kind = kind;
+  s.kind = kind == HoleStep::Kind::feed && std::isinf(feed) ? HoleStep::Kind::rapid : kind;  // (Q208=MAX: FMAX)
   s.dx = dx;
   s.dy = dy;
   s.z = z;

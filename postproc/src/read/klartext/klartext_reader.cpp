@@ -756,6 +756,8 @@ struct KlartextReader::State {
       if (!a) continue;  // (a comment line)
       std::optional<double> value = a->value;
       QError error;
+      if (!value && (a->number == 208 || a->number == 253) && (a->text == "MAX" || a->text == "FMAX"))
+        value = std::numeric_limits<double>::infinity();     // a feed given as FMAX: the move is a rapid
       if (!value) value = this->q.evaluate(a->text, error);  // Q206=Q3: the parameter's value
       if (!value)
         throw InputError({file, line, 0},
