@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Heidenhain hole cycles 201, 203, 207, 208, 240 and 241, the polar line LP and the corners RND
+// The Heidenhain hole cycles 201, 203, 206, 207, 208, 240 and 241, the polar line LP and the corners RND
 // and CHF (issue 28) re-posted for a Fanuc control and
 // both sides executed independently: the Klartext input by the tests' interpreter
 // (klartext_interpreter.hpp, the cycles' runs in klartext_cycles.hpp), the written program by
@@ -176,6 +176,28 @@ TEST_CASE("klartext CYCL DEF 207: a rigid tap at pitch x speed, refused against 
   m4.replace(m4.find("FMAX M3"), 7, "FMAX M4");
   CHECK_THAT(refusal(m4), Catch::Contains("cycles.h:10:") && Catch::Contains("CYCL DEF 207 with a right-hand thread") &&
                               Catch::Contains("program M3"));
+}
+
+TEST_CASE("klartext CYCL DEF 206: a tap in a floating holder at Q206, its hand the spindle's direction") {
+  const std::string text = kHead +
+                           "3 CYCL DEF 206 TAPPING NEW ~\n"
+                           "  Q200=+3 ;SET-UP CLEARANCE ~\n"
+                           "  Q201=-13 ;DEPTH OF THREAD ~\n"
+                           "  Q206=+2500 ;FEED RATE FOR PLNGNG ~\n"
+                           "  Q211=+0 ;DWELL TIME AT DEPTH ~\n"
+                           "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                           "  Q204=+28 ;2ND SET-UP CLEARANCE\n"
+                           "4 L X+10 Y-15 R0 FMAX M99\n"
+                           "5 L Z+50 FMAX M5\n"
+                           "6 END PGM CYCLES MM\n";
+  const std::string nc = post_cycles(text);
+  check_cycles(text, nc);
+  CHECK(nc.find("G84") != std::string::npos);     // M3: a right-hand thread
+  CHECK(nc.find("F2500.") != std::string::npos);  // Q206 (the pitch 1.25 mm at 2000 rpm)
+  std::string stopped = text;
+  stopped.replace(stopped.find("FMAX M3"), 7, "FMAX M5");
+  CHECK_THAT(refusal(stopped),
+             Catch::Contains("cycles.h:11:") && Catch::Contains("CYCL DEF 206 called with the spindle stopped"));
 }
 
 TEST_CASE(

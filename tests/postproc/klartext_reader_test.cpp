@@ -290,7 +290,7 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
           "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
           "does not give; add [axes.Z] reference2");
   refused("3 L X+10 FMAX M99\n",
-          "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 207, 208, 240 or 241) before it");
+          "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 206, 207, 208, 240 or 241) before it");
   refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 203 without Q206");
   refused("3 CYCL DEF 201 REAMING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 201 without Q206");
   refused("3 CYCL DEF 205 UNIVERSAL PECKING ~\n  Q200=2 ~\n  Q201=-10\n",

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The tool tip's path of the Heidenhain hole cycles 200, 201, 203, 207, 208, 240 and 241 for the tests'
+// The tool tip's path of the Heidenhain hole cycles 200, 201, 203, 206, 207, 208, 240 and 241 for the tests'
 // Klartext interpreter (klartext_interpreter.hpp), written from the cycle runs of the TNC 640 /
 // iTNC 530 cycle programming manual as the tests read them, independently of the product:
 //   200 DRILLING: FMAX to Q200 above the surface Q203, to Q201 at Q206, FMAX out (pecks of Q202
@@ -10,7 +10,7 @@
 //       to Q200 at Q208 (Q208 = 0: Q206), FMAX back to Q200 above the depth reached; at the depth
 //       out to Q200 at Q208; FMAX to Q204 when higher;
 //   207 RIGID TAPPING: FMAX to Q200; to Q201 at pitch x speed; back to Q200 at the same feed;
-//       FMAX to Q204 when higher;
+//       FMAX to Q204 when higher; 206 TAPPING (floating holder) the same at the feed Q206;
 //   208 BORE MILLING: FMAX to Q200 over the centre; a half circle at Q200 from the centre onto the
 //       circle of radius (Q335 - tool diameter) / 2 at angle 0; a helix of Q334 per turn down to
 //       Q201; one more turn there; to the centre; FMAX to Q200, to Q204 when higher; climb (Q351
@@ -55,9 +55,9 @@ inline std::vector<CycleMove> cycle_moves(int n, const std::map<std::string, dou
   const auto line = [&](double x, double y, double z, bool cut) { out.push_back({{x, y, z}, cut, false, {}, 0.0}); };
   const double setup = Q(200), depth = Q(201), second = Q(204);
   line(0, 0, setup, false);
-  if (n == 200 || n == 207 || n == 201 || n == 240) {
+  if (n == 200 || n == 206 || n == 207 || n == 201 || n == 240) {
     line(0, 0, depth, true);
-    line(0, 0, setup, n == 207 || n == 201);
+    line(0, 0, setup, n == 206 || n == 207 || n == 201);
   } else if (n == 203) {
     const bool breaking = Qor(213, 0) > 0;
     double reached = 0, plunge = Q(202);

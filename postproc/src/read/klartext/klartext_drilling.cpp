@@ -113,4 +113,34 @@ std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>
   return d;
 }
 
+std::variant<DrillingCycle, std::string> tapping_206(const std::map<int, double>& q, cl::Location where) {
+  const auto get = [&q](int n) -> std::optional<double> {
+    const auto it = q.find(n);
+    return it == q.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  for (int n : {200, 201, 206, 203, 204})
+    if (!get(n)) return fmt::format("CYCL DEF 206 without Q{} (expected Q200 Q201 Q206 Q211 Q203 Q204)", n);
+  const double clearance = *get(200), depth = *get(201), feed = *get(206), second = *get(204);
+  const double dwell = get(211).value_or(0.0);
+  if (!(clearance > 0.0)) return fmt::format("CYCL DEF 206: Q200={} (the set-up clearance must be > 0)", clearance);
+  if (!(depth < 0.0)) return fmt::format("CYCL DEF 206: Q201={} (the thread's depth must be < 0)", depth);
+  if (!(feed > 0.0) || std::isinf(feed))
+    return fmt::format("CYCL DEF 206: Q206={} (the tapping feed, speed x pitch, must be a feed > 0)", feed);
+  if (dwell < 0.0 || dwell > cl::kMaxDwellSeconds) return fmt::format("CYCL DEF 206: Q211={} s is no dwell", dwell);
+  DrillingCycle d;
+  cl::Cycle& c = d.cycle;
+  c.where = where;
+  c.kind = cl::Cycle::Kind::tap;
+  c.kind_word = "CYCL DEF 206";
+  c.text = "CYCL DEF 206 TAPPING";
+  c.depth_mm = -depth;
+  c.rapid_to_mm = clearance;
+  if (second > clearance) c.retract_mm = second;
+  c.dwell_s = dwell;
+  d.surface_mm = *get(203);
+  d.return_mm = std::max(clearance, second);
+  d.tap_feed_mm_min = feed;
+  return d;
+}
+
 }  // namespace ncpost::klartext

@@ -32,6 +32,9 @@ struct DrillingCycle {
   cl::Cycle cycle;          ///< distances from the hole's top
   double surface_mm = 0.0;  ///< Q203
   double return_mm = 0.0;   ///< where the tool stands after a hole, above the surface: max(Q200, Q204)
+  /// 206 (floating tap holder): its tapping feed Q206 (mm/min); the pitch is Q206 / the speed at the
+  /// call, the thread's hand the spindle's direction there
+  std::optional<double> tap_feed_mm_min;
 };
 
 /// CYCL DEF 200 from its parameters, or why not (a sentence naming the parameter).
@@ -44,5 +47,13 @@ std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double
 /// taps to the depth at the feed of pitch x speed, reverses the spindle, comes back to the set-up
 /// clearance at the same feed, and goes at FMAX to the 2nd set-up clearance (cl::Cycle::Kind::tap).
 std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>& q, cl::Location where);
+
+/// CYCL DEF 206 TAPPING NEW (with a floating tap holder): Q200 set-up clearance, Q201 depth of the
+/// thread (< 0), Q206 the tapping feed (mm/min: speed x pitch), Q211 dwell at the bottom (s), Q203
+/// surface, Q204 2nd set-up clearance. The tool goes at FMAX to the set-up clearance, taps to the
+/// depth at Q206, dwells Q211, reverses the spindle, comes back to the set-up clearance at Q206 and
+/// goes at FMAX to the 2nd set-up clearance; the thread's hand is the spindle's direction (M3
+/// right, M4 left). A cl::Cycle tap whose pitch is set at the call (DrillingCycle::tap_feed_mm_min).
+std::variant<DrillingCycle, std::string> tapping_206(const std::map<int, double>& q, cl::Location where);
 
 }  // namespace ncpost::klartext

@@ -39,7 +39,7 @@ constexpr std::string_view kSlots = "XYZABC";  ///< ProgramPoint order
 
 /// The hole cycles read (klartext_drilling.hpp, klartext_hole_path.hpp).
 bool is_hole_cycle(int number) {
-  for (int n : {200, 201, 203, 207, 208, 240, 241})
+  for (int n : {200, 201, 203, 206, 207, 208, 240, 241})
     if (number == n) return true;
   return false;
 }
@@ -769,8 +769,10 @@ struct KlartextReader::State {
     }
     drilling.reset();
     expanded.reset();
-    if (number == 200 || number == 207) {
-      auto d = number == 200 ? drilling_200(q, at(b.column)) : tapping_207(q, at(b.column));
+    if (number == 200 || number == 206 || number == 207) {
+      auto d = number == 200   ? drilling_200(q, at(b.column))
+               : number == 206 ? tapping_206(q, at(b.column))
+                               : tapping_207(q, at(b.column));
       if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
       drilling = std::get<DrillingCycle>(d);
       return;
@@ -785,7 +787,8 @@ struct KlartextReader::State {
   void call_cycle(cl::Location where, int column) {
     if (!drilling && !expanded)
       fail(column,
-           "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 207, 208, 240 or 241) before it (other cycles "
+           "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 206, 207, 208, 240 or 241) before it (other "
+           "cycles "
            "are not "
            "read)");
     if (rtcp)
@@ -806,9 +809,15 @@ struct KlartextReader::State {
       pos[2] = top[2] + expanded->return_mm;
       return;
     }
-    if (drilling->cycle.kind == cl::Cycle::Kind::tap) check_tap_spindle(column);
     cl::Cycle c = drilling->cycle;
     c.where = where;
+    if (drilling->tap_feed_mm_min) {  // 206: the pitch of the feed at this speed, the hand of this direction
+      check_spindle_turns(column);
+      c.pitch_mm = *drilling->tap_feed_mm_min / rpm;
+      c.left_hand = spindle == cl::Spindle::Direction::ccw;
+    } else if (c.kind == cl::Cycle::Kind::tap) {
+      check_tap_spindle(column);
+    }
     emit(c);
     emit(hole);  // (not rapid: the hole of the cycle)
     cl::Cycle off;
@@ -817,13 +826,18 @@ struct KlartextReader::State {
     pos[2] = top[2] + drilling->return_mm;  // where the TNC leaves the tool
   }
 
+  /// A tapping cycle (206, 207) is called with the spindle turning at a known speed.
+  void check_spindle_turns(int column) const {
+    if (spindle == cl::Spindle::Direction::off || !(rpm > 0.0))
+      fail(column, fmt::format("{} called with the spindle stopped: the tapping feed is pitch x speed (program M3 "
+                               "with S before the call)",
+                               drilling->cycle.kind_word));
+  }
+
   /// CYCL DEF 207 taps with the spindle turning the thread's way (Q239 > 0: M3, < 0: M4).
   void check_tap_spindle(int column) const {
     const bool left = drilling->cycle.left_hand;
-    if (spindle == cl::Spindle::Direction::off || !(rpm > 0.0))
-      fail(column,
-           "CYCL DEF 207 called with the spindle stopped: the tapping feed is pitch x speed (program M3 "
-           "with S before the call)");
+    check_spindle_turns(column);
     if ((spindle == cl::Spindle::Direction::ccw) != left)
       fail(column, fmt::format("CYCL DEF 207 with a {}-hand thread (Q239) called with the spindle {}: program {}",
                                left ? "left" : "right", left ? "M3" : "M4", left ? "M4" : "M3"));

@@ -20,7 +20,7 @@ struct Refusal {
 constexpr Refusal kStatements[] = {
     {"CYCL DEF",
      "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
-     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 201, 203, 207, 208, 240 and 241 are)",
+     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 201, 203, 206, 207, 208, 240 and 241 are)",
      kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"APPR", "an approach contour is not read", kPostCl},
