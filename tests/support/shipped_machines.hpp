@@ -18,4 +18,17 @@ inline const Machine& vmcl600() {
   return m;
 }
 
+/// machines/head-table-bc.toml: a B head about Y and a C table (X -800 .. 800, Z -700 .. 500 mm).
+inline const Machine& head_table_bc() {
+  static const Machine m = load_machine(source("machines/head-table-bc.toml"));
+  return m;
+}
+
+/// tests/data/machines/ac-trunnion-references.toml: the AC trunnion with reference points (G28,
+/// G53: X -400, Y 450, Z 550, A 0, C 0; G30: X 300, Y -200, Z 400, A -90).
+inline const Machine& ac_trunnion_references() {
+  static const Machine m = load_machine(data("machines/ac-trunnion-references.toml"));
+  return m;
+}
+
 }  // namespace ncpost::test
