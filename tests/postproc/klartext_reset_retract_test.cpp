@@ -48,8 +48,8 @@ TEST_CASE("klartext CYCL DEF 19 without angles or with all 0 tilts nothing; othe
   for (const char* reset : {"3 CYCL DEF 19.0 WORKING PLANE\n4 CYCL DEF 19.1\n",
                             "3 CYCL DEF 19.0 PLAN D'USINAGE\n4 CYCL DEF 19.1 A+0 C+0\n"}) {
     INFO(reset);
-    const Read r =
-        read("1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX\n" + std::string(reset) + path, test::ac_trunnion());
+    const Read r = read("1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+50 A+0 C+0 R0 FMAX\n" + std::string(reset) + path,
+                        test::ac_trunnion());
     REQUIRE(r.motions.size() == plain.motions.size());
     REQUIRE(r.motions.size() == 3);
     for (std::size_t i = 0; i < r.motions.size(); ++i) check_tip(r.motions[i], plain.motions[i].point.tip_mm);

@@ -13,9 +13,13 @@
 #include <sstream>
 
 #include "cl_records.hpp"
+#include "nc_executor.hpp"
 #include "shipped_machines.hpp"
 #include "test_paths.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
+#include "ncpost/postproc/post_request.hpp"
 #include "ncpost/postproc/read/sinumerik/sinumerik_reader.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
 
 using namespace ncpost;
 
@@ -75,13 +79,45 @@ TEST_CASE("sinumerik G53: machine coordinates from the reference point, the TRAN
   for (std::size_t i = 0; i < r.motions.size(); ++i) check_tip(supa.motions[i], r.motions[i].point.tip_mm);
 }
 
+TEST_CASE("sinumerik G53: re-posted, the written program stands where the input's machine positions are") {
+  // a job with the work offset and a tool: the input's X Y Z (no TRAORI) are machine positions, so
+  // the expected block ends are the tests' own forward kinematics of the positions worked out by hand
+  Setup setup;
+  setup.workpiece_origin_mm = Vec3d(10, -20, 50);
+  setup.tool_length_mm = 100;
+  PostRequest request;
+  request.machine = serial_post_machine(test::ac_trunnion_references());
+  request.setup = setup;
+  request.dialect = dialect_named("fanuc");
+  request.threads = 1;
+  request.input_name = "g53.mpf";
+  std::istringstream in(retract_program("G53"));
+  std::ostringstream out;
+  post(in, out, request);
+  INFO(out.str());
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::V3(10, -20, 50);
+  job.tool_length_mm = 100;
+  const test::Executor ex(test::data("machines/ac-trunnion-references.toml"), job, out.str());
+  const std::vector<test::V3> machine_positions = {
+      {10, 20, 30}, {15, 15, 30}, {15, 15, 550 - 10}, {5, -5, 540}, {5, -5, 30}};
+  std::size_t at = 0;
+  for (const test::V3& q : machine_positions) {
+    const test::V3 tip = test::forward(ex.machine, job, q, {{'A', 0.0}, {'C', 0.0}}).tip_W;
+    INFO("machine position " << q.transpose() << ", tip " << tip.transpose());
+    bool found = false;
+    for (; at < ex.blocks.size() && !found; ++at) found = (ex.at(ex.blocks[at], 1.0).tip_W - tip).norm() < 1e-3;
+    CHECK(found);
+  }
+}
+
 TEST_CASE("sinumerik G53: alone in its block it moves nothing; in a CYCLE800 plane it is refused") {
   const Read alone = read("G17 G90 G71\nG0 X10 Y20 Z30 A0 C0\nG53\nG1 X12 F100\nM30\n");
   REQUIRE(alone.motions.size() == 2);
   check_tip(alone.motions[1], Vec3d(12, 20, 30));  // not a machine coordinate: G53 held for its own block
   CHECK_THAT(alone.notices, Catch::Contains("t.mpf:3: G53 without axis words moves nothing"));
-  const std::string swivelled = error_of(
-      "G17 G90 G71\nG0 X0 Y0 Z100 A0 C0\nCYCLE800(0,\"TC\",0,57,0,0,0,30,0,0,0,0,0,1)\nG0 G53 Z-10\nM30\n");
+  const std::string swivelled =
+      error_of("G17 G90 G71\nG0 X0 Y0 Z100 A0 C0\nCYCLE800(0,\"TC\",0,57,0,0,0,30,0,0,0,0,0,1)\nG0 G53 Z-10\nM30\n");
   CHECK_THAT(swivelled, Catch::StartsWith("t.mpf:4:") && Catch::Contains("G53 in a plane swivelled by CYCLE800"));
   CHECK_THAT(error_of("G17 G90 G71\nG0 X0 Y0 Z30 A0 C0\nG91 G53 Z-10\nM30\n"),
              Catch::Contains("G53 with incremental words is not read"));
@@ -105,7 +141,8 @@ TEST_CASE("sinumerik: M202(value) and an ISO G43 ... H stay refused, saying what
   const std::string m202 = error_of("G17 G90 G70\nM200\nM202(0.0024)\nG0 X0 Y0 Z1 A0 C0\nM30\n");
   CHECK_THAT(m202, Catch::StartsWith("t.mpf:3:") && Catch::Contains("M202(...)") &&
                        Catch::Contains("the machine builder's own") && Catch::Contains("delete the block"));
-  const std::string iso = error_of("G17 G90 G71\nT1 M6\nG0 X0 Y0 A0 C0\nG43 Z110. H01\nMCALL CYCLE81(10,0,2,-5)\nM30\n");
+  const std::string iso =
+      error_of("G17 G90 G71\nT1 M6\nG0 X0 Y0 A0 C0\nG43 Z110. H01\nMCALL CYCLE81(10,0,2,-5)\nM30\n");
   CHECK_THAT(iso, Catch::StartsWith("t.mpf:4:") && Catch::Contains("an ISO tool length offset") &&
                       Catch::Contains("D number"));
 }
