@@ -261,7 +261,7 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
     CHECK(e.find("t.h:4:") == 0);
     CHECK(e.find(what) != std::string::npos);
   };
-  refused("3 CYCL DEF 19.0 WORKING PLANE\n", "CYCL DEF 19 (working plane): its angles are axis or spatial angles");
+  refused("3 CYCL DEF 19.1 B+15\n", "CYCL DEF 19 (working plane): its angles are axis or spatial angles");
   refused("3 CYCL DEF 7.1 #5\n", "datum table");
   refused("3 CYCL DEF 7.1 C+10\n", "a shift of C is not read");
   refused("3 PLANE RESET MOVE DIST50 F1000\n", "PLANE RESET MOVE DIST: a swivel about a point");

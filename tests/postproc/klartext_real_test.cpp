@@ -76,8 +76,10 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       {"heidenhain_nx_bridgeport412.h", "BEGIN PGM 100 IN", "BEGIN PGM"},
       {"heidenhain_nx_dmc70v.h", "BEGIN PGM T IN", "BEGIN PGM"},
       {"heidenhain_nx_dmc100.h", "BEGIN PGM PROGRAM IN", "BEGIN PGM"},
-      // A and C: an A-axis machine; CYCL DEF 19's angles depend on a machine parameter
-      {"heidenhain_training_dmc75v.h", "CYCL DEF 19.0", "CYCL DEF 19 (working plane)", "ac-trunnion"},
+      // A and C: an A-axis machine; CYCL DEF 19.1 A+0 (the reset) is read, A-90 is not: CYCL DEF 19's
+      // angles depend on a machine parameter. Before it (line 44), M91 Z-1 needs the machine's reference
+      {"heidenhain_training_dmc75v.h", "M91", "M91 Z-1: machine coordinates count from the axis's reference point",
+       "ac-trunnion"},
   };
   for (const Expected& c : cases) {
     INFO(c.file);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cctype>
 #include <array>
@@ -677,6 +678,35 @@ struct KlartextReader::State {
     emit(cl::Dwell{at(b.column), seconds});
   }
 
+  /// CYCL DEF 19 (working plane) read only where it tilts nothing: 19.0 (the header) and a 19.1 with
+  /// no angles (the cycle switched off) or with all its angles 0 (the tilt reset), without F or MB
+  /// (which would position the rotary axes, as the machine builder set). Angles other than 0 are
+  /// axis or spatial angles by a machine parameter: refused.
+  void working_plane_reset(const Block& b, const CycleDef& c) {
+    if (c.part == 0) return;
+    if (c.part != 1)
+      fail(b.column, fmt::format("CYCL DEF 19{}: expected CYCL DEF 19.0 and 19.1",
+                                 c.part < 0 ? std::string() : fmt::format(".{}", c.part)));
+    if (c.words.empty() && c.rest.find_first_not_of(" \t\r") != std::string::npos)
+      fail(b.column, fmt::format("CYCL DEF 19.1 {}: expected the rotary axes' angles (B+0 C+0) or none", c.rest));
+    for (const Word& w : c.words) {
+      bool incremental = false;
+      const int slot = axis_slot(w.name, incremental);
+      if (slot < 3 || incremental || w.q_parameter || !w.value)
+        fail(w.column, fmt::format("CYCL DEF 19.1 {}: only the rotary axes' angles are read (the cycle with F or MB "
+                                   "positions the rotary axes as the machine builder set)",
+                                   w.name));
+      if (*w.value != 0.0)
+        fail(w.column,
+             "CYCL DEF 19 (working plane): its angles are axis or spatial angles as the machine builder set "
+             "(a machine parameter), so they are not read; program PLANE SPATIAL or PLANE AXIAL");
+    }
+    if (plane) fail(b.column, "CYCL DEF 19 while a PLANE is active: the TNC does not mix them; program PLANE RESET");
+    notice_once("CYCL DEF 19", b.column,
+                "CYCL DEF 19.1 with no angles or all 0 (the working plane's tilt reset): no plane is tilted, nothing "
+                "moves");
+  }
+
   /// CYCL DEF 7 (datum shift: X Y Z, absolute from the preset or I... from the last shift) and
   /// CYCL DEF 32 (the TNC's tolerance: noted); every other cycle is refused by name.
   void cycle_def(const Block& b) {
@@ -702,10 +732,10 @@ struct KlartextReader::State {
       dwell_cycle(b, c);
       return;
     }
-    if (c.number == 19)
-      fail(b.column,
-           "CYCL DEF 19 (working plane): its angles are axis or spatial angles as the machine builder set "
-           "(a machine parameter), so they are not read; program PLANE SPATIAL or PLANE AXIAL");
+    if (c.number == 19) {
+      working_plane_reset(b, c);
+      return;
+    }
     if (c.number == 247 && c.part < 0) {
       preset(b);
       return;
@@ -1503,39 +1533,71 @@ struct KlartextReader::State {
       emit_motion(a.at(static_cast<double>(i) / static_cast<double>(n)), where, rapid, block_feed);
   }
 
-  /// M140 MB MAX|d: a rapid along the tool axis, which is machine Z on a machine whose head does
-  /// not tilt, to the top of Z's travel (MAX) or by d (at most to the top).
+  /// M140 MB MAX|d: a rapid along the tool axis (from the tip toward the spindle) until the first
+  /// linear axis reaches the end of its travel (MAX), or by d (at most that far). On a machine whose
+  /// head tilts the tool axis follows the head's angles, which must be programmed by then.
   void retract(const BlockWords& bw) {
     if (plane)
       fail(bw.retract_column,
            "M140 in a tilted plane (PLANE ...) is not read; PLANE RESET first, or program the retract with L");
-    for (int i : machine.tool_side)
-      if (machine.axes[static_cast<std::size_t>(i)].is_rotary())
-        fail(bw.retract_column, fmt::format("M140 on the machine {}, whose head tilts: the tool axis is not machine Z; "
-                                            "program the retract with L",
-                                            machine.name));
     if (!settled) {
       notice(bw.retract_column,
              "M140 before the first programmed position moves nothing in the posted program (where "
              "the tool stands is not known yet)");
       return;
     }
-    if (!machine.axes[2].limits)
-      fail(bw.retract_column, "M140: the machine file gives no Z travel, so the top of Z is not known");
-    const double top = machine.axes[2].limits->max;
+    for (int k = 0; k < machine.rotary_count(); ++k)
+      if (std::count(machine.tool_side.begin(), machine.tool_side.end(), 3 + k) > 0 &&
+          !known[static_cast<std::size_t>(rotary_slot[static_cast<std::size_t>(k)])])
+        fail(bw.retract_column,
+             fmt::format("M140 before {} is programmed, on the machine {} whose head tilts by {}: the tool axis is "
+                         "not known; program {} first",
+                         machine.rotary(k).letter, machine.name, machine.rotary(k).letter, machine.rotary(k).letter));
     AxisPosition q = commands_of(pos);
     if (rtcp) q.linear_mm = linear_for(machine, q.rotary_rad, q.linear_mm, setup);
-    const double z = std::isinf(*bw.retract_mm) ? top : std::min(top, q.linear_mm.z() + *bw.retract_mm);
-    if (z < q.linear_mm.z()) return;  // (above the top already: the TNC stays)
-    q.linear_mm.z() = z;
+    const Vec3d along = retract_direction(q);
+    const double room = travel_along(q.linear_mm, along, bw.retract_column);
+    const double t = std::isinf(*bw.retract_mm) ? room : std::min(room, *bw.retract_mm);
+    if (t <= 0.0) return;  // (at the end of the travel already: the TNC stays)
+    q.linear_mm += t * along;
     ProgramPoint p = pos;
     const Vec3d xyz = rtcp ? forward(machine, q, setup).tip_mm : q.linear_mm;
     for (std::size_t i = 0; i < 3; ++i) p[i] = xyz[static_cast<int>(i)];
-    notice_once("M140", bw.retract_column,
-                fmt::format("M140 MB: a rapid along the tool axis (machine Z) to Z {:.3f} mm{}", z,
-                            std::isinf(*bw.retract_mm) ? ", the top of its travel in the machine file" : ""));
+    notice_once(
+        "M140", bw.retract_column,
+        fmt::format("M140 MB: a rapid along the tool axis by {:.3f} mm, to machine X {:.3f} Y {:.3f} Z {:.3f}{}", t,
+                    q.linear_mm.x(), q.linear_mm.y(), q.linear_mm.z(),
+                    std::isinf(*bw.retract_mm) ? ", the end of the travel in the machine file" : ""));
     pos = p;
     emit_motion(pos, at(bw.retract_column), true, std::nullopt);
+  }
+
+  /// The move of the machine's linear axes that takes the tool tip 1 mm along the tool axis at `q`
+  /// (the tip is affine in the linear axes: each column of the map is exact).
+  Vec3d retract_direction(const AxisPosition& q) const {
+    const ToolPoseT<double> at_q = forward(machine, q, setup);
+    Eigen::Matrix3d tip_per_mm;
+    for (int i = 0; i < 3; ++i) {
+      AxisPosition moved = q;
+      moved.linear_mm[i] += 1.0;
+      tip_per_mm.col(i) = forward(machine, moved, setup).tip_mm - at_q.tip_mm;
+    }
+    return tip_per_mm.colPivHouseholderQr().solve(at_q.axis.normalized());
+  }
+
+  /// How far the linear axes at `from_mm` may move by multiples of `along` within their travel.
+  double travel_along(const Vec3d& from_mm, const Vec3d& along, int column) const {
+    double room = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(along[i]) < 1e-12) continue;
+      const Axis& axis = machine.axes[static_cast<std::size_t>(i)];
+      if (!axis.limits)
+        fail(column, fmt::format("M140: the machine file gives no {} travel, so the end of the retract is not known",
+                                 axis.letter));
+      const double end = along[i] > 0.0 ? axis.limits->max : axis.limits->min;
+      room = std::min(room, (end - from_mm[i]) / along[i]);
+    }
+    return std::max(room, 0.0);
   }
 
   std::optional<cl::Record> next() {

@@ -171,6 +171,11 @@ void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {
     incremental_ = g == 91;
     return;
   }
+  if (g == 53) {
+    w.supa = true;
+    w.g53_column = item.column;
+    return;
+  }
   if (g == 17 || g == 18 || g == 19) plane_ = g;
   if (g == 93 || g == 94 || g == 95) feed_mode_ = g;
   if (g == 70 || g == 700 || g == 71 || g == 710) inch_ = g == 70 || g == 700;
@@ -256,8 +261,8 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
   }
   const bool moves = w.any_linear() || w.any_rotary() || w.any_orientation();
   if (w.supa) {
-    if (!moves) fail(l, w.column, "SUPA without axis words is not read");
-    iso += (iso.empty() ? "" : " ") + supa_words(l, w);
+    frames_suppressed(l, w);
+    if (moves) iso += (iso.empty() ? "" : " ") + supa_words(l, w);
   } else if (moves) {
     motion(l, w, iso);
   } else if (w.motion) {
@@ -288,6 +293,31 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
       return_from_unit();
     }
   }
+}
+
+/// G53 (and SUPA) without axis words move nothing: the suppression holds for its own block only.
+/// G53 is read as SUPA: both suppress the settable and the programmable frames (SINUMERIK 840D sl
+/// Programming Manual Fundamentals, "Zero offset frame": G53 "non-modal deactivation of the current
+/// settable and programmable zero offset", SUPA also the basic frame, DRF, external zero offset and
+/// PRESET), which the machine's data holds, not the program: taken as zero, with a notice.
+void Translator::frames_suppressed(const ProgramLine& l, const Words& w) {
+  const bool moves = w.any_linear() || w.any_rotary() || w.any_orientation();
+  const char* what = w.g53_column ? "G53" : "SUPA";
+  if (!moves) {
+    notice_once(l, std::string(what) + " alone",
+                fmt::format("{} without axis words moves nothing (it holds for its own block only)", what));
+    if (w.motion) motion_ = *w.motion;
+    return;
+  }
+  if (!w.g53_column) return;
+  if (!swivel_.shift_only() || swivel_.offset != Eigen::Vector3d::Zero())
+    fail(l, *w.g53_column,
+         "G53 in a plane swivelled by CYCLE800: whether G53 suppresses the cycle's frame is the machine's "
+         "setting; program SUPA (all frames suppressed) or CYCLE800() first");
+  notice_once(l, "G53",
+              "G53 (frames suppressed for the block) is read as SUPA, in machine coordinates (the machine file's "
+              "reference data): the basic frame, DRF and external zero offset, which G53 keeps and SUPA suppresses, "
+              "are taken as zero (their values are the machine's, not in the program)");
 }
 
 /// TRANS/ATRANS X Y Z, ROT/AROT X Y Z (RPL=: refused), SCALE/ASCALE with one factor for X Y Z.

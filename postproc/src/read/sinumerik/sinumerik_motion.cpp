@@ -146,12 +146,13 @@ std::string Translator::orientation_words(const ProgramLine& l, const Words& w) 
 /// SUPA: machine coordinates for the block (G53); the positions in W are not known after it.
 std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
   std::string s = fmt::format("G53 G{}", w.motion.value_or(motion_ < 0 ? 0 : motion_) == 0 ? 0 : 1);
-  if (w.motion && *w.motion > 1) fail(l, w.column, "SUPA with G2/G3 is not read");
-  if (w.any_orientation()) fail(l, w.column, "SUPA with A3= B3= C3= is not read");
+  const char* what = w.g53_column ? "G53" : "SUPA";
+  if (w.motion && *w.motion > 1) fail(l, w.column, fmt::format("{} with G2/G3 is not read", what));
+  if (w.any_orientation()) fail(l, w.column, fmt::format("{} with A3= B3= C3= is not read", what));
   for (std::size_t i = 0; i < 3; ++i) {
     if (w.xyz[i]) {
       if (w.xyz_ref[i] == Reference::incremental || (w.xyz_ref[i] == Reference::modal && incremental_))
-        fail(l, w.column, "SUPA with incremental words is not read");
+        fail(l, w.column, fmt::format("{} with incremental words is not read", what));
       s += fmt::format(" {}{}", kXyz[i], num(*w.xyz[i]));
       base_known_[i] = false;
     }

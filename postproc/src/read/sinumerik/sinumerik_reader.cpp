@@ -24,12 +24,17 @@ class IsoStream final : public std::streambuf {
   explicit IsoStream(Translator& t) : translator_(t) {}
   std::vector<int> source_line;
   std::map<int, std::string> tool_selected;  ///< ISO line of a T word -> the tool's name ("" by number)
-  std::exception_ptr failure;                ///< the translator's own error (already on a Sinumerik line)
+  /// The translator's own error (already on a Sinumerik line) and that line. The G-code reader,
+  /// which reads ahead, first gets the blocks before it and an `M30` on its line, so that an error
+  /// it finds on an earlier line is the one reported (SinumerikReader::next).
+  std::exception_ptr failure;
+  int failure_iso_line = 0;  ///< the line of that M30 among the ISO lines
 
  protected:
   int_type underflow() override {
     if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
     buffer_.clear();
+    if (failure) return traits_type::eof();
     IsoBlock b;
     try {
       for (int i = 0; i < 64 && translator_.next(b); ++i) {
@@ -38,9 +43,11 @@ class IsoStream final : public std::streambuf {
         source_line.push_back(b.line);
         if (b.tool_name) tool_selected[static_cast<int>(source_line.size())] = *b.tool_name;
       }
-    } catch (...) {
+    } catch (const InputError& e) {
       failure = std::current_exception();
-      throw;
+      buffer_ += "M30\n";
+      source_line.push_back(e.where().line);
+      failure_iso_line = static_cast<int>(source_line.size());
     }
     if (buffer_.empty()) return traits_type::eof();
     setg(buffer_.data(), buffer_.data(), buffer_.data() + buffer_.size());
@@ -119,18 +126,25 @@ SinumerikReader::~SinumerikReader() = default;
 
 std::optional<cl::Record> SinumerikReader::next() {
   State& s = *state_;
+  // the translator's error, once the G-code reader reached its ISO line without an error of its own before it
+  const auto after_failure = [&](int iso_line) {
+    return s.buffer.failure && (iso_line == 0 || iso_line >= s.buffer.failure_iso_line);
+  };
+  std::optional<cl::Record> r;
   try {
-    std::optional<cl::Record> r = s.gcode.next();
-    if (auto* t = r ? std::get_if<cl::ToolChange>(&*r) : nullptr) s.name_tool(*t, t->where.line);  // (ISO line)
-    if (r) std::visit([&](auto& x) { x.where = cl::Location{s.source_of(x.where.line), 0}; }, *r);
-    return r;
+    r = s.gcode.next();
   } catch (const InputError& e) {
-    if (s.buffer.failure) std::rethrow_exception(s.buffer.failure);
+    if (after_failure(e.where().line)) std::rethrow_exception(s.buffer.failure);
     const int line = s.source_of(e.where().line);
     throw InputError({s.file, line, 0}, e.detail(), s.text_of(line));
   } catch (const Infeasible& e) {
     throw Infeasible(s.remap(e.what()));
   }
+  if (after_failure(r ? std::visit([](const auto& x) { return x.where.line; }, *r) : 0))  // (ISO line)
+    std::rethrow_exception(s.buffer.failure);
+  if (auto* t = r ? std::get_if<cl::ToolChange>(&*r) : nullptr) s.name_tool(*t, t->where.line);  // (ISO line)
+  if (r) std::visit([&](auto& x) { x.where = cl::Location{s.source_of(x.where.line), 0}; }, *r);
+  return r;
 }
 
 std::vector<std::string> SinumerikReader::take_notices() {

@@ -48,6 +48,8 @@ constexpr GEntry kG[] = {
     {602, GAction::note, "exact stop coarse"},
     {603, GAction::note, "exact stop at interpolation end"},
     {97, GAction::note, "constant spindle speed (rpm)"},
+    {62, GAction::note, "corner deceleration at inside corners with radius compensation: the feed only"},
+    {621, GAction::note, "corner deceleration at all corners: the feed only"},
     {450, GAction::note, "transition circle at outer corners"},
     {451, GAction::note, "intersection at outer corners"},
 };
@@ -150,6 +152,13 @@ std::string refused_g(int g) {
   if (g == 110 || g == 111 || g == 112) return fmt::format("G{}: polar coordinates are not read", g);
   if (g == 331 || g == 332 || g == 33) return fmt::format("G{}: thread cutting and tapping are not read", g);
   if (g == 96) return "G96 (constant cutting speed) is not read: program the speed in rpm (G97)";
+  if (g == 43 || g == 44)
+    return fmt::format(
+        "G{} (an ISO tool length offset with H: Sinumerik's ISO dialect mode) in a program read as Siemens "
+        "language (it holds Siemens statements: DEF, MCALL, CYCLE..., ...): in Siemens language the tool's "
+        "length comes with its D number (T1 D1); write D<n> for G{} ... H<n>, or post the CL data (a "
+        "program of ISO words only is read as G-code)",
+        g, g);
   return fmt::format("G{} is not read; {}", g, kPostCl);
 }
 
@@ -173,6 +182,13 @@ std::string refused_name(const std::string& name) {
         "{}: the subprogram {} is not in this file; append it as %_N_{}_SPF (its blocks) and post "
         "the file",
         name, name, name);
+  if (name.size() > 1 && name[0] == 'M' && name.find_first_not_of("0123456789", 1) == std::string::npos)
+    return fmt::format(
+        "{}(...): an M function with a value is the machine builder's own, not a Siemens function (NX's post "
+        "for the Cincinnati FTV5 writes M200 / M202(tolerance) / M204 as that machine's spline mode on / off): "
+        "what it does is not in the program; where it only smooths the path within a tolerance, delete the "
+        "block and post again, or post the CL data",
+        name);
   if (name.rfind("CYCLE", 0) == 0) return fmt::format("{} (a Sinumerik cycle) is not read; {}", name, kPostCl);
   if (!name.empty() && name[0] == '$') return fmt::format("{} (a system variable) is not read", name);
   return fmt::format("{} is not read (not a statement, address or subprogram of this file ncpost knows); {}", name,

@@ -16,7 +16,7 @@
 //     between two) and reads what follows as tool-tip positions in the swivelled plane;
 //   - CYCLE81/CYCLE82 (also under MCALL) become G81/G82 or their motions; CYCLE83/85/86 become
 //     their motions (sinumerik_holes.cpp); CYCLE84/840 the tap G84/G74 (sinumerik_taps.cpp);
-//   - SUPA blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
+//   - SUPA and G53 blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
 //   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
 //     puts into the tool change (cl::ToolChange::name).
 // Everything else is refused by name (InputError with file:line:column).
@@ -123,6 +123,7 @@ class Translator {
   void value_address(const ProgramLine& l, const Item& item, Words& w);
   void called(const ProgramLine& l, const Item& item, Words& w);
   void write_block(const ProgramLine& l, Words& w);
+  void frames_suppressed(const ProgramLine& l, const Words& w);
   void frame_statement(const ProgramLine& l);
 
   // motion (sinumerik_motion.cpp)

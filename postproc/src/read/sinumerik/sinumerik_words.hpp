@@ -27,12 +27,13 @@ struct Translator::Words {
   std::array<std::optional<double>, 3> orientation;  ///< A3 B3 C3
   std::optional<double> dwell_s;                     ///< G4 F (s)
   std::optional<std::string> tool_name;              ///< a T word: T="name" (its name), T<n> ("")
-  bool supa = false;
-  bool program_end = false;        ///< M2 / M30
-  bool unit_end = false;           ///< M17 / RET
-  std::vector<const Item*> after;  ///< calls run after the motion (CYCLE800, CYCLE81, subprograms)
-  int column = 1;                  ///< of the block's first item
-  int axis_column = 1;             ///< of its first axis word
+  bool supa = false;                                 ///< SUPA, or G53 (read as SUPA: sinumerik_block.cpp)
+  std::optional<int> g53_column;                     ///< G53 in this block: where
+  bool program_end = false;                          ///< M2 / M30
+  bool unit_end = false;                             ///< M17 / RET
+  std::vector<const Item*> after;                    ///< calls run after the motion (CYCLE800, CYCLE81, subprograms)
+  int column = 1;                                    ///< of the block's first item
+  int axis_column = 1;                               ///< of its first axis word
 
   bool any_linear() const { return xyz[0] || xyz[1] || xyz[2]; }
   bool any_rotary() const { return abc[0] || abc[1] || abc[2]; }
