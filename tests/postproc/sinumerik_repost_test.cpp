@@ -166,6 +166,10 @@ TEST_CASE("sinumerik re-post: CYCLE800 tilts the plane 30 deg about X; the outpu
   }
   CHECK(among);
   if (positive_exists) CHECK(got.at('A') > 0);  // _DIR = +1: the reference axis A on its plus side
+  // a bare CYCLE800 (no parameter list: every parameter left out) is CYCLE800(), the reset
+  std::string bare = text;
+  bare.replace(bare.find("N90 CYCLE800()"), 14, "N90 CYCLE800");
+  CHECK(repost(bare, true) == out);
 }
 
 TEST_CASE(

@@ -211,7 +211,9 @@ void Translator::named(const ProgramLine& l, const Item& item, Words& w) {
     w.supa = true;
     return;
   }
-  if (program_.unit_named.count(n)) {
+  // a cycle called without a parameter list leaves every parameter out: CYCLE800 is CYCLE800(), the
+  // reset (as NC-PB's programs and ShopMill write it before the first plane)
+  if (program_.unit_named.count(n) || n == "CYCLE800") {
     w.after.push_back(&item);
     return;
   }
