@@ -375,12 +375,15 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
   }
 }
 
-TEST_CASE("sinumerik: SOFT, FFWON, COMPCAD, CYCLE832, G642 are noted and not refused") {
-  const Read r = read("SOFT FFWON COMPCAD G642\nCYCLE832(0.01,_FINISH,1)\nG0 X0 Y0 Z0 A0 C0\nM30\n");
+TEST_CASE("sinumerik: SOFT, FFWON, COMPCAD, CYCLE832, G642, WORKPIECE are noted and not refused") {
+  const Read r = read(
+      "SOFT FFWON COMPCAD G642\nCYCLE832(0.01,_FINISH,1)\nWORKPIECE(,,,\"BOX\",112,102,0,-80,0,0,102,102)\n"
+      "G0 X0 Y0 Z0 A0 C0\nM30\n");
   CHECK(only<cl::Motion>(r.records).size() == 1);
   std::string all;
   for (const auto& n : r.notices) all += n + "\n";
-  for (const char* w : {"SOFT", "FFWON", "COMPCAD", "G642", "CYCLE832"}) CHECK_THAT(all, Catch::Contains(w));
+  for (const char* w : {"SOFT", "FFWON", "COMPCAD", "G642", "CYCLE832", "WORKPIECE"})
+    CHECK_THAT(all, Catch::Contains(w));
 }
 
 TEST_CASE("sinumerik: detection by the language's own constructs, not by ISO words") {

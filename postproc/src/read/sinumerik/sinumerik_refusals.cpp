@@ -71,6 +71,7 @@ constexpr NameEntry kNoted[] = {
     {"COMPCURV", "compressor with constant curvature"},
     {"COMPSURF", "compressor for surfaces"},
     {"CYCLE832", "high-speed settings: a path tolerance of the control"},
+    {"WORKPIECE", "the blank's shape for the control's simulation (ShopMill): no motion"},
     {"FNORM", "normal feed"},
     {"CFC", "constant feed at the contour"},
     {"CFTCP", "constant feed at the tool centre"},
