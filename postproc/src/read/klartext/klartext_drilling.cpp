@@ -85,61 +85,59 @@ std::variant<DrillingCycle, std::string> drilling_200(const std::map<int, double
   return d;
 }
 
-std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>& q, cl::Location where) {
-  const auto get = [&q](int n) -> std::optional<double> {
-    const auto it = q.find(n);
-    return it == q.end() ? std::nullopt : std::optional<double>(it->second);
-  };
-  for (int n : {200, 201, 239, 203, 204})
-    if (!get(n)) return fmt::format("CYCL DEF 207 without Q{} (expected Q200 Q201 Q239 Q203 Q204)", n);
-  const double clearance = *get(200), depth = *get(201), pitch = *get(239), second = *get(204);
-  if (!(clearance > 0.0)) return fmt::format("CYCL DEF 207: Q200={} (the set-up clearance must be > 0)", clearance);
-  if (!(depth < 0.0)) return fmt::format("CYCL DEF 207: Q201={} (the thread's depth must be < 0)", depth);
-  if (pitch == 0.0 || std::abs(pitch) > 100.0)
-    return fmt::format("CYCL DEF 207: Q239={} (the pitch in mm: + right-hand, - left-hand)", pitch);
+namespace {
+
+/// The tap (cl::Cycle::Kind::tap) of CYCL DEF `number` with the parameters both tapping cycles share
+/// (Q200 set-up clearance, Q201 depth, Q203 surface, Q204 2nd set-up clearance), or why not.
+std::variant<DrillingCycle, std::string> tap_of(int number, const char* text, const std::map<int, double>& q,
+                                                cl::Location where) {
+  const double clearance = q.at(200), depth = q.at(201), second = q.at(204);
+  if (!(clearance > 0.0))
+    return fmt::format("CYCL DEF {}: Q200={} (the set-up clearance must be > 0)", number, clearance);
+  if (!(depth < 0.0)) return fmt::format("CYCL DEF {}: Q201={} (the thread's depth must be < 0)", number, depth);
   DrillingCycle d;
   cl::Cycle& c = d.cycle;
   c.where = where;
   c.kind = cl::Cycle::Kind::tap;
-  c.kind_word = "CYCL DEF 207";
-  c.text = "CYCL DEF 207 RIGID TAPPING";
+  c.kind_word = fmt::format("CYCL DEF {}", number);
+  c.text = text;
   c.depth_mm = -depth;
   c.rapid_to_mm = clearance;
   if (second > clearance) c.retract_mm = second;
-  c.pitch_mm = std::abs(pitch);
-  c.left_hand = pitch < 0.0;
-  d.surface_mm = *get(203);
+  d.surface_mm = q.at(203);
   d.return_mm = std::max(clearance, second);
   return d;
 }
 
+}  // namespace
+
+std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>& q, cl::Location where) {
+  for (int n : {200, 201, 239, 203, 204})
+    if (!q.count(n)) return fmt::format("CYCL DEF 207 without Q{} (expected Q200 Q201 Q239 Q203 Q204)", n);
+  const double pitch = q.at(239);
+  if (pitch == 0.0 || std::abs(pitch) > 100.0)
+    return fmt::format("CYCL DEF 207: Q239={} (the pitch in mm: + right-hand, - left-hand)", pitch);
+  auto d = tap_of(207, "CYCL DEF 207 RIGID TAPPING", q, where);
+  if (DrillingCycle* tap = std::get_if<DrillingCycle>(&d)) {
+    tap->cycle.pitch_mm = std::abs(pitch);
+    tap->cycle.left_hand = pitch < 0.0;
+  }
+  return d;
+}
+
 std::variant<DrillingCycle, std::string> tapping_206(const std::map<int, double>& q, cl::Location where) {
-  const auto get = [&q](int n) -> std::optional<double> {
-    const auto it = q.find(n);
-    return it == q.end() ? std::nullopt : std::optional<double>(it->second);
-  };
   for (int n : {200, 201, 206, 203, 204})
-    if (!get(n)) return fmt::format("CYCL DEF 206 without Q{} (expected Q200 Q201 Q206 Q211 Q203 Q204)", n);
-  const double clearance = *get(200), depth = *get(201), feed = *get(206), second = *get(204);
-  const double dwell = get(211).value_or(0.0);
-  if (!(clearance > 0.0)) return fmt::format("CYCL DEF 206: Q200={} (the set-up clearance must be > 0)", clearance);
-  if (!(depth < 0.0)) return fmt::format("CYCL DEF 206: Q201={} (the thread's depth must be < 0)", depth);
+    if (!q.count(n)) return fmt::format("CYCL DEF 206 without Q{} (expected Q200 Q201 Q206 Q211 Q203 Q204)", n);
+  const double feed = q.at(206);
+  const double dwell = q.count(211) ? q.at(211) : 0.0;
   if (!(feed > 0.0) || std::isinf(feed))
     return fmt::format("CYCL DEF 206: Q206={} (the tapping feed, speed x pitch, must be a feed > 0)", feed);
   if (dwell < 0.0 || dwell > cl::kMaxDwellSeconds) return fmt::format("CYCL DEF 206: Q211={} s is no dwell", dwell);
-  DrillingCycle d;
-  cl::Cycle& c = d.cycle;
-  c.where = where;
-  c.kind = cl::Cycle::Kind::tap;
-  c.kind_word = "CYCL DEF 206";
-  c.text = "CYCL DEF 206 TAPPING";
-  c.depth_mm = -depth;
-  c.rapid_to_mm = clearance;
-  if (second > clearance) c.retract_mm = second;
-  c.dwell_s = dwell;
-  d.surface_mm = *get(203);
-  d.return_mm = std::max(clearance, second);
-  d.tap_feed_mm_min = feed;
+  auto d = tap_of(206, "CYCL DEF 206 TAPPING", q, where);
+  if (DrillingCycle* tap = std::get_if<DrillingCycle>(&d)) {
+    tap->cycle.dwell_s = dwell;
+    tap->tap_feed_mm_min = feed;
+  }
   return d;
 }
 
