@@ -113,6 +113,7 @@ struct GcodeClReader::State {
     }
     interpreter.set_work_offsets(options.work_offsets, options.control);
     interpreter.set_tool_offset_writes(options.tool_offset_writes);
+    interpreter.set_word_rules(options.tool_words, options.integer_words);
     std::vector<std::string> dirs;
     if (!options.subprogram_dir.empty()) dirs.push_back(options.subprogram_dir);
     const std::string own = std::filesystem::path(file).parent_path().string();
@@ -686,13 +687,15 @@ struct GcodeClReader::State {
       return true;
     }
     MacroFlow flow;
-    if (may_hold_macro(line)) {
+    const bool computed_line = may_hold_macro(line);
+    if (computed_line) {
       if (options.block_delete && is_deleted(line)) return skip_deleted(line_number);
       current_position_parameters();
       flow = apply_macro_line(line, parameters, macro_line, file, line_number);
       line = macro_line;
     }
     parse_block(line, block, file, line_number);
+    block.computed = computed_line;
     if (block.empty()) {
       program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
       return true;
