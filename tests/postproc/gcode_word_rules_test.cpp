@@ -192,3 +192,23 @@ TEST_CASE("integer words: increments posted and read back: X20 is 0.020 mm, unde
                        "/units.nc " + in,
                    dir + "/units.log") == 3);
 }
+
+TEST_CASE("integer words: increments reach a cycle's Q and R but not a dwell's time; a parameter stays in units") {
+  // G83 Q2000 = 2 mm pecks, R2000 = 2 mm, Z-5000 = -5 mm; G4 X1000 is a time (1 s as the ms reading gives it)
+  const std::string text =
+      "G21 G90 G94 G17\nG0 X10. Y10. Z10.\nG98 G83 Z-5000 R2000 Q2000 F100.\nG80\nG4 X1000\n#1 = 3\nG1 X#1 "
+      "F100.\nM30\n";
+  const auto records = read_all(text, rules({}, cl::IntegerWords::increments));
+  const auto cycles = only<cl::Cycle>(records);  // the hole's and G80's (Kind::off)
+  REQUIRE(cycles.size() == 2);
+  CHECK(cycles[0].kind == cl::Cycle::Kind::deep);
+  CHECK(cycles[1].kind == cl::Cycle::Kind::off);
+  CHECK(cycles[0].peck_mm == Approx(2.0));
+  CHECK(cycles[0].depth_mm == Approx(5.0 + 2.0));  // the bottom 7 mm below the hole's R plane at 2 mm
+  const auto dwells = only<cl::Dwell>(records);
+  REQUIRE(dwells.size() == 1);
+  CHECK(dwells[0].seconds == Approx(1.0));  // X1000 read by --dwell-p auto: 1000 ms, not 1000 increments
+  const auto ms = only<cl::Motion>(records);
+  REQUIRE(!ms.empty());
+  CHECK(ms.back().point.tip_mm.x() == Approx(3.0));  // #1 = 3: X3. (a parameter's value is in units)
+}
