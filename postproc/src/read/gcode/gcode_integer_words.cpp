@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Coordinates written without a decimal point (see gcode_integer_words.hpp).
-#include "read/gcode/gcode_integer_words.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 
 #include <fmt/format.h>
 

@@ -12,7 +12,7 @@
 
 #include "ncpost/machines/input_error.hpp"
 #include "read/char_scan.hpp"
-#include "read/gcode/gcode_integer_words.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 
 namespace ncpost::gcode {
 namespace {

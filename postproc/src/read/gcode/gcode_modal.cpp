@@ -12,7 +12,7 @@
 
 #include "ncpost/postproc/read/gcode/gcode_control_words.hpp"
 #include "read/char_scan.hpp"
-#include "read/gcode/gcode_integer_words.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 #include "read/gcode/gcode_tool_offsets.hpp"
 
 namespace ncpost::gcode {
@@ -761,7 +761,8 @@ void Interpreter::change_tool(const Context& cx, const Words& w, const Codes& co
 void Interpreter::set_word_rules(cl::ToolWords tool_words, cl::IntegerWords integer_words) {
   tool_words_ = tool_words;
   integer_words_ = integer_words;
-  integer_evidence_ = integer_words == cl::IntegerWords::automatic ? std::make_shared<IntegerWordEvidence>() : nullptr;
+  integer_evidence_.reset();
+  if (integer_words == cl::IntegerWords::automatic) integer_evidence_.emplace();
 }
 
 // coordinates without a decimal point (gcode_integer_words.hpp): whole units, least increments, or

@@ -35,11 +35,10 @@
 #include "ncpost/postproc/read/cl_record.hpp"
 #include "ncpost/postproc/read/gcode/gcode_arc.hpp"
 #include "ncpost/postproc/read/gcode/gcode_block.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 #include "ncpost/postproc/read/gcode/work_frames.hpp"
 
 namespace ncpost::gcode {
-
-class IntegerWordEvidence;  // read/gcode/gcode_integer_words.hpp
 
 enum class MotionMode { none, rapid, linear, arc_cw, arc_ccw, cycle };
 
@@ -238,7 +237,7 @@ class Interpreter {
   ArcCentre arc_centre_option_ = ArcCentre::incremental;      ///< --arc-centre
   cl::ToolWords tool_words_ = cl::ToolWords::one;             ///< --tool-words
   cl::IntegerWords integer_words_ = cl::IntegerWords::units;  ///< --integer-words
-  std::shared_ptr<IntegerWordEvidence> integer_evidence_;     ///< IntegerWords::automatic's watch (null: none)
+  std::optional<IntegerWordEvidence> integer_evidence_;       ///< IntegerWords::automatic's watch (none: another rule)
   int last_arc_line_ = 0;       ///< the last arc (for the message of an arc without I J or R)
   std::string last_arc_words_;  ///< its centre words ("I and J", "R")
   ModalState state_;
