@@ -44,11 +44,11 @@ TEST_CASE("gcode cli: a program beyond the axis limits exits 3 naming the line, 
 TEST_CASE("gcode cli: the CAMotics botomata program posts in G55, whose values its own G10 L2 sets (notice)") {
   const std::string dir = temp_dir();
   const std::string log = dir + "/botomata.log";
-  const int rc =
-      ncpost::test::run_ncpost("post --input-kind rtcp --machine " + ncpost::test::source("machines/vmcl600.toml") +
-                                   " --workpiece-origin -100,-40,-100 --tolerance 0.01 --verify --dialect fanuc -o " +
-                                   dir + "/out.nc " + ncpost::test::data("real/camotics_botomata_bottom.nc"),
-                               log);
+  const int rc = ncpost::test::run_ncpost(
+      "post --input-kind rtcp --machine " + ncpost::test::source("machines/vmcl600.toml") +
+          " --workpiece-origin -100,-40,-100 --tolerance 0.01 --verify --dialect fanuc --integer-words units -o " +
+          dir + "/out.nc " + ncpost::test::data("real/camotics_botomata_bottom.nc"),
+      log);
   const std::string text = ncpost::test::read_text_file(log);
   INFO(text);
   CHECK(rc == 0);

@@ -156,8 +156,9 @@ TEST_CASE("gcode macro line: assignments, word values and columns") {
   p.set(24, 12.5);
   p.set(510, 4.0);
   apply_macro_line("G1 X#24 Y[#510+1] Z-#1 F#<feed>", p, out, "t.ngc", 1);
-  // `[#510+1]` is 8 characters, `5` one: 7 blanks before it; `-#1` (3) as ` -5`; `#<feed>` (7) as `    100`
-  CHECK(out == "G1 X12.5 Y       5 Z -5 F    100");
+  // `[#510+1]` is 8 characters, `5.` two (a length word's value keeps its point: in units, never least increments,
+  // gcode_integer_words.hpp): 6 blanks before it; `-#1` (3) as `-5.`; `#<feed>` (7) as `    100`
+  CHECK(out == "G1 X12.5 Y      5. Z-5. F    100");
   // a number longer than its expression moves the rest; a vacant word value is refused
   try {
     apply_macro_line("G1 X#33", p, out, "t.ngc", 7);

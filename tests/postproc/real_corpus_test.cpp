@@ -183,6 +183,7 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
                          (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() + " --tolerance " +
                          std::to_string(tolerance_mm) + " --verify -o " + out;
       if (e.contains("input_kind")) args += " --input-kind " + e.at("input_kind").get<std::string>();
+      if (e.contains("options")) args += " " + e.at("options").get<std::string>();  // how the file's control reads it
       args += " " + ncpost::test::data("real/" + file);
       const int rc = ncpost::test::run_ncpost(args, log);
       const std::string messages = ncpost::test::read_text_file(log);

@@ -51,6 +51,8 @@ gcode::GcodeReaderOptions gcode_options(
   go.units_given = options.units_given;
   go.integer_dwell = options.integer_dwell;
   go.arc_centre = options.arc_centre;
+  go.tool_words = options.tool_words;
+  go.integer_words = options.integer_words;
   go.work_offsets = options.work_offsets;
   go.control = options.control;
   go.tool_offset_writes = options.tool_offset_writes;
@@ -124,7 +126,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(
   if (sinumerik) {
     sinumerik::ReaderOptions so;
     so.gcode = go;
-    so.gcode.kind = gcode::InputKind::automatic;  // the program's TRAORI/TRAFOOF and CYCLE800 say
+    so.gcode.kind = gcode::InputKind::automatic;       // the program's TRAORI/TRAFOOF and CYCLE800 say
+    so.gcode.integer_words = cl::IntegerWords::units;  // Sinumerik reads whole units (its lines are translated)
     return std::make_unique<sinumerik::SinumerikReader>(in, name, machine, setup, so);
   }
   return std::make_unique<gcode::GcodeClReader>(in, name, machine, setup, go);

@@ -336,8 +336,14 @@ void read_tool_offsets(const Section& s, Dialect& d) {
 }
 
 void read_input(const Section& s, Dialect& d) {
-  s.known({"control", "power_on", "tool_offsets"});
+  s.known({"control", "power_on", "tool_offsets", "integer_words"});
   if (s.has("tool_offsets")) read_tool_offsets(s, d);
+  if (s.has("integer_words")) {
+    const std::string rule = s.text("integer_words");
+    if (rule != "units" && rule != "increments")
+      throw s.wrong(s.node("integer_words"), "integer_words", "\"units\" or \"increments\", got \"" + rule + "\"");
+    d.input_integer_words = rule == "units" ? cl::IntegerWords::units : cl::IntegerWords::increments;
+  }
   if (s.has("control")) {
     const std::string control = s.text("control");
     if (control == "fanuc")

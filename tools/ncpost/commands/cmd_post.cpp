@@ -106,6 +106,8 @@ PostRequest post_request_of(const PostArgs& a) {
   r.reader.control = r.dialect.input_control;
   r.reader.tool_offset_writes = r.dialect.input_tool_offsets;
   r.reader.power_on = r.dialect.input_power_on;
+  if (r.reader.integer_words == cl::IntegerWords::automatic && r.dialect.input_integer_words)
+    r.reader.integer_words = *r.dialect.input_integer_words;  // the control's own reading (--integer-words auto)
   r.reader.power_on_source = fmt::format("the {} dialect's [input] power_on", r.dialect.name);
   r.tolerance_mm = tolerance_of(a.tolerance);
   r.tolerance_is_default = a.tolerance.empty();

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "ncpost/machines/load.hpp"
 #include "ncpost/postproc/read/cl_input.hpp"
@@ -16,6 +18,16 @@ namespace ncpost::cli {
 // Plausible set-up values (README "Command line"): beyond them a typing slip, not a machine.
 constexpr double kMaxToolLengthMm = 2000.0;
 constexpr double kMaxWorkpieceOriginMm = 100000.0;
+
+namespace {
+
+/// An option whose value is one of `choices`.
+void add_choice(CLI::App& sub, const std::string& name, std::string& value, const std::string& help,
+                std::vector<std::string> choices) {
+  sub.add_option(name, value, help)->check(CLI::IsMember(std::move(choices)));
+}
+
+}  // namespace
 
 void add_job_options(CLI::App& sub, JobOptions& o) {
   sub.add_option("--machine", o.machine, "Machine definition (TOML)")->required()->check(CLI::ExistingFile);
@@ -48,6 +60,13 @@ void add_job_options(CLI::App& sub, JobOptions& o) {
                  "posts), absolute = the centre's coordinates (as G90.1); an arc that does not fit is refused, "
                  "naming the readings it fits")
       ->check(CLI::IsMember({"incremental", "centre-to-start", "absolute"}));
+  add_choice(sub, "--tool-words", o.tool_words,
+             "G-code input, T01 T02 M06: one = refused (default); load-next = T01 loaded, T02 pre-selected (Mazak)",
+             {"one", "load-next"});
+  add_choice(sub, "--integer-words", o.integer_words,
+             "G-code input, X20: units; increments = 0.001 mm, 0.0001 in (Fanuc DPI=0); auto (default) = units, "
+             "refused beside whole numbers with a point (X20.): docs/choices.md",
+             {"auto", "units", "increments"});
   sub.add_option("--work-offsets", o.work_offsets,
                  "G-code input: the values of the work offsets G54 .. G59.3, G54.1 P1 .. P300 (TOML, or a LinuxCNC "
                  "var file: 5221 .. 5389; docs/choices.md, G-code input): a program that moves in several is "
@@ -95,6 +114,10 @@ cl::ReaderOptions reader_options(const JobOptions& o) {
   ro.arc_centre = o.arc_centre == "centre-to-start" ? cl::ArcCentre::centre_to_start
                   : o.arc_centre == "absolute"      ? cl::ArcCentre::absolute
                                                     : cl::ArcCentre::incremental;
+  ro.tool_words = o.tool_words == "load-next" ? cl::ToolWords::load_next : cl::ToolWords::one;
+  ro.integer_words = o.integer_words == "units"        ? cl::IntegerWords::units
+                     : o.integer_words == "increments" ? cl::IntegerWords::increments
+                                                       : cl::IntegerWords::automatic;
   if (!o.work_offsets.empty())
     ro.work_offsets = std::make_shared<const gcode::WorkOffsetTable>(gcode::load_work_offsets(o.work_offsets));
   ro.subprogram_dir = o.subprogram_dir;

@@ -22,8 +22,10 @@ struct JobOptions {
   std::string msys = "ignore";             ///< NX MSYS: "ignore" (GOTOs as written) or "apply"
   std::string dwell_p = "auto";            ///< G-code dwell time without a decimal point: "auto", "ms" or "s"
   std::string arc_centre = "incremental";  ///< G-code I J K: "incremental", "centre-to-start" or "absolute"
-  std::string work_offsets;                ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
-  std::string subprogram_dir;              ///< G-code: where subprograms in other files are looked for first, "" none
+  std::string tool_words = "one";          ///< G-code two T words in a block: "one" (refused) or "load-next"
+  std::string integer_words = "auto";  ///< G-code coordinates without a decimal point: "auto", "units", "increments"
+  std::string work_offsets;            ///< G-code: the work offsets' values (TOML or a LinuxCNC var file), "" none
+  std::string subprogram_dir;          ///< G-code: where subprograms in other files are looked for first, "" none
 };
 
 struct LoadedJob {

@@ -113,6 +113,7 @@ struct GcodeClReader::State {
     }
     interpreter.set_work_offsets(options.work_offsets, options.control);
     interpreter.set_tool_offset_writes(options.tool_offset_writes);
+    interpreter.set_word_rules(options.tool_words, options.integer_words);
     std::vector<std::string> dirs;
     if (!options.subprogram_dir.empty()) dirs.push_back(options.subprogram_dir);
     const std::string own = std::filesystem::path(file).parent_path().string();
@@ -506,23 +507,39 @@ struct GcodeClReader::State {
     held_motions.clear();
   }
 
-  /// Axes that a G28/G30/G53 before the program's start was settled moved to a machine position
-  /// (the line and the code), until the program programs them absolutely again.
-  std::array<int, 6> unplaced_line{};
-  std::array<std::string, 6> unplaced_code;
+  /// Where a G28/G30/G53 left an axis at a position the program frame does not give: the line and the
+  /// code of that move (line 0: the axis is placed), and whether it came before the program's start
+  /// was settled. One rule, two moments (docs/choices.md, G-code input): before the start every axis
+  /// the move named (but a rotary axis that lands where it is taken, lands_where_assumed) must be
+  /// programmed absolutely before the start settles (refuse_unplaced_machine_moves, at the move's
+  /// line; note_placed_axes clears it); after the start an axis sent to a reference point the machine
+  /// file does not give must be programmed absolutely by the next motion (check_reference_axes, at
+  /// the motion's line).
+  struct Unplaced {
+    int line = 0;
+    std::string code;
+    bool before_start = false;
+  };
+  std::array<Unplaced, 6> unplaced{};
+
+  /// The axes of `unplaced` left before the start, as "X, Y".
+  std::string unplaced_before_start() const {
+    std::string axes;
+    for (std::size_t i = 0; i < 6; ++i)
+      if (unplaced[i].line && unplaced[i].before_start)
+        axes += axes.empty() ? std::string(1, "XYZABC"[i]) : std::string(", ") + "XYZABC"[i];
+    return axes;
+  }
 
   /// The start settles with an axis where a G28/G30/G53 left it, at a position in the program frame
   /// nothing gives: taken from a first value or 0 it would be wrong, so the post stops there.
   void refuse_unplaced_machine_moves(int cutting_line) {
-    std::string axes;
-    int line = 0;
-    std::string code;
-    for (std::size_t i = 0; i < 6; ++i) {
-      if (!unplaced_line[i]) continue;
-      axes += axes.empty() ? std::string(1, "XYZABC"[i]) : std::string(", ") + "XYZABC"[i];
-      if (!line) line = unplaced_line[i], code = unplaced_code[i];
-    }
+    const std::string axes = unplaced_before_start();
     if (axes.empty()) return;
+    const auto first =
+        std::find_if(unplaced.begin(), unplaced.end(), [](const Unplaced& u) { return u.line && u.before_start; });
+    const int line = first->line;
+    const std::string& code = first->code;
     const std::string then = cutting_line > 0 ? fmt::format("the cutting motion at line {}", cutting_line)
                                               : std::string("the rapids that follow");
     throw InputError({file, line, 0},
@@ -548,7 +565,7 @@ struct GcodeClReader::State {
   void note_placed_axes(const BlockEffect& fx) {
     if (fx.machine_move || interpreter.state().incremental) return;
     for (std::size_t i = 0; i < 6; ++i)
-      if (fx.programmed[i]) unplaced_line[i] = 0;
+      if (fx.programmed[i] && unplaced[i].before_start) unplaced[i] = {};
   }
 
   std::array<double, 6> first_value{};  ///< of each axis, once known (program units: mm, rad)
@@ -686,13 +703,15 @@ struct GcodeClReader::State {
       return true;
     }
     MacroFlow flow;
-    if (may_hold_macro(line)) {
+    const bool computed_line = may_hold_macro(line);
+    if (computed_line) {
       if (options.block_delete && is_deleted(line)) return skip_deleted(line_number);
       current_position_parameters();
       flow = apply_macro_line(line, parameters, macro_line, file, line_number);
       line = macro_line;
     }
     parse_block(line, block, file, line_number);
+    block.computed = computed_line;
     if (block.empty()) {
       program_flow.follow(flow, line_offset, line_number, leader_lines + 1);
       return true;
@@ -819,13 +838,10 @@ struct GcodeClReader::State {
   }
 
   // ---- moves in the machine's own coordinates: G28/G30 (reference point), G53 ----------------
-  std::array<bool, 6> at_reference{};  ///< axes sent to a reference point the machine file does not give
-  int reference_line = 0;
-
   /// A motion while an axis stands at a reference point of unknown position must program it.
   void check_reference_axes(const BlockEffect& fx, cl::Location where, std::string_view line) {
     for (std::size_t i = 0; i < 6; ++i) {
-      if (!at_reference[i]) continue;
+      if (!unplaced[i].line || unplaced[i].before_start) continue;
       const char L = "XYZABC"[i];
       if (!fx.programmed[i] || interpreter.state().incremental)
         throw InputError({file, where.line, where.column},
@@ -833,9 +849,9 @@ struct GcodeClReader::State {
                                      "machine file does not give: this motion does not say where {} goes (program "
                                      "{} absolutely on the first motion after the return, or give the machine file "
                                      "[axes.{}] reference = ...)",
-                                     L, reference_line, L, L, L),
+                                     L, unplaced[i].line, L, L, L),
                          std::string(line));
-      at_reference[i] = false;
+      unplaced[i] = {};
     }
   }
 
@@ -910,8 +926,7 @@ struct GcodeClReader::State {
       to.placed += fmt::format("{}{} goes to {:.3f} {}, {}{}", to.placed.empty() ? "" : "; ", L, target * scale, unit,
                                from, ref ? " " + point : std::string());
     } else {
-      at_reference[i] = true;
-      reference_line = where.line;
+      unplaced[i] = {where.line, mm.code, false};
       to.unknown += to.unknown.empty() ? std::string(1, L) : fmt::format(", {}", L);
     }
   }
@@ -933,10 +948,8 @@ struct GcodeClReader::State {
                        std::string(line));
     if (!start_settled) {
       for (std::size_t i = 0; i < 6; ++i)
-        if (mm.axes[i] && machine.index_of("XYZABC"[i]) >= 0 && !lands_where_assumed(mm, i)) {
-          unplaced_line[i] = where.line;
-          unplaced_code[i] = mm.code;
-        }
+        if (mm.axes[i] && machine.index_of("XYZABC"[i]) >= 0 && !lands_where_assumed(mm, i))
+          unplaced[i] = {where.line, mm.code, true};
       notices.push_back(
           fmt::format("{}:{}:{}: {} before the first programmed position moves nothing in the "
                       "posted program (where the tool stands is not known yet): the program's first "

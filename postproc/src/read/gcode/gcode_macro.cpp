@@ -12,6 +12,7 @@
 
 #include "ncpost/machines/input_error.hpp"
 #include "read/char_scan.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 
 namespace ncpost::gcode {
 namespace {
@@ -125,7 +126,13 @@ struct Rewriter {
       fail(look, fmt::format("{} takes a vacant value (#0 or a parameter never set): Fanuc leaves the word out, "
                              "LinuxCNC reads 0; set the parameter first",
                              letter));
-    const std::string text = word_number(*v);
+    // a parameter's value is a number in the program's units on every control: a length or angle
+    // word gets its decimal point, so that no reading of integers (--integer-words) takes it for
+    // least increments
+    std::string text = word_number(*v);
+    if ((kIntegerWordLetters.find(letter) != std::string_view::npos || letter == 'Q') &&
+        text.find('.') == std::string::npos)
+      text += '.';
     if (text.size() < at - start) out.append(at - start - text.size(), ' ');
     out += text;
     return at;

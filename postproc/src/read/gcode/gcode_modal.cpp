@@ -12,6 +12,7 @@
 
 #include "ncpost/postproc/read/gcode/gcode_control_words.hpp"
 #include "read/char_scan.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 #include "read/gcode/gcode_tool_offsets.hpp"
 
 namespace ncpost::gcode {
@@ -362,6 +363,8 @@ struct Interpreter::Words {
   int g_count = 0;
   std::array<Code, 8> m;
   int m_count = 0;
+  double next_tool = 0.0;    ///< cl::ToolWords::load_next: the block's second T word (the tool pre-selected) ...
+  int next_tool_column = 0;  ///< ... and its column (0: none)
 
   bool has(char c) const { return (present >> (c - 'A')) & 1u; }
   bool has_point(char c) const { return (point >> (c - 'A')) & 1u; }
@@ -435,7 +438,8 @@ void refuse_tape_format(const Block& block, std::string_view line, const Fail& f
     while (end < line.size() && is_digit(line[end])) ++end;
     fail(word.column, fmt::format("{}{}: a number without a decimal point but with leading zeros is a fixed-format "
                                   "(tape) value whose decimal place the control's input format sets (on a Fanuc, "
-                                  "least increments): not read; write the program with decimal points",
+                                  "least increments): not read; write the program with decimal points, or post "
+                                  "with --integer-words increments (IS-B: 0.001 mm, 0.0001 in)",
                                   word.letter, line.substr(at, end - at)));
   }
 }
@@ -445,12 +449,13 @@ void refuse_tape_format(const Block& block, std::string_view line, const Fail& f
 void Interpreter::apply(const Block& block, int line_number, std::string_view line, BlockEffect& fx) {
   fx.clear();
   const Context cx{block, line_number, Fail{file_, line_number, line}};
-  refuse_tape_format(block, line, cx.fail);
-  const Words w = read_words(cx);
+  if (integer_words_ != cl::IntegerWords::increments) refuse_tape_format(block, line, cx.fail);
+  Words w = read_words(cx);
   Codes codes;
   group_g_codes(cx, w, codes);
   group_m_codes(cx, w, codes, fx);
   apply_units(cx, codes);
+  read_integer_words(cx, codes, w);
   apply_feed_spindle_tool(cx, w, codes, fx);
   apply_cutter_comp(cx, w, codes, fx);
   apply_modal_settings(cx, w, codes, fx);
@@ -492,6 +497,10 @@ Interpreter::Words Interpreter::read_words(const Context& cx) const {
       continue;
     }
     check_letter(cx, word);
+    if (L == 'T' && w.has('T')) {
+      second_tool_word(cx, word, w);
+      continue;
+    }
     if (w.has(L)) fail(word.column, fmt::format("{} appears twice in the block", L));
     const auto i = static_cast<std::size_t>(L - 'A');
     w.present |= 1u << (L - 'A');
@@ -692,13 +701,7 @@ void Interpreter::apply_feed_spindle_tool(const Context& cx, const Words& w, con
     if (st.spindle != cl::Spindle::Direction::off)
       fx.spindle = cl::Spindle{cx.at(w.col('S')), st.spindle, st.spindle_rpm};
   }
-  if (w.has('T')) {
-    const double t = w.get('T');
-    if (t < 0.0 || t != std::floor(t) || t > kMaxWordValue)
-      fail(w.col('T'), "expected a tool number (an integer >= 0)");
-    st.tool = static_cast<int>(t);
-  }
-  if (codes.m_tool.code10 == 6) fx.tool_change = cl::ToolChange{cx.at(codes.m_tool.column), st.tool, std::nullopt};
+  change_tool(cx, w, codes, fx);
   if (codes.m_spindle.code10 >= 0) {
     using D = cl::Spindle::Direction;
     st.spindle = codes.m_spindle.code10 == 3 ? D::cw : codes.m_spindle.code10 == 4 ? D::ccw : D::off;
@@ -707,6 +710,76 @@ void Interpreter::apply_feed_spindle_tool(const Context& cx, const Words& w, con
   if (codes.m_coolant.code10 >= 0) {
     const int c = codes.m_coolant.code10;
     fx.coolant = cl::Coolant{cx.at(codes.m_coolant.column), c != 9, c == 7 ? "MIST" : c == 8 ? "FLOOD" : "OFF"};
+  }
+}
+
+// A second T word: with cl::ToolWords::load_next the tool pre-selected for the next change
+void Interpreter::second_tool_word(const Context& cx, const Word& word, Words& w) const {
+  if (tool_words_ != cl::ToolWords::load_next)
+    cx.fail(word.column,
+            "a second T word in the block: on a Mazak (and in NX's Mazak posts, T01 T02 M06) the first "
+            "is the tool this M06 loads and the second the tool pre-selected for the next change; post "
+            "with --tool-words load-next to read it so");
+  if (w.next_tool_column) cx.fail(word.column, "a third T word in the block (a tool to load and one pre-selected)");
+  w.next_tool = word.value;
+  w.next_tool_column = word.column;
+}
+
+// T and M6 (cl::ToolWords::load_next: `T01 T02 M06` loads T01 and pre-selects T02, which the next change must load)
+void Interpreter::change_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx) {
+  ModalState& st = state_;
+  const auto tool_number = [&](double t, int column) {
+    if (t < 0.0 || t != std::floor(t) || t > kMaxWordValue) cx.fail(column, "expected a tool number (an integer >= 0)");
+    return static_cast<int>(t);
+  };
+  const bool change = codes.m_tool.code10 == 6;
+  if (w.next_tool_column && !change)
+    cx.fail(w.next_tool_column,
+            "two T words without M06: the second pre-selects the tool of the next change, which "
+            "is read only beside the M06 that loads the first");
+  if (w.has('T')) st.tool = tool_number(w.get('T'), w.col('T'));
+  if (!change) {
+    if (w.has('T')) st.preselected_line = 0;  // the program selects anew
+    return;
+  }
+  if (st.preselected_line && w.has('T') && st.tool != st.preselected_tool)
+    cx.fail(w.col('T'), fmt::format("this M06 loads T{}, but the change at line {} pre-selected T{} for the next "
+                                    "change (its second T word, --tool-words load-next): the program does not follow "
+                                    "that reading",
+                                    st.tool, st.preselected_line, st.preselected_tool));
+  fx.tool_change = cl::ToolChange{cx.at(codes.m_tool.column), st.tool, std::nullopt};
+  st.preselected_line = 0;
+  if (!w.next_tool_column) return;
+  st.preselected_tool = st.tool = tool_number(w.next_tool, w.next_tool_column);
+  st.preselected_line = cx.line_number;
+  notice_once("T pre-selected", cx.line_number, w.next_tool_column,
+              fmt::format("T{} after the T of the change is the tool pre-selected for the next change "
+                          "(--tool-words load-next): the posted program calls each tool at its change",
+                          st.preselected_tool));
+}
+
+void Interpreter::set_word_rules(cl::ToolWords tool_words, cl::IntegerWords integer_words) {
+  tool_words_ = tool_words;
+  integer_words_ = integer_words;
+  integer_evidence_.reset();
+  if (integer_words == cl::IntegerWords::automatic) integer_evidence_.emplace();
+}
+
+// coordinates without a decimal point (gcode_integer_words.hpp): whole units, least increments, or
+// (automatic) units unless the program also writes whole numbers with a decimal point
+void Interpreter::read_integer_words(const Context& cx, const Codes& codes, Words& w) {
+  const bool dwell = codes.is(g_non_modal, 40);  // G4's X is its time
+  if (integer_evidence_) {
+    if (const auto refusal = integer_evidence_->note(cx.block, cx.fail.text, file_, cx.line_number, dwell))
+      cx.fail(refusal->column, refusal->text);
+    return;
+  }
+  if (integer_words_ != cl::IntegerWords::increments) return;
+  for (const char L : std::string(kIntegerWordLetters) + 'Q') {  // Q: a canned cycle's peck (only they read it)
+    if (!w.has(L) || w.has_point(L) || (dwell && L == 'X')) continue;
+    const auto i = static_cast<std::size_t>(L - 'A');
+    w.value[i] = in_least_increments(w.value[i], L, state_.inch);
+    w.point |= 1u << (L - 'A');
   }
 }
 

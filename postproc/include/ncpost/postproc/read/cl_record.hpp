@@ -200,6 +200,19 @@ enum class IntegerDwell { automatic, milliseconds, seconds };
 /// (G90.1). The program's G90.1 or G91.1 switches `incremental` and is refused beside another.
 enum class ArcCentre { incremental, centre_to_start, absolute };
 
+/// G-code: what two T words in one block mean (docs/cli.md, --tool-words). `one`: a block has at most
+/// one T word (a second is refused, naming the option); `load_next`: with M06, the first is the tool
+/// this change loads and the second the tool pre-selected for the next change (Mazak; NX's Mazak
+/// posts write `T01 T02 M06`), which that change must then load.
+enum class ToolWords { one, load_next };
+
+/// G-code: what a coordinate written without a decimal point is (docs/cli.md, --integer-words):
+/// `units` whole mm / inches / degrees (LinuxCNC, grbl, Haas, a Fanuc with parameter DPI = 1);
+/// `increments` least input increments of IS-B (0.001 mm, 0.0001 in, 0.001 deg: a Fanuc with DPI = 0);
+/// `automatic` units, unless the program also writes whole numbers with a decimal point (`X20.`
+/// and `X20`): then refused, naming both lines and the option (docs/choices.md).
+enum class IntegerWords { automatic, units, increments };
+
 /// Options of every CL reader.
 /// The control family whose reading of a G-code program applies where controls differ (G10 L20:
 /// Fanuc and Haas set an extended offset's value, LinuxCNC makes the current position read the value).
@@ -232,6 +245,8 @@ struct ReaderOptions {
   enum class Msys { ignore, apply } msys = Msys::ignore;
   IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< G-code: the unit of a dwell time without a decimal point
   ArcCentre arc_centre = ArcCentre::incremental;         ///< G-code: what I J K of an arc give
+  ToolWords tool_words = ToolWords::one;                 ///< G-code: what two T words in one block mean
+  IntegerWords integer_words = IntegerWords::automatic;  ///< G-code: a coordinate without a decimal point
   /// Largest distance (mm) between a curve the file describes (NURBS) and the chords posted for it.
   double curve_tolerance_mm = 0.01;
   ControlFamily control = ControlFamily::unknown;  ///< G-code: the control the program was written for

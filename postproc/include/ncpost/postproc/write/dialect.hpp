@@ -144,6 +144,9 @@ struct Dialect {
   /// [input] tool_offsets: what the control's G10 L<n> sets in its tool offsets, by n (empty: none
   /// read, G10 L1/L10-L13 refused).
   std::map<int, cl::ToolOffsetWrite> input_tool_offsets;
+  /// [input] integer_words: what a coordinate without a decimal point is on this control ("units":
+  /// LinuxCNC, Haas), the reading of `--integer-words auto`; absent: auto's own rule (cl_record.hpp).
+  std::optional<cl::IntegerWords> input_integer_words;
 };
 
 /// The built-in dialect names, in the order of the help text.

@@ -56,9 +56,10 @@ struct Block {
   std::vector<Word> words;        ///< in the order written
   std::vector<BlockComment> comments;
   std::vector<BlockKeyword> keywords;
+  bool computed = false;  ///< its numbers were computed from parameters or expressions (gcode_macro.hpp)
 
   void clear() {
-    percent = deleted = false;
+    percent = deleted = computed = false;
     program_name = {};
     column = 0;
     words.clear();

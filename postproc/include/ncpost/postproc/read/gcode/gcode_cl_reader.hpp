@@ -70,7 +70,11 @@ struct GcodeReaderOptions {
   bool block_delete = true;   ///< skip blocks that start with '/'
   IntegerDwell integer_dwell = IntegerDwell::automatic;  ///< the unit of a dwell time without a decimal point
   ArcCentre arc_centre = ArcCentre::incremental;         ///< what I J K of G2/G3 give (until G90.1/G91.1)
-  double arc_chord_tolerance_mm = 1e-3;                  ///< chord error bound of expanded arcs
+  cl::ToolWords tool_words = cl::ToolWords::one;         ///< what two T words in one block mean (--tool-words)
+  /// what a coordinate without a decimal point is (--integer-words, whose default is `automatic`; the dialect's
+  /// [input] integer_words replaces `automatic` where it gives one)
+  cl::IntegerWords integer_words = cl::IntegerWords::units;
+  double arc_chord_tolerance_mm = 1e-3;  ///< chord error bound of expanded arcs
   /// Every motion's machine commands (machine program: the words; RTCP: the linear axes that put
   /// the tip there at the programmed angles) must lie within the machine's axis limits, else
   /// Infeasible (exit 3) naming the line, the axis and the limit. Off only to study a reading.

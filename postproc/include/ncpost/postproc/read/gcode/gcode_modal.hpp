@@ -26,6 +26,7 @@
 // (Haas), TRAORI (Sinumerik), M128 (Heidenhain); off with the matching M429, G49, TRAFOOF, M129.
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,7 @@
 #include "ncpost/postproc/read/cl_record.hpp"
 #include "ncpost/postproc/read/gcode/gcode_arc.hpp"
 #include "ncpost/postproc/read/gcode/gcode_block.hpp"
+#include "ncpost/postproc/read/gcode/gcode_integer_words.hpp"
 #include "ncpost/postproc/read/gcode/work_frames.hpp"
 
 namespace ncpost::gcode {
@@ -65,6 +67,9 @@ struct ModalState {
   double spindle_rpm = 0.0;
   cl::Spindle::Direction spindle = cl::Spindle::Direction::off;
   int tool = 0;  ///< the selected T
+  /// cl::ToolWords::load_next: the tool the last `T01 T02 M06` pre-selected (T02) and its line (0: none
+  /// pending); the next change must load it
+  int preselected_tool = 0, preselected_line = 0;
   Rtcp rtcp = Rtcp::off;
   /// The tool length: G43, G43.4, G43.5, G234 turn it on, G49 (or H0) cancels it.
   enum class Length { not_set, on, cancelled } length = Length::not_set;
@@ -170,6 +175,9 @@ class Interpreter {
   void set_tool_offset_writes(std::map<int, cl::ToolOffsetWrite> writes) { tool_offset_writes_ = std::move(writes); }
   /// The machine's axis words are U V W ... (no X Y Z A B C slots).
   bool word_axes() const { return word_axes_; }
+  /// What two T words in one block mean and what a coordinate without a decimal point is (--tool-words,
+  /// --integer-words; cl_record.hpp). Until set: one T word, whole units.
+  void set_word_rules(cl::ToolWords tool_words, cl::IntegerWords integer_words);
 
  private:
   struct Words;    ///< the words of one block by letter
@@ -178,11 +186,14 @@ class Interpreter {
   void notice_once(const std::string& key, int line, int column, const std::string& text);
   // the steps of apply(), in order
   Words read_words(const Context& cx) const;
+  void second_tool_word(const Context& cx, const Word& word, Words& w) const;
   void check_letter(const Context& cx, const Word& word) const;
   bool has_axis_words(const Words& w) const;
   void group_g_codes(const Context& cx, const Words& w, Codes& codes);
   void group_m_codes(const Context& cx, const Words& w, Codes& codes, BlockEffect& fx);
   void apply_units(const Context& cx, const Codes& codes);
+  void read_integer_words(const Context& cx, const Codes& codes, Words& w);
+  void change_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_feed_spindle_tool(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_cutter_comp(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
   void apply_modal_settings(const Context& cx, const Words& w, const Codes& codes, BlockEffect& fx);
@@ -223,9 +234,12 @@ class Interpreter {
   std::array<bool, 6> slot_angle_{false, false, false, true, true, true};  ///< degrees in the program, rad inside
   bool word_axes_ = false;  ///< slots from the axis letters (U V W machines)
   IntegerDwell integer_dwell_ = IntegerDwell::automatic;
-  ArcCentre arc_centre_option_ = ArcCentre::incremental;  ///< --arc-centre
-  int last_arc_line_ = 0;                                 ///< the last arc (for the message of an arc without I J or R)
-  std::string last_arc_words_;                            ///< its centre words ("I and J", "R")
+  ArcCentre arc_centre_option_ = ArcCentre::incremental;      ///< --arc-centre
+  cl::ToolWords tool_words_ = cl::ToolWords::one;             ///< --tool-words
+  cl::IntegerWords integer_words_ = cl::IntegerWords::units;  ///< --integer-words
+  std::optional<IntegerWordEvidence> integer_evidence_;       ///< IntegerWords::automatic's watch (none: another rule)
+  int last_arc_line_ = 0;       ///< the last arc (for the message of an arc without I J or R)
+  std::string last_arc_words_;  ///< its centre words ("I and J", "R")
   ModalState state_;
   WorkFrames frames_{nullptr, {}};
   cl::ControlFamily control_ = cl::ControlFamily::unknown;
