@@ -158,6 +158,14 @@ TEST_CASE("integer words: a dialect whose control reads units ([input] integer_w
   CHECK(run_post(args + "fanuc", in, dir + "/f.nc", dir + "/f.log").exit_code == 2);
   const PostRun units = run_post(args + "fanuc --integer-words units", in, dir + "/u.nc", dir + "/u.log");
   CHECK(units.exit_code == 0);
+  // a .ngc file is RS274NGC's (LinuxCNC's): auto reads units under any dialect
+  const std::string ngc = write_text_file(dir + "/in.ngc", "G21 G90 G94\nG0 X0. Y0. Z50.\nG1 Z-1.5 F100\nX20\nM30\n");
+  const PostRun from_ngc = run_post(args + "fanuc", ngc, dir + "/n.nc", dir + "/n.log");
+  INFO(from_ngc.log);
+  REQUIRE(from_ngc.exit_code == 0);
+  const Executor ex(source("machines/vmcl600.toml"), ExecJob{}, from_ngc.program);
+  REQUIRE_FALSE(ex.blocks.empty());
+  CHECK((ex.at(ex.blocks.back(), 1.0).tip_W - V3(20.0, 0.0, -1.5)).norm() < 1e-3);  // X20 = 20 mm
 }
 
 TEST_CASE("integer words: increments posted and read back: X20 is 0.020 mm, under G20 0.0020 in") {

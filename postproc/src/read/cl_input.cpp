@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <stdexcept>
 #include <string_view>
 
@@ -40,6 +41,14 @@ void refuse_other_language(std::istream& in, const std::string& name, InputKind 
     throw InputError({name, 1, 0}, fmt::format("a Sinumerik program (DEF, CYCLE800, %_N_ ...), read as plain G-code as "
                                                "--input-kind {} asks: use --input-kind sinumerik (or auto)",
                                                asked));
+}
+
+/// Whether the file's name ends in ".ngc" (any case): RS274NGC's (LinuxCNC's) program extension.
+bool has_ngc_extension(const std::string& name) {
+  if (name.size() < 4) return false;
+  std::string tail = name.substr(name.size() - 4);
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".ngc";
 }
 
 /// The G-code reader's options from the post's.
@@ -122,7 +131,9 @@ std::unique_ptr<cl::Reader> open_cl_reader(
     throw InputError({name, 0, 0}, fmt::format("a Sinumerik program on the machine {}, whose words {} are no Cartesian "
                                                "frame: not supported (post the CL data)",
                                                machine.name, axis_letters(machine)));
-  const gcode::GcodeReaderOptions go = gcode_options(options, kind, word_forward);
+  gcode::GcodeReaderOptions go = gcode_options(options, kind, word_forward);
+  if (go.integer_words == cl::IntegerWords::automatic && has_ngc_extension(name))
+    go.integer_words = cl::IntegerWords::units;  // RS274NGC's own extension: LinuxCNC reads whole units
   if (sinumerik) {
     sinumerik::ReaderOptions so;
     so.gcode = go;
