@@ -263,3 +263,25 @@ TEST_CASE("gcode arc centre: I J and R are not modal; one omitted centre word is
   CHECK((b.circle.center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);
   CHECK((b.end_mm - Vec3d(0, 10, 0)).norm() < 1e-12);
 }
+
+TEST_CASE("gcode arcs: I J alone under a modal G3 is the full circle G3 with its end at its start (Fanuc)") {
+  // NX's LeBlond Makino post: N2250 G03 X... I... J..., N2260 I-.9193 J0.0 F.8
+  const std::string head = "G21 G90 G17\nG0 X10 Y0 Z5 A0 C0\nG1 Z0 F100\n";
+  const std::string modal = head + "G3 X0 Y10 I-10 J0\nI0 J-10 F80\nG0 Z5\nM30\n";
+  const std::string written = head + "G3 X0 Y10 I-10 J0\nG3 X0 Y10 I0 J-10 F80\nG0 Z5\nM30\n";
+  const auto a = read_all(modal, reading(ArcCentre::incremental));
+  const auto b = read_all(written, reading(ArcCentre::incremental));
+  const auto ca = test::only<cl::Circle>(a), cb = test::only<cl::Circle>(b);
+  REQUIRE(ca.size() == 2);
+  REQUIRE(cb.size() == 2);
+  CHECK((ca[1].center_mm - Vec3d(0, 0, 0)).norm() < 1e-12);  // the second circle's centre: (0, 10) + (0, -10)
+  CHECK(ca[1].radius_mm == Approx(10.0));
+  CHECK((ca[1].axis - cb[1].axis).norm() < 1e-12);  // counter-clockwise, as G3
+  const auto ma = test::only<cl::Motion>(a), mb = test::only<cl::Motion>(b);
+  REQUIRE(ma.size() == mb.size());
+  for (std::size_t i = 0; i < ma.size(); ++i) CHECK((ma[i].point.tip_mm - mb[i].point.tip_mm).norm() < 1e-12);
+  // under LinuxCNC's reading the block stays refused (its behaviour there is not confirmed)
+  GcodeReaderOptions linuxcnc = reading(ArcCentre::incremental);
+  linuxcnc.control = cl::ControlFamily::linuxcnc;
+  CHECK_THAT(std::string(error_of(modal, linuxcnc).what()), Catch::Contains("I without an arc"));
+}

@@ -1277,7 +1277,12 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
   if (codes.is(g_non_modal, 530)) note_machine_coordinates(cx, w, codes, fx);
   const bool is_arc = st.motion == MotionMode::arc_cw || st.motion == MotionMode::arc_ccw;
   const bool arc_words = !(st.motion == MotionMode::cycle) && (w.has('I') || w.has('J') || w.has('K') || w.has('R'));
-  if (arc_words && !(is_arc && (codes.in(g_motion) || has_axis)) && !home_return) {
+  // a block of I J K alone under a modal G2/G3 is a full circle on a Fanuc-family control (the end
+  // point left out is the start; NX's Makino posts write N2250 G03 ..., N2260 I-.9193 J0.0);
+  // LinuxCNC's behaviour there is not confirmed: refused under its dialect, as before
+  const bool modal_full_circle =
+      is_arc && !has_axis && !w.has('R') && arc_words && control_ != cl::ControlFamily::linuxcnc && !home_return;
+  if (arc_words && !(is_arc && (codes.in(g_motion) || has_axis || modal_full_circle)) && !home_return) {
     const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
     fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));
   }
@@ -1285,8 +1290,8 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
   bool intermediate_known = true;
   for (std::size_t i = 0; i < 6; ++i)
     if (slots_[i] && w.has(slots_[i]) && !st.known[i]) intermediate_known = false;
-  const bool moves =
-      home_return ? has_axis && intermediate_known : (has_axis || (is_arc && codes.in(g_motion) && arc_words));
+  const bool moves = home_return ? has_axis && intermediate_known
+                                 : (has_axis || (is_arc && (codes.in(g_motion) || modal_full_circle) && arc_words));
   if (!moves) return;
   if (fx.machine_move && !home_return) return machine_coordinates_motion(cx, w, codes, fx);
   if (home_return) return intermediate_motion(cx, w, axis_column, fx);
