@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0, see SOURCES.md: written by the AptPostProcessor
-// project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the Unigraphics/NX.Postprocessor
-// library, and a training program kept beside them). Each is read by the Klartext reader (machines/head-table-bc.toml,
-// or the machine the case names) and must post, or be refused at the line whose statement the reader does not take,
-// with a message naming it. The expected line is found here in the file itself (the first line holding that
-// statement), not taken from the reader's output.
+// Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0 and MIT, see SOURCES.md: written by the
+// AptPostProcessor project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the
+// Unigraphics/NX.Postprocessor library, a training program kept beside them, and an unnamed CAM system's output
+// published in NC-PB/gEdit, MIT). Each is read by the Klartext reader (machines/head-table-bc.toml, or the machine the
+// case names) and must post, or be refused at the line whose statement the reader does not take, with a message naming
+// it. The expected line is found here in the file itself (the first line holding that statement), not taken from the
+// reader's output.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -78,6 +79,12 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       {"heidenhain_nx_dmc100.h", "BEGIN PGM PROGRAM IN", "BEGIN PGM"},
       // A and C: an A-axis machine; CYCL DEF 19's angles depend on a machine parameter
       {"heidenhain_training_dmc75v.h", "CYCL DEF 19.0", "CYCL DEF 19 (working plane)", "ac-trunnion"},
+      // CAM output for an A/C table (NC-PB/gEdit, MIT; CAM system not named): the demo part goes to the M92 datum
+      // with A and C in the same block; the other three write every fraction with a decimal comma
+      {"heidenhain_ncpb_Demo_1.h", "L X0 A0 C0 FMAX M92", "M92", "ac-trunnion"},
+      {"heidenhain_ncpb_2.5D_MILLING.h", "L X241,781 Y286", "a decimal comma is not read", "ac-trunnion"},
+      {"heidenhain_ncpb_5X_MILLING.h", "L A-43,657 C-8,247", "a decimal comma is not read", "ac-trunnion"},
+      {"heidenhain_ncpb_DRILLING.h", "Q201=-54,887", "Q201=-54,887", "ac-trunnion"},
   };
   for (const Expected& c : cases) {
     INFO(c.file);
