@@ -284,13 +284,13 @@ def main(argv):
         files = list(entries)
     bad = 0
     for name in files:
+        e = entries.get(os.path.basename(name), {})
+        if check and str(e.get("counted", "")).startswith("by hand"):
+            print("HAND " + name + " (" + e["counted"] + ")")  # not compared: not counted (2 MB files among them)
+            continue
         s = summary(count(os.path.join(REAL, os.path.basename(name))))
         if not check:
             print(os.path.basename(name), json.dumps(s))
-            continue
-        e = entries[os.path.basename(name)]
-        if str(e.get("counted", "")).startswith("by hand"):
-            print("HAND " + name + " (" + e["counted"] + ")")
             continue
         got = {"units": s["units"], "tools": s["tools"], "motions": s["motions"], "repeats": s["repeats"],
                "cycles": sorted([k.lower(), v] for k, v in s["cycles"].items()),

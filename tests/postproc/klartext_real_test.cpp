@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0, see SOURCES.md: written by the AptPostProcessor
-// project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the Unigraphics/NX.Postprocessor
-// library, and a training program kept beside them). Each is read by the Klartext reader (machines/head-table-bc.toml,
-// or the machine the case names) and must post, or be refused at the line whose statement the reader does not take,
-// with a message naming it. The expected line is found here in the file itself (the first line holding that
-// statement), not taken from the reader's output.
+// Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0 and MIT, see SOURCES.md: written by the
+// AptPostProcessor project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the
+// Unigraphics/NX.Postprocessor library, a training program kept beside them, and an unnamed CAM system's output
+// published in NC-PB/gEdit, MIT). Each is read by the Klartext reader (machines/head-table-bc.toml, or the machine the
+// case names) and must post, or be refused at the line whose statement the reader does not take, with a message naming
+// it. The expected line is found here in the file itself (the first line holding that statement), not taken from the
+// reader's output.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -57,6 +58,7 @@ std::string outcome(const std::string& name, const std::string& machine_name) {
 }  // namespace
 
 TEST_CASE("real Klartext programs post or are refused at the statement they use") {
+  const char* const kAcWithReferences = "../tests/data/machines/ac-trunnion-references";  // (machines/<name>.toml)
   struct Expected {
     const char* file;
     const char* statement;  ///< as written in the file ("" : posts)
@@ -80,6 +82,13 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       // angles depend on a machine parameter. Before it (line 44), M91 Z-1 needs the machine's reference
       {"heidenhain_training_dmc75v.h", "M91", "M91 Z-1: machine coordinates count from the axis's reference point",
        "ac-trunnion"},
+      // CAM output for an A/C table (NC-PB/gEdit, MIT; CAM system not named), on the A/C trunnion with reference
+      // points (they retract with M91): decimal commas (X241,781), M128 F, Q208=MAX and CYCL DEF 206 are read; the
+      // demo part goes to the M92 datum with A and C in the same block, the drilling program taps with 209
+      {"heidenhain_ncpb_Demo_1.h", "L X0 A0 C0 FMAX M92", "M92 with A", kAcWithReferences},
+      {"heidenhain_ncpb_2.5D_MILLING.h", "", "", kAcWithReferences},
+      {"heidenhain_ncpb_5X_MILLING.h", "", "", kAcWithReferences},
+      {"heidenhain_ncpb_DRILLING.h", "CYCL DEF 209", "CYCL DEF 209", kAcWithReferences},
   };
   for (const Expected& c : cases) {
     INFO(c.file);

@@ -18,13 +18,13 @@
 // the named axes to ControlSpec::reference / reference2) and G53 (machine coordinates counted from
 // ControlSpec::reference; a linear axis without one is unknown until programmed again, a rotary axis takes the angle),
 // canned cycles G73 G81-G89 with G98/G99 (as their straight moves: over the hole, R plane, bottom, back out), G40-G42
-// G43.4 G61 G64 G234 G255 (no effect on the programmed tip). Any other G code is an error: never a block skipped
-// silently. Parameters: #1..#5399 numbered, `#<name>` named, `#n = expr` (several on a line), `X#1`, `X[expr]` with + -
-// * / and EQ NE GT GE LT LE; LinuxCNC's #5420-#5425 (the current position in the program's units). Subprograms:
-// Fanuc/Haas `M98 P<o> L<k>` to `O<o>` blocks (after M30 too), Haas `M97 P<n> L<k>` to block N<n>, `M99` returns (`M99
-// P<n>`: to block N<n>), Haas G154 P<n> (G54.1 P<n>); a target the program lacks from ControlSpec::files. LinuxCNC
-// o-words: sub/endsub/call (with [args] into #1..#30)/return, if/elseif/else/endif, while/endwhile, do/while,
-// repeat/endrepeat, break, continue.
+// G43.4 G61 G64 G234 G255 (no effect on the programmed tip), G69 (rotation off: G68 is not read, so none is on). Any
+// other G code is an error: never a block skipped silently. Parameters: #1..#5399 numbered, `#<name>` named, `#n =
+// expr` (several on a line), `X#1`, `X[expr]` with + - * / and EQ NE GT GE LT LE; LinuxCNC's #5420-#5425 (the current
+// position in the program's units). Subprograms: Fanuc/Haas `M98 P<o> L<k>` to `O<o>` blocks (after M30 too), Haas `M97
+// P<n> L<k>` to block N<n>, `M99` returns (`M99 P<n>`: to block N<n>), Haas G154 P<n> (G54.1 P<n>); a target the
+// program lacks from ControlSpec::files. LinuxCNC o-words: sub/endsub/call (with [args] into #1..#30)/return,
+// if/elseif/else/endif, while/endwhile, do/while, repeat/endrepeat, break, continue.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -490,7 +490,7 @@ class ControlInterpreter {
       return_r_ = c == 990;
     else  // and G50: scaling off, the state a mill starts in (with axis words it is a lathe's, which ncpost refuses)
       return c == 170 || c == 400 || c == 410 || c == 420 || c == 430 || c == 434 || c == 490 || c == 500 || c == 610 ||
-             c == 640 || c == 930 || c == 940 || c == 2340 || c == 2550;
+             c == 640 || c == 690 || c == 930 || c == 940 || c == 2340 || c == 2550;
     return true;
   }
 
