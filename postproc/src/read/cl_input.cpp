@@ -43,12 +43,16 @@ void refuse_other_language(std::istream& in, const std::string& name, InputKind 
                                                asked));
 }
 
-/// Whether the file's name ends in ".ngc" (any case): RS274NGC's (LinuxCNC's) program extension.
-bool has_ngc_extension(const std::string& name) {
-  if (name.size() < 4) return false;
-  std::string tail = name.substr(name.size() - 4);
-  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".ngc";
+/// Whether the file's name ends in ".ngc" (RS274NGC's, LinuxCNC's program extension), ".gcode" or
+/// ".tap" (grbl's and Mach3's, as the hobby CAM posts name them), any case: controls that read a
+/// coordinate without a decimal point in whole units.
+bool has_units_extension(const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto ends_with = [&lower](std::string_view tail) {
+    return lower.size() >= tail.size() && lower.compare(lower.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  return ends_with(".ngc") || ends_with(".gcode") || ends_with(".tap");
 }
 
 /// The G-code reader's options from the post's.
@@ -132,8 +136,8 @@ std::unique_ptr<cl::Reader> open_cl_reader(
                                                "frame: not supported (post the CL data)",
                                                machine.name, axis_letters(machine)));
   gcode::GcodeReaderOptions go = gcode_options(options, kind, word_forward);
-  if (go.integer_words == cl::IntegerWords::automatic && has_ngc_extension(name))
-    go.integer_words = cl::IntegerWords::units;  // RS274NGC's own extension: LinuxCNC reads whole units
+  if (go.integer_words == cl::IntegerWords::automatic && has_units_extension(name))
+    go.integer_words = cl::IntegerWords::units;  // .ngc (LinuxCNC), .gcode / .tap (grbl, Mach3): whole units
   if (sinumerik) {
     sinumerik::ReaderOptions so;
     so.gcode = go;
