@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -181,7 +182,11 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
                          ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml") +
                          " --workpiece-origin=" + origin + " --dialect " +
                          (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() + " --tolerance " +
-                         std::to_string(tolerance_mm) + " --verify -o " + out;
+                         std::to_string(tolerance_mm) + " -o " + out;
+      // the product's own --verify on every file but the 2 MB ones (NC-PB's 44,600 five-axis blocks: 2.5 s of the
+      // suite's 90), which the tests' executor below checks all the same
+      const bool verify = std::filesystem::file_size(ncpost::test::data("real/" + file)) < 1000000;
+      if (verify) args += " --verify";
       if (e.contains("input_kind")) args += " --input-kind " + e.at("input_kind").get<std::string>();
       if (e.contains("options")) args += " " + e.at("options").get<std::string>();  // how the file's control reads it
       args += " " + ncpost::test::data("real/" + file);
@@ -203,8 +208,10 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
       REQUIRE(rc == 0);
       static const std::regex after_re(R"(after .*largest contour error ([0-9.]+) mm)");
       std::smatch m;
-      REQUIRE(std::regex_search(messages, m, after_re));
-      CHECK(std::stod(m[1].str()) <= tolerance_mm);
+      if (verify) {
+        REQUIRE(std::regex_search(messages, m, after_re));
+        CHECK(std::stod(m[1].str()) <= tolerance_mm);
+      }
 
       const ProgramRecords p = read_program(ncpost::test::read_text_file(out));
       // the program states one unit system; a mm source stays mm, an inch source may be written in mm
