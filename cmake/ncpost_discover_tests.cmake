@@ -9,8 +9,14 @@
 #   folder    the file's working folder; RESOURCE_LOCK on it, so one file's cases never overlap.
 # Written here rather than with Catch2 2.13's catch_discover_tests, which splits a case name at a
 # ';' into tests that match nothing (43 of the 408 case names here have one).
+#   cost      the case's seconds in tests/test_costs.txt (COSTS) where it is listed: CTest starts the
+#             costliest first when the build has no timing of its own (a clean clone)
 # Inputs (-D): EXE, the program; FILES, a file of lines "<tag>|<test name prefix>|<folder>";
-# OUT, the CTest file to write.
+# OUT, the CTest file to write; COSTS (optional), lines "<seconds>\t<test name>" ('#' comments).
+set(_costs "")
+if(DEFINED COSTS AND EXISTS "${COSTS}")
+  file(STRINGS "${COSTS}" _costs REGEX "^[0-9]")
+endif()
 file(STRINGS "${FILES}" _lines)
 set(_script "")
 set(_count 0)
@@ -39,9 +45,20 @@ foreach(_line IN LISTS _lines)
     if(_spec MATCHES "^[-~]")  # else an option, or an exclusion
       string(PREPEND _spec "\\")
     endif()
+    set(_cost "")
+    foreach(_entry IN LISTS _costs)
+      string(FIND "${_entry}" "\t" _tab)
+      math(EXPR _after "${_tab} + 1")
+      string(SUBSTRING "${_entry}" ${_after} -1 _listed)
+      if(_listed STREQUAL "${_prefix}: ${_name}")
+        string(SUBSTRING "${_entry}" 0 ${_tab} _seconds)
+        set(_cost " COST ${_seconds}")
+        break()
+      endif()
+    endforeach()
     string(APPEND _script
       "add_test([==[${_prefix}: ${_name}]==] [==[${EXE}]==] [==[${_spec}]==] -w NoTests)\n"
-      "set_tests_properties([==[${_prefix}: ${_name}]==] PROPERTIES WORKING_DIRECTORY [==[${_dir}]==] RESOURCE_LOCK [==[${_dir}]==])\n")
+      "set_tests_properties([==[${_prefix}: ${_name}]==] PROPERTIES WORKING_DIRECTORY [==[${_dir}]==] RESOURCE_LOCK [==[${_dir}]==]${_cost})\n")
     math(EXPR _count "${_count} + 1")
   endforeach()
 endforeach()

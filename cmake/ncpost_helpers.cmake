@@ -96,6 +96,7 @@ function(ncpost_add_test_folder folder)
   file(WRITE "${_files}" "${_files_list}")
   add_custom_command(TARGET ${_target} POST_BUILD BYPRODUCTS "${_ctest}"
     COMMAND "${CMAKE_COMMAND}" -D "EXE=$<TARGET_FILE:${_target}>" -D "FILES=${_files}" -D "OUT=${_ctest}"
+            -D "COSTS=${PROJECT_SOURCE_DIR}/tests/test_costs.txt"
             -P "${PROJECT_SOURCE_DIR}/cmake/ncpost_discover_tests.cmake"
     VERBATIM)
   set(_include "${CMAKE_CURRENT_BINARY_DIR}/${_target}_include.cmake")
