@@ -164,8 +164,8 @@ SmallList<RotarySolution, 2> rotary_solutions(const Machine& m, const Vec3d& axi
 
 bool may_have_free_rotary(const Machine& m, const Vec3d& axis_W, double clear_rad) {
   // An angle is free where angle_about() gets a projection under 1e-9: one of its two vectors along
-  // its axis. Per layout these are (plane1_vec or v along d1) and (plane2_vec or v along d2), and v
-  // makes the same angle with d1 (d2) as plane1_vec (plane2_vec) does, up to the reach tolerance's
+  // its axis. Per layout these are (plane1 or v along d1) and (plane2 or v along d2), and v
+  // makes the same angle with d1 (d2) as plane1 (plane2) does, up to the reach tolerance's
   // rounding (< 1e-9 in the cosine): the default 1 mrad leaves a wide margin.
   const Vec3d& u = axis_W;  // (unnormalised: the test divides by the lengths)
   const Vec3d ez = Vec3d::UnitZ();

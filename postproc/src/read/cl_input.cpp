@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
 #include <stdexcept>
 #include <string_view>
 
@@ -13,6 +12,7 @@
 #include "ncpost/postproc/read/klartext/klartext_block.hpp"
 #include "ncpost/postproc/read/klartext/klartext_reader.hpp"
 #include "ncpost/postproc/read/sinumerik/sinumerik_reader.hpp"
+#include "read/char_scan.hpp"
 
 namespace ncpost {
 namespace {
@@ -47,12 +47,8 @@ void refuse_other_language(std::istream& in, const std::string& name, InputKind 
 /// ".tap" (grbl's and Mach3's, as the hobby CAM posts name them), any case: controls that read a
 /// coordinate without a decimal point in whole units.
 bool has_units_extension(const std::string& name) {
-  std::string lower = name;
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const auto ends_with = [&lower](std::string_view tail) {
-    return lower.size() >= tail.size() && lower.compare(lower.size() - tail.size(), tail.size(), tail) == 0;
-  };
-  return ends_with(".ngc") || ends_with(".gcode") || ends_with(".tap");
+  const std::string u = upper_of(name);
+  return u.ends_with(".NGC") || u.ends_with(".GCODE") || u.ends_with(".TAP");
 }
 
 /// The G-code reader's options from the post's.

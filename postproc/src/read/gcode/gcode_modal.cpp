@@ -428,9 +428,9 @@ namespace {
 /// (tape) value: where its decimal point stands is the control's input format (on a Fanuc, least
 /// increments), not the program's; read as whole units it would be thousands of times too large.
 void refuse_tape_format(const Block& block, std::string_view line, const Fail& fail) {
-  constexpr std::string_view kCoordinates = "XYZIJKRABCUVW";
   for (const Word& word : block.words) {
-    if (word.has_point || word.value == 0.0 || kCoordinates.find(word.letter) == std::string_view::npos) continue;
+    if (word.has_point || word.value == 0.0 || kIntegerWordLetters.find(word.letter) == std::string_view::npos)
+      continue;
     std::size_t at = static_cast<std::size_t>(word.column);  // the character after the letter (1-based column)
     while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '+' || line[at] == '-')) ++at;
     if (!(at + 1 < line.size() && line[at] == '0' && is_digit(line[at + 1]))) continue;
@@ -775,12 +775,14 @@ void Interpreter::read_integer_words(const Context& cx, const Codes& codes, Word
     return;
   }
   if (integer_words_ != cl::IntegerWords::increments) return;
-  for (const char L : std::string(kIntegerWordLetters) + 'Q') {  // Q: a canned cycle's peck (only they read it)
-    if (!w.has(L) || w.has_point(L) || (dwell && L == 'X')) continue;
+  const auto read = [&](char L) {
+    if (!w.has(L) || w.has_point(L) || (dwell && L == 'X')) return;
     const auto i = static_cast<std::size_t>(L - 'A');
     w.value[i] = in_least_increments(w.value[i], L, state_.inch);
     w.point |= 1u << (L - 'A');
-  }
+  };
+  for (const char L : kIntegerWordLetters) read(L);
+  read('Q');  // a canned cycle's peck (only they read it)
 }
 
 // cutter radius compensation (G40, G41/G42 with D)
@@ -1281,7 +1283,7 @@ void Interpreter::apply_motion(const Context& cx, const Words& w, const Codes& c
   // point left out is the start; NX's Makino posts write N2250 G03 ..., N2260 I-.9193 J0.0);
   // LinuxCNC's behaviour there is not confirmed: refused under its dialect, as before
   const bool modal_full_circle =
-      is_arc && !has_axis && !w.has('R') && arc_words && control_ != cl::ControlFamily::linuxcnc && !home_return;
+      is_arc && !has_axis && !w.has('R') && arc_words && control_ != cl::ControlFamily::linuxcnc;
   if (arc_words && !(is_arc && (codes.in(g_motion) || has_axis || modal_full_circle)) && !home_return) {
     const char c = w.has('I') ? 'I' : w.has('J') ? 'J' : w.has('K') ? 'K' : 'R';
     fail(w.col(c), fmt::format("{} without an arc (expected G2 or G3)", c));

@@ -263,7 +263,7 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
   }
   const bool moves = w.any_linear() || w.any_rotary() || w.any_orientation();
   if (w.supa) {
-    frames_suppressed(l, w);
+    frames_suppressed(l, w, moves);
     if (moves) iso += (iso.empty() ? "" : " ") + supa_words(l, w);
   } else if (moves) {
     motion(l, w, iso);
@@ -302,9 +302,8 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
 /// Programming Manual Fundamentals, "Zero offset frame": G53 "non-modal deactivation of the current
 /// settable and programmable zero offset", SUPA also the basic frame, DRF, external zero offset and
 /// PRESET), which the machine's data holds, not the program: taken as zero, with a notice.
-void Translator::frames_suppressed(const ProgramLine& l, const Words& w) {
-  const bool moves = w.any_linear() || w.any_rotary() || w.any_orientation();
-  const char* what = w.g53_column ? "G53" : "SUPA";
+void Translator::frames_suppressed(const ProgramLine& l, const Words& w, bool moves) {
+  const char* what = w.suppression();
   if (!moves) {
     notice_once(l, std::string(what) + " alone",
                 fmt::format("{} without axis words moves nothing (it holds for its own block only)", what));

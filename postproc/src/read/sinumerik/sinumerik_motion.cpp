@@ -146,7 +146,7 @@ std::string Translator::orientation_words(const ProgramLine& l, const Words& w) 
 /// SUPA: machine coordinates for the block (G53); the positions in W are not known after it.
 std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
   std::string s = fmt::format("G53 G{}", w.motion.value_or(motion_ < 0 ? 0 : motion_) == 0 ? 0 : 1);
-  const char* what = w.g53_column ? "G53" : "SUPA";
+  const char* what = w.suppression();
   if (w.motion && *w.motion > 1) fail(l, w.column, fmt::format("{} with G2/G3 is not read", what));
   if (w.any_orientation()) fail(l, w.column, fmt::format("{} with A3= B3= C3= is not read", what));
   for (std::size_t i = 0; i < 3; ++i) {

@@ -149,7 +149,6 @@ std::string refused_g(int g) {
         "G{}: a settable work offset beyond G57 is not read (its values are the control's); use G54 "
         "and give the part's position with --workpiece-origin",
         g);
-  if (g == 53) return "G53 (frames suppressed for the block) is not read; program the position in the workpiece frame";
   if (g == 110 || g == 111 || g == 112) return fmt::format("G{}: polar coordinates are not read", g);
   if (g == 74 || g == 75)
     return fmt::format(

@@ -123,7 +123,7 @@ class Translator {
   void value_address(const ProgramLine& l, const Item& item, Words& w);
   void called(const ProgramLine& l, const Item& item, Words& w);
   void write_block(const ProgramLine& l, Words& w);
-  void frames_suppressed(const ProgramLine& l, const Words& w);
+  void frames_suppressed(const ProgramLine& l, const Words& w, bool moves);
   void frame_statement(const ProgramLine& l);
 
   // motion (sinumerik_motion.cpp)

@@ -35,6 +35,8 @@ struct Translator::Words {
   int column = 1;                                    ///< of the block's first item
   int axis_column = 1;                               ///< of its first axis word
 
+  /// The word that suppressed the frames, for messages.
+  const char* suppression() const { return g53_column ? "G53" : "SUPA"; }
   bool any_linear() const { return xyz[0] || xyz[1] || xyz[2]; }
   bool any_rotary() const { return abc[0] || abc[1] || abc[2]; }
   bool any_orientation() const { return orientation[0] || orientation[1] || orientation[2]; }
