@@ -26,6 +26,22 @@ std::optional<std::vector<AheadItem>> BatchQueue::pop() {
   return batch;
 }
 
+std::optional<std::vector<AheadItem>> BatchQueue::try_pop() {
+  std::unique_lock lock(mutex_);
+  if (stopped_ || batches_.empty()) return std::nullopt;
+  std::vector<AheadItem> batch = std::move(batches_.front());
+  batches_.pop_front();
+  lock.unlock();
+  changed_.notify_all();
+  return batch;
+}
+
+void BatchQueue::offer(std::vector<AheadItem>&& batch) {
+  std::unique_lock lock(mutex_);
+  if (stopped_ || batches_.size() >= capacity_) return;
+  batches_.push_back(std::move(batch));
+}
+
 void BatchQueue::stop() {
   {
     std::lock_guard lock(mutex_);
@@ -46,6 +62,7 @@ Lookahead::Lookahead(cl::Reader& reader, const KinematicModel& solver, const Sub
 
 Lookahead::~Lookahead() {
   parsed_.stop();
+  spare_.stop();
   solved_.stop();
   cut_.stop();
   reading_.join();
@@ -74,7 +91,7 @@ void Lookahead::read() {
     batch.push_back(std::move(item));
     if (last || batch.size() == kBatchSize) {
       if (!parsed_.push(std::move(batch)) || last) return;  // push() fails once stopped
-      batch = {};
+      batch = spare_.try_pop().value_or(std::vector<AheadItem>{});
       batch.reserve(kBatchSize);
     }
   }
@@ -142,6 +159,8 @@ AheadItem Lookahead::next() {
   if (position_ == current_.size()) {
     std::optional<std::vector<AheadItem>> batch = cutter_ ? cut_.pop() : solved_.pop();
     if (!batch) return {};  // stopped: only while the object is being destroyed
+    current_.clear();
+    spare_.offer(std::move(current_));  // (to be filled again by the reading thread)
     current_ = std::move(*batch);
     position_ = 0;
   }

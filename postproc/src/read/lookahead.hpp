@@ -82,6 +82,10 @@ class BatchQueue {
   explicit BatchQueue(std::size_t capacity) : capacity_(capacity) {}
   bool push(std::vector<AheadItem>&& batch);    ///< false once stopped
   std::optional<std::vector<AheadItem>> pop();  ///< nullopt once stopped
+  /// Without waiting: the oldest batch, or nullopt when there is none (or once stopped).
+  std::optional<std::vector<AheadItem>> try_pop();
+  /// Without waiting: queues `batch` unless the queue is full or stopped (then it is dropped).
+  void offer(std::vector<AheadItem>&& batch);
   void stop();
 
  private:
@@ -127,6 +131,9 @@ class Lookahead {
   alignas(64) BatchQueue parsed_{kMaxBatches};  // (each queue's lock and state on lines of their own too)
   alignas(64) BatchQueue solved_{kMaxBatches};
   alignas(64) BatchQueue cut_{kMaxBatches};
+  /// emptied batches the post hands back to the reading thread, which fills them again: their
+  /// memory stays touched (a new batch of 256 items is about 230 kB, fresh pages each time)
+  alignas(64) BatchQueue spare_{kMaxBatches};
   alignas(64) std::vector<AheadItem> current_;  ///< the batch being handed out (post's thread only)
   std::size_t position_ = 0;
   std::thread reading_;
