@@ -2,10 +2,10 @@
 // Real Klartext programs (tests/data/real/heidenhain_*.h, GPL-3.0 and MIT, see SOURCES.md: written by the
 // AptPostProcessor project's own post from SOLIDWORKS CAM APT, by hand for its TNC 310, by NX posts of the
 // Unigraphics/NX.Postprocessor library, a training program kept beside them, and an unnamed CAM system's output
-// published in NC-PB/gEdit, MIT). Each is read by the Klartext reader (machines/head-table-bc.toml, or the machine the
-// case names) and must post, or be refused at the line whose statement the reader does not take, with a message naming
-// it. The expected line is found here in the file itself (the first line holding that statement), not taken from the
-// reader's output.
+// published in NC-PB/gEdit and NC-PB/NCXchange_, MIT). Each is read by the Klartext reader
+// (machines/head-table-bc.toml, or the machine the case names) and must post, or be refused at the line whose statement
+// the reader does not take, with a message naming it. The expected line is found here in the file itself (the first
+// line holding that statement), not taken from the reader's output.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -89,6 +89,9 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       {"heidenhain_ncpb_2.5D_MILLING.h", "", "", kAcWithReferences},
       {"heidenhain_ncpb_5X_MILLING.h", "", "", kAcWithReferences},
       {"heidenhain_ncpb_DRILLING.h", "CYCL DEF 209", "CYCL DEF 209", kAcWithReferences},
+      // The same style of CAM output in NC-PB/NCXchange_ (MIT): cycles 200, 203 (chip breaking with Q213=24 and 3,
+      // pecking with Q213=0, Q208=MAX), 207 and 201, each called by CYCL CALL and then M99 at four more holes
+      {"heidenhain_ncx_BOHREN.h", "", "", kAcWithReferences},
   };
   for (const Expected& c : cases) {
     INFO(c.file);
