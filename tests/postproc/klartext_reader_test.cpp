@@ -296,6 +296,9 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 CYCL DEF 205 UNIVERSAL PECKING ~\n  Q200=2 ~\n  Q201=-10\n",
           "'CYCL DEF 205 UNIVERSAL PECKING': this cycle");
   refused("3 M114\n", "M114");
+  // M136: F in mm per revolution; M103 F20: 20 % of the feed when plunging (TNC 640 manual): neither F is a path feed
+  refused("3 M136\n", "M136: a feed in mm per spindle revolution");
+  refused("3 L Z+0 F1000 M103 F20\n", "M103: M103 F (the plunge feed reduced to a percentage");
   refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");
   refused("3 TOOL CALL 5 \"D10\" Z S100\n", "both a number and a name");
   refused("3 TOOL CALL 2 Z DL+0.5\n", "DL+0.5");

@@ -92,6 +92,8 @@ TEST_CASE("real Klartext programs post or are refused at the statement they use"
       // The same style of CAM output in NC-PB/NCXchange_ (MIT): cycles 200, 203 (chip breaking with Q213=24 and 3,
       // pecking with Q213=0, Q208=MAX), 207 and 201, each called by CYCL CALL and then M99 at four more holes
       {"heidenhain_ncx_BOHREN.h", "", "", kAcWithReferences},
+      // M136 (F in mm per spindle revolution): posted with exit 0 and F as mm/min before it was refused
+      {"heidenhain_ncx_2.5D_FRAESEN.h", "M136", "M136: a feed in mm per spindle revolution", kAcWithReferences},
   };
   for (const Expected& c : cases) {
     INFO(c.file);
