@@ -299,6 +299,7 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   // M136: F in mm per revolution; M103 F20: 20 % of the feed when plunging (TNC 640 manual): neither F is a path feed
   refused("3 M136\n", "M136: a feed in mm per spindle revolution");
   refused("3 L Z+0 F1000 M103 F20\n", "M103: M103 F (the plunge feed reduced to a percentage");
+  refused("3 M124\n", "M124 (contour points closer than a tolerance left out) changes the path");
   refused("3 TOOL CALL \"\" Z S100\n", "expected a tool name between the quotes");
   refused("3 TOOL CALL 5 \"D10\" Z S100\n", "both a number and a name");
   refused("3 TOOL CALL 2 Z DL+0.5\n", "DL+0.5");

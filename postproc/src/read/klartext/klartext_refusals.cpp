@@ -42,15 +42,20 @@ struct MRefusal {
 constexpr MRefusal kMFunctions[] = {
     {94, "reduces the rotary axis display below 360 deg, changing what later rotary words mean: not read"},
     {97, "a small contour step (radius compensation) is not read"},
+    {98, "open contour corners (radius compensation, M98) change the compensated path: not read"},
     {101, "automatic tool change with a replacement tool is not read"},
     {103,
      "M103 F (the plunge feed reduced to a percentage of the programmed feed) is not read: its F is a percentage, "
      "not a feed; write the plunging feeds in the program"},
+    {104, "M104 reactivates a datum the control set before (not in the program): not read"},
+    {112, "rounding arcs inserted at the contour's corners (M112) change the path: not read"},
     {114,
      "the automatic tool-length compensation of tilted axes (M114) gives X Y Z another meaning: not read; "
      "use M128 or FUNCTION TCPM"},
     {116, "a feed in mm/min on rotary axes (M116) gives F another meaning: not read"},
     {118, "a handwheel superimposition is not read"},
+    {120, "M120 LA (radius compensation calculated ahead) changes the compensated path: not read"},
+    {124, "M124 (contour points closer than a tolerance left out) changes the path: not read"},
     {130, "a motion in the untilted system inside a tilted plane is not read"},
     {136,
      "a feed in mm per spindle revolution (M136) gives F another meaning (mm/rev, not mm/min): not read; program "
