@@ -358,7 +358,7 @@ TEST_CASE("sinumerik: what is not read is refused by name with its line, never a
       {"G0 X0 Y0 Z0\nH5\nM30\n", "H (an auxiliary function", 2},
       {"DEF INT K\nM30\n", "DEF K: a name starts with two letters", 1},
       {"G0 X0 Y0 Z9 F100\nCYCLE86(10,0,2,-5,,0,3,0.2,0,0,0)\nM30\n", "CYCLE86 with a lift-off", 2},
-      {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-5,,-0.8,0,0,1,1)\nM30\n", "CYCLE83 DAM < 0", 2},
+      {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-5,,-0.8,0,0,1,1)\nM30\n", "CYCLE83 DAM=-0.8: a negative degression is not read", 2},
       {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-5,,1,0,0,1,2)\nM30\n", "CYCLE83 VARI=2", 2},
       {"G0 X0 Y0 Z9 F100\nCYCLE83(10,0,2,-20,,-25,,1,0,0,1,1)\nM30\n", "first depth -25 lies below", 2},
       {"G0 X0 Y0 Z9\nCYCLE85(10,0,2,-5,,0,100,200)\nM30\n", "CYCLE85 before any F", 2},
