@@ -49,7 +49,7 @@ inline std::string compare_angles(const ExecMachine& m, const ExecBlock& block,
 /// Executes the Sinumerik `input` and the written `output` on `machine_file` and compares them.
 inline SinumerikRepostCheck compare_sinumerik_reposted(const std::string& input, const std::string& machine_file,
                                                        const ExecJob& job, const std::string& output) {
-  constexpr double kTipToleranceMm = 1e-3, kAxisTolerance = 1e-6;
+  constexpr double kTipToleranceMm = 1e-3;
   const Executor ex(machine_file, job, output);
   const std::vector<SinumerikEnd> ends = sinumerik_block_ends(input, ex.machine, job);
   const double between_mm = stated_tolerance_mm(output, kTipToleranceMm) + kTipToleranceMm;
@@ -57,25 +57,20 @@ inline SinumerikRepostCheck compare_sinumerik_reposted(const std::string& input,
   for (const ExecBlock& b : ex.blocks) out_ends.push_back(ex.at(b, 1.0));
   SinumerikRepostCheck r;
   std::size_t next = 0;
-  std::optional<SinumerikEnd> previous;
+  std::optional<ExecPose> previous;
   for (const SinumerikEnd& e : ends) {
     if (!e.complete) continue;
     const std::string where = "input line " + std::to_string(e.line) + ": ";
-    if (previous && e.motion < 2 && (previous->tip_W - e.tip_W).norm() < kTipToleranceMm &&
-        (previous->axis_W - e.axis_W).norm() < kAxisTolerance) {
+    ExecPose in;
+    in.tip_W = e.tip_W, in.axis_W = e.axis_W;
+    if (previous && e.motion < 2 && same_place(*previous, in)) {
       ++r.ends;  // the input does not move: no output block needed
       continue;
     }
     const std::size_t first_block = next;
-    bool found = false;
-    for (; next < out_ends.size() && !found; ++next)
-      found = (out_ends[next].tip_W - e.tip_W).norm() < kTipToleranceMm &&
-              (out_ends[next].axis_W - e.axis_W).norm() < kAxisTolerance;
-    if (!found) {
+    if (const std::string missed = reach_output_end(ex, out_ends, next, in); !missed.empty()) {
       std::ostringstream o;
-      o << where << "(tip " << e.tip_W.transpose() << ", axis " << e.axis_W.transpose()
-        << ") no output block ends there (1 um, 1e-6) after output line "
-        << (first_block < ex.blocks.size() ? std::to_string(ex.blocks[first_block].line) : std::string("end"));
+      o << where << "(tip " << e.tip_W.transpose() << ", axis " << e.axis_W.transpose() << ") " << missed;
       r.failure = o.str();
       return r;
     }
@@ -85,7 +80,7 @@ inline SinumerikRepostCheck compare_sinumerik_reposted(const std::string& input,
       r.failure = compare_angles(ex.machine, ex.blocks[next - 1], e.traori_angles_deg, r);
     if (previous && e.motion > 0 && r.failure.empty()) {
       if (!e.tip_straight) r.failure = "a feed that turns rotary axes in machine coordinates: its path is not compared";
-      if (e.motion >= 2 && (!e.centre_W || (e.axis_W - V3::UnitZ()).norm() > kAxisTolerance))
+      if (e.motion >= 2 && (!e.centre_W || (e.axis_W - V3::UnitZ()).norm() > 1e-6))
         r.failure = "an arc whose centre or plane (XY of W) the tests do not know";
       ControlEnd as_control;
       as_control.motion = e.motion;
@@ -98,7 +93,7 @@ inline SinumerikRepostCheck compare_sinumerik_reposted(const std::string& input,
       r.failure = where + r.failure;
       return r;
     }
-    previous = e;
+    previous = in;
   }
   return r;
 }
