@@ -17,6 +17,8 @@ namespace {
 
 /// Rotary axes the serial chain's closed-form inverse solves (inverse.hpp): 0, 1 or 2.
 constexpr int kMaxSerialRotaryAxes = 2;
+/// Fixed points a Sinumerik control holds per axis (G75 FP=1 ... FP=4).
+constexpr std::size_t kMaxFixedPoints = 4;
 
 using toml_reading::at;
 using toml_reading::reject_unknown_keys;
@@ -37,9 +39,40 @@ Vec3d read_vector(const std::string& file, const toml::node& n, const std::strin
   return v;
 }
 
+/// One command in M of the axis (`key`'s value in the axis's unit: mm or deg), in mm or rad; within
+/// the axis's travel where it has one.
+double read_machine_point(const std::string& file, const toml::node& n, const Axis& axis, const std::string& key) {
+  const double scale = axis.is_rotary() ? kPi / 180.0 : 1.0;
+  const auto v = n.value<double>();
+  if (!v || !std::isfinite(*v))
+    fail(file, n, fmt::format("{}: expected a finite number ({})", key, axis.is_rotary() ? "deg" : "mm"));
+  if (axis.limits && !axis.limits->contains(*v * scale, 1e-9))
+    fail(file, n,
+         fmt::format("{}: {} lies outside the axis's limits [{}, {}]", key, *v, axis.limits->min / scale,
+                     axis.limits->max / scale));
+  return *v * scale;
+}
+
+/// The axis's points in machine coordinates: the reference points (G28/G53 and G30; Klartext M91
+/// and M92) and the fixed points (Sinumerik G75 FP=1..4, the control's machine data MD30600).
+void read_machine_points(const std::string& file, const toml::table& t, Axis& axis) {
+  if (const toml::node* n = t.get("reference")) axis.reference = read_machine_point(file, *n, axis, "reference");
+  if (const toml::node* n = t.get("reference2")) axis.reference2 = read_machine_point(file, *n, axis, "reference2");
+  const toml::node* n = t.get("fixed_point");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  if (!a || a->empty() || a->size() > kMaxFixedPoints)
+    fail(file, *n,
+         fmt::format("fixed_point: expected an array of 1 to {} numbers ({}), FP=1 first", kMaxFixedPoints,
+                     axis.is_rotary() ? "deg" : "mm"));
+  for (std::size_t k = 0; k < a->size(); ++k)
+    axis.fixed_points.push_back(read_machine_point(file, (*a)[k], axis, fmt::format("fixed_point[{}]", k + 1)));
+}
+
 Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   const std::string section = fmt::format("axes.{}", letter);
-  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2"}, section);
+  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2", "fixed_point"},
+                      section);
   Axis axis;
   axis.letter = letter;
   auto type = t["type"].value<std::string>();
@@ -73,20 +106,7 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   } else {
     fail(file, *t.get("type"), fmt::format("type: expected \"linear\" or \"rotary\", got \"{}\"", *type));
   }
-  // the reference points (G28 and G30), in the axis's unit; within its travel where it has one
-  const double scale = axis.is_rotary() ? kPi / 180.0 : 1.0;
-  for (const char* key : {"reference", "reference2"}) {
-    const toml::node* n = t.get(key);
-    if (!n) continue;
-    const auto v = n->value<double>();
-    if (!v || !std::isfinite(*v))
-      fail(file, *n, fmt::format("{}: expected a finite number ({})", key, axis.is_rotary() ? "deg" : "mm"));
-    if (axis.limits && !axis.limits->contains(*v * scale, 1e-9))
-      fail(file, *n,
-           fmt::format("{}: {} lies outside the axis's limits [{}, {}]", key, *v, axis.limits->min / scale,
-                       axis.limits->max / scale));
-    (std::string_view(key) == "reference" ? axis.reference : axis.reference2) = *v * scale;
-  }
+  read_machine_points(file, t, axis);
   return axis;
 }
 

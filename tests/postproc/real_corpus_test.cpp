@@ -29,6 +29,7 @@
 
 #include "cli_run.hpp"
 #include "reposted_tips.hpp"
+#include "sinumerik_reposted.hpp"
 #include "temp_dir.hpp"
 #include "test_paths.hpp"
 
@@ -127,6 +128,13 @@ int gnumber(const std::string& word) { return std::stoi(word.substr(1)); }
 
 std::string temp_dir() { return ncpost::test::make_temp_dir("ncpost_real_corpus"); }
 
+/// The machine file an entry names: machines/<name>.toml, else the tests' own tests/data/machines/<name>.toml
+/// (a shipped machine with data a control holds, such as reference and fixed points).
+std::string machine_file(const std::string& name) {
+  const std::string shipped = ncpost::test::source("machines/" + name + ".toml");
+  return std::ifstream(shipped).good() ? shipped : ncpost::test::data("machines/" + name + ".toml");
+}
+
 /// The tests' control for a G-code input: the work offsets at zero (W is the program's frame: the
 /// corpus gives no offset values; a program's own G10 L2 sets them), the program's axis letters
 /// (X Y Z and the rotary letters it writes outside comments), LinuxCNC's meanings under its dialect.
@@ -161,8 +169,9 @@ std::string join(const std::vector<int>& v) {
 namespace {
 
 /// Posts each file of expected.json of `kind` whose place among the files of that kind is `part`
-/// modulo `parts` (the corpus in a few test cases, which CTest runs side by side), and checks it.
-void check_real_corpus(const std::string& kind, int part, int parts) {
+/// modulo `parts` (the corpus in a few test cases, which CTest runs side by side), and checks it;
+/// the Sinumerik programs (input_kind "sinumerik") apart from the others, in a case of their own.
+void check_real_corpus(const std::string& kind, int part, int parts, bool sinumerik = false) {
   const json manifest = json::parse(ncpost::test::read_text_file(ncpost::test::data("real/expected.json")));
   REQUIRE(manifest.at("files").size() >= 15);
   const double tolerance_mm = manifest.at("tolerance_mm").get<double>();
@@ -170,7 +179,8 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
 
   int place = -1;
   for (const json& e : manifest.at("files")) {
-    if (e.at("kind") != kind || ++place % parts != part) continue;
+    if (e.at("kind") != kind || (e.value("input_kind", "") == "sinumerik") != sinumerik || ++place % parts != part)
+      continue;
     const std::string file = e.at("file").get<std::string>();
     DYNAMIC_SECTION(file) {
       const std::vector<double> o = e.at("workpiece_origin").get<std::vector<double>>();
@@ -180,8 +190,7 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
       // a file refused for what it reads is read without the tolerance's subdivision (its refusal does not depend
       // on it: no reason here names the tolerance; NC-PB's TRAORI program is refused at its last blocks)
       const bool refused = e.at("expect") == "refuse";
-      std::string args = "post --machine " +
-                         ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml") +
+      std::string args = "post --machine " + machine_file(e.at("machine").get<std::string>()) +
                          " --workpiece-origin=" + origin + " --dialect " +
                          (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>() + " --tolerance " +
                          (refused ? std::string("none") : std::to_string(tolerance_mm)) + " -o " + out;
@@ -288,16 +297,29 @@ void check_real_corpus(const std::string& kind, int part, int parts) {
 
       // executed: the input as its control runs it, the output through the machine's kinematics
       if (e.at("kind") == "gcode") {
-        const std::string machine_file =
-            ncpost::test::source("machines/" + e.at("machine").get<std::string>() + ".toml");
+        const std::string machine = machine_file(e.at("machine").get<std::string>());
         const std::string input = ncpost::test::read_text_file(ncpost::test::data("real/" + file));
         const std::string dialect = (e.contains("dialect") ? e : manifest).at("dialect").get<std::string>();
-        const ncpost::test::ExecMachine em = ncpost::test::ExecMachine::load(machine_file);
         ncpost::test::ExecJob job;
         job.workpiece_origin_mm = ncpost::test::V3(o[0], o[1], o[2]);
-        const ncpost::test::RepostCheck c =
-            ncpost::test::compare_reposted_tips(input, control_for(input, em.rotary_letters, dialect == "linuxcnc"),
-                                                machine_file, job, ncpost::test::read_text_file(out));
+        const std::string output = ncpost::test::read_text_file(out);
+        if (e.value("input_kind", "") == "sinumerik") {
+          // a Sinumerik program: run by the tests' own Sinumerik interpreter (sinumerik_mini.hpp)
+          const ncpost::test::SinumerikRepostCheck c =
+              ncpost::test::compare_sinumerik_reposted(input, machine, job, output);
+          std::printf(
+              "%-40s executed: %d ends (%d with TRAORI angles, worst %.6f deg), %d samples, worst %.6f mm at "
+              "ends, %.6f mm between\n",
+              file.c_str(), c.ends, c.angle_ends, c.worst_angle_deg, c.samples, c.worst_end_mm, c.worst_between_mm);
+          INFO(c.failure);
+          CHECK(c.failure.empty());
+          CHECK(c.ends > 0);
+          if (e.at("axis_kind") == "5axis") CHECK(c.angle_ends > 0);
+          continue;
+        }
+        const ncpost::test::ExecMachine em = ncpost::test::ExecMachine::load(machine);
+        const ncpost::test::RepostCheck c = ncpost::test::compare_reposted_tips(
+            input, control_for(input, em.rotary_letters, dialect == "linuxcnc"), machine, job, output);
         std::printf("%-40s executed: %d ends, %d samples, worst %.6f mm at ends, %.6f mm between\n", file.c_str(),
                     c.ends, c.samples, c.worst_end_mm, c.worst_between_mm);
         INFO(c.failure);
@@ -321,4 +343,7 @@ TEST_CASE("the real corpus posts as the CAM system meant or is refused naming th
 }
 TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: NC programs, 3 of 3") {
   check_real_corpus("gcode", 2, 3);
+}
+TEST_CASE("the real corpus posts as the CAM system meant or is refused naming the line: Sinumerik programs") {
+  check_real_corpus("gcode", 0, 1, true);
 }

@@ -37,6 +37,7 @@ struct ExecAxis {
   bool workpiece_side = false;
   std::optional<double> limit_max;              ///< the top of the travel (mm, deg)
   std::optional<double> reference, reference2;  ///< G28's and G30's point in M (mm, deg)
+  std::vector<double> fixed_point;              ///< Sinumerik G75 FP=1, 2, ... in M (mm, deg)
 };
 
 /// A machine file read by the test: the chain and its axes (rotary angles in deg in the program).
@@ -92,6 +93,10 @@ struct ExecMachine {
         if (key == "limits") a.limit_max = std::stod(value.substr(value.find(',') + 1));
         if (key == "reference") a.reference = std::stod(value);
         if (key == "reference2") a.reference2 = std::stod(value);
+        if (key == "fixed_point") {
+          std::istringstream list(value.substr(value.find('[') + 1, value.find(']') - value.find('[') - 1));
+          for (std::string part; std::getline(list, part, ',');) a.fixed_point.push_back(std::stod(part));
+        }
       }
     }
     std::istringstream words(m.chain);

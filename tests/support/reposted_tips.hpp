@@ -163,10 +163,26 @@ inline std::string check_between(const Executor& ex, const InputPath& path, cons
   return {};
 }
 
+/// Tip (components where `mask` is 1) within 1 µm and tool axis within 1e-6: the same place.
+inline bool same_place(const ExecPose& a, const ExecPose& b, const V3& mask = V3(1, 1, 1)) {
+  return (a.tip_W - b.tip_W).cwiseProduct(mask).norm() < 1e-3 && (a.axis_W - b.axis_W).norm() < 1e-6;
+}
+
+/// The first output end from `next` on at `in`'s place: `next` moves past it; "" found, else the
+/// failure (after which output line nothing ends there).
+inline std::string reach_output_end(const Executor& ex, const std::vector<ExecPose>& out_ends, std::size_t& next,
+                                    const ExecPose& in, const V3& mask = V3(1, 1, 1)) {
+  const std::size_t first_block = next;
+  for (; next < out_ends.size(); ++next)
+    if (same_place(out_ends[next], in, mask)) return ++next, std::string();
+  return "no output block ends there (1 um, 1e-6) after output line " +
+         (first_block < ex.blocks.size() ? std::to_string(ex.blocks[first_block].line) : std::string("end"));
+}
+
 /// Executes `input` (tool-tip reading) and `output` and compares them as the header says.
 inline RepostCheck compare_reposted_tips(const std::string& input, ControlSpec spec, const std::string& machine_file,
                                          const ExecJob& job, const std::string& output) {
-  constexpr double kTipToleranceMm = 1e-3, kAxisTolerance = 1e-6;
+  constexpr double kTipToleranceMm = 1e-3;
   const Executor ex(machine_file, job, output);
   set_machine_moves(spec, ex.machine, job);
   ControlInterpreter control(input, spec);
@@ -209,19 +225,13 @@ inline RepostCheck compare_reposted_tips(const std::string& input, ControlSpec s
       o << "input line " << e.line << " (tip " << in.tip_W.transpose() << ", axis " << in.axis_W.transpose() << "): ";
       return o.str();
     };
-    if (previous && e.motion < 2 && gap(previous->tip_W, in.tip_W) < kTipToleranceMm &&
-        (previous->axis_W - in.axis_W).norm() < kAxisTolerance) {
+    if (previous && e.motion < 2 && same_place(*previous, in, mask)) {
       ++r.ends;  // the input does not move: no output block needed
       continue;
     }
     const std::size_t first_block = next;
-    bool found = false;
-    for (; next < out_ends.size() && !found; ++next)
-      found = gap(out_ends[next].tip_W, in.tip_W) < kTipToleranceMm &&
-              (out_ends[next].axis_W - in.axis_W).norm() < kAxisTolerance;
-    if (!found) {
-      r.failure = where() + "no output block ends there (1 um, 1e-6) after output line " +
-                  (first_block < ex.blocks.size() ? std::to_string(ex.blocks[first_block].line) : std::string("end"));
+    if (const std::string missed = reach_output_end(ex, out_ends, next, in, mask); !missed.empty()) {
+      r.failure = where() + missed;
       return r;
     }
     ++r.ends;

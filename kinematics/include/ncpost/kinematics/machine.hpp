@@ -37,6 +37,9 @@ struct Axis {
   /// control's machine coordinates (G28, G53), and at its second reference point (G30); none where
   /// the machine file does not say (docs/formats.md).
   std::optional<double> reference, reference2;
+  /// The control's fixed points (Sinumerik G75 FP=1, 2, ...: machine data MD30600), commands in M
+  /// (mm or rad), first = FP=1; empty where the machine file does not give them.
+  std::vector<double> fixed_points;
 
   bool is_rotary() const { return kind == AxisKind::rotary; }
   bool continuous() const { return is_rotary() && !limits; }

@@ -27,6 +27,7 @@
 #include "read/gcode/gcode_oword_flow.hpp"
 #include "read/gcode/gcode_program_flow.hpp"
 #include "read/gcode/gcode_subprogram_calls.hpp"
+#include "read/machine_points.hpp"
 #include "read/units_evidence.hpp"
 
 namespace ncpost::gcode {
@@ -877,10 +878,7 @@ struct GcodeClReader::State {
   /// Where G28 (`second`: G30) puts the axis, in M (mm or rad): the machine file's `reference`
   /// (`reference2`); Z without `reference` goes to the top of its travel. nullopt where not given.
   std::optional<double> reference_point(const Axis& axis, bool second) const {
-    if (second) return axis.reference2;
-    if (axis.reference) return axis.reference;
-    if (axis.letter == 'Z' && axis.limits) return axis.limits->max;
-    return std::nullopt;
+    return second ? axis.reference2 : reference_or_top(axis);
   }
 
   /// What G28 / G30 / G53 do with the machine axes: the point, the machine's linear axes placed, and

@@ -81,6 +81,11 @@ void Translator::assignment(const ProgramLine& l, const Item& item, Words& w) {
     return;
   }
   if (n == "CR" || n == "F" || n == "S" || n == "T" || n == "D") return value_address(l, item, w);
+  if (n == "FP") {
+    w.fixed_point = item.value ? *item.value : value(l, item.column, item.text);
+    w.fixed_point_column = item.column;
+    return;
+  }
   if (values_.known(n)) {
     try {
       if (values_.string_value(n))
@@ -176,6 +181,10 @@ void Translator::g_word(const ProgramLine& l, const Item& item, Words& w) {
     w.g53_column = item.column;
     return;
   }
+  if (g == 75) {
+    w.g75_column = item.column;
+    return;
+  }
   if (g == 17 || g == 18 || g == 19) plane_ = g;
   if (g == 93 || g == 94 || g == 95) feed_mode_ = g;
   if (g == 70 || g == 700 || g == 71 || g == 710) inch_ = g == 70 || g == 700;
@@ -262,7 +271,10 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
     emit(l, fmt::format("G4 P{:.4f}", *w.dwell_s));
   }
   const bool moves = w.any_linear() || w.any_rotary() || w.any_orientation();
-  if (w.supa) {
+  if (w.fixed_point && !w.g75_column) fail(l, w.fixed_point_column, "FP= without G75 (the fixed point approach)");
+  if (w.g75_column) {
+    iso += (iso.empty() ? "" : " ") + fixed_point_words(l, w);
+  } else if (w.supa) {
     frames_suppressed(l, w, moves);
     if (moves) iso += (iso.empty() ? "" : " ") + supa_words(l, w);
   } else if (moves) {
@@ -275,7 +287,7 @@ void Translator::write_block(const ProgramLine& l, Words& w) {
   if (!l.block.comment.empty()) iso += (iso.empty() ? ";" : " ;") + l.block.comment;
   if (!iso.empty()) emit(l, iso);
   if (w.tool_name) out_.back().tool_name = w.tool_name;  // (T0 is in `iso`)
-  if (mcall_ && w.any_linear() && !w.supa) drill(l, *mcall_);
+  if (mcall_ && w.any_linear() && !w.supa && !w.g75_column) drill(l, *mcall_);
   for (const Item* item : w.after) {
     if (item->name == "CYCLE800")
       cycle800(l, *item);

@@ -71,8 +71,14 @@ void Translator::hole_parameters(const ProgramLine& l, const Item& item, const A
   unread_after(11, "RTP, RFP, SDIS, DP, DPR, DTB, SDIR, RPA, RPO, RPAP, POSS");
   if (num(7) != 0.0 || num(8) != 0.0 || num(9) != 0.0)
     fail(l, item.column,
-         "CYCLE86 with a lift-off (RPA, RPO or RPAP not 0) is not read: its direction follows the oriented "
-         "spindle stop POSS, which the posted program would not hold");
+         fmt::format("CYCLE86 with a lift-off (RPA={} RPO={} RPAP={}) is not read: the cycles manual fixes the "
+                     "motions (an oriented spindle stop at POSS={}, then the lift-off incremental along the plane's "
+                     "axes and the tool axis, out to RFP+SDIS, back over the hole at RTP), but the lift-off is safe "
+                     "only with the cutting edge turned away from the wall by that oriented stop, which the posted "
+                     "program has no word for (it stops the spindle with M5 anywhere); set RPA RPO RPAP to 0 (no "
+                     "lift-off) or post the CL data",
+                     gcode::word_number(num(7)), gcode::word_number(num(8)), gcode::word_number(num(9)),
+                     gcode::word_number(num(10))));
   d.spindle_after = static_cast<int>(num(6));
   if (num(6) != 3.0 && num(6) != 4.0)
     fail(l, item.column, fmt::format("CYCLE86: SDIR={} (the spindle after the cycle: 3 or 4)", num(6)));
@@ -91,7 +97,13 @@ void Translator::deep_hole_parameters(const ProgramLine& l, const Item& item, co
   if (vari != 0.0 && vari != 1.0)
     fail(l, item.column, fmt::format("CYCLE83 VARI={}: only 0 (chip breaking) and 1 (chip removal) are read", vari));
   if (degression < 0.0)
-    fail(l, item.column, "CYCLE83 DAM < 0 (a degression factor) is not read; give the degression as a length");
+    fail(l, item.column,
+         fmt::format("CYCLE83 DAM={}: a negative degression is not read: the SINUMERIK 840D sl cycles manual gives DAM "
+                     "as a length (each infeed that much shorter than the one before, DAM 0: all as long as the first) "
+                     "and leaves open what a negative DAM does (a factor of the last infeed, or a percentage as "
+                     "ShopMill's input screen offers, is the cycle version's own); give the degression as a length "
+                     "(DAM > 0) or 0",
+                     gcode::word_number(degression)));
   if (!(factor >= 0.0 && factor <= 1.0))
     fail(l, item.column, fmt::format("CYCLE83 FRF={}: the feed factor lies in 0.001 .. 1", factor));
   for (const auto& [i, name] : {std::pair<std::size_t, const char*>{8, "DTB"}, {9, "DTS"}, {15, "_DTD"}})

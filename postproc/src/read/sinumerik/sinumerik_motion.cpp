@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Motion blocks of the Sinumerik translator (sinumerik_translator.hpp): targets through the
-// frames, arcs, rotary words and tool orientation vectors, SUPA.
+// frames, arcs, rotary words and tool orientation vectors, SUPA, G75.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,6 +9,7 @@
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/postproc/read/gcode/gcode_arc.hpp"
 #include "ncpost/postproc/read/gcode/gcode_expression.hpp"
+#include "read/machine_points.hpp"
 #include "read/sinumerik/sinumerik_translator.hpp"
 #include "read/sinumerik/sinumerik_words.hpp"
 
@@ -163,6 +164,57 @@ std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
     }
   }
   if (w.motion) motion_ = *w.motion;
+  return s;
+}
+
+/// G75 FP=n (SINUMERIK 840D sl Programming Manual Fundamentals, "Fixed-point approach (G75)"): the
+/// named machine axes go at rapid traverse to fixed point n (1 to 4; without FP= 1), the control's
+/// machine data (MD30600 $MA_FIX_POINT_POS[n-1]), which the machine file gives as `fixed_point`; the
+/// values written for the axes are not used and no frame or offset acts. A block of its own: the
+/// modal G0..G3 stays. Written as G53 G0 counted from the reference point (machine_points.hpp), as
+/// SUPA is; the positions in W are not known after it.
+std::string Translator::fixed_point_words(const ProgramLine& l, const Words& w) {
+  const int column = *w.g75_column;
+  if (w.motion || w.supa || w.any_orientation() || w.radius || w.ijk[0] || w.ijk[1] || w.ijk[2])
+    fail(l, column, "G75 beside G0..G3, G53/SUPA, A3= B3= C3=, CR= or I J K: G75 is a block of its own");
+  if (traori_) fail(l, column, "G75 under TRAORI is not read: program TRAFOOF before the fixed point approach");
+  if (mcall_) fail(l, column, "G75 while a cycle is modal (MCALL) is not read: end it with MCALL first");
+  const double n = w.fixed_point.value_or(1.0);
+  if (n != std::floor(n) || n < 1 || n > 4)
+    fail(l, w.fixed_point_column, fmt::format("FP={}: expected the fixed point 1, 2, 3 or 4", num(n)));
+  const auto k = static_cast<std::size_t>(n);
+  std::string s = "G53 G0";
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!(i < 3 ? w.xyz[i] : w.abc[i - 3])) continue;
+    const char letter = "XYZABC"[i];
+    const int at = machine_.index_of(letter);
+    if (at < 0) fail(l, column, fmt::format("G75 {}: the machine {} has no axis {}", letter, machine_.name, letter));
+    const Axis& axis = machine_.axes[static_cast<std::size_t>(at)];
+    const char* unit = axis.is_rotary() ? "deg" : "mm";
+    if (axis.fixed_points.size() < k)
+      fail(l, column,
+           fmt::format("G75 FP={} {}: fixed point {} of {} (the control's machine data MD30600 $MA_FIX_POINT_POS[{}]) "
+                       "is not in the machine file {}: give it as [axes.{}] fixed_point = [...] ({}, FP=1 first)",
+                       k, letter, k, letter, k - 1, machine_.name, letter, unit));
+    std::optional<double> zero = reference_or_top(axis);
+    if (!zero && axis.is_rotary()) zero = 0.0;  // G53 on a rotary axis without a reference: its machine angle
+    if (!zero)
+      fail(l, column,
+           fmt::format("G75 {}: the posted G53 counts from {}'s reference point, which the machine file {} does not "
+                       "give: add [axes.{}] reference ({})",
+                       letter, letter, machine_.name, letter, unit));
+    const double value = axis.is_rotary() ? (axis.fixed_points[k - 1] - *zero) * 180.0 / M_PI
+                                          : (axis.fixed_points[k - 1] - *zero) / (inch_ ? 25.4 : 1.0);
+    s += fmt::format(" {}{}", letter, num(value));
+    if (i < 3)
+      base_known_[i] = false;
+    else
+      rotary_deg_[i - 3] = axis.fixed_points[k - 1] * 180.0 / M_PI, rotary_known_[i - 3] = true;
+  }
+  if (s.size() == 6) fail(l, column, "G75 without axis words: the axes to approach the fixed point must be named");
+  notice_once(l, "G75",
+              "G75 (fixed point approach) goes to the machine file's fixed_point, written as G53 counted from the "
+              "reference point: the G53 notices at its lines are its moves");
   return s;
 }
 

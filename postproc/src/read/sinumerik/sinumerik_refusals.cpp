@@ -150,11 +150,9 @@ std::string refused_g(int g) {
         "and give the part's position with --workpiece-origin",
         g);
   if (g == 110 || g == 111 || g == 112) return fmt::format("G{}: polar coordinates are not read", g);
-  if (g == 74 || g == 75)
-    return fmt::format(
-        "G{} ({}) is not read: where it sends the axes is the control's machine data, not in the machine file; "
-        "program the retract as SUPA/G53 with the machine position (e.g. G0 SUPA Z0 D0), or post the CL data",
-        g, g == 74 ? "reference point approach" : "fixed point approach, FP=");
+  if (g == 74)
+    return "G74 (reference point approach) is not read: it homes the axes (the control's machine data); program "
+           "the retract as SUPA/G53 with the machine position (e.g. G0 SUPA Z0 D0), or post the CL data";
   if (g == 331 || g == 332 || g == 33) return fmt::format("G{}: thread cutting and tapping are not read", g);
   if (g == 96) return "G96 (constant cutting speed) is not read: program the speed in rpm (G97)";
   if (g == 43 || g == 44)

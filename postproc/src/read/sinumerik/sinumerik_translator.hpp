@@ -17,6 +17,7 @@
 //   - CYCLE81/CYCLE82 (also under MCALL) become G81/G82 or their motions; CYCLE83/85/86 become
 //     their motions (sinumerik_holes.cpp); CYCLE84/840 the tap G84/G74 (sinumerik_taps.cpp);
 //   - SUPA and G53 blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
+//   - G75 FP=n (fixed point approach) becomes G53 G0 to the machine file's `fixed_point`s;
 //   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
 //     puts into the tool change (cl::ToolChange::name).
 // Everything else is refused by name (InputError with file:line:column).
@@ -137,6 +138,7 @@ class Translator {
            const std::string& tail);
   std::string orientation_words(const ProgramLine& l, const Words& w);
   std::string supa_words(const ProgramLine& l, const Words& w);
+  std::string fixed_point_words(const ProgramLine& l, const Words& w);
   Eigen::Vector3d current_prog(const ProgramLine& l, int column) const;
   std::optional<RotaryAngles> nearest_solution(const Eigen::Vector3d& axis_W, int direction) const;
 

@@ -29,6 +29,9 @@ struct Translator::Words {
   std::optional<std::string> tool_name;              ///< a T word: T="name" (its name), T<n> ("")
   bool supa = false;                                 ///< SUPA, or G53 (read as SUPA: sinumerik_block.cpp)
   std::optional<int> g53_column;                     ///< G53 in this block: where
+  std::optional<int> g75_column;                     ///< G75 (fixed point approach) in this block: where
+  std::optional<double> fixed_point;                 ///< FP= (G75's fixed point number)
+  int fixed_point_column = 1;                        ///< of FP=
   bool program_end = false;                          ///< M2 / M30
   bool unit_end = false;                             ///< M17 / RET
   std::vector<const Item*> after;                    ///< calls run after the motion (CYCLE800, CYCLE81, subprograms)
