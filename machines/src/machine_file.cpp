@@ -37,9 +37,24 @@ Vec3d read_vector(const std::string& file, const toml::node& n, const std::strin
   return v;
 }
 
+/// `swivel_retract` (linear axes, mm in M, within the travel): CYCLE800's retraction position.
+void read_swivel_retract(const std::string& file, const toml::table& t, Axis& axis) {
+  const toml::node* n = t.get("swivel_retract");
+  if (!n) return;
+  if (axis.is_rotary()) fail(file, *n, "swivel_retract: a linear axis's key (mm); a rotary axis takes none");
+  const auto v = n->value<double>();
+  if (!v || !std::isfinite(*v)) fail(file, *n, "swivel_retract: expected a finite number (mm)");
+  if (axis.limits && !axis.limits->contains(*v, 1e-9))
+    fail(file, *n,
+         fmt::format("swivel_retract: {} lies outside the axis's limits [{}, {}]", *v, axis.limits->min,
+                     axis.limits->max));
+  axis.swivel_retract = *v;
+}
+
 Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   const std::string section = fmt::format("axes.{}", letter);
-  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2"}, section);
+  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2", "swivel_retract"},
+                      section);
   Axis axis;
   axis.letter = letter;
   auto type = t["type"].value<std::string>();
@@ -87,6 +102,7 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
                        axis.limits->max / scale));
     (std::string_view(key) == "reference" ? axis.reference : axis.reference2) = *v * scale;
   }
+  read_swivel_retract(file, t, axis);
   return axis;
 }
 

@@ -37,6 +37,7 @@ struct ExecAxis {
   bool workpiece_side = false;
   std::optional<double> limit_max;              ///< the top of the travel (mm, deg)
   std::optional<double> reference, reference2;  ///< G28's and G30's point in M (mm, deg)
+  std::optional<double> swivel_retract;         ///< where Sinumerik's CYCLE800 _FR retracts the axis (mm in M)
 };
 
 /// A machine file read by the test: the chain and its axes (rotary angles in deg in the program).
@@ -92,6 +93,7 @@ struct ExecMachine {
         if (key == "limits") a.limit_max = std::stod(value.substr(value.find(',') + 1));
         if (key == "reference") a.reference = std::stod(value);
         if (key == "reference2") a.reference2 = std::stod(value);
+        if (key == "swivel_retract") a.swivel_retract = std::stod(value);
       }
     }
     std::istringstream words(m.chain);

@@ -10,7 +10,9 @@
 //     (the unit vector in W itself);
 //   - CYCLE800(_FR,_TC,_ST,_MODE,X0,Y0,Z0,A,B,C,X1,Y1,Z1,_DIR): the plane frame
 //     Trans(X0) R Trans(X1), R axis by axis in _MODE's order (57: Rx(A) Ry(B) Rz(C); 27: Rz(A) Ry(B) Rx(C)); X Y Z
-//     after it are the tip in that frame, the tool axis its Z; CYCLE800() ends it;
+//     after it are the tip in that frame, the tool axis its Z; CYCLE800() (or a bare CYCLE800) ends it;
+//     the rotary angles it turns to, its _FR retraction and where the tool stands after it, and G53/SUPA
+//     blocks (machine coordinates): sinumerik_mini_swivel.hpp;
 //   - TRANS X Y Z: a shift of the programmable frame;
 //   - CYCLE81 82 83 84 840 85 86 (sinumerik_mini_cycles.hpp) at the X Y where the tool stands after the
 //     block, in the plane's frame; MCALL CYCLE8x(...) after every following motion block, MCALL
@@ -25,6 +27,7 @@
 
 #include "nc_executor.hpp"
 #include "sinumerik_mini_cycles.hpp"
+#include "sinumerik_mini_swivel.hpp"
 
 namespace ncpost::test {
 
@@ -115,17 +118,29 @@ inline std::vector<SinumerikEnd> sinumerik_block_ends(const std::string& text, c
       shift = V3(sin_word(line, "X").value_or(0), sin_word(line, "Y").value_or(0), sin_word(line, "Z").value_or(0));
       continue;
     }
-    if (const std::size_t c8 = line.find("CYCLE800("); c8 != std::string::npos) {
+    if (const std::size_t c8 = line.find("CYCLE800"); c8 != std::string::npos) {  // a bare CYCLE800 too: the reset
       std::vector<double> a;
-      std::stringstream args(line.substr(c8 + 9, line.find(')') - c8 - 9));
+      std::stringstream args(line.find('(', c8) == c8 + 8 ? line.substr(c8 + 9, line.find(')') - c8 - 9) : "");
       for (std::string s; std::getline(args, s, ',');)
         a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::strtod(s.c_str(), nullptr));
-      swivel = a.size() >= 14;
-      if (swivel) {
-        plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
-                Rt{sin_axis_by_axis(static_cast<int>(a[3]), a[7], a[8], a[9]), V3::Zero()} *
-                Rt{M3::Identity(), V3(a[10], a[11], a[12])};
-      }
+      const V3 tip_before = end_at(line_no, V3(words['X'], words['Y'], words['Z'])).tip_W;
+      std::optional<Rt> new_plane;
+      if (a.size() >= 14)
+        new_plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
+                    Rt{sin_axis_by_axis(static_cast<int>(a[3]), a[7], a[8], a[9]), V3::Zero()} *
+                    Rt{M3::Identity(), V3(a[10], a[11], a[12])};
+      const int fr = a.empty() ? 0 : static_cast<int>(a[0]), dir = a.size() >= 14 ? static_cast<int>(a[13]) : 0;
+      sin_cycle800(m, job, new_plane, fr, dir, tip_before, shift, traori, words);  // sinumerik_mini_swivel.hpp
+      swivel = new_plane.has_value();
+      if (swivel) plane = *new_plane;
+      continue;
+    }
+    if (sin_is_machine_block(line)) {  // G53 / SUPA (sinumerik_mini_swivel.hpp)
+      std::map<char, double> given;
+      for (char c : std::string("XYZ") + m.rotary_letters)
+        if (auto v = sin_word(line, std::string(1, c))) given[c] = *v;
+      sin_machine_words(m, given, shift, words);
+      if (!given.empty()) out.push_back(end_at(line_no, V3(words['X'], words['Y'], words['Z'])));
       continue;
     }
     bool moved = false;

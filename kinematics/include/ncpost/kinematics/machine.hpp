@@ -37,6 +37,9 @@ struct Axis {
   /// control's machine coordinates (G28, G53), and at its second reference point (G30); none where
   /// the machine file does not say (docs/formats.md).
   std::optional<double> reference, reference2;
+  /// Linear axes: where a Sinumerik CYCLE800 retraction (_FR) puts the axis before the swivel (its
+  /// command in M, mm), the control's swivel data record ($TC_CARR38..40); none where not given.
+  std::optional<double> swivel_retract;
 
   bool is_rotary() const { return kind == AxisKind::rotary; }
   bool continuous() const { return is_rotary() && !limits; }

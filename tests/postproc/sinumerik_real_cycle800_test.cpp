@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: Apache-2.0
+// The corpus's real CYCLE800 program (tests/data/real/ncpb_Demo_1.mpf, NC-PB's 3+2 demo part for a DMG with
+// a SINUMERIK 840D, issue 28) re-posted on the head-table-bc machine for Fanuc with a tool table. The program
+// retracts with G53 (machine coordinates) and CYCLE800 _FR=1 before each swivel and then programs X and Y
+// alone: on the control the tool stands where the machine position puts it, seen in the new plane. The INPUT
+// is run by the tests' own small Sinumerik interpreter (sinumerik_mini.hpp with sinumerik_mini_swivel.hpp: G53
+// from the machine file's reference data, _FR to its swivel_retract, the control's angles for each plane), the
+// written OUTPUT by the tests' executor (nc_executor.hpp); at every input block end after the program's first
+// position the tool tip agrees within 1 µm and the tool axis within the written angles' resolution, and for
+// each CYCLE800 the output's B and C are the angles the tests compute for the plane (_MODE 27: Rz(_A) Ry(_B)
+// Rx(_C), the _DIR=-1 branch), themselves checked by hand.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include "nc_executor.hpp"
+#include "sinumerik_mini.hpp"
+#include "ncpost/machines/input_error.hpp"
+#include "ncpost/machines/machine_file.hpp"
+#include "ncpost/postproc/machine/serial_post_machine.hpp"
+#include "ncpost/postproc/post_request.hpp"
+#include "ncpost/postproc/read/tool_table.hpp"
+#include "ncpost/postproc/write/dialect.hpp"
+#include "test_paths.hpp"
+#include "text_file.hpp"
+
+using namespace ncpost;
+
+namespace {
+
+constexpr const char* kFile = "ncpb_Demo_1.mpf";
+
+std::string machine_file() { return test::source("machines/head-table-bc.toml"); }
+
+test::ExecJob demo_job() {
+  test::ExecJob j;
+  j.workpiece_origin_mm = test::V3(0, 0, -300);  // the corpus entry's origin
+  j.tool_length_mm = 100;
+  return j;
+}
+
+/// The program without its last block `N1570 HOME` (DMG's home-position cycle, whose target is the machine's
+/// data: refused), kept as a comment so that the line numbers stay.
+std::string demo_without_home() {
+  std::string text = test::read_text_file(test::data(std::string("real/") + kFile));
+  const std::size_t at = text.find("N1570 HOME");
+  REQUIRE(at != std::string::npos);
+  text.insert(at, ";");
+  return text;
+}
+
+std::string post_demo(const std::string& text, const std::string& machine_text) {
+  PostRequest r;
+  r.machine = serial_post_machine(parse_machine(machine_text, "head-table-bc.toml"));
+  r.setup.workpiece_origin_mm = Vec3d(0, 0, -300);
+  r.setup.tool_length_mm = 100;
+  r.dialect = dialect_named("fanuc");
+  r.tool_table = std::make_shared<const ToolTable>(
+      parse_tool_table(test::read_text_file(test::data("real/ncpb_tools.toml")), "ncpb_tools.toml"));
+  r.threads = 1;
+  r.input_name = kFile;
+  std::istringstream in(text);
+  std::ostringstream out;
+  post(in, out, r);
+  return out.str();
+}
+
+/// The written angles have 4 decimals of a degree: the axis they give is within 1e-4 deg (1.7e-6).
+constexpr double kAxisTolerance = 5e-6;
+
+struct Plane {
+  int line = 0;
+  test::V3 normal;
+  int dir = 0;
+};
+
+/// The CYCLE800 calls with a parameter list (_MODE 27 here): the line, the plane's Z, _DIR.
+std::vector<Plane> planes_of(const std::string& text) {
+  static const std::regex call(R"(CYCLE800\(([^)]*)\))");
+  std::vector<Plane> out;
+  std::istringstream in(text);
+  int no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++no;
+    std::smatch m;
+    if (!std::regex_search(line, m, call)) continue;
+    std::vector<double> a;
+    std::stringstream args(m[1].str());
+    for (std::string s; std::getline(args, s, ',');) a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::stod(s));
+    REQUIRE(a.size() == 14);
+    REQUIRE(a[3] == 27.0);
+    out.push_back({no, test::sin_axis_by_axis(27, a[7], a[8], a[9]) * test::V3::UnitZ(), static_cast<int>(a[13])});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("sinumerik CYCLE800 angles of the tests on head-table-bc: NC-PB Demo_1's planes, checked by hand") {
+  // axis_W = Rz(-C) Ry(B) e_z = (sinB cosC, -sinB sinC, cosB); the plane Rz(_A) Ry(45) e_z has cosB = cos 45;
+  // B is rotary axis 1 (the head's): _DIR=-1 takes B = -45, then C from the plane's X and Y
+  const test::ExecMachine m = test::ExecMachine::load(machine_file());
+  REQUIRE(test::sin_rotary_axis_1(m) == 'B');
+  const std::vector<Plane> planes = planes_of(test::read_text_file(test::data(std::string("real/") + kFile)));
+  REQUIRE(planes.size() == 5);
+  const double want_c[5] = {0.0, 180.0, -90.0, 0.0, 90.0};  // the first plane is flat: C stays at 0
+  const double want_b[5] = {0.0, -45.0, -45.0, -45.0, -45.0};
+  std::map<char, double> now{{'B', 0.0}, {'C', 0.0}};
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    INFO("CYCLE800 at line " << planes[i].line);
+    const auto got = test::sin_control_angles(m, demo_job(), planes[i].normal, planes[i].dir, now);
+    REQUIRE(got);
+    CHECK(got->at('B') == Approx(want_b[i]).margin(1e-9));
+    CHECK(std::abs(std::remainder(got->at('C') - want_c[i], 360.0)) < 1e-9);
+    now = *got;
+  }
+}
+
+TEST_CASE("sinumerik real CYCLE800 (NC-PB Demo_1): re-posted, every block end and each plane's B and C the control's") {
+  const std::string text = demo_without_home();
+  const std::string nc = post_demo(text, test::read_text_file(machine_file()));
+  INFO(nc.substr(0, 3000));
+  CHECK(nc.find("T1 M6") != std::string::npos);  // the tool table's number for T="TEST_KOM"
+  const test::ExecMachine m = test::ExecMachine::load(machine_file());
+  const std::vector<test::SinumerikEnd> ends = test::sinumerik_block_ends(text, m, demo_job());
+  const test::Executor ex(machine_file(), demo_job(), nc);
+  // the posted program starts at the program's first position (docs/formats.md, G-code input: G53 before it
+  // moves nothing, and X Y Z not programmed before the first motion are taken from their first values): N110
+  // X-34 Y89.9 (line 28) and N120 Z104 (line 29); every end from there on is compared
+  constexpr int kFirstCompared = 29;
+  const std::vector<Plane> planes = planes_of(text);
+  std::map<char, double> angles_now{{'B', 0.0}, {'C', 0.0}};
+  std::size_t at = 0, plane = 0, compared = 0;
+  for (const test::SinumerikEnd& e : ends) {
+    if (e.line < kFirstCompared) continue;
+    INFO("input line " << e.line << ": expected tip " << e.tip_W.transpose() << " axis " << e.axis_W.transpose());
+    bool found = false;
+    for (; at < ex.blocks.size() && !found; ++at) {
+      const test::ExecPose p = ex.at(ex.blocks[at], 1.0);
+      found = (p.tip_W - e.tip_W).norm() < 1e-3 && (p.axis_W - e.axis_W).norm() < kAxisTolerance;
+    }
+    REQUIRE(found);
+    ++compared;
+    // the first end after a CYCLE800: the output's B and C there are the tests' angles for the plane
+    if (plane < planes.size() && e.line > planes[plane].line) {
+      const auto want = test::sin_control_angles(m, demo_job(), planes[plane].normal, planes[plane].dir, angles_now);
+      REQUIRE(want);
+      const std::map<char, double>& got = ex.blocks[at - 1].to;
+      INFO("plane of line " << planes[plane].line << ": B " << got.at('B') << " C " << got.at('C'));
+      CHECK(got.at('B') == Approx(want->at('B')).margin(1e-4));
+      CHECK(std::abs(std::remainder(got.at('C') - want->at('C'), 360.0)) < 1e-4);
+      angles_now = *want;
+      ++plane;
+    }
+  }
+  CHECK(plane == planes.size());
+  CHECK(compared > 90);
+}
+
+TEST_CASE("sinumerik real CYCLE800 (NC-PB Demo_1): without swivel_retract, or with HOME, refused at the line") {
+  // without [axes.Z] swivel_retract where _FR=1 leaves Z is the control's data: X Y alone after it is refused
+  std::string machine = test::read_text_file(machine_file());
+  const std::size_t key = machine.find("\nswivel_retract");
+  REQUIRE(key != std::string::npos);
+  machine.erase(key, machine.find('\n', key + 1) - key);
+  REQUIRE(machine.find("\nswivel_retract") == std::string::npos);
+  const auto refusal = [&](const std::string& text, const std::string& machine_text) -> std::string {
+    try {
+      post_demo(text, machine_text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK_THAT(refusal(demo_without_home(), machine),
+             Catch::StartsWith(std::string(kFile) + ":64:") && Catch::Contains("X is not known here"));
+  // the whole file: DMG's HOME cycle (where it goes is the machine's data) is refused by name
+  CHECK_THAT(
+      refusal(test::read_text_file(test::data(std::string("real/") + kFile)), test::read_text_file(machine_file())),
+      Catch::StartsWith(std::string(kFile) + ":186:") && Catch::Contains("HOME"));
+}
+
+TEST_CASE("machine file: swivel_retract on a linear axis, within its travel; elsewhere refused at its line") {
+  const std::string head =
+      "[machine]\nname = \"t\"\nchain = \"w C' b X Y Z B t\"\n"
+      "[axes.X]\ntype = \"linear\"\n[axes.Y]\ntype = \"linear\"\n"
+      "[axes.B]\ntype = \"rotary\"\ndirection = [0, 1, 0]\npivot = [0, 0, 180]\n"
+      "[axes.C]\ntype = \"rotary\"\ndirection = [0, 0, 1]\npivot = [0, 0, 0]\n";
+  const Machine m =
+      parse_machine(head + "[axes.Z]\ntype = \"linear\"\nlimits = [-700, 500]\nswivel_retract = 480\n", "t");
+  const Axis& z = m.axes[static_cast<std::size_t>(m.index_of('Z'))];
+  REQUIRE(z.swivel_retract);
+  CHECK(*z.swivel_retract == 480.0);
+  CHECK_FALSE(m.axes[static_cast<std::size_t>(m.index_of('X'))].swivel_retract);
+  const auto error_of = [&](const std::string& text) -> std::string {
+    try {
+      parse_machine(text, "t");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK_THAT(error_of(head + "[axes.Z]\ntype = \"linear\"\nlimits = [-700, 500]\nswivel_retract = 520\n"),
+             Catch::Contains("swivel_retract: 520 lies outside the axis's limits"));
+  CHECK_THAT(error_of(head + "[axes.Z]\ntype = \"linear\"\nswivel_retract = \"top\"\n"),
+             Catch::Contains("swivel_retract: expected a finite number"));
+  std::string rotary = head + "[axes.Z]\ntype = \"linear\"\n";
+  rotary.insert(rotary.find("pivot = [0, 0, 0]"), "swivel_retract = 5\n");
+  CHECK_THAT(error_of(rotary), Catch::Contains("a rotary axis takes none"));
+}
