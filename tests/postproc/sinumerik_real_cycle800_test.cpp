@@ -55,12 +55,12 @@ std::string demo_without_home() {
 
 /// `text` posted for Fanuc on the machine `machine_text` with the job `job` (and the tool table `tools`, if any).
 std::string post_on(const std::string& text, const std::string& name, const std::string& machine_text,
-                    const test::ExecJob& job, const std::string& tools) {
+                    const test::ExecJob& job, const std::string& tools, const std::string& dialect = "fanuc") {
   PostRequest r;
   r.machine = serial_post_machine(parse_machine(machine_text, "machine.toml"));
   r.setup.workpiece_origin_mm = job.workpiece_origin_mm;
   r.setup.tool_length_mm = job.tool_length_mm;
-  r.dialect = dialect_named("fanuc");
+  r.dialect = dialect_named(dialect);
   if (!tools.empty())
     r.tool_table = std::make_shared<const ToolTable>(parse_tool_table(test::read_text_file(tools), tools));
   r.threads = 1;
@@ -179,6 +179,31 @@ TEST_CASE("sinumerik real CYCLE800 (NC-PB Demo_1): re-posted, every block end an
   // moves nothing, and X Y Z not programmed before the first motion are taken from their first values): N110
   // X-34 Y89.9 (line 28) and N120 Z104 (line 29); every end from there on is compared
   CHECK(ends_and_angles(text, nc, machine_file(), demo_job(), 29) > 90);
+}
+
+TEST_CASE(
+    "sinumerik real CYCLE800 (NC-PB Demo_1): re-posted for a Sinumerik, the tool by its name, every end reached") {
+  // the sinumerik dialect keeps T="TEST_KOM" (no tool table) and writes machine axes: its program is run by the
+  // same small Sinumerik interpreter as the input
+  const std::string text = demo_without_home();
+  const std::string out = post_on(text, kFile, test::read_text_file(machine_file()), demo_job(), "", "sinumerik");
+  INFO(out.substr(0, 2000));
+  CHECK(out.find("T=\"TEST_KOM\" M6") != std::string::npos);
+  CHECK(out.find("CYCLE800") == std::string::npos);  // machine axes, not the plane again
+  const test::ExecMachine m = test::ExecMachine::load(machine_file());
+  const std::vector<test::SinumerikEnd> in = test::sinumerik_block_ends(text, m, demo_job());
+  const std::vector<test::SinumerikEnd> written = test::sinumerik_block_ends(out, m, demo_job());
+  std::size_t at = 0, compared = 0;
+  for (const test::SinumerikEnd& e : in) {
+    if (e.line < 29) continue;  // the start, as for Fanuc
+    INFO("input line " << e.line << ": expected tip " << e.tip_W.transpose());
+    bool found = false;
+    for (; at < written.size() && !found; ++at)
+      found = (written[at].tip_W - e.tip_W).norm() < 1e-3 && (written[at].axis_W - e.axis_W).norm() < kAxisTolerance;
+    REQUIRE(found);
+    ++compared;
+  }
+  CHECK(compared > 90);
 }
 
 TEST_CASE("sinumerik CYCLE800 after SUPA on a table-table machine: X Y alone move at the Z where the tool stands") {
