@@ -65,10 +65,10 @@ std::string post_on(const std::string& text, const std::string& name, const std:
     r.tool_table = std::make_shared<const ToolTable>(parse_tool_table(test::read_text_file(tools), tools));
   r.threads = 1;
   r.input_name = name;
+  std::ostringstream written;
   std::istringstream in(text);
-  std::ostringstream out;
-  post(in, out, r);
-  return out.str();
+  post(in, written, r);
+  return written.str();
 }
 
 std::string post_demo(const std::string& text, const std::string& machine_text) {
