@@ -69,10 +69,19 @@ void read_machine_points(const std::string& file, const toml::table& t, Axis& ax
     axis.fixed_points.push_back(read_machine_point(file, (*a)[k], axis, fmt::format("fixed_point[{}]", k + 1)));
 }
 
+/// `swivel_retract` (linear axes, mm in M, within the travel): CYCLE800's retraction position.
+void read_swivel_retract(const std::string& file, const toml::table& t, Axis& axis) {
+  const toml::node* n = t.get("swivel_retract");
+  if (!n) return;
+  if (axis.is_rotary()) fail(file, *n, "swivel_retract: a linear axis's key (mm); a rotary axis takes none");
+  axis.swivel_retract = read_machine_point(file, *n, axis, "swivel_retract");
+}
+
 Axis read_axis(const std::string& file, char letter, const toml::table& t) {
   const std::string section = fmt::format("axes.{}", letter);
-  reject_unknown_keys(file, t, {"type", "direction", "pivot", "limits", "reference", "reference2", "fixed_point"},
-                      section);
+  reject_unknown_keys(
+      file, t, {"type", "direction", "pivot", "limits", "reference", "reference2", "fixed_point", "swivel_retract"},
+      section);
   Axis axis;
   axis.letter = letter;
   auto type = t["type"].value<std::string>();
@@ -107,6 +116,7 @@ Axis read_axis(const std::string& file, char letter, const toml::table& t) {
     fail(file, *t.get("type"), fmt::format("type: expected \"linear\" or \"rotary\", got \"{}\"", *type));
   }
   read_machine_points(file, t, axis);
+  read_swivel_retract(file, t, axis);
   return axis;
 }
 

@@ -158,6 +158,13 @@ ncpost::test::ControlSpec control_for(const std::string& text, const std::string
   return spec;
 }
 
+/// An entry's options with `{real}` spelled out as tests/data/real (a tool table or work offsets beside the files).
+std::string with_data_paths(std::string options) {
+  for (std::size_t at = options.find("{real}"); at != std::string::npos; at = options.find("{real}"))
+    options.replace(at, 6, ncpost::test::data("real"));
+  return options;
+}
+
 std::string join(const std::vector<int>& v) {
   std::string s;
   for (int x : v) s += (s.empty() ? "" : ",") + std::to_string(x);
@@ -200,7 +207,8 @@ void check_real_corpus(const std::string& kind, int part, int parts, bool sinume
       const bool verify = kind == "apt";
       if (verify) args += " --verify";
       if (e.contains("input_kind")) args += " --input-kind " + e.at("input_kind").get<std::string>();
-      if (e.contains("options")) args += " " + e.at("options").get<std::string>();  // how the file's control reads it
+      if (e.contains("options"))  // how the file's control reads it, the shop's tool table or work offsets
+        args += " " + with_data_paths(e.at("options").get<std::string>());
       args += " " + ncpost::test::data("real/" + file);
       const int rc = ncpost::test::run_ncpost(args, log);
       const std::string messages = ncpost::test::read_text_file(log);

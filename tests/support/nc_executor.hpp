@@ -38,6 +38,7 @@ struct ExecAxis {
   std::optional<double> limit_max;              ///< the top of the travel (mm, deg)
   std::optional<double> reference, reference2;  ///< G28's and G30's point in M (mm, deg)
   std::vector<double> fixed_point;              ///< Sinumerik G75 FP=1, 2, ... in M (mm, deg)
+  std::optional<double> swivel_retract;         ///< where Sinumerik's CYCLE800 _FR retracts the axis (mm in M)
 };
 
 /// A machine file read by the test: the chain and its axes (rotary angles in deg in the program).
@@ -97,6 +98,7 @@ struct ExecMachine {
           std::istringstream list(value.substr(value.find('[') + 1, value.find(']') - value.find('[') - 1));
           for (std::string part; std::getline(list, part, ',');) a.fixed_point.push_back(std::stod(part));
         }
+        if (key == "swivel_retract") a.swivel_retract = std::stod(value);
       }
     }
     std::istringstream words(m.chain);

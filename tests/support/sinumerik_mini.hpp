@@ -4,7 +4,8 @@
 // re-posting tests need. It gives, for each motion block of a program, where the tool tip and
 // the tool axis are in W at the block's end, by the rules of the SINUMERIK 840D sl programming
 // manual, with the tests' own forward kinematics (nc_executor.hpp):
-//   - numbers only (no variables); N numbers, ';' comments, G0 G1 G2 G3 (modal), G90;
+//   - numbers, and DEF'd variables set to numbers (`_Z_HOME=-10`, then `Z=_Z_HOME`); N numbers, ';' comments, G0 G1 G2
+//   G3 (modal), G90;
 //   - without TRAORI/CYCLE800: X Y Z and the rotary words are machine axes (commands in M);
 //   - TRAORI: X Y Z are the tool tip in W, the orientation the rotary words or A3= B3= C3=
 //     (the unit vector in W itself); TRAORI and TRAFOOF do not move the machine: the words are
@@ -12,6 +13,8 @@
 //   - CYCLE800(_FR,_TC,_ST,_MODE,X0,Y0,Z0,A,B,C,X1,Y1,Z1,_DIR): the plane frame
 //     Trans(X0) R Trans(X1), R axis by axis in _MODE's order (57: Rx(A) Ry(B) Rz(C); 27: Rz(A) Ry(B) Rx(C)); X Y Z
 //     after it are the tip in that frame, the tool axis its Z; CYCLE800() and a bare CYCLE800 end it;
+//     the rotary angles it turns to, its _FR retraction and where the tool stands after it:
+//     sinumerik_mini_swivel.hpp;
 //   - TRANS X Y Z: a shift of the programmable frame;
 //   - G53 / SUPA: the named axes in machine coordinates, counted from the machine file's `reference`
 //     (Z without one: the top of its travel; a rotary axis without one: its angle); G75 FP=n: the
@@ -23,7 +26,9 @@
 //     block, in the plane's frame; MCALL CYCLE8x(...) after every following motion block, MCALL
 //     alone ends it. The cycles' motions are given as rapids (their ends are checked, not their paths).
 // Other words are skipped (S F T M D ..., and text between quotes: T="name"). Lengths mm, angles deg.
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <set>
@@ -34,6 +39,7 @@
 
 #include "nc_executor.hpp"
 #include "sinumerik_mini_cycles.hpp"
+#include "sinumerik_mini_swivel.hpp"
 
 namespace ncpost::test {
 
@@ -120,7 +126,13 @@ class SinumerikMini {
   std::vector<SinumerikEnd> run(const std::string& text) {
     std::istringstream in(text);
     int line_no = 0;
-    for (std::string raw; std::getline(in, raw);) block(++line_no, cleaned(raw));
+    for (std::string raw; std::getline(in, raw);) {
+      std::string line = cleaned(raw);
+      if (variables(line))
+        block(++line_no, line);
+      else
+        ++line_no;
+    }
     return out_;
   }
 
@@ -136,6 +148,50 @@ class SinumerikMini {
         line += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     }
     return line;
+  }
+
+  /// Variables: `DEF REAL a, b` declares them, a block of `a=1.5 b=-2` only (numbers) sets them, and
+  /// `X=a` elsewhere is read as X1.5 (an unset or undeclared name is left as written: no word). False
+  /// for a DEF or assignment block.
+  bool variables(std::string& line) {
+    std::istringstream in(line);
+    std::vector<std::string> tokens;
+    for (std::string t; in >> t;) tokens.push_back(t);
+    std::size_t first = !tokens.empty() && tokens[0].size() > 1 && tokens[0][0] == 'N' &&
+                                std::all_of(tokens[0].begin() + 1, tokens[0].end(), ::isdigit)
+                            ? 1
+                            : 0;
+    if (first < tokens.size() && tokens[first] == "DEF") {
+      std::string names;
+      for (std::size_t k = first + 2; k < tokens.size(); ++k) names += tokens[k];
+      std::istringstream list(names);
+      for (std::string n; std::getline(list, n, ',');) declared_.insert(n);
+      return false;
+    }
+    bool assignments = first < tokens.size();
+    for (std::size_t k = first; k < tokens.size() && assignments; ++k) {
+      const std::size_t eq = tokens[k].find('=');
+      char* end = nullptr;
+      assignments = eq != std::string::npos && declared_.count(tokens[k].substr(0, eq)) &&
+                    (std::strtod(tokens[k].c_str() + eq + 1, &end), *end == '\0');
+    }
+    if (assignments) {
+      for (std::size_t k = first; k < tokens.size(); ++k)
+        values_[tokens[k].substr(0, tokens[k].find('='))] =
+            std::strtod(tokens[k].c_str() + tokens[k].find('=') + 1, nullptr);
+      return false;
+    }
+    for (const auto& [name, value] : values_)
+      for (std::size_t at = line.find("=" + name); at != std::string::npos; at = line.find("=" + name, at + 1)) {
+        const std::size_t after = at + 1 + name.size();
+        if (after < line.size() && (std::isalnum(static_cast<unsigned char>(line[after])) || line[after] == '_'))
+          continue;
+        std::ostringstream v;
+        v.precision(17);
+        v << value;
+        line.replace(at, after - at, v.str());
+      }
+    return true;
   }
 
   std::map<char, double> rotary() const {
@@ -205,7 +261,10 @@ class SinumerikMini {
         axes[c] = a.fixed_point[static_cast<std::size_t>(fixed_point - 1)];
       } else {
         const std::optional<double> zero = a.reference ? a.reference : c == 'Z' ? a.limit_max : std::optional<double>();
-        if (!zero && !a.rotary) throw std::runtime_error("line " + std::to_string(line_no) + ": no reference of " + c);
+        if (!zero && !a.rotary) {  // where the axis goes is the machine's: not known until programmed again
+          placed_.erase(c);
+          continue;
+        }
         axes[c] = zero.value_or(0.0) + *v;
       }
       placed_.insert(c);
@@ -231,11 +290,17 @@ class SinumerikMini {
       for (std::string s; std::getline(args, s, ',');)
         a.push_back(s.empty() || s[0] == '"' ? 0.0 : std::strtod(s.c_str(), nullptr));
     }
-    swivel_ = a.size() >= 14;
-    if (swivel_)
-      plane_ = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
-               Rt{sin_axis_by_axis(static_cast<int>(a[3]), a[7], a[8], a[9]), V3::Zero()} *
-               Rt{M3::Identity(), V3(a[10], a[11], a[12])};
+    const V3 tip_before_W = pose_at(xyz()).tip_W;
+    std::optional<Rt> new_plane;
+    if (a.size() >= 14)
+      new_plane = Rt{M3::Identity(), V3(a[4], a[5], a[6])} *
+                  Rt{sin_axis_by_axis(static_cast<int>(a[3]), a[7], a[8], a[9]), V3::Zero()} *
+                  Rt{M3::Identity(), V3(a[10], a[11], a[12])};
+    const int fr = a.empty() ? 0 : static_cast<int>(a[0]), dir = a.size() >= 14 ? static_cast<int>(a[13]) : 0;
+    // the angles, the _FR retraction and the words where the tool stands in the new frame
+    sin_cycle800(m_, job_, new_plane, fr, dir, tip_before_W, shift_, traori_, words_);
+    swivel_ = new_plane.has_value();
+    if (swivel_) plane_ = *new_plane;
   }
 
   void run_cycle(int line_no, const std::string& call) {
@@ -305,6 +370,8 @@ class SinumerikMini {
   ExecJob job_;
   std::map<char, double> words_, last_rotary_;
   std::set<char> placed_;
+  std::set<std::string> declared_;        // DEF'd variables
+  std::map<std::string, double> values_;  // their values where a block set them to a number
   bool traori_ = false, swivel_ = false;
   Rt plane_;  // CYCLE800's frame
   V3 shift_ = V3::Zero();

@@ -40,6 +40,9 @@ struct Axis {
   /// The control's fixed points (Sinumerik G75 FP=1, 2, ...: machine data MD30600), commands in M
   /// (mm or rad), first = FP=1; empty where the machine file does not give them.
   std::vector<double> fixed_points;
+  /// Linear axes: where a Sinumerik CYCLE800 retraction (_FR) puts the axis before the swivel (its
+  /// command in M, mm), the control's swivel data record ($TC_CARR38..40); none where not given.
+  std::optional<double> swivel_retract;
 
   bool is_rotary() const { return kind == AxisKind::rotary; }
   bool continuous() const { return is_rotary() && !limits; }

@@ -4,7 +4,8 @@
 // (sinumerik_translator.hpp). Parameters as in the SINUMERIK 840D sl "Programming Manual
 // Measuring/Standard cycles":
 //   CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I, _DMODE)
-//     _FR retract before swivelling (0 none; 1 machine Z: here to Z's reference point, G53 Z0),
+//     _FR retract before swivelling (0 none; 1 machine Z: to the machine file's [axes.Z] swivel_retract, else
+//     to Z's reference point, G53 Z0, and Z is then not known: sinumerik_machine_position.cpp),
 //     _TC the tool carrier (the machine file gives the kinematics), _ST units digit 0 (a new plane;
 //     1 additive: refused), _MODE axis by axis (57: X, then Y', then Z'': the frame
 //     Rx(_A) Ry(_B) Rz(_C); 27: Rz(_A) Ry(_B) Rx(_C); Translator::axis_by_axis), _X0.._Z0 the shift before the
@@ -27,12 +28,7 @@ namespace ncpost::sinumerik {
 void Translator::cycle800_reset(const ProgramLine& l) {
   swivel_ = Frame{};
   if (!swivel_tip_) return;
-  if (base_known_[0] && base_known_[1] && base_known_[2]) {
-    RotaryAngles rad = RotaryAngles::Zero(machine_.rotary_count());
-    for (int k = 0; k < machine_.rotary_count(); ++k)
-      rad[k] = rotary_deg_[static_cast<std::size_t>(machine_.rotary(k).letter - 'A')] * M_PI / 180.0;
-    base_ = linear_for(machine_, rad, base_, setup_);
-  }
+  if (base_known_[0] && base_known_[1] && base_known_[2]) base_ = linear_for(machine_, rotary_now(), base_, setup_);
   swivel_tip_ = false;
   emit(l, "TRAFOOF");
 }
@@ -76,15 +72,7 @@ void Translator::cycle800(const ProgramLine& l, const Item& item) {
   r.rotation = tilted ? axis_by_axis(l, item, mode, angles) : Eigen::Matrix3d::Identity();
   if (tilted && dir == 0.0)
     fail(l, item.column, "CYCLE800 _DIR=0 (the plane without positioning the rotary axes) is not read");
-  if (fr == 1.0) {
-    if (swivel_tip_) emit(l, "TRAFOOF"), swivel_tip_ = false;
-    notice_once(l, "CYCLE800 _FR",
-                "CYCLE800 _FR=1: the retract in Z goes to Z's reference point (G53 Z0: the machine "
-                "file's reference, else the top of Z's travel); the tool carrier's retract position is "
-                "the control's data");
-    emit(l, "G0 G53 Z0");
-    base_known_ = {false, false, false};
-  }
+  if (fr == 1.0) retract_for_swivel(l);
   position_swivel(l, item, r.rotation * Eigen::Vector3d::UnitZ(), static_cast<int>(dir), tilted);
   swivel_ = shift(x0).then(r).then(shift(x1));
 }
@@ -102,13 +90,9 @@ void Translator::position_swivel(const ProgramLine& l, const Item& item, const E
   if (!a)
     fail(l, item.column,
          fmt::format("CYCLE800: the plane's normal is beyond the reach or the limits of machine {}", machine_.name));
-  const bool known = base_known_[0] && base_known_[1] && base_known_[2];
-  RotaryAngles before = RotaryAngles::Zero(machine_.rotary_count());
-  for (int k = 0; k < machine_.rotary_count(); ++k)
-    before[k] = rotary_deg_[static_cast<std::size_t>(machine_.rotary(k).letter - 'A')] * M_PI / 180.0;
-  const Eigen::Vector3d linear = !known        ? Eigen::Vector3d::Zero()
-                                 : swivel_tip_ ? linear_for(machine_, before, base_, setup_)
-                                               : base_;
+  // the linear axes stand still while the rotary axes turn (sinumerik_machine_position.cpp)
+  const std::array<std::optional<double>, 3> machine = machine_now();
+  const bool known = machine[0] && machine[1] && machine[2];
   if (swivel_tip_) emit(l, "TRAFOOF");
   std::string words = "G0";
   for (int k = 0; k < machine_.rotary_count(); ++k) {
@@ -123,9 +107,10 @@ void Translator::position_swivel(const ProgramLine& l, const Item& item, const E
   swivel_tip_ = true;
   if (known) {
     AxisPosition q = AxisPosition::zero(machine_.rotary_count());
-    q.linear_mm = linear;
+    q.linear_mm = Eigen::Vector3d(*machine[0], *machine[1], *machine[2]);
     q.rotary_rad = *a;
     base_ = forward(machine_, q, setup_).tip_mm;
+    base_known_ = {true, true, true};
   }
 }
 
@@ -175,6 +160,7 @@ Drilling Translator::drilling(const ProgramLine& l, const Item& item) {
 /// the G-code reader gives as a cl::Cycle; otherwise those motions.
 void Translator::drill(const ProgramLine& l, const Drilling& d) {
   if (plane_ != 17) fail(l, 1, fmt::format("{} under G{}: only G17 (drilling along Z) is read", d.name, plane_));
+  machine_mm_ = {};  // the hole moves the linear axes
   if (d.tap != Drilling::Tap::none) return tap(l, d);
   if (d.name != "CYCLE81" && d.name != "CYCLE82") return expand_hole(l, d);
   const Eigen::Vector3d at = current_prog(l, 1);

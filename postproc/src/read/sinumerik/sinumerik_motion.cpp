@@ -66,6 +66,7 @@ std::string Translator::axis_words(const ProgramLine& l, const Eigen::Vector3d& 
   const Eigen::Vector3d w = f.apply(target);
   std::string s;
   const bool per_axis = f.shift_only() && !all;
+  machine_mm_ = {};  // written X Y Z: the linear axes move
   for (std::size_t i = 0; i < 3; ++i) {
     if (per_axis && !programmed[i]) continue;
     if (!per_axis && !programmed[i] && !base_known_[i])
@@ -163,6 +164,7 @@ std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
       s += fmt::format(" {}{}", "ABC"[i], num(*w.abc[i]));
     }
   }
+  note_machine_words(w);
   if (w.motion) motion_ = *w.motion;
   return s;
 }
@@ -222,10 +224,11 @@ void Translator::motion(const ProgramLine& l, Words& w, std::string& iso) {
   if (w.motion) motion_ = *w.motion;
   if (motion_ < 0)
     fail(l, w.column, "a motion before G0, G1, G2 or G3 is programmed (the control's initial setting is not known)");
-  if (length_off_)
+  if (length_off_ && !rotary_only_under_d0(w))
     fail(l, w.column,
          "a motion with D0 (no tool offset) outside SUPA: the words name the spindle's gauge point, the "
          "post places the tool tip; program D1 (the tool's edge) before it, or move with SUPA");
+  if (w.any_linear() || traori_ || swivel_tip_) machine_mm_ = {};  // the linear axes move (under TRAORI with the tip)
   std::string words = w.any_orientation() ? orientation_words(l, w) : rotary_words(l, w);
   Eigen::Vector3d target;
   std::array<bool, 3> programmed{};

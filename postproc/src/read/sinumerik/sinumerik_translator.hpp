@@ -16,7 +16,10 @@
 //     between two) and reads what follows as tool-tip positions in the swivelled plane;
 //   - CYCLE81/CYCLE82 (also under MCALL) become G81/G82 or their motions; CYCLE83/85/86 become
 //     their motions (sinumerik_holes.cpp); CYCLE84/840 the tap G84/G74 (sinumerik_taps.cpp);
-//   - SUPA and G53 blocks become G53 (machine coordinates); D0 becomes G49 (no tool length);
+//   - SUPA and G53 blocks become G53 (machine coordinates); D0 becomes G49 (no tool length); where
+//     the machine file gives the reference data, the machine position they leave is kept, so that
+//     CYCLE800 knows where the tool tip stands in the swivelled plane (the machine position seen in
+//     the new frame, as on the control);
 //   - G75 FP=n (fixed point approach) becomes G53 G0 to the machine file's `fixed_point`s;
 //   - T="name" becomes T0 with the name beside the block (IsoBlock::tool_name), which the reader
 //     puts into the tool change (cl::ToolChange::name).
@@ -142,6 +145,14 @@ class Translator {
   Eigen::Vector3d current_prog(const ProgramLine& l, int column) const;
   std::optional<RotaryAngles> nearest_solution(const Eigen::Vector3d& axis_W, int direction) const;
 
+  // the machine position (sinumerik_machine_position.cpp)
+  std::optional<double> machine_reference_mm(int axis) const;
+  void note_machine_words(const Words& w);
+  std::array<std::optional<double>, 3> machine_now() const;
+  RotaryAngles rotary_now() const;
+  void retract_for_swivel(const ProgramLine& l);
+  bool rotary_only_under_d0(const Words& w) const;
+
   // cycles (sinumerik_cycles.cpp)
   void cycle800(const ProgramLine& l, const Item& item);
   void cycle800_reset(const ProgramLine& l);
@@ -200,6 +211,9 @@ class Translator {
   Frame swivel_;
   Eigen::Vector3d base_ = Eigen::Vector3d::Zero();  ///< the last position in W (program unit)
   std::array<bool, 3> base_known_{};
+  /// X Y Z as machine commands in M (mm) where a SUPA/G53 block or CYCLE800's retraction put them
+  /// (the machine file's reference data), until a motion moves the linear axes otherwise.
+  std::array<std::optional<double>, 3> machine_mm_{};
   std::array<double, 3> rotary_deg_{};  ///< A B C as last programmed
   std::array<bool, 3> rotary_known_{};
   std::optional<Drilling> mcall_;
