@@ -200,6 +200,45 @@ TEST_CASE("klartext CYCL DEF 206: a tap in a floating holder at Q206, its hand t
              Catch::Contains("cycles.h:11:") && Catch::Contains("CYCL DEF 206 called with the spindle stopped"));
 }
 
+TEST_CASE("klartext CYCL DEF 209 with chip removal (Q256=0): a tap Q257 deeper each time, out to Q200 in between") {
+  const std::string cycle =
+      "3 CYCL DEF 209 TAPPING W/ CHIP BRKG ~\n"
+      "  Q200=+2 ;SET-UP CLEARANCE ~\n"
+      "  Q201=-13 ;DEPTH OF THREAD ~\n"
+      "  Q239=+1.5 ;THREAD PITCH ~\n"
+      "  Q203=+0 ;SURFACE COORDINATE ~\n"
+      "  Q204=+2 ;2ND SET-UP CLEARANCE ~\n"
+      "  Q257=+4 ;DEPTH FOR CHIP BRKNG ~\n"
+      "  Q256=+0 ;DIST FOR CHIP BRKNG ~\n"
+      "  Q336=+0 ;ANGLE OF SPINDLE ~\n"
+      "  Q403=+1 ;RPM FACTOR\n"
+      "4 L X+10 Y-15 R0 FMAX M99\n"
+      "5 L X+30 R0 FMAX M99\n"
+      "6 L Z+50 FMAX M5\n"
+      "7 END PGM CYCLES MM\n";
+  const std::string text = kHead + cycle;
+  const std::string nc = post_cycles(text);
+  // four L blocks; per hole: FMAX to Q200, taps to 4, 8, 12 and 13 mm each out to Q200: 1 + 2 x 4 ends
+  CHECK(check_cycles(text, nc) == 4 + 2 * (1 + 2 * 4));
+  CHECK(nc.find("G84") != std::string::npos);     // each infeed a rigid tap (M3: right-hand)
+  CHECK(nc.find("F3000.") != std::string::npos);  // 1.5 mm x 2000 rpm
+  // no chip breaking (Q257=0): one tap to the depth, as 207
+  std::string whole = text;
+  whole.replace(whole.find("Q257=+4"), 7, "Q257=+0");
+  CHECK(check_cycles(whole, post_cycles(whole)) == 4 + 2 * 3);
+  // the partial retraction inside the hole (Q256 > 0) and a faster retraction (Q403) are refused by name
+  std::string breaking = text;
+  breaking.replace(breaking.find("Q256=+0"), 7, "Q256=+0.5");
+  CHECK_THAT(refusal(breaking), Catch::Contains("cycles.h:4:") && Catch::Contains("CYCL DEF 209: Q256=0.5") &&
+                                    Catch::Contains("0.75 mm") && Catch::Contains("Q256=0 (out to the set-up"));
+  std::string faster = text;
+  faster.replace(faster.find("Q403=+1"), 7, "Q403=+2");
+  CHECK_THAT(refusal(faster), Catch::Contains("cycles.h:4:") && Catch::Contains("Q403=2"));
+  std::string m4 = text;
+  m4.replace(m4.find("FMAX M3"), 7, "FMAX M4");
+  CHECK_THAT(refusal(m4), Catch::Contains("CYCL DEF 209 with a right-hand thread") && Catch::Contains("program M3"));
+}
+
 TEST_CASE(
     "klartext CYCL DEF 208: the helix on the bore's circle less the tool, with the diameter from the tool table") {
   const std::string text = kHead +
