@@ -79,7 +79,8 @@ void check_between(const test::Executor& out, std::size_t from, std::size_t to,
       x.worst_between_mm = std::max(x.worst_between_mm, best);
       if (best > tolerance_mm) {
         std::ostringstream f;
-        f << "output line " << b.line << ": " << b.text << " at " << i << "/4 is " << best << " mm off the input's path";
+        f << "output line " << b.line << ": " << b.text << " at " << i << "/4 is " << best
+          << " mm off the input's path";
         x.failure = f.str();
         return;
       }
@@ -154,8 +155,9 @@ Executed post_and_execute(const std::string& name) {
   const double posted_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const Executed x = execute_both(input, nc);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%-40s %d ends, %d samples, worst %.6f mm at ends, %.6f mm between, %.6f deg; %.2f s (posted in %.2f s)\n",
-              name.c_str(), x.ends, x.samples, x.worst_end_mm, x.worst_between_mm, x.worst_angle_deg, s, posted_s);
+  std::printf(
+      "%-40s %d ends, %d samples, worst %.6f mm at ends, %.6f mm between, %.6f deg; %.2f s (posted in %.2f s)\n",
+      name.c_str(), x.ends, x.samples, x.worst_end_mm, x.worst_between_mm, x.worst_angle_deg, s, posted_s);
   return x;
 }
 

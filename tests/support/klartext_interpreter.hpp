@@ -27,7 +27,7 @@
 //     ROT (PROROT) about the plane's normal); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
 //     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
-//   - CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with their Q parameters on the `~` lines (set as Q
+//   - CYCL DEF 200 / 201 / 203 / 206 / 207 / 208 / 209 / 240 / 241 with their Q parameters on the `~` lines (set as Q
 //     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (M89: on it and on every
 //     later L block until M99) (klartext_cycles.hpp:
 //     an end after each of the cycle's moves); M3 / M4 for the direction of 208.
