@@ -99,6 +99,13 @@ bool nc_reaches(const std::string& nc, const Eigen::Vector3d& p) {
   return false;
 }
 
+/// The Q lines rigid tapping cycles (207, 209) share, the depth 13 mm from the surface at 0, without the last line's
+/// end.
+std::string tap_parameters(const std::string& clearance, const std::string& pitch, const std::string& second) {
+  return "  Q200=" + clearance + " ;SET-UP CLEARANCE ~\n  Q201=-13 ;DEPTH OF THREAD ~\n  Q239=" + pitch +
+         " ;THREAD PITCH ~\n  Q203=+0 ;SURFACE COORDINATE ~\n  Q204=" + second + " ;2ND SET-UP CLEARANCE";
+}
+
 const std::string kHead =
     "0 BEGIN PGM CYCLES MM\n"
     "1 TOOL CALL \"DRILL8\" Z S2000 DL+0 DR+0\n"
@@ -157,16 +164,11 @@ TEST_CASE("klartext CYCL DEF 203: shrinking pecks, chip breaks and retractions w
 }
 
 TEST_CASE("klartext CYCL DEF 207: a rigid tap at pitch x speed, refused against the spindle's direction") {
-  const std::string cycle =
-      "3 CYCL DEF 207 RIGID TAPPING NEW ~\n"
-      "  Q200=+3 ;SET-UP CLEARANCE ~\n"
-      "  Q201=-13 ;DEPTH OF THREAD ~\n"
-      "  Q239=+1.25 ;THREAD PITCH ~\n"
-      "  Q203=+0 ;SURFACE COORDINATE ~\n"
-      "  Q204=+28 ;2ND SET-UP CLEARANCE\n"
-      "4 L X+10 Y-15 R0 FMAX M99\n"
-      "5 L Z+50 FMAX M5\n"
-      "6 END PGM CYCLES MM\n";
+  const std::string cycle = "3 CYCL DEF 207 RIGID TAPPING NEW ~\n" + tap_parameters("+3", "+1.25", "+28") +
+                            "\n"
+                            "4 L X+10 Y-15 R0 FMAX M99\n"
+                            "5 L Z+50 FMAX M5\n"
+                            "6 END PGM CYCLES MM\n";
   const std::string text = kHead + cycle;
   const std::string nc = post_cycles(text);
   check_cycles(text, nc);
@@ -201,22 +203,13 @@ TEST_CASE("klartext CYCL DEF 206: a tap in a floating holder at Q206, its hand t
 }
 
 TEST_CASE("klartext CYCL DEF 209 with chip removal (Q256=0): a tap Q257 deeper each time, out to Q200 in between") {
-  const std::string cycle =
-      "3 CYCL DEF 209 TAPPING W/ CHIP BRKG ~\n"
-      "  Q200=+2 ;SET-UP CLEARANCE ~\n"
-      "  Q201=-13 ;DEPTH OF THREAD ~\n"
-      "  Q239=+1.5 ;THREAD PITCH ~\n"
-      "  Q203=+0 ;SURFACE COORDINATE ~\n"
-      "  Q204=+2 ;2ND SET-UP CLEARANCE ~\n"
-      "  Q257=+4 ;DEPTH FOR CHIP BRKNG ~\n"
-      "  Q256=+0 ;DIST FOR CHIP BRKNG ~\n"
-      "  Q336=+0 ;ANGLE OF SPINDLE ~\n"
-      "  Q403=+1 ;RPM FACTOR\n"
-      "4 L X+10 Y-15 R0 FMAX M99\n"
-      "5 L X+30 R0 FMAX M99\n"
-      "6 L Z+50 FMAX M5\n"
-      "7 END PGM CYCLES MM\n";
-  const std::string text = kHead + cycle;
+  // two holes (lines 4 and 5), the chip breaking's parameters after those 207 has
+  const std::string chips =
+      " ~\n  Q257=+4 ;DEPTH FOR CHIP BRKNG ~\n  Q256=+0 ;DIST FOR CHIP BRKNG ~\n"
+      "  Q336=+0 ;ANGLE OF SPINDLE ~\n  Q403=+1 ;RPM FACTOR\n";
+  const std::string holes = "4 L X+10 Y-15 R0 FMAX M99\n5 L X+30 R0 FMAX M99\n6 L Z+50 FMAX M5\n7 END PGM CYCLES MM\n";
+  const std::string text =
+      kHead + "3 CYCL DEF 209 TAPPING W/ CHIP BRKG ~\n" + tap_parameters("+2", "+1.5", "+2") + chips + holes;
   const std::string nc = post_cycles(text);
   // four L blocks; per hole: FMAX to Q200, taps to 4, 8, 12 and 13 mm each out to Q200: 1 + 2 x 4 ends
   CHECK(check_cycles(text, nc) == 4 + 2 * (1 + 2 * 4));
