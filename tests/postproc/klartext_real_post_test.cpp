@@ -179,6 +179,24 @@ TEST_CASE("real Klartext NC-PB 2.5D_MILLING (CR, C about CC, CP helices, M91): r
   CHECK(x.samples > 0);
 }
 
+TEST_CASE("real Klartext NC-PB DRILLING to its boring bar (CYCL DEF 200, 203, 206, 209, 201): re-posted and executed") {
+  // two edits, each to the part the reader takes: the first CYCL DEF 209 breaks chips inside the hole (Q256=0,733,
+  // refused: klartext_real_test), here set to 0 as the file's other two; the program ends before the boring bar's
+  // CYCL DEF 202 (not read)
+  std::string text = test::read_text_file(test::data("real/heidenhain_ncpb_DRILLING.h"));
+  const std::size_t q256 = text.find("Q256=0,733"), bar = text.find("189 * - BOHRSTANGE");
+  REQUIRE((q256 != std::string::npos && bar != std::string::npos && q256 < bar));
+  text = text.substr(0, bar) + "208 END PGM DRILLING MM\r\n";
+  text.replace(q256, 10, "Q256=0");
+  const Executed x = execute_both(text, post_real("DRILLING.h", text));
+  std::printf("DRILLING.h to its boring bar: %d ends, %d samples, worst %.6f mm at ends, %.6f mm between\n", x.ends,
+              x.samples, x.worst_end_mm, x.worst_between_mm);
+  INFO(x.failure);
+  CHECK(x.failure.empty());
+  // 10 holes a row, the rows of 200 (1 plunge), 203 three times, 206, 209 three times (24 infeeds each), 201
+  CHECK(x.ends > 10 * (3 + 3 * 3 + 3 + 3 * 49 + 3));
+}
+
 TEST_CASE("real Klartext 11setup (a datum shift and nothing else): the output moves nothing") {
   const std::string input = test::read_text_file(test::data("real/heidenhain_aptpp_dem_target2_11setup.h"));
   const std::string nc = post_real("heidenhain_aptpp_dem_target2_11setup.h", input);

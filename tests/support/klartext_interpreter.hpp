@@ -15,7 +15,7 @@
 //     additional machine datum), as ExecMachine reads them;
 //   - CYCL DEF 7.1 X / 7.2 Y / 7.3 Z (the datum shift, added to later absolute X Y Z and CC words);
 //   - C X Y DR±, CR X Y R± DR±, CP IPA± IZ± DR± (klartext_arc_geometry.hpp; the path every 1/4°);
-//   - Qn = a [op b] (op + - * /, operands numbers or Q), FN 0: Qn = v;
+//   - Qn = a [op b] (op + - * /, operands numbers or Q), FN 0: Qn = v; Qn = MAX (a cycle's feed as FMAX);
 //   - LBL n, LBL 0, CALL LBL n (subprogram: runs to LBL 0, returns), CALL LBL n REP m (the lines
 //     from LBL n to the call run m more times);
 //   - PLANE SPATIAL SPA SPB SPC STAY [SEQ+|SEQ-]: X Y Z are then the tip in the plane,
@@ -40,6 +40,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <regex>
@@ -155,6 +156,11 @@ class KlartextInterpreter {
     if (s.empty() || s[0] == '*' || s.rfind("BEGIN PGM", 0) == 0 || s.rfind("TOOL CALL", 0) == 0 ||
         s.rfind("TOOL DEF", 0) == 0 || s.rfind("BLK FORM", 0) == 0 || s.rfind("LBL ", 0) == 0)
       return;
+    static const std::regex as_rapid(R"(^(Q\d+) ?= ?F?MAX$)");  // Q208=MAX: the retraction at FMAX (its path the same)
+    if (s[0] == 'Q' && std::regex_match(s, m, as_rapid)) {
+      q_[m[1]] = std::numeric_limits<double>::infinity();
+      return;
+    }
     if ((s[0] == 'Q' || s[0] == 'F') && std::regex_match(s, m, assign)) {
       double v = value_of(m[2]);
       if (m[3].matched) {
