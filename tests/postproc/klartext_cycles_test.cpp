@@ -99,6 +99,13 @@ bool nc_reaches(const std::string& nc, const Eigen::Vector3d& p) {
   return false;
 }
 
+/// The Q lines rigid tapping cycles (207, 209) share, the depth 13 mm from the surface at 0, without the last line's
+/// end.
+std::string tap_parameters(const std::string& clearance, const std::string& pitch, const std::string& second) {
+  return "  Q200=" + clearance + " ;SET-UP CLEARANCE ~\n  Q201=-13 ;DEPTH OF THREAD ~\n  Q239=" + pitch +
+         " ;THREAD PITCH ~\n  Q203=+0 ;SURFACE COORDINATE ~\n  Q204=" + second + " ;2ND SET-UP CLEARANCE";
+}
+
 const std::string kHead =
     "0 BEGIN PGM CYCLES MM\n"
     "1 TOOL CALL \"DRILL8\" Z S2000 DL+0 DR+0\n"
@@ -157,16 +164,11 @@ TEST_CASE("klartext CYCL DEF 203: shrinking pecks, chip breaks and retractions w
 }
 
 TEST_CASE("klartext CYCL DEF 207: a rigid tap at pitch x speed, refused against the spindle's direction") {
-  const std::string cycle =
-      "3 CYCL DEF 207 RIGID TAPPING NEW ~\n"
-      "  Q200=+3 ;SET-UP CLEARANCE ~\n"
-      "  Q201=-13 ;DEPTH OF THREAD ~\n"
-      "  Q239=+1.25 ;THREAD PITCH ~\n"
-      "  Q203=+0 ;SURFACE COORDINATE ~\n"
-      "  Q204=+28 ;2ND SET-UP CLEARANCE\n"
-      "4 L X+10 Y-15 R0 FMAX M99\n"
-      "5 L Z+50 FMAX M5\n"
-      "6 END PGM CYCLES MM\n";
+  const std::string cycle = "3 CYCL DEF 207 RIGID TAPPING NEW ~\n" + tap_parameters("+3", "+1.25", "+28") +
+                            "\n"
+                            "4 L X+10 Y-15 R0 FMAX M99\n"
+                            "5 L Z+50 FMAX M5\n"
+                            "6 END PGM CYCLES MM\n";
   const std::string text = kHead + cycle;
   const std::string nc = post_cycles(text);
   check_cycles(text, nc);
@@ -198,6 +200,36 @@ TEST_CASE("klartext CYCL DEF 206: a tap in a floating holder at Q206, its hand t
   stopped.replace(stopped.find("FMAX M3"), 7, "FMAX M5");
   CHECK_THAT(refusal(stopped),
              Catch::Contains("cycles.h:11:") && Catch::Contains("CYCL DEF 206 called with the spindle stopped"));
+}
+
+TEST_CASE("klartext CYCL DEF 209 with chip removal (Q256=0): a tap Q257 deeper each time, out to Q200 in between") {
+  // two holes (lines 4 and 5), the chip breaking's parameters after those 207 has
+  const std::string chips =
+      " ~\n  Q257=+4 ;DEPTH FOR CHIP BRKNG ~\n  Q256=+0 ;DIST FOR CHIP BRKNG ~\n"
+      "  Q336=+0 ;ANGLE OF SPINDLE ~\n  Q403=+1 ;RPM FACTOR\n";
+  const std::string holes = "4 L X+10 Y-15 R0 FMAX M99\n5 L X+30 R0 FMAX M99\n6 L Z+50 FMAX M5\n7 END PGM CYCLES MM\n";
+  const std::string text =
+      kHead + "3 CYCL DEF 209 TAPPING W/ CHIP BRKG ~\n" + tap_parameters("+2", "+1.5", "+2") + chips + holes;
+  const std::string nc = post_cycles(text);
+  // four L blocks; per hole: FMAX to Q200, taps to 4, 8, 12 and 13 mm each out to Q200: 1 + 2 x 4 ends
+  CHECK(check_cycles(text, nc) == 4 + 2 * (1 + 2 * 4));
+  CHECK(nc.find("G84") != std::string::npos);     // each infeed a rigid tap (M3: right-hand)
+  CHECK(nc.find("F3000.") != std::string::npos);  // 1.5 mm x 2000 rpm
+  // no chip breaking (Q257=0): one tap to the depth, as 207
+  std::string whole = text;
+  whole.replace(whole.find("Q257=+4"), 7, "Q257=+0");
+  CHECK(check_cycles(whole, post_cycles(whole)) == 4 + 2 * 3);
+  // the partial retraction inside the hole (Q256 > 0) and a faster retraction (Q403) are refused by name
+  std::string breaking = text;
+  breaking.replace(breaking.find("Q256=+0"), 7, "Q256=+0.5");
+  CHECK_THAT(refusal(breaking), Catch::Contains("cycles.h:4:") && Catch::Contains("CYCL DEF 209: Q256=0.5") &&
+                                    Catch::Contains("0.75 mm") && Catch::Contains("Q256=0 (out to the set-up"));
+  std::string faster = text;
+  faster.replace(faster.find("Q403=+1"), 7, "Q403=+2");
+  CHECK_THAT(refusal(faster), Catch::Contains("cycles.h:4:") && Catch::Contains("Q403=2"));
+  std::string m4 = text;
+  m4.replace(m4.find("FMAX M3"), 7, "FMAX M4");
+  CHECK_THAT(refusal(m4), Catch::Contains("CYCL DEF 209 with a right-hand thread") && Catch::Contains("program M3"));
 }
 
 TEST_CASE(

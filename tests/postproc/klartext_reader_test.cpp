@@ -290,7 +290,7 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
           "(the TNC's additional machine datum, M92), which the machine file ac-trunnion "
           "does not give; add [axes.Z] reference2");
   refused("3 L X+10 FMAX M99\n",
-          "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 206, 207, 208, 240 or 241) before it");
+          "a cycle call without a hole cycle (CYCL DEF 200, 201, 203, 206, 207, 208, 209, 240 or 241) before it");
   refused("3 CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 203 without Q206");
   refused("3 CYCL DEF 201 REAMING ~\n  Q200=2 ~\n  Q201=-10\n", "CYCL DEF 201 without Q206");
   refused("3 CYCL DEF 205 UNIVERSAL PECKING ~\n  Q200=2 ~\n  Q201=-10\n",
@@ -308,7 +308,10 @@ TEST_CASE("klartext: what is not read is refused by name with file:line:column")
   refused("3 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS\n", "spatial angles");
   refused("3 APPR LCT X+0 Y+0 R5 RL F100\n", "approach");
   refused("3 C X+1 Y+1 DR+\n", "without a CC");
-  CHECK_THAT(error_of("0 BEGIN PGM T INCH\n1 L X+0\n"), Catch::Contains("t.h:1:3: an INCH program"));
+  CHECK_THAT(
+      error_of("0 BEGIN PGM T INCH\n1 L X+0\n"),
+      Catch::Contains("t.h:1:3: BEGIN PGM ... INCH: an inch program is not read") && Catch::Contains("0.1 inch/min"));
+  CHECK_THAT(error_of("0 BEGIN PGM T IN\n1 L X+0\n"), Catch::Contains("t.h:1:3: BEGIN PGM ... IN: an inch program"));
   CHECK_THAT(error_of(program("1 TOOL CALL 2 Z DR+0.1\n2 L X+0 Y+0 Z+5 FMAX\n3 L X+5 RL F100\n")),
              Catch::Contains("t.h:4:9: RL with a delta radius"));
   CHECK_THAT(error_of("0 BEGIN PGM T MM\n1 L X+0 Y+0 FMAX\n2 L Z-1 F100\n3 END PGM T MM\n"),

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The tool tip's path of the Heidenhain hole cycles 200, 201, 203, 206, 207, 208, 240 and 241 for the tests'
+// The tool tip's path of the Heidenhain hole cycles 200, 201, 203, 206, 207, 208, 209, 240 and 241 for the tests'
 // Klartext interpreter (klartext_interpreter.hpp), written from the cycle runs of the TNC 640 /
 // iTNC 530 cycle programming manual as the tests read them, independently of the product:
 //   200 DRILLING: FMAX to Q200 above the surface Q203, to Q201 at Q206, FMAX out (pecks of Q202
@@ -11,6 +11,10 @@
 //       out to Q200 at Q208; FMAX to Q204 when higher;
 //   207 RIGID TAPPING: FMAX to Q200; to Q201 at pitch x speed; back to Q200 at the same feed;
 //       FMAX to Q204 when higher; 206 TAPPING (floating holder) the same at the feed Q206;
+//   209 TAPPING WITH CHIP BREAKING with Q256 = 0 (chip removal): FMAX to Q200; to Q257 below the surface
+//       at pitch x speed, the spindle reversed and out to Q200 at the same feed (Q403 = 1), again to Q257
+//       deeper, ... until Q201; out to Q200; FMAX to Q204 when higher; Q257 = 0 or beyond the depth: as 207
+//       (Q256 other than 0, the partial retraction, throws: the tests do not follow it);
 //   208 BORE MILLING: FMAX to Q200 over the centre; a half circle at Q200 from the centre onto the
 //       circle of radius (Q335 - tool diameter) / 2 at angle 0; a helix of Q334 per turn down to
 //       Q201; one more turn there; to the centre; FMAX to Q200, to Q204 when higher; climb (Q351
@@ -55,9 +59,17 @@ inline std::vector<CycleMove> cycle_moves(int n, const std::map<std::string, dou
   const auto line = [&](double x, double y, double z, bool cut) { out.push_back({{x, y, z}, cut, false, {}, 0.0}); };
   const double setup = Q(200), depth = Q(201), second = Q(204);
   line(0, 0, setup, false);
-  if (n == 200 || n == 206 || n == 207 || n == 201 || n == 240) {
+  if (n == 209 && Q(257) > 0 && Q(257) < -depth) {
+    if (Q(256) != 0 || Qor(403, 1) != 1) throw std::runtime_error("the test interpreter: CYCL DEF 209 Q256 or Q403");
+    for (double reached = -Q(257); reached > depth + 1e-9; reached -= Q(257)) {
+      line(0, 0, reached, true);
+      line(0, 0, setup, true);
+    }
     line(0, 0, depth, true);
-    line(0, 0, setup, n == 206 || n == 207 || n == 201);
+    line(0, 0, setup, true);
+  } else if (n == 200 || n == 206 || n == 207 || n == 209 || n == 201 || n == 240) {
+    line(0, 0, depth, true);
+    line(0, 0, setup, n == 206 || n == 207 || n == 209 || n == 201);
   } else if (n == 203) {
     const bool breaking = Qor(213, 0) > 0;
     double reached = 0, plunge = Q(202);

@@ -6,10 +6,16 @@
 //   - CC X Y (the pole) and LP PR PA / IPR IPA (a line to polar coordinates about it);
 //   - RND R / CHF s between two L blocks in X Y (the rounding arc tangent to both, the chamfer s
 //     from the corner along each; the corner not reached);
-//   - L X Y Z A B C (+n, -n, +Qn, -Qn; IX IY IZ incremental), FMAX / F / R0 / M words (M128 / M129
-//     switch tool-tip programming on and off; others ignored, also in blocks of their own);
-//     TOOL CALL, BLK FORM and END PGM hold no position;
-//   - Qn = a [op b] (op + - * /, operands numbers or Q), FN 0: Qn = v;
+//   - L X Y Z A B C (n, +n, -n, +Qn, -Qn; IX IY IZ incremental), FMAX / F / R0 / M words (M128 [F..] /
+//     M129 switch tool-tip programming on and off, the F of M128 the limit of the control's compensating
+//     moves; others ignored, also in blocks of their own); TOOL CALL, TOOL DEF, BLK FORM and END PGM
+//     hold no position; a decimal comma between digits (X241,781) is the decimal point;
+//   - M91 / M92 in an L block (outside M128 and planes): its absolute X Y Z are machine axes counted
+//     from the machine file's `reference` (M91, the machine datum) or `reference2` (M92, the
+//     additional machine datum), as ExecMachine reads them;
+//   - CYCL DEF 7.1 X / 7.2 Y / 7.3 Z (the datum shift, added to later absolute X Y Z and CC words);
+//   - C X Y DR±, CR X Y R± DR±, CP IPA± IZ± DR± (klartext_arc_geometry.hpp; the path every 1/4°);
+//   - Qn = a [op b] (op + - * /, operands numbers or Q), FN 0: Qn = v; Qn = MAX (a cycle's feed as FMAX);
 //   - LBL n, LBL 0, CALL LBL n (subprogram: runs to LBL 0, returns), CALL LBL n REP m (the lines
 //     from LBL n to the call run m more times);
 //   - PLANE SPATIAL SPA SPB SPC STAY [SEQ+|SEQ-]: X Y Z are then the tip in the plane,
@@ -21,16 +27,20 @@
 //     ROT (PROROT) about the plane's normal); PLANE RESET STAY;
 //   - without M128 and PLANE, X Y Z are machine axes (the tip by nc_executor.hpp's forward
 //     kinematics); a block with rotary words alone keeps the machine's linear axes (the tip moves);
-//   - CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with their Q parameters on the `~` lines (set as Q
+//   - CYCL DEF 200 / 201 / 203 / 206 / 207 / 208 / 209 / 240 / 241 with their Q parameters on the `~` lines (set as Q
 //     parameters, as the TNC does), called by CYCL CALL or M99 on an L block (M89: on it and on every
 //     later L block until M99) (klartext_cycles.hpp:
 //     an end after each of the cycle's moves); M3 / M4 for the direction of 208.
-// `path()` is the tip's path: every block end and, along arcs, points every degree, each flagged
-// whether the move into it cuts (at a feed) or not (FMAX).
+// `path()` is the tip's path: every block end and, along arcs, points every degree (C, CR, CP: every
+// quarter degree), each flagged whether the move into it cuts (at a feed) or not (FMAX). Each end says
+// whether X, Y and Z had all been programmed by then (before that the machine stood where the
+// program does not say), and the rotary axes' angles there.
 // Anything else throws, so a test cannot pass by skipping a statement.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <regex>
@@ -38,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "klartext_arc_geometry.hpp"
 #include "klartext_cycles.hpp"
 #include "nc_executor.hpp"
 
@@ -48,6 +59,9 @@ struct KlartextEnd {
   int line = 0;
   V3 tip_W = V3::Zero();
   V3 axis_W = V3::UnitZ();
+  std::map<char, double> rotary_deg;  ///< the machine's rotary axes there (deg)
+  bool xyz_known = true;              ///< X, Y and Z have all been programmed by then
+  std::size_t path_index = 0;         ///< its point in path()
 };
 
 /// A point of the tip's path and whether the move into it cuts.
@@ -121,7 +135,12 @@ class KlartextInterpreter {
     std::size_t p = 0;
     while (p < l.size() && std::isdigit(static_cast<unsigned char>(l[p]))) ++p;
     while (p < l.size() && l[p] == ' ') ++p;
-    return l.substr(p);
+    l = l.substr(p);
+    for (std::size_t i = 1; i + 1 < l.size(); ++i)  // a decimal comma (X241,781): the decimal point
+      if (l[i] == ',' && std::isdigit(static_cast<unsigned char>(l[i - 1])) &&
+          std::isdigit(static_cast<unsigned char>(l[i + 1])))
+        l[i] = '.';
+    return l;
   }
 
   double value_of(const std::string& v) const {
@@ -135,9 +154,14 @@ class KlartextInterpreter {
     static const std::regex assign(R"(^(?:FN 0: ?)?(Q\d+) ?= ?([-+]?Q?[\d.]+)(?: ([-+*/]) ([-+]?Q?[\d.]+))?$)");
     std::smatch m;
     if (s.empty() || s[0] == '*' || s.rfind("BEGIN PGM", 0) == 0 || s.rfind("TOOL CALL", 0) == 0 ||
-        s.rfind("BLK FORM", 0) == 0 || s.rfind("LBL ", 0) == 0)
+        s.rfind("TOOL DEF", 0) == 0 || s.rfind("BLK FORM", 0) == 0 || s.rfind("LBL ", 0) == 0)
       return;
-    if (std::regex_match(s, m, assign)) {
+    static const std::regex as_rapid(R"(^(Q\d+) ?= ?F?MAX$)");  // Q208=MAX: the retraction at FMAX (its path the same)
+    if (s[0] == 'Q' && std::regex_match(s, m, as_rapid)) {
+      q_[m[1]] = std::numeric_limits<double>::infinity();
+      return;
+    }
+    if ((s[0] == 'Q' || s[0] == 'F') && std::regex_match(s, m, assign)) {
       double v = value_of(m[2]);
       if (m[3].matched) {
         const double b = value_of(m[4]);
@@ -148,15 +172,17 @@ class KlartextInterpreter {
       return;
     }
     if (s.rfind("PLANE ", 0) == 0) return plane(s);
+    if (s.rfind("CYCL DEF 7.", 0) == 0) return datum_shift(s);
     if (s.rfind("CYCL DEF ", 0) == 0) {
       cycle_ = std::stoi(s.substr(9));
       return;
     }
     if (s == "CYCL CALL") return call_cycle(line);
     spindle_words(s);
-    if (s == "M128" || s == "M129") return set_rtcp(s == "M128");
+    if (s == "M128" || s == "M129" || s.rfind("M128 F", 0) == 0) return set_rtcp(s[3] == '8');  // (F: its limit)
     static const std::regex m_alone(R"(^M\d+( M\d+)*$)");
-    if (std::regex_match(s, m_alone) || s.rfind("END PGM", 0) == 0) return;  // spindle, coolant, end: no position
+    if ((s[0] == 'M' && std::regex_match(s, m_alone)) || s.rfind("END PGM", 0) == 0)
+      return;                                              // spindle, coolant, end: no position
     if (s.size() > 1 && s[0] == 'Q' && s.back() == '~') {  // a cycle's parameter line without a comment
       std::string t = s.substr(0, s.size() - 1);
       while (!t.empty() && t.back() == ' ') t.pop_back();
@@ -170,6 +196,7 @@ class KlartextInterpreter {
       corner_ = Corner{s[0] == 'R', value_of(length), line};
       return;
     }
+    if (s.rfind("C ", 0) == 0 || s.rfind("CR ", 0) == 0 || s.rfind("CP ", 0) == 0) return arc(s, line);
     if (s.rfind("LP ", 0) == 0) return motion(polar_as_cartesian(s), line);
     if (s.rfind("L ", 0) == 0) return motion(s, line);
     throw std::runtime_error("the test interpreter does not read: " + s);
@@ -191,7 +218,7 @@ class KlartextInterpreter {
       M3 R;
       R << x, y, x.cross(y);
       const int seq = !p[10].matched ? 0 : p[10].str() == "+" ? 1 : -1;
-      for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+      set_plane_parameters(R, seq);
       keep_tip([&] { plane_ = R; });
       return;
     }
@@ -206,12 +233,12 @@ class KlartextInterpreter {
       M3 R;
       R << turn * x0, turn * normal.cross(x0), normal;
       const int seq = !pr[4].matched ? 0 : pr[4].str() == "+" ? 1 : -1;
-      for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+      set_plane_parameters(R, seq);
       keep_tip([&] { plane_ = R; });
       return;
     }
     static const std::regex spatial(
-        R"(^PLANE SPATIAL SPA([-+][\d.]+) SPB([-+][\d.]+) SPC([-+][\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
+        R"(^PLANE SPATIAL SPA([-+]?[\d.]+) SPB([-+]?[\d.]+) SPC([-+]?[\d.]+) STAY(?: SEQ([-+]))?(?: COORD ROT)?$)");
     std::smatch m;
     if (!std::regex_match(s, m, spatial)) throw std::runtime_error("the test interpreter does not read: " + s);
     const auto rad = [](const std::string& t) { return std::stod(t) * M_PI / 180.0; };
@@ -219,8 +246,69 @@ class KlartextInterpreter {
                   Eigen::AngleAxisd(rad(m[1]), V3::UnitX()))
                      .toRotationMatrix();
     const int seq = !m[4].matched ? 0 : m[4].str() == "+" ? 1 : -1;
-    for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+    set_plane_parameters(R, seq);
     keep_tip([&] { plane_ = R; });
+  }
+
+  /// Q120 .. Q122 from the test's own computation of the control's angles (none given: not set).
+  void set_plane_parameters(const M3& R, int seq) {
+    if (!angles_) return;
+    for (const auto& [letter, deg] : angles_(R, seq)) q_["Q" + std::to_string(120 + (letter - 'A'))] = deg;
+  }
+
+  /// CYCL DEF 7.0 (the header), 7.1 X / 7.2 Y / 7.3 Z: the datum shift added to absolute X Y Z words.
+  void datum_shift(const std::string& s) {
+    if (s.rfind("CYCL DEF 7.0", 0) == 0) return;
+    std::istringstream w(s.substr(13));
+    std::string word;
+    w >> word;
+    if (word.empty() || word[0] < 'X' || word[0] > 'Z' || word.size() < 2)
+      throw std::runtime_error("the test interpreter does not read: " + s);
+    shift_[word[0] - 'X'] = value_of(word.substr(1));
+  }
+
+  /// C, CR, CP in the program's X Y (klartext_arc_geometry.hpp): the path every quarter degree.
+  void arc(const std::string& s, int line) {
+    std::istringstream w(s.substr(s[1] == ' ' ? 2 : 3));
+    Eigen::Vector2d to(xyz_.x(), xyz_.y());
+    double r_signed = 0.0, ipa_deg = 0.0, dz = 0.0;
+    bool ccw = false, rapid = false;
+    for (std::string word; w >> word;) {
+      const bool inc = word.size() > 2 && word[0] == 'I' && (word[1] == 'X' || word[1] == 'Y');
+      if (word[0] == 'X' || word[0] == 'Y' || inc) {
+        const int i = (inc ? word[1] : word[0]) - 'X';
+        to[i] = inc ? xyz_[i] + value_of(word.substr(2)) : shift_[i] + value_of(word.substr(1));
+      } else if (word.rfind("DR", 0) == 0) {
+        ccw = word == "DR+";
+      } else if (word.rfind("IPA", 0) == 0) {
+        ipa_deg = value_of(word.substr(3));
+      } else if (word.rfind("IZ", 0) == 0) {
+        dz = value_of(word.substr(2));
+      } else if (word[0] == 'R' && s[1] == 'R' && word.size() > 1 && word[1] != 'L' && word[1] != 'R') {
+        r_signed = value_of(word.substr(1));
+      } else if (word == "FMAX") {
+        rapid = true;
+      } else if (word[0] != 'F' && word[0] != 'M' && word != "R0") {
+        throw std::runtime_error("the test interpreter does not read " + word + " in: " + s);
+      }
+    }
+    const Eigen::Vector2d from(xyz_.x(), xyz_.y());
+    const KlartextArc a = s[1] == ' '   ? arc_about_pole(from, pole_.value(), to, ccw)
+                          : s[1] == 'R' ? arc_by_radius(from, to, r_signed, ccw)
+                                        : arc_polar_step(from, pole_.value(), ipa_deg, dz);
+    const int n = std::max(2, static_cast<int>(std::ceil(std::abs(a.sweep_rad) * 4 * 180 / M_PI)));
+    const double z0 = xyz_.z();
+    for (int i = 1; i < n; ++i) path_.push_back({tip_at(a.at(static_cast<double>(i) / n, z0)), !rapid});
+    xyz_ = a.at(1.0, z0);
+    if (s[1] != 'P') xyz_.head<2>() = to;  // (C, CR: the programmed end)
+    path_.push_back({tip_W(), !rapid});
+    end_here(line);
+  }
+
+  /// The end of a block where the tool stands now.
+  void end_here(int line) {
+    ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W, rot_,
+                     programmed_[0] && programmed_[1] && programmed_[2], path_.size() - 1});
   }
 
   /// CC X Y (IX IY from the current position; a coordinate left out: the current one).
@@ -230,7 +318,7 @@ class KlartextInterpreter {
     for (std::string word; w >> word;) {
       const bool inc = word[0] == 'I';
       const int i = (inc ? word[1] : word[0]) - 'X';
-      (*pole_)[i] = (inc ? xyz_[i] : 0.0) + value_of(word.substr(inc ? 2 : 1));
+      (*pole_)[i] = (inc ? xyz_[i] : shift_[i]) + value_of(word.substr(inc ? 2 : 1));
     }
   }
 
@@ -298,7 +386,7 @@ class KlartextInterpreter {
       }
     }
     path_.push_back({tip_at(t2), true});
-    ends_.push_back({c.line, tip_at(t2), forward(m_, job_, V3::Zero(), rot_).axis_W});
+    ends_.push_back({c.line, tip_at(t2), forward(m_, job_, V3::Zero(), rot_).axis_W, rot_, true, path_.size() - 1});
     return t2;
   }
 
@@ -332,20 +420,46 @@ class KlartextInterpreter {
     return A.inverse() * (tip - t0);
   }
 
+  /// M91 / M92 in an L block: its X Y Z words count from the machine file's reference (M91, the
+  /// machine datum) or reference2 (M92, the additional machine datum), read by the test's own parse.
+  std::optional<int> machine_datum(const std::string& s) const {
+    for (const char* code : {" M91", " M92"}) {
+      const auto at = s.find(code);
+      if (at != std::string::npos && (at + 4 == s.size() || s[at + 4] == ' ')) {
+        if (rtcp_ || plane_) throw std::runtime_error("the test interpreter reads M91 / M92 outside M128 and planes");
+        return code[3] - '0';
+      }
+    }
+    return std::nullopt;
+  }
+  double datum_of(char letter, int code) const {
+    const ExecAxis& a = m_.all_axes.at(letter);
+    const std::optional<double>& d = code == 1 ? a.reference : a.reference2;
+    if (!d) throw std::runtime_error(std::string("the test machine has no reference for M9") + char('0' + code));
+    return *d;
+  }
+
+  static bool is_number_start(const std::string& v) {
+    return !v.empty() && (v[0] == '+' || v[0] == '-' || std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == 'Q');
+  }
+
   void motion(const std::string& s, int line) {
     std::istringstream w(s.substr(2));
     V3 xyz = xyz_;
     std::map<char, double> rot = rot_;
     bool linear = false, rapid = false;
+    const std::optional<int> datum = machine_datum(s);
     for (std::string word; w >> word;) {
       const bool inc = word.size() > 2 && word[0] == 'I' && std::string("XYZ").find(word[1]) != std::string::npos;
       const char letter = inc ? word[1] : word[0];
       const std::string v = inc ? word.substr(2) : word.substr(1);
-      if (std::string("XYZ").find(letter) != std::string::npos && !v.empty() && (v[0] == '+' || v[0] == '-')) {
+      if (std::string("XYZ").find(letter) != std::string::npos && is_number_start(v)) {
         const int i = letter - 'X';
-        xyz[i] = (inc ? xyz_[i] : 0.0) + value_of(v);
-        linear = true;
-      } else if (m_.rotary_letters.find(letter) != std::string::npos && !v.empty() && (v[0] == '+' || v[0] == '-')) {
+        if (datum && inc) throw std::runtime_error("the test interpreter reads absolute M91 / M92 words only");
+        xyz[i] = (inc ? xyz_[i] : datum ? datum_of(letter, *datum) : shift_[i]) + value_of(v);
+        programmed_[i] = linear = true;
+      } else if (m_.rotary_letters.find(letter) != std::string::npos && is_number_start(v)) {
+        if (datum) throw std::runtime_error("the test interpreter reads M91 / M92 with X Y Z only");
         rot[letter] = value_of(v);
       } else if (word == "FMAX" || word == "MAX") {  // (FMAX or F MAX)
         rapid = true;
@@ -361,8 +475,8 @@ class KlartextInterpreter {
       xyz_ = xyz;
       rot_ = rot;
     }
-    ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
     path_.push_back({tip_W(), !rapid});
+    end_here(line);
     const bool m89 = s.find(" M89") != std::string::npos, m99 = s.find(" M99") != std::string::npos;
     if (m89 || m99) every_positioning_ = m89;  // M89: the cycle after this and every later L block, until M99
     if (m89 || m99 || every_positioning_) call_cycle(line);
@@ -395,7 +509,7 @@ class KlartextInterpreter {
       }
       xyz_ = top + c.to;
       path_.push_back({tip_W(), c.cut});
-      ends_.push_back({line, tip_W(), forward(m_, job_, V3::Zero(), rot_).axis_W});
+      end_here(line);
     }
   }
 
@@ -406,6 +520,8 @@ class KlartextInterpreter {
   std::map<std::string, std::size_t> labels_;
   std::map<std::string, double> q_;
   V3 xyz_ = V3::Zero();
+  V3 shift_ = V3::Zero();             ///< CYCL DEF 7
+  std::array<bool, 3> programmed_{};  ///< X Y Z programmed so far
   std::map<char, double> rot_;
   std::optional<M3> plane_;
   std::optional<Eigen::Vector2d> pole_;  ///< CC

@@ -141,4 +141,41 @@ std::variant<DrillingCycle, std::string> tapping_206(const std::map<int, double>
   return d;
 }
 
+std::variant<DrillingCycle, std::string> tapping_209(const std::map<int, double>& q, cl::Location where) {
+  for (int n : {200, 201, 239, 203, 204, 257, 256})
+    if (!q.count(n))
+      return fmt::format("CYCL DEF 209 without Q{} (expected Q200 Q201 Q239 Q203 Q204 Q257 Q256 Q336 Q403)", n);
+  const double pitch = q.at(239), infeed = q.at(257), back = q.at(256);
+  const double speed_factor = q.count(403) ? q.at(403) : 1.0;
+  if (pitch == 0.0 || std::abs(pitch) > 100.0)
+    return fmt::format("CYCL DEF 209: Q239={} (the pitch in mm: + right-hand, - left-hand)", pitch);
+  if (!(infeed >= 0.0) || std::isinf(infeed))
+    return fmt::format("CYCL DEF 209: Q257={} (the infeed depth for chip breaking must be >= 0)", infeed);
+  if (speed_factor != 1.0)
+    return fmt::format(
+        "CYCL DEF 209: Q403={:g} (the retraction at {:g} times the spindle speed) is not read: the "
+        "output's taps come out at the tapping feed; program Q403=1",
+        speed_factor, speed_factor);
+  auto d = tap_of(209, "CYCL DEF 209 TAPPING W/ CHIP BRKG", q, where);
+  DrillingCycle* tap = std::get_if<DrillingCycle>(&d);
+  if (!tap) return d;
+  tap->cycle.pitch_mm = std::abs(pitch);
+  tap->cycle.left_hand = pitch < 0.0;
+  const double depth = tap->cycle.depth_mm;
+  if (infeed == 0.0 || infeed >= depth) return d;  // no chip breaking: one tap
+  if (back != 0.0)
+    return fmt::format(
+        "CYCL DEF 209: Q256={:g} (chip breaking inside the hole: back by Q256 x the pitch, {:g} mm, after each "
+        "infeed of Q257={:g}) is not read: the output's tapping cycles leave the thread only at the set-up "
+        "clearance; Q256=0 (out to the set-up clearance after each infeed) is read",
+        back, std::abs(back * pitch), infeed);
+  constexpr int kMostInfeeds = 1000;
+  if (depth / infeed > kMostInfeeds)
+    return fmt::format("CYCL DEF 209: Q257={:g} makes more than {} infeeds to the depth {:g}", infeed, kMostInfeeds,
+                       depth);
+  for (int k = 1; k * infeed < depth - 1e-9; ++k) tap->infeed_depths_mm.push_back(k * infeed);
+  tap->infeed_depths_mm.push_back(depth);
+  return d;
+}
+
 }  // namespace ncpost::klartext

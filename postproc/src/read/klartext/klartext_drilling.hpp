@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "ncpost/postproc/read/cl_record.hpp"
 
@@ -35,6 +36,9 @@ struct DrillingCycle {
   /// 206 (floating tap holder): its tapping feed Q206 (mm/min); the pitch is Q206 / the speed at the
   /// call, the thread's hand the spindle's direction there
   std::optional<double> tap_feed_mm_min;
+  /// 209 with chip removal: the depths below the surface (mm, > 0, the last the thread's) of its taps, each from
+  /// the set-up clearance and back to it; empty: one tap
+  std::vector<double> infeed_depths_mm;
 };
 
 /// CYCL DEF 200 from its parameters, or why not (a sentence naming the parameter).
@@ -55,5 +59,16 @@ std::variant<DrillingCycle, std::string> tapping_207(const std::map<int, double>
 /// goes at FMAX to the 2nd set-up clearance; the thread's hand is the spindle's direction (M3
 /// right, M4 left). A cl::Cycle tap whose pitch is set at the call (DrillingCycle::tap_feed_mm_min).
 std::variant<DrillingCycle, std::string> tapping_206(const std::map<int, double>& q, cl::Location where);
+
+/// CYCL DEF 209 TAPPING WITH CHIP BREAKING (rigid, as 207): Q200 set-up clearance, Q201 depth of the thread
+/// (< 0), Q239 pitch (+ right-hand, - left-hand), Q203 surface, Q204 2nd set-up clearance, Q257 infeed depth for
+/// chip breaking (0: none, one tap), Q256 retraction for chip breaking (a factor of the pitch; 0: out to the set-up
+/// clearance), Q336 the spindle's orientation angle (where it stops: no motion), Q403 the speed factor of the
+/// retraction. The TNC taps Q257 deeper each time, reverses the spindle and retracts (Q256 = 0: to the set-up
+/// clearance), reverses it again and taps on, until the depth; then back to the set-up clearance and at FMAX to the
+/// 2nd. Read: Q256 = 0 (each infeed a tap from the set-up clearance and back: `infeed_depths_mm`) or no chip
+/// breaking, with Q403 = 1. Refused, naming the parameter: Q256 other than 0 (a partial retraction inside the hole,
+/// which no output tapping cycle makes) and Q403 other than 1 (the output's taps come out at the tapping feed).
+std::variant<DrillingCycle, std::string> tapping_209(const std::map<int, double>& q, cl::Location where);
 
 }  // namespace ncpost::klartext

@@ -39,7 +39,7 @@ constexpr const char* kWhatALineIs = "a Klartext block";
 constexpr std::string_view kSlots = "XYZABC";  ///< ProgramPoint order
 
 /// The hole cycles read (klartext_drilling.hpp, klartext_hole_path.hpp).
-constexpr std::array<int, 8> kHoleCycles = {200, 201, 203, 206, 207, 208, 240, 241};
+constexpr std::array<int, 9> kHoleCycles = {200, 201, 203, 206, 207, 208, 209, 240, 241};
 bool is_hole_cycle(int number) {
   return std::find(kHoleCycles.begin(), kHoleCycles.end(), number) != kHoleCycles.end();
 }
@@ -562,10 +562,12 @@ struct KlartextReader::State {
     const std::string unit = blank == std::string::npos ? std::string() : t.substr(blank + 1);
     std::string u;
     for (char c : unit) u += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (u == "INCH")
-      fail(b.column,
-           "an INCH program: inch Klartext is not read (the TNC's feed unit in inch programs differs "
-           "between generations); have the CAM system write the program in MM");
+    if (u == "INCH" || u == "IN")  // (NX posts write IN)
+      fail(b.column, fmt::format("BEGIN PGM ... {}: an inch program is not read: the TNC 426 B / 430 user manual has "
+                                 "F in an inch program entered ten times its inch/min value (0.1 inch/min), CAM posts "
+                                 "write inch/min, and no manual found gives the newer TNCs' rule; have the CAM system "
+                                 "write the program in MM",
+                                 unit));
     if (u != "MM") fail(b.column, "expected BEGIN PGM name MM (the program's name and its unit)");
   }
 
@@ -785,7 +787,7 @@ struct KlartextReader::State {
                             *number));
   }
 
-  /// CYCL DEF 200 / 201 / 203 / 207 / 208 / 240 / 241 with its Q parameters on the '~' lines.
+  /// CYCL DEF 200 / 201 / 203 / 206 / 207 / 208 / 209 / 240 / 241 with its Q parameters on the '~' lines.
   void define_hole_cycle(const Block& b, int number) {
     std::map<int, double> q;
     for (const auto& [text, line] : continuation) {
@@ -806,10 +808,11 @@ struct KlartextReader::State {
     }
     drilling.reset();
     expanded.reset();
-    if (number == 200 || number == 206 || number == 207) {
+    if (number == 200 || number == 206 || number == 207 || number == 209) {
       auto d = number == 200   ? drilling_200(q, at(b.column))
                : number == 206 ? tapping_206(q, at(b.column))
-                               : tapping_207(q, at(b.column));
+               : number == 207 ? tapping_207(q, at(b.column))
+                               : tapping_209(q, at(b.column));
       if (const std::string* why = std::get_if<std::string>(&d)) fail(b.column, *why);
       drilling = std::get<DrillingCycle>(d);
       return;
@@ -852,8 +855,13 @@ struct KlartextReader::State {
     } else if (c.kind == cl::Cycle::Kind::tap) {
       check_tap_spindle(column);
     }
-    emit(c);
-    emit(hole);  // (not rapid: the hole of the cycle)
+    for (std::size_t k = 0; k < std::max<std::size_t>(1, drilling->infeed_depths_mm.size()); ++k) {
+      cl::Cycle infeed = c;  // 209 with chip removal: a tap to each infeed depth, back to the set-up clearance
+      if (k + 1 < drilling->infeed_depths_mm.size()) infeed.retract_mm.reset();
+      if (!drilling->infeed_depths_mm.empty()) infeed.depth_mm = drilling->infeed_depths_mm[k];
+      emit(infeed);
+      emit(hole);  // (not rapid: the hole of the cycle)
+    }
     cl::Cycle off;
     off.where = where;
     emit(off);
@@ -868,13 +876,14 @@ struct KlartextReader::State {
                                drilling->cycle.kind_word));
   }
 
-  /// CYCL DEF 207 taps with the spindle turning the thread's way (Q239 > 0: M3, < 0: M4).
+  /// CYCL DEF 207 / 209 tap with the spindle turning the thread's way (Q239 > 0: M3, < 0: M4).
   void check_tap_spindle(int column) const {
     const bool left = drilling->cycle.left_hand;
     check_spindle_turns(column);
     if ((spindle == cl::Spindle::Direction::ccw) != left)
-      fail(column, fmt::format("CYCL DEF 207 with a {}-hand thread (Q239) called with the spindle {}: program {}",
-                               left ? "left" : "right", left ? "M3" : "M4", left ? "M4" : "M3"));
+      fail(column,
+           fmt::format("{} with a {}-hand thread (Q239) called with the spindle {}: program {}",
+                       drilling->cycle.kind_word, left ? "left" : "right", left ? "M3" : "M4", left ? "M4" : "M3"));
   }
 
   /// The diameter of the tool called (the tool table's, plus twice DR), if known.
@@ -1185,6 +1194,13 @@ struct KlartextReader::State {
       bool incremental = false;
       const int slot = axis_slot(w.name, incremental);
       if (slot < 0) continue;
+      if (slot >= 3 && !incremental)
+        fail(w.column, fmt::format("M{0} with {1}{2:g}: a rotary axis in machine coordinates is not read: the TNC "
+                                   "manuals count M91 / M92 positions from the machine datum and the machine builder's "
+                                   "additional one per axis, with no rule for a rotary axis (which datum its angle "
+                                   "counts from, in which display range); program the rotary axes in a block of their "
+                                   "own, without M{0}",
+                                   code, w.name, w.value.value_or(0.0)));
       if (slot >= 3 || incremental)
         fail(w.column,
              fmt::format("M{} with {}: only absolute X, Y and Z in machine coordinates are read", code, w.name));
