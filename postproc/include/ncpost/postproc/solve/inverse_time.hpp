@@ -27,9 +27,11 @@ double inverse_time_minutes(double tip_path_mm, bool tip_moves, double rotary_tr
 /// inverse of inverse_time_minutes (0 for a block that moves nothing).
 double feed_for_minutes(double tip_path_mm, bool tip_moves, double rotary_travel_deg, double minutes);
 
-/// The length (mm) of the curve tip_at(t), t in [0, 1], as a polyline refined where the curve
-/// bows: each half is split again until splitting changes its length by less than 1e-9 mm
-/// (at least 4, at most 2^12 pieces). `tip_at` is the tool tip (W) at the commands interpolated linearly.
+/// The length (mm) of the curve tip_at(t), t in [0, 1], from a polyline refined where the curve
+/// bows: each half is split again until splitting changes its length by less than 1e-7 mm (at least
+/// 4, at most 2^12 pieces), each piece's length extrapolated from its chord and its two halves
+/// (halves + (halves - chord) / 3, Richardson: exact to the fourth order of the step). `tip_at` is the tool tip (W) at
+/// the commands interpolated linearly.
 double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at);
 /// The same with the ends tip_at(0) = `start_mm` and tip_at(1) = `end_mm` given.
 double tip_path_length_mm(const std::function<Vec3d(double t)>& tip_at, const Vec3d& start_mm, const Vec3d& end_mm);
