@@ -17,7 +17,8 @@
 //     sinumerik_mini_swivel.hpp;
 //   - TRANS X Y Z: a shift of the programmable frame;
 //   - G53 / SUPA: the named axes in machine coordinates, counted from the machine file's `reference`
-//     (Z without one: the top of its travel; a rotary axis without one: its angle); G75 FP=n: the
+//     (Z without one: the top of its travel; a rotary axis without one: its angle; X or Y without one:
+//     not known until a block programs it again, the ends before that not compared); G75 FP=n: the
 //     named axes to the machine file's `fixed_point` n (FP=1 without FP=), the values written ignored;
 //     both at rapid traverse, for the block only, outside a CYCLE800 plane;
 //   - G2/G3 under G17 with I J (from the start), I=AC() J=AC() (the centre) or CR= (negative: more

@@ -2,8 +2,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The tests' own reading of what a SINUMERIK 840D sl does around CYCLE800 (sinumerik_mini.hpp uses
 // it), independent of the product:
-//   - G53 / SUPA X Y Z: machine coordinates, counted from each axis's `reference` in the machine file
-//     (Z without one: the top of its travel);
 //   - CYCLE800 _FR=1: machine Z to the swivel data's retraction position, the machine file's
 //     [axes.Z] swivel_retract (without it the position is not known);
 //   - the rotary axes of the plane: the angles whose tool axis is the plane's Z (solved here with the
@@ -26,15 +24,6 @@
 #include "nc_executor.hpp"
 
 namespace ncpost::test {
-
-/// Where G53 counts from on linear axis `letter` (mm in M): its reference, Z without one the top of its travel.
-inline std::optional<double> sin_machine_zero(const ExecMachine& m, char letter) {
-  if (!m.all_axes.count(letter)) return std::nullopt;
-  const ExecAxis& a = m.all_axes.at(letter);
-  if (a.reference) return a.reference;
-  if (letter == 'Z') return a.limit_max;
-  return std::nullopt;
-}
 
 /// Rotary axis 1 of the swivel data record: the head axis nearest the bed, else the table axis nearest it.
 inline char sin_rotary_axis_1(const ExecMachine& m) {
@@ -114,35 +103,6 @@ inline std::optional<std::map<char, double>> sin_control_angles(const ExecMachin
     if (inside && cost < best_cost) best = c, best_cost = cost;
   }
   return best;
-}
-
-/// A block in machine coordinates (G53 or SUPA as a word of its own).
-inline bool sin_is_machine_block(const std::string& upper_line) {
-  for (const char* key : {"G53", "SUPA"})
-    for (std::size_t at = upper_line.find(key); at != std::string::npos; at = upper_line.find(key, at + 1)) {
-      const std::size_t end = at + std::string(key).size();
-      const bool starts = at == 0 || !std::isalnum(static_cast<unsigned char>(upper_line[at - 1]));
-      const bool ends = end >= upper_line.size() || !std::isdigit(static_cast<unsigned char>(upper_line[end]));
-      if (starts && ends) return true;
-    }
-  return false;
-}
-
-/// The words of a G53/SUPA block (`given`: X Y Z in machine coordinates, rotary angles) into the
-/// machine-axis words the interpreter keeps (X Y Z: the command in M less the TRANS `shift`, which the
-/// block suppresses but the words after it keep). Throws where the machine file gives no zero.
-inline void sin_machine_words(const ExecMachine& m, const std::map<char, double>& given, const V3& shift,
-                              std::map<char, double>& words) {
-  for (const auto& [letter, v] : given) {
-    const std::size_t xyz = std::string("XYZ").find(letter);
-    if (xyz == std::string::npos) {
-      words[letter] = v;
-      continue;
-    }
-    const std::optional<double> zero = sin_machine_zero(m, letter);
-    if (!zero) throw std::runtime_error(std::string("G53 ") + letter + ": the machine file gives no reference");
-    words[letter] = *zero + v - shift[static_cast<int>(xyz)];
-  }
 }
 
 /// CYCLE800 (`plane`: its frame Trans(_X0) R Trans(_X1); none: CYCLE800() or a bare CYCLE800, the reset),
