@@ -299,3 +299,45 @@ TEST_CASE("machine file: swivel_retract on a linear axis, within its travel; els
   rotary.insert(rotary.find("pivot = [0, 0, 0]"), "swivel_retract = 5\n");
   CHECK_THAT(error_of(rotary), Catch::Contains("a rotary axis takes none"));
 }
+
+TEST_CASE("sinumerik CYCLE800 after G75: X Y alone move at the Z of the fixed point, not of the SUPA before it") {
+  // tests/data/machines/ac-trunnion-references.toml: Z's fixed point 1 is 580 in M (SUPA Z-420 put it at 130); the
+  // G75 block moves Z there, and the plane's first block programs X and Y only
+  const std::string text =
+      "N10 G17 G90 G71 G94\n"
+      "N20 T1 D1 M6\n"
+      "N30 G0 X0 Y0 Z100 A0 C0 S3000 M3\n"
+      "N40 SUPA G0 Z-420\n"
+      "N50 SUPA X410 Y-455\n"
+      "N55 G75 Z0\n"
+      "N60 CYCLE800(0,\"TC1\",200000,57,0,0,0,30,0,0,0,0,0,1)\n"
+      "N70 G0 X10 Y5\n"
+      "N80 G1 Z2 F300\n"
+      "N90 X30\n"
+      "N100 G0 Z60\n"
+      "N110 CYCLE800()\n"
+      "N180 M30\n";
+  const std::string machine_path = test::data("machines/ac-trunnion-references.toml");
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::V3(10, -20, 50);
+  job.tool_length_mm = 120;
+  const std::string nc = post_on(text, "t.mpf", test::read_text_file(machine_path), job, "");
+  INFO(nc);
+  CHECK(ends_and_angles(text, nc, machine_path, job, 1) == 8);  // N30-N55, N70-N100
+  // N70 moves X and Y in the plane at the tool's Z: the output block that reaches its end is followed by the feed
+  // of N80 and nothing between (ends_and_angles skips output blocks between ends: a Z from the SUPA before G75 was
+  // written there, a rapid 450 mm down in M)
+  const test::ExecMachine m = test::ExecMachine::load(machine_path);
+  const std::vector<test::SinumerikEnd> ends = test::sinumerik_block_ends(text, m, job);
+  const test::Executor ex(machine_path, job, nc);
+  const auto output_block_of = [&](int input_line) {
+    for (const test::SinumerikEnd& e : ends)
+      if (e.line == input_line)
+        for (std::size_t b = 0; b < ex.blocks.size(); ++b)
+          if ((ex.at(ex.blocks[b], 1.0).tip_W - e.tip_W).norm() < 1e-3) return static_cast<long>(b);
+    return -1L;
+  };
+  const long n70 = output_block_of(8), n80 = output_block_of(9);
+  REQUIRE(n70 >= 0);
+  CHECK(n80 == n70 + 1);
+}

@@ -38,20 +38,6 @@ namespace {
 constexpr const char* kWhatALineIs = "a Klartext block";
 constexpr std::string_view kSlots = "XYZABC";  ///< ProgramPoint order
 
-/// The hole cycles read (klartext_drilling.hpp, klartext_hole_path.hpp).
-constexpr std::array<int, 9> kHoleCycles = {200, 201, 203, 206, 207, 208, 209, 240, 241};
-bool is_hole_cycle(int number) {
-  return std::find(kHoleCycles.begin(), kHoleCycles.end(), number) != kHoleCycles.end();
-}
-
-/// "CYCL DEF 200, 201, ... or 241", for messages.
-std::string hole_cycles_or() {
-  std::string s = "CYCL DEF";
-  for (std::size_t i = 0; i < kHoleCycles.size(); ++i)
-    s += fmt::format("{}{}", i == 0 ? " " : i + 1 == kHoleCycles.size() ? " or " : ", ", kHoleCycles[i]);
-  return s;
-}
-
 /// The slot (0..5) of an axis word X..C or IX..IC, or -1; `incremental` set for I words.
 int axis_slot(const std::string& name, bool& incremental) {
   incremental = name.size() == 2 && name[0] == 'I';
@@ -826,8 +812,8 @@ struct KlartextReader::State {
   /// CYCL CALL or M99: one hole of the hole cycle where the tool stands (X Y), its top at Q203.
   void call_cycle(cl::Location where, int column) {
     if (!drilling && !expanded)
-      fail(column, fmt::format("a cycle call without a hole cycle ({}) before it (other cycles are not read)",
-                               hole_cycles_or()));
+      fail(column, fmt::format("a cycle call without a hole cycle (CYCL DEF {}) before it (other cycles are not read)",
+                               hole_cycles_listed("or")));
     if (rtcp)
       fail(column, "a cycle call under M128 / FUNCTION TCPM is not read; switch it off (M129) before the cycle");
     if (!settled || !known[0] || !known[1] || !known[2])

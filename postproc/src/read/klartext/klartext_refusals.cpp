@@ -4,12 +4,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <string_view>
 
 namespace ncpost::klartext {
 namespace {
 
 constexpr std::string_view kPostCl = "post the CL data, or have the CAM system write the motions as L and C blocks";
+
+/// The hole cycles read (klartext_drilling.hpp, klartext_hole_path.hpp).
+constexpr std::array<int, 9> kHoleCycles = {200, 201, 203, 206, 207, 208, 209, 240, 241};
 
 struct Refusal {
   std::string_view statement;  ///< the statement, or its first word followed by a blank
@@ -20,7 +25,7 @@ struct Refusal {
 constexpr Refusal kStatements[] = {
     {"CYCL DEF",
      "this cycle (tilted plane, pocket, other drilling cycles ...) is not read (CYCL DEF 7 datum "
-     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles 200, 201, 203, 206, 207, 208, 240 and 241 are)",
+     "shift, 9 dwell, 32 tolerance, 247 preset and the hole cycles {} are)",
      kPostCl},
     {"CYCL CALL", "a cycle call is not read", kPostCl},
     {"APPR", "an approach contour is not read", kPostCl},
@@ -68,6 +73,21 @@ constexpr MRefusal kMFunctions[] = {
 
 }  // namespace
 
+bool is_hole_cycle(int number) {
+  return std::find(kHoleCycles.begin(), kHoleCycles.end(), number) != kHoleCycles.end();
+}
+
+std::string hole_cycles_listed(const char* last_word) {
+  std::string s;
+  for (std::size_t i = 0; i < kHoleCycles.size(); ++i)
+    s += fmt::format("{}{}",
+                     i == 0                        ? ""
+                     : i + 1 == kHoleCycles.size() ? fmt::format(" {} ", last_word)
+                                                   : ", ",
+                     kHoleCycles[i]);
+  return s;
+}
+
 std::string refused_statement(const Block& b) {
   std::string shown = b.statement;
   if (!b.text.empty()) shown += " " + b.text.substr(0, std::min<std::size_t>(b.text.size(), 40));
@@ -75,7 +95,8 @@ std::string refused_statement(const Block& b) {
     const bool prefix = r.statement.back() == ' ';
     const std::string_view key = prefix ? r.statement.substr(0, r.statement.size() - 1) : r.statement;
     if (prefix ? b.statement.rfind(key, 0) == 0 : b.statement == key)
-      return fmt::format("'{}': {}; {}", shown, r.what, r.instead);
+      return fmt::format("'{}': {}; {}", shown, fmt::format(fmt::runtime(r.what), hole_cycles_listed("and")),
+                         r.instead);
   }
   return fmt::format(
       "'{}' is not a Klartext statement ncpost reads (L, LP, C, CC, CR, CT, CP, RND, CHF, TOOL CALL, M functions, "

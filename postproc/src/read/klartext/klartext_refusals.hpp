@@ -8,6 +8,12 @@
 
 namespace ncpost::klartext {
 
+/// True for the hole cycles the reader reads (CYCL DEF 200, 201, 203, 206, 207, 208, 209, 240, 241).
+bool is_hole_cycle(int number);
+
+/// Those cycles' numbers for a message, "200, 201, ... `last_word` 241".
+std::string hole_cycles_listed(const char* last_word);
+
 /// The message for a statement the reader does not read (CYCL DEF 200, PLANE SPATIAL, RND ...).
 std::string refused_statement(const Block& b);
 

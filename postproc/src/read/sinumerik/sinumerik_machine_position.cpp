@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The machine position of the Sinumerik translator (sinumerik_translator.hpp): what SUPA/G53 blocks
-// and CYCLE800's retraction leave the linear axes at, in machine coordinates, so that the plane
+// The machine position of the Sinumerik translator (sinumerik_translator.hpp): what SUPA/G53 and G75
+// blocks and CYCLE800's retraction leave the linear axes at, in machine coordinates, so that the plane
 // CYCLE800 swivels to knows where the tool tip stands. On the control the position after the swivel
 // is the machine position seen in the new frame: a block that programs X and Y only moves at the
 // Z where the tool stands in the tilted plane. The machine coordinates count from each axis's
@@ -12,6 +12,7 @@
 
 #include "ncpost/kinematics/inverse.hpp"
 #include "ncpost/postproc/read/gcode/gcode_expression.hpp"
+#include "read/machine_points.hpp"
 #include "read/sinumerik/sinumerik_translator.hpp"
 #include "read/sinumerik/sinumerik_words.hpp"
 
@@ -21,10 +22,7 @@ namespace ncpost::sinumerik {
 std::optional<double> Translator::machine_reference_mm(int axis) const {
   const int at = machine_.index_of("XYZ"[axis]);
   if (at < 0) return std::nullopt;
-  const Axis& a = machine_.axes[static_cast<std::size_t>(at)];
-  if (a.reference) return a.reference;
-  if (a.letter == 'Z' && a.limits) return a.limits->max;
-  return std::nullopt;
+  return reference_or_top(machine_.axes[static_cast<std::size_t>(at)]);
 }
 
 /// A SUPA/G53 block's X Y Z (absolute, program unit) as machine commands.

@@ -174,7 +174,7 @@ std::string Translator::supa_words(const ProgramLine& l, const Words& w) {
 /// machine data (MD30600 $MA_FIX_POINT_POS[n-1]), which the machine file gives as `fixed_point`; the
 /// values written for the axes are not used and no frame or offset acts. A block of its own: the
 /// modal G0..G3 stays. Written as G53 G0 counted from the reference point (machine_points.hpp), as
-/// SUPA is; the positions in W are not known after it.
+/// SUPA is; the positions in W are not known after it, the machine position of the named linear axes is.
 std::string Translator::fixed_point_words(const ProgramLine& l, const Words& w) {
   const int column = *w.g75_column;
   if (w.motion || w.supa || w.any_orientation() || w.radius || w.ijk[0] || w.ijk[1] || w.ijk[2])
@@ -208,8 +208,8 @@ std::string Translator::fixed_point_words(const ProgramLine& l, const Words& w) 
     const double value = axis.is_rotary() ? (axis.fixed_points[k - 1] - *zero) * 180.0 / M_PI
                                           : (axis.fixed_points[k - 1] - *zero) / (inch_ ? 25.4 : 1.0);
     s += fmt::format(" {}{}", letter, num(value));
-    if (i < 3)
-      base_known_[i] = false;
+    if (i < 3)  // where the axis stands is known in M (the plane CYCLE800 swivels to reads it), not in W
+      base_known_[i] = false, machine_mm_[i] = axis.fixed_points[k - 1];
     else
       rotary_deg_[i - 3] = axis.fixed_points[k - 1] * 180.0 / M_PI, rotary_known_[i - 3] = true;
   }
