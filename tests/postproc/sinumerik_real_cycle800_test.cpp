@@ -341,3 +341,28 @@ TEST_CASE("sinumerik CYCLE800 after G75: X Y alone move at the Z of the fixed po
   REQUIRE(n70 >= 0);
   CHECK(n80 == n70 + 1);
 }
+
+TEST_CASE(
+    "sinumerik CYCLE800 after a tool change: where the tool change left the axes is not known, X Y alone refused") {
+  // the SUPA blocks place the axes, then M6 moves them as the machine's tool change does (its data, not the
+  // program's); CYCLE800 _FR=0 does not retract: the first block in the plane must give X, Y and Z
+  const std::string text =
+      "N10 G17 G90 G71 G94\n"
+      "N20 T1 D1 M6\n"
+      "N30 G0 X0 Y0 Z100 A0 C0 S3000 M3\n"
+      "N40 SUPA G0 Z-420\n"
+      "N50 SUPA X410 Y-455\n"
+      "N55 T2 D1 M6\n"
+      "N60 CYCLE800(0,\"TC1\",200000,57,0,0,0,30,0,0,0,0,0,1)\n"
+      "N70 G0 X10 Y5\n"
+      "N80 M30\n";
+  test::ExecJob job;
+  job.workpiece_origin_mm = test::V3(10, -20, 50);
+  job.tool_length_mm = 120;
+  try {
+    post_on(text, "t.mpf", test::read_text_file(test::data("machines/ac-trunnion-references.toml")), job, "");
+    FAIL("posted");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("t.mpf:8:") && Catch::Contains("is not known here"));
+  }
+}

@@ -59,6 +59,7 @@ void Translator::collect(const ProgramLine& l, const Item& item, Words& w) {
         else
           w.iso.push_back("M" + item.text);
         if (v == 3.0 || v == 4.0 || v == 5.0) spindle_direction_ = static_cast<int>(v);
+        if (v == 6.0) machine_mm_ = {};  // the tool change moves the axes where the machine's data has it
         return;
       }
       return assignment(l, as_assign, w);
